@@ -1,0 +1,9 @@
+//! Chapter 1: projection. `cargo run --release --bin ch1 -- --help`
+//!
+//! Renders the wireframe of any scene through the pinhole camera, prints
+//! the projected vertices, "farther is smaller" and the vanishing points,
+//! and with `--report` the precision study and the stiff cases.
+
+fn main() -> std::process::ExitCode {
+    raystep::run::chapter_main(&raystep::projection::Projection)
+}

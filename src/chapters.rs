@@ -1,0 +1,9 @@
+//! Every chapter that exists, in lecture order. Front ends (the main binary,
+//! the terminal UI) list chapters from here and nowhere else.
+
+use crate::stage::Chapter;
+
+/// All chapters, in order.
+pub fn all() -> Vec<&'static dyn Chapter> {
+    vec![&crate::projection::Projection]
+}

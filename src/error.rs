@@ -1,0 +1,63 @@
+//! One error type for everything a user can get wrong: scene files, meshes,
+//! flags, output paths. Every message names the file and the key or line and
+//! says what was expected, so a student can fix the input without reading code.
+
+use std::path::{Path, PathBuf};
+
+/// What went wrong, with enough context to find and fix it.
+#[derive(Debug, thiserror::Error)]
+pub enum Error {
+    /// A scene file that does not parse or does not make sense. `at` is
+    /// `line:column` or a key path such as `camera.fov` or `objects[2].mesh`.
+    #[error("{file}: {at}: {message}")]
+    Scene {
+        /// The scene file.
+        file: String,
+        /// Where in it: `line:column` or a key path.
+        at: String,
+        /// What is wrong and what was expected.
+        message: String,
+    },
+    /// A mesh file that cannot be read or is malformed.
+    #[error("{file}{}: {message}", line.map(|l| format!(":{l}")).unwrap_or_default())]
+    Mesh {
+        /// The OBJ file.
+        file: String,
+        /// The 1-based line, when one line is to blame.
+        line: Option<usize>,
+        /// What is wrong and what was expected.
+        message: String,
+    },
+    /// Flags or settings that are out of range.
+    #[error("{0}")]
+    Usage(String),
+    /// Reading or writing a file failed.
+    #[error("{}: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// Encoding an image failed.
+    #[error("{}: {message}", path.display())]
+    Image {
+        /// The image file.
+        path: PathBuf,
+        /// Why.
+        message: String,
+    },
+}
+
+impl Error {
+    /// An I/O error on `path`.
+    pub fn io(path: &Path, source: std::io::Error) -> Self {
+        Error::Io {
+            path: path.to_path_buf(),
+            source,
+        }
+    }
+}
+
+/// Shorthand for results in raystep.
+pub type Result<T, E = Error> = std::result::Result<T, E>;

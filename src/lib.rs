@@ -1,0 +1,50 @@
+//! # raystep: rendering, step by step
+//!
+//! A renderer that follows one lecture on rendering (after CMU 15-462/662
+//! and Foley's book) from a pinhole camera to Monte Carlo global
+//! illumination. Each part of the lecture is a stage with its own binary,
+//! book chapter, tests and exercises.
+//!
+//! ## The pipeline
+//!
+//! scene file (TOML) → [`scene::Scene`] (validated, holding only what the
+//! scene uses) → a chapter's [`stage::Render`] → [`film::Film`] →
+//! PNG/EXR, a [`report::Report`], and a terminal [`preview`].
+//!
+//! | stage | chapter | module | binary | book page |
+//! |---|---|---|---|---|
+//! | projection | 1 | [`camera`], [`projection`] | `ch1` | `book/src/ch1-projection.md` |
+//!
+//! Later chapters (rasterization, ray-triangle intersection and a BVH,
+//! sphere tracing, the reflection equation, global illumination) join this
+//! table as they land.
+//!
+//! The lecture's symbols and the names used here are listed side by side in
+//! the book's notation table (`book/src/notation.md`).
+//!
+//! ## Conventions
+//!
+//! Right-handed; the camera looks down -z; the image plane is z = -1.
+//! Renderer arithmetic is f32; f64 is used for exact references. Transforms
+//! are named `a_from_b`. Colour is linear RGB until an 8-bit image is
+//! written.
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod camera;
+pub mod chapters;
+pub mod draw;
+pub mod error;
+pub mod exercises;
+pub mod film;
+pub mod grading;
+pub mod mesh;
+pub mod preview;
+pub mod projection;
+pub mod report;
+pub mod run;
+pub mod scene;
+pub mod stage;
+
+pub use error::{Error, Result};

@@ -1,0 +1,192 @@
+//! The TOML scene format, as serde types. Every key is optional except what
+//! an object needs to say what it is; omitted keys take the defaults below.
+//! The book's "Scene files" page shows an example for every key, and a test
+//! parses every example there.
+
+use serde::Deserialize;
+
+/// A whole scene file.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    /// The camera; defaults to [`CameraSection::default`].
+    #[serde(default)]
+    pub camera: CameraSection,
+    /// Named materials that objects refer to.
+    #[serde(default)]
+    pub materials: Vec<MaterialSection>,
+    /// Meshes and built-in shapes.
+    #[serde(default)]
+    pub objects: Vec<ObjectSection>,
+    /// Lights that are not surfaces (area lights are emissive materials).
+    #[serde(default)]
+    pub lights: Vec<LightSection>,
+}
+
+/// `[camera]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct CameraSection {
+    /// Pinhole position.
+    pub eye: [f64; 3],
+    /// Point looked at.
+    pub target: [f64; 3],
+    /// Up hint.
+    pub up: [f64; 3],
+    /// Full vertical field of view in degrees.
+    pub fov: f64,
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+}
+
+impl Default for CameraSection {
+    fn default() -> Self {
+        CameraSection {
+            eye: [0.0, 0.0, 5.0],
+            target: [0.0, 0.0, 0.0],
+            up: [0.0, 1.0, 0.0],
+            fov: 45.0,
+            width: 320,
+            height: 240,
+        }
+    }
+}
+
+/// One `[[materials]]` entry.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSection {
+    /// The name objects use to refer to it.
+    pub name: String,
+    /// The kind of surface; chapter 5 adds more.
+    #[serde(rename = "type", default)]
+    pub kind: MaterialKind,
+    /// Diffuse reflectance ρ in linear RGB, each in [0, 1].
+    #[serde(default = "default_reflectance")]
+    pub reflectance: [f64; 3],
+    /// Emitted radiance Le (W/(m²·sr)) in linear RGB; non-zero makes every
+    /// surface with this material an area light.
+    #[serde(default)]
+    pub emission: [f64; 3],
+}
+
+fn default_reflectance() -> [f64; 3] {
+    [0.8, 0.8, 0.8]
+}
+
+/// Material kinds known to the format.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum MaterialKind {
+    /// Lambertian: BRDF = ρ/π.
+    #[default]
+    Diffuse,
+}
+
+/// One `[[objects]]` entry: exactly one of `mesh` or `shape`, then an
+/// optional transform (scale, then rotate, then translate; or `matrix`).
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ObjectSection {
+    /// A name for reports; defaults to the file stem or the shape.
+    pub name: Option<String>,
+    /// An OBJ file, relative to the scene file.
+    pub mesh: Option<String>,
+    /// A built-in shape.
+    pub shape: Option<Shape>,
+    /// The material's name; defaults to a grey diffuse surface.
+    pub material: Option<String>,
+    /// Sphere radius (default 1).
+    pub radius: Option<f64>,
+    /// Sphere centre (default the origin), applied before the transform.
+    pub center: Option<[f64; 3]>,
+    /// Icosphere subdivisions (default 3, at most 7).
+    pub subdivisions: Option<u32>,
+    /// Rectangle `[w, h]` or box `[x, y, z]` size.
+    pub size: Option<Vec<f64>>,
+    /// Scale: one number or `[x, y, z]`.
+    pub scale: Option<Scale>,
+    /// Rotation about an axis through the origin.
+    pub rotate: Option<Rotate>,
+    /// Translation.
+    pub translate: Option<[f64; 3]>,
+    /// A full world-from-object matrix, four rows of four; excludes the
+    /// other transform keys.
+    pub matrix: Option<[[f64; 4]; 4]>,
+}
+
+/// Built-in shapes.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum Shape {
+    /// The lecture's tetrahedron table.
+    Tetrahedron,
+    /// An icosphere.
+    Sphere,
+    /// A rectangle in z = 0 facing +z.
+    Rectangle,
+    /// An axis-aligned box centred at the origin.
+    Box,
+}
+
+/// `scale = 2.0` or `scale = [1, 2, 1]`.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(untagged, expecting = "a number or an array of three numbers")]
+pub enum Scale {
+    /// The same factor on every axis.
+    Uniform(f64),
+    /// One factor per axis.
+    PerAxis([f64; 3]),
+}
+
+/// `rotate = { axis = [0, 1, 0], degrees = 30 }`.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Rotate {
+    /// The axis (need not be unit length).
+    pub axis: [f64; 3],
+    /// Counter-clockwise angle looking down the axis, in degrees.
+    pub degrees: f64,
+}
+
+/// One `[[lights]]` entry: lights that are not surfaces. Chapter 5 gives
+/// them meaning; earlier chapters parse, check and ignore them.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(tag = "type", rename_all = "lowercase", deny_unknown_fields)]
+pub enum LightSection {
+    /// An isotropic point light of intensity I (W/sr).
+    Point {
+        /// Position.
+        position: [f64; 3],
+        /// Intensity, linear RGB.
+        intensity: [f64; 3],
+    },
+    /// Light from infinitely far away along `direction`.
+    Directional {
+        /// Direction the light travels.
+        direction: [f64; 3],
+        /// Irradiance at normal incidence (W/m²), linear RGB.
+        irradiance: [f64; 3],
+    },
+    /// A point light limited to a cone with a smooth edge.
+    Spot {
+        /// Position.
+        position: [f64; 3],
+        /// Cone axis, the direction light travels.
+        direction: [f64; 3],
+        /// Intensity on the axis (W/sr), linear RGB.
+        intensity: [f64; 3],
+        /// Half-angle of the cone in degrees.
+        cone_degrees: f64,
+        /// Width of the smooth edge inside the cone, in degrees.
+        #[serde(default)]
+        falloff_degrees: f64,
+    },
+    /// Constant radiance from every direction.
+    Environment {
+        /// Radiance (W/(m²·sr)), linear RGB.
+        radiance: [f64; 3],
+    },
+}

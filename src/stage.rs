@@ -1,0 +1,87 @@
+//! The boundary between a chapter's stage and whatever drives it: the
+//! headless runner, the terminal UI, the tests and the book's figures all
+//! use these two traits and nothing else. A stage knows nothing about
+//! terminals; a front end knows nothing about rendering.
+
+use std::sync::Arc;
+
+use crate::error::Result;
+use crate::film::Film;
+use crate::report::Report;
+use crate::scene::Scene;
+
+/// Settings every chapter understands. `None` means "what the scene says".
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Settings {
+    /// Override of the scene's image width.
+    pub width: Option<u32>,
+    /// Override of the scene's image height.
+    pub height: Option<u32>,
+    /// Samples per pixel (chapters without sampling ignore it).
+    pub spp: u32,
+    /// Seed for every random number.
+    pub seed: u64,
+    /// Run the error-against-time and stability studies for the report.
+    pub studies: bool,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            width: None,
+            height: None,
+            spp: 1,
+            seed: 0,
+            studies: false,
+        }
+    }
+}
+
+/// One way of looking at a stage's result (the image, depth, normals, ...).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct View {
+    /// Short name, used in file names (`ch1-scene-<name>.png`).
+    pub name: &'static str,
+    /// One line for help texts.
+    pub about: &'static str,
+}
+
+/// A chapter of the lecture, as a renderer stage.
+pub trait Chapter: Sync {
+    /// 1 to 6.
+    fn number(&self) -> u32;
+    /// The folder and binary slug, e.g. `projection`.
+    fn slug(&self) -> &'static str;
+    /// A title for menus and reports.
+    fn title(&self) -> &'static str;
+    /// The views this stage can show; the first is the main image.
+    fn views(&self) -> &'static [View];
+    /// Whether results carry per-bounce layers (chapter 6).
+    fn has_bounces(&self) -> bool {
+        false
+    }
+    /// Whether the main image holds radiance (then it is also written as EXR).
+    fn is_radiance(&self) -> bool {
+        false
+    }
+    /// Why this stage cannot render `scene`, if it cannot.
+    fn unsupported(&self, _scene: &Scene) -> Option<String> {
+        None
+    }
+    /// Prepares a render of `scene`. Cheap: the work happens in passes.
+    fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>>;
+}
+
+/// A render in progress.
+pub trait Render: Send {
+    /// Renders one more pass; returns `true` when the render is complete.
+    fn pass(&mut self) -> bool;
+    /// (passes done, passes planned).
+    fn progress(&self) -> (u32, u32);
+    /// The current image of a view (index into [`Chapter::views`]), with any
+    /// NaN or Inf already removed and counted.
+    fn view(&self, index: usize) -> Film;
+    /// The report; with `settings.studies` it includes the error-against-time
+    /// and stability studies, which may take a while.
+    fn report(&self) -> Report;
+}
