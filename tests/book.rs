@@ -1,0 +1,144 @@
+//! The book may only show real code: every Rust block is an mdBook include
+//! of a file in this repository with an anchor that exists and is not empty,
+//! and every page and figure the book links to exists. (mdBook itself
+//! silently renders nothing for a missing anchor.)
+
+use std::path::{Path, PathBuf};
+
+fn book_src() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("book/src")
+}
+
+fn pages() -> Vec<PathBuf> {
+    let mut pages: Vec<PathBuf> = std::fs::read_dir(book_src())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "md"))
+        .collect();
+    pages.sort();
+    pages
+}
+
+/// Fenced blocks as (info string, body, first line number).
+fn code_blocks(text: &str) -> Vec<(String, String, usize)> {
+    let mut blocks = Vec::new();
+    let mut current: Option<(String, String, usize)> = None;
+    for (n, line) in text.lines().enumerate() {
+        let trimmed = line.trim_start();
+        if let Some(info) = trimmed.strip_prefix("```") {
+            match current.take() {
+                None => current = Some((info.trim().to_string(), String::new(), n + 1)),
+                Some(block) => blocks.push(block),
+            }
+        } else if let Some((_, body, _)) = current.as_mut() {
+            body.push_str(line);
+            body.push('\n');
+        }
+    }
+    blocks
+}
+
+/// Checks one `{{#include path:anchor}}` and returns what it includes.
+fn resolve_include(page: &Path, directive: &str) -> Result<String, String> {
+    let inner = directive
+        .trim()
+        .strip_prefix("{{#include ")
+        .or_else(|| directive.trim().strip_prefix("{{#rustdoc_include "))
+        .and_then(|s| s.strip_suffix("}}"))
+        .ok_or_else(|| format!("not an include: `{directive}`"))?;
+    let (file, anchor) = match inner.split_once(':') {
+        Some((f, a)) => (f, Some(a)),
+        None => (inner, None),
+    };
+    let path = page.parent().unwrap().join(file);
+    let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let Some(anchor) = anchor else {
+        return Ok(text);
+    };
+    if anchor.chars().all(|c| c.is_ascii_digit()) {
+        return Err(format!("`{directive}`: use a named anchor, not line numbers"));
+    }
+    let start = format!("ANCHOR: {anchor}");
+    let end = format!("ANCHOR_END: {anchor}");
+    let lines: Vec<&str> = text.lines().collect();
+    let begin = lines
+        .iter()
+        .position(|l| l.trim_end().ends_with(&start))
+        .ok_or_else(|| format!("{}: no `{start}`", path.display()))?;
+    let stop = lines[begin..]
+        .iter()
+        .position(|l| l.trim_end().ends_with(&end))
+        .ok_or_else(|| format!("{}: no `{end}` after `{start}`", path.display()))?;
+    let body: Vec<&str> = lines[begin + 1..begin + stop]
+        .iter()
+        .filter(|l| !l.contains("ANCHOR"))
+        .copied()
+        .collect();
+    if body.iter().all(|l| l.trim().is_empty()) {
+        return Err(format!("{}: anchor `{anchor}` is empty", path.display()));
+    }
+    Ok(body.join("\n"))
+}
+
+#[test]
+fn every_rust_block_is_an_include_that_resolves() {
+    let mut problems = Vec::new();
+    let mut includes = 0;
+    for page in pages() {
+        let text = std::fs::read_to_string(&page).unwrap();
+        for (info, body, line) in code_blocks(&text) {
+            if !info.starts_with("rust") {
+                continue;
+            }
+            let at = format!("{}:{line}", page.display());
+            for l in body.lines().filter(|l| !l.trim().is_empty()) {
+                if l.trim_start().starts_with("{{#") {
+                    match resolve_include(&page, l) {
+                        Ok(_) => includes += 1,
+                        Err(e) => problems.push(format!("{at}: {e}")),
+                    }
+                } else {
+                    problems.push(format!("{at}: hand-written Rust in the book: `{l}`"));
+                }
+            }
+        }
+        // Includes outside code blocks must resolve too.
+        for l in text.lines().filter(|l| l.trim_start().starts_with("{{#include")) {
+            if let Err(e) = resolve_include(&page, l) {
+                problems.push(format!("{}: {e}", page.display()));
+            }
+        }
+    }
+    assert!(problems.is_empty(), "book problems:\n{}", problems.join("\n"));
+    assert!(includes >= 5, "the book includes only {includes} listings");
+}
+
+#[test]
+fn every_linked_page_and_figure_exists() {
+    let mut missing = Vec::new();
+    for page in pages() {
+        let text = std::fs::read_to_string(&page).unwrap();
+        // Markdown links and images: ](target)
+        for part in text.split("](").skip(1) {
+            let target = part.split(')').next().unwrap_or("");
+            let target = target.split('#').next().unwrap_or("");
+            if target.is_empty() || target.contains("://") || target.starts_with("mailto:") {
+                continue;
+            }
+            let path = page.parent().unwrap().join(target);
+            if !path.exists() {
+                missing.push(format!("{}: {target}", page.display()));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "missing link targets:\n{}", missing.join("\n"));
+}
+
+#[test]
+fn include_checker_rejects_what_it_should() {
+    let page = book_src().join("introduction.md");
+    assert!(resolve_include(&page, "{{#include ../../src/camera.rs:pinhole}}").is_ok());
+    assert!(resolve_include(&page, "{{#include ../../src/camera.rs:no_such_anchor}}").is_err());
+    assert!(resolve_include(&page, "{{#include ../../src/no_such_file.rs:pinhole}}").is_err());
+    assert!(resolve_include(&page, "{{#include ../../src/camera.rs:10:20}}").is_err());
+}
