@@ -42,8 +42,10 @@ pub mod grading;
 pub mod mesh;
 pub mod preview;
 pub mod projection;
+pub mod ray;
 pub mod report;
 pub mod run;
+pub mod sampling;
 pub mod scene;
 pub mod stage;
 

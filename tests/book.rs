@@ -56,7 +56,9 @@ fn resolve_include(page: &Path, directive: &str) -> Result<String, String> {
         return Ok(text);
     };
     if anchor.chars().all(|c| c.is_ascii_digit()) {
-        return Err(format!("`{directive}`: use a named anchor, not line numbers"));
+        return Err(format!(
+            "`{directive}`: use a named anchor, not line numbers"
+        ));
     }
     let start = format!("ANCHOR: {anchor}");
     let end = format!("ANCHOR_END: {anchor}");
@@ -103,13 +105,20 @@ fn every_rust_block_is_an_include_that_resolves() {
             }
         }
         // Includes outside code blocks must resolve too.
-        for l in text.lines().filter(|l| l.trim_start().starts_with("{{#include")) {
+        for l in text
+            .lines()
+            .filter(|l| l.trim_start().starts_with("{{#include"))
+        {
             if let Err(e) = resolve_include(&page, l) {
                 problems.push(format!("{}: {e}", page.display()));
             }
         }
     }
-    assert!(problems.is_empty(), "book problems:\n{}", problems.join("\n"));
+    assert!(
+        problems.is_empty(),
+        "book problems:\n{}",
+        problems.join("\n")
+    );
     assert!(includes >= 5, "the book includes only {includes} listings");
 }
 
@@ -131,7 +140,11 @@ fn every_linked_page_and_figure_exists() {
             }
         }
     }
-    assert!(missing.is_empty(), "missing link targets:\n{}", missing.join("\n"));
+    assert!(
+        missing.is_empty(),
+        "missing link targets:\n{}",
+        missing.join("\n")
+    );
 }
 
 #[test]
