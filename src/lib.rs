@@ -14,6 +14,7 @@
 //! | stage | chapter | module | binary | book page |
 //! |---|---|---|---|---|
 //! | projection | 1 | [`camera`], [`projection`] | `ch1` | `book/src/ch1-projection.md` |
+//! | implicit surfaces | 4 | [`sdf`], [`sphere_tracing`] | `ch4` | `book/src/ch4-sphere-tracing.md` |
 //!
 //! Later chapters (rasterization, ray-triangle intersection and a BVH,
 //! sphere tracing, the reflection equation, global illumination) join this
@@ -47,6 +48,8 @@ pub mod report;
 pub mod run;
 pub mod sampling;
 pub mod scene;
+pub mod sdf;
+pub mod sphere_tracing;
 pub mod stage;
 
 pub use error::{Error, Result};
