@@ -78,6 +78,11 @@ pub struct Trace {
     /// Steps that crossed the surface (the sign of f flipped): an f that
     /// overestimates, or an over-relaxed step that went too far.
     pub oversteps: u32,
+    /// Steps over which f changed by more than the step length: evidence
+    /// that f is not 1-Lipschitz, so its steps are not safe. (A step that
+    /// jumps clean through a thin part flips no sign; this still sees it
+    /// coming, since f falls faster than the ray moves.)
+    pub lipschitz_violations: u32,
     /// f at the stopping point (the residual surface distance of a hit).
     pub residual: f32,
 }
@@ -101,6 +106,7 @@ pub fn sphere_trace(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March) -> Trace {
         steps: 1,
         inside: f0 < 0.0,
         oversteps: 0,
+        lipschitz_violations: 0,
         residual: f0,
     };
     let mut d = s * f0; // distance bound, positive on the ray's side
@@ -119,11 +125,17 @@ pub fn sphere_trace(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March) -> Trace {
         }
         // A ball of radius d around p holds no surface: step d (or back,
         // if the last step crossed it and d is negative).
+        let t_before = trace.t;
         trace.t = (trace.t + d * m.step_factor).max(0.0);
         let next = s * f(ray.at(trace.t));
         trace.steps += 1;
         if next < 0.0 && d > 0.0 {
             trace.oversteps += 1;
+        }
+        // A 1-Lipschitz f cannot change faster than the ray moves.
+        let moved = trace.t - t_before;
+        if (next - d).abs() > 1.001 * moved.abs() + m.epsilon_at(p) {
+            trace.lipschitz_violations += 1;
         }
         d = next;
         trace.residual = s * d;
@@ -146,6 +158,7 @@ pub fn over_relaxed(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March, omega: f32) -
         steps: 1,
         inside: f0 < 0.0,
         oversteps: 0,
+        lipschitz_violations: 0,
         residual: f0,
     };
     let mut omega = omega.max(1.0);
@@ -200,6 +213,7 @@ pub fn fixed_step(f: &dyn Fn(Vec3) -> f32, ray: &Ray, delta: f32, m: &March) -> 
         steps: 1,
         inside: f0 < 0.0,
         oversteps: 0,
+        lipschitz_violations: 0,
         residual: f0,
     };
     let mut d = s * f0;

@@ -196,6 +196,8 @@ pub struct TraceStats {
     pub max_steps: u32,
     /// Steps that crossed the surface.
     pub oversteps: u64,
+    /// Steps where f changed faster than the ray moved (f not 1-Lipschitz).
+    pub lipschitz_violations: u64,
     /// Rays that started inside an object.
     pub inside: usize,
     /// Non-finite distances or hit positions met.
@@ -215,6 +217,7 @@ impl TraceStats {
             s.evaluations += p.trace.steps as u64;
             s.max_steps = s.max_steps.max(p.trace.steps);
             s.oversteps += p.trace.oversteps as u64;
+            s.lipschitz_violations += p.trace.lipschitz_violations as u64;
             s.inside += usize::from(p.trace.inside);
             let bad_hit = matches!(p.hit, Some(h) if !(h.t.is_finite() && h.normal.is_finite()));
             if bad_hit || !p.trace.t.is_finite() {
@@ -318,11 +321,13 @@ fn chapter_report(
             (
                 "steps".into(),
                 format!(
-                    "{} evaluations of f, {:.1} per ray on average, at most {}; {} oversteps",
+                    "{} evaluations of f, {:.1} per ray on average, at most {}; {} oversteps; \
+                     {} steps where f changed faster than the ray moved (not 1-Lipschitz)",
                     stats.evaluations,
                     stats.evaluations as f64 / n,
                     stats.max_steps,
-                    stats.oversteps
+                    stats.oversteps,
+                    stats.lipschitz_violations
                 ),
             ),
             ("render time".into(), format_seconds(seconds)),

@@ -90,6 +90,7 @@ pub fn trace_pixel(
         steps: 0,
         inside: false,
         oversteps: 0,
+        lipschitz_violations: 0,
         residual: f32::INFINITY,
     };
     if objects.is_empty() {
