@@ -404,7 +404,7 @@ fn snapshot_sdf_shapes_report() {
     let text: String = report
         .to_text(Times::Hide)
         .lines()
-        .filter(|l| !l.contains("render time"))
+        .filter(|l| !l.contains("render time") && !l.contains("  scene: "))
         .collect::<Vec<_>>()
         .join("\n");
     insta::assert_snapshot!(text);
