@@ -84,7 +84,7 @@ impl SphereTracing {
         if m.max_steps == 0 {
             return bad("`--max-steps` must be at least 1");
         }
-        if !(m.max_distance > 0.0) {
+        if m.max_distance.is_nan() || m.max_distance <= 0.0 {
             return bad("`--max-distance` must be positive");
         }
         if !(m.step_factor > 0.0 && m.step_factor <= 1.0) {

@@ -16,6 +16,8 @@ use crate::sdf::primitives::{sd_box, sd_sphere, sd_torus};
 type SdfFn = fn(Vec3, Vec3, f32) -> f32;
 type TraceFn = fn(&dyn Fn(Vec3) -> f32, Vec3, Vec3, f32, u32, f32) -> Option<f32>;
 type NormalFn = fn(&dyn Fn(Vec3) -> f32, Vec3, f32) -> Vec3;
+/// A distance function borrowed for a check.
+type Dist<'a> = &'a dyn Fn(Vec3) -> f32;
 
 /// Chapter 4's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {
@@ -124,7 +126,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
     let torus = |p: Vec3| sd_torus(p, 2.0, 0.5);
     let eps = 1e-4;
     // (sdf, origin, direction, expected t or None)
-    let cases: Vec<(&dyn Fn(Vec3) -> f32, Vec3, Vec3, Option<f32>)> = vec![
+    let cases: Vec<(Dist, Vec3, Vec3, Option<f32>)> = vec![
         (&sphere, Vec3::new(0.0, 0.0, 5.0), -Vec3::Z, Some(4.0)),
         (&sphere, Vec3::new(-4.0, 0.6, 0.0), Vec3::X, Some(4.0 - 0.8)),
         (&sphere, Vec3::new(0.0, 2.0, 5.0), -Vec3::Z, None),
@@ -181,7 +183,7 @@ pub fn check_gradient_normal(f: NormalFn) -> Check {
     let boxed = |p: Vec3| sd_box(p, Vec3::new(1.0, 2.0, 3.0));
     let torus = |p: Vec3| sd_torus(p, 2.0, 0.5);
     let s = 1.0 / 3f32.sqrt();
-    let cases: Vec<(&dyn Fn(Vec3) -> f32, Vec3, Vec3)> = vec![
+    let cases: Vec<(Dist, Vec3, Vec3)> = vec![
         (&sphere, Vec3::new(3.0, 0.0, 0.0), Vec3::X),
         (
             &sphere,
