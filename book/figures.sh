@@ -12,3 +12,9 @@ for scene in tetrahedron railroad bunny cornell-box; do
   target/release/ch1 --scene "scenes/$scene.toml" --out "$out" > /dev/null
 done
 target/release/ch1 --scene scenes/tetrahedron.toml --report --out "$out" > "$out/ch1-tetrahedron-report.txt"
+
+# Chapter 4: every view of the SDF shapes with the report (error against
+# time, stiff cases); the Lipschitz scene with holes, then fixed.
+target/release/ch4 --scene scenes/sdf-shapes.toml --report --out "$out" > "$out/ch4-sdf-shapes-report.txt"
+target/release/ch4 --scene scenes/sdf-lipschitz.toml --out "$out" > /dev/null
+target/release/ch4 --scene scenes/sdf-lipschitz.toml --step-factor 0.1 --out "$out/ch4-lipschitz-fixed" > /dev/null
