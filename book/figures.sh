@@ -17,4 +17,4 @@ target/release/ch1 --scene scenes/tetrahedron.toml --report --out "$out" > "$out
 # time, stiff cases); the Lipschitz scene with holes, then fixed.
 target/release/ch4 --scene scenes/sdf-shapes.toml --report --out "$out" > "$out/ch4-sdf-shapes-report.txt"
 target/release/ch4 --scene scenes/sdf-lipschitz.toml --out "$out" > /dev/null
-target/release/ch4 --scene scenes/sdf-lipschitz.toml --step-factor 0.1 --out "$out/ch4-lipschitz-fixed" > /dev/null
+target/release/ch4 --scene scenes/sdf-lipschitz.toml --step-factor 0.1 --max-steps 2048 --max-distance 20 --out "$out/ch4-lipschitz-fixed" > /dev/null
