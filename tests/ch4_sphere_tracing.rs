@@ -420,3 +420,18 @@ fn snapshot_sdf_shapes_ascii_preview() {
         raystep::preview::PreviewStyle::Ascii
     ));
 }
+
+#[test]
+fn central_and_tetrahedron_normals_agree() {
+    let s = scene("sdf-shapes").with_resolution(64, 48).unwrap();
+    let normals = |normals| {
+        let stage = SphereTracing { normals, ..DEFAULT };
+        render(&stage, s.clone(), false).1[1].clone()
+    };
+    let (a, b) = (
+        normals(NormalScheme::Central),
+        normals(NormalScheme::Tetrahedron),
+    );
+    assert_ne!(a, b, "two different schemes");
+    assert!(a.rmse(&b) < 0.01, "{}", a.rmse(&b));
+}
