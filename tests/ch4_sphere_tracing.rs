@@ -204,6 +204,7 @@ fn a_thin_plate_is_found_by_sphere_tracing_and_missed_by_fixed_steps() {
     let (wrong, covered) = thin_plate_wrong_pixels(Method::Plain);
     assert!(covered > 500, "{covered}");
     assert_eq!(wrong, 0);
+    assert_eq!(thin_plate_wrong_pixels(Method::OverRelaxed(1.9)).0, 0);
     let (wrong, _) = thin_plate_wrong_pixels(Method::FixedStep(0.01));
     assert!(wrong * 2 > covered, "{wrong} of {covered}");
 }
@@ -434,4 +435,21 @@ fn central_and_tetrahedron_normals_agree() {
     );
     assert_ne!(a, b, "two different schemes");
     assert!(a.rmse(&b) < 0.01, "{}", a.rmse(&b));
+}
+
+#[test]
+fn over_relaxation_falls_back_when_its_step_is_not_certified() {
+    // Head-on at a sphere, ω = 1.9 overshoots: the balls stop overlapping,
+    // the march goes back and finishes with plain steps.
+    let f = |p: Vec3| p.length() - 1.0;
+    let ray = raystep::ray::Ray::new(Vec3::new(0.0, 0.3, 6.0), -Vec3::Z).unwrap();
+    let m = March::default();
+    let plain = sphere_trace(&f, &ray, &m);
+    let over = over_relaxed(&f, &ray, &m, 1.9);
+    assert!(over.oversteps > 0, "{over:?}");
+    assert_eq!(over.ending, Ending::Hit);
+    assert!((over.t - plain.t).abs() < 2e-4, "{over:?} vs {plain:?}");
+    // ω = 1 is plain sphere tracing, step for step.
+    let one = over_relaxed(&f, &ray, &m, 1.0);
+    assert_eq!((one.steps, one.oversteps), (plain.steps, 0));
 }
