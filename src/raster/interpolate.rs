@@ -38,7 +38,15 @@ pub fn screen_barycentrics(tri: &ScreenTriangle, p: I64Vec2) -> [f64; 3] {
 /// The attributes of `tri` at sample `p`, and the depth w there.
 // ANCHOR: interpolate
 pub fn interpolate(tri: &ScreenTriangle, p: I64Vec2, mode: Interpolation) -> (Attributes, f64) {
-    let phi = screen_barycentrics(tri, p);
+    interpolate_phi(tri, screen_barycentrics(tri, p), mode)
+}
+
+/// [`interpolate`] from screen-space barycentrics φ already computed.
+pub fn interpolate_phi(
+    tri: &ScreenTriangle,
+    phi: [f64; 3],
+    mode: Interpolation,
+) -> (Attributes, f64) {
     // 1/w is linear on the screen in both modes: that gives the depth.
     let inv_w: f64 = (0..3).map(|n| phi[n] * tri.inv_w[n]).sum();
     let mut out = [0.0; 6];

@@ -313,7 +313,7 @@ pub fn pixel_bbox(v: &[I64Vec2; 3], width: u32, height: u32) -> Option<[u32; 4]>
     );
     let x1 = max.x.div_euclid(SUBPIXEL).min(width as i64 - 1);
     let y1 = max.y.div_euclid(SUBPIXEL).min(height as i64 - 1);
-    (x0 <= x1 && y0 <= y1).then(|| [x0 as u32, y0 as u32, x1 as u32, y1 as u32])
+    (x0 <= x1 && y0 <= y1).then_some([x0 as u32, y0 as u32, x1 as u32, y1 as u32])
 }
 
 /// A screen triangle straight from raster positions (pixels), at depth 1

@@ -6,7 +6,7 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use super::coverage::SampleBuffer;
-use super::interpolate::{interpolate, Interpolation};
+use super::interpolate::{interpolate_phi, screen_barycentrics, Interpolation};
 use super::setup::ScreenTriangle;
 use crate::film::Film;
 use crate::stage::View;
@@ -69,9 +69,9 @@ pub fn resolve(buf: &SampleBuffer, tris: &[ScreenTriangle]) -> Vec<Film> {
                     continue;
                 }
                 let tri = &tris[sample.tri as usize];
-                let p = buf.position(x, y, s);
-                let (a, _) = interpolate(tri, p, Interpolation::Perspective);
-                let (b, _) = interpolate(tri, p, Interpolation::Affine);
+                let phi = screen_barycentrics(tri, buf.position(x, y, s));
+                let (a, _) = interpolate_phi(tri, phi, Interpolation::Perspective);
+                let (b, _) = interpolate_phi(tri, phi, Interpolation::Affine);
                 let v = |a: &[f64; 6], k: usize| {
                     Vec3::new(a[k] as f32, a[k + 1] as f32, a[k + 2] as f32)
                 };
