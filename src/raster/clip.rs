@@ -140,10 +140,10 @@ mod tests {
         assert!(out
             .iter()
             .any(|q| q.p == DVec3::new(1.0, 0.0, -1.0) && q.attr[0] == 1.5));
-        // On (0,0,1)→(0,0,-3) a quarter from the front end... z = -1: colour 0.5.
+        // On (0,0,-3)→(0,0,1), from the front end: half way, colour 1.
         assert!(out
             .iter()
-            .any(|q| q.p == DVec3::new(0.0, 0.0, -1.0) && q.attr[0] == 0.5));
+            .any(|q| q.p == DVec3::new(0.0, 0.0, -1.0) && q.attr[0] == 1.0));
     }
 
     #[test]
