@@ -203,8 +203,7 @@ fn the_builtin_scene_is_the_shipped_cornell_box() {
 fn snapshot_tetrahedron_report() {
     let (report, _) = render_report(scene("tetrahedron"), true);
     let text = report.to_text(Times::Hide);
-    // Render time changes from run to run, and the scene's absolute path
-    // from checkout to checkout.
+    // Render time is the one fact that changes from run to run.
     let text: String = text
         .lines()
         .filter(|l| !l.contains("render time") && !l.starts_with("  scene: "))
