@@ -7,6 +7,7 @@ use crate::stage::Chapter;
 pub fn all() -> Vec<&'static dyn Chapter> {
     vec![
         &crate::projection::Projection,
+        &crate::raster::RASTERIZATION,
         &crate::sphere_tracing::DEFAULT,
     ]
 }
