@@ -15,7 +15,7 @@
 //! | exact coverage, the anti-aliasing reference | [`exact`] |
 //! | the chapter boundary and report | [`stage`] |
 //! | the report's studies | [`studies`] |
-//! | the speed benchmark (`ch2 --bench`) | [`bench`] |
+//! | the speed benchmark (`ch2 --bench`) | [`bench`](mod@bench) |
 
 pub mod bench;
 pub mod clip;

@@ -1,6 +1,6 @@
 //! Scene files → a validated [`Scene`] that holds only what the file uses.
 //!
-//! Loading happens in three steps: TOML text → serde types ([`file`]),
+//! Loading happens in three steps: TOML text → serde types ([`file`](mod@file)),
 //! checks that name the key that is wrong, then building: meshes are read
 //! (OBJ through tobj) or generated, transformed to world space, and bound to
 //! materials. Nothing is built for a section the file does not mention.
