@@ -48,5 +48,7 @@ pub mod run;
 pub mod sampling;
 pub mod scene;
 pub mod stage;
+#[cfg(feature = "tui")]
+pub mod tui;
 
 pub use error::{Error, Result};
