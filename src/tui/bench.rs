@@ -42,11 +42,11 @@ pub fn run(
     let scenes = scene_list(scenes_dir);
     let mut app = App::new(chapters.clone(), scenes, true);
     let worker = Worker::spawn();
-    let mut terminal = Terminal::new(TestBackend::new(200, 60)).unwrap_or_else(|e| match e {});
+    let mut terminal = Terminal::new(TestBackend::new(200, 60))?;
     let mut rows = Vec::new();
-    for index in 0..chapters.len() {
+    for (index, chapter) in chapters.iter().enumerate() {
         let t0 = if index == 0 { started } else { Instant::now() };
-        app = update(app, Msg::ChapterNumber(chapters[index].number()));
+        app = update(app, Msg::ChapterNumber(chapter.number()));
         let Some(job) = app.job() else { continue };
         worker.start(job);
         // Wait for the first pass of this generation, then draw once.
@@ -62,22 +62,17 @@ pub fn run(
                 break;
             }
         }
-        terminal
-            .draw(|f| view(&app, f))
-            .unwrap_or_else(|e| match e {});
+        terminal.draw(|f| view(&app, f))?;
         let first = t0.elapsed();
         let mut times = Vec::with_capacity(REDRAWS);
         for i in 0..REDRAWS {
             app.exposure = if i % 2 == 0 { 1 } else { 0 };
             let t = Instant::now();
-            terminal
-                .draw(|f| view(&app, f))
-                .unwrap_or_else(|e| match e {});
+            terminal.draw(|f| view(&app, f))?;
             times.push(t.elapsed());
         }
         app.exposure = 0;
         let (mean, p95, max) = stats(times);
-        let chapter = chapters[index];
         let size = app
             .snapshot
             .as_ref()

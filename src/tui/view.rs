@@ -278,7 +278,7 @@ fn draw_gauge(app: &App, frame: &mut Frame, area: Rect) {
 }
 
 fn draw_help(app: &App, frame: &mut Frame, area: Rect) {
-    let w = 72.min(area.width);
+    let w = 78.min(area.width);
     let h = (KEYS.len() as u16 + 2).min(area.height);
     let r = Rect::new(
         area.x + (area.width - w) / 2,
