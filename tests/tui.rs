@@ -372,6 +372,9 @@ fn lists_views_exposure_and_variants() {
     assert_eq!(app.view_name(), "image");
     let app = update(app, Msg::PrevView);
     assert_eq!(app.view_name(), "depth");
+    let other = update(update(app, Msg::ChapterNumber(2)), Msg::ChapterNumber(6));
+    assert_eq!(other.view, 0, "a new chapter starts on its first view");
+    let app = rendered(update(other, Msg::NextView));
 
     let app = send(app, &vec![Msg::ExposureUp; 12]);
     assert_eq!(app.exposure, 10);
@@ -711,4 +714,21 @@ fn the_scene_list_has_the_builtin_scene_and_shows_load_errors() {
     assert!(err.contains("b-broken.toml"), "{err}");
     // A folder that does not exist still gives the built-in scene.
     assert_eq!(scene_list(&dir.join("missing")).len(), 1);
+}
+
+#[test]
+fn the_book_documents_every_key() {
+    let page = std::fs::read_to_string(common::root().join("book/src/running.md")).unwrap();
+    let section = page
+        .split("## The terminal UI")
+        .nth(1)
+        .expect("running.md has a section on the terminal UI");
+    for (keys, _) in raystep::tui::keys::KEYS {
+        for k in keys.split_whitespace().filter(|k| *k != "…") {
+            assert!(
+                section.contains(&format!("`{k}`")),
+                "running.md does not document `{k}`"
+            );
+        }
+    }
 }

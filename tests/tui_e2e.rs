@@ -181,3 +181,43 @@ fn the_real_binary_in_a_terminal() {
         s.lines().filter(|l| l.starts_with("READY$")).count() >= 2
     });
 }
+
+#[test]
+fn a_panic_restores_the_terminal_before_printing() {
+    if !tmux_available() {
+        assert!(std::env::var_os("CI").is_none(), "tmux is missing under CI");
+        eprintln!("skipped: tmux is not installed (apt-get install tmux)");
+        return;
+    }
+    let dir = common::temp_dir("tui-e2e-panic");
+    let tmux = Tmux {
+        socket: format!("raystep-e2e-panic-{}", std::process::id()),
+    };
+    let started = tmux.run(&[
+        "new-session",
+        "-d",
+        "-s",
+        "t",
+        "-x",
+        "110",
+        "-y",
+        "34",
+        "-c",
+        dir.to_str().unwrap(),
+        "env PS1='READY$ ' sh",
+    ]);
+    assert!(started.status.success(), "{started:?}");
+    tmux.wait("the shell", 10, |_, s| s.contains("READY$"));
+    tmux.keys(&format!(
+        "{}=1 {} --scenes {}; echo \"EXIT=$?\"",
+        raystep::tui::TEST_PANIC,
+        env!("CARGO_BIN_EXE_raystep"),
+        dir.display()
+    ));
+    tmux.key("Enter");
+    let screen = tmux.wait("the shell after the panic", 30, |t, s| {
+        s.contains("EXIT=101") && t.flag("alternate_on") == "0"
+    });
+    assert!(screen.contains("a deliberate panic"), "{screen}");
+    assert_eq!(tmux.flag("cursor_flag"), "1");
+}

@@ -317,6 +317,9 @@ impl App {
     fn select_chapter(&mut self, index: usize) {
         if index < self.chapters.len() && index != self.chapter {
             self.chapter = index;
+            // Views and estimators differ between chapters: start at the first.
+            self.view = 0;
+            self.variant = 0;
             self.compare = Compare::Render;
             self.restart();
         }

@@ -53,6 +53,10 @@ pub fn should_open() -> bool {
     std::io::stdout().is_terminal()
 }
 
+/// Set this environment variable to make the UI panic after its first
+/// frame (the end-to-end test checks that the terminal is restored).
+pub const TEST_PANIC: &str = "RAYSTEP_TUI_TEST_PANIC";
+
 /// The thread that owns the terminal; panics elsewhere leave it alone.
 static UI_THREAD: OnceLock<ThreadId> = OnceLock::new();
 
@@ -142,6 +146,11 @@ fn event_loop(
             terminal.draw(|f| view::view(&app, f))?;
             last_draw = Some(Instant::now());
             dirty = false;
+            // For the end-to-end test of the panic hook: a panic while the
+            // UI owns the terminal.
+            if std::env::var_os(TEST_PANIC).is_some() {
+                panic!("{TEST_PANIC} is set: a deliberate panic after the first frame");
+            }
         }
         // Wait for a key, at most until the next frame is due.
         let timeout = if dirty {
