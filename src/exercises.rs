@@ -9,7 +9,16 @@ use crate::grading::Exercise;
 #[path = "../chapters/ch1-projection/exercises/mod.rs"]
 pub mod ch1;
 
+#[path = "../chapters/ch2-rasterization/exercises/mod.rs"]
+pub mod ch2;
+
+#[path = "../chapters/ch4-sphere-tracing/exercises/mod.rs"]
+pub mod ch4;
+
 /// Every exercise, in chapter order.
 pub fn all() -> Vec<Exercise> {
-    ch1::exercises()
+    let mut all = ch1::exercises();
+    all.extend(ch2::exercises());
+    all.extend(ch4::exercises());
+    all
 }

@@ -206,7 +206,7 @@ fn snapshot_tetrahedron_report() {
     // Render time is the one fact that changes from run to run.
     let text: String = text
         .lines()
-        .filter(|l| !l.contains("render time"))
+        .filter(|l| !l.contains("render time") && !l.starts_with("  scene: "))
         .collect::<Vec<_>>()
         .join("\n");
     insta::assert_snapshot!(text);
