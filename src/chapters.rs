@@ -5,5 +5,8 @@ use crate::stage::Chapter;
 
 /// All chapters, in order.
 pub fn all() -> Vec<&'static dyn Chapter> {
-    vec![&crate::projection::Projection]
+    vec![
+        &crate::projection::Projection,
+        &crate::raytrace::RayTriangle,
+    ]
 }

@@ -14,6 +14,7 @@
 //! | stage | chapter | module | binary | book page |
 //! |---|---|---|---|---|
 //! | projection | 1 | [`camera`], [`projection`] | `ch1` | `book/src/ch1-projection.md` |
+//! | ray-triangle | 3 | [`ray`], [`triangle`], [`bvh`], [`spawn`], [`raytrace`] | `ch3` | `book/src/ch3-ray-triangle.md` |
 //!
 //! Later chapters (rasterization, ray-triangle intersection and a BVH,
 //! sphere tracing, the reflection equation, global illumination) join this
@@ -32,6 +33,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bvh;
 pub mod camera;
 pub mod chapters;
 pub mod draw;
@@ -43,10 +45,15 @@ pub mod mesh;
 pub mod preview;
 pub mod projection;
 pub mod ray;
+pub mod raytrace;
+pub mod raytrace_bench;
+pub mod raytrace_studies;
 pub mod report;
 pub mod run;
 pub mod sampling;
 pub mod scene;
+pub mod spawn;
 pub mod stage;
+pub mod triangle;
 
 pub use error::{Error, Result};
