@@ -9,7 +9,12 @@ use crate::grading::Exercise;
 #[path = "../chapters/ch1-projection/exercises/mod.rs"]
 pub mod ch1;
 
+#[path = "../chapters/ch3-ray-triangle/exercises/mod.rs"]
+pub mod ch3;
+
 /// Every exercise, in chapter order.
 pub fn all() -> Vec<Exercise> {
-    ch1::exercises()
+    let mut all = ch1::exercises();
+    all.extend(ch3::exercises());
+    all
 }

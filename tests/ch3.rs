@@ -284,3 +284,27 @@ fn relative_error_of_t_stays_small_far_away() {
     // The camera's pixel positions are exact at the centre.
     assert_eq!(sample_position(3, 4, 10, 1, 0, 0), Vec2::new(3.5, 4.5));
 }
+
+#[test]
+fn ch3_exercise_stubs_fail_cleanly_and_references_pass() {
+    use raystep::grading::{run, Outcome, Solution};
+    let exercises: Vec<_> = raystep::grading::all()
+        .into_iter()
+        .filter(|e| e.chapter == 3)
+        .collect();
+    assert_eq!(exercises.len(), 3);
+    for ex in &exercises {
+        let text = std::fs::read_to_string(ex.file).unwrap();
+        if text.contains("todo!()") {
+            assert!(
+                matches!(run(ex, Solution::Student), Outcome::NotImplemented),
+                "{} should report NotImplemented",
+                ex.id()
+            );
+        }
+        match run(ex, Solution::Reference) {
+            Outcome::Passed(_) => {}
+            other => panic!("{}: reference does not pass: {other:?}", ex.id()),
+        }
+    }
+}
