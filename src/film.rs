@@ -85,7 +85,7 @@ impl Film {
     pub fn to_srgb8(&self) -> Vec<u8> {
         self.pixels
             .iter()
-            .flat_map(|p| p.to_array().map(|c| encode_srgb(c)))
+            .flat_map(|p| p.to_array().map(encode_srgb))
             .collect()
     }
 

@@ -455,6 +455,7 @@ pub struct VanishingPoint {
 
 /// The vanishing points of the three largest families of parallel edges
 /// that are not parallel to the image plane.
+#[allow(clippy::type_complexity)]
 pub fn vanishing_points(cam: &Camera, meshes: &[Mesh]) -> Vec<VanishingPoint> {
     use std::collections::BTreeMap;
     let mut families: BTreeMap<[i32; 3], (Vec3, Vec<(Vec3, Vec3)>)> = BTreeMap::new();
@@ -525,7 +526,7 @@ pub fn vanishing_points(cam: &Camera, meshes: &[Mesh]) -> Vec<VanishingPoint> {
             })
         })
         .collect();
-    out.sort_by(|a, b| b.lines.cmp(&a.lines));
+    out.sort_by_key(|v| std::cmp::Reverse(v.lines));
     out.truncate(3);
     out
 }

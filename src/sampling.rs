@@ -50,6 +50,7 @@ impl Sampler {
     }
 
     /// The next number in [0, 1).
+    #[allow(clippy::should_implement_trait)]
     pub fn next(&mut self) -> f32 {
         let r = random(self.seed, self.pixel, self.sample, self.dimension);
         self.dimension += 1;

@@ -11,6 +11,11 @@ use crate::ray::Ray;
 use crate::sampling::random;
 use crate::triangle::{self, intersect_f64};
 
+/// Barycentric (u, v).
+pub type Uv = (f32, f32);
+/// A hit as (t, u, v).
+pub type Tuv = (f32, f32, f32);
+
 /// Chapter 3's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {
     vec![
@@ -139,7 +144,7 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
         Vec3::new(2.0, 0.0, 0.0),
         Vec3::new(0.0, 2.0, 0.0),
     ];
-    let mut cases: Vec<(Vec3, [Vec3; 3], Option<(f32, f32)>)> = vec![
+    let mut cases: Vec<(Vec3, [Vec3; 3], Option<Uv>)> = vec![
         (Vec3::new(1.0, 0.5, 0.0), tri, Some((0.5, 0.25))),
         (Vec3::ZERO, tri, Some((0.0, 0.0))),
         (Vec3::new(1.0, 1.0, 0.0), tri, Some((0.5, 0.5))),
@@ -184,13 +189,13 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
 
 /// Hand-worked rays, parallel and degenerate cases, and random rays against
 /// an f64 solution of the same 3x3 system.
-pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<(f32, f32, f32)>) -> Check {
+pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check {
     let tri = [
         Vec3::new(0.0, 0.0, -2.0),
         Vec3::new(2.0, 0.0, -2.0),
         Vec3::new(0.0, 2.0, -2.0),
     ];
-    let mut cases: Vec<(Vec3, Vec3, [Vec3; 3], Option<(f32, f32, f32)>)> = vec![
+    let mut cases: Vec<(Vec3, Vec3, [Vec3; 3], Option<Tuv>)> = vec![
         // Straight down -z onto (1, 0.5, -2): t = 2, u = 0.5, v = 0.25.
         (
             Vec3::new(1.0, 0.5, 0.0),
