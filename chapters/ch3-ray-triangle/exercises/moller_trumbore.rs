@@ -3,7 +3,9 @@
 //! A point on the triangle is p0 + u e1 + v e2 (e1 = p1 - p0, e2 = p2 - p0)
 //! and a point on the ray is o + t d. Setting them equal gives
 //!
-//!     [e1, e2, -d] (u, v, t)ᵀ = o - p0.
+//! ```text
+//! [e1, e2, -d] (u, v, t)ᵀ = o - p0
+//! ```
 //!
 //! Solve it with Cramer's rule and return (t, u, v) for a hit with u ≥ 0,
 //! v ≥ 0, u + v ≤ 1 and t > 0; `None` otherwise (also when the determinant
