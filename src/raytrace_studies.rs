@@ -375,7 +375,13 @@ pub fn leak_test(mesh: &Mesh, rays: u64, seed: u64) -> Vec<LeakCount> {
         } else {
             let e = edges[((rnd(3) as f64 * edges.len() as f64) as usize).min(edges.len() - 1)];
             let (a, b) = (mesh.positions[e[0] as usize], mesh.positions[e[1] as usize]);
-            (a.lerp(b, rnd(4)), &by_edge[&e], folded(origin, e))
+            // Keep 1% away from the ends: a point rounded past an end is
+            // no longer on this edge (vertices get their own rays).
+            (
+                a.lerp(b, 0.01 + 0.98 * rnd(4)),
+                &by_edge[&e],
+                folded(origin, e),
+            )
         };
         if fold {
             continue;
