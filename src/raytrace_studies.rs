@@ -84,6 +84,7 @@ pub fn add_studies_sized(
     let leaks = leak_table(size.leak_rays, settings.seed);
     report.tables.push(leaks.0);
     report.tables.push(t_precision_table());
+    report.tables.push(intersector_speed(200_000));
     report.stability = stability_cases(size, &leaks.1);
 }
 
@@ -788,4 +789,61 @@ pub fn naive_hits(
     rays.iter()
         .map(|r| closest_naive(tris, r, f32::INFINITY, x))
         .collect()
+}
+
+/// The three tests side by side on `n` random ray-triangle pairs (about
+/// half of them hits): time per test (best of 3) and how often each agrees
+/// with the f64 solution of the 3x3 system on hit or miss.
+pub fn intersector_speed(n: u64) -> Table {
+    let pairs: Vec<(Ray, [Vec3; 3])> = (0..n)
+        .filter_map(|i| {
+            let r = |d| random(21, i, 0, d);
+            let tri = [
+                Vec3::new(r(0), r(1), r(2)) * 2.0 - 1.0,
+                Vec3::new(r(3), r(4), r(5)) * 2.0 - 1.0,
+                Vec3::new(r(6), r(7), r(8)) * 2.0 - 1.0,
+            ];
+            let origin = Vec3::new(r(9), r(10), r(11)) * 8.0 - 4.0;
+            let target = Vec3::new(r(12), r(13), r(14)) - 0.5;
+            Ray::new(origin, target - origin).ok().map(|ray| (ray, tri))
+        })
+        .collect();
+    let reference: Vec<bool> = pairs
+        .iter()
+        .map(|(ray, tri)| {
+            intersect_f64(
+                ray.origin.as_dvec3(),
+                ray.dir.as_dvec3(),
+                tri.map(|p| p.as_dvec3()),
+            )
+            .is_some()
+        })
+        .collect();
+    let mut t = Table::new(
+        &format!(
+            "The three ray-triangle tests on {} random rays (one thread)",
+            pairs.len()
+        ),
+        &["test", "ns per test", "hits", "agree with f64 on hit/miss"],
+    );
+    for x in Intersector::ALL {
+        let mut best = f64::INFINITY;
+        let mut hits = Vec::new();
+        for _ in 0..3 {
+            let t0 = Instant::now();
+            hits = pairs
+                .iter()
+                .map(|(ray, tri)| x.intersect(ray, *tri, 0.0, f32::INFINITY).is_some())
+                .collect();
+            best = best.min(t0.elapsed().as_secs_f64());
+        }
+        let agree = hits.iter().zip(&reference).filter(|(a, b)| a == b).count();
+        t.row(vec![
+            x.name().into(),
+            format_number(best / pairs.len().max(1) as f64 * 1e9),
+            hits.iter().filter(|h| **h).count().to_string(),
+            format!("{agree} of {}", pairs.len()),
+        ]);
+    }
+    t
 }

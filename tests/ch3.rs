@@ -308,3 +308,15 @@ fn ch3_exercise_stubs_fail_cleanly_and_references_pass() {
         }
     }
 }
+
+#[test]
+fn intersector_table_counts_agreement_with_f64() {
+    let t = raystep::raytrace_studies::intersector_speed(5_000);
+    assert_eq!(t.rows.len(), 3);
+    for row in &t.rows {
+        let hits: usize = row[2].parse().unwrap();
+        assert!(hits > 500, "{row:?}");
+        let agree: usize = row[3].split(' ').next().unwrap().parse().unwrap();
+        assert!(agree >= 4_990, "{row:?}");
+    }
+}
