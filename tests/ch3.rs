@@ -320,3 +320,22 @@ fn intersector_table_counts_agreement_with_f64() {
         assert!(agree >= 4_990, "{row:?}");
     }
 }
+
+#[test]
+fn snapshot_of_the_tetrahedron_views() {
+    use raystep::preview::{preview, PreviewStyle};
+    let scene = Scene::load(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/tetrahedron.toml"
+    )))
+    .unwrap()
+    .with_resolution(48, 36)
+    .unwrap();
+    let geometry = Geometry::new(&scene);
+    let films = render_views(&scene.camera, &geometry, 1, 0);
+    let mut text = String::new();
+    for (view, film) in raystep::raytrace::VIEWS.iter().zip(&films) {
+        text += &format!("{}:\n{}", view.name, preview(film, 48, PreviewStyle::Ascii));
+    }
+    insta::assert_snapshot!(text);
+}
