@@ -7,6 +7,8 @@ use crate::stage::Chapter;
 pub fn all() -> Vec<&'static dyn Chapter> {
     vec![
         &crate::projection::Projection,
+        &crate::raster::RASTERIZATION,
         &crate::raytrace::RayTriangle,
+        &crate::sphere_tracing::DEFAULT,
     ]
 }

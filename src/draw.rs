@@ -3,15 +3,17 @@
 //! sample lights the four nearest pixel centres with a tent weight, keeping
 //! the brighter value where lines cross. Deterministic and free of gaps.
 
-use glam::{Vec2, Vec3};
+use glam::{DVec2, Vec2, Vec3};
 
 use crate::film::Film;
 
 /// Clips the segment a→b to the rectangle [lo, hi] (Liang–Barsky); returns
-/// the parameters (t0, t1) of the visible part, if any.
-pub fn clip_segment_2d(a: Vec2, b: Vec2, lo: Vec2, hi: Vec2) -> Option<(f32, f32)> {
+/// the parameters (t0, t1) of the visible part, if any. In f64: an edge can
+/// reach a million pixels off screen, where f32 would misplace its visible
+/// part by many pixels.
+pub fn clip_segment_2d(a: DVec2, b: DVec2, lo: DVec2, hi: DVec2) -> Option<(f64, f64)> {
     let d = b - a;
-    let (mut t0, mut t1) = (0.0f32, 1.0f32);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
     for (p, q) in [
         (-d.x, a.x - lo.x),
         (d.x, hi.x - a.x),
@@ -40,17 +42,18 @@ pub fn line(film: &mut Film, a: Vec2, b: Vec2, ca: Vec3, cb: Vec3) -> usize {
     if !(a.is_finite() && b.is_finite()) {
         return 0;
     }
-    let margin = Vec2::splat(2.0);
-    let hi = Vec2::new(film.width as f32, film.height as f32) + margin;
+    let (a, b) = (a.as_dvec2(), b.as_dvec2());
+    let margin = DVec2::splat(2.0);
+    let hi = DVec2::new(film.width as f64, film.height as f64) + margin;
     let Some((t0, t1)) = clip_segment_2d(a, b, -margin, hi) else {
         return 0;
     };
-    let (p0, p1) = (a.lerp(b, t0), a.lerp(b, t1));
+    let (p0, p1) = (a.lerp(b, t0).as_vec2(), a.lerp(b, t1).as_vec2());
     let steps = ((p1 - p0).length() * 4.0).ceil().max(1.0) as usize;
     let mut lit = 0;
     for s in 0..=steps {
         let f = s as f32 / steps as f32;
-        let t = t0 + (t1 - t0) * f;
+        let t = (t0 + (t1 - t0) * f as f64) as f32;
         lit += splat(film, p0.lerp(p1, f), ca.lerp(cb, t), 1.0);
     }
     lit
@@ -117,13 +120,13 @@ mod tests {
 
     #[test]
     fn liang_barsky_rejects_outside_segments() {
-        let (lo, hi) = (Vec2::ZERO, Vec2::splat(10.0));
+        let (lo, hi) = (DVec2::ZERO, DVec2::splat(10.0));
         assert_eq!(
-            clip_segment_2d(Vec2::new(-5.0, -1.0), Vec2::new(20.0, -1.0), lo, hi),
+            clip_segment_2d(DVec2::new(-5.0, -1.0), DVec2::new(20.0, -1.0), lo, hi),
             None
         );
         let (t0, t1) =
-            clip_segment_2d(Vec2::new(-10.0, 5.0), Vec2::new(20.0, 5.0), lo, hi).unwrap();
-        assert!((t0 - 1.0 / 3.0).abs() < 1e-6 && (t1 - 2.0 / 3.0).abs() < 1e-6);
+            clip_segment_2d(DVec2::new(-10.0, 5.0), DVec2::new(20.0, 5.0), lo, hi).unwrap();
+        assert!((t0 - 1.0 / 3.0).abs() < 1e-12 && (t1 - 2.0 / 3.0).abs() < 1e-12);
     }
 }

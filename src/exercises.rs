@@ -9,12 +9,20 @@ use crate::grading::Exercise;
 #[path = "../chapters/ch1-projection/exercises/mod.rs"]
 pub mod ch1;
 
+#[path = "../chapters/ch2-rasterization/exercises/mod.rs"]
+pub mod ch2;
+
 #[path = "../chapters/ch3-ray-triangle/exercises/mod.rs"]
 pub mod ch3;
+
+#[path = "../chapters/ch4-sphere-tracing/exercises/mod.rs"]
+pub mod ch4;
 
 /// Every exercise, in chapter order.
 pub fn all() -> Vec<Exercise> {
     let mut all = ch1::exercises();
+    all.extend(ch2::exercises());
     all.extend(ch3::exercises());
+    all.extend(ch4::exercises());
     all
 }

@@ -14,7 +14,9 @@
 //! | stage | chapter | module | binary | book page |
 //! |---|---|---|---|---|
 //! | projection | 1 | [`camera`], [`projection`] | `ch1` | `book/src/ch1-projection.md` |
+//! | rasterization | 2 | [`raster`], [`mesh_check`] | `ch2` | `book/src/ch2-rasterization.md` |
 //! | ray-triangle | 3 | [`ray`], [`triangle`], [`bvh`], [`spawn`], [`raytrace`] | `ch3` | `book/src/ch3-ray-triangle.md` |
+//! | implicit surfaces | 4 | [`sdf`], [`sphere_tracing`] | `ch4` | `book/src/ch4-sphere-tracing.md` |
 //!
 //! Later chapters (rasterization, ray-triangle intersection and a BVH,
 //! sphere tracing, the reflection equation, global illumination) join this
@@ -42,8 +44,10 @@ pub mod exercises;
 pub mod film;
 pub mod grading;
 pub mod mesh;
+pub mod mesh_check;
 pub mod preview;
 pub mod projection;
+pub mod raster;
 pub mod ray;
 pub mod raytrace;
 pub mod raytrace_bench;
@@ -52,7 +56,9 @@ pub mod report;
 pub mod run;
 pub mod sampling;
 pub mod scene;
+pub mod sdf;
 pub mod spawn;
+pub mod sphere_tracing;
 pub mod stage;
 pub mod triangle;
 

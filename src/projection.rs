@@ -300,6 +300,7 @@ fn chapter_report(
         .push("shading: materials give edge colours only".into());
     report.left_out.push(match scene.lights.len() {
         0 => "lights: the scene has none".into(),
+        1 => "1 light: projection needs no light".into(),
         n => format!("{n} lights: projection needs no light"),
     });
     report
@@ -458,7 +459,9 @@ pub struct VanishingPoint {
 #[allow(clippy::type_complexity)]
 pub fn vanishing_points(cam: &Camera, meshes: &[Mesh]) -> Vec<VanishingPoint> {
     use std::collections::BTreeMap;
-    let mut families: BTreeMap<[i32; 3], (Vec3, Vec<(Vec3, Vec3)>)> = BTreeMap::new();
+    // Quantised direction → (direction, the edges along it).
+    type Family = (Vec3, Vec<(Vec3, Vec3)>);
+    let mut families: BTreeMap<[i32; 3], Family> = BTreeMap::new();
     for m in meshes {
         for [i, j] in m.edges() {
             let (a, b) = (m.positions[i as usize], m.positions[j as usize]);
@@ -730,20 +733,15 @@ pub fn stability_cases(cam: &Camera) -> Vec<StabilityCase> {
         }
         (worst, finite)
     };
-    let (e, fin) = extreme(0.01, DVec3::ZERO, 10.0);
-    case(
-        "fov 0.01°",
-        "finite, within 0.5 px",
-        format!("max error {} px", format_number(e)),
-        fin && e < 0.5,
-    );
-    let (e, fin) = extreme(179.99, DVec3::ZERO, 10.0);
-    case(
-        "fov 179.99°",
-        "finite, within 0.5 px",
-        format!("max error {} px", format_number(e)),
-        fin && e < 0.5,
-    );
+    for fov in [0.01, 179.99] {
+        let (e, fin) = extreme(fov, DVec3::ZERO, 10.0);
+        case(
+            &format!("fov {fov}°"),
+            "finite, within 0.5 px",
+            format!("max error {} px", format_number(e)),
+            fin && e < 0.5,
+        );
+    }
     let (e, fin) = extreme(cam.desc.fov_degrees, DVec3::splat(1e7), 10.0);
     case(
         "camera and points at coordinates 1e7",

@@ -315,11 +315,13 @@ impl Report {
     /// Writes the error-against-time table (`stem.csv`) and the stability
     /// table (`stem-stability.csv`) into `dir`.
     pub fn write_csv(&self, dir: &Path, stem: &str) -> Result<()> {
+        let write_text = |name: String, text: String| {
+            write_atomically(&dir.join(name), |tmp| {
+                std::fs::write(tmp, text).map_err(|e| e.to_string())
+            })
+        };
         if let Some(et) = &self.error_vs_time {
-            let csv_text = et.to_csv();
-            write_atomically(&dir.join(format!("{stem}.csv")), |tmp| {
-                std::fs::write(tmp, &csv_text).map_err(|e| e.to_string())
-            })?;
+            write_text(format!("{stem}.csv"), et.to_csv())?;
         }
         if !self.stability.is_empty() {
             let mut s = String::from("case,expected,measured,ok\n");
@@ -333,9 +335,7 @@ impl Report {
                     c.ok
                 );
             }
-            write_atomically(&dir.join(format!("{stem}-stability.csv")), |tmp| {
-                std::fs::write(tmp, &s).map_err(|e| e.to_string())
-            })?;
+            write_text(format!("{stem}-stability.csv"), s)?;
         }
         Ok(())
     }

@@ -49,7 +49,7 @@ impl Sampler {
         }
     }
 
-    /// The next number in [0, 1).
+    /// The next number in [0, 1). (Not an iterator: it never ends.)
     #[allow(clippy::should_implement_trait)]
     pub fn next(&mut self) -> f32 {
         let r = random(self.seed, self.pixel, self.sample, self.dimension);

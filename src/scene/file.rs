@@ -21,6 +21,11 @@ pub struct SceneFile {
     /// Lights that are not surfaces (area lights are emissive materials).
     #[serde(default)]
     pub lights: Vec<LightSection>,
+    /// Signed distance function objects (chapter 4), each a table with a
+    /// `type`; checked key by key in [`crate::sdf::parse`], so errors name
+    /// the key path.
+    #[serde(default)]
+    pub sdfs: Vec<toml::Table>,
 }
 
 /// `[camera]`.

@@ -1,6 +1,6 @@
 //! Scene files → a validated [`Scene`] that holds only what the file uses.
 //!
-//! Loading happens in three steps: TOML text → serde types ([`file`]),
+//! Loading happens in three steps: TOML text → serde types ([`file`](mod@file)),
 //! checks that name the key that is wrong, then building: meshes are read
 //! (OBJ through tobj) or generated, transformed to world space, and bound to
 //! materials. Nothing is built for a section the file does not mention.
@@ -15,6 +15,7 @@ use glam::{DVec3, Mat4, Quat, Vec3};
 use crate::camera::{Camera, CameraDesc};
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
+use crate::sdf::SdfObject;
 use file::{LightSection, MaterialKind, ObjectSection, Scale, SceneFile, Shape};
 
 /// A material, ready to render.
@@ -58,10 +59,14 @@ pub struct Scene {
     pub camera: Camera,
     /// Meshes in world space.
     pub meshes: Vec<Mesh>,
-    /// Materials used by at least one mesh; unused ones are dropped.
+    /// Materials used by at least one mesh or SDF object; unused ones are
+    /// dropped.
     pub materials: Vec<Material>,
     /// Non-surface lights, as written (chapter 5 interprets them).
     pub lights: Vec<LightSection>,
+    /// Signed distance function objects (chapter 4); empty, and nothing
+    /// allocated, when the file has no `[[sdfs]]`.
+    pub sdfs: Vec<SdfObject>,
 }
 
 impl Scene {
@@ -301,6 +306,8 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
         meshes.push(mesh);
     }
 
+    let sdfs = build_sdfs(&file.sdfs, &declared, &mut materials, source)?;
+
     for (i, l) in file.lights.iter().enumerate() {
         let numbers: Vec<f64> = match l {
             LightSection::Point {
@@ -337,7 +344,71 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
         meshes,
         materials,
         lights: file.lights,
+        sdfs,
     })
+}
+
+/// The `[[sdfs]]` entries: each parsed into an SDF tree, named, and bound
+/// to a material (added to `materials` if no mesh uses it yet).
+fn build_sdfs(
+    tables: &[toml::Table],
+    declared: &[Material],
+    materials: &mut Vec<Material>,
+    source: &str,
+) -> Result<Vec<SdfObject>> {
+    let scene_err = |at: String, message: String| Error::Scene {
+        file: source.to_string(),
+        at,
+        message,
+    };
+    let mut out = Vec::with_capacity(tables.len());
+    for (i, t) in tables.iter().enumerate() {
+        let at = format!("sdfs[{i}]");
+        let sdf = crate::sdf::parse::parse_node(t, &at, true).map_err(|(a, m)| scene_err(a, m))?;
+        let name = match t.get("name") {
+            None => format!("{} {i}", t["type"].as_str().unwrap_or("sdf")),
+            Some(toml::Value::String(n)) => n.clone(),
+            Some(v) => {
+                return Err(scene_err(
+                    format!("{at}.name"),
+                    format!("expected a string, got {v}"),
+                ))
+            }
+        };
+        let material = match t.get("material") {
+            None => Material::default_grey(),
+            Some(toml::Value::String(wanted)) => declared
+                .iter()
+                .find(|m| &m.name == wanted)
+                .cloned()
+                .ok_or_else(|| {
+                    let known: Vec<&str> = declared.iter().map(|m| m.name.as_str()).collect();
+                    scene_err(
+                        format!("{at}.material"),
+                        format!("no material named `{wanted}`; declared: {known:?}"),
+                    )
+                })?,
+            Some(v) => {
+                return Err(scene_err(
+                    format!("{at}.material"),
+                    format!("expected a material's name, got {v}"),
+                ))
+            }
+        };
+        let index = match materials.iter().position(|m| m.name == material.name) {
+            Some(k) => k,
+            None => {
+                materials.push(material);
+                materials.len() - 1
+            }
+        };
+        out.push(SdfObject {
+            name,
+            sdf,
+            material: index,
+        });
+    }
+    Ok(out)
 }
 
 fn check_finite(values: &[f64]) -> std::result::Result<(), &'static str> {

@@ -72,7 +72,9 @@ pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
             (None, None) => 0.0,
             _ => f64::INFINITY,
         };
-        if !(err <= worst.0) {
+        // A NaN (from a NaN answer) counts as infinitely wrong.
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        if err > worst.0 {
             worst = (err, format!("p = {p}: got {got:?}, expected {want:?}"));
         }
     }

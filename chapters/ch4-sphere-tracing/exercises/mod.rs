@@ -1,0 +1,211 @@
+//! Chapter 4's exercises and how each is graded.
+
+pub mod gradient_normal;
+pub mod sphere_sdf;
+pub mod sphere_trace;
+
+use glam::Vec3;
+
+use crate::grading::{Check, Exercise, Solution};
+use crate::ray::Ray;
+use crate::sdf::march::{self, March};
+use crate::sdf::normal::gradient_central;
+use crate::sdf::primitives::{sd_box, sd_sphere, sd_torus};
+
+/// The candidate types.
+type SdfFn = fn(Vec3, Vec3, f32) -> f32;
+type TraceFn = fn(&dyn Fn(Vec3) -> f32, Vec3, Vec3, f32, u32, f32) -> Option<f32>;
+type NormalFn = fn(&dyn Fn(Vec3) -> f32, Vec3, f32) -> Vec3;
+/// A distance function borrowed for a check.
+type Dist<'a> = &'a dyn Fn(Vec3) -> f32;
+
+/// Chapter 4's exercises, in order.
+pub fn exercises() -> Vec<Exercise> {
+    vec![
+        Exercise {
+            chapter: 4,
+            name: "sphere_sdf",
+            file: "chapters/ch4-sphere-tracing/exercises/sphere_sdf.rs",
+            hint: "the distance to the centre, |p - center|, minus the radius",
+            grade: |who| {
+                check_sphere_sdf(match who {
+                    Solution::Student => sphere_sdf::sphere_sdf,
+                    Solution::Reference => |p, c, r| sd_sphere(p - c, r),
+                })
+            },
+        },
+        Exercise {
+            chapter: 4,
+            name: "sphere_trace",
+            file: "chapters/ch4-sphere-tracing/exercises/sphere_trace.rs",
+            hint: "loop: d = sdf(o + t d); if d < ε return Some(t); t += d; if t > max_distance return None",
+            grade: |who| {
+                check_sphere_trace(match who {
+                    Solution::Student => sphere_trace::sphere_trace,
+                    Solution::Reference => reference_trace,
+                })
+            },
+        },
+        Exercise {
+            chapter: 4,
+            name: "gradient_normal",
+            file: "chapters/ch4-sphere-tracing/exercises/gradient_normal.rs",
+            hint: "(f(p + h e_i) - f(p - h e_i)) / 2h per axis i, then normalize",
+            grade: |who| {
+                check_gradient_normal(match who {
+                    Solution::Student => gradient_normal::gradient_normal,
+                    Solution::Reference => |f, p, h| gradient_central(f, p, h).normalize(),
+                })
+            },
+        },
+    ]
+}
+
+fn reference_trace(
+    f: &dyn Fn(Vec3) -> f32,
+    o: Vec3,
+    d: Vec3,
+    epsilon: f32,
+    max_steps: u32,
+    max_distance: f32,
+) -> Option<f32> {
+    let ray = Ray::new(o, d).ok()?;
+    let m = March {
+        epsilon,
+        max_steps,
+        max_distance,
+        step_factor: 1.0,
+    };
+    march::sphere_trace(f, &ray, &m).hit()
+}
+
+/// Records the worst relative error over the cases.
+fn worst_of(cases: impl Iterator<Item = (f64, String)>) -> (f64, String) {
+    let mut worst = (0.0f64, String::from("all cases match"));
+    for (err, what) in cases {
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        if err > worst.0 {
+            worst = (err, what);
+        }
+    }
+    worst
+}
+
+/// The sphere's SDF against values worked out by hand.
+pub fn check_sphere_sdf(f: SdfFn) -> Check {
+    let c = Vec3::new(1.0, 2.0, 3.0);
+    let cases = [
+        // Outside, on, and inside; the centre is -radius.
+        (Vec3::new(4.0, 6.0, 3.0), c, 2.0, 3.0), // |(3, 4, 0)| = 5
+        (Vec3::new(1.0, 2.0, 5.0), c, 2.0, 0.0),
+        (Vec3::new(1.5, 2.0, 3.0), c, 2.0, -1.5),
+        (c, c, 0.75, -0.75),
+        (Vec3::new(0.0, 0.0, -10.0), Vec3::ZERO, 1.0, 9.0),
+        (Vec3::new(2.0, 3.0, 6.0), Vec3::new(0.0, 0.0, 0.0), 1.0, 6.0), // |(2, 3, 6)| = 7
+    ];
+    let (error, detail) = worst_of(cases.into_iter().map(|(p, c, r, want)| {
+        let got = f(p, c, r);
+        (
+            (got - want).abs() as f64,
+            format!("p {p}, centre {c}, radius {r}: got {got}, expected {want}"),
+        )
+    }));
+    Check {
+        error,
+        tolerance: 1e-5,
+        detail,
+        images: None,
+    }
+}
+
+/// The sphere-tracing loop on a sphere, a box and a torus, against hits
+/// worked out by hand and raystep's tracer; and rays that miss.
+pub fn check_sphere_trace(f: TraceFn) -> Check {
+    let sphere = |p: Vec3| sd_sphere(p, 1.0);
+    let boxed = |p: Vec3| sd_box(p - Vec3::new(0.0, 0.0, -3.0), Vec3::splat(0.5));
+    let torus = |p: Vec3| sd_torus(p, 2.0, 0.5);
+    let eps = 1e-4;
+    // (sdf, origin, direction, expected t or None)
+    let cases: Vec<(Dist, Vec3, Vec3, Option<f32>)> = vec![
+        (&sphere, Vec3::new(0.0, 0.0, 5.0), -Vec3::Z, Some(4.0)),
+        (&sphere, Vec3::new(-4.0, 0.6, 0.0), Vec3::X, Some(4.0 - 0.8)),
+        (&sphere, Vec3::new(0.0, 2.0, 5.0), -Vec3::Z, None),
+        (&boxed, Vec3::ZERO, -Vec3::Z, Some(2.5)),
+        (&boxed, Vec3::ZERO, Vec3::Z, None),
+        // Down the torus's axis: through the hole, no hit.
+        (&torus, Vec3::new(0.0, 5.0, 0.0), -Vec3::Y, None),
+        // Along x through the tube: hits its outer side at x = 2.5.
+        (&torus, Vec3::new(6.0, 0.0, 0.0), -Vec3::X, Some(3.5)),
+    ];
+    let (error, detail) = worst_of(cases.into_iter().map(|(sdf, o, d, want)| {
+        let got = f(sdf, o, d, eps, 512, 50.0);
+        let err = match (got, want) {
+            (Some(g), Some(w)) => ((g - w).abs() as f64 - eps as f64).max(0.0),
+            (None, None) => 0.0,
+            _ => f64::INFINITY,
+        };
+        (
+            err,
+            format!("ray from {o} along {d}: got {got:?}, expected {want:?}"),
+        )
+    }));
+    // The step budget is respected: a ray passing 5e-5 above the sphere
+    // counts as a hit with ε = 1e-4, but not within 3 steps from 40 away
+    // (it creeps along the silhouette).
+    let budget = f(
+        &sphere,
+        Vec3::new(-40.0, 1.00005, 0.0),
+        Vec3::X,
+        eps,
+        3,
+        100.0,
+    );
+    let (error, detail) = if budget.is_some() {
+        (
+            f64::INFINITY,
+            format!("3 steps were enough to find a grazing hit 40 away: {budget:?}"),
+        )
+    } else {
+        (error, detail)
+    };
+    Check {
+        error,
+        tolerance: 1e-5,
+        detail,
+        images: None,
+    }
+}
+
+/// Gradient normals of a sphere, a box face and a torus against their
+/// exact normals.
+pub fn check_gradient_normal(f: NormalFn) -> Check {
+    let sphere = |p: Vec3| sd_sphere(p - Vec3::new(1.0, 0.0, 0.0), 2.0);
+    let boxed = |p: Vec3| sd_box(p, Vec3::new(1.0, 2.0, 3.0));
+    let torus = |p: Vec3| sd_torus(p, 2.0, 0.5);
+    let s = 1.0 / 3f32.sqrt();
+    let cases: Vec<(Dist, Vec3, Vec3)> = vec![
+        (&sphere, Vec3::new(3.0, 0.0, 0.0), Vec3::X),
+        (
+            &sphere,
+            Vec3::new(1.0, 0.0, 0.0) + Vec3::splat(2.0 * s),
+            Vec3::splat(s),
+        ),
+        (&boxed, Vec3::new(0.2, 2.0, 0.5), Vec3::Y),
+        (&boxed, Vec3::new(-1.0, 0.3, -0.4), -Vec3::X),
+        (&torus, Vec3::new(0.0, 0.5, 2.0), Vec3::Y),
+        (&torus, Vec3::new(-2.5, 0.0, 0.0), -Vec3::X),
+    ];
+    let (error, detail) = worst_of(cases.into_iter().map(|(sdf, p, want)| {
+        let got = f(sdf, p, 1e-3);
+        (
+            (got - want).length() as f64,
+            format!("at {p}: got {got}, expected {want}"),
+        )
+    }));
+    Check {
+        error,
+        tolerance: 1e-3,
+        detail,
+        images: None,
+    }
+}

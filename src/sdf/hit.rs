@@ -1,0 +1,69 @@
+//! One surface hit, whatever the surface, and "the nearest hit wins" for
+//! scenes that mix SDF objects with meshes.
+//!
+//! Chapter 4 traces only the SDF part. The mesh part (ray-triangle and the
+//! BVH) is chapter 3's; the renderer passes its hit, or `None`, to
+//! [`nearest_hit`], so wiring in chapter 3 is one call.
+
+use glam::Vec3;
+
+/// What kind of surface was hit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Surface {
+    /// SDF object `index` of the scene.
+    Sdf(usize),
+    /// Mesh `index` of the scene.
+    Mesh(usize),
+}
+
+/// A hit on any surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SurfaceHit {
+    /// Distance along the (unit) ray.
+    pub t: f32,
+    /// Unit normal, facing against the ray.
+    pub normal: Vec3,
+    /// Index into the scene's materials.
+    pub material: usize,
+    /// Which surface.
+    pub surface: Surface,
+}
+
+/// The nearer of an SDF hit and a mesh hit; either may be missing. On a
+/// tie the SDF hit wins, so the result does not depend on the order the
+/// two were found in.
+// ANCHOR: nearest_hit
+pub fn nearest_hit(sdf: Option<SurfaceHit>, mesh: Option<SurfaceHit>) -> Option<SurfaceHit> {
+    match (sdf, mesh) {
+        (Some(s), Some(m)) => Some(if m.t < s.t { m } else { s }),
+        (s, m) => s.or(m),
+    }
+}
+// ANCHOR_END: nearest_hit
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(t: f32, surface: Surface) -> SurfaceHit {
+        SurfaceHit {
+            t,
+            normal: Vec3::Z,
+            material: 0,
+            surface,
+        }
+    }
+
+    #[test]
+    fn the_nearest_wins() {
+        let s = at(2.0, Surface::Sdf(0));
+        let m = at(1.0, Surface::Mesh(3));
+        assert_eq!(nearest_hit(Some(s), Some(m)), Some(m));
+        assert_eq!(nearest_hit(Some(m), Some(s)).unwrap().t, 1.0);
+        assert_eq!(nearest_hit(Some(s), None), Some(s));
+        assert_eq!(nearest_hit(None, Some(m)), Some(m));
+        assert_eq!(nearest_hit(None, None), None);
+        let tie = at(2.0, Surface::Mesh(0));
+        assert_eq!(nearest_hit(Some(s), Some(tie)), Some(s));
+    }
+}

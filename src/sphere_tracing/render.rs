@@ -1,0 +1,177 @@
+//! One ray per pixel through the SDF part of a scene, in parallel, and the
+//! views made from the traces. Each pixel is a pure function of its
+//! position, so the images are the same on any number of threads.
+
+use glam::{Vec2, Vec3};
+use rayon::prelude::*;
+
+use crate::camera::Camera;
+use crate::film::Film;
+use crate::ray::Ray;
+use crate::scene::Material;
+use crate::sdf::hit::{nearest_hit, Surface, SurfaceHit};
+use crate::sdf::march::{fixed_step, over_relaxed, sphere_trace, Ending, March, Trace};
+use crate::sdf::normal::{normal, NormalScheme};
+use crate::sdf::{scene_distance, SdfObject};
+
+/// Which march.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Method {
+    /// Sphere tracing.
+    Plain,
+    /// Over-relaxed sphere tracing with this ω.
+    OverRelaxed(f32),
+    /// Constant steps of this length.
+    FixedStep(f32),
+}
+
+impl Method {
+    /// A short name for reports.
+    pub fn describe(&self) -> String {
+        match self {
+            Method::Plain => "sphere tracing".into(),
+            Method::OverRelaxed(w) => format!("over-relaxed sphere tracing (ω = {w})"),
+            Method::FixedStep(d) => format!("fixed-step march (Δ = {d})"),
+        }
+    }
+}
+
+/// Marches one ray with `method`.
+pub fn march(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March, method: Method) -> Trace {
+    match method {
+        Method::Plain => sphere_trace(f, ray, m),
+        Method::OverRelaxed(omega) => over_relaxed(f, ray, m, omega),
+        Method::FixedStep(delta) => fixed_step(f, ray, delta, m),
+    }
+}
+
+/// What one pixel's ray found.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pixel {
+    /// The march.
+    pub trace: Trace,
+    /// The surface hit after "nearest hit wins".
+    pub hit: Option<SurfaceHit>,
+    /// The ray.
+    pub ray: Ray,
+}
+
+/// Traces every pixel of `camera` against `objects` (no SDF objects: no
+/// evaluation at all, every pixel a miss).
+pub fn trace_image(
+    camera: &Camera,
+    objects: &[SdfObject],
+    m: &March,
+    method: Method,
+    normals: NormalScheme,
+) -> Vec<Pixel> {
+    let (w, h) = (camera.width, camera.height);
+    (0..w * h)
+        .into_par_iter()
+        .map(|i| {
+            let raster = Vec2::new((i % w) as f32 + 0.5, (i / w) as f32 + 0.5);
+            trace_pixel(&camera.ray(raster), objects, m, method, normals)
+        })
+        .collect()
+}
+
+/// Traces one ray.
+// ANCHOR: trace_pixel
+pub fn trace_pixel(
+    ray: &Ray,
+    objects: &[SdfObject],
+    m: &March,
+    method: Method,
+    normals: NormalScheme,
+) -> Pixel {
+    let empty = Trace {
+        ending: Ending::Escaped,
+        t: 0.0,
+        steps: 0,
+        inside: false,
+        oversteps: 0,
+        lipschitz_violations: 0,
+        residual: f32::INFINITY,
+    };
+    if objects.is_empty() {
+        return Pixel {
+            trace: empty,
+            hit: None,
+            ray: *ray,
+        };
+    }
+    let f = |p: Vec3| scene_distance(objects, p).0;
+    let trace = march(&f, ray, m, method);
+    let sdf_hit = trace.hit().map(|t| {
+        let p = ray.at(t);
+        let object = scene_distance(objects, p).1;
+        let h = m.epsilon_at(p).max(1e-4);
+        let n = normal(&f, p, h, normals, -ray.dir);
+        SurfaceHit {
+            t,
+            // Face the viewer: from inside, the gradient points away.
+            normal: if n.dot(ray.dir) > 0.0 { -n } else { n },
+            material: objects[object].material,
+            surface: Surface::Sdf(object),
+        }
+    });
+    // Meshes are traced by chapter 3; until it is merged there is no mesh hit.
+    let mesh_hit = None;
+    Pixel {
+        trace,
+        hit: nearest_hit(sdf_hit, mesh_hit),
+        ray: *ray,
+    }
+}
+// ANCHOR_END: trace_pixel
+
+/// The colour of a miss.
+pub const BACKGROUND: Vec3 = Vec3::new(0.04, 0.05, 0.07);
+
+/// A heat map: black, blue, red, yellow, white for x from 0 to 1.
+pub fn heat(x: f32) -> Vec3 {
+    let x = if x.is_finite() {
+        x.clamp(0.0, 1.0)
+    } else {
+        1.0
+    };
+    let stops = [
+        Vec3::ZERO,
+        Vec3::new(0.1, 0.1, 0.8),
+        Vec3::new(0.9, 0.1, 0.1),
+        Vec3::new(1.0, 0.9, 0.1),
+        Vec3::ONE,
+    ];
+    let s = x * 4.0;
+    let i = (s.floor() as usize).min(3);
+    stops[i].lerp(stops[i + 1], s - i as f32)
+}
+
+/// The five views: shaded (headlight), normals, depth, steps, error.
+pub fn views(pixels: &[Pixel], w: u32, h: u32, materials: &[Material], m: &March) -> Vec<Film> {
+    let mut films: Vec<Film> = (0..5).map(|_| Film::new(w, h)).collect();
+    let hits = pixels.iter().filter_map(|p| p.hit.map(|h| h.t));
+    let t_min = hits.clone().fold(f32::INFINITY, f32::min);
+    let t_max = hits.fold(0.0, f32::max).max(t_min);
+    for (i, px) in pixels.iter().enumerate() {
+        let steps = heat(px.trace.steps as f32 / m.max_steps as f32);
+        films[3].pixels[i] = steps;
+        let Some(hit) = px.hit else {
+            films[0].pixels[i] = BACKGROUND;
+            continue;
+        };
+        // A headlight: light from the eye, so brightness is cos θ.
+        let cos = hit.normal.dot(-px.ray.dir).abs();
+        films[0].pixels[i] = materials[hit.material].reflectance * (0.1 + 0.9 * cos);
+        films[1].pixels[i] = hit.normal * 0.5 + Vec3::splat(0.5);
+        let depth = if t_max > t_min {
+            1.0 - (hit.t - t_min) / (t_max - t_min)
+        } else {
+            1.0
+        };
+        films[2].pixels[i] = Vec3::splat(0.15 + 0.85 * depth);
+        let eps = m.epsilon_at(px.ray.at(hit.t));
+        films[4].pixels[i] = heat(px.trace.residual.abs() / eps);
+    }
+    films
+}

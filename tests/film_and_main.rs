@@ -1,0 +1,97 @@
+//! Images leave the renderer whole or not at all; EXR keeps linear values;
+//! and the main program runs headless when its output is piped.
+
+mod common;
+
+use glam::Vec3;
+use raystep::film::Film;
+
+fn gradient(w: u32, h: u32) -> Film {
+    let mut f = Film::new(w, h);
+    for y in 0..h {
+        for x in 0..w {
+            *f.get_mut(x, y) = Vec3::new(x as f32 / w as f32, y as f32 / h as f32, 2.5);
+        }
+    }
+    f
+}
+
+#[test]
+fn exr_round_trips_linear_values_above_one() {
+    let dir = common::temp_dir("exr");
+    let f = gradient(7, 5);
+    f.write_exr(&dir.join("g.exr")).unwrap();
+    let back = Film::read_exr(&dir.join("g.exr")).unwrap();
+    assert_eq!(back, f, "EXR must keep linear f32 values, including 2.5");
+}
+
+#[test]
+fn png_is_srgb_encoded_and_reads_back_within_quantisation() {
+    let dir = common::temp_dir("png");
+    let f = gradient(8, 4);
+    f.write_png(&dir.join("g.png")).unwrap();
+    let back = Film::read_png(&dir.join("g.png")).unwrap();
+    for (a, b) in f.pixels.iter().zip(&back.pixels) {
+        // Clamped to 1 and quantised to 8 bits in sRGB.
+        let want = a.min(Vec3::ONE);
+        assert!((want - *b).abs().max_element() < 0.01, "{a} -> {b}");
+    }
+}
+
+#[test]
+fn a_failed_write_leaves_no_file_behind() {
+    let dir = common::temp_dir("atomic");
+    // A path whose folder is a file cannot be written.
+    std::fs::write(dir.join("not-a-dir"), "x").unwrap();
+    let target = dir.join("not-a-dir/image.png");
+    assert!(gradient(4, 4).write_png(&target).is_err());
+    // An encoder that fails half-way leaves neither the target nor a temp file.
+    let target = dir.join("half.png");
+    let result = raystep::film::write_atomically(&target, |tmp| {
+        std::fs::write(tmp, b"half an image").unwrap();
+        Err("the encoder gave up".into())
+    });
+    let err = result.unwrap_err().to_string();
+    assert!(
+        err.contains("half.png") && err.contains("the encoder gave up"),
+        "{err}"
+    );
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(
+        left,
+        vec![std::ffi::OsString::from("not-a-dir")],
+        "left behind: {left:?}"
+    );
+    // And a good write replaces an old image in one step.
+    std::fs::write(&target, b"old").unwrap();
+    gradient(4, 4).write_png(&target).unwrap();
+    assert_eq!(Film::read_png(&target).unwrap().width, 4);
+}
+
+#[test]
+fn the_main_program_runs_headless_when_piped() {
+    let dir = common::temp_dir("main");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_raystep"))
+        .current_dir(&dir)
+        .env("CI", "true")
+        .stdin(std::process::Stdio::null())
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "stdout: {text}\nstderr: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(text.contains("== ch1 projection: cornell-box =="), "{text}");
+    assert!(text.contains("Stiff and extreme cases"), "{text}");
+    // Piped output gets the ASCII preview, never colour escapes.
+    assert!(!text.contains('\u{1b}'), "escape codes in piped output");
+    let png = dir.join("out/ch1-cornell-box.png");
+    let film = Film::read_png(&png).unwrap();
+    assert_eq!((film.width, film.height), (256, 256));
+    assert!(dir.join("out/ch1-cornell-box.csv").exists());
+}

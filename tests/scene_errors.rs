@@ -1,0 +1,235 @@
+//! Every kind of bad input gets a clear error that names the file, the key
+//! or line, and what was expected, and the chapter binary exits non-zero
+//! without writing any image.
+
+mod common;
+
+use raystep::scene::Scene;
+
+const CUBE_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+
+/// Loads `scene` (with `files` beside it) and returns the error text.
+fn load_error(name: &str, scene: &str, files: &[(&str, &str)]) -> String {
+    let dir = common::temp_dir(name);
+    let mut all = vec![("scene.toml", scene)];
+    all.extend_from_slice(files);
+    common::write_files(&dir, &all);
+    match Scene::load(&dir.join("scene.toml")) {
+        Ok(_) => panic!("scene `{name}` loaded but should not have"),
+        Err(e) => e.to_string(),
+    }
+}
+
+fn assert_mentions(message: &str, parts: &[&str]) {
+    for p in parts {
+        assert!(
+            message.contains(p),
+            "error `{message}` does not mention `{p}`"
+        );
+    }
+}
+
+#[test]
+fn malformed_toml_gives_the_line() {
+    let m = load_error("malformed", "[camera]\nfov = = 40\n", &[]);
+    assert_mentions(&m, &["scene.toml", "line 2, column 7"]);
+    // An unclosed array is noticed where the next line starts.
+    let m = load_error("unclosed", "[camera]\neye = [0, 0, 5\nfov = 40\n", &[]);
+    assert_mentions(&m, &["scene.toml", "line 3", "expected `,`"]);
+}
+
+#[test]
+fn unknown_key_suggests_the_closest_known_one() {
+    let m = load_error("unknown", "[camera]\nfvo = 40\n", &[]);
+    assert_mentions(
+        &m,
+        &[
+            "scene.toml",
+            "line 2",
+            "unknown field `fvo`",
+            "did you mean `fov`?",
+        ],
+    );
+    let m = load_error(
+        "unknown-obj",
+        "[[objects]]\nshape = \"sphere\"\nradus = 2\n",
+        &[],
+    );
+    assert_mentions(&m, &["line 3", "`radus`", "did you mean `radius`?"]);
+    let m = load_error(
+        "unknown-shape",
+        "[[objects]]\nshape = \"tetrahedorn\"\n",
+        &[],
+    );
+    assert_mentions(&m, &["line 2", "did you mean `tetrahedron`?"]);
+}
+
+#[test]
+fn missing_mesh_names_the_object_and_the_path() {
+    let m = load_error("missing", "[[objects]]\nmesh = \"meshes/nope.obj\"\n", &[]);
+    assert_mentions(
+        &m,
+        &["scene.toml", "objects[0].mesh", "nope.obj", "cannot read"],
+    );
+}
+
+#[test]
+fn unreadable_mesh_is_reported() {
+    // A directory where a file should be cannot be read as text.
+    let dir = common::temp_dir("unreadable");
+    std::fs::create_dir_all(dir.join("meshes/dir.obj")).unwrap();
+    common::write_files(
+        &dir,
+        &[("scene.toml", "[[objects]]\nmesh = \"meshes/dir.obj\"\n")],
+    );
+    let m = Scene::load(&dir.join("scene.toml"))
+        .unwrap_err()
+        .to_string();
+    assert_mentions(&m, &["objects[0].mesh", "dir.obj", "cannot read"]);
+}
+
+#[test]
+fn out_of_range_obj_index_gives_file_and_line() {
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n";
+    let m = load_error(
+        "range",
+        "[[objects]]\nmesh = \"bad.obj\"\n",
+        &[("bad.obj", obj)],
+    );
+    assert_mentions(&m, &["bad.obj:5", "vertex 9", "only 3 vertices"]);
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n";
+    let m = load_error(
+        "range-neg",
+        "[[objects]]\nmesh = \"bad.obj\"\n",
+        &[("bad.obj", obj)],
+    );
+    assert_mentions(&m, &["bad.obj:4", "vertex -4"]);
+}
+
+#[test]
+fn empty_mesh_is_refused() {
+    let m = load_error(
+        "empty",
+        "[[objects]]\nmesh = \"empty.obj\"\n",
+        &[("empty.obj", "# nothing\nv 0 0 0\n")],
+    );
+    assert_mentions(&m, &["empty.obj", "no triangles"]);
+}
+
+#[test]
+fn nan_and_infinite_coordinates_are_refused() {
+    let obj = "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n";
+    let m = load_error(
+        "nan-obj",
+        "[[objects]]\nmesh = \"n.obj\"\n",
+        &[("n.obj", obj)],
+    );
+    assert_mentions(&m, &["n.obj:2", "`nan`", "not a finite number"]);
+    let obj = "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n";
+    let m = load_error(
+        "inf-obj",
+        "[[objects]]\nmesh = \"i.obj\"\n",
+        &[("i.obj", obj)],
+    );
+    assert_mentions(&m, &["i.obj:3", "not a finite number"]);
+    let m = load_error("nan-eye", "[camera]\neye = [0, nan, 5]\n", &[]);
+    assert_mentions(&m, &["scene.toml", "[camera]", "`eye` must be finite"]);
+    let m = load_error(
+        "inf-translate",
+        "[[objects]]\nshape = \"box\"\ntranslate = [0, inf, 0]\n",
+        &[],
+    );
+    assert_mentions(&m, &["objects[0].translate", "finite"]);
+}
+
+#[test]
+fn zero_and_absurd_resolutions_are_refused() {
+    let m = load_error("zero", "[camera]\nwidth = 0\n", &[]);
+    assert_mentions(
+        &m,
+        &["scene.toml", "`width` must be between 1 and 16384", "got 0"],
+    );
+    let m = load_error("huge", "[camera]\nheight = 100000\n", &[]);
+    assert_mentions(&m, &["`height` must be between 1 and 16384", "got 100000"]);
+    let m = load_error("negative", "[camera]\nwidth = -3\n", &[]);
+    assert_mentions(&m, &["scene.toml", "line 2"]);
+}
+
+#[test]
+fn field_of_view_must_lie_strictly_between_0_and_180() {
+    for fov in ["0", "180", "-5", "360", "nan"] {
+        let m = load_error(
+            &format!("fov{fov}"),
+            &format!("[camera]\nfov = {fov}\n"),
+            &[],
+        );
+        assert_mentions(&m, &["scene.toml", "`fov`", "strictly between 0 and 180"]);
+    }
+}
+
+#[test]
+fn objects_must_say_what_they_are_and_keys_must_fit_the_shape() {
+    let m = load_error("neither", "[[objects]]\nmaterial = \"x\"\n", &[]);
+    assert_mentions(&m, &["objects[0]", "needs `mesh", "or `shape`"]);
+    let m = load_error(
+        "both",
+        "[[objects]]\nshape = \"box\"\nmesh = \"m.obj\"\n",
+        &[("m.obj", CUBE_OBJ)],
+    );
+    assert_mentions(&m, &["objects[0]", "either `mesh` or `shape`"]);
+    let m = load_error("stray", "[[objects]]\nshape = \"box\"\nradius = 2\n", &[]);
+    assert_mentions(&m, &["objects[0].radius", "applies only to shape"]);
+    let m = load_error(
+        "material",
+        "[[objects]]\nshape = \"box\"\nmaterial = \"gold\"\n",
+        &[],
+    );
+    assert_mentions(&m, &["objects[0].material", "no material named `gold`"]);
+    let m = load_error(
+        "reflectance",
+        "[[materials]]\nname = \"a\"\nreflectance = [1.5, 0, 0]\n[[objects]]\nshape = \"box\"\nmaterial = \"a\"\n",
+        &[],
+    );
+    assert_mentions(&m, &["materials[0]", "reflectance", "[0, 1]"]);
+    let m = load_error("scale0", "[[objects]]\nshape = \"box\"\nscale = 0\n", &[]);
+    assert_mentions(&m, &["objects[0].scale", "non-zero"]);
+    let m = load_error(
+        "axis0",
+        "[[objects]]\nshape = \"box\"\nrotate = { axis = [0, 0, 0], degrees = 3 }\n",
+        &[],
+    );
+    assert_mentions(&m, &["objects[0].rotate.axis", "zero vector"]);
+}
+
+#[test]
+fn the_binary_exits_nonzero_and_writes_nothing() {
+    let dir = common::temp_dir("binary");
+    common::write_files(&dir, &[("scene.toml", "[camera]\nfvo = 40\n")]);
+    let out = dir.join("out");
+    let result = std::process::Command::new(env!("CARGO_BIN_EXE_ch1"))
+        .args([
+            "--scene",
+            dir.join("scene.toml").to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(result.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert!(stderr.contains("did you mean `fov`?"), "stderr: {stderr}");
+    assert!(!stderr.contains("panicked"), "stderr: {stderr}");
+    assert!(
+        !out.exists(),
+        "an output folder was created for a failed run"
+    );
+
+    // Absurd sizes from the command line too.
+    let result = std::process::Command::new(env!("CARGO_BIN_EXE_ch1"))
+        .args(["--width", "20000", "--out", out.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(result.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&result.stderr).contains("between 1 and 16384"));
+    assert!(!out.exists());
+}
