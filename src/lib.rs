@@ -10,6 +10,8 @@
 //! scene file (TOML) → [`scene::Scene`] (validated, holding only what the
 //! scene uses) → a chapter's [`stage::Render`] → [`film::Film`] →
 //! PNG/EXR, a [`report::Report`], and a terminal [`preview`].
+//! The terminal UI (`src/tui/`, behind the default `tui` feature) drives
+//! the same [`stage::Chapter`] boundary as the headless runs.
 //!
 //! | stage | chapter | module | binary | book page |
 //! |---|---|---|---|---|
@@ -61,5 +63,7 @@ pub mod spawn;
 pub mod sphere_tracing;
 pub mod stage;
 pub mod triangle;
+#[cfg(feature = "tui")]
+pub mod tui;
 
 pub use error::{Error, Result};

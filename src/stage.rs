@@ -70,6 +70,25 @@ pub trait Chapter: Sync {
     }
     /// Prepares a render of `scene`. Cheap: the work happens in passes.
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>>;
+    /// The estimators or samplers a front end may switch between (e.g.
+    /// "BRDF sampling", "light sampling", "MIS"); empty when the stage has
+    /// only one way of rendering. [`Chapter::start_variant`] takes an index
+    /// into this list.
+    fn variants(&self) -> &'static [View] {
+        &[]
+    }
+    /// Like [`Chapter::start`], with the estimator or sampler
+    /// `variants()[variant]`. The default ignores `variant`, which is right
+    /// for stages without variants.
+    fn start_variant(
+        &self,
+        scene: Arc<Scene>,
+        settings: &Settings,
+        variant: usize,
+    ) -> Result<Box<dyn Render>> {
+        let _ = variant;
+        self.start(scene, settings)
+    }
 }
 
 /// A render in progress.
@@ -84,4 +103,26 @@ pub trait Render: Send {
     /// The report; with `settings.studies` it includes the error-against-time
     /// and stability studies, which may take a while.
     fn report(&self) -> Report;
+    /// Per-bounce layers of the main image, for stages with bounces
+    /// ([`Chapter::has_bounces`]): `layers[k]` holds the light that reached
+    /// the camera after exactly `k` bounces (`k = 0` is direct illumination,
+    /// emitters seen directly included), so the sum of `layers[0..=k]` is the
+    /// image "up to k bounces". Same size as view 0, NaN/Inf removed.
+    /// `None` (the default) for stages without bounces.
+    fn layers(&self) -> Option<Vec<Film>> {
+        None
+    }
+    /// A reference for the main image (analytic, or a stored high-sample
+    /// render), the same size as view 0, for compare and difference views
+    /// and the error shown while rendering. `None` (the default) when the
+    /// stage knows none.
+    fn reference(&self) -> Option<Film> {
+        None
+    }
+    /// The error of the main image against [`Render::reference`] as the
+    /// render went on: (seconds since the start, error) per pass so far,
+    /// oldest first. Empty (the default) when there is no reference.
+    fn error_series(&self) -> Vec<(f64, f64)> {
+        Vec::new()
+    }
 }

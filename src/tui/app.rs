@@ -1,0 +1,508 @@
+//! The UI's state, the messages that change it, and [`update`], a pure
+//! function from (state, message) to the next state. Nothing here touches
+//! the terminal, the clock or the disk: the event loop turns keys and
+//! worker reports into messages and carries out the two effects `update`
+//! asks for (start a render when the generation changes, save when
+//! `save_requested` is set).
+
+use std::path::PathBuf;
+
+use glam::Vec3;
+
+use super::scenes::SceneEntry;
+use super::worker::{Job, Progress, Snapshot};
+use crate::film::Film;
+use crate::stage::{Chapter, Settings};
+
+/// The highest bounce count the bounce control steps to.
+pub const MAX_BOUNCE: u32 = 16;
+
+/// Which list the arrow keys move in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Focus {
+    /// The chapter list.
+    Chapters,
+    /// The scene list.
+    Scenes,
+}
+
+/// How the bounce control combines layers.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BounceMode {
+    /// Only the light of exactly k bounces.
+    Exactly,
+    /// The light of 0, 1, …, k bounces.
+    UpTo,
+}
+
+/// What the preview compares.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Compare {
+    /// The render.
+    Render,
+    /// The stage's reference.
+    Reference,
+    /// |render - reference|, scaled so the largest difference is white.
+    Difference,
+}
+
+impl Compare {
+    /// Name for the status line and file names.
+    pub fn name(self) -> &'static str {
+        match self {
+            Compare::Render => "render",
+            Compare::Reference => "reference",
+            Compare::Difference => "difference",
+        }
+    }
+}
+
+/// Everything the UI knows.
+pub struct App {
+    /// Every chapter, from [`crate::chapters::all`].
+    pub chapters: Vec<&'static dyn Chapter>,
+    /// Every scene.
+    pub scenes: Vec<SceneEntry>,
+    /// Selected chapter.
+    pub chapter: usize,
+    /// Selected scene.
+    pub scene: usize,
+    /// Which list the arrow keys move in.
+    pub focus: Focus,
+    /// Selected view (index into [`Chapter::views`]).
+    pub view: usize,
+    /// Exposure in stops: the preview is scaled by 2^exposure.
+    pub exposure: i32,
+    /// Bounce selection: `None` shows all bounces.
+    pub bounce: Option<u32>,
+    /// Exactly k or up to k.
+    pub bounce_mode: BounceMode,
+    /// Render, reference or difference.
+    pub compare: Compare,
+    /// Selected estimator or sampler (index into [`Chapter::variants`]).
+    pub variant: usize,
+    /// Settings of the next render.
+    pub settings: Settings,
+    /// Whether the help overlay is shown.
+    pub help: bool,
+    /// Set by [`Msg::Quit`].
+    pub quit: bool,
+    /// Bumped whenever the render must restart.
+    pub generation: u64,
+    /// The newest pass of the current render.
+    pub snapshot: Option<Snapshot>,
+    /// Why the current render failed, if it did.
+    pub failure: Option<String>,
+    /// One line of feedback (e.g. what was saved).
+    pub message: String,
+    /// Asks the event loop to save the current view.
+    pub save_requested: bool,
+    /// Draw the preview in 24-bit colour (else a plain ASCII ramp).
+    pub color: bool,
+    /// Where `s` saves.
+    pub out_dir: PathBuf,
+}
+
+/// Everything that can happen to the UI.
+#[derive(Clone, Debug)]
+pub enum Msg {
+    /// Move up in the focused list.
+    Up,
+    /// Move down in the focused list.
+    Down,
+    /// Switch focus between the chapter and scene lists.
+    SwitchFocus,
+    /// Select the chapter with this lecture number.
+    ChapterNumber(u32),
+    /// Next view of the chapter.
+    NextView,
+    /// Previous view of the chapter.
+    PrevView,
+    /// One stop brighter.
+    ExposureUp,
+    /// One stop darker.
+    ExposureDown,
+    /// Exposure back to 0.
+    ExposureReset,
+    /// One bounce more (after 16: all bounces).
+    BounceUp,
+    /// One bounce less (before 0: all bounces).
+    BounceDown,
+    /// Toggle "exactly k" / "up to k".
+    ToggleBounceMode,
+    /// Render → reference → difference → render.
+    CycleCompare,
+    /// Next estimator or sampler.
+    NextVariant,
+    /// Save the current view.
+    Save,
+    /// The save finished: the files written, or the error.
+    Saved(Result<Vec<PathBuf>, String>),
+    /// Show or hide the help overlay.
+    ToggleHelp,
+    /// Quit.
+    Quit,
+    /// A report from the render worker.
+    Progress(Progress),
+}
+
+impl App {
+    /// A UI on chapter 0 and scene 0, asking for its first render
+    /// (generation 1).
+    pub fn new(chapters: Vec<&'static dyn Chapter>, scenes: Vec<SceneEntry>, color: bool) -> App {
+        App {
+            chapters,
+            scenes,
+            chapter: 0,
+            scene: 0,
+            focus: Focus::Chapters,
+            view: 0,
+            exposure: 0,
+            bounce: None,
+            bounce_mode: BounceMode::UpTo,
+            compare: Compare::Render,
+            variant: 0,
+            settings: Settings::default(),
+            help: false,
+            quit: false,
+            generation: 1,
+            snapshot: None,
+            failure: None,
+            message: String::new(),
+            save_requested: false,
+            color,
+            out_dir: PathBuf::from("out"),
+        }
+    }
+
+    /// The selected chapter, if there is any.
+    pub fn current_chapter(&self) -> Option<&'static dyn Chapter> {
+        self.chapters.get(self.chapter).copied()
+    }
+
+    /// The selected scene entry.
+    pub fn current_scene(&self) -> Option<&SceneEntry> {
+        self.scenes.get(self.scene)
+    }
+
+    /// Why `chapter` cannot render scene `index`, if it cannot (a load
+    /// error, or [`Chapter::unsupported`]).
+    pub fn scene_problem(&self, chapter: &dyn Chapter, index: usize) -> Option<String> {
+        match &self.scenes.get(index)?.scene {
+            Err(e) => Some(e.clone()),
+            Ok(scene) => chapter.unsupported(scene),
+        }
+    }
+
+    /// Why the current selection cannot render, if it cannot.
+    pub fn problem(&self) -> Option<String> {
+        let Some(chapter) = self.current_chapter() else {
+            return Some("no chapters".into());
+        };
+        self.scene_problem(chapter, self.scene)
+    }
+
+    /// The render job for the current selection, or `None` when it cannot
+    /// render.
+    pub fn job(&self) -> Option<Job> {
+        if self.problem().is_some() {
+            return None;
+        }
+        let chapter = self.current_chapter()?;
+        let scene = self.current_scene()?.scene.clone().ok()?;
+        Some(Job {
+            generation: self.generation,
+            chapter,
+            scene,
+            settings: self.settings.clone(),
+            variant: self.variant,
+        })
+    }
+
+    /// Whether the bounce control is shown: the chapter has bounces and the
+    /// render delivered layers.
+    pub fn shows_bounces(&self) -> bool {
+        self.current_chapter().is_some_and(|c| c.has_bounces())
+            && self.snapshot.as_ref().is_some_and(|s| s.layers.is_some())
+    }
+
+    /// Whether the compare control is shown: the render has a reference.
+    pub fn shows_compare(&self) -> bool {
+        self.snapshot
+            .as_ref()
+            .is_some_and(|s| s.reference.is_some())
+    }
+
+    /// The name of the selected view.
+    pub fn view_name(&self) -> &'static str {
+        self.current_chapter()
+            .and_then(|c| c.views().get(self.view))
+            .map(|v| v.name)
+            .unwrap_or("-")
+    }
+
+    /// What the preview shows, before exposure: the selected view, or for
+    /// the main view the selected bounces, compared as selected.
+    pub fn displayed(&self) -> Option<Film> {
+        let snap = self.snapshot.as_ref()?;
+        let mut film = snap.views.get(self.view)?.clone();
+        if self.view == 0 && self.shows_bounces() {
+            if let (Some(k), Some(layers)) = (self.bounce, &snap.layers) {
+                film = combine_layers(layers, k, self.bounce_mode, &film);
+            }
+        }
+        let reference = snap
+            .reference
+            .as_ref()
+            .filter(|r| (r.width, r.height) == (film.width, film.height));
+        match (self.compare, reference) {
+            (Compare::Reference, Some(r)) if self.view == 0 => Some(r.clone()),
+            (Compare::Difference, Some(r)) if self.view == 0 => Some(film.difference(r)),
+            _ => Some(film),
+        }
+    }
+
+    /// The label of the bounce selection, in the lecture's words.
+    pub fn bounce_label(&self) -> String {
+        match self.bounce {
+            None => "all bounces".into(),
+            Some(k) => match self.bounce_mode {
+                BounceMode::Exactly => format!("exactly {k}: {}", bounce_name(k)),
+                BounceMode::UpTo => format!("up to {k}: {}", bounce_name(k)),
+            },
+        }
+    }
+
+    /// The base name of saved files for the current view.
+    pub fn save_stem(&self) -> String {
+        let chapter = self.current_chapter().map(|c| c.number()).unwrap_or(0);
+        let scene = self
+            .current_scene()
+            .and_then(|s| s.scene.as_ref().ok())
+            .map(|s| s.name.clone())
+            .unwrap_or_else(|| "scene".into());
+        let mut stem = format!("tui-ch{chapter}-{scene}-{}", self.view_name());
+        if self.view == 0 && self.shows_bounces() {
+            if let Some(k) = self.bounce {
+                let mode = match self.bounce_mode {
+                    BounceMode::Exactly => "exactly",
+                    BounceMode::UpTo => "upto",
+                };
+                stem += &format!("-{mode}{k}");
+            }
+        }
+        if self.view == 0 && self.shows_compare() && self.compare != Compare::Render {
+            stem += &format!("-{}", self.compare.name());
+        }
+        stem
+    }
+
+    /// Starts over: a new generation, no picture yet.
+    fn restart(&mut self) {
+        self.generation += 1;
+        self.snapshot = None;
+        self.failure = None;
+        let (views, variants) = self
+            .current_chapter()
+            .map(|c| (c.views().len(), c.variants().len()))
+            .unwrap_or((1, 0));
+        if self.view >= views {
+            self.view = 0;
+        }
+        if self.variant >= variants.max(1) {
+            self.variant = 0;
+        }
+    }
+
+    fn select_chapter(&mut self, index: usize) {
+        if index < self.chapters.len() && index != self.chapter {
+            self.chapter = index;
+            // Views and estimators differ between chapters: start at the first.
+            self.view = 0;
+            self.variant = 0;
+            self.compare = Compare::Render;
+            self.restart();
+        }
+    }
+
+    fn select_scene(&mut self, index: usize) {
+        if index < self.scenes.len() && index != self.scene {
+            self.scene = index;
+            self.restart();
+        }
+    }
+}
+
+/// The lecture's name for the light of `k` bounces: direct illumination,
+/// one-bounce global illumination, …
+pub fn bounce_name(k: u32) -> String {
+    const WORDS: [&str; 17] = [
+        "zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten",
+        "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen",
+    ];
+    match WORDS.get(k as usize) {
+        Some(_) if k == 0 => "direct illumination".into(),
+        Some(w) => format!("{w}-bounce global illumination"),
+        None => format!("{k}-bounce global illumination"),
+    }
+}
+
+/// Layer `k`, or layers 0 to `k` summed. Missing layers count as black.
+pub fn combine_layers(layers: &[Film], k: u32, mode: BounceMode, like: &Film) -> Film {
+    let mut film = Film::new(like.width, like.height);
+    let range = match mode {
+        BounceMode::Exactly => k as usize..k as usize + 1,
+        BounceMode::UpTo => 0..k as usize + 1,
+    };
+    for layer in layers
+        .get(range.start..range.end.min(layers.len()))
+        .unwrap_or(&[])
+    {
+        if (layer.width, layer.height) == (film.width, film.height) {
+            for (p, q) in film.pixels.iter_mut().zip(&layer.pixels) {
+                *p += *q;
+            }
+        }
+    }
+    film
+}
+
+/// Scales a film by 2^stops.
+pub fn expose(film: &Film, stops: i32) -> Film {
+    let scale = 2f32.powi(stops);
+    Film {
+        width: film.width,
+        height: film.height,
+        pixels: film
+            .pixels
+            .iter()
+            .map(|p| *p * Vec3::splat(scale))
+            .collect(),
+    }
+}
+
+/// The next state of the UI after `msg`.
+pub fn update(mut app: App, msg: Msg) -> App {
+    // Any key but `?` closes the help overlay first.
+    if app.help
+        && !matches!(
+            msg,
+            Msg::ToggleHelp | Msg::Quit | Msg::Progress(_) | Msg::Saved(_)
+        )
+    {
+        app.help = false;
+        return app;
+    }
+    match msg {
+        Msg::Up => match app.focus {
+            Focus::Chapters => app.select_chapter(app.chapter.saturating_sub(1)),
+            Focus::Scenes => app.select_scene(app.scene.saturating_sub(1)),
+        },
+        Msg::Down => match app.focus {
+            Focus::Chapters => app.select_chapter(app.chapter + 1),
+            Focus::Scenes => app.select_scene(app.scene + 1),
+        },
+        Msg::SwitchFocus => {
+            app.focus = match app.focus {
+                Focus::Chapters => Focus::Scenes,
+                Focus::Scenes => Focus::Chapters,
+            }
+        }
+        Msg::ChapterNumber(n) => {
+            if let Some(i) = app.chapters.iter().position(|c| c.number() == n) {
+                app.select_chapter(i);
+            }
+        }
+        Msg::NextView | Msg::PrevView => {
+            let n = app.current_chapter().map_or(1, |c| c.views().len().max(1));
+            app.view = match msg {
+                Msg::NextView => (app.view + 1) % n,
+                _ => (app.view + n - 1) % n,
+            };
+        }
+        Msg::ExposureUp => app.exposure = (app.exposure + 1).min(10),
+        Msg::ExposureDown => app.exposure = (app.exposure - 1).max(-10),
+        Msg::ExposureReset => app.exposure = 0,
+        Msg::BounceUp if app.shows_bounces() => {
+            app.bounce = match app.bounce {
+                None => Some(0),
+                Some(k) if k >= MAX_BOUNCE => None,
+                Some(k) => Some(k + 1),
+            }
+        }
+        Msg::BounceDown if app.shows_bounces() => {
+            app.bounce = match app.bounce {
+                None => Some(MAX_BOUNCE),
+                Some(0) => None,
+                Some(k) => Some(k - 1),
+            }
+        }
+        Msg::ToggleBounceMode if app.shows_bounces() => {
+            app.bounce_mode = match app.bounce_mode {
+                BounceMode::Exactly => BounceMode::UpTo,
+                BounceMode::UpTo => BounceMode::Exactly,
+            }
+        }
+        Msg::BounceUp | Msg::BounceDown | Msg::ToggleBounceMode => {}
+        Msg::CycleCompare => {
+            if app.shows_compare() {
+                app.compare = match app.compare {
+                    Compare::Render => Compare::Reference,
+                    Compare::Reference => Compare::Difference,
+                    Compare::Difference => Compare::Render,
+                }
+            }
+        }
+        Msg::NextVariant => {
+            let n = app.current_chapter().map_or(0, |c| c.variants().len());
+            if n > 1 {
+                app.variant = (app.variant + 1) % n;
+                app.restart();
+            }
+        }
+        Msg::Save => {
+            if app.snapshot.is_some() {
+                app.save_requested = true;
+            } else {
+                app.message = "nothing to save yet".into();
+            }
+        }
+        Msg::Saved(result) => {
+            app.save_requested = false;
+            app.message = match result {
+                Ok(files) => format!(
+                    "saved {}",
+                    files
+                        .iter()
+                        .map(|f| f.display().to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+                Err(e) => format!("save failed: {e}"),
+            };
+        }
+        Msg::ToggleHelp => app.help = !app.help,
+        Msg::Quit => app.quit = true,
+        Msg::Progress(p) if p.generation() == app.generation => match p {
+            Progress::Snapshot(s) => app.snapshot = Some(*s),
+            Progress::Failed { message, .. } => app.failure = Some(message),
+        },
+        // A pass of a render that has been replaced: dropped.
+        Msg::Progress(_) => {}
+    }
+    app
+}
+
+/// Writes what the preview shows (with exposure) as PNG and the same film
+/// without exposure as linear EXR into `app.out_dir`; returns the paths.
+pub fn save(app: &App) -> Result<Vec<PathBuf>, String> {
+    let film = app.displayed().ok_or("nothing to save yet")?;
+    let stem = app.save_stem();
+    let png = app.out_dir.join(format!("{stem}.png"));
+    let exr = app.out_dir.join(format!("{stem}.exr"));
+    expose(&film, app.exposure)
+        .write_png(&png)
+        .map_err(|e| e.to_string())?;
+    film.write_exr(&exr).map_err(|e| e.to_string())?;
+    Ok(vec![png, exr])
+}

@@ -1,0 +1,106 @@
+//! `raystep --bench-ui`: how fast the UI starts and how much a redraw costs.
+//!
+//! Start-up is timed from the start of `main` to the first preview drawn:
+//! scene list loaded, worker started, first pass of the first chapter on
+//! the built-in scene received, and the UI drawn once. Redraws are timed on
+//! a 200x60 test terminal, changing the exposure every frame so that every
+//! preview cell changes and ratatui's diff has real work. The terminal
+//! itself is not involved (a test backend), so the numbers are the UI's
+//! own cost, not the terminal emulator's.
+
+use std::io::Write;
+use std::time::{Duration, Instant};
+
+use ratatui::backend::TestBackend;
+use ratatui::Terminal;
+
+use super::app::{update, App, Msg};
+use super::scenes::scene_list;
+use super::view::view;
+use super::worker::{Progress, Worker};
+
+/// Redraws timed per chapter.
+pub const REDRAWS: usize = 200;
+
+fn stats(mut times: Vec<Duration>) -> (f64, f64, f64) {
+    times.sort();
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let mean = times.iter().map(|d| ms(*d)).sum::<f64>() / times.len().max(1) as f64;
+    let p95 = times.get(times.len() * 95 / 100).map_or(0.0, |d| ms(*d));
+    let max = times.last().map_or(0.0, |d| ms(*d));
+    (mean, p95, max)
+}
+
+/// Runs the benchmark and prints a table to `w`. `started` is the start of
+/// `main`.
+pub fn run(
+    started: Instant,
+    scenes_dir: &std::path::Path,
+    w: &mut dyn Write,
+) -> std::io::Result<()> {
+    let chapters = crate::chapters::all();
+    let scenes = scene_list(scenes_dir);
+    let mut app = App::new(chapters.clone(), scenes, true);
+    let worker = Worker::spawn();
+    let mut terminal = Terminal::new(TestBackend::new(200, 60))?;
+    let mut rows = Vec::new();
+    for (index, chapter) in chapters.iter().enumerate() {
+        let t0 = if index == 0 { started } else { Instant::now() };
+        app = update(app, Msg::ChapterNumber(chapter.number()));
+        let Some(job) = app.job() else { continue };
+        worker.start(job);
+        // Wait for the first pass of this generation, then draw once.
+        loop {
+            let p = worker
+                .results
+                .recv()
+                .map_err(|e| std::io::Error::other(e.to_string()))?;
+            let ours = p.generation() == app.generation;
+            let failed = matches!(p, Progress::Failed { .. });
+            app = update(app, Msg::Progress(p));
+            if ours && (app.snapshot.is_some() || failed) {
+                break;
+            }
+        }
+        terminal.draw(|f| view(&app, f))?;
+        let first = t0.elapsed();
+        let mut times = Vec::with_capacity(REDRAWS);
+        for i in 0..REDRAWS {
+            app.exposure = if i % 2 == 0 { 1 } else { 0 };
+            let t = Instant::now();
+            terminal.draw(|f| view(&app, f))?;
+            times.push(t.elapsed());
+        }
+        app.exposure = 0;
+        let (mean, p95, max) = stats(times);
+        let size = app
+            .snapshot
+            .as_ref()
+            .and_then(|s| s.views.first())
+            .map_or("-".to_string(), |f| format!("{}x{}", f.width, f.height));
+        rows.push(format!(
+            "| ch{} {} | {size} | {:.1} | {mean:.2} | {p95:.2} | {max:.2} |",
+            chapter.number(),
+            chapter.slug(),
+            first.as_secs_f64() * 1e3,
+        ));
+    }
+    worker.stop();
+    writeln!(
+        w,
+        "UI benchmark: built-in scene, 200x60 cells, {REDRAWS} redraws per chapter, {} threads",
+        rayon::current_num_threads()
+    )?;
+    writeln!(
+        w,
+        "| chapter | image | start to first preview (ms) | redraw mean (ms) | redraw p95 (ms) | redraw max (ms) |"
+    )?;
+    writeln!(w, "|---|---|---|---|---|---|")?;
+    for r in rows {
+        writeln!(w, "{r}")?;
+    }
+    writeln!(
+        w,
+        "(start-up of ch1 counts from the start of main; later chapters from their selection)"
+    )
+}

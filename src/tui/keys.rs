@@ -1,0 +1,57 @@
+//! Keys → messages: one pure function, and the key table that the help
+//! overlay and the book show.
+
+use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+
+use super::app::{App, Msg};
+
+/// Every key, as (keys, what it does), in the order the help shows them.
+pub const KEYS: &[(&str, &str)] = &[
+    ("↑ ↓  k j", "move in the focused list (chapters or scenes)"),
+    ("Tab", "switch focus between chapters and scenes"),
+    ("1 … 6", "jump to that chapter"),
+    ("v  V", "next / previous view (image, depth, normals, …)"),
+    ("+  -  0", "exposure one stop up / down / back to 0"),
+    ("]  [", "one bounce more / less (chapters with bounces)"),
+    ("m", "toggle \"exactly k\" / \"up to k\" bounces"),
+    ("r", "render → reference → difference (with a reference)"),
+    (
+        "e",
+        "next estimator or sampler (where a chapter has several)",
+    ),
+    ("s", "save the view as PNG and its film as EXR in out/"),
+    ("?", "show / hide this help"),
+    ("q  Esc  Ctrl-C", "quit (Esc first closes the help)"),
+];
+
+/// The message for a key press, if the key means anything.
+pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
+    if key.kind == KeyEventKind::Release {
+        return None;
+    }
+    if key.modifiers.contains(KeyModifiers::CONTROL) {
+        return matches!(key.code, KeyCode::Char('c')).then_some(Msg::Quit);
+    }
+    Some(match key.code {
+        KeyCode::Char('q') => Msg::Quit,
+        KeyCode::Esc if app.help => Msg::ToggleHelp,
+        KeyCode::Esc => Msg::Quit,
+        KeyCode::Up | KeyCode::Char('k') => Msg::Up,
+        KeyCode::Down | KeyCode::Char('j') => Msg::Down,
+        KeyCode::Tab | KeyCode::BackTab => Msg::SwitchFocus,
+        KeyCode::Char(c @ '1'..='9') => Msg::ChapterNumber(c as u32 - '0' as u32),
+        KeyCode::Char('v') => Msg::NextView,
+        KeyCode::Char('V') => Msg::PrevView,
+        KeyCode::Char('+') | KeyCode::Char('=') => Msg::ExposureUp,
+        KeyCode::Char('-') => Msg::ExposureDown,
+        KeyCode::Char('0') => Msg::ExposureReset,
+        KeyCode::Char(']') => Msg::BounceUp,
+        KeyCode::Char('[') => Msg::BounceDown,
+        KeyCode::Char('m') => Msg::ToggleBounceMode,
+        KeyCode::Char('r') => Msg::CycleCompare,
+        KeyCode::Char('e') => Msg::NextVariant,
+        KeyCode::Char('s') => Msg::Save,
+        KeyCode::Char('?') => Msg::ToggleHelp,
+        _ => return None,
+    })
+}

@@ -1,0 +1,181 @@
+//! The terminal UI of `cargo run --release`, behind the default `tui`
+//! feature (the rest of the library never uses ratatui or crossterm).
+//!
+//! Built after ratatui's templates: the state, the messages and a pure
+//! [`app::update`] in [`app`]; a pure [`view::view`]; key mapping in
+//! [`keys`]; a render [`worker`] thread that sends a snapshot after every
+//! pass; and this module's event loop, which owns the terminal. The UI
+//! drives chapters only through [`crate::stage::Chapter`] and
+//! [`crate::stage::Render`], so a new chapter appears here by being listed
+//! in [`crate::chapters::all`].
+//!
+//! The loop polls for keys with a short timeout (so a key is handled within
+//! a frame, well under 50 ms), drains the worker's channel, and redraws at
+//! most [`FRAME`] apart, and only when something changed. The terminal is
+//! restored on quit, on an error and on a panic of the UI thread (a panic
+//! hook restores it and then prints the panic).
+
+pub mod app;
+pub mod bench;
+pub mod keys;
+pub mod picture;
+pub mod scenes;
+pub mod view;
+pub mod worker;
+
+use std::io::{IsTerminal, Stdout};
+use std::path::Path;
+use std::sync::OnceLock;
+use std::thread::ThreadId;
+use std::time::{Duration, Instant};
+
+use crossterm::event::{self, Event};
+use crossterm::execute;
+use crossterm::terminal::{
+    disable_raw_mode, enable_raw_mode, EnterAlternateScreen, LeaveAlternateScreen,
+};
+use ratatui::backend::CrosstermBackend;
+use ratatui::Terminal;
+
+use app::{save, update, App, Msg};
+use worker::Worker;
+
+/// Shortest time between two redraws (about 30 per second).
+pub const FRAME: Duration = Duration::from_millis(33);
+
+/// Whether colour is allowed: `NO_COLOR` unset or empty.
+pub fn color_allowed() -> bool {
+    std::env::var_os("NO_COLOR").map_or(true, |v| v.is_empty())
+}
+
+/// Whether the main binary should open the UI: stdout is a terminal.
+pub fn should_open() -> bool {
+    std::io::stdout().is_terminal()
+}
+
+/// Set this environment variable to make the UI panic after its first
+/// frame (the end-to-end test checks that the terminal is restored).
+pub const TEST_PANIC: &str = "RAYSTEP_TUI_TEST_PANIC";
+
+/// The thread that owns the terminal; panics elsewhere leave it alone.
+static UI_THREAD: OnceLock<ThreadId> = OnceLock::new();
+
+/// Puts the terminal back: raw mode off, main screen, cursor shown.
+/// Harmless when the terminal is already restored.
+pub fn restore_terminal() {
+    let _ = disable_raw_mode();
+    let _ = execute!(
+        std::io::stdout(),
+        LeaveAlternateScreen,
+        crossterm::cursor::Show
+    );
+}
+
+/// Installs a panic hook that restores the terminal before printing a
+/// panic of the UI thread. Panics of other threads (a stage panicking in
+/// the render worker, or in rayon under it) are not printed over the UI:
+/// the worker catches them and the UI shows the message.
+fn install_panic_hook() {
+    let _ = UI_THREAD.set(std::thread::current().id());
+    let previous = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        if Some(&std::thread::current().id()) == UI_THREAD.get() {
+            restore_terminal();
+            previous(info);
+        }
+    }));
+}
+
+/// Restores the terminal when dropped, so an early `?` return restores too.
+struct Restore;
+
+impl Drop for Restore {
+    fn drop(&mut self) {
+        restore_terminal();
+    }
+}
+
+/// Runs the UI until the user quits. `scenes_dir` is listed after the
+/// built-in scene; `s` saves into `out_dir`.
+pub fn run(scenes_dir: &Path, out_dir: &Path) -> std::io::Result<()> {
+    install_panic_hook();
+    let mut app = App::new(
+        crate::chapters::all(),
+        scenes::scene_list(scenes_dir),
+        color_allowed(),
+    );
+    app.out_dir = out_dir.to_path_buf();
+    enable_raw_mode()?;
+    let _restore = Restore;
+    execute!(
+        std::io::stdout(),
+        EnterAlternateScreen,
+        crossterm::cursor::Hide
+    )?;
+    let mut terminal = Terminal::new(CrosstermBackend::new(std::io::stdout()))?;
+    terminal.clear()?;
+    event_loop(&mut terminal, app)
+}
+
+fn event_loop(
+    terminal: &mut Terminal<CrosstermBackend<Stdout>>,
+    mut app: App,
+) -> std::io::Result<()> {
+    let worker = Worker::spawn();
+    let mut sent = 0;
+    let mut dirty = true;
+    let mut last_draw: Option<Instant> = None;
+    loop {
+        // Effects asked for by `update`: a new render, a save.
+        if app.generation != sent {
+            sent = app.generation;
+            if let Some(job) = app.job() {
+                worker.start(job);
+            }
+        }
+        if app.save_requested {
+            let result = save(&app);
+            app = update(app, Msg::Saved(result));
+            dirty = true;
+        }
+        if app.quit {
+            return Ok(());
+        }
+        let since = last_draw.map_or(FRAME, |t| t.elapsed());
+        if dirty && since >= FRAME {
+            terminal.draw(|f| view::view(&app, f))?;
+            last_draw = Some(Instant::now());
+            dirty = false;
+            // For the end-to-end test of the panic hook: a panic while the
+            // UI owns the terminal.
+            if std::env::var_os(TEST_PANIC).is_some() {
+                panic!("{TEST_PANIC} is set: a deliberate panic after the first frame");
+            }
+        }
+        // Wait for a key, at most until the next frame is due.
+        let timeout = if dirty {
+            FRAME.saturating_sub(since).max(Duration::from_millis(1))
+        } else {
+            Duration::from_millis(20)
+        };
+        if event::poll(timeout)? {
+            match event::read()? {
+                Event::Key(key) => {
+                    if let Some(msg) = keys::msg_for_key(&app, key) {
+                        app = update(app, msg);
+                        dirty = true;
+                    }
+                }
+                Event::Resize(..) => {
+                    terminal.autoresize()?;
+                    dirty = true;
+                }
+                _ => {}
+            }
+        }
+        while let Ok(progress) = worker.results.try_recv() {
+            app = update(app, Msg::Progress(progress));
+            dirty = true;
+        }
+    }
+}

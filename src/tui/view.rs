@@ -1,0 +1,303 @@
+//! The view: draws an [`App`] into a ratatui frame. Pure: the same state
+//! and terminal size always give the same cells, which the layout
+//! snapshots rely on.
+//!
+//! ```text
+//! ┌ chapters ─┐┌ preview ──────────────┐
+//! │ scenes    ││                       │
+//! │ controls  ││  (the film, two       │
+//! │ error/time││   pixels per cell)    │
+//! └───────────┘└───────────────────────┘
+//!  status line · progress gauge · message
+//! ```
+
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{
+    Axis, Block, Chart, Clear, Dataset, Gauge, GraphType, List, ListItem, ListState, Paragraph,
+    Wrap,
+};
+use ratatui::Frame;
+
+use super::app::{expose, App, Focus};
+use super::keys::KEYS;
+use super::picture::Picture;
+use crate::report::{format_number, format_seconds};
+
+/// Width of the left column, in cells.
+pub fn sidebar_width(total: u16) -> u16 {
+    (total / 3).clamp(16, 34).min(total)
+}
+
+/// A style with this foreground colour, or plain without colour.
+fn fg(app: &App, color: Color) -> Style {
+    if app.color {
+        Style::default().fg(color)
+    } else {
+        Style::default()
+    }
+}
+
+fn block<'a>(app: &App, title: &'a str, focused: bool) -> Block<'a> {
+    let b = Block::bordered().title(title);
+    if focused {
+        b.border_style(fg(app, Color::Yellow).add_modifier(Modifier::BOLD))
+    } else {
+        b
+    }
+}
+
+/// Draws the whole UI.
+pub fn view(app: &App, frame: &mut Frame) {
+    let area = frame.area();
+    let [main, status, gauge, message] = Layout::vertical([
+        Constraint::Min(3),
+        Constraint::Length(1),
+        Constraint::Length(1),
+        Constraint::Length(1),
+    ])
+    .areas(area);
+    let [side, preview] = Layout::horizontal([
+        Constraint::Length(sidebar_width(area.width)),
+        Constraint::Min(1),
+    ])
+    .areas(main);
+    draw_sidebar(app, frame, side);
+    draw_preview(app, frame, preview);
+    frame.render_widget(Paragraph::new(status_line(app)), status);
+    draw_gauge(app, frame, gauge);
+    let text = if app.message.is_empty() {
+        "? help · q quit".to_string()
+    } else {
+        app.message.clone()
+    };
+    frame.render_widget(Paragraph::new(text).style(fg(app, Color::Gray)), message);
+    if app.help {
+        draw_help(app, frame, area);
+    }
+}
+
+fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
+    let chapter = app.current_chapter();
+    let has_chart = app
+        .snapshot
+        .as_ref()
+        .is_some_and(|s| s.error_series.len() >= 2);
+    let controls = control_lines(app);
+    let scene_rows: u16 = app
+        .scenes
+        .iter()
+        .enumerate()
+        .map(|(i, _)| 1 + u16::from(chapter.is_some_and(|c| app.scene_problem(c, i).is_some())))
+        .sum();
+    let [chapters, scenes, ctrl, rest] = Layout::vertical([
+        Constraint::Length(app.chapters.len() as u16 + 2),
+        Constraint::Length(scene_rows + 2),
+        Constraint::Length(controls.len() as u16 + 2),
+        Constraint::Min(0),
+    ])
+    .areas(area);
+
+    let items: Vec<ListItem> = app
+        .chapters
+        .iter()
+        .map(|c| ListItem::new(format!("{} {}", c.number(), c.title())))
+        .collect();
+    let highlight = Style::default().add_modifier(Modifier::BOLD);
+    let list = List::new(items)
+        .block(block(app, "chapters", app.focus == Focus::Chapters))
+        .highlight_symbol("> ")
+        .highlight_style(highlight);
+    let mut state = ListState::default().with_selected(Some(app.chapter));
+    frame.render_stateful_widget(list, chapters, &mut state);
+
+    let items: Vec<ListItem> = app
+        .scenes
+        .iter()
+        .enumerate()
+        .map(
+            |(i, s)| match chapter.and_then(|c| app.scene_problem(c, i)) {
+                None => ListItem::new(s.name.clone()),
+                Some(why) => ListItem::new(vec![
+                    Line::from(format!("✗ {}", s.name)),
+                    Line::from(format!("  {why}")),
+                ])
+                .style(fg(app, Color::DarkGray)),
+            },
+        )
+        .collect();
+    let list = List::new(items)
+        .block(block(app, "scenes", app.focus == Focus::Scenes))
+        .highlight_symbol("> ")
+        .highlight_style(highlight);
+    let mut state = ListState::default().with_selected(Some(app.scene));
+    frame.render_stateful_widget(list, scenes, &mut state);
+
+    frame.render_widget(
+        Paragraph::new(controls).block(Block::bordered().title("controls")),
+        ctrl,
+    );
+    if has_chart && rest.height >= 6 {
+        draw_chart(app, frame, rest);
+    }
+}
+
+/// The lines of the controls box: only the controls this render has.
+pub fn control_lines(app: &App) -> Vec<Line<'static>> {
+    let mut lines = Vec::new();
+    if let Some(c) = app.current_chapter() {
+        lines.push(Line::from(format!(
+            "view {}/{}: {}",
+            app.view + 1,
+            c.views().len(),
+            app.view_name()
+        )));
+    }
+    lines.push(Line::from(format!("exposure {:+} stops", app.exposure)));
+    if app.shows_bounces() {
+        lines.push(Line::from(format!("bounces {}", app.bounce_label())));
+    }
+    if app.shows_compare() {
+        lines.push(Line::from(format!("compare: {}", app.compare.name())));
+    }
+    if let Some(c) = app.current_chapter() {
+        if let Some(v) = c.variants().get(app.variant) {
+            lines.push(Line::from(format!(
+                "estimator {}/{}: {}",
+                app.variant + 1,
+                c.variants().len(),
+                v.name
+            )));
+        }
+    }
+    lines
+}
+
+fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
+    let Some(snap) = &app.snapshot else { return };
+    let data = &snap.error_series;
+    let t_max = data.iter().map(|p| p.0).fold(0.0, f64::max).max(1e-9);
+    let e_max = data.iter().map(|p| p.1).fold(0.0, f64::max).max(1e-12);
+    let dataset = Dataset::default()
+        .marker(Marker::Braille)
+        .graph_type(GraphType::Line)
+        .style(fg(app, Color::Cyan))
+        .data(data);
+    let chart = Chart::new(vec![dataset])
+        .block(Block::bordered().title("error vs time"))
+        .x_axis(
+            Axis::default()
+                .bounds([0.0, t_max])
+                .labels(["0".to_string(), format_seconds(t_max)]),
+        )
+        .y_axis(
+            Axis::default()
+                .bounds([0.0, e_max])
+                .labels(["0".to_string(), format_number(e_max)]),
+        );
+    frame.render_widget(chart, area);
+}
+
+fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
+    let title = match app.current_chapter() {
+        Some(c) => format!("ch{} {} · {}", c.number(), c.slug(), app.view_name()),
+        None => "preview".into(),
+    };
+    let block = Block::bordered().title(title);
+    let inner = block.inner(area);
+    frame.render_widget(block, area);
+    let note = |text: String, color: Color| {
+        Paragraph::new(text)
+            .style(fg(app, color))
+            .wrap(Wrap { trim: true })
+    };
+    if let Some(why) = app.problem() {
+        let scene = app.current_scene().map(|s| s.source.as_str()).unwrap_or("");
+        frame.render_widget(
+            note(format!("cannot render {scene}:\n{why}"), Color::Red),
+            inner,
+        );
+    } else if let Some(e) = &app.failure {
+        frame.render_widget(note(format!("render failed: {e}"), Color::Red), inner);
+    } else if let Some(film) = app.displayed() {
+        let film = expose(&film, app.exposure);
+        frame.render_widget(
+            Picture {
+                film: &film,
+                color: app.color,
+            },
+            inner,
+        );
+    } else {
+        frame.render_widget(note("rendering…".into(), Color::Gray), inner);
+    }
+}
+
+/// The status line: chapter, scene, view, resolution, passes, elapsed time,
+/// error against the reference when known.
+pub fn status_line(app: &App) -> Line<'static> {
+    let mut parts: Vec<String> = Vec::new();
+    if let Some(c) = app.current_chapter() {
+        parts.push(format!("ch{} {}", c.number(), c.slug()));
+    }
+    if let Some(s) = app.current_scene() {
+        parts.push(s.name.clone());
+    }
+    parts.push(app.view_name().to_string());
+    if let Some(snap) = &app.snapshot {
+        if let Some(f) = snap.views.first() {
+            parts.push(format!("{}x{}", f.width, f.height));
+        }
+        parts.push(format!("pass {}/{}", snap.progress.0, snap.progress.1));
+        parts.push(format_seconds(snap.elapsed.as_secs_f64()));
+        if let Some(e) = snap.rmse {
+            parts.push(format!("rmse {}", format_number(e)));
+        }
+    } else if app.failure.is_some() {
+        parts.push("failed".into());
+    } else if app.problem().is_none() {
+        parts.push("rendering…".into());
+    }
+    Line::from(Span::raw(parts.join(" │ ")))
+}
+
+fn draw_gauge(app: &App, frame: &mut Frame, area: Rect) {
+    let (done, planned) = app.snapshot.as_ref().map_or((0, 1), |s| s.progress);
+    let ratio = if planned == 0 {
+        0.0
+    } else {
+        (done as f64 / planned as f64).clamp(0.0, 1.0)
+    };
+    let gauge = Gauge::default()
+        .ratio(ratio)
+        .label(format!("{done}/{planned} passes"))
+        .gauge_style(fg(app, Color::Green));
+    frame.render_widget(gauge, area);
+}
+
+fn draw_help(app: &App, frame: &mut Frame, area: Rect) {
+    let w = 78.min(area.width);
+    let h = (KEYS.len() as u16 + 2).min(area.height);
+    let r = Rect::new(
+        area.x + (area.width - w) / 2,
+        area.y + (area.height - h) / 2,
+        w,
+        h,
+    );
+    let lines: Vec<Line> = KEYS
+        .iter()
+        .map(|(k, what)| {
+            Line::from(vec![
+                Span::styled(format!("{k:>15}  "), fg(app, Color::Yellow)),
+                Span::raw(*what),
+            ])
+        })
+        .collect();
+    frame.render_widget(Clear, r);
+    frame.render_widget(
+        Paragraph::new(lines).block(Block::bordered().title("keys (any key closes)")),
+        r,
+    );
+}

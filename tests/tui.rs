@@ -1,0 +1,734 @@
+//! The terminal UI without a terminal: key handling and bounce/compare
+//! logic as pure `update` tests, layout snapshots on ratatui's TestBackend
+//! at two sizes, the preview's cell colours, the render worker's
+//! generations, and the book's text capture of the UI.
+#![cfg(feature = "tui")]
+
+mod common;
+
+use std::sync::Arc;
+use std::time::Duration;
+
+use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use glam::Vec3;
+use ratatui::backend::TestBackend;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Color;
+use ratatui::widgets::Widget;
+use ratatui::Terminal;
+
+use raystep::error::Result;
+use raystep::film::{encode_srgb, Film};
+use raystep::report::Report;
+use raystep::scene::Scene;
+use raystep::stage::{Chapter, Render, Settings, View};
+use raystep::tui::app::{combine_layers, save, update, App, BounceMode, Compare, Focus, Msg};
+use raystep::tui::keys::msg_for_key;
+use raystep::tui::picture::{fit, Picture};
+use raystep::tui::scenes::{scene_list, SceneEntry};
+use raystep::tui::view::{control_lines, view};
+use raystep::tui::worker::{Job, Progress, Snapshot, Worker};
+
+/// A stage with everything the UI can show: bounce layers, a reference, an
+/// error series, two views and two variants. Layer k is a flat colour.
+struct Fake {
+    bounces: bool,
+}
+
+static FAKE: Fake = Fake { bounces: true };
+static FAKE_PLAIN: Fake = Fake { bounces: false };
+
+const W: u32 = 8;
+const H: u32 = 4;
+
+fn layer_color(k: usize) -> Vec3 {
+    [
+        Vec3::new(0.5, 0.0, 0.0),
+        Vec3::new(0.0, 0.25, 0.0),
+        Vec3::new(0.0, 0.0, 0.125),
+    ][k]
+}
+
+fn flat(c: Vec3) -> Film {
+    let mut f = Film::new(W, H);
+    f.pixels.iter_mut().for_each(|p| *p = c);
+    f
+}
+
+impl Chapter for Fake {
+    fn number(&self) -> u32 {
+        if self.bounces {
+            6
+        } else {
+            2
+        }
+    }
+    fn slug(&self) -> &'static str {
+        if self.bounces {
+            "fake-gi"
+        } else {
+            "fake"
+        }
+    }
+    fn title(&self) -> &'static str {
+        "A fake stage"
+    }
+    fn views(&self) -> &'static [View] {
+        &[
+            View {
+                name: "image",
+                about: "the image",
+            },
+            View {
+                name: "depth",
+                about: "a ramp",
+            },
+        ]
+    }
+    fn has_bounces(&self) -> bool {
+        self.bounces
+    }
+    fn unsupported(&self, scene: &Scene) -> Option<String> {
+        (scene.name == "no-go").then(|| "this stage needs a scene with spheres".into())
+    }
+    fn variants(&self) -> &'static [View] {
+        if self.bounces {
+            &[
+                View {
+                    name: "brdf",
+                    about: "BRDF sampling",
+                },
+                View {
+                    name: "mis",
+                    about: "MIS",
+                },
+            ]
+        } else {
+            &[]
+        }
+    }
+    fn start(&self, _scene: Arc<Scene>, _settings: &Settings) -> Result<Box<dyn Render>> {
+        Ok(Box::new(FakeRender {
+            bounces: self.bounces,
+            passes: 0,
+            planned: 1,
+            sleep: Duration::ZERO,
+        }))
+    }
+}
+
+struct FakeRender {
+    bounces: bool,
+    passes: u32,
+    planned: u32,
+    sleep: Duration,
+}
+
+impl Render for FakeRender {
+    fn pass(&mut self) -> bool {
+        std::thread::sleep(self.sleep);
+        self.passes += 1;
+        self.passes >= self.planned
+    }
+    fn progress(&self) -> (u32, u32) {
+        (self.passes, self.planned)
+    }
+    fn view(&self, index: usize) -> Film {
+        if index == 0 {
+            flat(layer_color(0) + layer_color(1) + layer_color(2))
+        } else {
+            let mut f = Film::new(W, H);
+            for x in 0..W {
+                for y in 0..H {
+                    *f.get_mut(x, y) = Vec3::splat(x as f32 / (W - 1) as f32);
+                }
+            }
+            f
+        }
+    }
+    fn report(&self) -> Report {
+        Report::default()
+    }
+    fn layers(&self) -> Option<Vec<Film>> {
+        self.bounces
+            .then(|| (0..3).map(|k| flat(layer_color(k))).collect())
+    }
+    fn reference(&self) -> Option<Film> {
+        self.bounces.then(|| flat(Vec3::new(0.5, 0.25, 0.25)))
+    }
+    fn error_series(&self) -> Vec<(f64, f64)> {
+        if self.bounces {
+            vec![(0.01, 0.3), (0.02, 0.2), (0.04, 0.14), (0.08, 0.1)]
+        } else {
+            Vec::new()
+        }
+    }
+}
+
+fn renamed(name: &str) -> SceneEntry {
+    let mut scene = Scene::builtin();
+    scene.name = name.into();
+    SceneEntry {
+        name: name.into(),
+        source: format!("scenes/{name}.toml"),
+        scene: Ok(Arc::new(scene)),
+    }
+}
+
+fn scenes() -> Vec<SceneEntry> {
+    vec![
+        SceneEntry::builtin(),
+        renamed("no-go"),
+        SceneEntry {
+            name: "broken".into(),
+            source: "scenes/broken.toml".into(),
+            scene: Err("scenes/broken.toml: line 3: unknown key `colour`".into()),
+        },
+    ]
+}
+
+/// A fresh UI on the fake stage with bounces (chapter 6), plus the plain
+/// fake (chapter 2).
+fn app() -> App {
+    let mut app = App::new(vec![&FAKE_PLAIN, &FAKE], scenes(), false);
+    app = update(app, Msg::ChapterNumber(6));
+    app
+}
+
+/// Runs the current job to completion synchronously and feeds the last
+/// snapshot to the UI.
+fn rendered(app: App) -> App {
+    let job = app.job().expect("the selection renders");
+    let mut render = job
+        .chapter
+        .start_variant(job.scene, &job.settings, job.variant)
+        .unwrap();
+    while !render.pass() {}
+    let snap = Snapshot::capture(
+        job.chapter,
+        &*render,
+        job.generation,
+        Duration::from_millis(12),
+        true,
+    );
+    update(app, Msg::Progress(Progress::Snapshot(Box::new(snap))))
+}
+
+fn send(app: App, msgs: &[Msg]) -> App {
+    msgs.iter().cloned().fold(app, update)
+}
+
+fn pixel(app: &App) -> Vec3 {
+    app.displayed().expect("a picture").pixels[0]
+}
+
+#[test]
+fn bounce_stepping_shows_exactly_k_and_up_to_k_from_the_layers() {
+    let app = rendered(app());
+    assert!(app.shows_bounces());
+    assert_eq!(app.bounce, None);
+    let all = layer_color(0) + layer_color(1) + layer_color(2);
+    assert_eq!(pixel(&app), all);
+    assert_eq!(app.bounce_label(), "all bounces");
+
+    let app = update(app, Msg::BounceUp);
+    assert_eq!(app.bounce, Some(0));
+    assert_eq!(app.bounce_mode, BounceMode::UpTo);
+    assert_eq!(pixel(&app), layer_color(0));
+    assert_eq!(app.bounce_label(), "up to 0: direct illumination");
+
+    let app = update(app, Msg::BounceUp);
+    assert_eq!(pixel(&app), layer_color(0) + layer_color(1));
+    let app = update(app, Msg::ToggleBounceMode);
+    assert_eq!(app.bounce_mode, BounceMode::Exactly);
+    assert_eq!(pixel(&app), layer_color(1));
+    assert_eq!(
+        app.bounce_label(),
+        "exactly 1: one-bounce global illumination"
+    );
+    assert!(control_lines(&app)
+        .iter()
+        .any(|l| l.to_string().contains("one-bounce")));
+
+    // Past the last layer "exactly" is black; stepping wraps through "all".
+    let app = send(app, &vec![Msg::BounceUp; 3]);
+    assert_eq!(app.bounce, Some(4));
+    assert_eq!(pixel(&app), Vec3::ZERO);
+    assert!(app.bounce_label().contains("four-bounce"));
+    let app = send(app, &vec![Msg::BounceUp; 12]);
+    assert_eq!(app.bounce, Some(16));
+    assert!(app.bounce_label().contains("sixteen-bounce"));
+    let app = update(app, Msg::BounceUp);
+    assert_eq!(app.bounce, None);
+    let app = update(app, Msg::BounceDown);
+    assert_eq!(app.bounce, Some(16));
+    let app = send(app, &vec![Msg::BounceDown; 17]);
+    assert_eq!(app.bounce, None);
+    // Bounce stepping changes the picture only: no new render.
+    assert_eq!(app.generation, 2);
+}
+
+#[test]
+fn combine_layers_sums_or_picks() {
+    let layers: Vec<Film> = (0..3).map(|k| flat(layer_color(k))).collect();
+    let like = Film::new(W, H);
+    let up_to_2 = combine_layers(&layers, 2, BounceMode::UpTo, &like);
+    assert_eq!(up_to_2.pixels[5], Vec3::new(0.5, 0.25, 0.125));
+    let exactly_2 = combine_layers(&layers, 2, BounceMode::Exactly, &like);
+    assert_eq!(exactly_2.pixels[5], layer_color(2));
+}
+
+#[test]
+fn chapters_without_bounces_or_reference_hide_those_controls() {
+    let app = rendered(update(app(), Msg::ChapterNumber(2)));
+    assert!(!app.shows_bounces());
+    assert!(!app.shows_compare());
+    let lines: Vec<String> = control_lines(&app).iter().map(|l| l.to_string()).collect();
+    assert!(
+        !lines
+            .iter()
+            .any(|l| l.contains("bounces") || l.contains("compare") || l.contains("estimator")),
+        "{lines:?}"
+    );
+    let before = pixel(&app);
+    let app = send(
+        app,
+        &[
+            Msg::BounceUp,
+            Msg::ToggleBounceMode,
+            Msg::CycleCompare,
+            Msg::NextVariant,
+        ],
+    );
+    assert_eq!(app.bounce, None);
+    assert_eq!(app.compare, Compare::Render);
+    assert_eq!(
+        app.generation, 3,
+        "NextVariant without variants restarts nothing"
+    );
+    assert_eq!(pixel(&app), before);
+
+    // The real chapter 1 has no bounces either.
+    let ch1 = raystep::chapters::all()[0];
+    assert!(!ch1.has_bounces());
+}
+
+#[test]
+fn compare_cycles_render_reference_difference() {
+    let app = rendered(app());
+    let render = pixel(&app);
+    let reference = Vec3::new(0.5, 0.25, 0.25);
+    let app = update(app, Msg::CycleCompare);
+    assert_eq!(app.compare, Compare::Reference);
+    assert_eq!(pixel(&app), reference);
+    let app = update(app, Msg::CycleCompare);
+    assert_eq!(app.compare, Compare::Difference);
+    // |render - reference| = (0, 0, 0.125), scaled so the largest is 1.
+    assert_eq!(pixel(&app), Vec3::new(0.0, 0.0, 1.0));
+    assert_ne!(render, reference);
+    let app = update(app, Msg::CycleCompare);
+    assert_eq!(app.compare, Compare::Render);
+    assert_eq!(pixel(&app), render);
+    // The status line carries the error against the reference.
+    let status = raystep::tui::view::status_line(&app).to_string();
+    assert!(status.contains("rmse"), "{status}");
+}
+
+#[test]
+fn lists_views_exposure_and_variants() {
+    let app = app();
+    assert_eq!(app.focus, Focus::Chapters);
+    assert_eq!(app.chapter, 1);
+    let app = update(app, Msg::Up);
+    assert_eq!(app.chapter, 0);
+    let g = app.generation;
+    let app = update(app, Msg::Up);
+    assert_eq!(
+        (app.chapter, app.generation),
+        (0, g),
+        "no restart at the top"
+    );
+
+    let app = update(app, Msg::SwitchFocus);
+    assert_eq!(app.focus, Focus::Scenes);
+    let app = update(app, Msg::Down);
+    assert_eq!(app.scene, 1);
+    assert_eq!(app.generation, g + 1);
+    let why = app.problem().expect("no-go is unsupported");
+    assert!(why.contains("spheres"), "{why}");
+    assert!(app.job().is_none());
+    let app = update(app, Msg::Down);
+    assert!(app.problem().unwrap().contains("unknown key `colour`"));
+    assert!(app.job().is_none());
+    let app = send(app, &[Msg::Down, Msg::Up, Msg::Up]);
+    assert_eq!(app.scene, 0);
+    assert!(app.job().is_some());
+
+    let app = rendered(update(app, Msg::ChapterNumber(6)));
+    let app = update(app, Msg::NextView);
+    assert_eq!(app.view_name(), "depth");
+    let app = send(app, &[Msg::NextView]);
+    assert_eq!(app.view_name(), "image");
+    let app = update(app, Msg::PrevView);
+    assert_eq!(app.view_name(), "depth");
+    let other = update(update(app, Msg::ChapterNumber(2)), Msg::ChapterNumber(6));
+    assert_eq!(other.view, 0, "a new chapter starts on its first view");
+    let app = rendered(update(other, Msg::NextView));
+
+    let app = send(app, &vec![Msg::ExposureUp; 12]);
+    assert_eq!(app.exposure, 10);
+    let app = update(app, Msg::ExposureReset);
+    assert_eq!(app.exposure, 0);
+
+    let g = app.generation;
+    let app = update(app, Msg::NextVariant);
+    assert_eq!((app.variant, app.generation), (1, g + 1));
+    assert!(app.snapshot.is_none(), "a restart drops the old picture");
+    let app = update(app, Msg::NextVariant);
+    assert_eq!(app.variant, 0);
+}
+
+#[test]
+fn stale_passes_are_dropped() {
+    let app = rendered(app());
+    let old = app.snapshot.clone().unwrap();
+    let app = update(app, Msg::ChapterNumber(2));
+    assert!(app.snapshot.is_none());
+    let app = update(app, Msg::Progress(Progress::Snapshot(Box::new(old))));
+    assert!(
+        app.snapshot.is_none(),
+        "a pass of the old render must not show"
+    );
+    let app = update(
+        app,
+        Msg::Progress(Progress::Failed {
+            generation: 1,
+            message: "old".into(),
+        }),
+    );
+    assert!(app.failure.is_none());
+}
+
+fn key(code: KeyCode) -> KeyEvent {
+    KeyEvent::new(code, KeyModifiers::NONE)
+}
+
+#[test]
+fn keys_map_to_messages() {
+    let app = app();
+    let m = |k| msg_for_key(&app, k).map(|m| format!("{m:?}"));
+    assert_eq!(m(key(KeyCode::Char('q'))).as_deref(), Some("Quit"));
+    assert_eq!(m(key(KeyCode::Esc)).as_deref(), Some("Quit"));
+    assert_eq!(
+        m(KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL)).as_deref(),
+        Some("Quit")
+    );
+    assert_eq!(m(key(KeyCode::Char(']'))).as_deref(), Some("BounceUp"));
+    assert_eq!(
+        m(key(KeyCode::Char('m'))).as_deref(),
+        Some("ToggleBounceMode")
+    );
+    assert_eq!(
+        m(key(KeyCode::Char('3'))).as_deref(),
+        Some("ChapterNumber(3)")
+    );
+    assert_eq!(m(key(KeyCode::Down)).as_deref(), Some("Down"));
+    assert_eq!(m(key(KeyCode::Char('x'))), None);
+
+    // With the help open, Esc closes it, and any other key only closes it.
+    let app = update(app, Msg::ToggleHelp);
+    assert_eq!(
+        msg_for_key(&app, key(KeyCode::Esc))
+            .map(|m| format!("{m:?}"))
+            .as_deref(),
+        Some("ToggleHelp")
+    );
+    let app = update(app, Msg::NextView);
+    assert!(!app.help);
+    assert_eq!(app.view, 0);
+    let app = update(app, Msg::Quit);
+    assert!(app.quit);
+}
+
+#[test]
+fn save_writes_the_view_as_png_and_the_film_as_exr() {
+    let dir = common::temp_dir("tui-save");
+    let mut app = update(app(), Msg::Save);
+    assert!(!app.save_requested, "nothing to save before the first pass");
+    app = rendered(app);
+    app.out_dir = dir.clone();
+    app = send(
+        app,
+        &[
+            Msg::BounceUp,
+            Msg::ToggleBounceMode,
+            Msg::ExposureUp,
+            Msg::Save,
+        ],
+    );
+    assert!(app.save_requested);
+    let files = save(&app).unwrap();
+    assert_eq!(
+        files,
+        vec![
+            dir.join("tui-ch6-cornell-box-image-exactly0.png"),
+            dir.join("tui-ch6-cornell-box-image-exactly0.exr")
+        ]
+    );
+    // PNG: layer 0 (0.5 red) one stop up = 1.0; EXR: the film, unexposed.
+    let png = Film::read_png(&files[0]).unwrap();
+    assert_eq!(png.pixels[0], Vec3::new(1.0, 0.0, 0.0));
+    let exr = Film::read_exr(&files[1]).unwrap();
+    assert_eq!(exr.pixels[0], layer_color(0));
+    let app = update(app, Msg::Saved(Ok(files)));
+    assert!(!app.save_requested);
+    assert!(app.message.starts_with("saved "), "{}", app.message);
+}
+
+#[test]
+fn preview_cells_carry_the_films_colours() {
+    // A 2x2 film, red on top and blue below, drawn into one row of cells.
+    let mut film = Film::new(2, 2);
+    *film.get_mut(0, 0) = Vec3::new(1.0, 0.0, 0.0);
+    *film.get_mut(1, 0) = Vec3::new(1.0, 0.0, 0.0);
+    *film.get_mut(0, 1) = Vec3::new(0.0, 0.0, 0.2);
+    *film.get_mut(1, 1) = Vec3::new(0.0, 0.0, 0.2);
+    let area = Rect::new(0, 0, 2, 1);
+    let mut buf = Buffer::empty(area);
+    Picture {
+        film: &film,
+        color: true,
+    }
+    .render(area, &mut buf);
+    let blue = encode_srgb(0.2);
+    for x in 0..2 {
+        let cell = &buf[(x, 0)];
+        assert_eq!(cell.symbol(), "▀");
+        assert_eq!(cell.fg, Color::Rgb(255, 0, 0));
+        assert_eq!(cell.bg, Color::Rgb(0, 0, blue));
+    }
+
+    // Through the whole UI: every preview cell carries the fake's colour.
+    let mut app = rendered(App::new(vec![&FAKE], scenes(), true));
+    app.exposure = 0;
+    let mut terminal = Terminal::new(TestBackend::new(60, 20)).unwrap();
+    terminal.draw(|f| view(&app, f)).unwrap();
+    let c = layer_color(0) + layer_color(1) + layer_color(2);
+    let [r, g, b] = c.to_array().map(encode_srgb);
+    let buffer = terminal.backend().buffer();
+    let painted: Vec<_> = buffer
+        .content()
+        .iter()
+        .filter(|cell| cell.symbol() == "▀")
+        .collect();
+    assert!(painted.len() > 50, "only {} preview cells", painted.len());
+    for cell in painted {
+        assert_eq!(
+            (cell.fg, cell.bg),
+            (Color::Rgb(r, g, b), Color::Rgb(r, g, b))
+        );
+    }
+}
+
+#[test]
+fn fit_keeps_the_aspect_ratio_with_two_pixels_per_cell() {
+    // A square film in a 40x10 area: 20 cells wide, 10 tall, centred.
+    assert_eq!(
+        fit(Rect::new(0, 0, 40, 10), 256, 256),
+        Rect::new(10, 0, 20, 10)
+    );
+    // A wide film in a tall area: full width.
+    assert_eq!(
+        fit(Rect::new(0, 0, 20, 40), 320, 240),
+        Rect::new(0, 16, 20, 8)
+    );
+    assert_eq!(fit(Rect::new(3, 3, 0, 5), 10, 10).width, 0);
+}
+
+fn text(buffer: &Buffer) -> String {
+    let area = buffer.area;
+    let mut out = String::new();
+    for y in 0..area.height {
+        let mut line = String::new();
+        for x in 0..area.width {
+            line.push_str(buffer[(x, y)].symbol());
+        }
+        out.push_str(line.trim_end());
+        out.push('\n');
+    }
+    out
+}
+
+fn draw(app: &App, w: u16, h: u16) -> String {
+    let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
+    terminal.draw(|f| view(app, f)).unwrap();
+    text(terminal.backend().buffer())
+}
+
+#[test]
+fn layout_snapshots_at_two_sizes() {
+    let app = rendered(app());
+    let app = send(
+        app,
+        &[
+            Msg::BounceUp,
+            Msg::BounceUp,
+            Msg::ToggleBounceMode,
+            Msg::SwitchFocus,
+        ],
+    );
+    let small = draw(&app, 80, 24);
+    let large = draw(&app, 140, 40);
+    // The controls this render has are shown.
+    for t in [&small, &large] {
+        assert!(t.contains("exactly 1"), "{t}");
+        assert!(t.contains("compare: render"), "{t}");
+        assert!(t.contains("estimator 1/2: brdf"), "{t}");
+        assert!(t.contains("no-go"), "{t}");
+    }
+    assert!(large.contains("error vs time"), "{large}");
+    insta::assert_snapshot!("tui_80x24", small);
+    insta::assert_snapshot!("tui_140x40", large);
+    let app = update(app, Msg::ToggleHelp);
+    insta::assert_snapshot!("tui_help_80x24", draw(&app, 80, 24));
+}
+
+#[test]
+fn the_worker_discards_stale_passes() {
+    struct Slow;
+    static SLOW: Slow = Slow;
+    impl Chapter for Slow {
+        fn number(&self) -> u32 {
+            7
+        }
+        fn slug(&self) -> &'static str {
+            "slow"
+        }
+        fn title(&self) -> &'static str {
+            "slow"
+        }
+        fn views(&self) -> &'static [View] {
+            &[View {
+                name: "image",
+                about: "",
+            }]
+        }
+        fn start(&self, _: Arc<Scene>, _: &Settings) -> Result<Box<dyn Render>> {
+            Ok(Box::new(FakeRender {
+                bounces: false,
+                passes: 0,
+                planned: 4,
+                sleep: Duration::from_millis(20),
+            }))
+        }
+    }
+    let worker = Worker::spawn();
+    let scene = Arc::new(Scene::builtin());
+    let job = |generation| Job {
+        generation,
+        chapter: &SLOW,
+        scene: scene.clone(),
+        settings: Settings::default(),
+        variant: 0,
+    };
+    worker.start(job(1));
+    let first = worker
+        .results
+        .recv_timeout(Duration::from_secs(10))
+        .unwrap();
+    assert_eq!(first.generation(), 1);
+    worker.start(job(2));
+    let mut seen = Vec::new();
+    loop {
+        let p = worker
+            .results
+            .recv_timeout(Duration::from_secs(10))
+            .unwrap();
+        seen.push(p.generation());
+        if let Progress::Snapshot(s) = &p {
+            if s.generation == 2 && s.done {
+                assert_eq!(s.progress, (4, 4));
+                break;
+            }
+        }
+    }
+    // At most the pass that was running when job 2 came; never after it.
+    let first_new = seen.iter().position(|g| *g == 2).unwrap();
+    assert!(seen[first_new..].iter().all(|g| *g == 2), "{seen:?}");
+    assert!(first_new <= 1, "{seen:?}");
+    worker.stop();
+}
+
+/// The book's capture of the UI: chapter 1 on the built-in Cornell box, in
+/// plain (NO_COLOR) style so the text shows the picture. Regenerate with
+/// `RAYSTEP_UPDATE_FIGURES=1 cargo test --test tui`.
+#[test]
+fn book_capture_is_current() {
+    let root = common::root();
+    let mut scenes = vec![SceneEntry::builtin()];
+    for name in ["bunny", "railroad", "tetrahedron"] {
+        scenes.push(SceneEntry::load(&root.join(format!("scenes/{name}.toml"))));
+    }
+    let ch1 = raystep::chapters::all()[0];
+    let app = rendered(App::new(vec![ch1], scenes, false));
+    let figures = [
+        ("tui.txt", draw(&app, 100, 32)),
+        ("tui-help.txt", draw(&update(app, Msg::ToggleHelp), 100, 32)),
+    ];
+    for (name, capture) in figures {
+        let path = root.join("book/src/figures").join(name);
+        let update = std::env::var_os("RAYSTEP_UPDATE_FIGURES").is_some();
+        if update || (!path.exists() && std::env::var_os("CI").is_none()) {
+            std::fs::write(&path, &capture).unwrap();
+        }
+        let stored = std::fs::read_to_string(&path).unwrap_or_default();
+        assert_eq!(
+            stored,
+            capture,
+            "{} is stale: RAYSTEP_UPDATE_FIGURES=1 cargo test --test tui",
+            path.display()
+        );
+    }
+}
+
+#[test]
+fn the_scene_list_has_the_builtin_scene_and_shows_load_errors() {
+    let dir = common::temp_dir("tui-scenes");
+    common::write_files(
+        &dir,
+        &[
+            ("b-broken.toml", "[camera]\nfov = \"wide\"\n"),
+            (
+                "a-tet.toml",
+                &std::fs::read_to_string(common::root().join("scenes/tetrahedron.toml")).unwrap(),
+            ),
+            ("notes.txt", "not a scene"),
+        ],
+    );
+    let list = scene_list(&dir);
+    let names: Vec<&str> = list.iter().map(|s| s.name.as_str()).collect();
+    assert_eq!(names, ["cornell-box (built-in)", "a-tet", "b-broken"]);
+    assert!(list[1].scene.is_ok());
+    let err = list[2].scene.as_ref().unwrap_err();
+    assert!(err.contains("b-broken.toml"), "{err}");
+    // A folder that does not exist still gives the built-in scene.
+    assert_eq!(scene_list(&dir.join("missing")).len(), 1);
+}
+
+#[test]
+fn the_book_documents_every_key() {
+    let page = std::fs::read_to_string(common::root().join("book/src/running.md")).unwrap();
+    let section = page
+        .split("## The terminal UI")
+        .nth(1)
+        .expect("running.md has a section on the terminal UI");
+    for (keys, _) in raystep::tui::keys::KEYS {
+        for k in keys.split_whitespace().filter(|k| *k != "…") {
+            assert!(
+                section.contains(&format!("`{k}`")),
+                "running.md does not document `{k}`"
+            );
+        }
+    }
+}

@@ -1,0 +1,223 @@
+//! End to end: the real `raystep` binary in a pseudo-terminal (tmux):
+//! start, change chapter, step bounces (or views, for chapters without
+//! bounces), save, quit; then check the saved image and that the terminal
+//! came back (the shell prints the exit status; no alternate screen; the
+//! cursor is visible).
+//!
+//! Without tmux the test is skipped with a message, except under `CI`,
+//! where a missing tmux is a failure (`.ci/run` installs it).
+#![cfg(feature = "tui")]
+
+mod common;
+
+use std::path::Path;
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+
+/// A private tmux server (its own socket), killed on drop.
+struct Tmux {
+    socket: String,
+}
+
+impl Tmux {
+    fn run(&self, args: &[&str]) -> Output {
+        Command::new("tmux")
+            .args(["-L", &self.socket, "-f", "/dev/null"])
+            .args(args)
+            .output()
+            .expect("running tmux")
+    }
+
+    fn capture(&self) -> String {
+        String::from_utf8_lossy(&self.run(&["capture-pane", "-p", "-t", "t"]).stdout).into_owned()
+    }
+
+    fn flag(&self, name: &str) -> String {
+        let f = format!("#{{{name}}}");
+        String::from_utf8_lossy(&self.run(&["display-message", "-p", "-t", "t", &f]).stdout)
+            .trim()
+            .to_string()
+    }
+
+    fn keys(&self, keys: &str) {
+        self.run(&["send-keys", "-t", "t", "-l", keys]);
+    }
+
+    fn key(&self, key: &str) {
+        self.run(&["send-keys", "-t", "t", key]);
+    }
+
+    /// Polls every 30 ms until `ok` holds for the screen, or fails after
+    /// `secs` seconds showing the screen.
+    fn wait(&self, what: &str, secs: u64, ok: impl Fn(&Tmux, &str) -> bool) -> String {
+        let start = Instant::now();
+        loop {
+            let screen = self.capture();
+            if ok(self, &screen) {
+                return screen;
+            }
+            if start.elapsed() > Duration::from_secs(secs) {
+                panic!("timed out waiting for {what}; the screen:\n{screen}");
+            }
+            std::thread::sleep(Duration::from_millis(30));
+        }
+    }
+}
+
+impl Drop for Tmux {
+    fn drop(&mut self) {
+        let _ = self.run(&["kill-server"]);
+    }
+}
+
+fn tmux_available() -> bool {
+    Command::new("tmux")
+        .arg("-V")
+        .output()
+        .is_ok_and(|o| o.status.success())
+}
+
+fn pngs(dir: &Path) -> Vec<std::path::PathBuf> {
+    std::fs::read_dir(dir)
+        .map(|d| {
+            d.filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|e| e == "png"))
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+#[test]
+fn the_real_binary_in_a_terminal() {
+    if !tmux_available() {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "tmux is missing under CI (.ci/run installs it)"
+        );
+        eprintln!("skipped: tmux is not installed (apt-get install tmux)");
+        return;
+    }
+    let dir = common::temp_dir("tui-e2e");
+    let out = dir.join("out");
+    let tmux = Tmux {
+        socket: format!("raystep-e2e-{}", std::process::id()),
+    };
+    let started = tmux.run(&[
+        "new-session",
+        "-d",
+        "-s",
+        "t",
+        "-x",
+        "110",
+        "-y",
+        "34",
+        "-c",
+        dir.to_str().unwrap(),
+        "env PS1='READY$ ' sh",
+    ]);
+    assert!(started.status.success(), "{started:?}");
+    tmux.wait("the shell", 10, |_, s| s.contains("READY$"));
+
+    let command = format!(
+        "{} --scenes {} --out {}; echo \"EXIT=$?\"",
+        env!("CARGO_BIN_EXE_raystep"),
+        common::root().join("scenes").display(),
+        out.display()
+    );
+    tmux.keys(&command);
+    tmux.key("Enter");
+    // Start: the UI is up and the first pass of chapter 1 is shown.
+    tmux.wait("the first preview", 30, |t, s| {
+        t.flag("alternate_on") == "1" && s.contains("chapters") && s.contains("│ pass ")
+    });
+
+    // Change chapter (to the second one, where there is one).
+    let chapters = raystep::chapters::all();
+    let chapter = *chapters.get(1).unwrap_or(&chapters[0]);
+    tmux.key("Down");
+    let tag = format!("ch{} {} │", chapter.number(), chapter.slug());
+    tmux.wait(&tag, 60, |_, s| {
+        s.lines()
+            .any(|l| l.starts_with(&tag) && l.contains("│ pass "))
+    });
+
+    // Step bounces where the chapter has them, else step views.
+    if chapter.has_bounces() {
+        tmux.wait("the bounce control", 60, |_, s| s.contains("bounces all"));
+        tmux.keys("]");
+        tmux.wait("bounce 0", 10, |_, s| s.contains("up to 0: direct"));
+        tmux.keys("m");
+        tmux.wait("exactly 0", 10, |_, s| s.contains("exactly 0: direct"));
+    } else if chapter.views().len() > 1 {
+        let name = chapter.views()[1].name;
+        tmux.keys("v");
+        tmux.wait("the second view", 10, |_, s| {
+            s.contains(&format!("view 2/{}: {name}", chapter.views().len()))
+        });
+    }
+
+    // Save.
+    tmux.keys("s");
+    tmux.wait("the save message", 20, |_, s| s.contains("saved "));
+    let saved = pngs(&out);
+    assert_eq!(saved.len(), 1, "{saved:?}");
+    let name = saved[0].file_name().unwrap().to_string_lossy().into_owned();
+    assert!(
+        name.starts_with(&format!("tui-ch{}-cornell-box-", chapter.number())),
+        "{name}"
+    );
+    let film = raystep::film::Film::read_png(&saved[0]).unwrap();
+    assert!(film.width > 0 && film.height > 0);
+    assert!(saved[0].with_extension("exr").exists());
+
+    // Quit: the shell is back, on the main screen, with a visible cursor.
+    tmux.keys("q");
+    let screen = tmux.wait("the shell after quitting", 20, |t, s| {
+        s.contains("EXIT=0") && t.flag("alternate_on") == "0"
+    });
+    assert!(!screen.contains("chapters"), "{screen}");
+    assert_eq!(tmux.flag("cursor_flag"), "1");
+    tmux.wait("the prompt", 10, |_, s| {
+        s.lines().filter(|l| l.starts_with("READY$")).count() >= 2
+    });
+}
+
+#[test]
+fn a_panic_restores_the_terminal_before_printing() {
+    if !tmux_available() {
+        assert!(std::env::var_os("CI").is_none(), "tmux is missing under CI");
+        eprintln!("skipped: tmux is not installed (apt-get install tmux)");
+        return;
+    }
+    let dir = common::temp_dir("tui-e2e-panic");
+    let tmux = Tmux {
+        socket: format!("raystep-e2e-panic-{}", std::process::id()),
+    };
+    let started = tmux.run(&[
+        "new-session",
+        "-d",
+        "-s",
+        "t",
+        "-x",
+        "110",
+        "-y",
+        "34",
+        "-c",
+        dir.to_str().unwrap(),
+        "env PS1='READY$ ' sh",
+    ]);
+    assert!(started.status.success(), "{started:?}");
+    tmux.wait("the shell", 10, |_, s| s.contains("READY$"));
+    tmux.keys(&format!(
+        "{}=1 {} --scenes {}; echo \"EXIT=$?\"",
+        raystep::tui::TEST_PANIC,
+        env!("CARGO_BIN_EXE_raystep"),
+        dir.display()
+    ));
+    tmux.key("Enter");
+    let screen = tmux.wait("the shell after the panic", 30, |t, s| {
+        s.contains("EXIT=101") && t.flag("alternate_on") == "0"
+    });
+    assert!(screen.contains("a deliberate panic"), "{screen}");
+    assert_eq!(tmux.flag("cursor_flag"), "1");
+}
