@@ -8,6 +8,7 @@ pub fn all() -> Vec<&'static dyn Chapter> {
     vec![
         &crate::projection::Projection,
         &crate::raster::RASTERIZATION,
+        &crate::raytrace::RayTriangle,
         &crate::sphere_tracing::DEFAULT,
     ]
 }

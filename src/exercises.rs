@@ -12,6 +12,9 @@ pub mod ch1;
 #[path = "../chapters/ch2-rasterization/exercises/mod.rs"]
 pub mod ch2;
 
+#[path = "../chapters/ch3-ray-triangle/exercises/mod.rs"]
+pub mod ch3;
+
 #[path = "../chapters/ch4-sphere-tracing/exercises/mod.rs"]
 pub mod ch4;
 
@@ -19,6 +22,7 @@ pub mod ch4;
 pub fn all() -> Vec<Exercise> {
     let mut all = ch1::exercises();
     all.extend(ch2::exercises());
+    all.extend(ch3::exercises());
     all.extend(ch4::exercises());
     all
 }

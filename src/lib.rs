@@ -17,6 +17,7 @@
 //! |---|---|---|---|---|
 //! | projection | 1 | [`camera`], [`projection`] | `ch1` | `book/src/ch1-projection.md` |
 //! | rasterization | 2 | [`raster`], [`mesh_check`] | `ch2` | `book/src/ch2-rasterization.md` |
+//! | ray-triangle | 3 | [`ray`], [`triangle`], [`bvh`], [`spawn`], [`raytrace`] | `ch3` | `book/src/ch3-ray-triangle.md` |
 //! | implicit surfaces | 4 | [`sdf`], [`sphere_tracing`] | `ch4` | `book/src/ch4-sphere-tracing.md` |
 //!
 //! Later chapters (rasterization, ray-triangle intersection and a BVH,
@@ -36,6 +37,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bvh;
 pub mod camera;
 pub mod chapters;
 pub mod draw;
@@ -49,13 +51,18 @@ pub mod preview;
 pub mod projection;
 pub mod raster;
 pub mod ray;
+pub mod raytrace;
+pub mod raytrace_bench;
+pub mod raytrace_studies;
 pub mod report;
 pub mod run;
 pub mod sampling;
 pub mod scene;
 pub mod sdf;
+pub mod spawn;
 pub mod sphere_tracing;
 pub mod stage;
+pub mod triangle;
 #[cfg(feature = "tui")]
 pub mod tui;
 
