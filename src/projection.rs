@@ -456,7 +456,6 @@ pub struct VanishingPoint {
 
 /// The vanishing points of the three largest families of parallel edges
 /// that are not parallel to the image plane.
-#[allow(clippy::type_complexity)]
 pub fn vanishing_points(cam: &Camera, meshes: &[Mesh]) -> Vec<VanishingPoint> {
     use std::collections::BTreeMap;
     // Quantised direction → (direction, the edges along it).

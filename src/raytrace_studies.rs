@@ -95,7 +95,7 @@ pub fn procedural_mesh(n: usize) -> Mesh {
     // The most square grid rows x cols = quads.
     let rows = (1..=quads)
         .take_while(|r| r * r <= quads)
-        .filter(|r| quads % r == 0)
+        .filter(|r| quads.is_multiple_of(*r))
         .last()
         .unwrap_or(1);
     let cols = quads / rows;

@@ -255,37 +255,90 @@ fn mesh_only_scenes_evaluate_no_sdf() {
         .iter()
         .any(|l| l == "SDF evaluation: the scene has no [[sdfs]] (0 evaluations of f)"));
     assert!(report
-        .left_out
+        .built
         .iter()
-        .any(|l| l.starts_with("mesh intersection: 1 meshes")));
+        .any(|l| l.starts_with("chapter 3's BVH over 1 meshes (4 triangles")));
     assert!(report
         .facts
         .iter()
         .any(|(k, v)| k == "steps" && v.starts_with("0 evaluations")));
+    // No SDF, so no steps anywhere; but the tetrahedron itself is seen.
     assert!(films[3].pixels.iter().all(|p| *p == Vec3::ZERO));
+    assert!(
+        films[0]
+            .pixels
+            .iter()
+            .filter(|p| p.max_element() > 0.2)
+            .count()
+            > 1000
+    );
     // No SDF table means no SDF allocation either.
     assert_eq!(scene("tetrahedron").sdfs.capacity(), 0);
 }
 
 #[test]
-fn a_mixed_scene_traces_its_sdfs_and_says_the_meshes_wait_for_chapter_3() {
+fn a_mixed_scene_traces_both_and_the_nearer_surface_wins() {
+    use raystep::sdf::hit::Surface;
+    use raystep::sphere_tracing::render::{trace_pixel, MeshTracer};
+    // A unit sphere (SDF) at z = 0 and a square (mesh) at z = -2 behind it,
+    // then the square moved to z = +2, in front of it.
+    for (square_z, want_mesh) in [(-2.0f32, false), (2.0, true)] {
+        let s = parse(&format!(
+            "[camera]\neye = [0, 0, 5]\nwidth = 40\nheight = 30\n\
+             [[objects]]\nshape = \"rectangle\"\nsize = [3, 3]\ntranslate = [0, 0, {square_z}]\n\
+             [[sdfs]]\ntype = \"sphere\"\n"
+        ))
+        .unwrap();
+        let geometry = raystep::raytrace::Geometry::new(&s);
+        let meshes = Some(MeshTracer {
+            geometry: &geometry,
+            meshes: &s.meshes,
+        });
+        let ray = s.camera.ray(Vec2::new(20.0, 15.0));
+        let m = March::default();
+        let px = trace_pixel(
+            &ray,
+            &s.sdfs,
+            &m,
+            Method::Plain,
+            NormalScheme::Tetrahedron,
+            meshes,
+        );
+        let hit = px.hit.expect("the centre ray hits something");
+        // Analytic: the sphere's front at t = 5 - 1 = 4, the square at 5 - z.
+        let (want_t, want_surface) = if want_mesh {
+            (5.0 - square_z, Surface::Mesh(0))
+        } else {
+            (4.0, Surface::Sdf(0))
+        };
+        assert_eq!(hit.surface, want_surface, "square at z = {square_z}");
+        assert!((hit.t - want_t).abs() < 1e-3, "t = {} for {want_t}", hit.t);
+        assert!(hit.normal.dot(ray.dir) < 0.0, "normals face the viewer");
+    }
+    // The whole stage on a mixed scene: both parts drawn, and the report
+    // says chapter 3's BVH was built.
     let s = parse(
         "[camera]\nwidth = 40\nheight = 30\n[[objects]]\nshape = \"box\"\ntranslate = [2, 0, 0]\n\
          [[sdfs]]\ntype = \"sphere\"\ntranslate = [-1, 0, 0]\n",
     )
     .unwrap();
-    assert_eq!((s.meshes.len(), s.sdfs.len()), (1, 1));
     let (report, films) = render(&DEFAULT, s, false);
     assert!(report
         .built
         .iter()
         .any(|b| b.starts_with("sphere tracer over 1 SDF objects")));
     assert!(report
-        .left_out
+        .built
         .iter()
-        .any(|l| l.contains("chapter 3's") && l.contains("nearest_hit")));
-    let lit = films[1].pixels.iter().filter(|p| **p != Vec3::ZERO).count();
-    assert!(lit > 50, "{lit}");
+        .any(|b| b.starts_with("chapter 3's BVH over 1 meshes")));
+    let lit = |x0: u32, x1: u32| {
+        (0..30)
+            .flat_map(|y| (x0..x1).map(move |x| (x, y)))
+            .filter(|&(x, y)| films[1].get(x, y) != Vec3::ZERO)
+            .count()
+    };
+    assert!(lit(0, 20) > 50, "the sphere (left half): {}", lit(0, 20));
+    assert!(lit(20, 40) > 50, "the box (right half): {}", lit(20, 40));
 }
 
 #[test]

@@ -1,9 +1,9 @@
 //! One surface hit, whatever the surface, and "the nearest hit wins" for
 //! scenes that mix SDF objects with meshes.
 //!
-//! Chapter 4 traces only the SDF part. The mesh part (ray-triangle and the
-//! BVH) is chapter 3's; the renderer passes its hit, or `None`, to
-//! [`nearest_hit`], so wiring in chapter 3 is one call.
+//! Chapter 4 sphere-traces the SDF part. The mesh part (ray-triangle and
+//! the BVH) is chapter 3's; the renderer passes its hit, or `None` for a
+//! scene without meshes, to [`nearest_hit`].
 
 use glam::Vec3;
 

@@ -4,9 +4,9 @@
 //! its normals, depth, the steps each ray took and the residual |f| at
 //! the hit.
 //!
-//! Meshes are chapter 3's: a mixed scene's SDF hits go through
-//! [`crate::sdf::hit::nearest_hit`] with no mesh hit until chapter 3's
-//! intersection is wired in.
+//! Meshes are chapter 3's: a scene with meshes gets chapter 3's BVH, and
+//! each ray's mesh hit and SDF hit meet in [`crate::sdf::hit::nearest_hit`].
+//! A scene without meshes builds no BVH; one without SDFs evaluates no f.
 
 pub mod render;
 pub mod stability;
@@ -17,6 +17,7 @@ use std::time::Instant;
 
 use crate::error::{Error, Result};
 use crate::film::Film;
+use crate::raytrace::Geometry;
 use crate::report::{format_number, format_seconds, Report, Table};
 use crate::scene::Scene;
 use crate::sdf::eikonal::{gradient_range, sample_region};
@@ -24,7 +25,7 @@ use crate::sdf::march::{Ending, March};
 use crate::sdf::normal::NormalScheme;
 use crate::sdf::{Aabb, SdfObject};
 use crate::stage::{Chapter, Render, Settings, View};
-use render::{trace_image, views, Method, Pixel};
+use render::{trace_image, views, MeshTracer, Method, Pixel};
 
 /// The views of chapter 4.
 pub const VIEWS: &[View] = &[
@@ -124,6 +125,7 @@ impl Chapter for SphereTracing {
             pixels: Vec::new(),
             films: Vec::new(),
             seconds: 0.0,
+            geometry: None,
         }))
     }
 }
@@ -135,14 +137,24 @@ struct SphereTracingRender {
     pixels: Vec<Pixel>,
     films: Vec<Film>,
     seconds: f64,
+    /// Chapter 3's triangles and BVH with the seconds they took to build;
+    /// only for scenes with meshes.
+    geometry: Option<(Geometry, f64)>,
 }
 
 impl Render for SphereTracingRender {
     fn pass(&mut self) -> bool {
         let start = Instant::now();
+        if self.geometry.is_none() && !self.scene.meshes.is_empty() {
+            self.geometry = Some((Geometry::new(&self.scene), start.elapsed().as_secs_f64()));
+        }
+        let meshes = self.geometry.as_ref().map(|(geometry, _)| MeshTracer {
+            geometry,
+            meshes: &self.scene.meshes,
+        });
         let s = &self.stage;
         let cam = &self.scene.camera;
-        self.pixels = trace_image(cam, &self.scene.sdfs, &s.march, s.method, s.normals);
+        self.pixels = trace_image(cam, &self.scene.sdfs, &s.march, s.method, s.normals, meshes);
         self.films = views(
             &self.pixels,
             cam.width,
@@ -177,6 +189,7 @@ impl Render for SphereTracingRender {
             &self.pixels,
             &self.films,
             self.seconds,
+            self.geometry.as_ref(),
         )
     }
 }
@@ -275,6 +288,7 @@ fn chapter_report(
     pixels: &[Pixel],
     films: &[Film],
     seconds: f64,
+    geometry: Option<&(Geometry, f64)>,
 ) -> Report {
     let cam = &scene.camera;
     let m = &stage.march;
@@ -349,17 +363,18 @@ fn chapter_report(
             stats.evaluations
         ));
     }
-    if scene.meshes.is_empty() {
-        report
+    match geometry {
+        None => report
             .left_out
-            .push("meshes and BVH: the scene has no meshes, none loaded, no BVH built".into());
-    } else {
-        report.left_out.push(format!(
-            "mesh intersection: {} meshes ({} triangles) were loaded but are not traced; \
-             ray-triangle and the BVH are chapter 3's, and its hits join through nearest_hit",
+            .push("meshes and BVH: the scene has no meshes, none loaded, no BVH built".into()),
+        Some((g, build_seconds)) => report.built.push(format!(
+            "chapter 3's BVH over {} meshes ({} triangles, {} nodes, built in {}): \
+             mesh hits meet SDF hits in nearest_hit",
             scene.meshes.len(),
-            scene.triangle_count()
-        ));
+            scene.triangle_count(),
+            g.bvh.as_ref().map_or(0, |b| b.node_count()),
+            format_seconds(*build_seconds)
+        )),
     }
     report.left_out.push(match scene.lights.len() {
         0 => "lights: the scene has none; shading is a headlight".into(),

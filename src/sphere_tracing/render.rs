@@ -1,18 +1,49 @@
-//! One ray per pixel through the SDF part of a scene, in parallel, and the
-//! views made from the traces. Each pixel is a pure function of its
-//! position, so the images are the same on any number of threads.
+//! One ray per pixel through the scene, in parallel, and the views made
+//! from the traces: the SDF part is sphere traced, the mesh part (if any)
+//! goes through chapter 3's BVH, and the nearer hit wins. Each pixel is a
+//! pure function of its position, so the images are the same on any number
+//! of threads.
 
 use glam::{Vec2, Vec3};
 use rayon::prelude::*;
 
 use crate::camera::Camera;
 use crate::film::Film;
+use crate::mesh::Mesh;
 use crate::ray::Ray;
+use crate::raytrace::Geometry;
 use crate::scene::Material;
 use crate::sdf::hit::{nearest_hit, Surface, SurfaceHit};
 use crate::sdf::march::{fixed_step, over_relaxed, sphere_trace, Ending, March, Trace};
 use crate::sdf::normal::{normal, NormalScheme};
 use crate::sdf::{scene_distance, SdfObject};
+
+/// The scene's meshes as chapter 3 traces them (watertight triangles in
+/// a BVH), for scenes that mix meshes with SDFs.
+#[derive(Clone, Copy)]
+pub struct MeshTracer<'a> {
+    /// Chapter 3's triangles and BVH.
+    pub geometry: &'a Geometry,
+    /// The scene's meshes, for each triangle's material.
+    pub meshes: &'a [Mesh],
+}
+
+impl MeshTracer<'_> {
+    /// The first mesh hit along `ray`, as a surface hit.
+    pub fn hit(&self, ray: &Ray) -> Option<SurfaceHit> {
+        let hit = self.geometry.closest(ray)?;
+        let mesh = self.geometry.triangles.mesh[hit.triangle as usize] as usize;
+        let [p0, p1, p2] = self.geometry.triangles.tris[hit.triangle as usize];
+        let n = (p1 - p0).cross(p2 - p0).normalize_or_zero();
+        Some(SurfaceHit {
+            t: hit.t,
+            // Face the viewer, as SDF normals do.
+            normal: if n.dot(ray.dir) > 0.0 { -n } else { n },
+            material: self.meshes[mesh].material,
+            surface: Surface::Mesh(mesh),
+        })
+    }
+}
 
 /// Which march.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -64,13 +95,14 @@ pub fn trace_image(
     m: &March,
     method: Method,
     normals: NormalScheme,
+    meshes: Option<MeshTracer>,
 ) -> Vec<Pixel> {
     let (w, h) = (camera.width, camera.height);
     (0..w * h)
         .into_par_iter()
         .map(|i| {
             let raster = Vec2::new((i % w) as f32 + 0.5, (i / w) as f32 + 0.5);
-            trace_pixel(&camera.ray(raster), objects, m, method, normals)
+            trace_pixel(&camera.ray(raster), objects, m, method, normals, meshes)
         })
         .collect()
 }
@@ -83,6 +115,7 @@ pub fn trace_pixel(
     m: &March,
     method: Method,
     normals: NormalScheme,
+    meshes: Option<MeshTracer>,
 ) -> Pixel {
     let empty = Trace {
         ending: Ending::Escaped,
@@ -93,10 +126,12 @@ pub fn trace_pixel(
         lipschitz_violations: 0,
         residual: f32::INFINITY,
     };
+    // Meshes through chapter 3's BVH; nothing when the scene has none.
+    let mesh_hit = meshes.and_then(|mt| mt.hit(ray));
     if objects.is_empty() {
         return Pixel {
             trace: empty,
-            hit: None,
+            hit: mesh_hit,
             ray: *ray,
         };
     }
@@ -115,8 +150,6 @@ pub fn trace_pixel(
             surface: Surface::Sdf(object),
         }
     });
-    // Meshes are traced by chapter 3; until it is merged there is no mesh hit.
-    let mesh_hit = None;
     Pixel {
         trace,
         hit: nearest_hit(sdf_hit, mesh_hit),

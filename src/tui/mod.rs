@@ -45,7 +45,7 @@ pub const FRAME: Duration = Duration::from_millis(33);
 
 /// Whether colour is allowed: `NO_COLOR` unset or empty.
 pub fn color_allowed() -> bool {
-    std::env::var_os("NO_COLOR").map_or(true, |v| v.is_empty())
+    std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
 }
 
 /// Whether the main binary should open the UI: stdout is a terminal.
