@@ -65,5 +65,6 @@ pub mod stage;
 pub mod triangle;
 #[cfg(feature = "tui")]
 pub mod tui;
+pub mod visibility_agreement;
 
 pub use error::{Error, Result};

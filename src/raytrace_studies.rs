@@ -86,6 +86,36 @@ pub fn add_studies_sized(
     report.tables.push(t_precision_table());
     report.tables.push(intersector_speed(200_000));
     report.stability = stability_cases(size, &leaks.1);
+    report.stability.push(agreement_case(scene));
+}
+
+/// The stiff case "primary visibility agrees with chapter 2's raster
+/// image on this scene": only edge pixels may differ.
+pub fn agreement_case(scene: &Scene) -> StabilityCase {
+    let geometry = Geometry::new(scene);
+    let measured = crate::visibility_agreement::raster_agreement(scene, &geometry);
+    let (measured, ok) = match measured {
+        Ok(a) => (
+            format!(
+                "{} of {} pixels differ ({:.2}%), {} of them off edges",
+                a.differ,
+                a.pixels,
+                100.0 * a.differ as f64 / a.pixels.max(1) as f64,
+                a.differ_off_edges
+            ),
+            a.differ_off_edges == 0,
+        ),
+        Err(e) => (
+            format!("chapter 2 could not rasterize the scene: {e}"),
+            false,
+        ),
+    };
+    StabilityCase {
+        name: "first hits against chapter 2's raster image (pixel centres)".into(),
+        expected: "the same triangle everywhere but on edges".into(),
+        measured,
+        ok,
+    }
 }
 
 /// A wavy height field over [-1, 1]² facing +z with exactly `n` triangles

@@ -339,3 +339,45 @@ fn snapshot_of_the_tetrahedron_views() {
     }
     insta::assert_snapshot!(text);
 }
+
+#[test]
+fn first_hits_agree_with_chapter_2_except_on_edges() {
+    use raystep::visibility_agreement::raster_agreement;
+    for name in [
+        "tetrahedron",
+        "bunny",
+        "cornell-box",
+        "interpenetrating",
+        "railroad",
+    ] {
+        let path =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.toml"));
+        let s = raystep::scene::Scene::load(&path)
+            .unwrap()
+            .with_resolution(160, 120)
+            .unwrap();
+        let geometry = raystep::raytrace::Geometry::new(&s);
+        let a = raster_agreement(&s, &geometry).unwrap();
+        assert_eq!(a.pixels, 160 * 120);
+        assert_eq!(a.differ_off_edges, 0, "{name}: {a:?}");
+        assert!(
+            a.differ * 50 < a.pixels,
+            "{name}: more than 2% differ: {a:?}"
+        );
+    }
+    // The check can fail: geometry shifted by about 6 pixels disagrees
+    // with the rasterizer across whole faces, not only on edges.
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell-box.toml");
+    let s = raystep::scene::Scene::load(&path)
+        .unwrap()
+        .with_resolution(160, 120)
+        .unwrap();
+    let mut moved = s.clone();
+    for m in &mut moved.meshes {
+        m.transform(&glam::Mat4::from_translation(glam::Vec3::new(
+            0.15, 0.0, 0.0,
+        )));
+    }
+    let a = raster_agreement(&s, &raystep::raytrace::Geometry::new(&moved)).unwrap();
+    assert!(a.differ_off_edges > 0, "{a:?}");
+}
