@@ -46,6 +46,18 @@ pub struct View {
     pub about: &'static str,
 }
 
+/// View `index` of a render's films, or a black film of the camera's size
+/// before the first pass; any NaN or Inf scrubbed out. The common body of
+/// [`Render::view`] for stages that keep one film per view.
+pub fn view_of(films: &[Film], index: usize, camera: &crate::camera::Camera) -> Film {
+    let mut film = films
+        .get(index)
+        .cloned()
+        .unwrap_or_else(|| Film::new(camera.width, camera.height));
+    film.scrub_nonfinite();
+    film
+}
+
 /// A chapter of the lecture, as a renderer stage.
 pub trait Chapter: Sync {
     /// 1 to 6.

@@ -149,14 +149,8 @@ impl Render for RasterRender {
     }
 
     fn view(&self, index: usize) -> Film {
-        let cam = &self.scene.camera;
-        let mut film = self
-            .frame
-            .as_ref()
-            .and_then(|f| f.films.get(index).cloned())
-            .unwrap_or_else(|| Film::new(cam.width, cam.height));
-        film.scrub_nonfinite();
-        film
+        let films = self.frame.as_ref().map_or(&[][..], |f| &f.films[..]);
+        crate::stage::view_of(films, index, &self.scene.camera)
     }
 
     fn report(&self) -> Report {

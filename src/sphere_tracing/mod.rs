@@ -171,14 +171,7 @@ impl Render for SphereTracingRender {
     }
 
     fn view(&self, index: usize) -> Film {
-        let cam = &self.scene.camera;
-        let mut film = self
-            .films
-            .get(index)
-            .cloned()
-            .unwrap_or_else(|| Film::new(cam.width, cam.height));
-        film.scrub_nonfinite();
-        film
+        crate::stage::view_of(&self.films, index, &self.scene.camera)
     }
 
     fn report(&self) -> Report {
