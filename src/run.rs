@@ -198,19 +198,28 @@ pub fn run_headless(
 /// The whole `main` of a chapter binary.
 pub fn chapter_main(chapter: &dyn Chapter) -> ExitCode {
     let cli = ChapterCli::parse();
-    let result = (|| {
-        init_threads(cli.common.threads)?;
-        let scene = cli.common.load_scene()?;
-        let mut stdout = std::io::stdout().lock();
-        run_headless(
-            chapter,
-            scene,
-            &cli.common.settings(),
-            &cli.common.out,
-            cli.common.preview_width,
-            &mut stdout,
-        )
-    })();
+    exit_code(run_with(chapter, &cli.common))
+}
+
+/// Sets the threads, loads the scene the flags name and runs `chapter` on
+/// it headless, printing to stdout. The common part of every chapter's
+/// `main`, including those with flags of their own.
+pub fn run_with(chapter: &dyn Chapter, common: &CommonArgs) -> Result<RunSummary> {
+    init_threads(common.threads)?;
+    let scene = common.load_scene()?;
+    let mut stdout = std::io::stdout().lock();
+    run_headless(
+        chapter,
+        scene,
+        &common.settings(),
+        &common.out,
+        common.preview_width,
+        &mut stdout,
+    )
+}
+
+/// Success, or the error on stderr and exit status 2.
+pub fn exit_code<T>(result: Result<T>) -> ExitCode {
     match result {
         Ok(_) => ExitCode::SUCCESS,
         Err(e) => {

@@ -12,7 +12,7 @@ use std::process::ExitCode;
 use clap::Parser;
 use raystep::raster::bench::run_bench;
 use raystep::raster::Rasterization;
-use raystep::run::{init_threads, run_headless, CommonArgs};
+use raystep::run::{exit_code, run_with, CommonArgs};
 use raystep::scene::Scene;
 
 #[derive(Parser)]
@@ -34,34 +34,13 @@ struct Cli {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let result = (|| {
-        if cli.bench {
-            let bunny = Scene::load(&PathBuf::from("scenes/bunny.toml")).ok();
-            let table = run_bench(bunny, &[1, 2], cli.bench_triangles)?;
-            print!("{}", table.to_text());
-            return Ok(());
-        }
-        init_threads(cli.common.threads)?;
-        let scene = cli.common.load_scene()?;
-        let chapter = Rasterization {
-            cull_back_faces: cli.cull_back_faces,
-        };
-        let mut stdout = std::io::stdout().lock();
-        run_headless(
-            &chapter,
-            scene,
-            &cli.common.settings(),
-            &cli.common.out,
-            cli.common.preview_width,
-            &mut stdout,
-        )
-        .map(|_| ())
-    })();
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e}");
-            ExitCode::from(2)
-        }
+    if cli.bench {
+        let bunny = Scene::load(&PathBuf::from("scenes/bunny.toml")).ok();
+        let table = run_bench(bunny, &[1, 2], cli.bench_triangles);
+        return exit_code(table.map(|t| print!("{}", t.to_text())));
     }
+    let chapter = Rasterization {
+        cull_back_faces: cli.cull_back_faces,
+    };
+    exit_code(run_with(&chapter, &cli.common))
 }

@@ -8,7 +8,7 @@
 use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
-use raystep::run::{init_threads, run_headless, CommonArgs};
+use raystep::run::{exit_code, run_with, CommonArgs};
 use raystep::sdf::march::March;
 use raystep::sdf::normal::NormalScheme;
 use raystep::sphere_tracing::render::Method;
@@ -85,25 +85,6 @@ fn main() -> ExitCode {
             NormalsArg::Tetrahedron => NormalScheme::Tetrahedron,
         },
     };
-    let result = (|| {
-        stage.check()?;
-        init_threads(cli.common.threads)?;
-        let scene = cli.common.load_scene()?;
-        let mut stdout = std::io::stdout().lock();
-        run_headless(
-            &stage,
-            scene,
-            &cli.common.settings(),
-            &cli.common.out,
-            cli.common.preview_width,
-            &mut stdout,
-        )
-    })();
-    match result {
-        Ok(_) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e}");
-            ExitCode::from(2)
-        }
-    }
+    // Bad march settings are refused before anything is loaded.
+    exit_code(stage.check().and_then(|_| run_with(&stage, &cli.common)))
 }

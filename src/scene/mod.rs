@@ -279,27 +279,8 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
     for (i, o) in file.objects.iter().enumerate() {
         let at = format!("objects[{i}]");
         let mut mesh = build_object(o, &at, source, read)?;
-        let material = match &o.material {
-            None => Material::default_grey(),
-            Some(wanted) => declared
-                .iter()
-                .find(|m| &m.name == wanted)
-                .cloned()
-                .ok_or_else(|| {
-                    let known: Vec<&str> = declared.iter().map(|m| m.name.as_str()).collect();
-                    scene_err(
-                        format!("{at}.material"),
-                        format!("no material named `{wanted}`; declared: {known:?}"),
-                    )
-                })?,
-        };
-        mesh.material = match materials.iter().position(|m| m.name == material.name) {
-            Some(k) => k,
-            None => {
-                materials.push(material);
-                materials.len() - 1
-            }
-        };
+        mesh.material = use_material(&declared, &mut materials, o.material.as_deref(), &at)
+            .map_err(|(a, m)| scene_err(a, m))?;
         if let Some(n) = &o.name {
             mesh.name = n.clone();
         }
@@ -375,19 +356,9 @@ fn build_sdfs(
                 ))
             }
         };
-        let material = match t.get("material") {
-            None => Material::default_grey(),
-            Some(toml::Value::String(wanted)) => declared
-                .iter()
-                .find(|m| &m.name == wanted)
-                .cloned()
-                .ok_or_else(|| {
-                    let known: Vec<&str> = declared.iter().map(|m| m.name.as_str()).collect();
-                    scene_err(
-                        format!("{at}.material"),
-                        format!("no material named `{wanted}`; declared: {known:?}"),
-                    )
-                })?,
+        let wanted = match t.get("material") {
+            None => None,
+            Some(toml::Value::String(wanted)) => Some(wanted.as_str()),
             Some(v) => {
                 return Err(scene_err(
                     format!("{at}.material"),
@@ -395,13 +366,8 @@ fn build_sdfs(
                 ))
             }
         };
-        let index = match materials.iter().position(|m| m.name == material.name) {
-            Some(k) => k,
-            None => {
-                materials.push(material);
-                materials.len() - 1
-            }
-        };
+        let index =
+            use_material(declared, materials, wanted, &at).map_err(|(a, m)| scene_err(a, m))?;
         out.push(SdfObject {
             name,
             sdf,
@@ -409,6 +375,38 @@ fn build_sdfs(
         });
     }
     Ok(out)
+}
+
+/// The index in `used` of the material an object names (the default grey
+/// when it names none), adding it to `used` the first time it is used; or
+/// the key and message of the error when no material has that name.
+fn use_material(
+    declared: &[Material],
+    used: &mut Vec<Material>,
+    wanted: Option<&str>,
+    at: &str,
+) -> std::result::Result<usize, (String, String)> {
+    let material = match wanted {
+        None => Material::default_grey(),
+        Some(wanted) => declared
+            .iter()
+            .find(|m| m.name == wanted)
+            .cloned()
+            .ok_or_else(|| {
+                let known: Vec<&str> = declared.iter().map(|m| m.name.as_str()).collect();
+                (
+                    format!("{at}.material"),
+                    format!("no material named `{wanted}`; declared: {known:?}"),
+                )
+            })?,
+    };
+    Ok(match used.iter().position(|m| m.name == material.name) {
+        Some(k) => k,
+        None => {
+            used.push(material);
+            used.len() - 1
+        }
+    })
 }
 
 fn check_finite(values: &[f64]) -> std::result::Result<(), &'static str> {
