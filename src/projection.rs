@@ -622,12 +622,7 @@ pub fn precision_study(cam: &Camera) -> ErrorTime {
 pub fn stability_cases(cam: &Camera) -> Vec<StabilityCase> {
     let mut cases = Vec::new();
     let mut case = |name: &str, expected: &str, measured: String, ok: bool| {
-        cases.push(StabilityCase {
-            name: name.into(),
-            expected: expected.into(),
-            measured,
-            ok,
-        })
+        cases.push(StabilityCase::new(name, expected, measured, ok))
     };
     let shown = |r: Option<Vec2>| r.map(fmt2).unwrap_or_else(|| "culled".into());
 

@@ -110,12 +110,12 @@ pub fn agreement_case(scene: &Scene) -> StabilityCase {
             false,
         ),
     };
-    StabilityCase {
-        name: "first hits against chapter 2's raster image (pixel centres)".into(),
-        expected: "the same triangle everywhere but on edges".into(),
+    StabilityCase::new(
+        "first hits against chapter 2's raster image (pixel centres)",
+        "the same triangle everywhere but on edges",
         measured,
         ok,
-    }
+    )
 }
 
 /// A wavy height field over [-1, 1]² facing +z with exactly `n` triangles
@@ -592,12 +592,7 @@ pub fn self_intersections(distance: f32, rays: u64, fixed_epsilon: f32) -> (u64,
 pub fn stability_cases(size: &StudySize, leaks: &[LeakCount]) -> Vec<StabilityCase> {
     let mut cases = Vec::new();
     let mut case = |name: &str, expected: &str, measured: String, ok: bool| {
-        cases.push(StabilityCase {
-            name: name.into(),
-            expected: expected.into(),
-            measured,
-            ok,
-        })
+        cases.push(StabilityCase::new(name, expected, measured, ok))
     };
     let all = |ray: &Ray, tri: [Vec3; 3]| {
         Intersector::ALL.map(|x| x.intersect(ray, tri, 0.0, f32::INFINITY))

@@ -132,6 +132,18 @@ pub struct StabilityCase {
     pub ok: bool,
 }
 
+impl StabilityCase {
+    /// A case with what should happen, what did, and whether they match.
+    pub fn new(name: &str, expected: &str, measured: String, ok: bool) -> StabilityCase {
+        StabilityCase {
+            name: name.into(),
+            expected: expected.into(),
+            measured,
+            ok,
+        }
+    }
+}
+
 /// A titled table of text cells.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Table {

@@ -183,12 +183,7 @@ fn histogram(counts: &[u32]) -> [usize; 3] {
 pub fn stability_cases() -> Vec<StabilityCase> {
     let mut cases = Vec::new();
     let mut case = |name: &str, expected: &str, measured: String, ok: bool| {
-        cases.push(StabilityCase {
-            name: name.into(),
-            expected: expected.into(),
-            measured,
-            ok,
-        })
+        cases.push(StabilityCase::new(name, expected, measured, ok))
     };
     let (w, h) = (64, 48);
 

@@ -231,12 +231,7 @@ pub fn camera_inside() -> (f64, usize, usize) {
 pub fn stability_cases() -> Vec<StabilityCase> {
     let mut cases = Vec::new();
     let mut case = |name: &str, expected: &str, measured: String, ok: bool| {
-        cases.push(StabilityCase {
-            name: name.into(),
-            expected: expected.into(),
-            measured,
-            ok,
-        })
+        cases.push(StabilityCase::new(name, expected, measured, ok))
     };
 
     let (share, steps) = grazing();
