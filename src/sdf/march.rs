@@ -94,21 +94,30 @@ impl Trace {
     }
 }
 
+impl Trace {
+    /// The start of every march: one evaluation at the ray's origin says
+    /// whether it starts inside (f < 0). Returns the trace so far, the sign
+    /// s that makes s·f positive on the ray's side, and f at the origin.
+    fn start(f: &dyn Fn(Vec3) -> f32, ray: &Ray) -> (Trace, f32, f32) {
+        let f0 = f(ray.origin);
+        let trace = Trace {
+            ending: Ending::Budget,
+            t: 0.0,
+            steps: 1,
+            inside: f0 < 0.0,
+            oversteps: 0,
+            lipschitz_violations: 0,
+            residual: f0,
+        };
+        (trace, if f0 < 0.0 { -1.0 } else { 1.0 }, f0)
+    }
+}
+
 /// Sphere tracing: step by the distance bound until it is below ε.
 // ANCHOR: sphere_trace
 pub fn sphere_trace(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March) -> Trace {
     // One evaluation at the origin tells inside from outside.
-    let f0 = f(ray.origin);
-    let s = if f0 < 0.0 { -1.0 } else { 1.0 };
-    let mut trace = Trace {
-        ending: Ending::Budget,
-        t: 0.0,
-        steps: 1,
-        inside: f0 < 0.0,
-        oversteps: 0,
-        lipschitz_violations: 0,
-        residual: f0,
-    };
+    let (mut trace, s, f0) = Trace::start(f, ray);
     let mut d = s * f0; // distance bound, positive on the ray's side
     loop {
         let p = ray.at(trace.t);
@@ -150,17 +159,7 @@ pub fn sphere_trace(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March) -> Trace {
 /// ω = 1.
 // ANCHOR: over_relaxed
 pub fn over_relaxed(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March, omega: f32) -> Trace {
-    let f0 = f(ray.origin);
-    let s = if f0 < 0.0 { -1.0 } else { 1.0 };
-    let mut trace = Trace {
-        ending: Ending::Budget,
-        t: 0.0,
-        steps: 1,
-        inside: f0 < 0.0,
-        oversteps: 0,
-        lipschitz_violations: 0,
-        residual: f0,
-    };
+    let (mut trace, s, f0) = Trace::start(f, ray);
     let mut omega = omega.max(1.0);
     let (mut d, mut t_prev, mut d_prev) = (s * f0, 0.0f32, 0.0f32);
     loop {
@@ -205,17 +204,7 @@ pub fn over_relaxed(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March, omega: f32) -
 /// between the last two samples by linear interpolation.
 // ANCHOR: fixed_step
 pub fn fixed_step(f: &dyn Fn(Vec3) -> f32, ray: &Ray, delta: f32, m: &March) -> Trace {
-    let f0 = f(ray.origin);
-    let s = if f0 < 0.0 { -1.0 } else { 1.0 };
-    let mut trace = Trace {
-        ending: Ending::Budget,
-        t: 0.0,
-        steps: 1,
-        inside: f0 < 0.0,
-        oversteps: 0,
-        lipschitz_violations: 0,
-        residual: f0,
-    };
+    let (mut trace, s, f0) = Trace::start(f, ray);
     let mut d = s * f0;
     while trace.steps < m.max_steps {
         let t_next = trace.t + delta;
