@@ -45,6 +45,8 @@ pub mod error;
 pub mod exercises;
 pub mod film;
 pub mod grading;
+pub mod light;
+pub mod material;
 pub mod mesh;
 pub mod mesh_check;
 pub mod preview;
@@ -66,5 +68,7 @@ pub mod triangle;
 #[cfg(feature = "tui")]
 pub mod tui;
 pub mod visibility_agreement;
+pub mod warp;
+pub mod world;
 
 pub use error::{Error, Result};

@@ -75,6 +75,11 @@ pub struct MaterialSection {
     /// surface with this material an area light.
     #[serde(default)]
     pub emission: [f64; 3],
+    /// Whether an emissive surface emits from both faces; by default only
+    /// the front face (the side its triangles wind counter-clockwise
+    /// towards, or an SDF's outside) emits.
+    #[serde(default)]
+    pub two_sided: bool,
 }
 
 fn default_reflectance() -> [f64; 3] {
@@ -88,6 +93,8 @@ pub enum MaterialKind {
     /// Lambertian: BRDF = ρ/π.
     #[default]
     Diffuse,
+    /// Ideal mirror reflecting the fraction `reflectance`.
+    Mirror,
 }
 
 /// One `[[objects]]` entry: exactly one of `mesh` or `shape`, then an

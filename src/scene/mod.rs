@@ -29,6 +29,8 @@ pub struct Material {
     pub reflectance: Vec3,
     /// Emitted radiance Le (linear RGB); zero for non-emitters.
     pub emission: Vec3,
+    /// Whether emission leaves both faces (else the front face only).
+    pub two_sided: bool,
 }
 
 impl Material {
@@ -39,6 +41,7 @@ impl Material {
             kind: MaterialKind::Diffuse,
             reflectance: Vec3::splat(0.8),
             emission: Vec3::ZERO,
+            two_sided: false,
         }
     }
 
@@ -271,6 +274,7 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
             kind: m.kind,
             reflectance: DVec3::from(m.reflectance).as_vec3(),
             emission: DVec3::from(m.emission).as_vec3(),
+            two_sided: m.two_sided,
         });
     }
 
