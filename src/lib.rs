@@ -49,6 +49,7 @@ pub mod light;
 pub mod material;
 pub mod mesh;
 pub mod mesh_check;
+pub mod mis;
 pub mod preview;
 pub mod projection;
 pub mod raster;
