@@ -24,7 +24,7 @@ pub fn power_heuristic(f: f32, g: f32) -> f32 {
     if f.is_infinite() {
         return 1.0;
     }
-    if !(f > 0.0) {
+    if f.is_nan() || f <= 0.0 {
         return 0.0;
     }
     // f² / (f² + g²) = 1 / (1 + (g/f)²), which cannot overflow.
