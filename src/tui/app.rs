@@ -6,6 +6,7 @@
 //! `save_requested` is set, read the grader's images when
 //! `grade_requested` is set).
 
+use std::borrow::Cow;
 use std::path::PathBuf;
 
 use glam::Vec3;
@@ -287,18 +288,25 @@ impl App {
     /// What the preview shows, before exposure: the selected view, or for
     /// the main view the selected bounces, compared as selected.
     pub fn displayed(&self) -> Option<Film> {
+        self.displayed_ref().map(Cow::into_owned)
+    }
+
+    /// [`App::displayed`], borrowed where no new film has to be computed
+    /// (the common case: a view or the reference as it is), so a redraw
+    /// does not copy a whole film.
+    pub fn displayed_ref(&self) -> Option<Cow<'_, Film>> {
         if let Some(g) = &self.grading {
             return Some(match self.compare {
-                Compare::Render => g.student.clone(),
-                Compare::Reference => g.reference.clone(),
-                Compare::Difference => g.student.difference(&g.reference),
+                Compare::Render => Cow::Borrowed(&g.student),
+                Compare::Reference => Cow::Borrowed(&g.reference),
+                Compare::Difference => Cow::Owned(g.student.difference(&g.reference)),
             });
         }
         let snap = self.snapshot.as_ref()?;
-        let mut film = snap.views.get(self.view)?.clone();
+        let mut film = Cow::Borrowed(snap.views.get(self.view)?);
         if self.view == 0 && self.shows_bounces() {
             if let (Some(k), Some(layers)) = (self.bounce, &snap.layers) {
-                film = combine_layers(layers, k, self.bounce_mode, &film);
+                film = Cow::Owned(combine_layers(layers, k, self.bounce_mode, &film));
             }
         }
         let reference = snap
@@ -306,8 +314,10 @@ impl App {
             .as_ref()
             .filter(|r| (r.width, r.height) == (film.width, film.height));
         match (self.compare, reference) {
-            (Compare::Reference, Some(r)) if self.view == 0 => Some(r.clone()),
-            (Compare::Difference, Some(r)) if self.view == 0 => Some(film.difference(r)),
+            (Compare::Reference, Some(r)) if self.view == 0 => Some(Cow::Borrowed(r)),
+            (Compare::Difference, Some(r)) if self.view == 0 => {
+                Some(Cow::Owned(film.difference(r)))
+            }
             _ => Some(film),
         }
     }

@@ -23,7 +23,9 @@ use ratatui::Frame;
 
 use super::app::{expose, App, Focus};
 use super::keys::KEYS;
-use super::picture::Picture;
+use super::picture::{fit, Picture};
+use crate::film::Film;
+use crate::preview::downsample;
 use crate::report::{format_number, format_seconds};
 
 /// Width of the left column, in cells.
@@ -216,15 +218,8 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
     };
     if app.grading.is_some() {
         // The grader's images need no render: shown whatever the selection.
-        if let Some(film) = app.displayed() {
-            let film = expose(&film, app.exposure);
-            frame.render_widget(
-                Picture {
-                    film: &film,
-                    color: app.color,
-                },
-                inner,
-            );
+        if let Some(film) = app.displayed_ref() {
+            draw_film(app, frame, &film, inner);
         }
     } else if let Some(why) = app.problem() {
         let scene = app.current_scene().map(|s| s.source.as_str()).unwrap_or("");
@@ -234,18 +229,33 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
         );
     } else if let Some(e) = &app.failure {
         frame.render_widget(note(format!("render failed: {e}"), Color::Red), inner);
-    } else if let Some(film) = app.displayed() {
-        let film = expose(&film, app.exposure);
-        frame.render_widget(
-            Picture {
-                film: &film,
-                color: app.color,
-            },
-            inner,
-        );
+    } else if let Some(film) = app.displayed_ref() {
+        draw_film(app, frame, &film, inner);
     } else {
         frame.render_widget(note("rendering…".into(), Color::Gray), inner);
     }
+}
+
+/// Draws `film` with the exposure into `area`: box-filtered to the cells
+/// first and exposed after, so a redraw touches the full-size film once
+/// and allocates only the small one. (Exposure is a power of two, so for
+/// ordinary values the order changes no bit.)
+fn draw_film(app: &App, frame: &mut Frame, film: &Film, area: Rect) {
+    let r = fit(area, film.width, film.height);
+    if r.width == 0 {
+        return;
+    }
+    let small = expose(
+        &downsample(film, r.width as u32, r.height as u32 * 2),
+        app.exposure,
+    );
+    frame.render_widget(
+        Picture {
+            film: &small,
+            color: app.color,
+        },
+        r,
+    );
 }
 
 /// A rate in the status line: 1234567 → "1.23M".
