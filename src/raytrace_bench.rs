@@ -64,7 +64,7 @@ fn random_rays(mesh: &Mesh, n: u64) -> Vec<Ray> {
         .collect()
 }
 
-/// Rounds of [`throughput`]: each query variant is timed once per round,
+/// Rounds of the throughput measurement: each query variant is timed once per round,
 /// in turn, and its best round counts.
 pub const ROUNDS: usize = 5;
 
