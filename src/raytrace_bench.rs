@@ -2,8 +2,8 @@
 //! throughput (Mrays/s) for coherent (primary) and incoherent (random)
 //! rays, closest hit and occlusion, on 1 and 2 threads, for raystep's stage
 //! and for obvhs alone. It prints a table; nothing here is a test.
-//! `ch3 --bench bunny` (or `wavy`, `100000`, ...) keeps only the matching
-//! meshes.
+//! `ch3 --bench bunny` (or `wavy`, or a triangle count such as `100000`)
+//! keeps only the matching meshes.
 
 use std::time::Instant;
 
@@ -95,7 +95,8 @@ fn throughput(rays: &[Ray], queries: &[Query]) -> Vec<(f64, usize)> {
 }
 
 /// Runs the benchmark and returns its table; `only` keeps the meshes whose
-/// name contains it (`ch3 --bench bunny`).
+/// name contains it or whose triangle count it is (`ch3 --bench bunny`,
+/// `ch3 --bench 100000`).
 pub fn benchmark(only: Option<&str>) -> Table {
     let mut t = Table::new(
         &format!(
@@ -121,8 +122,9 @@ pub fn benchmark(only: Option<&str>) -> Table {
         procedural_mesh(100_000),
         procedural_mesh(1_000_000),
     ];
+    // A filter matches part of a mesh's name, or its exact triangle count.
     let wanted =
-        |m: &Mesh| only.is_none_or(|o| format!("{} {}", m.name, m.triangles.len()).contains(o));
+        |m: &Mesh| only.is_none_or(|o| m.name.contains(o) || m.triangles.len().to_string() == o);
     for mesh in meshes.into_iter().filter(wanted) {
         let tris = Triangles::from_meshes(std::slice::from_ref(&mesh));
         let bvh = Bvh::build(&tris.tris).expect("non-empty");
