@@ -26,6 +26,7 @@ use obvhs::BvhBuildParams;
 use crate::mesh::Mesh;
 use crate::ray::Ray;
 use crate::triangle::{Hit, Intersector};
+use crate::watertight_fast::{SoaTriangle, WatertightRay};
 
 /// Every triangle of a list of meshes as three vertex positions, with the
 /// mesh each came from.
@@ -86,9 +87,10 @@ pub const BOX_PADDING: f32 = 1.0 / 1_048_576.0;
 /// A BVH over a triangle list (obvhs' `Bvh2`).
 pub struct Bvh {
     bvh: Bvh2,
-    /// The triangles in the BVH's order: `tris[k]` is triangle
-    /// `original[k]` of the list it was built from.
-    tris: Vec<[Vec3; 3]>,
+    /// The triangles in the BVH's order, stored by coordinate for the
+    /// fast watertight test: `tris[k]` is triangle `original[k]` of the
+    /// list it was built from (zero-area ones collapsed to a point).
+    tris: Vec<SoaTriangle>,
     original: Vec<u32>,
     /// Wall-clock seconds the build took (including our reordering).
     pub build_seconds: f64,
@@ -123,7 +125,10 @@ impl Bvh {
         // obvhs reports hits as positions in `primitive_indices`: store the
         // triangles in that order so the hot loop needs no indirection.
         let original = bvh.primitive_indices.clone();
-        let tris = original.iter().map(|&i| tris[i as usize]).collect();
+        let tris = original
+            .iter()
+            .map(|&i| SoaTriangle::new(tris[i as usize]))
+            .collect();
         Some(Bvh {
             bvh,
             tris,
@@ -148,15 +153,52 @@ impl Bvh {
     }
 
     /// The closest hit in (0, t_max); `Hit::triangle` indexes the list the
-    /// BVH was built from.
+    /// BVH was built from. The watertight test runs in its fast form
+    /// ([`WatertightRay`]: same hits, bit for bit); the other two through
+    /// [`Bvh::closest_with`].
     // ANCHOR: bvh_closest
     pub fn closest(&self, ray: &Ray, t_max: f32, x: Intersector) -> Option<Hit> {
+        if x != Intersector::Watertight {
+            return self.closest_with(ray, t_max, |r, tri, t0, t1| x.intersect(r, tri, t0, t1));
+        }
+        // The ray's permutation and shear, once for all its triangles, and
+        // only if it reaches a triangle at all (most primary rays do not).
+        let mut wr: Option<WatertightRay> = None;
+        let mut best: Option<(Hit, usize)> = None;
+        let mut record = RayHit::none();
+        self.bvh
+            .ray_traverse(Self::oray(ray, t_max), &mut record, |r, k| {
+                let wr = wr.get_or_insert_with(|| WatertightRay::new(ray));
+                // r.tmax shrinks to the closest hit so far.
+                match wr.intersect(&self.tris[k], 0.0, r.tmax) {
+                    Some(hit) => {
+                        best = Some((hit, k));
+                        hit.t
+                    }
+                    None => f32::INFINITY,
+                }
+            });
+        best.map(|(hit, k)| Hit {
+            triangle: self.original[k],
+            ..hit
+        })
+    }
+    // ANCHOR_END: bvh_closest
+
+    /// The closest hit in (0, t_max) with any triangle test `test(ray,
+    /// [p0, p1, p2], t_min, t_max)`, e.g. the readable
+    /// [`intersect_watertight`](crate::triangle::intersect_watertight).
+    pub fn closest_with(
+        &self,
+        ray: &Ray,
+        t_max: f32,
+        test: impl Fn(&Ray, [Vec3; 3], f32, f32) -> Option<Hit>,
+    ) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut record = RayHit::none();
         self.bvh
             .ray_traverse(Self::oray(ray, t_max), &mut record, |r, k| {
-                // r.tmax shrinks to the closest hit so far.
-                match x.intersect(ray, self.tris[k], 0.0, r.tmax) {
+                match test(ray, self.tris[k].vertices(), 0.0, r.tmax) {
                     Some(hit) => {
                         best = Some(Hit {
                             triangle: self.original[k],
@@ -169,12 +211,31 @@ impl Bvh {
             });
         best
     }
-    // ANCHOR_END: bvh_closest
 
     /// Whether anything is hit in (0, t_max): stops at the first hit found.
     pub fn occluded(&self, ray: &Ray, t_max: f32, x: Intersector) -> bool {
+        if x != Intersector::Watertight {
+            return self.occluded_with(ray, t_max, |r, tri, t0, t1| x.intersect(r, tri, t0, t1));
+        }
+        let mut wr: Option<WatertightRay> = None;
         !self.bvh.ray_traverse_miss(Self::oray(ray, t_max), |r, k| {
-            match x.intersect(ray, self.tris[k], 0.0, r.tmax) {
+            let wr = wr.get_or_insert_with(|| WatertightRay::new(ray));
+            match wr.intersect(&self.tris[k], 0.0, r.tmax) {
+                Some(hit) => hit.t,
+                None => f32::INFINITY,
+            }
+        })
+    }
+
+    /// [`Bvh::occluded`] with any triangle test, as in [`Bvh::closest_with`].
+    pub fn occluded_with(
+        &self,
+        ray: &Ray,
+        t_max: f32,
+        test: impl Fn(&Ray, [Vec3; 3], f32, f32) -> Option<Hit>,
+    ) -> bool {
+        !self.bvh.ray_traverse_miss(Self::oray(ray, t_max), |r, k| {
+            match test(ray, self.tris[k].vertices(), 0.0, r.tmax) {
                 Some(hit) => hit.t,
                 None => f32::INFINITY,
             }

@@ -144,6 +144,53 @@ pub fn write_failure_images(ex: &Exercise, check: &Check, dir: &Path) -> Result<
     Ok(files)
 }
 
+/// A student's image and the reference from a failed image check, read back
+/// from the files [`write_failure_images`] wrote (the TUI's `g` shows them).
+#[derive(Clone, Debug)]
+pub struct FailureImages {
+    /// The common stem, `chN-name` (the exercise).
+    pub stem: String,
+    /// `<stem>-student.png`.
+    pub student: Film,
+    /// `<stem>-reference.png`.
+    pub reference: Film,
+}
+
+/// The newest pair of failure images in `dir` (by the student image's
+/// modification time; the stem decides ties), or `None` when there is none
+/// or `dir` does not exist.
+pub fn latest_failure_images(dir: &Path) -> Result<Option<FailureImages>> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Ok(None);
+    };
+    let mut newest: Option<(std::time::SystemTime, String)> = None;
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let Some(stem) = name.strip_suffix("-student.png") else {
+            continue;
+        };
+        if !dir.join(format!("{stem}-reference.png")).is_file() {
+            continue;
+        }
+        let time = entry
+            .metadata()
+            .and_then(|m| m.modified())
+            .unwrap_or(std::time::UNIX_EPOCH);
+        let candidate = (time, stem.to_string());
+        if newest.as_ref().is_none_or(|n| candidate > *n) {
+            newest = Some(candidate);
+        }
+    }
+    let Some((_, stem)) = newest else {
+        return Ok(None);
+    };
+    Ok(Some(FailureImages {
+        student: Film::read_png(&dir.join(format!("{stem}-student.png")))?,
+        reference: Film::read_png(&dir.join(format!("{stem}-reference.png")))?,
+        stem,
+    }))
+}
+
 /// Grade your solutions to the exercises against raystep's reference.
 #[derive(Parser, Debug)]
 #[command(name = "grade")]
@@ -205,6 +252,7 @@ pub fn grade_report(exercises: &[Exercise], who: Solution, out: &Path) -> (Strin
         }
     );
     let mut passed = 0;
+    let mut wrote_images = false;
     for ex in exercises {
         let outcome = run(ex, who);
         let id = format!("{:width$}", ex.id());
@@ -223,6 +271,7 @@ pub fn grade_report(exercises: &[Exercise], who: Solution, out: &Path) -> (Strin
                 );
                 match write_failure_images(ex, c, out) {
                     Ok(files) if !files.is_empty() => {
+                        wrote_images = true;
                         let names: Vec<String> =
                             files.iter().map(|f| f.display().to_string()).collect();
                         s += &format!("  {:width$}        images: {}\n", "", names.join(", "));
@@ -246,5 +295,9 @@ pub fn grade_report(exercises: &[Exercise], who: Solution, out: &Path) -> (Strin
         }
     }
     text += &format!("{passed} of {} passed\n", exercises.len());
+    if wrote_images {
+        text += "to compare the newest images side by side: open the terminal UI \
+                 (`cargo run --release`) and press `g`\n";
+    }
     (text, passed)
 }

@@ -17,7 +17,7 @@
 //! |---|---|---|---|---|
 //! | projection | 1 | [`camera`], [`projection`] | `ch1` | `book/src/ch1-projection.md` |
 //! | rasterization | 2 | [`raster`], [`mesh_check`] | `ch2` | `book/src/ch2-rasterization.md` |
-//! | ray-triangle | 3 | [`ray`], [`triangle`], [`bvh`], [`spawn`], [`raytrace`] | `ch3` | `book/src/ch3-ray-triangle.md` |
+//! | ray-triangle | 3 | [`ray`], [`triangle`], [`bvh`], [`watertight_fast`], [`spawn`], [`raytrace`] | `ch3` | `book/src/ch3-ray-triangle.md` |
 //! | implicit surfaces | 4 | [`sdf`], [`sphere_tracing`] | `ch4` | `book/src/ch4-sphere-tracing.md` |
 //!
 //! Later chapters (rasterization, ray-triangle intersection and a BVH,
@@ -70,6 +70,7 @@ pub mod triangle;
 pub mod tui;
 pub mod visibility_agreement;
 pub mod warp;
+pub mod watertight_fast;
 pub mod world;
 
 pub use error::{Error, Result};

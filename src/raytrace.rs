@@ -278,6 +278,11 @@ impl Render for RayTriangleRender {
         (self.done, self.planned())
     }
 
+    /// Primary rays: pixels × samples done.
+    fn rays(&self) -> u64 {
+        self.stats.rays
+    }
+
     fn view(&self, index: usize) -> Film {
         let films = films_from_sums(&self.scene.camera, &self.sums, self.done);
         let mut film = films

@@ -137,4 +137,9 @@ pub trait Render: Send {
     fn error_series(&self) -> Vec<(f64, f64)> {
         Vec::new()
     }
+    /// Rays traced so far, for the status line; 0 when the stage does not
+    /// count. Stages count cheaply (e.g. per pass: pixels × samples done).
+    fn rays(&self) -> u64 {
+        0
+    }
 }

@@ -146,7 +146,7 @@ pub fn intersect_moller_trumbore(
 
 /// γ(n) = n ε / (1 - n ε), the bound on the relative error of n f32
 /// operations (ε = 2⁻²⁴, half the machine epsilon).
-fn gamma(n: i32) -> f32 {
+pub(crate) fn gamma(n: i32) -> f32 {
     let eps = f32::EPSILON * 0.5;
     (n as f32 * eps) / (1.0 - n as f32 * eps)
 }
@@ -247,7 +247,7 @@ pub fn intersect_watertight(ray: &Ray, tri: [Vec3; 3], t_min: f32, t_max: f32) -
 /// Whether the plane of `tri` lies ahead of the ray's origin (t > t_min),
 /// computed in f64 from the f32 inputs: the tie-breaker of
 /// [`intersect_watertight`]'s conservative t > 0 check.
-fn ahead_in_f64(ray: &Ray, [p0, p1, p2]: [Vec3; 3], t_min: f32) -> bool {
+pub(crate) fn ahead_in_f64(ray: &Ray, [p0, p1, p2]: [Vec3; 3], t_min: f32) -> bool {
     let (p0, p1, p2) = (p0.as_dvec3(), p1.as_dvec3(), p2.as_dvec3());
     let n = (p1 - p0).cross(p2 - p0);
     let t = n.dot(p0 - ray.origin.as_dvec3()) / n.dot(ray.dir.as_dvec3());

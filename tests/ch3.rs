@@ -381,3 +381,66 @@ fn first_hits_agree_with_chapter_2_except_on_edges() {
     let a = raster_agreement(&s, &raystep::raytrace::Geometry::new(&moved)).unwrap();
     assert!(a.differ_off_edges > 0, "{a:?}");
 }
+
+#[test]
+fn fast_watertight_test_gives_the_readable_ones_hits_bit_for_bit() {
+    use raystep::triangle::intersect_watertight;
+    use raystep::watertight_fast::{SoaTriangle, WatertightRay};
+    let mut hits = 0;
+    for i in 0..50_000u64 {
+        let r = |d| random(77, i, 0, d);
+        // Ordinary, far-away (1e5), tiny (1e-6) and zero-area triangles.
+        let (scale, offset) = match i % 4 {
+            0 => (2.0, Vec3::ZERO),
+            1 => (2.0, Vec3::splat(1e5)),
+            2 => (1e-6, Vec3::ZERO),
+            _ => (2.0, Vec3::ZERO),
+        };
+        let p = |k: u64| offset + (Vec3::new(r(k), r(k + 1), r(k + 2)) - 0.5) * scale;
+        let mut tri = [p(0), p(3), p(6)];
+        if i % 4 == 3 && i % 8 == 7 {
+            tri[2] = tri[0] * 2.0 - tri[1]; // collinear
+        }
+        let origin = offset + (Vec3::new(r(9), r(10), r(11)) - 0.5) * 6.0;
+        // Aim at a vertex, an edge or the inside.
+        let (a, b) = match i % 3 {
+            0 => (0.0, 0.0),
+            1 => (r(12), 0.0),
+            _ => (r(12) * 0.5, r(13) * 0.5),
+        };
+        let target = tri[0] * (1.0 - a - b) + tri[1] * a + tri[2] * b;
+        let Ok(ray) = Ray::new(origin, target - origin) else {
+            continue;
+        };
+        let t_max = if i % 5 == 0 {
+            r(14) * 4.0
+        } else {
+            f32::INFINITY
+        };
+        let readable = intersect_watertight(&ray, tri, 0.0, t_max);
+        let fast = WatertightRay::new(&ray).intersect(&SoaTriangle::new(tri), 0.0, t_max);
+        let bits = |h: Option<raystep::triangle::Hit>| h.map(|h| [h.t, h.u, h.v].map(f32::to_bits));
+        assert_eq!(bits(readable), bits(fast), "{tri:?} {ray:?}");
+        hits += u32::from(fast.is_some());
+    }
+    assert!(hits > 20_000, "only {hits} hits");
+}
+
+#[test]
+fn bvh_with_the_readable_tests_matches_the_naive_loop() {
+    let mesh = Mesh::icosphere(2);
+    let tris = Triangles::from_meshes(std::slice::from_ref(&mesh)).tris;
+    let bvh = Bvh::build(&tris).unwrap();
+    for ray in rays_at(&tris, 500, 4) {
+        for x in Intersector::ALL {
+            let naive = closest_naive(&tris, &ray, f32::INFINITY, x).map(|h| h.triangle);
+            let fast = bvh.closest(&ray, f32::INFINITY, x).map(|h| h.triangle);
+            assert_eq!(naive, fast, "{x:?} {ray:?}");
+            assert_eq!(
+                occluded_naive(&tris, &ray, 1.0, x),
+                bvh.occluded(&ray, 1.0, x),
+                "{x:?} {ray:?}"
+            );
+        }
+    }
+}

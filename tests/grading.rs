@@ -73,6 +73,29 @@ fn a_wrong_look_at_fails_and_writes_images() {
     for f in files {
         assert!(f.exists(), "{}", f.display());
     }
+    // The TUI's `g` reads the pair back: the student's image and the
+    // reference, as written (8-bit sRGB).
+    let pair = grading::latest_failure_images(&dir).unwrap().unwrap();
+    assert_eq!(pair.stem, "ch1-look_at");
+    assert_eq!(pair.student.to_srgb8(), candidate.to_srgb8());
+    assert_eq!(pair.reference.to_srgb8(), reference.to_srgb8());
+    // The printed report points to it when it has written images.
+    let wrong = grading::Exercise {
+        grade: |_| {
+            ch1::check_look_at(|e, t, u| {
+                raystep::camera::camera_from_world_look_at(e, t, u)
+                    .unwrap()
+                    .inverse()
+            })
+        },
+        ..ex
+    };
+    let (text, passed) = grade_report(&[wrong], Solution::Student, &dir);
+    assert_eq!(passed, 0);
+    assert!(text.contains("images: "), "{text}");
+    assert!(text.contains("press `g`"), "{text}");
+    let (text, _) = grade_report(&[ex], Solution::Reference, &dir);
+    assert!(!text.contains("press `g`"), "{text}");
     // The identity is not a camera either.
     assert!(!ch1::check_look_at(|_, _, _| Mat4::IDENTITY).passed());
 }

@@ -164,6 +164,15 @@ impl Render for FakeRender {
             Vec::new()
         }
     }
+    /// The stage with bounces counts one ray per pixel and pass; the plain
+    /// one does not count (the default, 0).
+    fn rays(&self) -> u64 {
+        if self.bounces {
+            (W * H * self.passes) as u64
+        } else {
+            0
+        }
+    }
 }
 
 fn renamed(name: &str) -> SceneEntry {
@@ -731,4 +740,121 @@ fn the_book_documents_every_key() {
             );
         }
     }
+}
+
+#[test]
+fn the_status_line_shows_rays_per_second_only_when_the_stage_counts() {
+    // 8x4 pixels, one pass, 12 ms: 32 / 0.012 s = 2.67k rays/s.
+    let app = rendered(app());
+    assert_eq!(app.snapshot.as_ref().unwrap().rays, 32);
+    let status = raystep::tui::view::status_line(&app).to_string();
+    assert!(status.contains("│ 2.67k rays/s"), "{status}");
+    let plain = rendered(update(app, Msg::ChapterNumber(2)));
+    assert_eq!(plain.snapshot.as_ref().unwrap().rays, 0);
+    let status = raystep::tui::view::status_line(&plain).to_string();
+    assert!(!status.contains("rays/s"), "{status}");
+    assert_eq!(raystep::tui::view::format_rate(7_250_000.0), "7.25M");
+    assert_eq!(raystep::tui::view::format_rate(123_456.0), "123k");
+    assert_eq!(raystep::tui::view::format_rate(12.0), "12.0");
+}
+
+#[test]
+fn the_real_chapters_3_and_4_count_their_primary_rays() {
+    let scene = Arc::new(Scene::builtin().with_resolution(16, 12).unwrap());
+    for n in [3, 4] {
+        let chapter = raystep::chapters::all()
+            .into_iter()
+            .find(|c| c.number() == n)
+            .unwrap();
+        let settings = Settings {
+            spp: 2,
+            ..Settings::default()
+        };
+        let mut render = chapter.start(scene.clone(), &settings).unwrap();
+        assert_eq!(render.rays(), 0, "ch{n} before a pass");
+        render.pass();
+        // Chapter 3: one sample of every pixel per pass; chapter 4: one
+        // ray per pixel in its single pass.
+        assert_eq!(render.rays(), 16 * 12, "ch{n} after one pass");
+    }
+}
+
+/// Two pairs of failure images as the grader writes them, the second newer.
+fn grade_images(dir: &std::path::Path) {
+    std::fs::create_dir_all(dir).unwrap();
+    let old = std::time::SystemTime::now() - Duration::from_secs(60);
+    for (stem, student, when) in [
+        ("ch1-old", Vec3::ONE, old),
+        (
+            "ch1-pinhole",
+            Vec3::new(1.0, 0.0, 0.0),
+            std::time::SystemTime::now(),
+        ),
+    ] {
+        let s = dir.join(format!("{stem}-student.png"));
+        flat(student).write_png(&s).unwrap();
+        flat(Vec3::new(0.0, 0.0, 1.0))
+            .write_png(&dir.join(format!("{stem}-reference.png")))
+            .unwrap();
+        std::fs::File::options()
+            .write(true)
+            .open(&s)
+            .unwrap()
+            .set_modified(when)
+            .unwrap();
+    }
+    // A student image without its reference is not a pair.
+    flat(Vec3::ZERO)
+        .write_png(&dir.join("ch9-lonely-student.png"))
+        .unwrap();
+}
+
+#[test]
+fn g_shows_the_graders_newest_failure_student_against_reference() {
+    use raystep::grading::latest_failure_images;
+    let out = common::temp_dir("tui-grade");
+    let mut app = rendered(app());
+    app.out_dir = out.clone();
+    // No grader output yet: a message saying how to make some.
+    assert!(latest_failure_images(&app.grade_dir()).unwrap().is_none());
+    let app = update(app, Msg::ToggleGrading);
+    assert!(app.grade_requested);
+    let app = update(app, Msg::GradeLoaded(Ok(None)));
+    assert!(!app.grade_requested && app.grading.is_none());
+    assert!(app.message.contains("--bin grade"), "{}", app.message);
+
+    grade_images(&app.grade_dir());
+    let images = latest_failure_images(&app.grade_dir()).unwrap().unwrap();
+    assert_eq!(images.stem, "ch1-pinhole");
+    let mut app = update(app, Msg::GradeLoaded(Ok(Some(images))));
+    assert!(app.message.contains("ch1-pinhole"), "{}", app.message);
+    assert!(app.shows_compare());
+    // r cycles student → reference → difference, with the names to match.
+    let red = Vec3::new(1.0, 0.0, 0.0);
+    let blue = Vec3::new(0.0, 0.0, 1.0);
+    for (name, colour) in [
+        ("student", red),
+        ("reference", blue),
+        ("difference", Vec3::new(1.0, 0.0, 1.0)),
+    ] {
+        assert_eq!(app.compare_name(), name);
+        assert_eq!(pixel(&app), colour, "{name}");
+        let lines: Vec<String> = control_lines(&app).iter().map(|l| l.to_string()).collect();
+        assert!(lines.contains(&format!("compare: {name}")), "{lines:?}");
+        assert!(app.save_stem().ends_with(&format!("ch1-pinhole-{name}")));
+        app = update(app, Msg::CycleCompare);
+    }
+    let screen = draw(&app, 80, 24);
+    assert!(screen.contains("grade · ch1-pinhole · student"), "{screen}");
+    // g again: back to the render.
+    let render = flat(layer_color(0) + layer_color(1) + layer_color(2)).pixels[0];
+    let app = update(app, Msg::ToggleGrading);
+    assert!(app.grading.is_none() && !app.grade_requested);
+    assert_eq!(pixel(&app), render);
+    assert_eq!(
+        msg_for_key(&app, key(KeyCode::Char('g')))
+            .map(|m| format!("{m:?}"))
+            .as_deref(),
+        Some("ToggleGrading")
+    );
 }

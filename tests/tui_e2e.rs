@@ -221,3 +221,58 @@ fn a_panic_restores_the_terminal_before_printing() {
     assert!(screen.contains("a deliberate panic"), "{screen}");
     assert_eq!(tmux.flag("cursor_flag"), "1");
 }
+
+#[test]
+fn an_error_restores_the_terminal_before_printing() {
+    if !tmux_available() {
+        assert!(std::env::var_os("CI").is_none(), "tmux is missing under CI");
+        eprintln!("skipped: tmux is not installed (apt-get install tmux)");
+        return;
+    }
+    let dir = common::temp_dir("tui-e2e-error");
+    let tmux = Tmux {
+        socket: format!("raystep-e2e-error-{}", std::process::id()),
+    };
+    let started = tmux.run(&[
+        "new-session",
+        "-d",
+        "-s",
+        "t",
+        "-x",
+        "110",
+        "-y",
+        "34",
+        "-c",
+        dir.to_str().unwrap(),
+        "env PS1='READY$ ' sh",
+    ]);
+    assert!(started.status.success(), "{started:?}");
+    tmux.wait("the shell", 10, |_, s| s.contains("READY$"));
+    // The event loop returns an error after its first frame, while the UI
+    // owns the terminal (raw mode, alternate screen, hidden cursor).
+    tmux.keys(&format!(
+        "{}=1 {} --scenes {}; echo \"EXIT=$?\"",
+        raystep::tui::TEST_ERROR,
+        env!("CARGO_BIN_EXE_raystep"),
+        dir.display()
+    ));
+    tmux.key("Enter");
+    let screen = tmux.wait("the shell after the error", 30, |t, s| {
+        s.contains("EXIT=2") && t.flag("alternate_on") == "0"
+    });
+    // The message was printed after restoring, so it is on the main
+    // screen, above the exit status, and the UI is gone.
+    let message = screen
+        .lines()
+        .position(|l| l.contains("error: terminal UI:") && l.contains("a deliberate error"));
+    let exit = screen.lines().position(|l| l.contains("EXIT=2"));
+    assert!(message.is_some() && message < exit, "{screen}");
+    assert!(!screen.contains("chapters"), "{screen}");
+    assert_eq!(tmux.flag("cursor_flag"), "1");
+    // Raw mode is off: the shell echoes typed text and runs it on Enter.
+    tmux.keys("echo typed-$((6*7))");
+    tmux.key("Enter");
+    tmux.wait("the shell to run a command", 10, |_, s| {
+        s.contains("typed-42")
+    });
+}

@@ -170,6 +170,11 @@ impl Render for SphereTracingRender {
         (u32::from(!self.films.is_empty()), 1)
     }
 
+    /// One primary ray per traced pixel (the single pass).
+    fn rays(&self) -> u64 {
+        self.pixels.len() as u64
+    }
+
     fn view(&self, index: usize) -> Film {
         crate::stage::view_of(&self.films, index, &self.scene.camera)
     }

@@ -1,10 +1,12 @@
 //! The UI's state, the messages that change it, and [`update`], a pure
 //! function from (state, message) to the next state. Nothing here touches
 //! the terminal, the clock or the disk: the event loop turns keys and
-//! worker reports into messages and carries out the two effects `update`
+//! worker reports into messages and carries out the three effects `update`
 //! asks for (start a render when the generation changes, save when
-//! `save_requested` is set).
+//! `save_requested` is set, read the grader's images when
+//! `grade_requested` is set).
 
+use std::borrow::Cow;
 use std::path::PathBuf;
 
 use glam::Vec3;
@@ -12,6 +14,7 @@ use glam::Vec3;
 use super::scenes::SceneEntry;
 use super::worker::{Job, Progress, Snapshot};
 use crate::film::Film;
+use crate::grading::FailureImages;
 use crate::stage::{Chapter, Settings};
 
 /// The highest bounce count the bounce control steps to.
@@ -53,6 +56,15 @@ impl Compare {
             Compare::Render => "render",
             Compare::Reference => "reference",
             Compare::Difference => "difference",
+        }
+    }
+
+    /// The name while the grader's images are shown: the render is the
+    /// student's image.
+    pub fn grading_name(self) -> &'static str {
+        match self {
+            Compare::Render => "student",
+            other => other.name(),
         }
     }
 }
@@ -101,6 +113,12 @@ pub struct App {
     pub color: bool,
     /// Where `s` saves.
     pub out_dir: PathBuf,
+    /// The grader's newest failure images, shown instead of the render
+    /// while set (`g`).
+    pub grading: Option<FailureImages>,
+    /// Asks the event loop to read the grader's images from
+    /// [`App::grade_dir`].
+    pub grade_requested: bool,
 }
 
 /// Everything that can happen to the UI.
@@ -134,6 +152,11 @@ pub enum Msg {
     CycleCompare,
     /// Next estimator or sampler.
     NextVariant,
+    /// Show the grader's newest failure images (student vs reference), or
+    /// go back to the render.
+    ToggleGrading,
+    /// The grader's images were read: the pair, none, or the error.
+    GradeLoaded(Result<Option<FailureImages>, String>),
     /// Save the current view.
     Save,
     /// The save finished: the files written, or the error.
@@ -172,7 +195,15 @@ impl App {
             save_requested: false,
             color,
             out_dir: PathBuf::from("out"),
+            grading: None,
+            grade_requested: false,
         }
+    }
+
+    /// Where the grader writes its failure images: `grade/` in the save
+    /// folder, as `cargo run --bin grade` does by default (`out/grade`).
+    pub fn grade_dir(&self) -> PathBuf {
+        self.out_dir.join("grade")
     }
 
     /// The selected chapter, if there is any.
@@ -226,11 +257,24 @@ impl App {
             && self.snapshot.as_ref().is_some_and(|s| s.layers.is_some())
     }
 
-    /// Whether the compare control is shown: the render has a reference.
+    /// Whether the compare control is shown: the render has a reference,
+    /// or the grader's images are shown.
     pub fn shows_compare(&self) -> bool {
-        self.snapshot
-            .as_ref()
-            .is_some_and(|s| s.reference.is_some())
+        self.grading.is_some()
+            || self
+                .snapshot
+                .as_ref()
+                .is_some_and(|s| s.reference.is_some())
+    }
+
+    /// The compare selection's name: render, reference, difference, or
+    /// student, reference, difference for the grader's images.
+    pub fn compare_name(&self) -> &'static str {
+        if self.grading.is_some() {
+            self.compare.grading_name()
+        } else {
+            self.compare.name()
+        }
     }
 
     /// The name of the selected view.
@@ -244,11 +288,25 @@ impl App {
     /// What the preview shows, before exposure: the selected view, or for
     /// the main view the selected bounces, compared as selected.
     pub fn displayed(&self) -> Option<Film> {
+        self.displayed_ref().map(Cow::into_owned)
+    }
+
+    /// [`App::displayed`], borrowed where no new film has to be computed
+    /// (the common case: a view or the reference as it is), so a redraw
+    /// does not copy a whole film.
+    pub fn displayed_ref(&self) -> Option<Cow<'_, Film>> {
+        if let Some(g) = &self.grading {
+            return Some(match self.compare {
+                Compare::Render => Cow::Borrowed(&g.student),
+                Compare::Reference => Cow::Borrowed(&g.reference),
+                Compare::Difference => Cow::Owned(g.student.difference(&g.reference)),
+            });
+        }
         let snap = self.snapshot.as_ref()?;
-        let mut film = snap.views.get(self.view)?.clone();
+        let mut film = Cow::Borrowed(snap.views.get(self.view)?);
         if self.view == 0 && self.shows_bounces() {
             if let (Some(k), Some(layers)) = (self.bounce, &snap.layers) {
-                film = combine_layers(layers, k, self.bounce_mode, &film);
+                film = Cow::Owned(combine_layers(layers, k, self.bounce_mode, &film));
             }
         }
         let reference = snap
@@ -256,8 +314,10 @@ impl App {
             .as_ref()
             .filter(|r| (r.width, r.height) == (film.width, film.height));
         match (self.compare, reference) {
-            (Compare::Reference, Some(r)) if self.view == 0 => Some(r.clone()),
-            (Compare::Difference, Some(r)) if self.view == 0 => Some(film.difference(r)),
+            (Compare::Reference, Some(r)) if self.view == 0 => Some(Cow::Borrowed(r)),
+            (Compare::Difference, Some(r)) if self.view == 0 => {
+                Some(Cow::Owned(film.difference(r)))
+            }
             _ => Some(film),
         }
     }
@@ -275,6 +335,9 @@ impl App {
 
     /// The base name of saved files for the current view.
     pub fn save_stem(&self) -> String {
+        if let Some(g) = &self.grading {
+            return format!("tui-grade-{}-{}", g.stem, self.compare_name());
+        }
         let chapter = self.current_chapter().map(|c| c.number()).unwrap_or(0);
         let scene = self
             .current_scene()
@@ -300,6 +363,7 @@ impl App {
     /// Starts over: a new generation, no picture yet.
     fn restart(&mut self) {
         self.generation += 1;
+        self.grading = None;
         self.snapshot = None;
         self.failure = None;
         let (views, variants) = self
@@ -387,7 +451,7 @@ pub fn update(mut app: App, msg: Msg) -> App {
     if app.help
         && !matches!(
             msg,
-            Msg::ToggleHelp | Msg::Quit | Msg::Progress(_) | Msg::Saved(_)
+            Msg::ToggleHelp | Msg::Quit | Msg::Progress(_) | Msg::Saved(_) | Msg::GradeLoaded(_)
         )
     {
         app.help = false;
@@ -460,8 +524,36 @@ pub fn update(mut app: App, msg: Msg) -> App {
                 app.restart();
             }
         }
+        Msg::ToggleGrading => {
+            if app.grading.take().is_some() {
+                app.compare = Compare::Render;
+                app.message = "back to the render".into();
+            } else {
+                app.grade_requested = true;
+            }
+        }
+        Msg::GradeLoaded(result) => {
+            app.grade_requested = false;
+            match result {
+                Ok(Some(images)) => {
+                    app.message = format!(
+                        "grading {}: student vs reference (r: student → reference → difference, g: back)",
+                        images.stem
+                    );
+                    app.grading = Some(images);
+                    app.compare = Compare::Render;
+                }
+                Ok(None) => {
+                    app.message = format!(
+                        "no failed image checks in {}: run `cargo run --release --bin grade` first",
+                        app.grade_dir().display()
+                    )
+                }
+                Err(e) => app.message = format!("cannot read the grader's images: {e}"),
+            }
+        }
         Msg::Save => {
-            if app.snapshot.is_some() {
+            if app.snapshot.is_some() || app.grading.is_some() {
                 app.save_requested = true;
             } else {
                 app.message = "nothing to save yet".into();

@@ -16,6 +16,10 @@ pub const KEYS: &[(&str, &str)] = &[
     ("m", "toggle \"exactly k\" / \"up to k\" bounces"),
     ("r", "render → reference → difference (with a reference)"),
     (
+        "g",
+        "grader's newest failed image: student / reference / diff",
+    ),
+    (
         "e",
         "next estimator or sampler (where a chapter has several)",
     ),
@@ -50,6 +54,7 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         KeyCode::Char('m') => Msg::ToggleBounceMode,
         KeyCode::Char('r') => Msg::CycleCompare,
         KeyCode::Char('e') => Msg::NextVariant,
+        KeyCode::Char('g') => Msg::ToggleGrading,
         KeyCode::Char('s') => Msg::Save,
         KeyCode::Char('?') => Msg::ToggleHelp,
         _ => return None,

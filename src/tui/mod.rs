@@ -57,6 +57,11 @@ pub fn should_open() -> bool {
 /// frame (the end-to-end test checks that the terminal is restored).
 pub const TEST_PANIC: &str = "RAYSTEP_TUI_TEST_PANIC";
 
+/// Set this environment variable to make the UI's event loop fail with an
+/// error after its first frame (the end-to-end test checks that the
+/// terminal is restored before the error is printed).
+pub const TEST_ERROR: &str = "RAYSTEP_TUI_TEST_ERROR";
+
 /// The thread that owns the terminal; panics elsewhere leave it alone.
 static UI_THREAD: OnceLock<ThreadId> = OnceLock::new();
 
@@ -138,6 +143,12 @@ fn event_loop(
             app = update(app, Msg::Saved(result));
             dirty = true;
         }
+        if app.grade_requested {
+            let result =
+                crate::grading::latest_failure_images(&app.grade_dir()).map_err(|e| e.to_string());
+            app = update(app, Msg::GradeLoaded(result));
+            dirty = true;
+        }
         if app.quit {
             return Ok(());
         }
@@ -150,6 +161,11 @@ fn event_loop(
             // UI owns the terminal.
             if std::env::var_os(TEST_PANIC).is_some() {
                 panic!("{TEST_PANIC} is set: a deliberate panic after the first frame");
+            }
+            if std::env::var_os(TEST_ERROR).is_some() {
+                return Err(std::io::Error::other(format!(
+                    "{TEST_ERROR} is set: a deliberate error after the first frame"
+                )));
             }
         }
         // Wait for a key, at most until the next frame is due.

@@ -23,7 +23,9 @@ use ratatui::Frame;
 
 use super::app::{expose, App, Focus};
 use super::keys::KEYS;
-use super::picture::Picture;
+use super::picture::{fit, Picture};
+use crate::film::Film;
+use crate::preview::downsample;
 use crate::report::{format_number, format_seconds};
 
 /// Width of the left column, in cells.
@@ -160,7 +162,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
         lines.push(Line::from(format!("bounces {}", app.bounce_label())));
     }
     if app.shows_compare() {
-        lines.push(Line::from(format!("compare: {}", app.compare.name())));
+        lines.push(Line::from(format!("compare: {}", app.compare_name())));
     }
     if let Some(c) = app.current_chapter() {
         if let Some(v) = c.variants().get(app.variant) {
@@ -201,9 +203,10 @@ fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
 }
 
 fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
-    let title = match app.current_chapter() {
-        Some(c) => format!("ch{} {} · {}", c.number(), c.slug(), app.view_name()),
-        None => "preview".into(),
+    let title = match (&app.grading, app.current_chapter()) {
+        (Some(g), _) => format!("grade · {} · {}", g.stem, app.compare_name()),
+        (None, Some(c)) => format!("ch{} {} · {}", c.number(), c.slug(), app.view_name()),
+        (None, None) => "preview".into(),
     };
     let block = Block::bordered().title(title);
     let inner = block.inner(area);
@@ -213,7 +216,12 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
             .style(fg(app, color))
             .wrap(Wrap { trim: true })
     };
-    if let Some(why) = app.problem() {
+    if app.grading.is_some() {
+        // The grader's images need no render: shown whatever the selection.
+        if let Some(film) = app.displayed_ref() {
+            draw_film(app, frame, &film, inner);
+        }
+    } else if let Some(why) = app.problem() {
         let scene = app.current_scene().map(|s| s.source.as_str()).unwrap_or("");
         frame.render_widget(
             note(format!("cannot render {scene}:\n{why}"), Color::Red),
@@ -221,22 +229,59 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
         );
     } else if let Some(e) = &app.failure {
         frame.render_widget(note(format!("render failed: {e}"), Color::Red), inner);
-    } else if let Some(film) = app.displayed() {
-        let film = expose(&film, app.exposure);
-        frame.render_widget(
-            Picture {
-                film: &film,
-                color: app.color,
-            },
-            inner,
-        );
+    } else if let Some(film) = app.displayed_ref() {
+        draw_film(app, frame, &film, inner);
     } else {
         frame.render_widget(note("rendering…".into(), Color::Gray), inner);
     }
 }
 
+/// Draws `film` with the exposure into `area`: box-filtered to the cells
+/// first and exposed after, so a redraw touches the full-size film once
+/// and allocates only the small one. (Exposure is a power of two, so for
+/// ordinary values the order changes no bit.)
+fn draw_film(app: &App, frame: &mut Frame, film: &Film, area: Rect) {
+    let r = fit(area, film.width, film.height);
+    if r.width == 0 {
+        return;
+    }
+    let small = expose(
+        &downsample(film, r.width as u32, r.height as u32 * 2),
+        app.exposure,
+    );
+    frame.render_widget(
+        Picture {
+            film: &small,
+            color: app.color,
+        },
+        r,
+    );
+}
+
+/// A rate in the status line: 1234567 → "1.23M".
+pub fn format_rate(rate: f64) -> String {
+    let (value, unit) = if rate >= 1e9 {
+        (rate / 1e9, "G")
+    } else if rate >= 1e6 {
+        (rate / 1e6, "M")
+    } else if rate >= 1e3 {
+        (rate / 1e3, "k")
+    } else {
+        (rate, "")
+    };
+    let digits = if value >= 100.0 {
+        0
+    } else if value >= 10.0 {
+        1
+    } else {
+        2
+    };
+    format!("{value:.digits$}{unit}")
+}
+
 /// The status line: chapter, scene, view, resolution, passes, elapsed time,
-/// error against the reference when known.
+/// rays per second when the stage counts rays, error against the reference
+/// when known.
 pub fn status_line(app: &App) -> Line<'static> {
     let mut parts: Vec<String> = Vec::new();
     if let Some(c) = app.current_chapter() {
@@ -246,12 +291,20 @@ pub fn status_line(app: &App) -> Line<'static> {
         parts.push(s.name.clone());
     }
     parts.push(app.view_name().to_string());
-    if let Some(snap) = &app.snapshot {
+    if let Some(g) = &app.grading {
+        let f = &g.student;
+        parts.push(format!("grade {}", g.stem));
+        parts.push(format!("{}x{}", f.width, f.height));
+        parts.push(app.compare_name().to_string());
+    } else if let Some(snap) = &app.snapshot {
         if let Some(f) = snap.views.first() {
             parts.push(format!("{}x{}", f.width, f.height));
         }
         parts.push(format!("pass {}/{}", snap.progress.0, snap.progress.1));
         parts.push(format_seconds(snap.elapsed.as_secs_f64()));
+        if let Some(rate) = snap.rays_per_second() {
+            parts.push(format!("{} rays/s", format_rate(rate)));
+        }
         if let Some(e) = snap.rmse {
             parts.push(format!("rmse {}", format_number(e)));
         }

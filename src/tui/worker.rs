@@ -54,6 +54,8 @@ pub struct Snapshot {
     pub progress: (u32, u32),
     /// Time since the render started.
     pub elapsed: Duration,
+    /// Rays traced so far ([`Render::rays`]; 0 when the stage does not count).
+    pub rays: u64,
     /// Whether the render is complete.
     pub done: bool,
 }
@@ -83,9 +85,19 @@ impl Snapshot {
             rmse,
             views,
             progress: render.progress(),
+            rays: render.rays(),
             elapsed,
             done,
         }
+    }
+}
+
+impl Snapshot {
+    /// Rays per second since the render started, when the stage counts
+    /// rays and some time has passed.
+    pub fn rays_per_second(&self) -> Option<f64> {
+        let secs = self.elapsed.as_secs_f64();
+        (self.rays > 0 && secs > 0.0).then(|| self.rays as f64 / secs)
     }
 }
 
