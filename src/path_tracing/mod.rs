@@ -399,9 +399,8 @@ impl PathTracingRender {
             }
             report.tables.push(t);
         }
-        let mut caught = st.nonfinite;
-        caught += self.view(0).clone().scrub_nonfinite();
-        report.nonfinite_caught = caught;
+        // Dropped contributions, and any non-finite pixel left in the sums.
+        report.nonfinite_caught = st.nonfinite + acc.mean().scrub_nonfinite();
         built_and_left_out(&mut report, scene, self.world.as_ref(), &self.stage);
         report
     }

@@ -50,11 +50,23 @@ pub fn exercises() -> Vec<Exercise> {
             grade: |who| {
                 check_mis_weight(match who {
                     Solution::Student => mis_weight::mis_weight,
-                    Solution::Reference => |f, g| crate::mis::power_heuristic(f as f32, g as f32) as f64,
+                    Solution::Reference => reference_weight,
                 })
             },
         },
     ]
+}
+
+/// [`crate::mis::power_heuristic`] in f64.
+fn reference_weight(f: f64, g: f64) -> f64 {
+    if f.is_infinite() {
+        return 1.0;
+    }
+    if f.is_nan() || f <= 0.0 {
+        return 0.0;
+    }
+    let r = g / f;
+    1.0 / (1.0 + r * r)
 }
 
 fn reference_integral(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64 {
