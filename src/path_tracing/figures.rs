@@ -88,15 +88,16 @@ pub fn series_color(series: &str) -> Vec3 {
 /// whose name starts with `prefix`, on a white background with grey
 /// decade lines; colours from [`series_color`].
 pub fn plot_error_time(et: &ErrorTime, prefix: &str, width: u32, height: u32) -> Film {
+    // The draw helpers keep the brighter of old and new, so draw the
+    // complementary colours on black and invert at the end.
     let mut film = Film::new(width, height);
-    film.pixels.iter_mut().for_each(|p| *p = Vec3::ONE);
     let rows: Vec<_> = et
         .rows
         .iter()
         .filter(|r| r.series.starts_with(prefix) && r.error > 0.0 && r.seconds > 0.0)
         .collect();
     if rows.is_empty() {
-        return film;
+        return invert(film);
     }
     let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     for r in &rows {
@@ -116,7 +117,7 @@ pub fn plot_error_time(et: &ErrorTime, prefix: &str, width: u32, height: u32) ->
                 as f32,
         )
     };
-    let grey = Vec3::splat(0.8);
+    let grey = Vec3::splat(0.2);
     for d in x0 as i32..=x1 as i32 {
         line(
             &mut film,
@@ -136,7 +137,7 @@ pub fn plot_error_time(et: &ErrorTime, prefix: &str, width: u32, height: u32) ->
         );
     }
     for s in et.series().iter().filter(|s| s.starts_with(prefix)) {
-        let c = series_color(s);
+        let c = Vec3::ONE - series_color(s);
         let pts: Vec<Vec2> = rows
             .iter()
             .filter(|r| &r.series == s)
@@ -149,5 +150,12 @@ pub fn plot_error_time(et: &ErrorTime, prefix: &str, width: u32, height: u32) ->
             dot(&mut film, *p, 2.5, c);
         }
     }
+    invert(film)
+}
+
+fn invert(mut film: Film) -> Film {
+    film.pixels
+        .iter_mut()
+        .for_each(|p| *p = (Vec3::ONE - *p).max(Vec3::ZERO));
     film
 }

@@ -34,13 +34,14 @@ impl SamplerKind {
 #[derive(Clone, Debug)]
 pub struct PathSampler {
     kind: SamplerKind,
-    seed: u64,
-    pixel: u64,
     sample: u64,
     dimension: u64,
     /// [`crate::sampling::random`]'s hash of (seed, pixel, sample), which
     /// every dimension shares: computed once, so each number costs one mix.
     prefix: u64,
+    /// The Sobol scramble seed of this pixel (one more mix per group of
+    /// four dimensions).
+    pixel_scramble: u64,
 }
 
 /// The largest sample index the Sobol tables cover.
@@ -55,11 +56,10 @@ impl PathSampler {
         h = mix64(h ^ sample.wrapping_mul(0x2545_f491_4f6c_dd1d));
         PathSampler {
             kind,
-            seed,
-            pixel,
             sample,
             dimension: 0,
             prefix: h,
+            pixel_scramble: mix64(seed ^ mix64(pixel)),
         }
     }
 
@@ -70,7 +70,7 @@ impl PathSampler {
         self.dimension += 1;
         match self.kind {
             SamplerKind::Sobol if self.sample < SOBOL_MAX_SAMPLES => {
-                let scramble = mix64(mix64(self.seed ^ mix64(self.pixel)) ^ (d / 4)) as u32;
+                let scramble = mix64(self.pixel_scramble ^ (d / 4)) as u32;
                 sobol_burley::sample(self.sample as u32, (d % 4) as u32, scramble)
                     .min(1.0 - f32::EPSILON / 2.0)
             }
