@@ -378,8 +378,17 @@ pub fn centre_block(film: &Film, n: u32) -> Film {
     out
 }
 
-/// The stiff cases at report size.
-pub fn stability_cases() -> Vec<StabilityCase> {
+/// The stiff cases; `quick` runs them at the tests' small sizes.
+pub fn stability_cases(quick: bool) -> Vec<StabilityCase> {
+    if quick {
+        return vec![
+            furnace_0999(4, 8).0,
+            tiny_light(4, 32).0,
+            total_internal_reflection(4, 8).0,
+            index_matched_glass(32, 8).0,
+            camera_inside_glass(8, 8).0,
+        ];
+    }
     vec![
         furnace_0999(8, 16).0,
         tiny_light(16, 64).0,
@@ -390,10 +399,18 @@ pub fn stability_cases() -> Vec<StabilityCase> {
 }
 
 /// Adds the studies to a report: error against time, the strategy table
-/// and the stiff cases.
+/// and the stiff cases. Below 16 spp (a quick run, such as the main
+/// program's tour of every chapter) they run small: 2 spp per series and
+/// the tests' sizes; otherwise up to `spp` (at most 64) per series.
 pub fn add_studies(report: &mut Report, settings: &Settings) {
-    let et = error_vs_time(settings.spp.clamp(4, 64).next_power_of_two());
+    let quick = settings.spp < 16;
+    let max_spp = if quick {
+        2
+    } else {
+        settings.spp.min(64).next_power_of_two()
+    };
+    let et = error_vs_time(max_spp);
     report.tables.push(strategy_table(&et));
     report.error_vs_time = Some(et);
-    report.stability = stability_cases();
+    report.stability = stability_cases(quick);
 }
