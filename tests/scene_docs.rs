@@ -86,6 +86,8 @@ fn every_key_of_the_format_has_an_example() {
         "\"rectangle\"",
         "\"box\"",
         "\"diffuse\"",
+        "\"glass\"",
+        "ior",
     ];
     for key in keys {
         let as_key = format!("{key} =");

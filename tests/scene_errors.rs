@@ -202,6 +202,36 @@ fn objects_must_say_what_they_are_and_keys_must_fit_the_shape() {
 }
 
 #[test]
+fn a_glass_index_of_refraction_must_be_sensible_and_only_on_glass() {
+    let glass = |ior: &str| {
+        format!(
+            "[[materials]]\nname = \"g\"\ntype = \"glass\"\nior = {ior}\n[[objects]]\nshape = \"box\"\nmaterial = \"g\"\n"
+        )
+    };
+    for (name, ior) in [("ior-low", "0.5"), ("ior-nan", "nan"), ("ior-huge", "1e9")] {
+        let m = load_error(name, &glass(ior), &[]);
+        assert_mentions(&m, &["scene.toml", "materials[0] (\"g\").ior", "[1, 10]"]);
+    }
+    let m = load_error(
+        "ior-diffuse",
+        "[[materials]]\nname = \"d\"\nior = 1.5\n[[objects]]\nshape = \"box\"\nmaterial = \"d\"\n",
+        &[],
+    );
+    assert_mentions(
+        &m,
+        &["materials[0] (\"d\").ior", "only to type = \"glass\""],
+    );
+    let m = load_error("ior-string", &glass("\"high\""), &[]);
+    assert_mentions(&m, &["scene.toml", "line 4"]);
+    let m = load_error(
+        "glas",
+        "[[materials]]\nname = \"g\"\ntype = \"glas\"\n",
+        &[],
+    );
+    assert_mentions(&m, &["did you mean `glass`?"]);
+}
+
+#[test]
 fn the_binary_exits_nonzero_and_writes_nothing() {
     let dir = common::temp_dir("binary");
     common::write_files(&dir, &[("scene.toml", "[camera]\nfvo = 40\n")]);

@@ -19,6 +19,7 @@
 //!   the surface; the estimator then counts that sample as zero, which is
 //!   unbiased because the pdf accounts for the lost mass.
 
+pub mod dielectric;
 pub mod frame;
 pub mod lambert;
 pub mod mirror;
@@ -53,6 +54,8 @@ pub enum Bsdf {
     Lambertian(lambert::Lambertian),
     /// Ideal specular reflection: a delta lobe around the mirror direction.
     Mirror(mirror::Mirror),
+    /// Smooth glass: Fresnel reflection and Snell refraction, two deltas.
+    Dielectric(dielectric::Dielectric),
 }
 
 impl Bsdf {
@@ -61,6 +64,7 @@ impl Bsdf {
         match m.kind {
             MaterialKind::Diffuse => Bsdf::Lambertian(lambert::Lambertian { rho: m.reflectance }),
             MaterialKind::Mirror => Bsdf::Mirror(mirror::Mirror { r: m.reflectance }),
+            MaterialKind::Glass => Bsdf::Dielectric(dielectric::Dielectric { ior: m.ior }),
         }
     }
 
@@ -68,7 +72,7 @@ impl Bsdf {
     pub fn f(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         match self {
             Bsdf::Lambertian(b) => b.f(wo, wi),
-            Bsdf::Mirror(_) => Vec3::ZERO,
+            Bsdf::Mirror(_) | Bsdf::Dielectric(_) => Vec3::ZERO,
         }
     }
 
@@ -77,23 +81,23 @@ impl Bsdf {
     pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         match self {
             Bsdf::Lambertian(b) => b.pdf(wo, wi),
-            Bsdf::Mirror(_) => 0.0,
+            Bsdf::Mirror(_) | Bsdf::Dielectric(_) => 0.0,
         }
     }
 
     /// Draws ωi given ωo from two uniform numbers `u` (and `u_lobe` to pick
     /// a lobe in BSDFs with several).
     pub fn sample(&self, wo: Vec3, u: Vec2, u_lobe: f32) -> Option<BsdfSample> {
-        let _ = u_lobe;
         match self {
             Bsdf::Lambertian(b) => b.sample(wo, u),
             Bsdf::Mirror(b) => b.sample(wo),
+            Bsdf::Dielectric(b) => b.sample(wo, u_lobe),
         }
     }
 
     /// Whether every lobe is a delta (then light sampling cannot help).
     pub fn is_delta(&self) -> bool {
-        matches!(self, Bsdf::Mirror(_))
+        matches!(self, Bsdf::Mirror(_) | Bsdf::Dielectric(_))
     }
 }
 

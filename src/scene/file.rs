@@ -80,6 +80,10 @@ pub struct MaterialSection {
     /// towards, or an SDF's outside) emits.
     #[serde(default)]
     pub two_sided: bool,
+    /// Index of refraction of a `type = "glass"` material (default 1.5);
+    /// only glass takes it.
+    #[serde(default)]
+    pub ior: Option<f64>,
 }
 
 fn default_reflectance() -> [f64; 3] {
@@ -95,6 +99,9 @@ pub enum MaterialKind {
     Diffuse,
     /// Ideal mirror reflecting the fraction `reflectance`.
     Mirror,
+    /// Smooth glass (chapter 6): Fresnel reflection and refraction with
+    /// index `ior`, no absorption; `reflectance` is not used.
+    Glass,
 }
 
 /// One `[[objects]]` entry: exactly one of `mesh` or `shape`, then an

@@ -31,7 +31,13 @@ pub struct Material {
     pub emission: Vec3,
     /// Whether emission leaves both faces (else the front face only).
     pub two_sided: bool,
+    /// Index of refraction inside a glass material (1.5 unless the file
+    /// says otherwise; unused by other kinds).
+    pub ior: f32,
 }
+
+/// The index of refraction of glass when a scene gives none.
+pub const DEFAULT_IOR: f64 = 1.5;
 
 impl Material {
     /// The material objects get when they name none: grey, diffuse.
@@ -42,6 +48,7 @@ impl Material {
             reflectance: Vec3::splat(0.8),
             emission: Vec3::ZERO,
             two_sided: false,
+            ior: DEFAULT_IOR as f32,
         }
     }
 
@@ -269,12 +276,34 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
             .map_err(|why| {
                 scene_err(format!("{at}.emission"), format!("{:?} {why}", m.emission))
             })?;
+        let ior = match (m.kind, m.ior) {
+            (MaterialKind::Glass, None) => DEFAULT_IOR,
+            (MaterialKind::Glass, Some(ior)) if ior.is_finite() && (1.0..=10.0).contains(&ior) => {
+                ior
+            }
+            (MaterialKind::Glass, Some(ior)) => {
+                return Err(scene_err(
+                    format!("{at}.ior"),
+                    format!(
+                        "{ior} must be a finite index of refraction in [1, 10] (1 is vacuum, 1.5 glass)"
+                    ),
+                ))
+            }
+            (_, Some(_)) => {
+                return Err(scene_err(
+                    format!("{at}.ior"),
+                    "`ior` applies only to type = \"glass\"".into(),
+                ))
+            }
+            (_, None) => DEFAULT_IOR,
+        };
         declared.push(Material {
             name: m.name.clone(),
             kind: m.kind,
             reflectance: DVec3::from(m.reflectance).as_vec3(),
             emission: DVec3::from(m.emission).as_vec3(),
             two_sided: m.two_sided,
+            ior: ior as f32,
         });
     }
 

@@ -1,0 +1,256 @@
+//! Chapter 6's exercises and how each is graded (statistically: the
+//! checks draw random numbers and compare means against known integrals
+//! with z-scores, so a biased solution fails and a correct one passes
+//! with overwhelming probability; the numbers are seeded, so a grade is
+//! repeatable).
+
+pub mod mc_integral;
+pub mod mis_weight;
+pub mod russian_roulette;
+
+use crate::grading::{Check, Exercise, Solution};
+use crate::sampling::random;
+
+type IntegralFn = fn(&dyn Fn(f64) -> f64, f64, f64, &[f64]) -> f64;
+type RouletteFn = fn(f64, f64, f64) -> f64;
+type WeightFn = fn(f64, f64) -> f64;
+
+/// Chapter 6's exercises, in order.
+pub fn exercises() -> Vec<Exercise> {
+    vec![
+        Exercise {
+            chapter: 6,
+            name: "mc_integral",
+            file: "chapters/ch6-global-illumination/exercises/mc_integral.rs",
+            hint: "x = a + u (b - a) has density 1/(b - a): the estimate is (b - a) · mean of f(x)",
+            grade: |who| {
+                check_mc_integral(match who {
+                    Solution::Student => mc_integral::mc_integral,
+                    Solution::Reference => reference_integral,
+                })
+            },
+        },
+        Exercise {
+            chapter: 6,
+            name: "russian_roulette",
+            file: "chapters/ch6-global-illumination/exercises/russian_roulette.rs",
+            hint: "survive when u < q and return value / q; otherwise return 0",
+            grade: |who| {
+                check_russian_roulette(match who {
+                    Solution::Student => russian_roulette::russian_roulette,
+                    Solution::Reference => |v, q, u| if u < q { v / q } else { 0.0 },
+                })
+            },
+        },
+        Exercise {
+            chapter: 6,
+            name: "mis_weight",
+            file: "chapters/ch6-global-illumination/exercises/mis_weight.rs",
+            hint: "f² / (f² + g²); write it as 1 / (1 + (g/f)²) so huge pdfs do not overflow, and 0 when f = 0",
+            grade: |who| {
+                check_mis_weight(match who {
+                    Solution::Student => mis_weight::mis_weight,
+                    Solution::Reference => reference_weight,
+                })
+            },
+        },
+    ]
+}
+
+/// [`crate::mis::power_heuristic`] in f64.
+fn reference_weight(f: f64, g: f64) -> f64 {
+    if f.is_infinite() {
+        return 1.0;
+    }
+    if f.is_nan() || f <= 0.0 {
+        return 0.0;
+    }
+    let r = g / f;
+    1.0 / (1.0 + r * r)
+}
+
+fn reference_integral(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64 {
+    let sum: f64 = u.iter().map(|u| f(a + u * (b - a))).sum();
+    (b - a) * sum / u.len().max(1) as f64
+}
+
+/// Seeded uniform numbers.
+fn uniforms(seed: u64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| {
+            // 48 random bits from two draws, so values are never exactly 1.
+            let hi = random(seed, i as u64, 0, 0) as f64;
+            let lo = random(seed, i as u64, 0, 1) as f64;
+            (hi + lo / (1u64 << 24) as f64).min(1.0 - 1e-15)
+        })
+        .collect()
+}
+
+/// z = |mean - expected| / (s / √n) over repeated estimates.
+fn z_of(estimates: &[f64], expected: f64) -> f64 {
+    let n = estimates.len() as f64;
+    let mean = estimates.iter().sum::<f64>() / n;
+    let var = estimates.iter().map(|e| (e - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    let z = (mean - expected).abs() / (var / n).sqrt().max(1e-12);
+    if z.is_nan() {
+        f64::INFINITY
+    } else {
+        z
+    }
+}
+
+/// Records the worst error over the cases.
+fn worst_of(cases: impl Iterator<Item = (f64, String)>) -> (f64, String) {
+    let mut worst = (0.0f64, String::from("all cases match"));
+    for (err, what) in cases {
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        if err > worst.0 {
+            worst = (err, what);
+        }
+    }
+    worst
+}
+
+/// The estimator on three integrals with known values: 64 independent
+/// estimates of 1024 samples each must average to the value (|z| ≤ 5), and
+/// their spread must be the one of an unbiased uniform estimator (within
+/// a factor 2 of σ/√N), which catches a wrong (b - a) factor that happens
+/// to be right on average nowhere. A constant integrates exactly.
+pub fn check_mc_integral(f: IntegralFn) -> Check {
+    use std::f64::consts::PI;
+    let sin = |x: f64| x.sin();
+    let square = |x: f64| x * x;
+    let inv = |x: f64| 1.0 / x;
+    // (f, a, b, value, σ of one sample of (b - a) f(x))
+    type Case<'a> = (&'a dyn Fn(f64) -> f64, f64, f64, f64, f64, &'a str);
+    let cases: [Case; 3] = [
+        (
+            &sin,
+            0.0,
+            PI,
+            2.0,
+            (PI * PI / 2.0 - 4.0).sqrt(),
+            "∫₀^π sin x dx = 2",
+        ),
+        (
+            &square,
+            0.0,
+            1.0,
+            1.0 / 3.0,
+            (1.0f64 / 5.0 - 1.0 / 9.0).sqrt(),
+            "∫₀¹ x² dx = 1/3",
+        ),
+        (
+            &inv,
+            1.0,
+            3.0,
+            3f64.ln(),
+            (2.0 * (2.0 / 3.0) - 3f64.ln().powi(2)).sqrt(),
+            "∫₁³ dx/x = ln 3",
+        ),
+    ];
+    let n = 1024;
+    let (error, detail) = worst_of(cases.iter().enumerate().map(|(k, (g, a, b, value, sigma, name))| {
+        let estimates: Vec<f64> = (0..64)
+            .map(|r| f(*g, *a, *b, &uniforms(1000 * k as u64 + r, n)))
+            .collect();
+        let z = z_of(&estimates, *value);
+        let mean = estimates.iter().sum::<f64>() / 64.0;
+        let sd = (estimates.iter().map(|e| (e - mean).powi(2)).sum::<f64>() / 63.0).sqrt();
+        let ratio = sd / (sigma / (n as f64).sqrt());
+        // Spread outside [0.5, 2] of the expected counts as failing.
+        let spread_err = if (0.5..=2.0).contains(&ratio) { 0.0 } else { 100.0 };
+        (
+            (z / 5.0).max(spread_err) * 1e-3,
+            format!("{name}: mean of 64 estimates {mean:.5} (z = {z:.1}), spread {ratio:.2}× the expected"),
+        )
+    }));
+    let constant = f(&|_| 2.5, -1.0, 3.0, &[0.1, 0.7]);
+    let (error, detail) = if (constant - 10.0).abs() > 1e-9 {
+        (1.0, format!("∫₋₁³ 2.5 dx = 10, got {constant}"))
+    } else {
+        (error, detail)
+    };
+    Check {
+        error,
+        tolerance: 1e-3,
+        detail,
+        images: None,
+    }
+}
+
+/// Roulette keeps the mean (stratified numbers: the mean is exact) and
+/// actually ends paths: the fraction of zeros is 1 - q.
+pub fn check_russian_roulette(f: RouletteFn) -> Check {
+    let n = 10_000;
+    let (error, detail) = worst_of([(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0)].into_iter().map(
+        |(value, q): (f64, f64)| {
+            let outs: Vec<f64> = (0..n).map(|i| f(value, q, (i as f64 + 0.5) / n as f64)).collect();
+            let mean = outs.iter().sum::<f64>() / n as f64;
+            let killed = outs.iter().filter(|o| **o == 0.0).count() as f64 / n as f64;
+            let err = ((mean - value).abs() / value).max((killed - (1.0 - q)).abs());
+            (
+                err,
+                format!(
+                    "value {value}, q {q}: mean {mean:.4} (want {value}), {:.1}% ended (want {:.1}%)",
+                    100.0 * killed,
+                    100.0 * (1.0 - q)
+                ),
+            )
+        },
+    ));
+    Check {
+        error,
+        tolerance: 2e-3,
+        detail,
+        images: None,
+    }
+}
+
+/// The weight against hand values and extremes, the two weights summing
+/// to one, and an unbiased two-strategy MIS estimate of ∫₀¹ 3x² dx = 1
+/// (uniform sampling, pdf 1, and sampling by 2x, pdf 2x).
+pub fn check_mis_weight(f: WeightFn) -> Check {
+    let cases = [
+        (1.0, 1.0, 0.5),
+        (2.0, 1.0, 0.8),
+        (1.0, 3.0, 0.1),
+        (0.0, 5.0, 0.0),
+        (4.0, 0.0, 1.0),
+        (1e200, 1e199, 1.0 / 1.01),
+        (1e-200, 1e-199, 1.0 / 101.0),
+    ];
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(a, b, want)| {
+        let got = f(a, b);
+        (
+            (got - want).abs(),
+            format!("pdf_f {a:e}, pdf_g {b:e}: got {got}, expected {want}"),
+        )
+    }));
+    // The MIS estimate: one sample from each strategy per estimate.
+    let estimates: Vec<f64> = (0..4000u64)
+        .map(|i| {
+            let integrand = |x: f64| 3.0 * x * x;
+            let x1 = random(77, i, 0, 0) as f64; // uniform, pdf 1
+            let x2 = (random(77, i, 0, 1) as f64).sqrt(); // pdf 2x
+            let e1 = f(1.0, 2.0 * x1) * integrand(x1) / 1.0;
+            let e2 = if x2 > 0.0 {
+                f(2.0 * x2, 1.0) * integrand(x2) / (2.0 * x2)
+            } else {
+                0.0
+            };
+            e1 + e2
+        })
+        .collect();
+    let z = z_of(&estimates, 1.0);
+    if z > 5.0 && error < 1.0 {
+        error = 1.0;
+        detail = format!("the MIS estimate of ∫₀¹ 3x² dx = 1 is biased (z = {z:.1})");
+    }
+    Check {
+        error,
+        tolerance: 1e-6,
+        detail,
+        images: None,
+    }
+}

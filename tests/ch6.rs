@@ -1,0 +1,360 @@
+//! Chapter 6 against known answers: closed and open furnaces (bounce layers
+//! by z-tests with the estimated variance), every estimator and sampler
+//! agreeing, the Cornell box against its stored reference (region z-test),
+//! glass, the stiff cases, NaN/Inf, determinism across threads, the
+//! report's built/left-out lists and the stage boundary the TUI uses.
+
+use std::sync::Arc;
+
+use glam::Vec3;
+use raystep::path_tracing::accumulate::{downsample, Accumulator};
+use raystep::path_tracing::integrator::{Estimator, PathSettings, LAYER_SLOTS, SLOT_BEYOND};
+use raystep::path_tracing::reference::{region_z_test, StoredReference};
+use raystep::path_tracing::sampler::SamplerKind;
+use raystep::path_tracing::studies::{self, centre_block, flat_z, render};
+use raystep::path_tracing::{scenes, DEFAULT};
+use raystep::scene::Scene;
+use raystep::stage::{Chapter, Settings};
+
+const Z: f64 = 4.0;
+
+fn unlimited(estimator: Estimator) -> PathSettings {
+    PathSettings {
+        estimator,
+        max_bounces: None,
+        ..PathSettings::default()
+    }
+}
+
+fn closed_furnace_layers(rho: f64) {
+    let le = 0.5;
+    let scene = scenes::closed_furnace(rho, le, 8);
+    let (acc, _) = render(
+        &scene,
+        &unlimited(Estimator::Mis),
+        SamplerKind::Independent,
+        32,
+        1,
+        true,
+    );
+    assert_eq!(acc.stats.nonfinite, 0);
+    // Layer E: the emitters seen directly, exactly Le in every pixel.
+    let e = acc.layer(0).unwrap();
+    assert!(e
+        .pixels
+        .iter()
+        .all(|p| (*p - Vec3::splat(le as f32)).abs().max_element() < 1e-6));
+    // Layer k: Le·ρ^(k+1).
+    for k in 0..6 {
+        let layer = acc.layer(k + 1).unwrap();
+        let want = le * rho.powi(k as i32 + 1);
+        let (z, mean) = flat_z(&layer, 0, want);
+        assert!(
+            z.abs() < Z,
+            "ρ {rho}, layer {k}: {mean} vs {want} (z = {z:.2})"
+        );
+    }
+    // The unlimited image: Le / (1 - ρ).
+    let (z, mean) = flat_z(&acc.mean(), 1, le / (1.0 - rho));
+    assert!(z.abs() < Z, "ρ {rho}: {mean} (z = {z:.2})");
+    // The layers add up to the image.
+    let sum: Vec3 = (0..LAYER_SLOTS)
+        .map(|s| acc.layer(s).unwrap().pixels[5])
+        .sum();
+    assert!((sum - acc.mean().pixels[5]).abs().max_element() < 1e-4 * sum.max_element());
+}
+
+#[test]
+fn closed_furnace_rho_half_layers_are_le_rho_to_the_k_plus_one() {
+    closed_furnace_layers(0.5);
+}
+
+#[test]
+fn closed_furnace_rho_0_8_layers_are_le_rho_to_the_k_plus_one() {
+    closed_furnace_layers(0.8);
+}
+
+#[test]
+fn a_bounce_limit_leaves_the_beyond_layer_empty_and_cuts_exactly_there() {
+    let scene = scenes::closed_furnace(0.8, 0.5, 4);
+    let path = PathSettings {
+        max_bounces: Some(3),
+        ..PathSettings::default()
+    };
+    let (acc, _) = render(&scene, &path, SamplerKind::Independent, 16, 1, true);
+    for slot in 5..LAYER_SLOTS {
+        assert_eq!(
+            raystep::path_tracing::reference::film_mean(&acc.layer(slot).unwrap()),
+            Vec3::ZERO,
+            "slot {slot}"
+        );
+    }
+    let (z, _) = flat_z(&acc.layer(4).unwrap(), 0, 0.5 * 0.8f64.powi(4));
+    assert!(z.abs() < Z, "{z}");
+    // Unlimited: light beyond 16 bounces lands in the last layer.
+    let (acc, _) = render(
+        &scene,
+        &unlimited(Estimator::Mis),
+        SamplerKind::Independent,
+        16,
+        1,
+        true,
+    );
+    let beyond = 0.5 * 0.8f64.powi(18) / (1.0 - 0.8);
+    let (z, _) = flat_z(&acc.layer(SLOT_BEYOND).unwrap(), 0, beyond);
+    assert!(z.abs() < Z, "{z}");
+}
+
+#[test]
+fn open_furnace_sphere_pixels_are_rho_for_any_bounce_limit() {
+    let rho = 0.7;
+    let scene = scenes::open_furnace(rho, 32, None);
+    for (max, estimator) in [
+        (Some(0), Estimator::Mis),
+        (Some(1), Estimator::LightSampling),
+        (Some(16), Estimator::BsdfSampling),
+        (None, Estimator::Mis),
+    ] {
+        let path = PathSettings {
+            estimator,
+            max_bounces: max,
+            ..PathSettings::default()
+        };
+        let (acc, _) = render(&scene, &path, SamplerKind::Sobol, 4, 2, false);
+        let (z, mean) = flat_z(&centre_block(&acc.mean(), 8), 0, rho);
+        assert!(z.abs() < Z, "{max:?} {estimator:?}: {mean} (z = {z:.2})");
+        // The sky around it is 1, seen directly.
+        assert_eq!(acc.mean().get(0, 0), Vec3::ONE);
+    }
+}
+
+#[test]
+fn every_estimator_and_sampler_converges_to_the_furnace_value() {
+    let scene = scenes::closed_furnace(0.8, 0.5, 8);
+    for (e, s) in studies::all_variants() {
+        let (acc, _) = render(&scene, &unlimited(e), s, 16, 3, false);
+        let (z, mean) = flat_z(&acc.mean(), 2, 2.5);
+        assert!(z.abs() < Z, "{e:?} {s:?}: {mean} (z = {z:.2})");
+        assert_eq!(acc.stats.nonfinite, 0);
+    }
+}
+
+fn cornell_reference() -> StoredReference {
+    StoredReference::for_scene(&Scene::builtin())
+        .expect("scenes/references holds the Cornell-box reference (see its README)")
+}
+
+#[test]
+fn the_cornell_box_matches_its_reference_region_by_region_for_every_estimator() {
+    let r = cornell_reference();
+    // Small renders against the reference box-downsampled to their size,
+    // in regions (16 regions x 3 channels, Bonferroni α = 1e-3). The
+    // estimators that find the small lamp only by hitting it need many
+    // samples per region, or the sample variance (a heavy tail of rare
+    // hits) is underestimated.
+    for (e, size, block, spp) in [
+        (Estimator::Mis, 16, 4, 64),
+        (Estimator::LightSampling, 16, 4, 64),
+        (Estimator::BsdfSampling, 8, 2, 2048),
+        (Estimator::UniformWalk, 8, 2, 2048),
+    ] {
+        let reference = r.downsampled(r.mean.width / size);
+        let scene = Scene::builtin().with_resolution(size, size).unwrap();
+        let path = PathSettings {
+            estimator: e,
+            ..PathSettings::default()
+        };
+        let (acc, _) = render(&scene, &path, SamplerKind::Independent, spp, 11, false);
+        let t = region_z_test(
+            &acc.mean(),
+            &acc.variance_of_mean(),
+            &reference,
+            block,
+            1e-3,
+        );
+        assert!(t.passed(), "{e:?}: {t:?}");
+        assert_eq!(t.regions, 16);
+    }
+}
+
+#[test]
+fn a_wrong_renderer_fails_the_region_test() {
+    // The test has power: 10% too much light is caught.
+    let r = cornell_reference();
+    let size = 16;
+    let r16 = r.downsampled(r.mean.width / size);
+    let scene = Scene::builtin().with_resolution(size, size).unwrap();
+    let (acc, _) = render(
+        &scene,
+        &PathSettings::default(),
+        SamplerKind::Independent,
+        64,
+        11,
+        false,
+    );
+    let mut brighter = acc.mean();
+    brighter.pixels.iter_mut().for_each(|p| *p *= 1.1);
+    let t = region_z_test(&brighter, &acc.variance_of_mean(), &r16, 4, 1e-3);
+    assert!(!t.passed(), "{t:?}");
+}
+
+#[test]
+fn the_stiff_cases_come_out_as_expected() {
+    let (case, mean, _, _) = studies::furnace_0999(4, 8);
+    assert!(case.ok, "{case:?}");
+    assert!((mean - 1.0).abs() < 0.2, "{mean}");
+    let (case, z) = studies::tiny_light(4, 32);
+    assert!(case.ok && z.abs() < Z, "{case:?}");
+    let (case, trapped, _) = studies::total_internal_reflection(4, 8);
+    assert!(case.ok, "{case:?}");
+    assert_eq!(trapped, 0.0);
+    let (case, _) = studies::index_matched_glass(32, 8);
+    assert!(case.ok, "{case:?}");
+    let (case, _) = studies::camera_inside_glass(8, 8);
+    assert!(case.ok, "{case:?}");
+}
+
+#[test]
+fn index_one_glass_leaves_the_image_unchanged_statistically() {
+    let (a, _) = render(
+        &scenes::open_furnace(0.6, 16, None),
+        &PathSettings::default(),
+        SamplerKind::Independent,
+        16,
+        1,
+        false,
+    );
+    let (b, _) = render(
+        &scenes::open_furnace(0.6, 16, Some(1.0)),
+        &PathSettings::default(),
+        SamplerKind::Independent,
+        16,
+        1,
+        false,
+    );
+    let r = StoredReference {
+        mean: a.mean(),
+        var_of_mean: a.variance_of_mean(),
+        meta: String::new(),
+    };
+    let t = region_z_test(&b.mean(), &b.variance_of_mean(), &r, 4, 1e-3);
+    assert!(t.passed(), "{t:?}");
+    // And a real glass shell is not invisible.
+    let (c, _) = render(
+        &scenes::open_furnace(0.6, 16, Some(1.5)),
+        &PathSettings::default(),
+        SamplerKind::Independent,
+        16,
+        1,
+        false,
+    );
+    let t = region_z_test(&c.mean(), &c.variance_of_mean(), &r, 4, 1e-3);
+    assert!(!t.passed(), "{t:?}");
+}
+
+#[test]
+fn same_bytes_on_one_and_two_threads() {
+    let scene = Scene::builtin().with_resolution(12, 12).unwrap();
+    let run = |threads: usize, sampler| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| render(&scene, &PathSettings::default(), sampler, 4, 5, true).0)
+    };
+    for sampler in [SamplerKind::Independent, SamplerKind::Sobol] {
+        let (a, b): (Accumulator, Accumulator) = (run(1, sampler), run(2, sampler));
+        assert_eq!(a.sum, b.sum);
+        assert_eq!(a.sum_sq, b.sum_sq);
+        assert_eq!(a.layers, b.layers);
+        assert_eq!(a.stats, b.stats);
+    }
+}
+
+#[test]
+fn the_stage_reports_what_it_built_and_left_out() {
+    let settings = Settings {
+        spp: 2,
+        ..Settings::default()
+    };
+    let cornell = Arc::new(Scene::builtin().with_resolution(16, 16).unwrap());
+    let mut r = DEFAULT.start(cornell, &settings).unwrap();
+    while !r.pass() {}
+    let rep = r.report();
+    let built = rep.built.join("\n");
+    let left = rep.left_out.join("\n");
+    assert!(built.contains("BVH over 36 triangles"), "{built}");
+    assert!(built.contains("light sampling over 1 lights"), "{built}");
+    assert!(built.contains("per-bounce layers"), "{built}");
+    assert!(left.contains("no glass"), "{left}");
+    assert!(left.contains("no SDFs"), "{left}");
+    assert_eq!(rep.nonfinite_caught, 0);
+
+    // Only the final image, a scene lit by the sky alone, with glass.
+    let mut stage = DEFAULT;
+    stage.layers = false;
+    let mut r = stage
+        .start(Arc::new(scenes::open_furnace(0.5, 8, Some(1.5))), &settings)
+        .unwrap();
+    while !r.pass() {}
+    assert!(r.layers().is_none());
+    let rep = r.report();
+    assert!(rep.left_out.join("\n").contains("only the final image"));
+    assert!(rep
+        .built
+        .join("\n")
+        .contains("environment sampled by cosine"));
+    assert!(rep.built.join("\n").contains("dielectric"));
+
+    // The random walk samples no lights.
+    let mut r = stage
+        .with_variant(0)
+        .start(Arc::new(scenes::open_furnace(0.5, 8, None)), &settings)
+        .unwrap();
+    while !r.pass() {}
+    assert!(r
+        .report()
+        .left_out
+        .join("\n")
+        .contains("does not sample lights"));
+}
+
+#[test]
+fn the_stage_boundary_gives_layers_that_sum_to_the_image_and_an_error_series() {
+    let ch = raystep::chapters::all()
+        .into_iter()
+        .find(|c| c.number() == 6)
+        .expect("chapter 6 is registered");
+    assert!(ch.has_bounces() && ch.is_radiance());
+    assert_eq!(ch.variants().len(), 8);
+    let r = cornell_reference();
+    let scene = Arc::new(
+        Scene::builtin()
+            .with_resolution(r.mean.width, r.mean.height)
+            .unwrap(),
+    );
+    let settings = Settings {
+        spp: 2,
+        ..Settings::default()
+    };
+    let mut render = ch.start_variant(scene, &settings, 7).unwrap();
+    let mut passes = 0;
+    while !render.pass() {
+        passes += 1;
+    }
+    assert_eq!(passes, 0, "2 spp is one pass of 4");
+    let layers = render.layers().unwrap();
+    assert_eq!(layers.len(), LAYER_SLOTS - 1);
+    let image = render.view(0);
+    let i = image.pixels.len() / 2 + 7;
+    let sum: Vec3 = layers.iter().map(|l| l.pixels[i]).sum();
+    assert!((sum - image.pixels[i]).abs().max_element() < 1e-4);
+    let series = render.error_series();
+    assert_eq!(series.len(), 1);
+    assert!(series[0].1 > 0.0 && series[0].1 < 1.0, "{series:?}");
+    assert_eq!(render.reference().unwrap().width, image.width);
+    // Downsampling keeps the mean.
+    let d = downsample(&image, 2);
+    let m = |f: &raystep::film::Film| f.pixels.iter().sum::<Vec3>() / f.pixels.len() as f32;
+    assert!((m(&d) - m(&image)).abs().max_element() < 1e-4);
+}

@@ -1,0 +1,70 @@
+//! Chapter 6's graders: the references pass, the shipped stubs fail
+//! cleanly, and typical wrong answers (a missing factor, a biased
+//! roulette, the balance heuristic) fail.
+
+mod common;
+
+use raystep::exercises::ch6;
+use raystep::grading::{self, Outcome, Solution};
+
+#[test]
+fn chapter_6_references_pass_and_stubs_fail_cleanly() {
+    let exercises: Vec<_> = grading::all()
+        .into_iter()
+        .filter(|e| e.chapter == 6)
+        .collect();
+    assert_eq!(exercises.len(), 3);
+    for ex in &exercises {
+        assert!(
+            grading::run(ex, Solution::Reference).is_pass(),
+            "{}",
+            ex.id()
+        );
+        let source = std::fs::read_to_string(common::root().join(ex.file)).unwrap();
+        if source.contains("todo!()") {
+            assert!(
+                matches!(grading::run(ex, Solution::Student), Outcome::NotImplemented),
+                "{}",
+                ex.id()
+            );
+        }
+    }
+}
+
+#[test]
+fn an_integral_without_the_interval_length_fails() {
+    let check = ch6::check_mc_integral(|f, a, b, u| {
+        u.iter().map(|u| f(a + u * (b - a))).sum::<f64>() / u.len() as f64
+    });
+    assert!(!check.passed(), "{check:?}");
+    // Evaluating at the left end only is biased.
+    let check =
+        ch6::check_mc_integral(|f, a, b, u| (b - a) * f(a) * u.len() as f64 / u.len() as f64);
+    assert!(!check.passed(), "{check:?}");
+}
+
+#[test]
+fn a_roulette_that_forgets_to_divide_or_never_kills_fails() {
+    let check = ch6::check_russian_roulette(|v, q, u| if u < q { v } else { 0.0 });
+    assert!(!check.passed(), "{check:?}");
+    let check = ch6::check_russian_roulette(|v, _, _| v);
+    assert!(!check.passed(), "{check:?}");
+    assert!(check.detail.contains("ended"), "{}", check.detail);
+}
+
+#[test]
+fn the_balance_heuristic_or_an_overflowing_power_heuristic_fails() {
+    let check = ch6::check_mis_weight(|f, g| if f + g > 0.0 { f / (f + g) } else { 0.0 });
+    assert!(!check.passed(), "{check:?}");
+    let check = ch6::check_mis_weight(|f, g| f * f / (f * f + g * g));
+    assert!(!check.passed(), "{check:?}");
+    // Weights that do not sum to one bias the MIS estimate.
+    let check = ch6::check_mis_weight(|f, g| {
+        if f == 0.0 {
+            0.0
+        } else {
+            0.9 / (1.0 + (g / f).powi(2))
+        }
+    });
+    assert!(!check.passed(), "{check:?}");
+}
