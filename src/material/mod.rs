@@ -20,8 +20,11 @@
 //!   unbiased because the pdf accounts for the lost mass.
 
 pub mod frame;
+pub mod glossy;
 pub mod lambert;
 pub mod mirror;
+pub mod retro;
+pub mod semigloss;
 
 pub use frame::Frame;
 
@@ -53,6 +56,12 @@ pub enum Bsdf {
     Lambertian(lambert::Lambertian),
     /// Ideal specular reflection: a delta lobe around the mirror direction.
     Mirror(mirror::Mirror),
+    /// Glossy specular: a normalised Phong lobe around the mirror direction.
+    Glossy(glossy::Glossy),
+    /// Retro-reflective: a normalised lobe around the direction to the viewer.
+    Retro(retro::Retro),
+    /// Semi-gloss paint: diffuse base plus a white glossy coat.
+    SemiGloss(semigloss::SemiGloss),
 }
 
 impl Bsdf {
@@ -61,6 +70,19 @@ impl Bsdf {
         match m.kind {
             MaterialKind::Diffuse => Bsdf::Lambertian(lambert::Lambertian { rho: m.reflectance }),
             MaterialKind::Mirror => Bsdf::Mirror(mirror::Mirror { r: m.reflectance }),
+            MaterialKind::Glossy => Bsdf::Glossy(glossy::Glossy {
+                rs: m.reflectance,
+                n: m.exponent,
+            }),
+            MaterialKind::Retroreflective => Bsdf::Retro(retro::Retro {
+                rho: m.reflectance,
+                n: m.exponent,
+            }),
+            MaterialKind::Semigloss => Bsdf::SemiGloss(semigloss::SemiGloss {
+                rho: m.reflectance,
+                ks: m.specular,
+                n: m.exponent,
+            }),
         }
     }
 
@@ -69,6 +91,9 @@ impl Bsdf {
         match self {
             Bsdf::Lambertian(b) => b.f(wo, wi),
             Bsdf::Mirror(_) => Vec3::ZERO,
+            Bsdf::Glossy(b) => b.f(wo, wi),
+            Bsdf::Retro(b) => b.f(wo, wi),
+            Bsdf::SemiGloss(b) => b.f(wo, wi),
         }
     }
 
@@ -78,16 +103,21 @@ impl Bsdf {
         match self {
             Bsdf::Lambertian(b) => b.pdf(wo, wi),
             Bsdf::Mirror(_) => 0.0,
+            Bsdf::Glossy(b) => b.pdf(wo, wi),
+            Bsdf::Retro(b) => b.pdf(wo, wi),
+            Bsdf::SemiGloss(b) => b.pdf(wo, wi),
         }
     }
 
     /// Draws ωi given ωo from two uniform numbers `u` (and `u_lobe` to pick
     /// a lobe in BSDFs with several).
     pub fn sample(&self, wo: Vec3, u: Vec2, u_lobe: f32) -> Option<BsdfSample> {
-        let _ = u_lobe;
         match self {
             Bsdf::Lambertian(b) => b.sample(wo, u),
             Bsdf::Mirror(b) => b.sample(wo),
+            Bsdf::Glossy(b) => b.sample(wo, u),
+            Bsdf::Retro(b) => b.sample(wo, u),
+            Bsdf::SemiGloss(b) => b.sample(wo, u, u_lobe),
         }
     }
 
