@@ -10,5 +10,6 @@ pub fn all() -> Vec<&'static dyn Chapter> {
         &crate::raster::RASTERIZATION,
         &crate::raytrace::RayTriangle,
         &crate::sphere_tracing::DEFAULT,
+        &crate::reflection::DEFAULT,
     ]
 }
