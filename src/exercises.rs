@@ -18,11 +18,15 @@ pub mod ch3;
 #[path = "../chapters/ch4-sphere-tracing/exercises/mod.rs"]
 pub mod ch4;
 
+#[path = "../chapters/ch5-reflection/exercises/mod.rs"]
+pub mod ch5;
+
 /// Every exercise, in chapter order.
 pub fn all() -> Vec<Exercise> {
     let mut all = ch1::exercises();
     all.extend(ch2::exercises());
     all.extend(ch3::exercises());
     all.extend(ch4::exercises());
+    all.extend(ch5::exercises());
     all
 }

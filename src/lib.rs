@@ -19,6 +19,7 @@
 //! | rasterization | 2 | [`raster`], [`mesh_check`] | `ch2` | `book/src/ch2-rasterization.md` |
 //! | ray-triangle | 3 | [`ray`], [`triangle`], [`bvh`], [`spawn`], [`raytrace`] | `ch3` | `book/src/ch3-ray-triangle.md` |
 //! | implicit surfaces | 4 | [`sdf`], [`sphere_tracing`] | `ch4` | `book/src/ch4-sphere-tracing.md` |
+//! | reflection equation | 5 | [`radiometry`], [`light`], [`material`], [`world`], [`reflection`] | `ch5` | `book/src/ch5-reflection.md` |
 //!
 //! Later chapters (rasterization, ray-triangle intersection and a BVH,
 //! sphere tracing, the reflection equation, global illumination) join this

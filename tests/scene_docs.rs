@@ -86,6 +86,17 @@ fn every_key_of_the_format_has_an_example() {
         "\"rectangle\"",
         "\"box\"",
         "\"diffuse\"",
+        "\"mirror\"",
+        "\"glossy\"",
+        "\"retroreflective\"",
+        "\"semigloss\"",
+        "exponent",
+        "specular",
+        "two_sided",
+        "\"sky\"",
+        "zenith",
+        "horizon",
+        "ground",
     ];
     for key in keys {
         let as_key = format!("{key} =");
