@@ -37,7 +37,7 @@ impl Default for Study {
     fn default() -> Self {
         Study {
             counts: vec![4, 16, 64, 256, 1024],
-            repeats: 128,
+            repeats: 64,
         }
     }
 }
@@ -170,12 +170,12 @@ impl Problem {
     }
 
     /// RMSE over `repeats` estimates of `n` samples, and the mean seconds
-    /// per estimate: the fastest of three timed runs (the estimates are
+    /// per estimate: the faster of two timed runs (the estimates are
     /// the same each time), so a busy machine disturbs the times less.
     pub fn rmse(&self, strategy: Strategy, n: u32, repeats: u32) -> (f64, f64) {
         let mut best = f64::INFINITY;
         let mut se = 0.0f64;
-        for _ in 0..3 {
+        for _ in 0..2 {
             let start = Instant::now();
             se = 0.0;
             for r in 0..repeats {
