@@ -289,4 +289,10 @@ fn chapter_5_sky_keys_are_checked() {
         &[],
     );
     assert_mentions(&m, &["`grund`", "did you mean `ground`?"]);
+    let m = load_error(
+        "two-environments",
+        "[[lights]]\ntype = \"environment\"\nradiance = [1, 1, 1]\n[[lights]]\ntype = \"sky\"\nzenith = [1, 1, 1]\nhorizon = [1, 1, 1]\n",
+        &[],
+    );
+    assert_mentions(&m, &["lights[1]", "at most one environment", "lights[0]"]);
 }

@@ -311,7 +311,22 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
 
     let sdfs = build_sdfs(&file.sdfs, &declared, &mut materials, source)?;
 
+    let mut environment: Option<usize> = None;
     for (i, l) in file.lights.iter().enumerate() {
+        if matches!(
+            l,
+            LightSection::Environment { .. } | LightSection::Sky { .. }
+        ) {
+            if let Some(first) = environment {
+                return Err(scene_err(
+                    format!("lights[{i}]"),
+                    format!(
+                        "a scene has at most one environment (\"environment\" or \"sky\"); lights[{first}] is one already"
+                    ),
+                ));
+            }
+            environment = Some(i);
+        }
         let numbers: Vec<f64> = match l {
             LightSection::Point {
                 position,
