@@ -10,6 +10,7 @@ pub fn all() -> Vec<&'static dyn Chapter> {
         &crate::raster::RASTERIZATION,
         &crate::raytrace::RayTriangle,
         &crate::sphere_tracing::DEFAULT,
+        &crate::reflection::DEFAULT,
         &crate::path_tracing::DEFAULT,
     ]
 }

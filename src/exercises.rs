@@ -18,6 +18,8 @@ pub mod ch3;
 #[path = "../chapters/ch4-sphere-tracing/exercises/mod.rs"]
 pub mod ch4;
 
+#[path = "../chapters/ch5-reflection/exercises/mod.rs"]
+pub mod ch5;
 #[path = "../chapters/ch6-global-illumination/exercises/mod.rs"]
 pub mod ch6;
 
@@ -27,6 +29,7 @@ pub fn all() -> Vec<Exercise> {
     all.extend(ch2::exercises());
     all.extend(ch3::exercises());
     all.extend(ch4::exercises());
+    all.extend(ch5::exercises());
     all.extend(ch6::exercises());
     all
 }

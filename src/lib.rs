@@ -19,6 +19,7 @@
 //! | rasterization | 2 | [`raster`], [`mesh_check`] | `ch2` | `book/src/ch2-rasterization.md` |
 //! | ray-triangle | 3 | [`ray`], [`triangle`], [`bvh`], [`watertight_fast`], [`spawn`], [`raytrace`] | `ch3` | `book/src/ch3-ray-triangle.md` |
 //! | implicit surfaces | 4 | [`sdf`], [`sphere_tracing`] | `ch4` | `book/src/ch4-sphere-tracing.md` |
+//! | reflection equation | 5 | [`radiometry`], [`light`], [`material`], [`world`], [`reflection`] | `ch5` | `book/src/ch5-reflection.md` |
 //! | global illumination | 6 | [`material`], [`light`], [`world`], [`mis`], [`path_tracing`] | `ch6` | `book/src/ch6-global-illumination.md` |
 //!
 //! Later chapters (rasterization, ray-triangle intersection and a BVH,
@@ -54,11 +55,13 @@ pub mod mis;
 pub mod path_tracing;
 pub mod preview;
 pub mod projection;
+pub mod radiometry;
 pub mod raster;
 pub mod ray;
 pub mod raytrace;
 pub mod raytrace_bench;
 pub mod raytrace_studies;
+pub mod reflection;
 pub mod report;
 pub mod run;
 pub mod sampling;

@@ -263,3 +263,66 @@ fn the_binary_exits_nonzero_and_writes_nothing() {
     assert!(String::from_utf8_lossy(&result.stderr).contains("between 1 and 16384"));
     assert!(!out.exists());
 }
+
+#[test]
+fn chapter_5_material_keys_are_checked_by_name() {
+    let obj = "[[objects]]\nshape = \"sphere\"\nmaterial = \"m\"\n";
+    let m = load_error(
+        "exponent-on-diffuse",
+        &format!("[[materials]]\nname = \"m\"\nexponent = 10\n{obj}"),
+        &[],
+    );
+    assert_mentions(&m, &["scene.toml", "materials[0]", "exponent", "glossy"]);
+    let m = load_error(
+        "negative-exponent",
+        &format!("[[materials]]\nname = \"m\"\ntype = \"glossy\"\nexponent = -1\n{obj}"),
+        &[],
+    );
+    assert_mentions(&m, &["materials[0] (\"m\").exponent", "got -1"]);
+    let m = load_error(
+        "specular-too-big",
+        &format!("[[materials]]\nname = \"m\"\ntype = \"semigloss\"\nspecular = 1.5\n{obj}"),
+        &[],
+    );
+    assert_mentions(&m, &["materials[0] (\"m\").specular", "[0, 1]", "1.5"]);
+    let m = load_error(
+        "specular-on-glossy",
+        &format!("[[materials]]\nname = \"m\"\ntype = \"glossy\"\nspecular = 0.5\n{obj}"),
+        &[],
+    );
+    assert_mentions(&m, &["specular", "semigloss"]);
+    let m = load_error(
+        "unknown-type",
+        &format!("[[materials]]\nname = \"m\"\ntype = \"glosy\"\n{obj}"),
+        &[],
+    );
+    assert_mentions(&m, &["line 3", "did you mean `glossy`?"]);
+}
+
+#[test]
+fn chapter_5_sky_keys_are_checked() {
+    let m = load_error(
+        "sky-missing-zenith",
+        "[[lights]]\ntype = \"sky\"\nhorizon = [1, 1, 1]\n",
+        &[],
+    );
+    assert_mentions(&m, &["scene.toml", "missing field `zenith`"]);
+    let m = load_error(
+        "sky-nan",
+        "[[lights]]\ntype = \"sky\"\nzenith = [1, nan, 1]\nhorizon = [1, 1, 1]\n",
+        &[],
+    );
+    assert_mentions(&m, &["lights[0]", "finite"]);
+    let m = load_error(
+        "sky-typo",
+        "[[lights]]\ntype = \"sky\"\nzenith = [1, 1, 1]\nhorizon = [1, 1, 1]\ngrund = [0, 0, 0]\n",
+        &[],
+    );
+    assert_mentions(&m, &["`grund`", "did you mean `ground`?"]);
+    let m = load_error(
+        "two-environments",
+        "[[lights]]\ntype = \"environment\"\nradiance = [1, 1, 1]\n[[lights]]\ntype = \"sky\"\nzenith = [1, 1, 1]\nhorizon = [1, 1, 1]\n",
+        &[],
+    );
+    assert_mentions(&m, &["lights[1]", "at most one environment", "lights[0]"]);
+}

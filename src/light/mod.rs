@@ -12,6 +12,8 @@
 //! one place, [`area::solid_angle_pdf`].
 
 pub mod area;
+pub mod sky;
+pub mod spot;
 
 use glam::{Vec2, Vec3};
 
@@ -64,6 +66,10 @@ pub enum Light {
         /// Radiance L (W/(m²·sr)).
         radiance: Vec3,
     },
+    /// A point light limited to a cone with a smooth edge (chapter 5).
+    Spot(spot::Spot),
+    /// A sky-gradient environment (chapter 5).
+    Sky(sky::Sky),
 }
 
 impl Light {
@@ -113,12 +119,28 @@ impl Light {
                     delta: false,
                 })
             }
+            Light::Spot(s) => s.sample_li(p),
+            Light::Sky(sky) => {
+                let wi = sky.sample(u);
+                let pdf = sky.pdf(wi);
+                let li = sky.radiance(wi);
+                (pdf > 0.0 && wi.dot(n) != 0.0 && li != Vec3::ZERO).then_some(LightSample {
+                    wi,
+                    li,
+                    pdf,
+                    dist: f32::INFINITY,
+                    delta: false,
+                })
+            }
         }
     }
 
     /// Whether the light is a delta light.
     pub fn is_delta(&self) -> bool {
-        matches!(self, Light::Point { .. } | Light::Directional { .. })
+        matches!(
+            self,
+            Light::Point { .. } | Light::Directional { .. } | Light::Spot(_)
+        )
     }
 }
 
@@ -159,13 +181,40 @@ impl Lights {
                     direction: v(direction).normalize_or(Vec3::NEG_Y),
                     irradiance: v(irradiance),
                 },
-                // Spot lights: chapter 5 adds them.
-                LightSection::Spot { .. } => continue,
+                LightSection::Spot {
+                    position,
+                    direction,
+                    intensity,
+                    cone_degrees,
+                    falloff_degrees,
+                } => Light::Spot(spot::Spot::new(
+                    v(position),
+                    v(direction),
+                    v(intensity),
+                    *cone_degrees as f32,
+                    *falloff_degrees as f32,
+                )),
                 LightSection::Environment { radiance } => {
                     out.environment = Some(out.lights.len());
                     Light::Environment {
                         radiance: v(radiance),
                     }
+                }
+                LightSection::Sky {
+                    zenith,
+                    horizon,
+                    ground,
+                } => {
+                    let sky = sky::Sky {
+                        zenith: v(zenith),
+                        horizon: v(horizon),
+                        ground: v(ground),
+                    };
+                    if sky.is_dark() {
+                        continue;
+                    }
+                    out.environment = Some(out.lights.len());
+                    Light::Sky(sky)
                 }
             };
             out.lights.push(light);
@@ -206,9 +255,10 @@ impl Lights {
 
     /// Radiance arriving along a ray that leaves the scene in direction
     /// `dir` (zero without an environment light).
-    pub fn environment_radiance(&self, _dir: Vec3) -> Vec3 {
+    pub fn environment_radiance(&self, dir: Vec3) -> Vec3 {
         match self.environment.map(|i| &self.lights[i]) {
             Some(Light::Environment { radiance }) => *radiance,
+            Some(Light::Sky(sky)) => sky.radiance(dir),
             _ => Vec3::ZERO,
         }
     }
@@ -218,6 +268,7 @@ impl Lights {
     pub fn environment_pdf(&self, n: Vec3, wi: Vec3) -> f32 {
         match self.environment.map(|i| &self.lights[i]) {
             Some(Light::Environment { .. }) => cosine_hemisphere_pdf(wi.dot(n)),
+            Some(Light::Sky(sky)) => sky.pdf(wi),
             _ => 0.0,
         }
     }

@@ -21,8 +21,11 @@
 
 pub mod dielectric;
 pub mod frame;
+pub mod glossy;
 pub mod lambert;
 pub mod mirror;
+pub mod retro;
+pub mod semigloss;
 
 pub use frame::Frame;
 
@@ -54,6 +57,12 @@ pub enum Bsdf {
     Lambertian(lambert::Lambertian),
     /// Ideal specular reflection: a delta lobe around the mirror direction.
     Mirror(mirror::Mirror),
+    /// Glossy specular: a normalised Phong lobe around the mirror direction.
+    Glossy(glossy::Glossy),
+    /// Retro-reflective: a normalised lobe around the direction to the viewer.
+    Retro(retro::Retro),
+    /// Semi-gloss paint: diffuse base plus a white glossy coat.
+    SemiGloss(semigloss::SemiGloss),
     /// Smooth glass: Fresnel reflection and Snell refraction, two deltas.
     Dielectric(dielectric::Dielectric),
 }
@@ -64,6 +73,19 @@ impl Bsdf {
         match m.kind {
             MaterialKind::Diffuse => Bsdf::Lambertian(lambert::Lambertian { rho: m.reflectance }),
             MaterialKind::Mirror => Bsdf::Mirror(mirror::Mirror { r: m.reflectance }),
+            MaterialKind::Glossy => Bsdf::Glossy(glossy::Glossy {
+                rs: m.reflectance,
+                n: m.exponent,
+            }),
+            MaterialKind::Retroreflective => Bsdf::Retro(retro::Retro {
+                rho: m.reflectance,
+                n: m.exponent,
+            }),
+            MaterialKind::Semigloss => Bsdf::SemiGloss(semigloss::SemiGloss {
+                rho: m.reflectance,
+                ks: m.specular,
+                n: m.exponent,
+            }),
             MaterialKind::Glass => Bsdf::Dielectric(dielectric::Dielectric { ior: m.ior }),
         }
     }
@@ -72,7 +94,11 @@ impl Bsdf {
     pub fn f(&self, wo: Vec3, wi: Vec3) -> Vec3 {
         match self {
             Bsdf::Lambertian(b) => b.f(wo, wi),
-            Bsdf::Mirror(_) | Bsdf::Dielectric(_) => Vec3::ZERO,
+            Bsdf::Mirror(_) => Vec3::ZERO,
+            Bsdf::Glossy(b) => b.f(wo, wi),
+            Bsdf::Retro(b) => b.f(wo, wi),
+            Bsdf::SemiGloss(b) => b.f(wo, wi),
+            Bsdf::Dielectric(_) => Vec3::ZERO,
         }
     }
 
@@ -81,7 +107,11 @@ impl Bsdf {
     pub fn pdf(&self, wo: Vec3, wi: Vec3) -> f32 {
         match self {
             Bsdf::Lambertian(b) => b.pdf(wo, wi),
-            Bsdf::Mirror(_) | Bsdf::Dielectric(_) => 0.0,
+            Bsdf::Mirror(_) => 0.0,
+            Bsdf::Glossy(b) => b.pdf(wo, wi),
+            Bsdf::Retro(b) => b.pdf(wo, wi),
+            Bsdf::SemiGloss(b) => b.pdf(wo, wi),
+            Bsdf::Dielectric(_) => 0.0,
         }
     }
 
@@ -91,6 +121,9 @@ impl Bsdf {
         match self {
             Bsdf::Lambertian(b) => b.sample(wo, u),
             Bsdf::Mirror(b) => b.sample(wo),
+            Bsdf::Glossy(b) => b.sample(wo, u),
+            Bsdf::Retro(b) => b.sample(wo, u),
+            Bsdf::SemiGloss(b) => b.sample(wo, u, u_lobe),
             Bsdf::Dielectric(b) => b.sample(wo, u_lobe),
         }
     }

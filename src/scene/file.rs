@@ -80,6 +80,12 @@ pub struct MaterialSection {
     /// towards, or an SDF's outside) emits.
     #[serde(default)]
     pub two_sided: bool,
+    /// Sharpness n of a glossy, retro-reflective or semi-gloss lobe
+    /// (chapter 5; default 100). Larger is sharper.
+    pub exponent: Option<f64>,
+    /// The specular fraction k_s of a semi-gloss material, in [0, 1]
+    /// (chapter 5; default 0.1): f = (1 - k_s) ρ/π + k_s · glossy lobe.
+    pub specular: Option<f64>,
     /// Index of refraction of a `type = "glass"` material (default 1.5);
     /// only glass takes it.
     #[serde(default)]
@@ -99,6 +105,15 @@ pub enum MaterialKind {
     Diffuse,
     /// Ideal mirror reflecting the fraction `reflectance`.
     Mirror,
+    /// Glossy specular: a normalised Phong lobe of sharpness `exponent`
+    /// around the mirror direction, reflecting at most `reflectance`.
+    Glossy,
+    /// Retro-reflective: a normalised lobe of sharpness `exponent` around
+    /// the direction back towards the viewer (and so towards the light).
+    Retroreflective,
+    /// The lecture's semi-gloss paint: a diffuse base of `reflectance` under
+    /// a white glossy coat that takes the fraction `specular`.
+    Semigloss,
     /// Smooth glass (chapter 6): Fresnel reflection and refraction with
     /// index `ior`, no absorption; `reflectance` is not used.
     Glass,
@@ -207,5 +222,17 @@ pub enum LightSection {
     Environment {
         /// Radiance (W/(m²·sr)), linear RGB.
         radiance: [f64; 3],
+    },
+    /// A sky (chapter 5): radiance blends linearly in the height of the
+    /// direction, from `horizon` (horizontal) to `zenith` (straight up,
+    /// world +y); below the horizon every direction sees `ground`.
+    Sky {
+        /// Radiance straight up (W/(m²·sr)), linear RGB.
+        zenith: [f64; 3],
+        /// Radiance along the horizon, linear RGB.
+        horizon: [f64; 3],
+        /// Radiance from below the horizon (default black).
+        #[serde(default)]
+        ground: [f64; 3],
     },
 }

@@ -34,10 +34,21 @@ pub struct Material {
     /// Index of refraction inside a glass material (1.5 unless the file
     /// says otherwise; unused by other kinds).
     pub ior: f32,
+    /// Lobe sharpness n of glossy, retro-reflective and semi-gloss
+    /// materials (chapter 5).
+    pub exponent: f32,
+    /// Specular fraction k_s of a semi-gloss material (chapter 5).
+    pub specular: f32,
 }
 
 /// The index of refraction of glass when a scene gives none.
 pub const DEFAULT_IOR: f64 = 1.5;
+/// The lobe sharpness materials get when the file gives none.
+pub const DEFAULT_EXPONENT: f64 = 100.0;
+/// The largest lobe sharpness a scene file may ask for.
+pub const MAX_EXPONENT: f64 = 1e6;
+/// The semi-gloss specular fraction materials get when the file gives none.
+pub const DEFAULT_SPECULAR: f64 = 0.1;
 
 impl Material {
     /// The material objects get when they name none: grey, diffuse.
@@ -48,6 +59,8 @@ impl Material {
             reflectance: Vec3::splat(0.8),
             emission: Vec3::ZERO,
             two_sided: false,
+            exponent: DEFAULT_EXPONENT as f32,
+            specular: DEFAULT_SPECULAR as f32,
             ior: DEFAULT_IOR as f32,
         }
     }
@@ -276,6 +289,8 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
             .map_err(|why| {
                 scene_err(format!("{at}.emission"), format!("{:?} {why}", m.emission))
             })?;
+        let (exponent, specular) =
+            lobe_keys(m).map_err(|(key, why)| scene_err(format!("{at}.{key}"), why))?;
         let ior = match (m.kind, m.ior) {
             (MaterialKind::Glass, None) => DEFAULT_IOR,
             (MaterialKind::Glass, Some(ior)) if ior.is_finite() && (1.0..=10.0).contains(&ior) => {
@@ -303,6 +318,8 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
             reflectance: DVec3::from(m.reflectance).as_vec3(),
             emission: DVec3::from(m.emission).as_vec3(),
             two_sided: m.two_sided,
+            exponent,
+            specular,
             ior: ior as f32,
         });
     }
@@ -322,7 +339,22 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
 
     let sdfs = build_sdfs(&file.sdfs, &declared, &mut materials, source)?;
 
+    let mut environment: Option<usize> = None;
     for (i, l) in file.lights.iter().enumerate() {
+        if matches!(
+            l,
+            LightSection::Environment { .. } | LightSection::Sky { .. }
+        ) {
+            if let Some(first) = environment {
+                return Err(scene_err(
+                    format!("lights[{i}]"),
+                    format!(
+                        "a scene has at most one environment (\"environment\" or \"sky\"); lights[{first}] is one already"
+                    ),
+                ));
+            }
+            environment = Some(i);
+        }
         let numbers: Vec<f64> = match l {
             LightSection::Point {
                 position,
@@ -346,6 +378,11 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
             ]
             .concat(),
             LightSection::Environment { radiance } => radiance.to_vec(),
+            LightSection::Sky {
+                zenith,
+                horizon,
+                ground,
+            } => [zenith.as_slice(), horizon, ground].concat(),
         };
         check_finite(&numbers)
             .map_err(|why| scene_err(format!("lights[{i}]"), format!("a value {why}")))?;
@@ -440,6 +477,45 @@ fn use_material(
             used.len() - 1
         }
     })
+}
+
+/// The `exponent` and `specular` of a material, checked: each only on the
+/// kinds that use it, in range, with defaults when omitted.
+fn lobe_keys(m: &file::MaterialSection) -> std::result::Result<(f32, f32), (String, String)> {
+    use MaterialKind::*;
+    let lobed = matches!(m.kind, Glossy | Retroreflective | Semigloss);
+    let exponent = match m.exponent {
+        Some(_) if !lobed => return Err((
+            "exponent".into(),
+            "`exponent` applies only to type = \"glossy\", \"retroreflective\" or \"semigloss\""
+                .into(),
+        )),
+        Some(n) if !(n.is_finite() && (0.0..=MAX_EXPONENT).contains(&n)) => {
+            return Err((
+                "exponent".into(),
+                format!("must be a number in [0, {MAX_EXPONENT:e}], got {n}"),
+            ))
+        }
+        Some(n) => n,
+        None => DEFAULT_EXPONENT,
+    };
+    let specular = match m.specular {
+        Some(_) if m.kind != Semigloss => {
+            return Err((
+                "specular".into(),
+                "`specular` applies only to type = \"semigloss\"".into(),
+            ))
+        }
+        Some(k) if !(k.is_finite() && (0.0..=1.0).contains(&k)) => {
+            return Err((
+                "specular".into(),
+                format!("must be a number in [0, 1] (a fraction of the light), got {k}"),
+            ))
+        }
+        Some(k) => k,
+        None => DEFAULT_SPECULAR,
+    };
+    Ok((exponent as f32, specular as f32))
 }
 
 fn check_finite(values: &[f64]) -> std::result::Result<(), &'static str> {

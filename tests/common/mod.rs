@@ -24,3 +24,4 @@ pub fn write_files(dir: &Path, files: &[(&str, &str)]) {
 pub fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
+pub mod chi2;

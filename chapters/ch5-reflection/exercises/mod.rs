@@ -1,0 +1,274 @@
+//! Chapter 5's exercises and how each is graded.
+
+pub mod area_pdf;
+pub mod cosine_hemisphere;
+pub mod lambert_brdf;
+pub mod point_light;
+
+use std::f32::consts::FRAC_1_PI;
+
+use glam::{Vec2, Vec3};
+
+use crate::grading::{Check, Exercise, Solution};
+use crate::light::area::solid_angle_pdf;
+use crate::material::lambert::Lambertian;
+use crate::sampling::random;
+use crate::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
+
+type BrdfFn = fn(Vec3, Vec3, Vec3) -> Vec3;
+type CosineFn = fn(Vec2) -> (Vec3, f32);
+type PointFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
+type AreaPdfFn = fn(f32, Vec3, Vec3, Vec3) -> f32;
+
+/// Chapter 5's exercises, in order.
+pub fn exercises() -> Vec<Exercise> {
+    vec![
+        Exercise {
+            chapter: 5,
+            name: "lambert_brdf",
+            file: "chapters/ch5-reflection/exercises/lambert_brdf.rs",
+            hint: "same side when wo.z * wi.z > 0; then rho / PI, else Vec3::ZERO",
+            grade: |who| {
+                check_lambert_brdf(match who {
+                    Solution::Student => lambert_brdf::lambert_brdf,
+                    Solution::Reference => |rho, wo, wi| Lambertian { rho }.f(wo, wi),
+                })
+            },
+        },
+        Exercise {
+            chapter: 5,
+            name: "cosine_hemisphere",
+            file: "chapters/ch5-reflection/exercises/cosine_hemisphere.rs",
+            hint: "r = sqrt(u.x), phi = 2π u.y, (x, y) = r (cos phi, sin phi), z = sqrt(1 - r²), pdf = z / π",
+            grade: |who| {
+                check_cosine_hemisphere(match who {
+                    Solution::Student => cosine_hemisphere::cosine_hemisphere,
+                    Solution::Reference => |u| {
+                        let w = warp_cosine(u);
+                        (w, cosine_hemisphere_pdf(w.z))
+                    },
+                })
+            },
+        },
+        Exercise {
+            chapter: 5,
+            name: "point_light",
+            file: "chapters/ch5-reflection/exercises/point_light.rs",
+            hint: "to = light - p; r² = to.length_squared(); cos = max(0, n · to/|to|); I cos / r²",
+            grade: |who| {
+                check_point_light(match who {
+                    Solution::Student => point_light::point_light_irradiance,
+                    Solution::Reference => |i, light, p, n| {
+                        let to = light - p;
+                        i * crate::radiometry::point_irradiance(
+                            1.0,
+                            to.length() as f64,
+                            n.dot(to.normalize()) as f64,
+                        ) as f32
+                    },
+                })
+            },
+        },
+        Exercise {
+            chapter: 5,
+            name: "area_pdf",
+            file: "chapters/ch5-reflection/exercises/area_pdf.rs",
+            hint: "d² = (y - x).length_squared(); cos = |n_light · (x - y)/d|; 0 if cos == 0, else pdf_area d² / cos",
+            grade: |who| {
+                check_area_pdf(match who {
+                    Solution::Student => area_pdf::area_to_solid_angle,
+                    Solution::Reference => |pdf, x, y, n| {
+                        let to = y - x;
+                        solid_angle_pdf(pdf, to.length(), n.dot(to.normalize()))
+                    },
+                })
+            },
+        },
+    ]
+}
+
+/// The worst relative error over cases (a NaN counts as infinite).
+fn worst_of(cases: impl Iterator<Item = (f64, String)>) -> (f64, String) {
+    let mut worst = (0.0f64, String::from("all cases match"));
+    for (err, what) in cases {
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        if err > worst.0 {
+            worst = (err, what);
+        }
+    }
+    worst
+}
+
+fn rel(got: Vec3, want: Vec3) -> f64 {
+    ((got - want).abs().max_element() / want.abs().max_element().max(1e-6)) as f64
+}
+
+/// ρ/π on the same side, 0 across, for hand-picked directions.
+pub fn check_lambert_brdf(f: BrdfFn) -> Check {
+    let rho = Vec3::new(0.9, 0.5, 0.1);
+    let d = |x: f32, y: f32, z: f32| Vec3::new(x, y, z).normalize();
+    let same = rho * FRAC_1_PI;
+    let cases = [
+        (d(0.0, 0.0, 1.0), d(0.0, 0.0, 1.0), same),
+        (d(1.0, 0.0, 1.0), d(-0.3, 0.2, 0.5), same),
+        (d(0.0, 1.0, 0.01), d(0.9, 0.0, 0.05), same),
+        // Both below: still the same side (two-sided).
+        (d(0.2, 0.0, -1.0), d(0.0, 0.4, -1.0), same),
+        // Opposite sides: nothing.
+        (d(0.0, 0.0, 1.0), d(0.0, 0.0, -1.0), Vec3::ZERO),
+        (d(1.0, 0.0, -0.2), d(0.3, 0.3, 0.8), Vec3::ZERO),
+    ];
+    let (error, detail) = worst_of(cases.into_iter().map(|(wo, wi, want)| {
+        let got = f(rho, wo, wi);
+        let err = if want == Vec3::ZERO {
+            got.abs().max_element() as f64
+        } else {
+            rel(got, want)
+        };
+        (err, format!("ωo {wo}, ωi {wi}: got {got}, expected {want}"))
+    }));
+    Check {
+        error,
+        tolerance: 1e-5,
+        detail,
+        images: None,
+    }
+}
+
+/// Statistical: every sample is a unit direction with z ≥ 0 whose pdf is
+/// z/π; over 40,000 samples, E[z] = 2/3, E[x] = E[y] = 0 and P(z < 1/2)
+/// = 1/4 (for cos θ/π, P(cos θ < c) = c²). The error is the worst
+/// deviation in standard errors (5 passes), or a large number when a
+/// sample is not even a direction on the hemisphere.
+pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
+    let n = 40_000u64;
+    let (mut sx, mut sy, mut sz, mut low) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    for i in 0..n {
+        let u = Vec2::new(random(55, i, 0, 0), random(55, i, 0, 1));
+        let (w, pdf) = f(u);
+        if !((w.length() - 1.0).abs() < 1e-4 && w.z >= -1e-6) {
+            return Check {
+                error: 1e9,
+                tolerance: 5.0,
+                detail: format!("u = {u}: {w} is not a unit direction with z ≥ 0"),
+                images: None,
+            };
+        }
+        let want = w.z.max(0.0) * FRAC_1_PI;
+        if (pdf - want).abs() > 1e-4 * want.max(1e-3) {
+            return Check {
+                error: 1e9,
+                tolerance: 5.0,
+                detail: format!("u = {u}: direction {w} has pdf {pdf}, expected z/π = {want}"),
+                images: None,
+            };
+        }
+        sx += w.x as f64;
+        sy += w.y as f64;
+        sz += w.z as f64;
+        low += f64::from(w.z < 0.5);
+    }
+    let m = n as f64;
+    // Standard deviations under cos θ/π: x and y have variance 1/4, z has
+    // 1/2 − 4/9, the indicator 1/4 · 3/4.
+    let stats = [
+        ("mean x", sx / m, 0.0, 0.25f64),
+        ("mean y", sy / m, 0.0, 0.25),
+        ("mean z", sz / m, 2.0 / 3.0, 0.5 - 4.0 / 9.0),
+        ("P(z < 1/2)", low / m, 0.25, 0.1875),
+    ];
+    let (error, detail) = worst_of(stats.into_iter().map(|(what, got, want, var)| {
+        let z = (got - want).abs() / (var / m).sqrt();
+        (
+            z,
+            format!("{what} = {got:.4}, expected {want:.4} ({z:.1} standard errors off)"),
+        )
+    }));
+    Check {
+        error,
+        tolerance: 5.0,
+        detail,
+        images: None,
+    }
+}
+
+/// E = I cos θ / r² for hand-worked cases.
+pub fn check_point_light(f: PointFn) -> Check {
+    let i = Vec3::new(4.0, 2.0, 1.0);
+    let cases = [
+        // Straight above at 2 m: I/4.
+        (Vec3::new(0.0, 0.0, 2.0), Vec3::ZERO, Vec3::Z, i / 4.0),
+        // 5 m away along (3, 0, 4): cos θ = 4/5, r² = 25.
+        (
+            Vec3::new(3.0, 0.0, 4.0),
+            Vec3::ZERO,
+            Vec3::Z,
+            i * 0.8 / 25.0,
+        ),
+        // Off the origin and a tilted normal: to = (0, 1, 1), cos = 1.
+        (
+            Vec3::new(1.0, 2.0, 3.0),
+            Vec3::new(1.0, 1.0, 2.0),
+            Vec3::new(0.0, 1.0, 1.0).normalize(),
+            i / 2.0,
+        ),
+        // Behind the surface: nothing.
+        (Vec3::new(0.0, 0.0, -1.0), Vec3::ZERO, Vec3::Z, Vec3::ZERO),
+    ];
+    let (error, detail) = worst_of(cases.into_iter().map(|(light, p, n, want)| {
+        let got = f(i, light, p, n);
+        let err = if want == Vec3::ZERO {
+            got.abs().max_element() as f64
+        } else {
+            rel(got, want)
+        };
+        (
+            err,
+            format!("light at {light}, p {p}, n {n}: got {got}, expected {want}"),
+        )
+    }));
+    Check {
+        error,
+        tolerance: 1e-4,
+        detail,
+        images: None,
+    }
+}
+
+/// pdf_A d²/|cos θl| for hand-worked cases, and 0 edge-on.
+pub fn check_area_pdf(f: AreaPdfFn) -> Check {
+    let cases = [
+        // Light 2 m straight above, facing down: 1/A · 4 / 1.
+        (0.5, Vec3::ZERO, Vec3::new(0.0, 0.0, 2.0), -Vec3::Z, 2.0),
+        // Facing up (seen from behind): |cos| is still 1.
+        (0.5, Vec3::ZERO, Vec3::new(0.0, 0.0, 2.0), Vec3::Z, 2.0),
+        // 5 m away along (3, 0, 4), light normal -z: cos θl = 4/5.
+        (
+            1.0,
+            Vec3::ZERO,
+            Vec3::new(3.0, 0.0, 4.0),
+            -Vec3::Z,
+            25.0 / 0.8,
+        ),
+        // Edge-on: no area shows.
+        (1.0, Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::Z, 0.0),
+    ];
+    let (error, detail) = worst_of(cases.into_iter().map(|(pdf, x, y, n, want)| {
+        let got = f(pdf, x, y, n);
+        let err = if want == 0.0 {
+            got.abs() as f64
+        } else {
+            ((got - want) / want).abs() as f64
+        };
+        (
+            err,
+            format!("pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}"),
+        )
+    }));
+    Check {
+        error,
+        tolerance: 1e-4,
+        detail,
+        images: None,
+    }
+}

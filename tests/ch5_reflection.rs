@@ -1,0 +1,222 @@
+//! Chapter 5's stage: what it builds and leaves out, its stiff cases, its
+//! strategy study, determinism across thread counts, and snapshots of its
+//! report and of quantized images.
+
+mod common;
+
+use std::sync::Arc;
+
+use raystep::film::Film;
+use raystep::reflection::direct::Strategy;
+use raystep::reflection::stability::{caught, stability_cases};
+use raystep::reflection::studies::{error_against_time, Study};
+use raystep::reflection::{Reflection, DEFAULT};
+use raystep::report::{Report, Times};
+use raystep::scene::Scene;
+use raystep::stage::{Chapter, Settings};
+
+fn scene(name: &str, w: u32, h: u32) -> Scene {
+    Scene::load(&common::root().join(format!("scenes/{name}.toml")))
+        .unwrap()
+        .with_resolution(w, h)
+        .unwrap()
+}
+
+fn render(stage: &Reflection, scene: Scene, spp: u32) -> (Film, Report) {
+    let settings = Settings {
+        spp,
+        seed: 3,
+        ..Settings::default()
+    };
+    let mut r = stage.start(Arc::new(scene), &settings).unwrap();
+    while !r.pass() {}
+    (r.view(0), r.report())
+}
+
+/// Block means of the image, 2 significant decimals, as text.
+fn summary(film: &Film, blocks: u32) -> String {
+    let (bw, bh) = (film.width / blocks, film.height / blocks);
+    let mut s = String::new();
+    for by in 0..blocks {
+        for bx in 0..blocks {
+            let mut sum = glam::Vec3::ZERO;
+            for y in by * bh..(by + 1) * bh {
+                for x in bx * bw..(bx + 1) * bw {
+                    sum += film.get(x, y);
+                }
+            }
+            let m = sum / (bw * bh) as f32;
+            s += &format!(" {:.2}", (m.x + m.y + m.z) / 3.0);
+        }
+        s += "\n";
+    }
+    s
+}
+
+#[test]
+fn the_scene_decides_what_is_built() {
+    // The Cornell box: an area light, occluders, no environment.
+    let (_, r) = render(
+        &DEFAULT,
+        Scene::builtin().with_resolution(12, 12).unwrap(),
+        1,
+    );
+    let built = r.built.join("\n");
+    let left = r.left_out.join("\n");
+    assert!(built.contains("light-sampling tables"), "{built}");
+    assert!(built.contains("shadow rays"), "{built}");
+    assert!(left.contains("environment"), "{left}");
+    assert!(r
+        .facts
+        .iter()
+        .any(|(k, v)| k == "rays" && !v.starts_with("0 shadow")));
+    // The Lambert sphere: one convex mesh, one directional light.
+    let (_, r) = render(&DEFAULT, scene("lambert-sphere", 16, 16), 1);
+    let left = r.left_out.join("\n");
+    assert!(left.contains("light-sampling tables"), "{left}");
+    assert!(left.contains("shadow rays"), "{left}");
+    assert!(r
+        .facts
+        .iter()
+        .any(|(k, v)| k == "rays" && v.starts_with("0 shadow rays, 0 sampled")));
+    // The SDF scene marches; the sphere scene does not.
+    let (_, r) = render(&DEFAULT, scene("sdf-lit", 8, 6), 1);
+    assert!(r.built.join("\n").contains("sphere tracer"));
+}
+
+#[test]
+fn every_stiff_case_comes_out_as_expected_with_no_nan() {
+    let cases = stability_cases();
+    assert_eq!(cases.len(), 7);
+    for c in &cases {
+        assert!(c.case.ok, "{:?}", c.case);
+    }
+    assert_eq!(caught(&cases), 0);
+}
+
+#[test]
+fn the_study_errors_fall_as_one_over_root_n() {
+    let et = error_against_time(&Study {
+        counts: vec![16, 256],
+        repeats: 24,
+    });
+    assert_eq!(et.rows.len(), 2 * 4 * 2);
+    for pair in et.rows.chunks(2) {
+        // 16× the samples: error / 4, within the noise of 24 repeats.
+        let ratio = pair[0].error / pair[1].error;
+        assert!(
+            (2.5..6.5).contains(&ratio),
+            "{}: {} → {} (ratio {ratio})",
+            pair[0].series,
+            pair[0].error,
+            pair[1].error
+        );
+    }
+    // Light sampling beats uniform sampling on the area light.
+    let err = |s: &str| et.rows.iter().find(|r| r.series == s).unwrap().error;
+    assert!(err("area: light") < 0.3 * err("area: uniform"));
+    assert!(err("area: mis") < 0.3 * err("area: uniform"));
+}
+
+#[test]
+fn the_same_bytes_on_one_and_two_threads() {
+    let run = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| render(&DEFAULT, scene("brdf-row", 40, 16), 2).0)
+    };
+    let (a, b) = (run(1), run(2));
+    assert_eq!(a.to_srgb8(), b.to_srgb8());
+    assert_eq!(a.pixels, b.pixels);
+}
+
+#[test]
+fn mirrors_recurse_a_bounded_number_of_times() {
+    // Two mirrors facing each other, the camera between them.
+    let text = r#"
+[camera]
+eye = [0, 0, 0]
+target = [0, 0, -1]
+width = 4
+height = 4
+fov = 10
+[[materials]]
+name = "m"
+type = "mirror"
+[[objects]]
+shape = "rectangle"
+size = [100, 100]
+translate = [0, 0, -1]
+material = "m"
+[[objects]]
+shape = "rectangle"
+size = [100, 100]
+rotate = { axis = [1, 0, 0], degrees = 180 }
+translate = [0, 0, 1]
+material = "m"
+[[lights]]
+type = "point"
+position = [0, 0, 0]
+intensity = [1, 1, 1]
+"#;
+    let s = Scene::parse(text, "mirrors", "m.toml", &|r| Err((r.into(), "no".into()))).unwrap();
+    for bounces in [0u32, 3] {
+        let stage = Reflection {
+            strategy: Strategy::Mis,
+            max_mirror_bounces: bounces,
+        };
+        let (film, r) = render(&stage, s.clone(), 1);
+        let rays = r.facts.iter().find(|(k, _)| k == "rays").unwrap().1.clone();
+        assert!(
+            rays.ends_with(&format!("{} mirror bounces", 16 * bounces)),
+            "{rays}"
+        );
+        assert!(film.pixels.iter().all(|p| p.is_finite()));
+    }
+}
+
+/// The report without the lines that change from machine to machine.
+fn stable_text(r: &Report) -> String {
+    r.to_text(Times::Hide)
+        .lines()
+        .filter(|l| !l.contains("render time") && !l.contains("  scene: "))
+        .map(|l| {
+            // The BVH's build time sits inside the "built" line.
+            match l.find(", built with the lights in") {
+                Some(i) => format!(
+                    "{}{}",
+                    &l[..i],
+                    &l[l[i..].find(')').map_or(l.len(), |j| i + j)..]
+                ),
+                None => l.to_string(),
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+#[test]
+fn snapshot_report_and_images() {
+    let (film, report) = render(&DEFAULT, scene("lambert-sphere", 32, 32), 2);
+    insta::assert_snapshot!("lambert_sphere_report", stable_text(&report));
+    insta::assert_snapshot!("lambert_sphere_blocks", summary(&film, 8));
+    let (film, report) = render(&DEFAULT, scene("brdf-row", 64, 24), 4);
+    insta::assert_snapshot!("brdf_row_report", stable_text(&report));
+    insta::assert_snapshot!("brdf_row_blocks", summary(&film, 8));
+}
+
+#[test]
+fn the_lambert_sphere_is_brightest_facing_the_light_and_dark_beyond_the_terminator() {
+    // Light from (1, 1, 1)/√3: the upper-right of the sphere faces it.
+    let (film, _) = render(&DEFAULT, scene("lambert-sphere", 32, 32), 1);
+    let lit = film.get(20, 11).x;
+    let dark = film.get(8, 24).x;
+    let want = 0.8 / std::f32::consts::PI * 3.0;
+    assert!(
+        lit > 0.7 * want && lit <= want * 1.001,
+        "{lit} vs at most {want}"
+    );
+    assert!(dark < 0.1 * lit, "{dark}");
+}
