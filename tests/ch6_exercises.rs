@@ -5,30 +5,10 @@
 mod common;
 
 use raystep::exercises::ch6;
-use raystep::grading::{self, Outcome, Solution};
 
 #[test]
 fn chapter_6_references_pass_and_stubs_fail_cleanly() {
-    let exercises: Vec<_> = grading::all()
-        .into_iter()
-        .filter(|e| e.chapter == 6)
-        .collect();
-    assert_eq!(exercises.len(), 3);
-    for ex in &exercises {
-        assert!(
-            grading::run(ex, Solution::Reference).is_pass(),
-            "{}",
-            ex.id()
-        );
-        let source = std::fs::read_to_string(common::root().join(ex.file)).unwrap();
-        if source.contains("todo!()") {
-            assert!(
-                matches!(grading::run(ex, Solution::Student), Outcome::NotImplemented),
-                "{}",
-                ex.id()
-            );
-        }
-    }
+    common::references_pass_and_stubs_fail_cleanly(6, 3);
 }
 
 #[test]

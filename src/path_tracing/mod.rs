@@ -8,7 +8,7 @@
 //!
 //! Passes of a few samples per pixel accumulate progressively; the front
 //! ends read the image, the per-bounce layers and, for the Cornell box, the
-//! error against the stored reference ([`reference`]) after every pass.
+//! error against the stored reference ([`reference`](mod@reference)) after every pass.
 
 pub mod accumulate;
 pub mod bench;

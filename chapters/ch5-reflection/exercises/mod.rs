@@ -136,7 +136,7 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
 }
 
 /// Statistical: every sample is a unit direction with z ≥ 0 whose pdf is
-/// z/π; over 40,000 samples, E[z] = 2/3, E[x] = E[y] = 0 and P(z < 1/2)
+/// z/π; over 40,000 samples, E(z) = 2/3, E(x) = E(y) = 0 and P(z < 1/2)
 /// = 1/4 (for cos θ/π, P(cos θ < c) = c²). The error is the worst
 /// deviation in standard errors (5 passes), or a large number when a
 /// sample is not even a direction on the hemisphere.
