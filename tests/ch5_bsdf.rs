@@ -196,3 +196,20 @@ fn no_brdf_reflects_more_than_arrives_white_furnace() {
         }
     }
 }
+
+#[test]
+fn erfc_matches_known_values() {
+    // erfc(0) = 1, erfc(1) = 0.157299207, erfc(-1) = 1.842700793.
+    for (x, want) in [
+        (0.0, 1.0),
+        (1.0, 0.157299207),
+        (-1.0, 1.842700793),
+        (2.0, 0.004677735),
+    ] {
+        assert!(
+            (common::chi2::erfc(x) - want).abs() < 2e-7,
+            "erfc({x}) = {}",
+            common::chi2::erfc(x)
+        );
+    }
+}

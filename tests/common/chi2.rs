@@ -85,19 +85,25 @@ pub fn p_value(stat: f64, dof: usize) -> f64 {
 
 /// The complementary error function (Numerical Recipes' erfcc, |error| <
 /// 1.2e-7).
-fn erfc(x: f64) -> f64 {
+pub fn erfc(x: f64) -> f64 {
+    // The exponent's polynomial in t, highest power first (Horner's rule;
+    // written as a loop because the nested form makes rustfmt crawl).
+    const C: [f64; 10] = [
+        0.17087277,
+        -0.82215223,
+        1.48851587,
+        -1.13520398,
+        0.27886807,
+        -0.18628806,
+        0.09678418,
+        0.37409196,
+        1.00002368,
+        -1.26551223,
+    ];
     let z = x.abs();
     let t = 1.0 / (1.0 + 0.5 * z);
-    let r = t
-        * (-z * z - 1.26551223
-            + t * (1.00002368
-                + t * (0.37409196
-                    + t * (0.09678418
-                        + t * (-0.18628806
-                            + t * (0.27886807
-                                + t * (-1.13520398
-                                    + t * (1.48851587 + t * (-0.82215223 + t * 0.17087277)))))))))
-            .exp();
+    let poly = C.iter().fold(0.0, |acc, c| acc * t + c);
+    let r = t * (-z * z + poly).exp();
     if x >= 0.0 {
         r
     } else {
