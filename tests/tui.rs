@@ -779,6 +779,28 @@ fn the_real_chapters_3_and_4_count_their_primary_rays() {
     }
 }
 
+#[test]
+fn the_shading_chapters_5_and_6_count_camera_and_secondary_rays() {
+    let scene = Arc::new(Scene::builtin().with_resolution(16, 12).unwrap());
+    for n in [5, 6] {
+        let chapter = raystep::chapters::all()
+            .into_iter()
+            .find(|c| c.number() == n)
+            .unwrap();
+        let settings = Settings {
+            spp: 2,
+            ..Settings::default()
+        };
+        let mut render = chapter.start(scene.clone(), &settings).unwrap();
+        assert_eq!(render.rays(), 0, "ch{n} before a pass");
+        render.pass();
+        // At least one camera ray per pixel, and in the closed Cornell box
+        // every camera ray hits a wall, so shadow rays come on top.
+        let rays = render.rays();
+        assert!(rays > 16 * 12, "ch{n} after one pass: {rays}");
+    }
+}
+
 /// Two pairs of failure images as the grader writes them, the second newer.
 fn grade_images(dir: &std::path::Path) {
     std::fs::create_dir_all(dir).unwrap();

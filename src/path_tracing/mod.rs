@@ -264,6 +264,11 @@ impl Render for PathTracingRender {
         )
     }
 
+    fn rays(&self) -> u64 {
+        // Path segments and shadow rays, as the integrator counted them.
+        self.acc.stats.rays
+    }
+
     fn view(&self, index: usize) -> Film {
         let mut film = match index {
             1 => {

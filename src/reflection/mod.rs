@@ -245,6 +245,17 @@ impl Render for ReflectionRender {
         (self.passes, self.settings.spp.max(1))
     }
 
+    fn rays(&self) -> u64 {
+        // One camera ray per pixel and pass, plus the shadow, direction and
+        // mirror rays the estimator traced.
+        let cam = &self.scene.camera;
+        let c = &self.counters;
+        cam.width as u64 * cam.height as u64 * self.passes as u64
+            + c.shadow_rays
+            + c.direction_rays
+            + c.mirror_bounces
+    }
+
     fn view(&self, _index: usize) -> Film {
         let cam = &self.scene.camera;
         let mut film = Film::new(cam.width, cam.height);
