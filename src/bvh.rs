@@ -84,6 +84,18 @@ fn v34(v: Vec3) -> Vec3A {
 /// How much each triangle's box grows, relative to its coordinates (2⁻²⁰).
 pub const BOX_PADDING: f32 = 1.0 / 1_048_576.0;
 
+/// Each triangle's box, padded by [`BOX_PADDING`] of its coordinates.
+pub(crate) fn padded_boxes(tris: &[[Vec3; 3]]) -> Vec<Aabb> {
+    tris.iter()
+        .map(|tri| {
+            let lo = tri[0].min(tri[1]).min(tri[2]);
+            let hi = tri[0].max(tri[1]).max(tri[2]);
+            let pad = lo.abs().max(hi.abs()) * BOX_PADDING + f32::MIN_POSITIVE;
+            Aabb::new(v34(lo - pad), v34(hi + pad))
+        })
+        .collect()
+}
+
 /// A BVH over a triangle list (obvhs' `Bvh2`).
 pub struct Bvh {
     bvh: Bvh2,
@@ -108,15 +120,7 @@ impl Bvh {
         // slab test rounds, and a ray aimed exactly at a vertex or an edge
         // (which lie on the faces of their triangles' boxes) could otherwise
         // be culled a box too early, undoing the watertight test.
-        let boxes: Vec<Aabb> = tris
-            .iter()
-            .map(|tri| {
-                let lo = tri[0].min(tri[1]).min(tri[2]);
-                let hi = tri[0].max(tri[1]).max(tri[2]);
-                let pad = lo.abs().max(hi.abs()) * BOX_PADDING + f32::MIN_POSITIVE;
-                Aabb::new(v34(lo - pad), v34(hi + pad))
-            })
-            .collect();
+        let boxes = padded_boxes(tris);
         let bvh = build_bvh2(
             &boxes,
             BvhBuildParams::medium_build(),

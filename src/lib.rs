@@ -72,6 +72,7 @@ pub mod tui;
 pub mod visibility_agreement;
 pub mod warp;
 pub mod watertight_fast;
+pub mod wide_bvh;
 pub mod world;
 
 pub use error::{Error, Result};

@@ -17,6 +17,7 @@ use crate::sdf::march::{sphere_trace, March};
 use crate::sdf::normal::{normal, NormalScheme};
 use crate::sdf::{scene_distance, SdfObject};
 use crate::spawn::offset_origin;
+use crate::wide_bvh::WideBvh;
 
 /// A ray's first hit, with what shading needs.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -38,6 +39,11 @@ pub struct Interaction {
 pub struct World {
     /// Chapter 3's triangles and BVH, or `None` for a scene without meshes.
     pub geometry: Option<Geometry>,
+    /// The same BVH in its 8-wide form, which `intersect` and `unoccluded`
+    /// trace through.
+    pub wide: Option<WideBvh>,
+    /// The unit outward (winding) normal of each triangle of `geometry`.
+    pub normals: Vec<Vec3>,
     /// The material of each scene mesh.
     pub mesh_material: Vec<usize>,
     /// SDF objects (empty: nothing is marched).
@@ -56,12 +62,24 @@ impl World {
     /// Builds what `scene` needs.
     pub fn new(scene: &Scene) -> World {
         let geometry = (!scene.meshes.is_empty()).then(|| Geometry::new(scene));
+        let wide = geometry
+            .as_ref()
+            .and_then(|g| WideBvh::build(&g.triangles.tris));
+        let normals = geometry.as_ref().map_or(Vec::new(), |g| {
+            g.triangles
+                .tris
+                .iter()
+                .map(|[p0, p1, p2]| (*p1 - *p0).cross(*p2 - *p0).normalize_or(Vec3::Z))
+                .collect()
+        });
         let march = March {
             max_distance: scene_extent(scene),
             ..March::default()
         };
         World {
             geometry,
+            wide,
+            normals,
             mesh_material: scene.meshes.iter().map(|m| m.material).collect(),
             sdfs: scene.sdfs.clone(),
             march,
@@ -79,22 +97,17 @@ impl World {
     /// The first surface along `ray` before `t_max`.
     pub fn intersect_within(&self, ray: &Ray, t_max: f32) -> Option<Interaction> {
         let mut best: Option<Interaction> = None;
-        if let Some(g) = &self.geometry {
-            if let Some(bvh) = &g.bvh {
-                if let Some(hit) = bvh.closest(ray, t_max, crate::triangle::Intersector::Watertight)
-                {
-                    let k = hit.triangle as usize;
-                    let tri = g.triangles.tris[k];
-                    let [p0, p1, p2] = tri;
-                    let mesh = g.triangles.mesh[k] as usize;
-                    best = Some(Interaction {
-                        t: hit.t,
-                        p: hit.point(tri),
-                        n: (p1 - p0).cross(p2 - p0).normalize_or(Vec3::Z),
-                        material: self.mesh_material[mesh],
-                        surface: Surface::Mesh(mesh),
-                    });
-                }
+        if let (Some(g), Some(bvh)) = (&self.geometry, &self.wide) {
+            if let Some(hit) = bvh.closest(ray, t_max) {
+                let k = hit.triangle as usize;
+                let mesh = g.triangles.mesh[k] as usize;
+                best = Some(Interaction {
+                    t: hit.t,
+                    p: hit.point(g.triangles.tris[k]),
+                    n: self.normals[k],
+                    material: self.mesh_material[mesh],
+                    surface: Surface::Mesh(mesh),
+                });
             }
         }
         if !self.sdfs.is_empty() {
@@ -150,8 +163,8 @@ impl World {
         if t_max <= 0.0 {
             return true;
         }
-        if let Some(bvh) = self.geometry.as_ref().and_then(|g| g.bvh.as_ref()) {
-            if bvh.occluded(&ray, t_max, crate::triangle::Intersector::Watertight) {
+        if let Some(bvh) = &self.wide {
+            if bvh.occluded(&ray, t_max) {
                 return false;
             }
         }

@@ -80,23 +80,31 @@ impl Accumulator {
                     for s in first..first + count {
                         let mut sampler = PathSampler::new(sampler, seed, pixel, s as u64);
                         let raster = Vec2::new(x as f32, y as f32) + sampler.get2();
-                        let mut layers = [Vec3::ZERO; LAYER_SLOTS];
-                        trace_path(
-                            world,
-                            camera.ray(raster),
-                            &mut sampler,
-                            settings,
-                            &mut layers,
-                            &mut stats,
-                        );
-                        let l: Vec3 = layers.iter().sum();
+                        let ray = camera.ray(raster);
+                        let l = match layer_row.as_deref_mut() {
+                            Some(row) => {
+                                let mut layers = [Vec3::ZERO; LAYER_SLOTS];
+                                trace_path(
+                                    world,
+                                    ray,
+                                    &mut sampler,
+                                    settings,
+                                    &mut layers,
+                                    &mut stats,
+                                );
+                                for (acc, v) in row[x].iter_mut().zip(layers) {
+                                    *acc += v;
+                                }
+                                layers.iter().sum()
+                            }
+                            None => {
+                                let mut l = Vec3::ZERO;
+                                trace_path(world, ray, &mut sampler, settings, &mut l, &mut stats);
+                                l
+                            }
+                        };
                         sum[x] += l;
                         sum_sq[x] += l * l;
-                        if let Some(row) = layer_row.as_deref_mut() {
-                            for (acc, v) in row[x].iter_mut().zip(layers) {
-                                *acc += v;
-                            }
-                        }
                     }
                 }
                 stats

@@ -10,8 +10,18 @@
 //! 256x256; the table also gives the latter's noise part, √(mean s²/n),
 //! estimated from the render's own sample variance.
 
+use std::time::Instant;
+
+use glam::Vec2;
+
+use crate::material::Frame;
+use crate::ray::Ray;
 use crate::report::{format_number, Table};
+use crate::sampling::random;
 use crate::scene::Scene;
+use crate::triangle::Intersector;
+use crate::warp::cosine_hemisphere;
+use crate::world::World;
 
 use super::accumulate::downsample;
 use super::integrator::PathSettings;
@@ -64,4 +74,106 @@ pub fn bench(spp: u32) -> crate::error::Result<Table> {
         ]);
     }
     Ok(t)
+}
+
+/// Rays like the path tracer's, from one path vertex per pixel of
+/// `scene`: (bounce rays, shadow rays with their t_max).
+fn vertex_rays(world: &World, scene: &Scene) -> (Vec<Ray>, Vec<(Ray, f32)>) {
+    let (w, h) = (scene.camera.width, scene.camera.height);
+    let (mut bounce, mut shadow) = (Vec::new(), Vec::new());
+    for pixel in 0..(w * h) as u64 {
+        let u = |d| random(99, pixel, 0, d);
+        let raster = Vec2::new(
+            (pixel % w as u64) as f32 + u(0),
+            (pixel / w as u64) as f32 + u(1),
+        );
+        let Some(it) = world.intersect(&scene.camera.ray(raster)) else {
+            continue;
+        };
+        let n = if it.n.dot(scene.camera.ray(raster).dir) > 0.0 {
+            -it.n
+        } else {
+            it.n
+        };
+        let wi = Frame::from_normal(n).to_world(cosine_hemisphere(Vec2::new(u(2), u(3))));
+        if let Some(r) = world.spawn(it.p, it.n, wi) {
+            bounce.push(r);
+        }
+        if let Some(light) = world.lights.lights.first() {
+            if let Some(ls) = light.sample_li(it.p, n, Vec2::new(u(4), u(5))) {
+                if let Some(r) = world.spawn(it.p, it.n, ls.wi) {
+                    shadow.push((r, ls.dist * (1.0 - 1e-4)));
+                }
+            }
+        }
+    }
+    (bounce, shadow)
+}
+
+/// Million queries per second of `query` over `n` items, best of 5.
+fn mqps(n: usize, mut query: impl FnMut() -> usize) -> f64 {
+    let mut best = f64::INFINITY;
+    let mut check = 0;
+    for _ in 0..5 {
+        let t = Instant::now();
+        check += query();
+        best = best.min(t.elapsed().as_secs_f64());
+    }
+    std::hint::black_box(check);
+    n as f64 / best / 1e6
+}
+
+/// The ray queries alone, on one thread: chapter 3's binary BVH against
+/// the wide BVH the path tracer uses, on rays from the path tracer's own
+/// vertices (bounce rays: closest hit; shadow rays: occlusion).
+pub fn query_bench() -> Table {
+    let scene = Scene::builtin();
+    let world = World::new(&scene);
+    let (bounce, shadow) = vertex_rays(&world, &scene);
+    let mut t = Table::new(
+        "ray queries on the Cornell box, one thread, million queries per second (best of 5)",
+        &["query", "rays", "binary BVH (ch3)", "wide BVH (ch6)"],
+    );
+    let (Some(g), Some(wide)) = (&world.geometry, &world.wide) else {
+        return t;
+    };
+    let Some(bvh) = &g.bvh else { return t };
+    let x = Intersector::Watertight;
+    t.row(vec![
+        "closest hit (bounce rays)".into(),
+        bounce.len().to_string(),
+        format!(
+            "{:.2}",
+            mqps(bounce.len(), || bounce
+                .iter()
+                .filter(|r| bvh.closest(r, f32::INFINITY, x).is_some())
+                .count())
+        ),
+        format!(
+            "{:.2}",
+            mqps(bounce.len(), || bounce
+                .iter()
+                .filter(|r| wide.closest(r, f32::INFINITY).is_some())
+                .count())
+        ),
+    ]);
+    t.row(vec![
+        "occlusion (shadow rays)".into(),
+        shadow.len().to_string(),
+        format!(
+            "{:.2}",
+            mqps(shadow.len(), || shadow
+                .iter()
+                .filter(|(r, d)| bvh.occluded(r, *d, x))
+                .count())
+        ),
+        format!(
+            "{:.2}",
+            mqps(shadow.len(), || shadow
+                .iter()
+                .filter(|(r, d)| wide.occluded(r, *d))
+                .count())
+        ),
+    ]);
+    t
 }

@@ -46,6 +46,8 @@ pub fn run(stage: &GlobalIllumination, common: &CommonArgs, mode: Mode) -> Resul
             let spp = if common.spp > 1 { common.spp } else { 64 };
             let t = bench::bench(spp)?;
             write!(out, "{}", t.to_text()).map_err(stdout_err)?;
+            writeln!(out).map_err(stdout_err)?;
+            write!(out, "{}", bench::query_bench().to_text()).map_err(stdout_err)?;
             Ok(())
         }
         Mode::MakeReference => make_reference(stage, common, &mut out),

@@ -136,25 +136,47 @@ impl PathStats {
     }
 }
 
+/// Where a path's contributions go: into the layer of their bounce count
+/// (`[Vec3; LAYER_SLOTS]`), or, when only the final image is wanted,
+/// straight into one sum (`Vec3`, with nothing per layer to clear or add).
+pub trait Contributions {
+    /// Adds `c`, which belongs to layer slot `slot`.
+    fn add_to(&mut self, slot: usize, c: Vec3);
+}
+
+impl Contributions for [Vec3; LAYER_SLOTS] {
+    #[inline(always)]
+    fn add_to(&mut self, slot: usize, c: Vec3) {
+        self[slot] += c;
+    }
+}
+
+impl Contributions for Vec3 {
+    #[inline(always)]
+    fn add_to(&mut self, _slot: usize, c: Vec3) {
+        *self += c;
+    }
+}
+
 /// Adds `c` to slot `slot` unless it is NaN or infinite (then counts it).
-#[inline]
-fn add(layers: &mut [Vec3; LAYER_SLOTS], slot: usize, c: Vec3, stats: &mut PathStats) {
+#[inline(always)]
+fn add(layers: &mut impl Contributions, slot: usize, c: Vec3, stats: &mut PathStats) {
     if c.is_finite() {
-        layers[slot] += c;
+        layers.add_to(slot, c);
     } else {
         stats.nonfinite += 1;
     }
 }
 
 /// Traces one path from the camera ray `ray`, adding its contributions to
-/// `layers` (by bounce count; the pixel value is their sum).
+/// `layers` (by bounce count, or summed; the pixel value is their sum).
 // ANCHOR: trace_path
 pub fn trace_path(
     world: &World,
     mut ray: Ray,
     sampler: &mut PathSampler,
     settings: &PathSettings,
-    layers: &mut [Vec3; LAYER_SLOTS],
+    layers: &mut impl Contributions,
     stats: &mut PathStats,
 ) {
     let estimator = settings.estimator;
