@@ -49,6 +49,7 @@ pub mod mesh;
 pub mod mesh_check;
 pub mod mis;
 pub mod path_tracing;
+pub mod plot;
 pub mod preview;
 pub mod projection;
 pub mod radiometry;

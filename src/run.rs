@@ -29,8 +29,8 @@ pub struct CommonArgs {
     /// Image height in pixels (overrides the scene).
     #[arg(long)]
     pub height: Option<u32>,
-    /// Samples per pixel, for chapters that sample.
-    #[arg(long, default_value_t = 1)]
+    /// Samples per pixel, for chapters that sample (at least 1).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
     pub spp: u32,
     /// Seed for every random number.
     #[arg(long, default_value_t = 0)]
@@ -44,8 +44,8 @@ pub struct CommonArgs {
     /// Worker threads (default: all cores). Output does not depend on it.
     #[arg(long)]
     pub threads: Option<usize>,
-    /// Width of the printed preview in characters.
-    #[arg(long, default_value_t = 64)]
+    /// Width of the printed preview in characters (at least 1).
+    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..))]
     pub preview_width: u32,
 }
 

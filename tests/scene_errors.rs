@@ -326,3 +326,31 @@ fn chapter_5_sky_keys_are_checked() {
     );
     assert_mentions(&m, &["lights[1]", "at most one environment", "lights[0]"]);
 }
+
+#[test]
+fn zero_samples_or_preview_width_is_a_usage_error_in_every_chapter() {
+    let chapters = [
+        ("ch1", env!("CARGO_BIN_EXE_ch1")),
+        ("ch2", env!("CARGO_BIN_EXE_ch2")),
+        ("ch3", env!("CARGO_BIN_EXE_ch3")),
+        ("ch4", env!("CARGO_BIN_EXE_ch4")),
+        ("ch5", env!("CARGO_BIN_EXE_ch5")),
+        ("ch6", env!("CARGO_BIN_EXE_ch6")),
+    ];
+    let out = common::temp_dir("zero-flags").join("out");
+    for (name, exe) in chapters {
+        for flag in ["--spp", "--preview-width"] {
+            let result = std::process::Command::new(exe)
+                .args([flag, "0", "--out", out.to_str().unwrap()])
+                .output()
+                .unwrap();
+            let stderr = String::from_utf8_lossy(&result.stderr);
+            // Refused by the flag parser (clap's usage errors exit with 2),
+            // naming the flag, before anything renders.
+            assert_eq!(result.status.code(), Some(2), "{name} {flag} 0: {stderr}");
+            assert!(stderr.contains(flag), "{name} {flag} 0: {stderr}");
+            assert!(stderr.contains("0 is not in 1.."), "{name}: {stderr}");
+            assert!(!out.exists(), "{name} {flag} 0 wrote {}", out.display());
+        }
+    }
+}

@@ -10,7 +10,7 @@
 
 mod common;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
@@ -87,20 +87,21 @@ fn pngs(dir: &Path) -> Vec<std::path::PathBuf> {
         .unwrap_or_default()
 }
 
-#[test]
-fn the_real_binary_in_a_terminal() {
+/// A private tmux session running a shell, in a fresh temporary folder
+/// named after `name`, once its prompt is up. `None` (the test is skipped
+/// with a message) without tmux, except under `CI`, where that fails.
+fn shell(name: &str) -> Option<(Tmux, PathBuf)> {
     if !tmux_available() {
         assert!(
             std::env::var_os("CI").is_none(),
             "tmux is missing under CI (.ci/run installs it)"
         );
         eprintln!("skipped: tmux is not installed (apt-get install tmux)");
-        return;
+        return None;
     }
-    let dir = common::temp_dir("tui-e2e");
-    let out = dir.join("out");
+    let dir = common::temp_dir(name);
     let tmux = Tmux {
-        socket: format!("raystep-e2e-{}", std::process::id()),
+        socket: format!("raystep-{name}-{}", std::process::id()),
     };
     let started = tmux.run(&[
         "new-session",
@@ -117,6 +118,34 @@ fn the_real_binary_in_a_terminal() {
     ]);
     assert!(started.status.success(), "{started:?}");
     tmux.wait("the shell", 10, |_, s| s.contains("READY$"));
+    Some((tmux, dir))
+}
+
+/// Runs `raystep` in the shell with the test hook `hook` set (it fails
+/// while the UI owns the terminal), waits until the shell prints exit
+/// status `code` on the main screen, checks that the cursor is visible and
+/// returns the screen.
+fn run_failing(tmux: &Tmux, dir: &Path, hook: &str, code: u8) -> String {
+    tmux.keys(&format!(
+        "{hook}=1 {} --scenes {}; echo \"EXIT=$?\"",
+        env!("CARGO_BIN_EXE_raystep"),
+        dir.display()
+    ));
+    tmux.key("Enter");
+    let exit = format!("EXIT={code}");
+    let screen = tmux.wait(&format!("the shell after {exit}"), 30, |t, s| {
+        s.contains(&exit) && t.flag("alternate_on") == "0"
+    });
+    assert_eq!(tmux.flag("cursor_flag"), "1");
+    screen
+}
+
+#[test]
+fn the_real_binary_in_a_terminal() {
+    let Some((tmux, dir)) = shell("tui-e2e") else {
+        return;
+    };
+    let out = dir.join("out");
 
     let command = format!(
         "{} --scenes {} --out {}; echo \"EXIT=$?\"",
@@ -184,82 +213,21 @@ fn the_real_binary_in_a_terminal() {
 
 #[test]
 fn a_panic_restores_the_terminal_before_printing() {
-    if !tmux_available() {
-        assert!(std::env::var_os("CI").is_none(), "tmux is missing under CI");
-        eprintln!("skipped: tmux is not installed (apt-get install tmux)");
+    let Some((tmux, dir)) = shell("tui-e2e-panic") else {
         return;
-    }
-    let dir = common::temp_dir("tui-e2e-panic");
-    let tmux = Tmux {
-        socket: format!("raystep-e2e-panic-{}", std::process::id()),
     };
-    let started = tmux.run(&[
-        "new-session",
-        "-d",
-        "-s",
-        "t",
-        "-x",
-        "110",
-        "-y",
-        "34",
-        "-c",
-        dir.to_str().unwrap(),
-        "env PS1='READY$ ' sh",
-    ]);
-    assert!(started.status.success(), "{started:?}");
-    tmux.wait("the shell", 10, |_, s| s.contains("READY$"));
-    tmux.keys(&format!(
-        "{}=1 {} --scenes {}; echo \"EXIT=$?\"",
-        raystep::tui::TEST_PANIC,
-        env!("CARGO_BIN_EXE_raystep"),
-        dir.display()
-    ));
-    tmux.key("Enter");
-    let screen = tmux.wait("the shell after the panic", 30, |t, s| {
-        s.contains("EXIT=101") && t.flag("alternate_on") == "0"
-    });
+    let screen = run_failing(&tmux, &dir, raystep::tui::TEST_PANIC, 101);
     assert!(screen.contains("a deliberate panic"), "{screen}");
-    assert_eq!(tmux.flag("cursor_flag"), "1");
 }
 
 #[test]
 fn an_error_restores_the_terminal_before_printing() {
-    if !tmux_available() {
-        assert!(std::env::var_os("CI").is_none(), "tmux is missing under CI");
-        eprintln!("skipped: tmux is not installed (apt-get install tmux)");
+    let Some((tmux, dir)) = shell("tui-e2e-error") else {
         return;
-    }
-    let dir = common::temp_dir("tui-e2e-error");
-    let tmux = Tmux {
-        socket: format!("raystep-e2e-error-{}", std::process::id()),
     };
-    let started = tmux.run(&[
-        "new-session",
-        "-d",
-        "-s",
-        "t",
-        "-x",
-        "110",
-        "-y",
-        "34",
-        "-c",
-        dir.to_str().unwrap(),
-        "env PS1='READY$ ' sh",
-    ]);
-    assert!(started.status.success(), "{started:?}");
-    tmux.wait("the shell", 10, |_, s| s.contains("READY$"));
     // The event loop returns an error after its first frame, while the UI
     // owns the terminal (raw mode, alternate screen, hidden cursor).
-    tmux.keys(&format!(
-        "{}=1 {} --scenes {}; echo \"EXIT=$?\"",
-        raystep::tui::TEST_ERROR,
-        env!("CARGO_BIN_EXE_raystep"),
-        dir.display()
-    ));
-    tmux.key("Enter");
-    let screen = tmux.wait("the shell after the error", 30, |t, s| {
-        s.contains("EXIT=2") && t.flag("alternate_on") == "0"
-    });
+    let screen = run_failing(&tmux, &dir, raystep::tui::TEST_ERROR, 2);
     // The message was printed after restoring, so it is on the main
     // screen, above the exit status, and the UI is gone.
     let message = screen
@@ -268,7 +236,6 @@ fn an_error_restores_the_terminal_before_printing() {
     let exit = screen.lines().position(|l| l.contains("EXIT=2"));
     assert!(message.is_some() && message < exit, "{screen}");
     assert!(!screen.contains("chapters"), "{screen}");
-    assert_eq!(tmux.flag("cursor_flag"), "1");
     // Raw mode is off: the shell echoes typed text and runs it on Enter.
     tmux.keys("echo typed-$((6*7))");
     tmux.key("Enter");

@@ -4,11 +4,11 @@
 
 use std::path::{Path, PathBuf};
 
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
-use crate::draw::{dot, line};
 use crate::error::Result;
 use crate::film::Film;
+use crate::plot::{log_log, LogLogStyle, Polyline};
 use crate::report::ErrorTime;
 
 use super::accumulate::Accumulator;
@@ -88,74 +88,27 @@ pub fn series_color(series: &str) -> Vec3 {
 /// whose name starts with `prefix`, on a white background with grey
 /// decade lines; colours from [`series_color`].
 pub fn plot_error_time(et: &ErrorTime, prefix: &str, width: u32, height: u32) -> Film {
-    // The draw helpers keep the brighter of old and new, so draw the
-    // complementary colours on black and invert at the end.
-    let mut film = Film::new(width, height);
-    let rows: Vec<_> = et
-        .rows
+    let series: Vec<Polyline> = et
+        .series()
         .iter()
-        .filter(|r| r.series.starts_with(prefix) && r.error > 0.0 && r.seconds > 0.0)
+        .filter(|s| s.starts_with(prefix))
+        .map(|s| Polyline {
+            // Drawn light-on-dark and inverted: the complement shows.
+            colour: Vec3::ONE - series_color(s),
+            points: et
+                .rows
+                .iter()
+                .filter(|r| &r.series == s && r.error > 0.0 && r.seconds > 0.0)
+                .map(|r| (r.seconds, r.error))
+                .collect(),
+        })
         .collect();
-    if rows.is_empty() {
-        return invert(film);
-    }
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for r in &rows {
-        x0 = x0.min(r.seconds.log10());
-        x1 = x1.max(r.seconds.log10());
-        y0 = y0.min(r.error.log10());
-        y1 = y1.max(r.error.log10());
-    }
-    let (x0, x1, y0, y1) = (x0.floor(), x1.ceil(), y0.floor(), y1.ceil());
-    let margin = 12.0;
-    let to_px = |lt: f64, le: f64| {
-        Vec2::new(
-            (margin + (lt - x0) / (x1 - x0).max(1e-9) * (width as f64 - 2.0 * margin)) as f32,
-            (height as f64
-                - margin
-                - (le - y0) / (y1 - y0).max(1e-9) * (height as f64 - 2.0 * margin))
-                as f32,
-        )
+    let style = LogLogStyle {
+        background: Vec3::ZERO,
+        margin: 12.0,
+        grid: Vec3::splat(0.2),
+        guide: None,
+        invert: true,
     };
-    let grey = Vec3::splat(0.2);
-    for d in x0 as i32..=x1 as i32 {
-        line(
-            &mut film,
-            to_px(d as f64, y0),
-            to_px(d as f64, y1),
-            grey,
-            grey,
-        );
-    }
-    for d in y0 as i32..=y1 as i32 {
-        line(
-            &mut film,
-            to_px(x0, d as f64),
-            to_px(x1, d as f64),
-            grey,
-            grey,
-        );
-    }
-    for s in et.series().iter().filter(|s| s.starts_with(prefix)) {
-        let c = Vec3::ONE - series_color(s);
-        let pts: Vec<Vec2> = rows
-            .iter()
-            .filter(|r| &r.series == s)
-            .map(|r| to_px(r.seconds.log10(), r.error.log10()))
-            .collect();
-        for w in pts.windows(2) {
-            line(&mut film, w[0], w[1], c, c);
-        }
-        for p in &pts {
-            dot(&mut film, *p, 2.5, c);
-        }
-    }
-    invert(film)
-}
-
-fn invert(mut film: Film) -> Film {
-    film.pixels
-        .iter_mut()
-        .for_each(|p| *p = (Vec3::ONE - *p).max(Vec3::ZERO));
-    film
+    log_log(&series, &style, width, height)
 }

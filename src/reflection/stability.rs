@@ -86,6 +86,41 @@ fn finite_all(strategy_results: &[(Vec3, Counters)]) -> (bool, u64) {
     (strategy_results.iter().all(|r| r.0.is_finite()), caught)
 }
 
+/// [`shade`] with each strategy; with whether every result is finite and
+/// the NaN/Inf caught over all of them.
+fn shade_each(
+    world: &World,
+    strategies: &[Strategy],
+    wo: Vec3,
+    n: u32,
+) -> (Vec<(Vec3, Counters)>, bool, u64) {
+    let results: Vec<_> = strategies.iter().map(|&s| shade(world, s, wo, n)).collect();
+    let (finite, caught) = finite_all(&results);
+    (results, finite, caught)
+}
+
+/// A point light of intensity 1 at `position` (TOML, `[x, y, z]`).
+fn point_light(position: &str) -> String {
+    format!("\n[[lights]]\ntype = \"point\"\nposition = {position}\nintensity = [1, 1, 1]\n")
+}
+
+/// A black rectangle emitting `emission` (TOML), one-sided unless
+/// `two_sided`, of `size`, placed by the TOML lines `placement`.
+fn lamp(emission: &str, two_sided: bool, size: &str, placement: &str) -> String {
+    let sides = if two_sided { "two_sided = true\n" } else { "" };
+    format!(
+        "[[materials]]
+name = \"lamp\"
+reflectance = [0, 0, 0]
+emission = {emission}
+{sides}[[objects]]
+shape = \"rectangle\"
+size = {size}
+material = \"lamp\"
+{placement}"
+    )
+}
+
 fn row(name: &str, expected: &str, measured: String, ok: bool, caught: u64) -> CaseResult {
     CaseResult {
         case: StabilityCase::new(name, expected, measured, ok),
@@ -113,7 +148,8 @@ pub fn point_light_at_distance_zero() -> CaseResult {
     let mut values = Vec::new();
     for d in [1e-3f32, 1e-30] {
         let w = world(&format!(
-            "{FLOOR}\n[[lights]]\ntype = \"point\"\nposition = [0, 0, {d:e}]\nintensity = [1, 1, 1]\n"
+            "{FLOOR}{}",
+            point_light(&format!("[0, 0, {d:e}]"))
         ));
         let r = shade(&w, Strategy::Mis, Vec3::Z, 1);
         values.push(r.0.x);
@@ -247,26 +283,18 @@ pub fn pdf_at_the_ends_of_u() -> CaseResult {
 /// A 1e-4 × 1e-4 m light (area 1e-8) of radiance 1e8 above the floor.
 pub fn tiny_bright_area_light() -> CaseResult {
     let w = world(&format!(
-        "{FLOOR}
-[[materials]]
-name = \"lamp\"
-reflectance = [0, 0, 0]
-emission = [1e8, 1e8, 1e8]
-[[objects]]
-shape = \"rectangle\"
-size = [1e-4, 1e-4]
-material = \"lamp\"
-rotate = {{ axis = [1, 0, 0], degrees = 180 }}
-translate = [0, 0, 1]
-"
+        "{FLOOR}{}",
+        lamp(
+            "[1e8, 1e8, 1e8]",
+            false,
+            "[1e-4, 1e-4]",
+            "rotate = { axis = [1, 0, 0], degrees = 180 }\ntranslate = [0, 0, 1]\n"
+        )
     ));
     // Exact: E ≈ Le · A / d² (the light is tiny and straight above).
     let exact = 0.5 / std::f32::consts::PI * 1e8 * 1e-8;
-    let mut results = Vec::new();
-    for s in [Strategy::Light, Strategy::Mis, Strategy::Uniform] {
-        results.push(shade(&w, s, Vec3::Z, 64));
-    }
-    let (finite, caught) = finite_all(&results);
+    let strategies = [Strategy::Light, Strategy::Mis, Strategy::Uniform];
+    let (results, finite, caught) = shade_each(&w, &strategies, Vec3::Z, 64);
     let light = results[0].0.x;
     row(
         "tiny area light (A = 1e-8 m², Le = 1e8)",
@@ -285,35 +313,20 @@ translate = [0, 0, 1]
 
 /// Point and area lights lying exactly in the floor's plane.
 pub fn light_in_the_surface_plane() -> CaseResult {
+    let point = point_light("[1, 0, 0]");
     let w = world(&format!(
-        "{FLOOR}
-[[lights]]
-type = \"point\"
-position = [1, 0, 0]
-intensity = [1, 1, 1]
-[[materials]]
-name = \"lamp\"
-reflectance = [0, 0, 0]
-emission = [1, 1, 1]
-two_sided = true
-[[objects]]
-shape = \"rectangle\"
-size = [1, 1]
-material = \"lamp\"
-rotate = {{ axis = [1, 0, 0], degrees = 90 }}
-translate = [0, 3, 0]
-"
+        "{FLOOR}{point}{}",
+        lamp(
+            "[1, 1, 1]",
+            true,
+            "[1, 1]",
+            "rotate = { axis = [1, 0, 0], degrees = 90 }\ntranslate = [0, 3, 0]\n"
+        )
     ));
     // The vertical lamp stands on the floor's plane: half of it is below.
     // Only the point light is tested for exactly 0; everything must be finite.
-    let mut results = Vec::new();
-    for s in Strategy::ALL {
-        results.push(shade(&w, s, Vec3::Z, 16));
-    }
-    let (finite, caught) = finite_all(&results);
-    let in_plane = world(&format!(
-        "{FLOOR}\n[[lights]]\ntype = \"point\"\nposition = [1, 0, 0]\nintensity = [1, 1, 1]\n"
-    ));
+    let (_, finite, caught) = shade_each(&w, &Strategy::ALL, Vec3::Z, 16);
+    let in_plane = world(&format!("{FLOOR}{point}"));
     let (l, _) = shade(&in_plane, Strategy::Mis, Vec3::Z, 1);
     row(
         "lights in the surface's plane (point; standing rectangle)",
@@ -328,27 +341,11 @@ translate = [0, 3, 0]
 /// under it: no light arrives from either.
 pub fn back_facing_light() -> CaseResult {
     let w = world(&format!(
-        "{FLOOR}
-[[lights]]
-type = \"point\"
-position = [0, 0, -1]
-intensity = [1, 1, 1]
-[[materials]]
-name = \"lamp\"
-reflectance = [0, 0, 0]
-emission = [5, 5, 5]
-[[objects]]
-shape = \"rectangle\"
-size = [1, 1]
-material = \"lamp\"
-translate = [0, 0, 1]
-"
+        "{FLOOR}{}{}",
+        point_light("[0, 0, -1]"),
+        lamp("[5, 5, 5]", false, "[1, 1]", "translate = [0, 0, 1]\n")
     ));
-    let mut results = Vec::new();
-    for s in Strategy::ALL {
-        results.push(shade(&w, s, Vec3::Z, 64));
-    }
-    let (finite, caught) = finite_all(&results);
+    let (results, finite, caught) = shade_each(&w, &Strategy::ALL, Vec3::Z, 64);
     let max = results
         .iter()
         .map(|r| r.0.max_element())
