@@ -19,8 +19,8 @@
 //! | rasterization | 2 | [`raster`], [`mesh_check`] | `ch2` | `book/src/ch2-rasterization.md` |
 //! | ray-triangle | 3 | [`ray`], [`triangle`], [`bvh`], [`watertight_fast`], [`spawn`], [`raytrace`] | `ch3` | `book/src/ch3-ray-triangle.md` |
 //! | implicit surfaces | 4 | [`sdf`], [`sphere_tracing`] | `ch4` | `book/src/ch4-sphere-tracing.md` |
-//! | reflection equation | 5 | [`radiometry`], [`warp`], [`light`], [`material`], [`world`], [`reflection`] | `ch5` | `book/src/ch5-reflection.md` |
-//! | global illumination | 6 | [`material`], [`light`], [`world`], [`mis`], [`path_tracing`] | `ch6` | `book/src/ch6-global-illumination.md` |
+//! | reflection equation | 5 | [`radiometry`], [`warp`], [`light`], [`material`], [`world`], [`wide_bvh`], [`reflection`], [`plot`] | `ch5` | `book/src/ch5-reflection.md` |
+//! | global illumination | 6 | [`material`], [`light`], [`world`], [`wide_bvh`], [`mis`], [`path_tracing`], [`plot`] | `ch6` | `book/src/ch6-global-illumination.md` |
 //!
 //! The lecture's symbols and the names used here are listed side by side in
 //! the book's notation table (`book/src/notation.md`).

@@ -91,7 +91,9 @@ impl<'a> WatertightRay<'a> {
         } else {
             2
         };
-        let k = [(kz + 1) % 3, (kz + 2) % 3, kz];
+        // (kz + 1) % 3, (kz + 2) % 3, kz, without the divisions.
+        const PERMUTATION: [[usize; 3]; 3] = [[1, 2, 0], [2, 0, 1], [0, 1, 2]];
+        let k = PERMUTATION[kz];
         let (dir, origin) = (ray.dir.to_array(), ray.origin.to_array());
         let d = Vec3::new(dir[k[0]], dir[k[1]], dir[k[2]]);
         WatertightRay {

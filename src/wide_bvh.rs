@@ -76,6 +76,7 @@ impl WideBvh {
 
     /// The box-testing ray: [`NODE_SHIFT`] behind `ray`, reaching
     /// `t_max` on the real ray.
+    // ANCHOR: node_ray
     #[inline(always)]
     fn node_ray(ray: &Ray, t_max: f32) -> ORay {
         let o = ray.origin - NODE_SHIFT * ray.dir;
@@ -87,6 +88,7 @@ impl WideBvh {
             node_t(t_max),
         )
     }
+    // ANCHOR_END: node_ray
 
     /// The closest hit in (0, t_max); `Hit::triangle` indexes the list
     /// chapter 3's BVH was built from.
@@ -94,7 +96,7 @@ impl WideBvh {
         let mut node_ray = Self::node_ray(ray, t_max);
         let mut state = self.bvh.new_traversal(node_ray.direction);
         let mut node;
-        let mut wr: Option<WatertightRay> = None;
+        let wr = WatertightRay::new(ray);
         let mut best: Option<(Hit, usize)> = None;
         let mut t_best = t_max;
         traverse!(
@@ -104,7 +106,6 @@ impl WideBvh {
             node.intersect_ray(&node_ray, state.oct_inv4),
             {
                 let k = state.primitive_id as usize;
-                let wr = wr.get_or_insert_with(|| WatertightRay::new(ray));
                 if let Some(hit) = wr.intersect(&self.tris[k], 0.0, t_best) {
                     t_best = hit.t;
                     node_ray.tmax = node_t(hit.t);
@@ -123,7 +124,7 @@ impl WideBvh {
         let node_ray = Self::node_ray(ray, t_max);
         let mut state = self.bvh.new_traversal(node_ray.direction);
         let mut node;
-        let mut wr: Option<WatertightRay> = None;
+        let wr = WatertightRay::new(ray);
         let mut hit = false;
         'search: {
             traverse!(
@@ -133,7 +134,6 @@ impl WideBvh {
                 node.intersect_ray(&node_ray, state.oct_inv4),
                 {
                     let k = state.primitive_id as usize;
-                    let wr = wr.get_or_insert_with(|| WatertightRay::new(ray));
                     if wr.intersect(&self.tris[k], 0.0, t_max).is_some() {
                         hit = true;
                         break 'search;

@@ -1,5 +1,6 @@
 //! The scene as the shading chapters (5 and 6) see it: one `intersect`
-//! and one shadow-ray test over meshes (chapter 3's BVH) and SDF objects
+//! and one shadow-ray test over meshes (chapter 3's BVH, in the 8-wide form
+//! of [`crate::wide_bvh`]) and SDF objects
 //! (chapter 4's sphere tracing), each surface's BSDF, and the lights.
 //!
 //! Nothing is built for what the scene lacks: no BVH without meshes, no
@@ -7,10 +8,10 @@
 
 use glam::Vec3;
 
+use crate::bvh::Triangles;
 use crate::light::{Light, Lights};
 use crate::material::Bsdf;
 use crate::ray::Ray;
-use crate::raytrace::Geometry;
 use crate::scene::{Material, Scene};
 use crate::sdf::hit::Surface;
 use crate::sdf::march::{sphere_trace, March};
@@ -37,12 +38,12 @@ pub struct Interaction {
 
 /// Meshes, SDFs, materials and lights, ready for shading.
 pub struct World {
-    /// Chapter 3's triangles and BVH, or `None` for a scene without meshes.
-    pub geometry: Option<Geometry>,
-    /// The same BVH in its 8-wide form, which `intersect` and `unoccluded`
-    /// trace through.
+    /// Every triangle of the scene's meshes (empty without meshes).
+    pub triangles: Triangles,
+    /// Chapter 3's BVH over them in its 8-wide form, which `intersect` and
+    /// `unoccluded` trace through; `None` for a scene without meshes.
     pub wide: Option<WideBvh>,
-    /// The unit outward (winding) normal of each triangle of `geometry`.
+    /// The unit outward (winding) normal of each triangle.
     pub normals: Vec<Vec3>,
     /// The material of each scene mesh.
     pub mesh_material: Vec<usize>,
@@ -61,23 +62,19 @@ pub struct World {
 impl World {
     /// Builds what `scene` needs.
     pub fn new(scene: &Scene) -> World {
-        let geometry = (!scene.meshes.is_empty()).then(|| Geometry::new(scene));
-        let wide = geometry
-            .as_ref()
-            .and_then(|g| WideBvh::build(&g.triangles.tris));
-        let normals = geometry.as_ref().map_or(Vec::new(), |g| {
-            g.triangles
-                .tris
-                .iter()
-                .map(|[p0, p1, p2]| (*p1 - *p0).cross(*p2 - *p0).normalize_or(Vec3::Z))
-                .collect()
-        });
+        let triangles = Triangles::from_meshes(&scene.meshes);
+        let wide = WideBvh::build(&triangles.tris);
+        let normals = triangles
+            .tris
+            .iter()
+            .map(|[p0, p1, p2]| (*p1 - *p0).cross(*p2 - *p0).normalize_or(Vec3::Z))
+            .collect();
         let march = March {
             max_distance: scene_extent(scene),
             ..March::default()
         };
         World {
-            geometry,
+            triangles,
             wide,
             normals,
             mesh_material: scene.meshes.iter().map(|m| m.material).collect(),
@@ -97,13 +94,13 @@ impl World {
     /// The first surface along `ray` before `t_max`.
     pub fn intersect_within(&self, ray: &Ray, t_max: f32) -> Option<Interaction> {
         let mut best: Option<Interaction> = None;
-        if let (Some(g), Some(bvh)) = (&self.geometry, &self.wide) {
+        if let Some(bvh) = &self.wide {
             if let Some(hit) = bvh.closest(ray, t_max) {
                 let k = hit.triangle as usize;
-                let mesh = g.triangles.mesh[k] as usize;
+                let mesh = self.triangles.mesh[k] as usize;
                 best = Some(Interaction {
                     t: hit.t,
-                    p: hit.point(g.triangles.tris[k]),
+                    p: hit.point(self.triangles.tris[k]),
                     n: self.normals[k],
                     material: self.mesh_material[mesh],
                     surface: Surface::Mesh(mesh),
@@ -144,7 +141,7 @@ impl World {
         if !self.sdfs.is_empty() {
             origin += side * 4.0 * self.march.epsilon_at(p);
         }
-        Ray::new(origin, dir).ok()
+        Ray::from_unit(origin, dir)
     }
 
     /// Whether nothing blocks the segment from the surface point `p`
@@ -156,7 +153,8 @@ impl World {
             return false;
         };
         let t_max = if dist.is_finite() {
-            (dist - (ray.origin - p).length()) * (1.0 - 1e-4)
+            // Less the offset's L1 length, which is at least its length.
+            (dist - (ray.origin - p).abs().element_sum()) * (1.0 - 1e-4)
         } else {
             f32::INFINITY
         };

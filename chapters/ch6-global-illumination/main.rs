@@ -56,7 +56,7 @@ struct Cli {
     #[arg(long)]
     unlimited: bool,
     /// Russian roulette starts after this many scatterings.
-    #[arg(long, default_value_t = 3)]
+    #[arg(long, default_value_t = 1)]
     rr_after: u32,
     /// Samples per pixel in one progressive pass.
     #[arg(long, default_value_t = 4)]

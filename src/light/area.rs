@@ -21,6 +21,8 @@ pub struct AreaLight {
     pub triangles: Vec<[Vec3; 3]>,
     /// Cumulative triangle areas, for picking a triangle by area.
     pub cdf: Vec<f32>,
+    /// Each triangle's unit normal (its winding's), computed once.
+    pub normals: Vec<Vec3>,
     /// Total area A.
     pub area: f32,
     /// Emitted radiance Le.
@@ -58,15 +60,19 @@ impl AreaLight {
             .map(|t| t.map(|i| mesh.positions[i as usize]))
             .collect();
         let mut cdf = Vec::with_capacity(triangles.len());
+        let mut normals = Vec::with_capacity(triangles.len());
         let mut area = 0.0f32;
         for [a, b, c] in &triangles {
-            area += 0.5 * (*b - *a).cross(*c - *a).length();
+            let cross = (*b - *a).cross(*c - *a);
+            area += 0.5 * cross.length();
             cdf.push(area);
+            normals.push(cross.normalize_or_zero());
         }
         (area > 0.0 && area.is_finite()).then_some(AreaLight {
             mesh: index,
             triangles,
             cdf,
+            normals,
             area,
             le,
             two_sided,
@@ -87,25 +93,33 @@ impl AreaLight {
     /// solid-angle pdf.
     pub fn sample_li(&self, p: Vec3, u: Vec2) -> Option<LightSample> {
         // Pick a triangle by area, reusing u.x for the point inside it.
-        let target = u.x * self.area;
-        let k = self
-            .cdf
-            .partition_point(|c| *c <= target)
-            .min(self.cdf.len() - 1);
-        let lo = if k == 0 { 0.0 } else { self.cdf[k - 1] };
-        let width = self.cdf[k] - lo;
-        let ux = if width > 0.0 {
-            ((target - lo) / width).clamp(0.0, 1.0 - f32::EPSILON)
+        let (k, ux) = if self.cdf.len() == 1 {
+            (0, u.x)
         } else {
-            0.0
+            let target = u.x * self.area;
+            let k = self
+                .cdf
+                .partition_point(|c| *c <= target)
+                .min(self.cdf.len() - 1);
+            let lo = if k == 0 { 0.0 } else { self.cdf[k - 1] };
+            let width = self.cdf[k] - lo;
+            let ux = if width > 0.0 {
+                ((target - lo) / width).clamp(0.0, 1.0 - f32::EPSILON)
+            } else {
+                0.0
+            };
+            (k, ux)
         };
         let [a, b, c] = self.triangles[k];
         let bary = uniform_triangle(Vec2::new(ux, u.y));
         let y = bary.x * a + bary.y * b + bary.z * c;
-        let n_light = (b - a).cross(c - a).try_normalize()?;
+        let n_light = self.normals[k];
         let to = y - p;
         let dist = to.length();
-        let wi = to.try_normalize()?;
+        if !(dist > 0.0 && dist.is_finite()) || n_light == Vec3::ZERO {
+            return None;
+        }
+        let wi = to / dist;
         let li = self.emitted(n_light, -wi);
         let pdf = solid_angle_pdf(1.0 / self.area, dist, n_light.dot(wi));
         (pdf > 0.0 && li != Vec3::ZERO).then_some(LightSample {

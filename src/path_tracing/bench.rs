@@ -1,5 +1,6 @@
 //! `ch6 --bench`: the Cornell box at 256x256, 64 spp, up to 16 bounces,
-//! MIS, on the current thread pool; seconds, paths/s, rays/s and RMSE
+//! MIS (or the estimator, bounce limit and roulette flags given), on the
+//! current thread pool; seconds, paths/s, rays/s and RMSE
 //! against the stored reference, for both samplers.
 //!
 //! The reference is smaller than 256x256, so the RMSE is taken after
@@ -14,6 +15,7 @@ use std::time::Instant;
 
 use glam::Vec2;
 
+use crate::bvh::Bvh;
 use crate::material::Frame;
 use crate::ray::Ray;
 use crate::report::{format_number, Table};
@@ -30,14 +32,18 @@ use super::sampler::SamplerKind;
 use super::studies::render;
 
 /// Runs the benchmark and returns its table.
-pub fn bench(spp: u32) -> crate::error::Result<Table> {
+pub fn bench(spp: u32, path: &PathSettings) -> crate::error::Result<Table> {
     let scene = Scene::builtin().with_resolution(256, 256)?;
     let reference = StoredReference::for_scene(&scene);
     let threads = rayon::current_num_threads();
     let mut t = Table::new(
         &format!(
-            "ch6 benchmark: Cornell box 256x256, {spp} spp, up to 16 bounces, MIS, {threads} threads \
-             (targets: > 3.5M paths/s; RMSE²·s < 3e-4)"
+            "ch6 benchmark: Cornell box 256x256, {spp} spp, {}, {}, roulette after {} scatterings, \
+             {threads} threads (targets: > 3.5M paths/s; RMSE²·s < 3e-4)",
+            path.max_bounces
+                .map_or("unlimited bounces".into(), |k| format!("up to {k} bounces")),
+            path.estimator.name(),
+            path.rr_min_scatterings,
         ),
         &[
             "sampler",
@@ -50,7 +56,7 @@ pub fn bench(spp: u32) -> crate::error::Result<Table> {
         ],
     );
     for sampler in [SamplerKind::Independent, SamplerKind::Sobol] {
-        let (acc, secs) = render(&scene, &PathSettings::default(), sampler, spp, 1, false);
+        let (acc, secs) = render(&scene, path, sampler, spp, 1, false);
         let var = acc.variance_of_mean();
         let noise = (var
             .pixels
@@ -134,10 +140,9 @@ pub fn query_bench() -> Table {
         "ray queries on the Cornell box, one thread, million queries per second (best of 5)",
         &["query", "rays", "binary BVH (ch3)", "wide BVH (ch6)"],
     );
-    let (Some(g), Some(wide)) = (&world.geometry, &world.wide) else {
+    let (Some(bvh), Some(wide)) = (Bvh::build(&world.triangles.tris), &world.wide) else {
         return t;
     };
-    let Some(bvh) = &g.bvh else { return t };
     let x = Intersector::Watertight;
     t.row(vec![
         "closest hit (bounce rays)".into(),

@@ -44,7 +44,7 @@ pub fn run(stage: &GlobalIllumination, common: &CommonArgs, mode: Mode) -> Resul
     match mode {
         Mode::Bench => {
             let spp = if common.spp > 1 { common.spp } else { 64 };
-            let t = bench::bench(spp)?;
+            let t = bench::bench(spp, &stage.path)?;
             write!(out, "{}", t.to_text()).map_err(stdout_err)?;
             writeln!(out).map_err(stdout_err)?;
             write!(out, "{}", bench::query_bench().to_text()).map_err(stdout_err)?;

@@ -108,7 +108,7 @@ impl Default for PathSettings {
         PathSettings {
             estimator: Estimator::Mis,
             max_bounces: Some(16),
-            rr_min_scatterings: 3,
+            rr_min_scatterings: 1,
         }
     }
 }

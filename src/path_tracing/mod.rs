@@ -103,7 +103,7 @@ pub const DEFAULT: GlobalIllumination = GlobalIllumination {
     path: PathSettings {
         estimator: Estimator::Mis,
         max_bounces: Some(16),
-        rr_min_scatterings: 3,
+        rr_min_scatterings: 1,
     },
     sampler: SamplerKind::Independent,
     spp_per_pass: 4,
@@ -419,10 +419,11 @@ fn built_and_left_out(
     stage: &GlobalIllumination,
 ) {
     let (b, l) = (&mut report.built, &mut report.left_out);
-    match world.and_then(|(w, s)| w.geometry.as_ref().map(|g| (g, *s))) {
-        Some((g, s)) => b.push(format!(
-            "chapter 3's BVH over {} triangles (world built in {})",
-            g.triangles.tris.len(),
+    match world.and_then(|(w, s)| w.wide.as_ref().map(|wide| (w, wide, *s))) {
+        Some((w, wide, s)) => b.push(format!(
+            "chapter 3's BVH, 8 wide, over {} triangles ({} nodes; world built in {})",
+            w.triangles.tris.len(),
+            wide.node_count(),
             format_seconds(s)
         )),
         None => l.push("BVH: the scene has no meshes".into()),

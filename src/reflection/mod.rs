@@ -383,12 +383,12 @@ fn chapter_report(r: &ReflectionRender) -> Report {
 
     // What the scene led the stage to build and to leave out.
     report.built.push("camera rays".into());
-    match &world.geometry {
-        Some(g) => report.built.push(format!(
-            "chapter 3's BVH over {} meshes ({} triangles, {} nodes, built with the lights in {})",
+    match &world.wide {
+        Some(wide) => report.built.push(format!(
+            "chapter 3's BVH, 8 wide, over {} meshes ({} triangles, {} nodes, built with the lights in {})",
             scene.meshes.len(),
             scene.triangle_count(),
-            g.bvh.as_ref().map_or(0, |b| b.node_count()),
+            wide.node_count(),
             format_seconds(r.build_seconds)
         )),
         None => report
