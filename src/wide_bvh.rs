@@ -93,26 +93,17 @@ impl WideBvh {
     /// The closest hit in (0, t_max); `Hit::triangle` indexes the list
     /// chapter 3's BVH was built from.
     pub fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
-        let mut node_ray = Self::node_ray(ray, t_max);
-        let mut state = self.bvh.new_traversal(node_ray.direction);
-        let mut node;
         let wr = WatertightRay::new(ray);
         let mut best: Option<(Hit, usize)> = None;
         let mut t_best = t_max;
-        traverse!(
-            self.bvh,
-            node,
-            state,
-            node.intersect_ray(&node_ray, state.oct_inv4),
-            {
-                let k = state.primitive_id as usize;
-                if let Some(hit) = wr.intersect(&self.tris[k], 0.0, t_best) {
-                    t_best = hit.t;
-                    node_ray.tmax = node_t(hit.t);
-                    best = Some((hit, k));
-                }
+        self.walk(ray, t_max, |k, node_ray| {
+            if let Some(hit) = wr.intersect(&self.tris[k], 0.0, t_best) {
+                t_best = hit.t;
+                node_ray.tmax = node_t(hit.t);
+                best = Some((hit, k));
             }
-        );
+            false
+        });
         best.map(|(hit, k)| Hit {
             triangle: self.original[k],
             ..hit
@@ -121,11 +112,24 @@ impl WideBvh {
 
     /// Whether anything is hit in (0, t_max): stops at the first hit.
     pub fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
-        let node_ray = Self::node_ray(ray, t_max);
-        let mut state = self.bvh.new_traversal(node_ray.direction);
-        let mut node;
         let wr = WatertightRay::new(ray);
         let mut hit = false;
+        self.walk(ray, t_max, |k, _| {
+            hit = wr.intersect(&self.tris[k], 0.0, t_max).is_some();
+            hit
+        });
+        hit
+    }
+
+    /// Walks the tree (nearest children first) with the box-testing ray,
+    /// calling `visit(k, box_ray)` for each triangle `k` in a leaf it
+    /// enters. `visit` may shorten `box_ray.tmax` and returns `true` to
+    /// stop.
+    #[inline(always)]
+    fn walk(&self, ray: &Ray, t_max: f32, mut visit: impl FnMut(usize, &mut ORay) -> bool) {
+        let mut node_ray = Self::node_ray(ray, t_max);
+        let mut state = self.bvh.new_traversal(node_ray.direction);
+        let mut node;
         'search: {
             traverse!(
                 self.bvh,
@@ -133,15 +137,12 @@ impl WideBvh {
                 state,
                 node.intersect_ray(&node_ray, state.oct_inv4),
                 {
-                    let k = state.primitive_id as usize;
-                    if wr.intersect(&self.tris[k], 0.0, t_max).is_some() {
-                        hit = true;
+                    if visit(state.primitive_id as usize, &mut node_ray) {
                         break 'search;
                     }
                 }
             );
         }
-        hit
     }
 }
 

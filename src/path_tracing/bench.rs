@@ -116,8 +116,13 @@ fn vertex_rays(world: &World, scene: &Scene) -> (Vec<Ray>, Vec<(Ray, f32)>) {
     (bounce, shadow)
 }
 
+/// How many of `items` `query` says yes to.
+fn count<T>(items: &[T], query: impl Fn(&T) -> bool) -> usize {
+    items.iter().filter(|i| query(i)).count()
+}
+
 /// Million queries per second of `query` over `n` items, best of 5.
-fn mqps(n: usize, mut query: impl FnMut() -> usize) -> f64 {
+fn mqps(n: usize, query: &dyn Fn() -> usize) -> f64 {
     let mut best = f64::INFINITY;
     let mut check = 0;
     for _ in 0..5 {
@@ -144,41 +149,23 @@ pub fn query_bench() -> Table {
         return t;
     };
     let x = Intersector::Watertight;
+    let rate = |n: usize, count: &dyn Fn() -> usize| format!("{:.2}", mqps(n, count));
+    let (nb, ns) = (bounce.len(), shadow.len());
     t.row(vec![
         "closest hit (bounce rays)".into(),
-        bounce.len().to_string(),
-        format!(
-            "{:.2}",
-            mqps(bounce.len(), || bounce
-                .iter()
-                .filter(|r| bvh.closest(r, f32::INFINITY, x).is_some())
-                .count())
-        ),
-        format!(
-            "{:.2}",
-            mqps(bounce.len(), || bounce
-                .iter()
-                .filter(|r| wide.closest(r, f32::INFINITY).is_some())
-                .count())
-        ),
+        nb.to_string(),
+        rate(nb, &|| {
+            count(&bounce, |r| bvh.closest(r, f32::INFINITY, x).is_some())
+        }),
+        rate(nb, &|| {
+            count(&bounce, |r| wide.closest(r, f32::INFINITY).is_some())
+        }),
     ]);
     t.row(vec![
         "occlusion (shadow rays)".into(),
-        shadow.len().to_string(),
-        format!(
-            "{:.2}",
-            mqps(shadow.len(), || shadow
-                .iter()
-                .filter(|(r, d)| bvh.occluded(r, *d, x))
-                .count())
-        ),
-        format!(
-            "{:.2}",
-            mqps(shadow.len(), || shadow
-                .iter()
-                .filter(|(r, d)| wide.occluded(r, *d))
-                .count())
-        ),
+        ns.to_string(),
+        rate(ns, &|| count(&shadow, |(r, d)| bvh.occluded(r, *d, x))),
+        rate(ns, &|| count(&shadow, |(r, d)| wide.occluded(r, *d))),
     ]);
     t
 }
