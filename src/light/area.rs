@@ -93,22 +93,17 @@ impl AreaLight {
     /// solid-angle pdf.
     pub fn sample_li(&self, p: Vec3, u: Vec2) -> Option<LightSample> {
         // Pick a triangle by area, reusing u.x for the point inside it.
-        let (k, ux) = if self.cdf.len() == 1 {
-            (0, u.x)
+        let target = u.x * self.area;
+        let k = self
+            .cdf
+            .partition_point(|c| *c <= target)
+            .min(self.cdf.len() - 1);
+        let lo = if k == 0 { 0.0 } else { self.cdf[k - 1] };
+        let width = self.cdf[k] - lo;
+        let ux = if width > 0.0 {
+            ((target - lo) / width).clamp(0.0, 1.0 - f32::EPSILON)
         } else {
-            let target = u.x * self.area;
-            let k = self
-                .cdf
-                .partition_point(|c| *c <= target)
-                .min(self.cdf.len() - 1);
-            let lo = if k == 0 { 0.0 } else { self.cdf[k - 1] };
-            let width = self.cdf[k] - lo;
-            let ux = if width > 0.0 {
-                ((target - lo) / width).clamp(0.0, 1.0 - f32::EPSILON)
-            } else {
-                0.0
-            };
-            (k, ux)
+            0.0
         };
         let [a, b, c] = self.triangles[k];
         let bary = uniform_triangle(Vec2::new(ux, u.y));
