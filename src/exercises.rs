@@ -23,6 +23,20 @@ pub mod ch5;
 #[path = "../chapters/ch6-global-illumination/exercises/mod.rs"]
 pub mod ch6;
 
+/// The worst error over `(error, which case)` pairs, a NaN counting as
+/// infinite; `(0, "all cases match")` when none is above 0. Shared by the
+/// graders of chapters 4 to 6.
+pub(crate) fn worst_of(cases: impl Iterator<Item = (f64, String)>) -> (f64, String) {
+    let mut worst = (0.0f64, String::from("all cases match"));
+    for (err, what) in cases {
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        if err > worst.0 {
+            worst = (err, what);
+        }
+    }
+    worst
+}
+
 /// Every exercise, in chapter order.
 pub fn all() -> Vec<Exercise> {
     let mut all = ch1::exercises();

@@ -328,16 +328,11 @@ pub fn index_matched_glass(size: u32, spp: u32) -> (StabilityCase, f64) {
         false,
     );
     let centre = centre_block(&acc.mean(), size / 4);
-    let (z, mean) = flat_z(&centre, 0, rho);
-    let ok = z.abs() < 4.0 && acc.stats.nonfinite == 0;
-    (
-        StabilityCase::new(
-            "glass of index 1.0 around the open furnace",
-            "invisible: the sphere's pixels stay ρ = 0.6 (|z| < 4)",
-            format!("{} (z = {z:.2})", format_number(mean)),
-            ok,
-        ),
-        z,
+    flat_case(
+        "glass of index 1.0 around the open furnace",
+        "invisible: the sphere's pixels stay ρ = 0.6 (|z| < 4)",
+        &acc,
+        flat_z(&centre, 0, rho),
     )
 }
 
@@ -353,17 +348,26 @@ pub fn camera_inside_glass(size: u32, spp: u32) -> (StabilityCase, f64) {
         false,
     );
     let expected = 2.25 * (1.0 - 0.04f64.powi(17));
-    let (z, mean) = flat_z(&acc.mean(), 1, expected);
-    let ok = z.abs() < 4.0 && acc.stats.nonfinite == 0;
-    (
-        StabilityCase::new(
-            "camera inside glass (centre of a sphere, η = 1.5)",
-            "every pixel η² = 2.25 (|z| < 4)",
-            format!("{} (z = {z:.2})", format_number(mean)),
-            ok,
-        ),
-        z,
+    flat_case(
+        "camera inside glass (centre of a sphere, η = 1.5)",
+        "every pixel η² = 2.25 (|z| < 4)",
+        &acc,
+        flat_z(&acc.mean(), 1, expected),
     )
+}
+
+/// A case whose pixels share one expected value, from [`flat_z`]'s
+/// (z, mean): it holds when |z| < 4 and no NaN or Inf was caught.
+/// Returns the case and z.
+fn flat_case(
+    name: &str,
+    expected: &str,
+    acc: &Accumulator,
+    (z, mean): (f64, f64),
+) -> (StabilityCase, f64) {
+    let ok = z.abs() < 4.0 && acc.stats.nonfinite == 0;
+    let measured = format!("{} (z = {z:.2})", format_number(mean));
+    (StabilityCase::new(name, expected, measured, ok), z)
 }
 
 /// The middle `n` x `n` pixels of a film.

@@ -6,6 +6,7 @@ pub mod sphere_trace;
 
 use glam::Vec3;
 
+use super::worst_of;
 use crate::grading::{Check, Exercise, Solution};
 use crate::ray::Ray;
 use crate::sdf::march::{self, March};
@@ -77,18 +78,6 @@ fn reference_trace(
         step_factor: 1.0,
     };
     march::sphere_trace(f, &ray, &m).hit()
-}
-
-/// Records the worst relative error over the cases.
-fn worst_of(cases: impl Iterator<Item = (f64, String)>) -> (f64, String) {
-    let mut worst = (0.0f64, String::from("all cases match"));
-    for (err, what) in cases {
-        let err = if err.is_nan() { f64::INFINITY } else { err };
-        if err > worst.0 {
-            worst = (err, what);
-        }
-    }
-    worst
 }
 
 /// The sphere's SDF against values worked out by hand.

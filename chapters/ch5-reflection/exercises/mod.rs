@@ -9,6 +9,7 @@ use std::f32::consts::FRAC_1_PI;
 
 use glam::{Vec2, Vec3};
 
+use super::worst_of;
 use crate::grading::{Check, Exercise, Solution};
 use crate::light::area::solid_angle_pdf;
 use crate::material::lambert::Lambertian;
@@ -85,18 +86,6 @@ pub fn exercises() -> Vec<Exercise> {
             },
         },
     ]
-}
-
-/// The worst relative error over cases (a NaN counts as infinite).
-fn worst_of(cases: impl Iterator<Item = (f64, String)>) -> (f64, String) {
-    let mut worst = (0.0f64, String::from("all cases match"));
-    for (err, what) in cases {
-        let err = if err.is_nan() { f64::INFINITY } else { err };
-        if err > worst.0 {
-            worst = (err, what);
-        }
-    }
-    worst
 }
 
 fn rel(got: Vec3, want: Vec3) -> f64 {

@@ -8,6 +8,7 @@ pub mod mc_integral;
 pub mod mis_weight;
 pub mod russian_roulette;
 
+use super::worst_of;
 use crate::grading::{Check, Exercise, Solution};
 use crate::sampling::random;
 
@@ -97,18 +98,6 @@ fn z_of(estimates: &[f64], expected: f64) -> f64 {
     } else {
         z
     }
-}
-
-/// Records the worst error over the cases.
-fn worst_of(cases: impl Iterator<Item = (f64, String)>) -> (f64, String) {
-    let mut worst = (0.0f64, String::from("all cases match"));
-    for (err, what) in cases {
-        let err = if err.is_nan() { f64::INFINITY } else { err };
-        if err > worst.0 {
-            worst = (err, what);
-        }
-    }
-    worst
 }
 
 /// The estimator on three integrals with known values: 64 independent
