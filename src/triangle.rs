@@ -146,7 +146,7 @@ pub fn intersect_moller_trumbore(
 
 /// γ(n) = n ε / (1 - n ε), the bound on the relative error of n f32
 /// operations (ε = 2⁻²⁴, half the machine epsilon).
-pub(crate) fn gamma(n: i32) -> f32 {
+pub(crate) const fn gamma(n: i32) -> f32 {
     let eps = f32::EPSILON * 0.5;
     (n as f32 * eps) / (1.0 - n as f32 * eps)
 }

@@ -17,7 +17,7 @@
 //! The rare paths (an edge function exactly zero, a t too small to trust
 //! the error bound) go to the same f64 tie-breakers as the readable version.
 
-use glam::{Vec3, Vec3A, Vec3Swizzles};
+use glam::{Vec3, Vec3A, Vec3Swizzles, Vec4};
 
 use crate::ray::Ray;
 use crate::triangle::{ahead_in_f64, gamma, Hit};
@@ -58,6 +58,46 @@ impl SoaTriangle {
             Vec3::new(x.z, y.z, z.z),
         ]
     }
+}
+
+/// Four triangles stored by coordinate and vertex, one triangle per SIMD
+/// lane: `rows[axis][vertex]` holds that coordinate of that vertex of all
+/// four. The wide BVH's leaves are tested four triangles at a time this
+/// way ([`WatertightRay::intersect4`]), with no branch per triangle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tri4 {
+    /// `rows[axis][vertex]`, lanes = triangles.
+    pub rows: [[Vec4; 3]; 3],
+}
+
+impl Tri4 {
+    /// Packs four triangles (as [`SoaTriangle`]s, so zero-area ones are
+    /// already collapsed to a point).
+    pub fn new(tris: [SoaTriangle; 4]) -> Tri4 {
+        let lane = |axis: usize, vertex: usize| {
+            Vec4::from_array(tris.map(|t| t.rows[axis].to_array()[vertex]))
+        };
+        Tri4 {
+            rows: [0, 1, 2].map(|axis| [0, 1, 2].map(|vertex| lane(axis, vertex))),
+        }
+    }
+}
+
+/// What [`WatertightRay::intersect4`] found, lane by lane.
+#[derive(Clone, Copy, Debug)]
+pub struct Hits4 {
+    /// Bit i: lane i is a hit, with `t`, `u` and `v` below (exactly what
+    /// the one-triangle test returns).
+    pub hit: u32,
+    /// Bit i: lane i needs the one-triangle test to decide (an edge
+    /// function exactly zero, or t too small to trust), which is rare.
+    pub check: u32,
+    /// t of each lane.
+    pub t: Vec4,
+    /// u of each lane.
+    pub u: Vec4,
+    /// v of each lane.
+    pub v: Vec4,
 }
 
 /// The part of the watertight test that depends only on the ray.
@@ -154,6 +194,53 @@ impl<'a> WatertightRay<'a> {
 }
 // ANCHOR_END: watertight_ray
 
+impl WatertightRay<'_> {
+    /// [`WatertightRay::intersect`] on four triangles at once: the same
+    /// arithmetic in the same order, one triangle per lane, so every lane's
+    /// t, u and v are bit for bit what the one-triangle test gives. Lanes
+    /// whose result depends on the test's rare exact paths are flagged in
+    /// [`Hits4::check`] for the caller to run the one-triangle test on.
+    #[inline(always)]
+    pub fn intersect4(&self, tri: &Tri4, t_min: f32, t_max: f32) -> Hits4 {
+        let [ox, oy, oz] = self.o.map(|o| Vec4::splat(o.x));
+        let (sx, sy, sz) = (Vec4::splat(self.sx), Vec4::splat(self.sy), Vec4::splat(self.sz));
+        let [rx, ry, rz] = [tri.rows[self.k[0]], tri.rows[self.k[1]], tri.rows[self.k[2]]];
+        // Translate, permute and shear each vertex (a, b, c).
+        let z = [rz[0] - oz, rz[1] - oz, rz[2] - oz];
+        let x = [0, 1, 2].map(|j| (rx[j] - ox) + sx * z[j]);
+        let y = [0, 1, 2].map(|j| (ry[j] - oy) + sy * z[j]);
+        // Edge functions, as in the one-triangle test's swizzles:
+        // e0 = b.x c.y - b.y c.x, e1 = c.x a.y - c.y a.x, e2 = a.x b.y - a.y b.x.
+        let e0 = x[1] * y[2] - y[1] * x[2];
+        let e1 = x[2] * y[0] - y[2] * x[0];
+        let e2 = x[0] * y[1] - y[0] * x[1];
+        let zero = Vec4::ZERO;
+        let any_zero = e0.cmpeq(zero) | e1.cmpeq(zero) | e2.cmpeq(zero);
+        let neg = e0.cmplt(zero) | e1.cmplt(zero) | e2.cmplt(zero);
+        let pos = e0.cmpgt(zero) | e1.cmpgt(zero) | e2.cmpgt(zero);
+        let det = e0 + e1 + e2;
+        let z = z.map(|zj| zj * sz);
+        let t_scaled = e0 * z[0] + e1 * z[1] + e2 * z[2];
+        let (lo, hi) = (Vec4::splat(t_min) * det, Vec4::splat(t_max) * det);
+        let in_range_neg = det.cmplt(zero) & t_scaled.cmplt(lo) & t_scaled.cmpge(hi);
+        let in_range_pos = det.cmpgt(zero) & t_scaled.cmpgt(lo) & t_scaled.cmple(hi);
+        let finite = det.is_finite_mask();
+        let candidate = !(neg & pos) & finite & (in_range_neg | in_range_pos);
+        let inv_det = Vec4::ONE / det;
+        let t = t_scaled * inv_det;
+        let trusted = t.cmpgt(delta_t4(x, y, z, [e0, e1, e2], inv_det));
+        let hit = candidate & trusted & !any_zero;
+        let check = any_zero | (candidate & !trusted);
+        Hits4 {
+            hit: hit.bitmask(),
+            check: check.bitmask(),
+            t,
+            u: e1 * inv_det,
+            v: e2 * inv_det,
+        }
+    }
+}
+
 /// The edge functions in f64, where the products of f32 values are exact.
 #[cold]
 #[inline(never)]
@@ -164,6 +251,21 @@ fn edges_in_f64(x: Vec3A, y: Vec3A) -> Vec3A {
         f(x.z, y.x, y.z, x.x),
         f(x.x, y.y, y.x, x.y),
     )
+}
+
+/// [`delta_t`] lane by lane, in the same order of operations.
+#[inline(always)]
+fn delta_t4(x: [Vec4; 3], y: [Vec4; 3], z: [Vec4; 3], e: [Vec4; 3], inv_det: Vec4) -> Vec4 {
+    let max_abs = |v: [Vec4; 3]| v[0].abs().max(v[1].abs()).max(v[2].abs());
+    let (max_zt, max_xt, max_yt) = (max_abs(z), max_abs(x), max_abs(y));
+    let g = |n| Vec4::splat(gamma(n));
+    let delta_z = g(3) * max_zt;
+    let delta_x = g(5) * (max_xt + max_zt);
+    let delta_y = g(5) * (max_yt + max_zt);
+    let delta_e =
+        Vec4::splat(2.0) * (g(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+    let max_e = max_abs(e);
+    Vec4::splat(3.0) * (g(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs()
 }
 
 /// pbrt-v4's bound on the rounding error of t (see the readable version).

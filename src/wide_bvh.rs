@@ -1,156 +1,414 @@
-//! The BVH the shading chapters trace through: chapter 3's hierarchy
-//! converted into obvhs' compressed eight-wide form (`CwBvh`), where one
-//! node test checks eight child boxes at once with SIMD and the tree is a
-//! third as deep. Chapter 3 teaches the binary tree ([`crate::bvh`]); a
-//! path tracer casts tens of millions of rays, so it takes the wide one.
-//! Both answer the same questions with the same watertight triangle test
-//! ([`WatertightRay`]), and a test checks that they agree ray for ray.
+//! The BVH the shading chapters trace through: chapter 3's binary
+//! hierarchy collapsed into a *four-wide* one, the layout CPU ray tracers
+//! such as Embree use. Each node holds the boxes of up to four children
+//! side by side, so one SIMD slab test checks all four at once; each leaf
+//! holds up to four triangles side by side, so one SIMD watertight test
+//! ([`WatertightRay::intersect4`]) checks all of them. The tree is half as
+//! deep as the binary one and a query takes few branches.
 //!
-//! One detail of obvhs shapes the traversal: its node test ignores boxes
-//! that end nearer than t = 10⁻⁴ along the ray (a fixed, absolute
-//! "ε"). A path vertex in a corner has walls closer than that, and
-//! a scene modelled at millimetre scale has everything closer than that,
-//! so dropping those boxes would leak light. The traversal therefore tests
-//! boxes with a copy of the ray started [`NODE_SHIFT`] *behind* its real
-//! origin, which moves every box 2·10⁻⁴ further along it, while the
-//! triangle test uses the real ray and the real distances.
+//! Chapter 3 teaches the binary tree ([`crate::bvh`]); a path tracer casts
+//! tens of millions of rays, so it takes this one. Both answer the same
+//! questions with the same watertight arithmetic, and a test checks that
+//! they agree ray for ray.
 
 use std::time::Duration;
 
-use glam::Vec3;
-use glam34::{UVec2, Vec3A};
-use obvhs::cwbvh::builder::build_cwbvh;
-use obvhs::cwbvh::CwBvh;
-use obvhs::ray::Ray as ORay;
-use obvhs::{traverse, BvhBuildParams};
+use glam::{Vec3, Vec4};
+use obvhs::bvh2::builder::build_bvh2;
+use obvhs::bvh2::Bvh2;
+use obvhs::BvhBuildParams;
 
 use crate::bvh::padded_boxes;
 use crate::ray::Ray;
-use crate::triangle::Hit;
-use crate::watertight_fast::{SoaTriangle, WatertightRay};
+use crate::triangle::{gamma, Hit};
+use crate::watertight_fast::{SoaTriangle, Tri4, WatertightRay};
 
-/// How far behind the real origin the box-testing ray starts: twice
-/// obvhs' node ε (10⁻⁴), so no box at t ≥ 0 on the real ray is culled.
-pub const NODE_SHIFT: f32 = 2e-4;
+/// A child reference with this bit set is a leaf (the rest of the bits
+/// index [`WideBvh::leaves`]); otherwise it indexes [`WideBvh::nodes`].
+const LEAF: u32 = 1 << 31;
+/// Triangles per leaf, one per SIMD lane.
+const LANES: usize = 4;
 
-/// Chapter 3's BVH in obvhs' compressed 8-wide layout.
+/// Up to four children's boxes, by axis, one child per lane. An unused
+/// slot has an empty box (min +∞, max -∞) that no ray enters.
+#[derive(Clone, Copy, Debug)]
+struct Node4 {
+    /// Box minima: x of the four children, then y, then z.
+    min: [Vec4; 3],
+    /// Box maxima, laid out the same way.
+    max: [Vec4; 3],
+    /// Child references (see [`LEAF`]).
+    child: [u32; 4],
+}
+
+/// Chapter 3's BVH collapsed to four children per node and four
+/// triangles per leaf.
 pub struct WideBvh {
-    bvh: CwBvh,
-    /// Triangles in the wide BVH's order, as [`SoaTriangle`]s.
+    /// Inner nodes; the root is `root` (a leaf when the scene has at most
+    /// four triangles).
+    nodes: Vec<Node4>,
+    root: u32,
+    /// Inner-node levels on the longest root-to-leaf path; a query's stack
+    /// never holds more than 3 per level, plus one.
+    levels: usize,
+    /// Leaves: four triangles each, in SIMD lanes. Unused lanes and
+    /// zero-area triangles hold NaN vertices, which the test rejects.
+    leaves: Vec<Tri4>,
+    /// The same triangles one by one (`tris[4 l + lane]`), for the rare
+    /// lanes the four-wide test hands back to the one-triangle test.
     tris: Vec<SoaTriangle>,
-    /// `original[k]`: the index of `tris[k]` in the list the BVH was built
-    /// from.
+    /// `original[4 l + lane]`: the index of that triangle in the list the
+    /// BVH was built from (`u32::MAX` for an unused lane).
     original: Vec<u32>,
 }
 
+/// How much a box's far distance is stretched, so rounding in the slab
+/// test never culls a box a hit lies in (pbrt stretches by 2γ₃ ≈ 4e-7).
+const FAR_STRETCH: f32 = 1.0 + 4.0 * gamma(3);
+
+/// The part of the slab test that depends only on the ray.
+struct BoxRay {
+    /// The origin, one splat per axis.
+    o: [Vec4; 3],
+    /// 1 / direction per axis (zero components replaced by a tiny number
+    /// of the same sign, so no 0 · ∞ can make a NaN).
+    inv: [Vec4; 3],
+    /// Per axis, whether the ray runs towards -∞ (then a box's max is met
+    /// first).
+    negative: [bool; 3],
+}
+
+impl BoxRay {
+    #[inline(always)]
+    fn new(ray: &Ray) -> BoxRay {
+        let d = ray.dir.to_array();
+        let safe = |x: f32| if x.abs() < 1e-30 { 1e-30f32.copysign(x) } else { x };
+        BoxRay {
+            o: ray.origin.to_array().map(Vec4::splat),
+            inv: d.map(|x| Vec4::splat(1.0 / safe(x))),
+            negative: d.map(|x| x.is_sign_negative()),
+        }
+    }
+
+    /// The slab test on a node's four boxes against (0, t_max): a bit
+    /// mask of the children entered, and where the ray enters each box.
+    // ANCHOR: slab4
+    #[inline(always)]
+    fn enter(&self, node: &Node4, t_max: f32) -> (u32, Vec4) {
+        let mut t_near = Vec4::ZERO;
+        let mut t_far = Vec4::splat(t_max);
+        for axis in 0..3 {
+            let (near, far) = if self.negative[axis] {
+                (node.max[axis], node.min[axis])
+            } else {
+                (node.min[axis], node.max[axis])
+            };
+            t_near = t_near.max((near - self.o[axis]) * self.inv[axis]);
+            t_far = t_far.min((far - self.o[axis]) * self.inv[axis]);
+        }
+        let entered = t_near.cmple(t_far * FAR_STRETCH);
+        (entered.bitmask(), t_near)
+    }
+    // ANCHOR_END: slab4
+}
+
 impl WideBvh {
-    /// Builds the wide BVH over `tris` (with chapter 3's padded boxes,
-    /// leaves of up to three triangles, children ordered for front-to-back
-    /// traversal); `None` for an empty list.
+    /// Builds the four-wide BVH over `tris`: chapter 3's binary tree (with
+    /// its padded boxes, one triangle per leaf), then collapsed from the
+    /// root down; `None` for an empty list.
     pub fn build(tris: &[[Vec3; 3]]) -> Option<WideBvh> {
         if tris.is_empty() {
             return None;
         }
-        let wide = build_cwbvh(
-            &padded_boxes(tris),
-            BvhBuildParams::medium_build(),
-            &mut Duration::default(),
-        );
-        // The wide BVH's `primitive_indices` index `tris`; store the
-        // triangles in that order so the hot loop needs no indirection.
-        let original = wide.primitive_indices.clone();
-        Some(WideBvh {
-            tris: original
-                .iter()
-                .map(|&i| SoaTriangle::new(tris[i as usize]))
-                .collect(),
-            bvh: wide,
-            original,
-        })
+        let params = BvhBuildParams {
+            max_prims_per_leaf: 1,
+            ..BvhBuildParams::medium_build()
+        };
+        let bvh2 = build_bvh2(&padded_boxes(tris), params, &mut Duration::default());
+        let mut counts = vec![0u32; bvh2.nodes.len()];
+        count_triangles(&bvh2, 0, &mut counts);
+        let mut wide = WideBvh {
+            nodes: Vec::new(),
+            root: 0,
+            leaves: Vec::new(),
+            tris: Vec::new(),
+            original: Vec::new(),
+            levels: 0,
+        };
+        wide.root = wide.collapse(&bvh2, &counts, 0, tris, 1);
+        Some(wide)
     }
 
-    /// How many 8-wide nodes the hierarchy has.
+    /// How many four-wide inner nodes the hierarchy has.
     pub fn node_count(&self) -> usize {
-        self.bvh.nodes.len()
+        self.nodes.len()
     }
 
-    /// The box-testing ray: [`NODE_SHIFT`] behind `ray`, reaching
-    /// `t_max` on the real ray.
-    // ANCHOR: node_ray
-    #[inline(always)]
-    fn node_ray(ray: &Ray, t_max: f32) -> ORay {
-        let o = ray.origin - NODE_SHIFT * ray.dir;
-        let d = ray.dir;
-        ORay::new(
-            Vec3A::new(o.x, o.y, o.z),
-            Vec3A::new(d.x, d.y, d.z),
-            0.0,
-            node_t(t_max),
-        )
+    /// How many leaves (of up to four triangles) it has.
+    pub fn leaf_count(&self) -> usize {
+        self.leaves.len()
     }
-    // ANCHOR_END: node_ray
+
+    /// Makes binary node `n` into a child reference: a leaf if its
+    /// subtree has at most four triangles, else a four-wide node whose
+    /// children are found by opening the largest binary child (by surface
+    /// area) until there are four.
+    // ANCHOR: collapse
+    fn collapse(
+        &mut self,
+        bvh2: &Bvh2,
+        counts: &[u32],
+        n: usize,
+        tris: &[[Vec3; 3]],
+        level: usize,
+    ) -> u32 {
+        if counts[n] as usize <= LANES {
+            return self.leaf(bvh2, n, tris);
+        }
+        self.levels = self.levels.max(level);
+        let first = bvh2.nodes[n].first_index as usize;
+        let mut children = vec![first, first + 1];
+        while children.len() < 4 {
+            let open = children
+                .iter()
+                .enumerate()
+                .filter(|(_, &c)| counts[c] as usize > LANES)
+                .max_by(|a, b| {
+                    let area = |c: usize| bvh2.nodes[c].aabb.half_area();
+                    area(*a.1).total_cmp(&area(*b.1))
+                });
+            let Some((i, &c)) = open else { break };
+            let first = bvh2.nodes[c].first_index as usize;
+            children[i] = first;
+            children.push(first + 1);
+        }
+        let index = self.nodes.len();
+        self.nodes.push(Node4 {
+            min: [Vec4::INFINITY; 3],
+            max: [Vec4::NEG_INFINITY; 3],
+            child: [u32::MAX; 4],
+        });
+        for (lane, &c) in children.iter().enumerate() {
+            let b = bvh2.nodes[c].aabb;
+            let child = self.collapse(bvh2, counts, c, tris, level + 1);
+            let node = &mut self.nodes[index];
+            node.child[lane] = child;
+            for axis in 0..3 {
+                node.min[axis][lane] = b.min[axis];
+                node.max[axis][lane] = b.max[axis];
+            }
+        }
+        index as u32
+    }
+    // ANCHOR_END: collapse
+
+    /// A leaf holding every triangle under binary node `n` (at most four).
+    fn leaf(&mut self, bvh2: &Bvh2, n: usize, tris: &[[Vec3; 3]]) -> u32 {
+        let mut ids = Vec::new();
+        let mut stack = vec![n];
+        while let Some(m) = stack.pop() {
+            let node = &bvh2.nodes[m];
+            if node.is_leaf() {
+                let range = node.first_index..node.first_index + node.prim_count;
+                ids.extend(range.map(|k| bvh2.primitive_indices[k as usize]));
+            } else {
+                stack.extend([node.first_index as usize + 1, node.first_index as usize]);
+            }
+        }
+        let nan = SoaTriangle {
+            rows: [glam::Vec3A::NAN; 3],
+        };
+        let mut lanes = [nan; LANES];
+        for lane in 0..LANES {
+            let id = ids.get(lane).copied().unwrap_or(u32::MAX);
+            let tri = match ids.get(lane) {
+                Some(&i) => SoaTriangle::new(tris[i as usize]),
+                None => nan,
+            };
+            // Zero-area triangles (collapsed to a point) can never be hit:
+            // NaN keeps them out of the rare-path checks as well.
+            let collapsed = tri.rows.iter().all(|r| r.x == r.y && r.y == r.z);
+            lanes[lane] = if collapsed { nan } else { tri };
+            self.tris.push(tri);
+            self.original.push(id);
+        }
+        self.leaves.push(Tri4::new(lanes));
+        (self.leaves.len() - 1) as u32 | LEAF
+    }
 
     /// The closest hit in (0, t_max); `Hit::triangle` indexes the list
     /// chapter 3's BVH was built from.
+    // ANCHOR: closest4
     pub fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        self.with_stack(|stack| self.closest_in(ray, t_max, stack))
+    }
+
+    /// [`WideBvh::closest`] with `stack` for the subtrees still to visit.
+    fn closest_in(&self, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)]) -> Option<Hit> {
         let wr = WatertightRay::new(ray);
-        let mut best: Option<(Hit, usize)> = None;
+        let br = BoxRay::new(ray);
+        let mut best: Option<Hit> = None;
         let mut t_best = t_max;
-        self.walk(ray, t_max, |k, node_ray| {
-            if let Some(hit) = wr.intersect(&self.tris[k], 0.0, t_best) {
-                t_best = hit.t;
-                node_ray.tmax = node_t(hit.t);
-                best = Some((hit, k));
+        let mut depth = 0;
+        let mut at = self.root;
+        loop {
+            if at & LEAF == 0 {
+                let node = &self.nodes[at as usize];
+                let (mut entered, t_near) = br.enter(node, t_best);
+                let t_near = t_near.to_array();
+                if entered != 0 {
+                    // Visit the nearest child next; stack the others
+                    // farthest first, so they come off nearest first.
+                    let mut order = [(0u32, 0f32); 4];
+                    let mut count = 0;
+                    while entered != 0 {
+                        let lane = entered.trailing_zeros() as usize;
+                        entered &= entered - 1;
+                        let item = (node.child[lane], t_near[lane]);
+                        let mut i = count;
+                        while i > 0 && order[i - 1].1 < item.1 {
+                            order[i] = order[i - 1];
+                            i -= 1;
+                        }
+                        order[i] = item;
+                        count += 1;
+                    }
+                    stack[depth..depth + count - 1].copy_from_slice(&order[..count - 1]);
+                    depth += count - 1;
+                    at = order[count - 1].0;
+                    continue;
+                }
+            } else {
+                let leaf = (at & !LEAF) as usize;
+                if let Some((hit, lane)) = self.leaf_closest(&wr, leaf, t_best) {
+                    t_best = hit.t;
+                    best = Some(Hit {
+                        triangle: self.original[leaf * LANES + lane],
+                        ..hit
+                    });
+                }
             }
-            false
-        });
-        best.map(|(hit, k)| Hit {
-            triangle: self.original[k],
-            ..hit
-        })
+            // Pop the next subtree that can still hold a nearer hit.
+            loop {
+                if depth == 0 {
+                    return best;
+                }
+                depth -= 1;
+                let (next, t_near) = stack[depth];
+                if t_near <= t_best {
+                    at = next;
+                    break;
+                }
+            }
+        }
     }
+    // ANCHOR_END: closest4
 
-    /// Whether anything is hit in (0, t_max): stops at the first hit.
-    pub fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
-        let wr = WatertightRay::new(ray);
-        let mut hit = false;
-        self.walk(ray, t_max, |k, _| {
-            hit = wr.intersect(&self.tris[k], 0.0, t_max).is_some();
-            hit
-        });
-        hit
-    }
-
-    /// Walks the tree (nearest children first) with the box-testing ray,
-    /// calling `visit(k, box_ray)` for each triangle `k` in a leaf it
-    /// enters. `visit` may shorten `box_ray.tmax` and returns `true` to
-    /// stop.
+    /// The nearest hit among leaf `leaf`'s triangles in (0, t_max), and
+    /// its lane.
     #[inline(always)]
-    fn walk(&self, ray: &Ray, t_max: f32, mut visit: impl FnMut(usize, &mut ORay) -> bool) {
-        let mut node_ray = Self::node_ray(ray, t_max);
-        let mut state = self.bvh.new_traversal(node_ray.direction);
-        let mut node;
-        'search: {
-            traverse!(
-                self.bvh,
-                node,
-                state,
-                node.intersect_ray(&node_ray, state.oct_inv4),
-                {
-                    if visit(state.primitive_id as usize, &mut node_ray) {
-                        break 'search;
+    fn leaf_closest(&self, wr: &WatertightRay, leaf: usize, t_max: f32) -> Option<(Hit, usize)> {
+        let h = wr.intersect4(&self.leaves[leaf], 0.0, t_max);
+        let (t, u, v) = (h.t.to_array(), h.u.to_array(), h.v.to_array());
+        let mut best: Option<(Hit, usize)> = None;
+        let mut hits = h.hit;
+        while hits != 0 {
+            let lane = hits.trailing_zeros() as usize;
+            hits &= hits - 1;
+            if best.is_none_or(|(b, _)| t[lane] <= b.t) {
+                let hit = Hit {
+                    t: t[lane],
+                    u: u[lane],
+                    v: v[lane],
+                    triangle: 0,
+                };
+                best = Some((hit, lane));
+            }
+        }
+        let mut check = h.check;
+        while check != 0 {
+            let lane = check.trailing_zeros() as usize;
+            check &= check - 1;
+            let t_best = best.map_or(t_max, |(b, _)| b.t);
+            if let Some(hit) = wr.intersect(&self.tris[leaf * LANES + lane], 0.0, t_best) {
+                best = Some((hit, lane));
+            }
+        }
+        best
+    }
+
+    /// Whether anything is hit in (0, t_max): stops at the first hit, in
+    /// no particular order.
+    pub fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
+        self.with_stack(|stack| self.occluded_in(ray, t_max, stack))
+    }
+
+    /// [`WideBvh::occluded`] with `stack` for the subtrees still to visit.
+    fn occluded_in(&self, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
+        let wr = WatertightRay::new(ray);
+        let br = BoxRay::new(ray);
+        let mut depth = 0;
+        let mut at = self.root;
+        loop {
+            if at & LEAF == 0 {
+                let node = &self.nodes[at as usize];
+                let (mut entered, _) = br.enter(node, t_max);
+                while entered != 0 {
+                    let lane = entered.trailing_zeros() as usize;
+                    entered &= entered - 1;
+                    stack[depth] = (node.child[lane], 0.0);
+                    depth += 1;
+                }
+            } else {
+                let leaf = (at & !LEAF) as usize;
+                let h = wr.intersect4(&self.leaves[leaf], 0.0, t_max);
+                if h.hit != 0 {
+                    return true;
+                }
+                let mut check = h.check;
+                while check != 0 {
+                    let lane = check.trailing_zeros() as usize;
+                    check &= check - 1;
+                    let tri = &self.tris[leaf * LANES + lane];
+                    if wr.intersect(tri, 0.0, t_max).is_some() {
+                        return true;
                     }
                 }
-            );
+            }
+            if depth == 0 {
+                return false;
+            }
+            depth -= 1;
+            at = stack[depth].0;
+        }
+    }
+
+    /// Runs `query` with a traversal stack deep enough for this tree: on
+    /// the machine stack for trees of up to 10 levels (a million leaves in
+    /// a balanced tree), on the heap beyond. (The stack is kept small
+    /// because it is zeroed for every query.)
+    #[inline(always)]
+    fn with_stack<R>(&self, query: impl FnOnce(&mut [(u32, f32)]) -> R) -> R {
+        const ON_STACK: usize = 32;
+        let needed = 3 * self.levels + 1;
+        if needed <= ON_STACK {
+            query(&mut [(0, 0.0); ON_STACK])
+        } else {
+            query(&mut vec![(0, 0.0); needed])
         }
     }
 }
 
-/// The box-testing ray's parameter for distance `t` on the real ray,
-/// rounded up a little so a box that ends exactly at `t` is still tested.
-#[inline(always)]
-fn node_t(t: f32) -> f32 {
-    (t + NODE_SHIFT) * (1.0 + 1.0 / 1_048_576.0)
+/// Fills `counts[n]` with the number of triangles under binary node `n`.
+fn count_triangles(bvh2: &Bvh2, n: usize, counts: &mut [u32]) -> u32 {
+    let node = &bvh2.nodes[n];
+    counts[n] = if node.is_leaf() {
+        node.prim_count
+    } else {
+        let first = node.first_index as usize;
+        count_triangles(bvh2, first, counts) + count_triangles(bvh2, first + 1, counts)
+    };
+    counts[n]
 }
 
 #[cfg(test)]

@@ -1,5 +1,5 @@
 //! The scene as the shading chapters (5 and 6) see it: one `intersect`
-//! and one shadow-ray test over meshes (chapter 3's BVH, in the 8-wide form
+//! and one shadow-ray test over meshes (chapter 3's BVH, in the 4-wide form
 //! of [`crate::wide_bvh`]) and SDF objects
 //! (chapter 4's sphere tracing), each surface's BSDF, and the lights.
 //!
@@ -40,7 +40,7 @@ pub struct Interaction {
 pub struct World {
     /// Every triangle of the scene's meshes (empty without meshes).
     pub triangles: Triangles,
-    /// Chapter 3's BVH over them in its 8-wide form, which `intersect` and
+    /// Chapter 3's BVH over them in its 4-wide form, which `intersect` and
     /// `unoccluded` trace through; `None` for a scene without meshes.
     pub wide: Option<WideBvh>,
     /// The unit outward (winding) normal of each triangle.

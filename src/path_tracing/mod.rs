@@ -421,9 +421,10 @@ fn built_and_left_out(
     let (b, l) = (&mut report.built, &mut report.left_out);
     match world.and_then(|(w, s)| w.wide.as_ref().map(|wide| (w, wide, *s))) {
         Some((w, wide, s)) => b.push(format!(
-            "chapter 3's BVH, 8 wide, over {} triangles ({} nodes; world built in {})",
+            "chapter 3's BVH, 4 wide, over {} triangles ({} nodes, {} leaves; world built in {})",
             w.triangles.tris.len(),
             wide.node_count(),
+            wide.leaf_count(),
             format_seconds(s)
         )),
         None => l.push("BVH: the scene has no meshes".into()),

@@ -385,10 +385,11 @@ fn chapter_report(r: &ReflectionRender) -> Report {
     report.built.push("camera rays".into());
     match &world.wide {
         Some(wide) => report.built.push(format!(
-            "chapter 3's BVH, 8 wide, over {} meshes ({} triangles, {} nodes, built with the lights in {})",
+            "chapter 3's BVH, 4 wide, over {} meshes ({} triangles, {} nodes, {} leaves, built with the lights in {})",
             scene.meshes.len(),
             scene.triangle_count(),
             wide.node_count(),
+            wide.leaf_count(),
             format_seconds(r.build_seconds)
         )),
         None => report
