@@ -203,8 +203,16 @@ impl WatertightRay<'_> {
     #[inline(always)]
     pub fn intersect4(&self, tri: &Tri4, t_min: f32, t_max: f32) -> Hits4 {
         let [ox, oy, oz] = self.o.map(|o| Vec4::splat(o.x));
-        let (sx, sy, sz) = (Vec4::splat(self.sx), Vec4::splat(self.sy), Vec4::splat(self.sz));
-        let [rx, ry, rz] = [tri.rows[self.k[0]], tri.rows[self.k[1]], tri.rows[self.k[2]]];
+        let (sx, sy, sz) = (
+            Vec4::splat(self.sx),
+            Vec4::splat(self.sy),
+            Vec4::splat(self.sz),
+        );
+        let [rx, ry, rz] = [
+            tri.rows[self.k[0]],
+            tri.rows[self.k[1]],
+            tri.rows[self.k[2]],
+        ];
         // Translate, permute and shear each vertex (a, b, c).
         let z = [rz[0] - oz, rz[1] - oz, rz[2] - oz];
         let x = [0, 1, 2].map(|j| (rx[j] - ox) + sx * z[j]);
@@ -226,6 +234,16 @@ impl WatertightRay<'_> {
         let in_range_pos = det.cmpgt(zero) & t_scaled.cmpgt(lo) & t_scaled.cmple(hi);
         let finite = det.is_finite_mask();
         let candidate = !(neg & pos) & finite & (in_range_neg | in_range_pos);
+        if !candidate.any() {
+            // No lane can hit: skip the division and the error bound.
+            return Hits4 {
+                hit: 0,
+                check: any_zero.bitmask(),
+                t: Vec4::ZERO,
+                u: Vec4::ZERO,
+                v: Vec4::ZERO,
+            };
+        }
         let inv_det = Vec4::ONE / det;
         let t = t_scaled * inv_det;
         let trusted = t.cmpgt(delta_t4(x, y, z, [e0, e1, e2], inv_det));
@@ -262,8 +280,7 @@ fn delta_t4(x: [Vec4; 3], y: [Vec4; 3], z: [Vec4; 3], e: [Vec4; 3], inv_det: Vec
     let delta_z = g(3) * max_zt;
     let delta_x = g(5) * (max_xt + max_zt);
     let delta_y = g(5) * (max_yt + max_zt);
-    let delta_e =
-        Vec4::splat(2.0) * (g(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+    let delta_e = Vec4::splat(2.0) * (g(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
     let max_e = max_abs(e);
     Vec4::splat(3.0) * (g(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs()
 }

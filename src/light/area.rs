@@ -25,6 +25,8 @@ pub struct AreaLight {
     pub normals: Vec<Vec3>,
     /// Total area A.
     pub area: f32,
+    /// 1 / A, the density of a uniformly chosen point (computed once).
+    pub inv_area: f32,
     /// Emitted radiance Le.
     pub le: Vec3,
     /// Whether it emits from both faces (else only the front face, the
@@ -74,6 +76,7 @@ impl AreaLight {
             cdf,
             normals,
             area,
+            inv_area: 1.0 / area,
             le,
             two_sided,
         })
@@ -94,11 +97,17 @@ impl AreaLight {
     pub fn sample_li(&self, p: Vec3, u: Vec2) -> Option<LightSample> {
         // Pick a triangle by area, reusing u.x for the point inside it.
         let target = u.x * self.area;
-        let k = self
-            .cdf
-            .partition_point(|c| *c <= target)
-            .min(self.cdf.len() - 1);
-        let lo = if k == 0 { 0.0 } else { self.cdf[k - 1] };
+        // The first triangle whose running total exceeds the target: by
+        // counting for a few triangles (no branch to mispredict), by
+        // bisection for many; the same index either way.
+        let below = if self.cdf.len() <= 8 {
+            self.cdf.iter().map(|c| (*c <= target) as usize).sum()
+        } else {
+            self.cdf.partition_point(|c| *c <= target)
+        };
+        let k = below.min(self.cdf.len() - 1);
+        let prev = self.cdf[k.saturating_sub(1)];
+        let lo = if k == 0 { 0.0 } else { prev };
         let width = self.cdf[k] - lo;
         let ux = if width > 0.0 {
             ((target - lo) / width).clamp(0.0, 1.0 - f32::EPSILON)
@@ -116,7 +125,7 @@ impl AreaLight {
         }
         let wi = to / dist;
         let li = self.emitted(n_light, -wi);
-        let pdf = solid_angle_pdf(1.0 / self.area, dist, n_light.dot(wi));
+        let pdf = solid_angle_pdf(self.inv_area, dist, n_light.dot(wi));
         (pdf > 0.0 && li != Vec3::ZERO).then_some(LightSample {
             wi,
             li,
@@ -133,7 +142,7 @@ impl AreaLight {
         let to = y - p;
         let dist = to.length();
         match to.try_normalize() {
-            Some(wi) => solid_angle_pdf(1.0 / self.area, dist, n_light.dot(wi)),
+            Some(wi) => solid_angle_pdf(self.inv_area, dist, n_light.dot(wi)),
             None => 0.0,
         }
     }
