@@ -118,6 +118,7 @@ pub struct WatertightRay<'a> {
 impl<'a> WatertightRay<'a> {
     /// Permutation and shear for `ray`, exactly as the readable test
     /// computes them for every triangle.
+    #[inline]
     pub fn new(ray: &'a Ray) -> WatertightRay<'a> {
         let d_abs = ray.dir.abs();
         let kz = if d_abs.x > d_abs.y {

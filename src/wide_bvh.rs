@@ -282,8 +282,10 @@ impl WideBvh {
                         order[i] = item;
                         count += 1;
                     }
-                    stack[depth..depth + count - 1].copy_from_slice(&order[..count - 1]);
-                    depth += count - 1;
+                    for &item in &order[..count - 1] {
+                        stack[depth] = item;
+                        depth += 1;
+                    }
                     at = order[count - 1].0;
                     continue;
                 }
@@ -392,20 +394,30 @@ impl WideBvh {
         }
     }
 
-    /// Runs `query` with a traversal stack deep enough for this tree: on
-    /// the machine stack for trees of up to 15 levels (the 6,404 triangles
-    /// of `scenes/brdf-row.toml` make 8), on the heap beyond. The stack is
-    /// zeroed for every query, so it is kept no larger than that.
+    /// Runs `query` with a traversal stack deep enough for this tree: this
+    /// thread's stack of [`ON_STACK`] entries, which trees of up to 15
+    /// levels fit in (the 6,404 triangles of `scenes/brdf-row.toml` make
+    /// 8), or a fresh one on the heap for a deeper tree. (A stack made
+    /// anew for every query would have to be zeroed every time.)
     #[inline(always)]
     fn with_stack<R>(&self, query: impl FnOnce(&mut [(u32, f32)]) -> R) -> R {
-        const ON_STACK: usize = 46;
         let needed = 3 * self.levels + 1;
         if needed <= ON_STACK {
-            query(&mut [(0, 0.0); ON_STACK])
+            STACK.with_borrow_mut(|stack| query(stack))
         } else {
             query(&mut vec![(0, 0.0); needed])
         }
     }
+}
+
+/// Entries in each thread's traversal stack.
+const ON_STACK: usize = 46;
+
+thread_local! {
+    /// Each thread's traversal stack (a query does not call another, so
+    /// one per thread is enough).
+    static STACK: std::cell::RefCell<[(u32, f32); ON_STACK]> =
+        const { std::cell::RefCell::new([(0, 0.0); ON_STACK]) };
 }
 
 /// Fills `counts[n]` with the number of triangles under binary node `n`.
