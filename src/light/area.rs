@@ -106,8 +106,9 @@ impl AreaLight {
             self.cdf.partition_point(|c| *c <= target)
         };
         let k = below.min(self.cdf.len() - 1);
-        let prev = self.cdf[k.saturating_sub(1)];
-        let lo = if k == 0 { 0.0 } else { prev };
+        // The running total before triangle k (0 for the first), as a
+        // product rather than a branch: prev · 1 = prev, prev · 0 = 0.
+        let lo = self.cdf[k.saturating_sub(1)] * f32::from(u8::from(k > 0));
         let width = self.cdf[k] - lo;
         let ux = if width > 0.0 {
             ((target - lo) / width).clamp(0.0, 1.0 - f32::EPSILON)
