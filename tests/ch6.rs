@@ -178,6 +178,27 @@ fn the_cornell_box_matches_its_reference_region_by_region_for_every_estimator() 
 }
 
 #[test]
+fn the_two_stored_references_agree() {
+    // The 256x256 reference (the benchmark's per-pixel RMSE), box-filtered
+    // to 64x64, against the 64x64 one, region by region with both
+    // variances: two independent 16k-spp renders of the same image.
+    let small = cornell_reference();
+    let large = StoredReference::for_scene_at(&Scene::builtin(), 256, 256)
+        .expect("scenes/references holds the 256x256 Cornell-box reference");
+    let t = region_z_test(
+        &small.mean,
+        &small.var_of_mean,
+        &large.downsampled(4),
+        4,
+        1e-3,
+    );
+    assert!(t.passed(), "{t:?}");
+    assert_eq!(t.regions, 256);
+    // No reference of a size that was never made.
+    assert!(StoredReference::for_scene_at(&Scene::builtin(), 128, 128).is_none());
+}
+
+#[test]
 fn a_wrong_renderer_fails_the_region_test() {
     // The test has power: 10% too much light is caught.
     let r = cornell_reference();

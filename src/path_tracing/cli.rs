@@ -202,7 +202,8 @@ fn make_reference(
     let meta = format!(
         "scene = {}\ntriangles = {}\nwidth = {}\nheight = {}\nspp = {spp}\nseed = {}\n\
          estimator = {}\nsampler = {}\nmax_bounces = {}\nrr_after = {}\npaths = {}\nseconds = {secs:.1}\n\
-         threads = {}\ncommand = cargo run --release --bin ch6 -- --make-reference --width {} --height {} --spp {spp} --seed {}\n",
+         threads = {}\ncommand = cargo run --release --bin ch6 -- --make-reference --width {} --height {} --spp {spp} --seed {} \
+         --estimator {} --sampler {} {} --rr-after {}\n",
         scene.name,
         scene.triangle_count(),
         acc.width,
@@ -217,8 +218,16 @@ fn make_reference(
         acc.width,
         acc.height,
         common.seed,
+        stage.path.estimator.name(),
+        stage.sampler.name(),
+        stage
+            .path
+            .max_bounces
+            .map_or("--unlimited".into(), |k| format!("--max-bounces {k}")),
+        stage.path.rr_min_scatterings,
     );
-    let files = StoredReference::save(&acc, &reference_dir(), &scene.name, &meta)?;
+    let name = super::reference::stem(&scene.name, acc.width, acc.height);
+    let files = StoredReference::save(&acc, &reference_dir(), &name, &meta)?;
     writeln!(out, "{meta}wrote: {files:?}").map_err(stdout_err)?;
     Ok(())
 }

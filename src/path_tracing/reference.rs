@@ -1,9 +1,10 @@
 //! The stored Cornell-box reference and the statistical image test.
 //!
-//! A reference is a converged render kept under `scenes/references/`:
-//! `<scene>-mean.exr` (the mean radiance), `<scene>-var.exr` (per pixel
+//! A reference is a converged render kept under `scenes/references/`, named
+//! by scene and size (`<stem>` = `<scene>-<width>x<height>`):
+//! `<stem>-mean.exr` (the mean radiance), `<stem>-var.exr` (per pixel
 //! and channel the estimated variance of that mean, s²/n) and
-//! `<scene>.txt` (how it was made: resolution, samples, seed, estimator,
+//! `<stem>.txt` (how it was made: resolution, samples, seed, estimator,
 //! bounce limit, time, and the command that regenerates it).
 //!
 //! The image test compares *regions*: the mean of a block of pixels in a
@@ -38,13 +39,25 @@ pub struct StoredReference {
     pub meta: String,
 }
 
+/// The size of the reference the tests, the studies and the terminal UI
+/// compare with (larger renders are box-downsampled to it).
+pub const REFERENCE_SIZE: u32 = 64;
+
 impl StoredReference {
-    /// The stored reference of `scene`, if there is one for a scene of that
-    /// name with the same triangle count.
+    /// The stored [`REFERENCE_SIZE`]² reference of `scene`, if there is one
+    /// for a scene of that name with the same triangle count.
     pub fn for_scene(scene: &Scene) -> Option<StoredReference> {
-        let r = StoredReference::load(&reference_dir(), &scene.name).ok()?;
+        StoredReference::for_scene_at(scene, REFERENCE_SIZE, REFERENCE_SIZE)
+    }
+
+    /// The stored reference of `scene` at `width` x `height`, if there is
+    /// one (`<name>-<width>x<height>` in [`reference_dir`]).
+    pub fn for_scene_at(scene: &Scene, width: u32, height: u32) -> Option<StoredReference> {
+        let r = StoredReference::load(&reference_dir(), &stem(&scene.name, width, height)).ok()?;
         let triangles = r.value("triangles")?.parse::<usize>().ok()?;
-        (triangles == scene.triangle_count()).then_some(r)
+        let sized = (r.mean.width, r.mean.height) == (width, height)
+            && (r.var_of_mean.width, r.var_of_mean.height) == (width, height);
+        (triangles == scene.triangle_count() && sized).then_some(r)
     }
 
     /// Reads `<name>-mean.exr`, `<name>-var.exr` and `<name>.txt` from `dir`.
@@ -92,6 +105,11 @@ impl StoredReference {
             meta: self.meta.clone(),
         }
     }
+}
+
+/// The file stem of the reference of scene `name` at `width` x `height`.
+pub fn stem(name: &str, width: u32, height: u32) -> String {
+    format!("{name}-{width}x{height}")
 }
 
 /// Nearest-neighbour enlargement by an integer factor (for showing a

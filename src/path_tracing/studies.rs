@@ -268,11 +268,17 @@ pub fn tiny_light(size: u32, spp: u32) -> (StabilityCase, f64) {
             ok &= z.abs() < 4.0;
             z_mis = z;
         }
+        // With no sample reaching the light there is no variance to
+        // scale by, so no z to print.
+        let z_text = if var > 0.0 {
+            format!("z = {z:.1}")
+        } else {
+            "no sample reached the light: no z".into()
+        };
         measured.push(format!(
-            "{}: mean {} (z = {:.1}), sample variance {}, largest pixel {}",
+            "{}: mean {} ({z_text}), sample variance {}, largest pixel {}",
             e.name(),
             format_number(s / n),
-            z,
             format_number(var),
             format_number(max as f64)
         ));
