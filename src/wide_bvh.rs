@@ -532,6 +532,33 @@ mod tests {
     }
 
     #[test]
+    fn a_root_that_is_a_leaf_agrees() {
+        // One to four triangles: the whole tree is one leaf, no node.
+        for n in 1..=4 {
+            let tris = &box_scene(1.0)[..n];
+            let bvh = Bvh::build(tris).unwrap();
+            let wide = WideBvh::build(tris).unwrap();
+            assert_eq!((wide.node_count(), wide.leaf_count()), (0, 1));
+            let mut hits = 0;
+            for i in 0..2_000u64 {
+                let u = |d| random(13, i, 0, d);
+                let o = Vec3::new(u(0), u(1), u(2)) * 1.98 - 0.99;
+                let Ok(ray) = Ray::new(o, Vec3::new(u(3), u(4), u(5)) - 0.5) else {
+                    continue;
+                };
+                let a = bvh.closest(&ray, f32::INFINITY, Intersector::Watertight);
+                assert_eq!(a, wide.closest(&ray, f32::INFINITY), "{n} triangles, ray {i}");
+                assert_eq!(
+                    bvh.occluded(&ray, f32::INFINITY, Intersector::Watertight),
+                    wide.occluded(&ray, f32::INFINITY)
+                );
+                hits += a.is_some() as u32;
+            }
+            assert!(hits > 100, "{n} triangles: {hits} hits");
+        }
+    }
+
+    #[test]
     fn a_tree_too_deep_for_the_fixed_stack_still_agrees() {
         // Triangles at exponentially growing distances make a lopsided
         // tree, far deeper than the on-stack traversal stack allows, so
