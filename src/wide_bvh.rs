@@ -547,7 +547,11 @@ mod tests {
                     continue;
                 };
                 let a = bvh.closest(&ray, f32::INFINITY, Intersector::Watertight);
-                assert_eq!(a, wide.closest(&ray, f32::INFINITY), "{n} triangles, ray {i}");
+                assert_eq!(
+                    a,
+                    wide.closest(&ray, f32::INFINITY),
+                    "{n} triangles, ray {i}"
+                );
                 assert_eq!(
                     bvh.occluded(&ray, f32::INFINITY, Intersector::Watertight),
                     wide.occluded(&ray, f32::INFINITY)
