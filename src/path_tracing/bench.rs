@@ -111,10 +111,11 @@ fn vertex_rays(world: &World, scene: &Scene) -> (Vec<Ray>, Vec<(Ray, f32)>) {
             (pixel % w as u64) as f32 + u(0),
             (pixel / w as u64) as f32 + u(1),
         );
-        let Some(it) = world.intersect(&scene.camera.ray(raster)) else {
+        let camera_ray = scene.camera.ray(raster);
+        let Some(it) = world.intersect(&camera_ray) else {
             continue;
         };
-        let n = if it.n.dot(scene.camera.ray(raster).dir) > 0.0 {
+        let n = if it.n.dot(camera_ray.dir) > 0.0 {
             -it.n
         } else {
             it.n
