@@ -336,7 +336,25 @@ impl WideBvh {
                 best = Some((hit, lane));
             }
         }
-        let mut check = h.check;
+        if h.check != 0 {
+            best = self.closest_checked(wr, leaf, h.check, t_max, best);
+        }
+        best
+    }
+
+    /// The rare lanes of [`WideBvh::leaf_closest`] that the one-triangle
+    /// test must decide. Kept out of line, so the common path's registers
+    /// are not spent on the f64 tie-breakers.
+    #[cold]
+    #[inline(never)]
+    fn closest_checked(
+        &self,
+        wr: &WatertightRay,
+        leaf: usize,
+        mut check: u32,
+        t_max: f32,
+        mut best: Option<(Hit, usize)>,
+    ) -> Option<(Hit, usize)> {
         while check != 0 {
             let lane = check.trailing_zeros() as usize;
             check &= check - 1;
@@ -373,17 +391,8 @@ impl WideBvh {
             } else {
                 let leaf = (at & !LEAF) as usize;
                 let h = wr.intersect4(&self.leaves[leaf], 0.0, t_max);
-                if h.hit != 0 {
+                if h.hit != 0 || (h.check != 0 && self.any_checked(&wr, leaf, h.check, t_max)) {
                     return true;
-                }
-                let mut check = h.check;
-                while check != 0 {
-                    let lane = check.trailing_zeros() as usize;
-                    check &= check - 1;
-                    let tri = &self.tris[leaf * LANES + lane];
-                    if wr.intersect(tri, 0.0, t_max).is_some() {
-                        return true;
-                    }
                 }
             }
             if depth == 0 {
@@ -392,6 +401,21 @@ impl WideBvh {
             depth -= 1;
             at = stack[depth].0;
         }
+    }
+
+    /// Whether any of the rare lanes `check` of leaf `leaf` is hit in
+    /// (0, t_max), by the one-triangle test (out of line, as above).
+    #[cold]
+    #[inline(never)]
+    fn any_checked(&self, wr: &WatertightRay, leaf: usize, mut check: u32, t_max: f32) -> bool {
+        while check != 0 {
+            let lane = check.trailing_zeros() as usize;
+            check &= check - 1;
+            if wr.intersect(&self.tris[leaf * LANES + lane], 0.0, t_max).is_some() {
+                return true;
+            }
+        }
+        false
     }
 
     /// Runs `query` with a traversal stack deep enough for this tree: this
