@@ -137,13 +137,15 @@ impl<'a> WatertightRay<'a> {
         let k = PERMUTATION[kz];
         let (dir, origin) = (ray.dir.to_array(), ray.origin.to_array());
         let d = Vec3::new(dir[k[0]], dir[k[1]], dir[k[2]]);
+        // (-dx / dz, -dy / dz, 1 / dz) in one SIMD division.
+        let s = Vec3A::new(-d.x, -d.y, 1.0) / Vec3A::splat(d.z);
         WatertightRay {
             ray,
             k,
             o: k.map(|i| Vec3A::splat(origin[i])),
-            sx: -d.x / d.z,
-            sy: -d.y / d.z,
-            sz: 1.0 / d.z,
+            sx: s.x,
+            sy: s.y,
+            sz: s.z,
         }
     }
 

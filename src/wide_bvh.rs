@@ -13,7 +13,7 @@
 
 use std::time::Duration;
 
-use glam::{Vec3, Vec4};
+use glam::{Vec3, Vec3A, Vec4};
 use obvhs::bvh2::builder::build_bvh2;
 use obvhs::bvh2::Bvh2;
 use obvhs::BvhBuildParams;
@@ -81,18 +81,14 @@ struct BoxRay {
 impl BoxRay {
     #[inline(always)]
     fn new(ray: &Ray) -> BoxRay {
-        let d = ray.dir.to_array();
-        let safe = |x: f32| {
-            if x.abs() < 1e-30 {
-                1e-30f32.copysign(x)
-            } else {
-                x
-            }
-        };
+        let d = Vec3A::from(ray.dir);
+        let tiny = d.abs().cmplt(Vec3A::splat(1e-30));
+        let safe = Vec3A::select(tiny, Vec3A::splat(1e-30).copysign(d), d);
+        let inv = (Vec3A::ONE / safe).to_array();
         BoxRay {
             o: ray.origin.to_array().map(Vec4::splat),
-            inv: d.map(|x| Vec4::splat(1.0 / safe(x))),
-            negative: d.map(|x| x.is_sign_negative()),
+            inv: inv.map(Vec4::splat),
+            negative: d.to_array().map(|x| x.is_sign_negative()),
         }
     }
 
