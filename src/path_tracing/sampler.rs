@@ -14,11 +14,7 @@ pub enum SamplerKind {
     Independent,
     /// Owen-scrambled Sobol points (Burley 2020), scrambled per pixel, in
     /// independently scrambled groups of four dimensions ("padding"), so a
-    /// path of any length gets well-spread numbers in every group. The
-    /// pairs ([`PathSampler::get2`]: the camera jitter, each bounce's light
-    /// point and direction) come from Sobol; the single numbers
-    /// ([`PathSampler::get1`]: which light, which lobe, roulette) are
-    /// independent, so a bounce needs one group of four, not two. Sample
+    /// path of any length gets well-spread numbers in every group. Sample
     /// indices past 2^16 (the crate's limit) fall back to independent
     /// numbers.
     Sobol,
@@ -52,14 +48,7 @@ pub struct PathSampler {
     /// The four numbers of that group, computed together (the crate's
     /// `sample_4d` does all four with SIMD at the cost of about one).
     group_values: [f32; 4],
-    /// With Sobol: how many single numbers (`get1`) were drawn; they are
-    /// independent numbers of dimensions [`SINGLES`] + 0, 1, 2, ...
-    singles: u64,
 }
-
-/// With Sobol, where the dimensions of the independent single numbers
-/// start: far above any Sobol dimension a path can reach.
-const SINGLES: u64 = 1 << 40;
 
 /// The largest sample index the Sobol tables cover.
 const SOBOL_MAX_SAMPLES: u64 = 1 << 16;
@@ -79,34 +68,12 @@ impl PathSampler {
             pixel_scramble: mix64(seed ^ mix64(pixel)),
             group: u64::MAX,
             group_values: [0.0; 4],
-            singles: 0,
         }
     }
 
-    /// The next single number in [0, 1): the next dimension's independent
-    /// number, or with Sobol an independent number that leaves the Sobol
-    /// dimensions alone.
+    /// The next number in [0, 1).
     #[inline]
     pub fn get1(&mut self) -> f32 {
-        if self.kind == SamplerKind::Sobol {
-            self.singles += 1;
-            return self.independent(SINGLES + self.singles - 1);
-        }
-        let d = self.dimension;
-        self.dimension += 1;
-        self.independent(d)
-    }
-
-    /// The next two numbers, a pair: two consecutive dimensions.
-    #[inline]
-    pub fn get2(&mut self) -> Vec2 {
-        let x = self.next_dimension();
-        Vec2::new(x, self.next_dimension())
-    }
-
-    /// The number of the next dimension.
-    #[inline]
-    fn next_dimension(&mut self) -> f32 {
         let d = self.dimension;
         self.dimension += 1;
         match self.kind {
@@ -118,16 +85,19 @@ impl PathSampler {
                 }
                 self.group_values[(d % 4) as usize]
             }
-            _ => self.independent(d),
+            _ => {
+                // The last step of `random`: the same number, one mix.
+                let h = mix64(self.prefix ^ d.wrapping_mul(0xd6e8_feb8_6659_fd93));
+                (h >> 40) as f32 * (1.0 / (1u64 << 24) as f32)
+            }
         }
     }
 
-    /// The independent number of dimension `d`: [`crate::sampling::random`]'s
-    /// last step, one mix.
+    /// The next two numbers.
     #[inline]
-    fn independent(&self, d: u64) -> f32 {
-        let h = mix64(self.prefix ^ d.wrapping_mul(0xd6e8_feb8_6659_fd93));
-        (h >> 40) as f32 * (1.0 / (1u64 << 24) as f32)
+    pub fn get2(&mut self) -> Vec2 {
+        let x = self.get1();
+        Vec2::new(x, self.get1())
     }
 
     /// Skips to the first dimension of the next group of four, so each
@@ -155,36 +125,15 @@ mod tests {
     #[test]
     fn sobol_numbers_are_the_crates_one_dimension_at_a_time() {
         // The group-of-four shortcut returns exactly what one-at-a-time
-        // sampling of the same dimension and scramble returns, and single
-        // numbers drawn in between do not move the pairs.
+        // sampling of the same dimension and scramble returns.
         for sample in [0u64, 1, 5, 63, 1000] {
             let mut p = PathSampler::new(SamplerKind::Sobol, 9, 123, sample);
-            for pair in 0..12u64 {
-                let one = |d: u64| {
-                    let scramble = mix64(p.pixel_scramble ^ (d / 4)) as u32;
-                    sobol_burley::sample(sample as u32, (d % 4) as u32, scramble)
-                        .min(1.0 - f32::EPSILON / 2.0)
-                };
-                let expected = Vec2::new(one(2 * pair), one(2 * pair + 1));
-                if pair % 3 == 1 {
-                    p.get1();
-                }
-                assert_eq!(p.get2(), expected, "sample {sample}, pair {pair}");
+            for d in 0..24u64 {
+                let scramble = mix64(p.pixel_scramble ^ (d / 4)) as u32;
+                let one = sobol_burley::sample(sample as u32, (d % 4) as u32, scramble)
+                    .min(1.0 - f32::EPSILON / 2.0);
+                assert_eq!(p.get1(), one, "sample {sample}, dimension {d}");
             }
-        }
-    }
-
-    #[test]
-    fn sobol_single_numbers_are_independent_numbers_of_their_own_dimensions() {
-        // Each single number is `random` of dimension SINGLES + k, whatever
-        // pairs were drawn in between, so it is a pure function of (seed,
-        // pixel, sample, dimension) like every other number.
-        let mut p = PathSampler::new(SamplerKind::Sobol, 5, 77, 3);
-        for k in 0..10 {
-            if k % 2 == 0 {
-                p.get2();
-            }
-            assert_eq!(p.get1(), crate::sampling::random(5, 77, 3, SINGLES + k));
         }
     }
 
