@@ -407,7 +407,10 @@ impl WideBvh {
         while check != 0 {
             let lane = check.trailing_zeros() as usize;
             check &= check - 1;
-            if wr.intersect(&self.tris[leaf * LANES + lane], 0.0, t_max).is_some() {
+            if wr
+                .intersect(&self.tris[leaf * LANES + lane], 0.0, t_max)
+                .is_some()
+            {
                 return true;
             }
         }
