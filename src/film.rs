@@ -108,11 +108,19 @@ impl Film {
     /// Writes a linear f32 OpenEXR file, atomically.
     pub fn write_exr(&self, path: &Path) -> Result<()> {
         write_atomically(path, |tmp| {
-            exr::prelude::write_rgb_file(tmp, self.width as usize, self.height as usize, |x, y| {
+            use exr::prelude::*;
+            let channels = SpecificChannels::rgb(|Vec2(x, y): Vec2<usize>| {
                 let p = self.pixels[y * self.width as usize + x];
                 (p.x, p.y, p.z)
-            })
-            .map_err(|e| e.to_string())
+            });
+            // Compressed one block after another: the parallel writer stores
+            // blocks in the order they finish, so the same image would not
+            // always give the same bytes.
+            Image::from_channels((self.width as usize, self.height as usize), channels)
+                .write()
+                .non_parallel()
+                .to_file(tmp)
+                .map_err(|e| e.to_string())
         })
     }
 
