@@ -1,16 +1,16 @@
 //! Every chapter that exists, in lecture order. Front ends (the main binary,
 //! the terminal UI) list chapters from here and nowhere else.
 
-use crate::stage::Chapter;
+use crate::core::stage::Chapter;
 
 /// All chapters, in order.
 pub fn all() -> Vec<&'static dyn Chapter> {
     vec![
-        &crate::projection::Projection,
-        &crate::raster::RASTERIZATION,
-        &crate::raytrace::RayTriangle,
-        &crate::sphere_tracing::DEFAULT,
-        &crate::reflection::DEFAULT,
-        &crate::path_tracing::DEFAULT,
+        &crate::ch1_projection::stage::Projection,
+        &crate::ch2_rasterization::RASTERIZATION,
+        &crate::ch3_ray_triangle::stage::RayTriangle,
+        &crate::ch4_implicit_surfaces::stage::DEFAULT,
+        &crate::ch5_reflection::stage::DEFAULT,
+        &crate::ch6_global_illumination::stage::DEFAULT,
     ]
 }

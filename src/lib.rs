@@ -35,45 +35,17 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod bvh;
-pub mod camera;
+pub mod ch1_projection;
+pub mod ch2_rasterization;
+pub mod ch3_ray_triangle;
+pub mod ch4_implicit_surfaces;
+pub mod ch5_reflection;
+pub mod ch6_global_illumination;
 pub mod chapters;
-pub mod draw;
-pub mod error;
-pub mod exercises;
-pub mod film;
+pub mod core;
 pub mod grading;
-pub mod light;
-pub mod material;
-pub mod mesh;
-pub mod mesh_check;
-pub mod mis;
-pub mod path_tracing;
-pub mod plot;
-pub mod preview;
-pub mod projection;
-pub mod radiometry;
-pub mod raster;
-pub mod ray;
-pub mod raytrace;
-pub mod raytrace_bench;
-pub mod raytrace_studies;
-pub mod reflection;
-pub mod report;
-pub mod run;
-pub mod sampling;
 pub mod scene;
-pub mod sdf;
-pub mod spawn;
-pub mod sphere_tracing;
-pub mod stage;
-pub mod triangle;
 #[cfg(feature = "tui")]
 pub mod tui;
-pub mod visibility_agreement;
-pub mod warp;
-pub mod watertight_fast;
-pub mod wide_bvh;
-pub mod world;
 
-pub use error::{Error, Result};
+pub use crate::core::error::{Error, Result};

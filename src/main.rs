@@ -14,9 +14,9 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use raystep::run::run_headless;
+use raystep::core::run::run_headless;
+use raystep::core::stage::Settings;
 use raystep::scene::Scene;
-use raystep::stage::Settings;
 
 struct Args {
     headless: bool,

@@ -150,8 +150,20 @@ fn every_linked_page_and_figure_exists() {
 #[test]
 fn include_checker_rejects_what_it_should() {
     let page = book_src().join("introduction.md");
-    assert!(resolve_include(&page, "{{#include ../../src/camera.rs:pinhole}}").is_ok());
-    assert!(resolve_include(&page, "{{#include ../../src/camera.rs:no_such_anchor}}").is_err());
+    assert!(resolve_include(
+        &page,
+        "{{#include ../../src/ch1_projection/camera.rs:pinhole}}"
+    )
+    .is_ok());
+    assert!(resolve_include(
+        &page,
+        "{{#include ../../src/ch1_projection/camera.rs:no_such_anchor}}"
+    )
+    .is_err());
     assert!(resolve_include(&page, "{{#include ../../src/no_such_file.rs:pinhole}}").is_err());
-    assert!(resolve_include(&page, "{{#include ../../src/camera.rs:10:20}}").is_err());
+    assert!(resolve_include(
+        &page,
+        "{{#include ../../src/ch1_projection/camera.rs:10:20}}"
+    )
+    .is_err());
 }

@@ -6,18 +6,18 @@ mod common;
 use std::sync::Arc;
 
 use glam::{DVec2, Vec3};
-use raystep::camera::project_pinhole;
-use raystep::preview::{preview, PreviewStyle};
-use raystep::projection::{draw_scene, stability_cases, vanishing_points, Projection};
-use raystep::report::{Report, Times};
+use raystep::ch1_projection::camera::project_pinhole;
+use raystep::ch1_projection::stage::{draw_scene, stability_cases, vanishing_points, Projection};
+use raystep::core::preview::{preview, PreviewStyle};
+use raystep::core::report::{Report, Times};
+use raystep::core::stage::{Chapter, Settings};
 use raystep::scene::Scene;
-use raystep::stage::{Chapter, Settings};
 
 fn scene(name: &str) -> Scene {
     Scene::load(&common::root().join("scenes").join(format!("{name}.toml"))).unwrap()
 }
 
-fn render_report(scene: Scene, studies: bool) -> (Report, Vec<raystep::film::Film>) {
+fn render_report(scene: Scene, studies: bool) -> (Report, Vec<raystep::core::film::Film>) {
     let settings = Settings {
         studies,
         ..Settings::default()

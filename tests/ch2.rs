@@ -5,18 +5,20 @@ use std::path::Path;
 use std::sync::Arc;
 
 use glam::{DVec2, DVec3, I64Vec2, Vec3};
+use raystep::ch2_rasterization::clip::ClipVertex;
+use raystep::ch2_rasterization::coverage::{coverage_counts, rasterize};
+use raystep::ch2_rasterization::interpolate::{interpolate, Interpolation};
+use raystep::ch2_rasterization::mesh_check::check_mesh;
+use raystep::ch2_rasterization::setup::{raster_triangle, setup_raster_polygon, ScreenTriangle};
+use raystep::ch2_rasterization::studies::{
+    screen_fan, screen_grid, stability_cases, star, test_camera,
+};
+use raystep::ch2_rasterization::{render_frame, Rasterization};
+use raystep::core::report::Times;
+use raystep::core::stage::{Chapter, Settings};
 use raystep::grading::{self, Outcome, Solution};
-use raystep::mesh::Mesh;
-use raystep::mesh_check::check_mesh;
-use raystep::raster::clip::ClipVertex;
-use raystep::raster::coverage::{coverage_counts, rasterize};
-use raystep::raster::interpolate::{interpolate, Interpolation};
-use raystep::raster::setup::{raster_triangle, setup_raster_polygon, ScreenTriangle};
-use raystep::raster::studies::{screen_fan, screen_grid, stability_cases, star, test_camera};
-use raystep::raster::{render_frame, Rasterization};
-use raystep::report::Times;
+use raystep::scene::mesh::Mesh;
 use raystep::scene::{Material, Scene};
-use raystep::stage::{Chapter, Settings};
 
 fn scene(name: &str) -> Scene {
     Scene::load(
@@ -35,7 +37,7 @@ fn ascii(tris: &[ScreenTriangle], w: u32, h: u32) -> String {
         for x in 0..w {
             let p = I64Vec2::new(x as i64 * 256 + 128, y as i64 * 256 + 128);
             let hits: Vec<usize> = (0..tris.len())
-                .filter(|&t| raystep::raster::coverage::covers(&tris[t], p))
+                .filter(|&t| raystep::ch2_rasterization::coverage::covers(&tris[t], p))
                 .collect();
             s.push(match hits.len() {
                 0 => '.',
@@ -207,7 +209,7 @@ fn same_bytes_on_one_and_two_threads() {
     let (a, b) = (run(1), run(2));
     assert_eq!(a.buffer, b.buffer);
     for (x, y) in a.films.iter().zip(&b.films) {
-        let bits = |f: &raystep::film::Film| -> Vec<u32> {
+        let bits = |f: &raystep::core::film::Film| -> Vec<u32> {
             f.pixels
                 .iter()
                 .flat_map(|p| p.to_array().map(f32::to_bits))
@@ -386,15 +388,20 @@ fn exercise_stubs_fail_cleanly_and_references_pass() {
 
 #[test]
 fn graders_catch_wrong_answers() {
-    use raystep::exercises::ch2::{check_barycentric, check_depth_test, check_edge_function};
+    use raystep::grading::exercises::ch2::{
+        check_barycentric, check_depth_test, check_edge_function,
+    };
     // Sign flipped edge function, unnormalised barycentrics, `<=` depth test.
     assert!(
-        !check_edge_function(|a, b, p| -raystep::raster::edge::edge_function(a, b, p)).passed()
+        !check_edge_function(|a, b, p| -raystep::ch2_rasterization::edge::edge_function(a, b, p))
+            .passed()
     );
-    assert!(!check_barycentric(
-        |a, b, c, p| raystep::raster::edge::barycentric(a, b, c, p).map(|v| v * 2.0)
-    )
-    .passed());
+    assert!(
+        !check_barycentric(
+            |a, b, c, p| raystep::ch2_rasterization::edge::barycentric(a, b, c, p).map(|v| v * 2.0)
+        )
+        .passed()
+    );
     assert!(!check_depth_test(|d, i, z| {
         if z <= d[i] {
             d[i] = z;

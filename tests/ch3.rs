@@ -3,18 +3,18 @@
 use std::sync::Arc;
 
 use glam::{DVec3, Vec2, Vec3};
-use raystep::bvh::{closest_naive, occluded_naive, Bvh, Triangles};
-use raystep::mesh::Mesh;
-use raystep::ray::Ray;
-use raystep::raytrace::{render_views, sample_position, Geometry, RayTriangle};
-use raystep::raytrace_studies::{
+use raystep::ch3_ray_triangle::bvh::{closest_naive, occluded_naive, Bvh, Triangles};
+use raystep::ch3_ray_triangle::ray::Ray;
+use raystep::ch3_ray_triangle::stage::{render_views, sample_position, Geometry, RayTriangle};
+use raystep::ch3_ray_triangle::studies::{
     bunny, leak_test, naive_vs_bvh, procedural_camera, procedural_mesh, scene_of,
     self_intersections, stability_cases, StudySize,
 };
-use raystep::sampling::random;
+use raystep::ch3_ray_triangle::triangle::{intersect_f64, Intersector};
+use raystep::core::sampling::random;
+use raystep::core::stage::{Chapter, Settings};
+use raystep::scene::mesh::Mesh;
 use raystep::scene::Scene;
-use raystep::stage::{Chapter, Settings};
-use raystep::triangle::{intersect_f64, Intersector};
 
 /// Seeded rays from random points around `tris` towards random triangles.
 fn rays_at(tris: &[[Vec3; 3]], n: u64, seed: u64) -> Vec<Ray> {
@@ -252,7 +252,7 @@ fn naive_and_bvh_images_are_identical() {
 #[test]
 fn anti_aliasing_error_falls_with_samples() {
     let scene = scene_of(procedural_mesh(200), procedural_camera(32, 24));
-    let et = raystep::raytrace_studies::anti_aliasing_study(&scene, &[1, 16], 128, 0);
+    let et = raystep::ch3_ray_triangle::studies::anti_aliasing_study(&scene, &[1, 16], 128, 0);
     assert_eq!(et.rows.len(), 2);
     assert!(et.rows[1].error < et.rows[0].error * 0.6, "{:?}", et.rows);
 }
@@ -273,7 +273,7 @@ fn relative_error_of_t_stays_small_far_away() {
     };
     assert_eq!(reference(1e6).map(|h| h.0), Some(1e6));
     for k in 0..=7 {
-        let (err, misses) = raystep::raytrace_studies::t_relative_error(
+        let (err, misses) = raystep::ch3_ray_triangle::studies::t_relative_error(
             10f64.powi(k),
             100,
             Intersector::Watertight,
@@ -311,7 +311,7 @@ fn ch3_exercise_stubs_fail_cleanly_and_references_pass() {
 
 #[test]
 fn intersector_table_counts_agreement_with_f64() {
-    let t = raystep::raytrace_studies::intersector_speed(5_000);
+    let t = raystep::ch3_ray_triangle::studies::intersector_speed(5_000);
     assert_eq!(t.rows.len(), 3);
     for row in &t.rows {
         let hits: usize = row[2].parse().unwrap();
@@ -323,7 +323,7 @@ fn intersector_table_counts_agreement_with_f64() {
 
 #[test]
 fn snapshot_of_the_tetrahedron_views() {
-    use raystep::preview::{preview, PreviewStyle};
+    use raystep::core::preview::{preview, PreviewStyle};
     let scene = Scene::load(std::path::Path::new(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/scenes/tetrahedron.toml"
@@ -334,7 +334,7 @@ fn snapshot_of_the_tetrahedron_views() {
     let geometry = Geometry::new(&scene);
     let films = render_views(&scene.camera, &geometry, 1, 0);
     let mut text = String::new();
-    for (view, film) in raystep::raytrace::VIEWS.iter().zip(&films) {
+    for (view, film) in raystep::ch3_ray_triangle::stage::VIEWS.iter().zip(&films) {
         text += &format!("{}:\n{}", view.name, preview(film, 48, PreviewStyle::Ascii));
     }
     insta::assert_snapshot!(text);
@@ -342,7 +342,7 @@ fn snapshot_of_the_tetrahedron_views() {
 
 #[test]
 fn first_hits_agree_with_chapter_2_except_on_edges() {
-    use raystep::visibility_agreement::raster_agreement;
+    use raystep::ch3_ray_triangle::agreement::raster_agreement;
     for name in [
         "tetrahedron",
         "bunny",
@@ -356,7 +356,7 @@ fn first_hits_agree_with_chapter_2_except_on_edges() {
             .unwrap()
             .with_resolution(160, 120)
             .unwrap();
-        let geometry = raystep::raytrace::Geometry::new(&s);
+        let geometry = raystep::ch3_ray_triangle::stage::Geometry::new(&s);
         let a = raster_agreement(&s, &geometry).unwrap();
         assert_eq!(a.pixels, 160 * 120);
         assert_eq!(a.differ_off_edges, 0, "{name}: {a:?}");
@@ -378,14 +378,14 @@ fn first_hits_agree_with_chapter_2_except_on_edges() {
             0.15, 0.0, 0.0,
         )));
     }
-    let a = raster_agreement(&s, &raystep::raytrace::Geometry::new(&moved)).unwrap();
+    let a = raster_agreement(&s, &raystep::ch3_ray_triangle::stage::Geometry::new(&moved)).unwrap();
     assert!(a.differ_off_edges > 0, "{a:?}");
 }
 
 #[test]
 fn fast_watertight_test_gives_the_readable_ones_hits_bit_for_bit() {
-    use raystep::triangle::intersect_watertight;
-    use raystep::watertight_fast::{SoaTriangle, WatertightRay};
+    use raystep::ch3_ray_triangle::triangle::intersect_watertight;
+    use raystep::ch3_ray_triangle::watertight_fast::{SoaTriangle, WatertightRay};
     let mut hits = 0;
     for i in 0..50_000u64 {
         let r = |d| random(77, i, 0, d);
@@ -419,7 +419,9 @@ fn fast_watertight_test_gives_the_readable_ones_hits_bit_for_bit() {
         };
         let readable = intersect_watertight(&ray, tri, 0.0, t_max);
         let fast = WatertightRay::new(&ray).intersect(&SoaTriangle::new(tri), 0.0, t_max);
-        let bits = |h: Option<raystep::triangle::Hit>| h.map(|h| [h.t, h.u, h.v].map(f32::to_bits));
+        let bits = |h: Option<raystep::ch3_ray_triangle::triangle::Hit>| {
+            h.map(|h| [h.t, h.u, h.v].map(f32::to_bits))
+        };
         assert_eq!(bits(readable), bits(fast), "{tri:?} {ray:?}");
         hits += u32::from(fast.is_some());
     }

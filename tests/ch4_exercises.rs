@@ -4,7 +4,7 @@
 mod common;
 
 use glam::Vec3;
-use raystep::exercises::ch4;
+use raystep::grading::exercises::ch4;
 
 #[test]
 fn chapter_4_references_pass_and_stubs_fail_cleanly() {

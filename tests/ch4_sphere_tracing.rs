@@ -7,21 +7,23 @@ mod common;
 use std::sync::Arc;
 
 use glam::{DVec3, Vec2, Vec3};
-use raystep::film::Film;
-use raystep::report::{Report, Times};
-use raystep::scene::Scene;
-use raystep::sdf::march::{fixed_step, over_relaxed, sphere_trace, Ending, March};
-use raystep::sdf::normal::{normal, NormalScheme};
-use raystep::sdf::{Exactness, ScaleBound};
-use raystep::sphere_tracing::render::Method;
-use raystep::sphere_tracing::stability::{
+use raystep::ch4_implicit_surfaces::march::{
+    fixed_step, over_relaxed, sphere_trace, Ending, March,
+};
+use raystep::ch4_implicit_surfaces::normal::{normal, NormalScheme};
+use raystep::ch4_implicit_surfaces::render::Method;
+use raystep::ch4_implicit_surfaces::sdf::{Exactness, ScaleBound};
+use raystep::ch4_implicit_surfaces::stability::{
     ellipsoid_wrong_pixels, grazing, stability_cases, thin_plate_wrong_pixels,
 };
-use raystep::sphere_tracing::studies::{
+use raystep::ch4_implicit_surfaces::stage::{eikonal_check, SphereTracing, DEFAULT};
+use raystep::ch4_implicit_surfaces::studies::{
     analytic_hit, error_against_time, ray_ellipsoid, sphere_on_plane, study_camera,
 };
-use raystep::sphere_tracing::{eikonal_check, SphereTracing, DEFAULT};
-use raystep::stage::{Chapter, Settings};
+use raystep::core::film::Film;
+use raystep::core::report::{Report, Times};
+use raystep::core::stage::{Chapter, Settings};
+use raystep::scene::Scene;
 
 fn scene(name: &str) -> Scene {
     Scene::load(&common::root().join("scenes").join(format!("{name}.toml"))).unwrap()
@@ -99,8 +101,11 @@ fn sphere_traced_hits_match_analytic_hits_within_epsilon() {
 
 #[test]
 fn fixed_step_error_is_bounded_by_the_step_and_shrinks_with_it() {
-    let ray =
-        raystep::ray::Ray::new(Vec3::new(0.0, 0.0, 5.0), Vec3::new(0.1, -0.05, -1.0)).unwrap();
+    let ray = raystep::ch3_ray_triangle::ray::Ray::new(
+        Vec3::new(0.0, 0.0, 5.0),
+        Vec3::new(0.1, -0.05, -1.0),
+    )
+    .unwrap();
     let exact = ray_ellipsoid(
         ray.origin.as_dvec3(),
         ray.dir.as_dvec3(),
@@ -213,13 +218,14 @@ fn a_thin_plate_is_found_by_sphere_tracing_and_missed_by_fixed_steps() {
 fn inside_or_outside_is_one_evaluation() {
     let f = |p: Vec3| p.length() - 1.0;
     let m = March::default();
-    let from_inside = raystep::ray::Ray::new(Vec3::ZERO, Vec3::Y).unwrap();
+    let from_inside = raystep::ch3_ray_triangle::ray::Ray::new(Vec3::ZERO, Vec3::Y).unwrap();
     let t = sphere_trace(&f, &from_inside, &m);
     assert!(
         t.inside && t.ending == Ending::Hit && (t.t - 1.0).abs() < 1e-4,
         "{t:?}"
     );
-    let from_outside = raystep::ray::Ray::new(Vec3::new(0.0, -3.0, 0.0), Vec3::Y).unwrap();
+    let from_outside =
+        raystep::ch3_ray_triangle::ray::Ray::new(Vec3::new(0.0, -3.0, 0.0), Vec3::Y).unwrap();
     let t = sphere_trace(&f, &from_outside, &m);
     assert!(!t.inside && (t.t - 2.0).abs() < 1e-4, "{t:?}");
     assert_eq!(
@@ -278,8 +284,8 @@ fn mesh_only_scenes_evaluate_no_sdf() {
 
 #[test]
 fn a_mixed_scene_traces_both_and_the_nearer_surface_wins() {
-    use raystep::sdf::hit::Surface;
-    use raystep::sphere_tracing::render::{trace_pixel, MeshTracer};
+    use raystep::ch4_implicit_surfaces::hit::Surface;
+    use raystep::ch4_implicit_surfaces::render::{trace_pixel, MeshTracer};
     // A unit sphere (SDF) at z = 0 and a square (mesh) at z = -2 behind it,
     // then the square moved to z = +2, in front of it.
     for (square_z, want_mesh) in [(-2.0f32, false), (2.0, true)] {
@@ -289,7 +295,7 @@ fn a_mixed_scene_traces_both_and_the_nearer_surface_wins() {
              [[sdfs]]\ntype = \"sphere\"\n"
         ))
         .unwrap();
-        let geometry = raystep::raytrace::Geometry::new(&s);
+        let geometry = raystep::ch3_ray_triangle::stage::Geometry::new(&s);
         let meshes = Some(MeshTracer {
             geometry: &geometry,
             meshes: &s.meshes,
@@ -468,10 +474,10 @@ fn snapshot_sdf_shapes_report() {
 fn snapshot_sdf_shapes_ascii_preview() {
     let s = scene("sdf-shapes").with_resolution(96, 72).unwrap();
     let (_, films) = render(&DEFAULT, s, false);
-    insta::assert_snapshot!(raystep::preview::preview(
+    insta::assert_snapshot!(raystep::core::preview::preview(
         &films[0],
         48,
-        raystep::preview::PreviewStyle::Ascii
+        raystep::core::preview::PreviewStyle::Ascii
     ));
 }
 
@@ -495,7 +501,7 @@ fn over_relaxation_falls_back_when_its_step_is_not_certified() {
     // Head-on at a sphere, ω = 1.9 overshoots: the balls stop overlapping,
     // the march goes back and finishes with plain steps.
     let f = |p: Vec3| p.length() - 1.0;
-    let ray = raystep::ray::Ray::new(Vec3::new(0.0, 0.3, 6.0), -Vec3::Z).unwrap();
+    let ray = raystep::ch3_ray_triangle::ray::Ray::new(Vec3::new(0.0, 0.3, 6.0), -Vec3::Z).unwrap();
     let m = March::default();
     let plain = sphere_trace(&f, &ray, &m);
     let over = over_relaxed(&f, &ray, &m, 1.9);

@@ -8,12 +8,12 @@ mod common;
 
 use common::chi2::{chi2, expected_mass, p_value};
 use glam::{Vec2, Vec3};
-use raystep::material::glossy::Glossy;
-use raystep::material::lambert::Lambertian;
-use raystep::material::retro::Retro;
-use raystep::material::semigloss::SemiGloss;
-use raystep::material::Bsdf;
-use raystep::sampling::random;
+use raystep::ch5_reflection::material::glossy::Glossy;
+use raystep::ch5_reflection::material::lambert::Lambertian;
+use raystep::ch5_reflection::material::retro::Retro;
+use raystep::ch5_reflection::material::semigloss::SemiGloss;
+use raystep::ch5_reflection::material::Bsdf;
+use raystep::core::sampling::random;
 
 fn bsdfs() -> Vec<(&'static str, Bsdf)> {
     vec![
@@ -65,7 +65,12 @@ fn wo_at(theta_deg: f32) -> Vec3 {
 
 const ANGLES: [f32; 4] = [0.0, 35.0, 65.0, 85.0];
 
-fn draws(b: &Bsdf, wo: Vec3, n: usize, seed: u64) -> Vec<raystep::material::BsdfSample> {
+fn draws(
+    b: &Bsdf,
+    wo: Vec3,
+    n: usize,
+    seed: u64,
+) -> Vec<raystep::ch5_reflection::material::BsdfSample> {
     (0..n as u64)
         .filter_map(|i| {
             let u = Vec2::new(random(seed, i, 0, 0), random(seed, i, 0, 1));

@@ -4,7 +4,7 @@
 mod common;
 
 use glam::Vec3;
-use raystep::exercises::ch5;
+use raystep::grading::exercises::ch5;
 
 #[test]
 fn chapter_5_references_pass_and_stubs_fail_cleanly() {
@@ -27,7 +27,7 @@ fn a_brdf_without_the_pi_or_one_sided_fails() {
 fn a_uniform_hemisphere_or_a_wrong_pdf_fails_the_statistics() {
     // Uniform directions with the cosine pdf claimed: the mean z is 1/2.
     let check = ch5::check_cosine_hemisphere(|u| {
-        let w = raystep::warp::uniform_hemisphere(u);
+        let w = raystep::ch5_reflection::warp::uniform_hemisphere(u);
         (w, w.z / std::f32::consts::PI)
     });
     assert!(
@@ -37,8 +37,8 @@ fn a_uniform_hemisphere_or_a_wrong_pdf_fails_the_statistics() {
     // The right directions, the uniform pdf.
     let check = ch5::check_cosine_hemisphere(|u| {
         (
-            raystep::warp::cosine_hemisphere(u),
-            raystep::warp::UNIFORM_HEMISPHERE_PDF,
+            raystep::ch5_reflection::warp::cosine_hemisphere(u),
+            raystep::ch5_reflection::warp::UNIFORM_HEMISPHERE_PDF,
         )
     });
     assert!(!check.passed() && check.detail.contains("pdf"), "{check:?}");

@@ -4,16 +4,16 @@
 use std::f64::consts::PI;
 
 use glam::{DVec3, Vec3};
-use raystep::radiometry::{
+use raystep::ch4_implicit_surfaces::hit::Surface;
+use raystep::ch5_reflection::direct::{Counters, Estimator, Strategy};
+use raystep::ch5_reflection::radiometry::{
     cap_solid_angle, directional_irradiance, point_irradiance, polygon_irradiance,
     sphere_solid_angle, triangle_solid_angle,
 };
-use raystep::reflection::direct::{Counters, Estimator, Strategy};
-use raystep::reflection::studies::{area_problem, sky_problem};
-use raystep::sampling::Sampler;
+use raystep::ch5_reflection::studies::{area_problem, sky_problem};
+use raystep::ch5_reflection::world::{Interaction, World};
+use raystep::core::sampling::Sampler;
 use raystep::scene::Scene;
-use raystep::sdf::hit::Surface;
-use raystep::world::{Interaction, World};
 
 fn world(text: &str) -> World {
     World::new(&Scene::parse(text, "t", "t.toml", &|r| Err((r.into(), "no".into()))).unwrap())

@@ -6,14 +6,14 @@ mod common;
 
 use std::sync::Arc;
 
-use raystep::film::Film;
-use raystep::reflection::direct::Strategy;
-use raystep::reflection::stability::{caught, stability_cases};
-use raystep::reflection::studies::{error_against_time, Study};
-use raystep::reflection::{Reflection, DEFAULT};
-use raystep::report::{Report, Times};
+use raystep::ch5_reflection::direct::Strategy;
+use raystep::ch5_reflection::stability::{caught, stability_cases};
+use raystep::ch5_reflection::stage::{Reflection, DEFAULT};
+use raystep::ch5_reflection::studies::{error_against_time, Study};
+use raystep::core::film::Film;
+use raystep::core::report::{Report, Times};
+use raystep::core::stage::{Chapter, Settings};
 use raystep::scene::Scene;
-use raystep::stage::{Chapter, Settings};
 
 fn scene(name: &str, w: u32, h: u32) -> Scene {
     Scene::load(&common::root().join(format!("scenes/{name}.toml")))

@@ -7,14 +7,17 @@
 use std::sync::Arc;
 
 use glam::Vec3;
-use raystep::path_tracing::accumulate::{downsample, Accumulator};
-use raystep::path_tracing::integrator::{Estimator, PathSettings, LAYER_SLOTS, SLOT_BEYOND};
-use raystep::path_tracing::reference::{region_z_test, StoredReference};
-use raystep::path_tracing::sampler::SamplerKind;
-use raystep::path_tracing::studies::{self, centre_block, flat_z, render};
-use raystep::path_tracing::{scenes, DEFAULT};
+use raystep::ch6_global_illumination::accumulate::{downsample, Accumulator};
+use raystep::ch6_global_illumination::integrator::{
+    Estimator, PathSettings, LAYER_SLOTS, SLOT_BEYOND,
+};
+use raystep::ch6_global_illumination::reference::{region_z_test, StoredReference};
+use raystep::ch6_global_illumination::sampler::SamplerKind;
+use raystep::ch6_global_illumination::scenes;
+use raystep::ch6_global_illumination::stage::DEFAULT;
+use raystep::ch6_global_illumination::studies::{self, centre_block, flat_z, render};
+use raystep::core::stage::{Chapter, Settings};
 use raystep::scene::Scene;
-use raystep::stage::{Chapter, Settings};
 
 const Z: f64 = 4.0;
 
@@ -84,7 +87,7 @@ fn a_bounce_limit_leaves_the_beyond_layer_empty_and_cuts_exactly_there() {
     let (acc, _) = render(&scene, &path, SamplerKind::Independent, 16, 1, true);
     for slot in 5..LAYER_SLOTS {
         assert_eq!(
-            raystep::path_tracing::reference::film_mean(&acc.layer(slot).unwrap()),
+            raystep::ch6_global_illumination::reference::film_mean(&acc.layer(slot).unwrap()),
             Vec3::ZERO,
             "slot {slot}"
         );
@@ -376,6 +379,6 @@ fn the_stage_boundary_gives_layers_that_sum_to_the_image_and_an_error_series() {
     assert_eq!(render.reference().unwrap().width, image.width);
     // Downsampling keeps the mean.
     let d = downsample(&image, 2);
-    let m = |f: &raystep::film::Film| f.pixels.iter().sum::<Vec3>() / f.pixels.len() as f32;
+    let m = |f: &raystep::core::film::Film| f.pixels.iter().sum::<Vec3>() / f.pixels.len() as f32;
     assert!((m(&d) - m(&image)).abs().max_element() < 1e-4);
 }

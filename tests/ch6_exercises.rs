@@ -4,7 +4,7 @@
 
 mod common;
 
-use raystep::exercises::ch6;
+use raystep::grading::exercises::ch6;
 
 #[test]
 fn chapter_6_references_pass_and_stubs_fail_cleanly() {

@@ -6,8 +6,8 @@
 use std::sync::Arc;
 use std::time::Duration;
 
+use raystep::core::stage::Settings;
 use raystep::scene::Scene;
-use raystep::stage::Settings;
 use raystep::tui::app::{combine_layers, BounceMode};
 use raystep::tui::worker::{Job, Progress, Worker};
 
@@ -59,7 +59,8 @@ fn the_worker_renders_chapter_6_with_layers_reference_and_error_series() {
         );
         // Direct light alone is darker than the whole image.
         let direct = combine_layers(layers, 0, BounceMode::UpTo, image);
-        let sum = |f: &raystep::film::Film| f.pixels.iter().map(|p| p.element_sum()).sum::<f32>();
+        let sum =
+            |f: &raystep::core::film::Film| f.pixels.iter().map(|p| p.element_sum()).sum::<f32>();
         assert!(sum(&direct) < 0.9 * sum(image));
         assert!(last.reference.is_some());
         assert_eq!(last.error_series.len(), 2);

@@ -4,7 +4,7 @@
 mod common;
 
 use glam::Vec3;
-use raystep::film::Film;
+use raystep::core::film::Film;
 
 fn gradient(w: u32, h: u32) -> Film {
     let mut f = Film::new(w, h);
@@ -47,7 +47,7 @@ fn a_failed_write_leaves_no_file_behind() {
     assert!(gradient(4, 4).write_png(&target).is_err());
     // An encoder that fails half-way leaves neither the target nor a temp file.
     let target = dir.join("half.png");
-    let result = raystep::film::write_atomically(&target, |tmp| {
+    let result = raystep::core::film::write_atomically(&target, |tmp| {
         std::fs::write(tmp, b"half an image").unwrap();
         Err("the encoder gave up".into())
     });

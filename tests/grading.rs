@@ -5,7 +5,7 @@
 mod common;
 
 use glam::{Mat4, Vec2};
-use raystep::exercises::ch1;
+use raystep::grading::exercises::ch1;
 use raystep::grading::{self, grade_report, write_failure_images, Outcome, Solution};
 
 #[test]
@@ -56,7 +56,7 @@ fn a_wrong_projection_fails_with_its_worst_case() {
 fn a_wrong_look_at_fails_and_writes_images() {
     // Returning world_from_camera instead of its inverse.
     let check = ch1::check_look_at(|e, t, u| {
-        raystep::camera::camera_from_world_look_at(e, t, u)
+        raystep::ch1_projection::camera::camera_from_world_look_at(e, t, u)
             .unwrap()
             .inverse()
     });
@@ -83,7 +83,7 @@ fn a_wrong_look_at_fails_and_writes_images() {
     let wrong = grading::Exercise {
         grade: |_| {
             ch1::check_look_at(|e, t, u| {
-                raystep::camera::camera_from_world_look_at(e, t, u)
+                raystep::ch1_projection::camera::camera_from_world_look_at(e, t, u)
                     .unwrap()
                     .inverse()
             })

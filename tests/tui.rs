@@ -18,11 +18,11 @@ use ratatui::style::Color;
 use ratatui::widgets::Widget;
 use ratatui::Terminal;
 
-use raystep::error::Result;
-use raystep::film::{encode_srgb, Film};
-use raystep::report::Report;
+use raystep::core::error::Result;
+use raystep::core::film::{encode_srgb, Film};
+use raystep::core::report::Report;
+use raystep::core::stage::{Chapter, Render, Settings, View};
 use raystep::scene::Scene;
-use raystep::stage::{Chapter, Render, Settings, View};
 use raystep::tui::app::{combine_layers, save, update, App, BounceMode, Compare, Focus, Msg};
 use raystep::tui::keys::msg_for_key;
 use raystep::tui::picture::{fit, Picture};

@@ -195,7 +195,7 @@ fn the_real_binary_in_a_terminal() {
         name.starts_with(&format!("tui-ch{}-cornell-box-", chapter.number())),
         "{name}"
     );
-    let film = raystep::film::Film::read_png(&saved[0]).unwrap();
+    let film = raystep::core::film::Film::read_png(&saved[0]).unwrap();
     assert!(film.width > 0 && film.height > 0);
     assert!(saved[0].with_extension("exr").exists());
 

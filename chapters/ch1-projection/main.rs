@@ -5,5 +5,5 @@
 //! and with `--report` the precision study and the stiff cases.
 
 fn main() -> std::process::ExitCode {
-    raystep::run::chapter_main(&raystep::projection::Projection)
+    raystep::core::run::chapter_main(&raystep::ch1_projection::stage::Projection)
 }

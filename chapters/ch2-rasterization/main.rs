@@ -10,9 +10,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::Parser;
-use raystep::raster::bench::run_bench;
-use raystep::raster::Rasterization;
-use raystep::run::{exit_code, run_with, CommonArgs};
+use raystep::ch2_rasterization::bench::run_bench;
+use raystep::ch2_rasterization::Rasterization;
+use raystep::core::run::{exit_code, run_with, CommonArgs};
 use raystep::scene::Scene;
 
 #[derive(Parser)]

@@ -13,8 +13,11 @@ fn main() -> std::process::ExitCode {
     if let Some(i) = args.iter().position(|a| a == "--bench") {
         // `ch3 --bench [MESH]`: an optional filter on the mesh names.
         let only = args.get(i + 1).map(String::as_str);
-        print!("{}", raystep::raytrace_bench::benchmark(only).to_text());
+        print!(
+            "{}",
+            raystep::ch3_ray_triangle::bench::benchmark(only).to_text()
+        );
         return std::process::ExitCode::SUCCESS;
     }
-    raystep::run::chapter_main(&raystep::raytrace::RayTriangle)
+    raystep::core::run::chapter_main(&raystep::ch3_ray_triangle::stage::RayTriangle)
 }

@@ -8,11 +8,11 @@
 use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
-use raystep::run::{exit_code, run_with, CommonArgs};
-use raystep::sdf::march::March;
-use raystep::sdf::normal::NormalScheme;
-use raystep::sphere_tracing::render::Method;
-use raystep::sphere_tracing::{SphereTracing, DEFAULT};
+use raystep::ch4_implicit_surfaces::march::March;
+use raystep::ch4_implicit_surfaces::normal::NormalScheme;
+use raystep::ch4_implicit_surfaces::render::Method;
+use raystep::ch4_implicit_surfaces::stage::{SphereTracing, DEFAULT};
+use raystep::core::run::{exit_code, run_with, CommonArgs};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum MethodArg {

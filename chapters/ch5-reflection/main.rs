@@ -10,10 +10,10 @@
 use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
-use raystep::reflection::direct::Strategy;
-use raystep::reflection::plot::{plot, rows_from_csv};
-use raystep::reflection::{Reflection, DEFAULT};
-use raystep::run::{exit_code, run_with, CommonArgs};
+use raystep::ch5_reflection::direct::Strategy;
+use raystep::ch5_reflection::plot::{plot, rows_from_csv};
+use raystep::ch5_reflection::stage::{Reflection, DEFAULT};
+use raystep::core::run::{exit_code, run_with, CommonArgs};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum StrategyArg {

@@ -10,10 +10,11 @@
 use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
-use raystep::path_tracing::integrator::Estimator;
-use raystep::path_tracing::sampler::SamplerKind;
-use raystep::path_tracing::{cli, DEFAULT};
-use raystep::run::{exit_code, CommonArgs};
+use raystep::ch6_global_illumination::cli;
+use raystep::ch6_global_illumination::integrator::Estimator;
+use raystep::ch6_global_illumination::sampler::SamplerKind;
+use raystep::ch6_global_illumination::stage::DEFAULT;
+use raystep::core::run::{exit_code, CommonArgs};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum EstimatorArg {

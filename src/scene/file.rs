@@ -22,7 +22,7 @@ pub struct SceneFile {
     #[serde(default)]
     pub lights: Vec<LightSection>,
     /// Signed distance function objects (chapter 4), each a table with a
-    /// `type`; checked key by key in [`crate::sdf::parse`], so errors name
+    /// `type`; checked key by key in [`crate::scene::sdf_parse`], so errors name
     /// the key path.
     #[serde(default)]
     pub sdfs: Vec<toml::Table>,

@@ -6,16 +6,18 @@
 //! materials. Nothing is built for a section the file does not mention.
 
 pub mod file;
+pub mod mesh;
 pub mod obj;
+pub mod sdf_parse;
 
 use std::path::{Path, PathBuf};
 
 use glam::{DVec3, Mat4, Quat, Vec3};
 
-use crate::camera::{Camera, CameraDesc};
-use crate::error::{Error, Result};
-use crate::mesh::Mesh;
-use crate::sdf::SdfObject;
+use crate::ch1_projection::camera::{Camera, CameraDesc};
+use crate::ch4_implicit_surfaces::sdf::SdfObject;
+use crate::core::error::{Error, Result};
+use crate::scene::mesh::Mesh;
 use file::{LightSection, MaterialKind, ObjectSection, Scale, SceneFile, Shape};
 
 /// A material, ready to render.
@@ -415,7 +417,8 @@ fn build_sdfs(
     let mut out = Vec::with_capacity(tables.len());
     for (i, t) in tables.iter().enumerate() {
         let at = format!("sdfs[{i}]");
-        let sdf = crate::sdf::parse::parse_node(t, &at, true).map_err(|(a, m)| scene_err(a, m))?;
+        let sdf =
+            crate::scene::sdf_parse::parse_node(t, &at, true).map_err(|(a, m)| scene_err(a, m))?;
         let name = match t.get("name") {
             None => format!("{} {i}", t["type"].as_str().unwrap_or("sdf")),
             Some(toml::Value::String(n)) => n.clone(),

@@ -7,8 +7,8 @@
 
 use glam::Vec3;
 
-use crate::error::{Error, Result};
-use crate::mesh::Mesh;
+use crate::core::error::{Error, Result};
+use crate::scene::mesh::Mesh;
 
 /// Parses OBJ text into one mesh (all groups merged, polygons triangulated).
 /// `file` names the source in errors. tobj loads each group (`o`/`g`) with

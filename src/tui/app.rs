@@ -13,9 +13,9 @@ use glam::Vec3;
 
 use super::scenes::SceneEntry;
 use super::worker::{Job, Progress, Snapshot};
-use crate::film::Film;
+use crate::core::film::Film;
+use crate::core::stage::{Chapter, Settings};
 use crate::grading::FailureImages;
-use crate::stage::{Chapter, Settings};
 
 /// The highest bounce count the bounce control steps to.
 pub const MAX_BOUNCE: u32 = 16;

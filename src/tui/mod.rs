@@ -5,8 +5,8 @@
 //! [`app::update`] in [`app`]; a pure [`view::view`]; key mapping in
 //! [`keys`]; a render [`worker`] thread that sends a snapshot after every
 //! pass; and this module's event loop, which owns the terminal. The UI
-//! drives chapters only through [`crate::stage::Chapter`] and
-//! [`crate::stage::Render`], so a new chapter appears here by being listed
+//! drives chapters only through [`crate::core::stage::Chapter`] and
+//! [`crate::core::stage::Render`], so a new chapter appears here by being listed
 //! in [`crate::chapters::all`].
 //!
 //! The loop polls for keys with a short timeout (so a key is handled within

@@ -13,8 +13,8 @@ use ratatui::layout::Rect;
 use ratatui::style::Color;
 use ratatui::widgets::Widget;
 
-use crate::film::{encode_srgb, Film};
-use crate::preview::downsample;
+use crate::core::film::{encode_srgb, Film};
+use crate::core::preview::downsample;
 
 /// The ASCII ramp from dark to bright (the same as the headless preview).
 const RAMP: &[u8] = b" .:-=+*#%@";

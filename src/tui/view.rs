@@ -24,9 +24,9 @@ use ratatui::Frame;
 use super::app::{expose, App, Focus};
 use super::keys::KEYS;
 use super::picture::{fit, Picture};
-use crate::film::Film;
-use crate::preview::downsample;
-use crate::report::{format_number, format_seconds};
+use crate::core::film::Film;
+use crate::core::preview::downsample;
+use crate::core::report::{format_number, format_seconds};
 
 /// Width of the left column, in cells.
 pub fn sidebar_width(total: u16) -> u16 {

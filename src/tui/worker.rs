@@ -13,9 +13,9 @@ use std::sync::Arc;
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use crate::film::Film;
+use crate::core::film::Film;
+use crate::core::stage::{Chapter, Render, Settings};
 use crate::scene::Scene;
-use crate::stage::{Chapter, Render, Settings};
 
 /// Name of the worker thread (the panic hook uses it).
 pub const THREAD_NAME: &str = "raystep-render";

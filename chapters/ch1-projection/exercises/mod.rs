@@ -5,9 +5,11 @@ pub mod project_point;
 
 use glam::{Mat4, Vec2, Vec3};
 
-use crate::camera::{camera_from_world_look_at, project_pinhole, Camera, CameraDesc};
+use crate::ch1_projection::camera::{
+    camera_from_world_look_at, project_pinhole, Camera, CameraDesc,
+};
+use crate::ch1_projection::stage::draw_scene;
 use crate::grading::{Check, Exercise, Solution};
-use crate::projection::draw_scene;
 use crate::scene::Material;
 
 /// Chapter 1's exercises, in order.
@@ -136,7 +138,7 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
     let reference = Camera::new(desc).expect("valid camera");
     let mut candidate = reference.clone();
     candidate.camera_from_world = f(desc.eye.as_vec3(), desc.target.as_vec3(), desc.up.as_vec3());
-    let mesh = [crate::mesh::Mesh::tetrahedron()];
+    let mesh = [crate::scene::mesh::Mesh::tetrahedron()];
     let materials = [Material::default_grey()];
     let (ref_films, _) = draw_scene(&reference, &mesh, &materials);
     let (cand_films, _) = draw_scene(&candidate, &mesh, &materials);

@@ -6,9 +6,9 @@ pub mod edge_function;
 
 use glam::{Vec2, Vec3};
 
+use crate::ch2_rasterization::depth;
+use crate::ch2_rasterization::edge;
 use crate::grading::{Check, Exercise, Solution};
-use crate::raster::depth;
-use crate::raster::edge;
 
 /// Chapter 2's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {

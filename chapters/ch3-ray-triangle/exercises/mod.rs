@@ -6,10 +6,10 @@ pub mod ray_plane;
 
 use glam::Vec3;
 
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
+use crate::core::sampling::random;
 use crate::grading::{Check, Exercise, Solution};
-use crate::ray::Ray;
-use crate::sampling::random;
-use crate::triangle::{self, intersect_f64};
 
 /// Barycentric (u, v).
 pub type Uv = (f32, f32);

@@ -10,11 +10,11 @@ use std::f32::consts::FRAC_1_PI;
 use glam::{Vec2, Vec3};
 
 use super::worst_of;
+use crate::ch5_reflection::light::area::solid_angle_pdf;
+use crate::ch5_reflection::material::lambert::Lambertian;
+use crate::ch5_reflection::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
+use crate::core::sampling::random;
 use crate::grading::{Check, Exercise, Solution};
-use crate::light::area::solid_angle_pdf;
-use crate::material::lambert::Lambertian;
-use crate::sampling::random;
-use crate::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
 
 type BrdfFn = fn(Vec3, Vec3, Vec3) -> Vec3;
 type CosineFn = fn(Vec2) -> (Vec3, f32);
@@ -61,7 +61,7 @@ pub fn exercises() -> Vec<Exercise> {
                     Solution::Student => point_light::point_light_irradiance,
                     Solution::Reference => |i, light, p, n| {
                         let to = light - p;
-                        i * crate::radiometry::point_irradiance(
+                        i * crate::ch5_reflection::radiometry::point_irradiance(
                             1.0,
                             to.length() as f64,
                             n.dot(to.normalize()) as f64,

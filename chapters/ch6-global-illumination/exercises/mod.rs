@@ -9,8 +9,8 @@ pub mod mis_weight;
 pub mod russian_roulette;
 
 use super::worst_of;
+use crate::core::sampling::random;
 use crate::grading::{Check, Exercise, Solution};
-use crate::sampling::random;
 
 type IntegralFn = fn(&dyn Fn(f64) -> f64, f64, f64, &[f64]) -> f64;
 type RouletteFn = fn(f64, f64, f64) -> f64;
@@ -58,7 +58,7 @@ pub fn exercises() -> Vec<Exercise> {
     ]
 }
 
-/// [`crate::mis::power_heuristic`] in f64.
+/// [`crate::ch5_reflection::mis::power_heuristic`] in f64.
 fn reference_weight(f: f64, g: f64) -> f64 {
     if f.is_infinite() {
         return 1.0;

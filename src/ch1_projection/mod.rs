@@ -1,0 +1,4 @@
+//! Chapter 1: projection.
+
+pub mod camera;
+pub mod stage;

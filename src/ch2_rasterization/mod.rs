@@ -1,0 +1,33 @@
+//! Chapter 2: rasterization. For each triangle, which pixels are covered?
+//!
+//! The stage follows the lecture's rasterization pipeline, one file per
+//! step:
+//!
+//! | step | file |
+//! |---|---|
+//! | edge functions, the top-left rule, barycentrics | [`edge`] |
+//! | near-plane and guard-band clipping | [`clip`] |
+//! | triangle setup: transform, clip, project, snap, cull | [`setup`] |
+//! | coverage and the parallel band loop | [`coverage`] |
+//! | visibility: the depth buffer | [`depth`] |
+//! | attribute interpolation, perspective-correct and affine | [`interpolate`] |
+//! | the views | [`views`] |
+//! | exact coverage, the anti-aliasing reference | [`exact`] |
+//! | the chapter boundary and report | [`stage`] |
+//! | the report's studies | [`studies`] |
+//! | the speed benchmark (`ch2 --bench`) | [`bench`](mod@bench) |
+
+pub mod bench;
+pub mod clip;
+pub mod coverage;
+pub mod depth;
+pub mod edge;
+pub mod exact;
+pub mod interpolate;
+pub mod mesh_check;
+pub mod setup;
+pub mod stage;
+pub mod studies;
+pub mod views;
+
+pub use stage::{render_frame, Frame, Rasterization, RASTERIZATION};

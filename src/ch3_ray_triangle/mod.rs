@@ -1,0 +1,12 @@
+//! Chapter 3: ray-triangle intersection and a BVH.
+
+pub mod agreement;
+pub mod bench;
+pub mod bvh;
+pub mod ray;
+pub mod spawn;
+pub mod stage;
+pub mod studies;
+pub mod triangle;
+pub mod watertight_fast;
+pub mod wide_bvh;

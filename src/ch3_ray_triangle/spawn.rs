@@ -1,0 +1,69 @@
+//! Spawning a new ray from a surface without hitting that surface again.
+//!
+//! A hit point computed in f32 is off the true surface by an amount that
+//! grows with its distance from the origin: at 1e5 the spacing of f32 values
+//! is about 0.008. A fixed ε (start new rays 1e-4 away) is then far too
+//! small, and near the origin it is needlessly large. Wächter and Binder
+//! (Ray Tracing Gems, chapter 6, "A fast and robust method for avoiding
+//! self-intersection") instead move the origin along the normal by a fixed
+//! number of *units in the last place* of each coordinate, which scales with
+//! the coordinate's magnitude; only very close to the origin, where ulps are
+//! tiny, do they fall back to a small fixed offset.
+
+use glam::Vec3;
+
+use crate::ch3_ray_triangle::ray::Ray;
+
+/// Below this magnitude a coordinate is offset by a fixed amount...
+const ORIGIN: f32 = 1.0 / 32.0;
+/// ... of this size times the normal.
+const FLOAT_SCALE: f32 = 1.0 / 65536.0;
+/// Elsewhere it moves by this many ulps times the normal.
+const INT_SCALE: f32 = 256.0;
+
+/// Moves `p` off the surface with normal `n` (pointing to the side the new
+/// ray leaves into) by a distance that scales with `p`'s magnitude.
+// ANCHOR: offset_origin
+pub fn offset_origin(p: Vec3, n: Vec3) -> Vec3 {
+    let step = |p: f32, n: f32| -> f32 {
+        if p.abs() < ORIGIN {
+            return p + FLOAT_SCALE * n;
+        }
+        // Step the bit pattern: each step is one ulp of p, away from zero
+        // when n points away from zero and towards it otherwise.
+        let ulps = (INT_SCALE * n) as i32;
+        let ulps = if p < 0.0 { -ulps } else { ulps };
+        f32::from_bits((p.to_bits() as i32).wrapping_add(ulps) as u32)
+    };
+    Vec3::new(step(p.x, n.x), step(p.y, n.y), step(p.z, n.z))
+}
+// ANCHOR_END: offset_origin
+
+/// A ray leaving the surface point `p` (geometric normal `n`, either side)
+/// in direction `dir`, with its origin offset to the side `dir` points to.
+/// `None` when `dir` is zero or not finite, or `p` is not finite.
+pub fn spawn_ray(p: Vec3, n: Vec3, dir: Vec3) -> Option<Ray> {
+    let n = n.try_normalize()?;
+    let n = if n.dot(dir) < 0.0 { -n } else { n };
+    Ray::new(offset_origin(p, n), dir).ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn offset_grows_with_magnitude_and_follows_the_normal() {
+        let near = offset_origin(Vec3::new(1.0, 0.0, 0.0), Vec3::X);
+        let far = offset_origin(Vec3::new(1e5, 0.0, 0.0), Vec3::X);
+        let (dn, df) = (near.x - 1.0, far.x - 1e5);
+        assert!(dn > 0.0 && df > 0.0);
+        assert!(df / dn > 1e4, "offset at 1e5 {df} vs at 1 {dn}");
+        // Negative coordinates move the right way too.
+        assert!(offset_origin(Vec3::splat(-3.0), Vec3::X).x > -3.0);
+        assert!(offset_origin(Vec3::splat(-3.0), -Vec3::X).x < -3.0);
+        // Near zero: a small fixed step.
+        assert_eq!(offset_origin(Vec3::ZERO, Vec3::Y).y, FLOAT_SCALE);
+        assert!(spawn_ray(Vec3::ZERO, Vec3::Y, Vec3::ZERO).is_none());
+    }
+}

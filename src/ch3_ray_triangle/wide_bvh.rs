@@ -1,0 +1,625 @@
+//! The BVH the shading chapters trace through: chapter 3's binary
+//! hierarchy collapsed into a *four-wide* one, the layout CPU ray tracers
+//! such as Embree use. Each node holds the boxes of up to four children
+//! side by side, so one SIMD slab test checks all four at once; each leaf
+//! holds up to four triangles side by side, so one SIMD watertight test
+//! ([`WatertightRay::intersect4`]) checks all of them. The tree is half as
+//! deep as the binary one and a query takes few branches.
+//!
+//! Chapter 3 teaches the binary tree ([`crate::ch3_ray_triangle::bvh`]); a path tracer casts
+//! tens of millions of rays, so it takes this one. Both answer the same
+//! questions with the same watertight arithmetic, and a test checks that
+//! they agree ray for ray.
+
+use std::time::Duration;
+
+use glam::{Vec3, Vec3A, Vec4};
+use obvhs::bvh2::builder::build_bvh2;
+use obvhs::bvh2::Bvh2;
+use obvhs::BvhBuildParams;
+
+use crate::ch3_ray_triangle::bvh::padded_boxes;
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::triangle::{gamma, Hit};
+use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, Tri4, WatertightRay};
+
+/// A child reference with this bit set is a leaf (the rest of the bits
+/// index [`WideBvh::leaves`]); otherwise it indexes [`WideBvh::nodes`].
+const LEAF: u32 = 1 << 31;
+/// Triangles per leaf, one per SIMD lane.
+const LANES: usize = 4;
+
+/// Up to four children's boxes, by axis, one child per lane. An unused
+/// slot has an empty box (min +∞, max -∞) that no ray enters.
+#[derive(Clone, Copy, Debug)]
+struct Node4 {
+    /// Box minima: x of the four children, then y, then z.
+    min: [Vec4; 3],
+    /// Box maxima, laid out the same way.
+    max: [Vec4; 3],
+    /// Child references (see [`LEAF`]).
+    child: [u32; 4],
+}
+
+/// Chapter 3's BVH collapsed to four children per node and four
+/// triangles per leaf.
+pub struct WideBvh {
+    /// Inner nodes; the root is `root` (a leaf when the scene has at most
+    /// four triangles).
+    nodes: Vec<Node4>,
+    root: u32,
+    /// Inner-node levels on the longest root-to-leaf path; a query's stack
+    /// never holds more than 3 per level, plus one.
+    levels: usize,
+    /// Leaves: four triangles each, in SIMD lanes. Unused lanes and
+    /// zero-area triangles hold NaN vertices, which the test rejects.
+    leaves: Vec<Tri4>,
+    /// The same triangles one by one (`tris[4 l + lane]`), for the rare
+    /// lanes the four-wide test hands back to the one-triangle test.
+    tris: Vec<SoaTriangle>,
+    /// `original[4 l + lane]`: the index of that triangle in the list the
+    /// BVH was built from (`u32::MAX` for an unused lane).
+    original: Vec<u32>,
+}
+
+/// How much a box's far distance is stretched, so rounding in the slab
+/// test never culls a box a hit lies in (pbrt stretches by 2γ₃ ≈ 4e-7).
+const FAR_STRETCH: f32 = 1.0 + 4.0 * gamma(3);
+
+/// The part of the slab test that depends only on the ray.
+struct BoxRay {
+    /// The origin, one splat per axis.
+    o: [Vec4; 3],
+    /// 1 / direction per axis (zero components replaced by a tiny number
+    /// of the same sign, so no 0 · ∞ can make a NaN).
+    inv: [Vec4; 3],
+    /// Per axis, whether the ray runs towards -∞ (then a box's max is met
+    /// first).
+    negative: [bool; 3],
+}
+
+impl BoxRay {
+    #[inline(always)]
+    fn new(ray: &Ray) -> BoxRay {
+        let d = Vec3A::from(ray.dir);
+        let tiny = d.abs().cmplt(Vec3A::splat(1e-30));
+        let safe = Vec3A::select(tiny, Vec3A::splat(1e-30).copysign(d), d);
+        let inv = (Vec3A::ONE / safe).to_array();
+        BoxRay {
+            o: ray.origin.to_array().map(Vec4::splat),
+            inv: inv.map(Vec4::splat),
+            negative: d.to_array().map(|x| x.is_sign_negative()),
+        }
+    }
+
+    /// The slab test on a node's four boxes against (0, t_max): a bit
+    /// mask of the children entered, and where the ray enters each box.
+    // ANCHOR: slab4
+    #[inline(always)]
+    fn enter(&self, node: &Node4, t_max: f32) -> (u32, Vec4) {
+        let mut t_near = Vec4::ZERO;
+        let mut t_far = Vec4::splat(t_max);
+        for axis in 0..3 {
+            let (near, far) = if self.negative[axis] {
+                (node.max[axis], node.min[axis])
+            } else {
+                (node.min[axis], node.max[axis])
+            };
+            t_near = t_near.max((near - self.o[axis]) * self.inv[axis]);
+            t_far = t_far.min((far - self.o[axis]) * self.inv[axis]);
+        }
+        let entered = t_near.cmple(t_far * FAR_STRETCH);
+        (entered.bitmask(), t_near)
+    }
+    // ANCHOR_END: slab4
+}
+
+impl WideBvh {
+    /// Builds the four-wide BVH over `tris`: chapter 3's binary tree (with
+    /// its padded boxes, one triangle per leaf), then collapsed from the
+    /// root down; `None` for an empty list.
+    pub fn build(tris: &[[Vec3; 3]]) -> Option<WideBvh> {
+        if tris.is_empty() {
+            return None;
+        }
+        let params = BvhBuildParams {
+            max_prims_per_leaf: 1,
+            ..BvhBuildParams::medium_build()
+        };
+        let bvh2 = build_bvh2(&padded_boxes(tris), params, &mut Duration::default());
+        let mut counts = vec![0u32; bvh2.nodes.len()];
+        count_triangles(&bvh2, 0, &mut counts);
+        let mut wide = WideBvh {
+            nodes: Vec::new(),
+            root: 0,
+            leaves: Vec::new(),
+            tris: Vec::new(),
+            original: Vec::new(),
+            levels: 0,
+        };
+        wide.root = wide.collapse(&bvh2, &counts, 0, tris, 1);
+        Some(wide)
+    }
+
+    /// How many four-wide inner nodes the hierarchy has.
+    pub fn node_count(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// How many leaves (of up to four triangles) it has.
+    pub fn leaf_count(&self) -> usize {
+        self.leaves.len()
+    }
+
+    /// Makes binary node `n` into a child reference: a leaf if its
+    /// subtree has at most four triangles, else a four-wide node whose
+    /// children are found by opening the largest binary child (by surface
+    /// area) until there are four.
+    // ANCHOR: collapse
+    fn collapse(
+        &mut self,
+        bvh2: &Bvh2,
+        counts: &[u32],
+        n: usize,
+        tris: &[[Vec3; 3]],
+        level: usize,
+    ) -> u32 {
+        if counts[n] as usize <= LANES {
+            return self.leaf(bvh2, n, tris);
+        }
+        self.levels = self.levels.max(level);
+        let first = bvh2.nodes[n].first_index as usize;
+        let mut children = vec![first, first + 1];
+        while children.len() < 4 {
+            let open = children
+                .iter()
+                .enumerate()
+                .filter(|(_, &c)| counts[c] as usize > LANES)
+                .max_by(|a, b| {
+                    let area = |c: usize| bvh2.nodes[c].aabb.half_area();
+                    area(*a.1).total_cmp(&area(*b.1))
+                });
+            let Some((i, &c)) = open else { break };
+            let first = bvh2.nodes[c].first_index as usize;
+            children[i] = first;
+            children.push(first + 1);
+        }
+        let index = self.nodes.len();
+        self.nodes.push(Node4 {
+            min: [Vec4::INFINITY; 3],
+            max: [Vec4::NEG_INFINITY; 3],
+            child: [u32::MAX; 4],
+        });
+        for (lane, &c) in children.iter().enumerate() {
+            let b = bvh2.nodes[c].aabb;
+            let child = self.collapse(bvh2, counts, c, tris, level + 1);
+            let node = &mut self.nodes[index];
+            node.child[lane] = child;
+            for axis in 0..3 {
+                node.min[axis][lane] = b.min[axis];
+                node.max[axis][lane] = b.max[axis];
+            }
+        }
+        index as u32
+    }
+    // ANCHOR_END: collapse
+
+    /// A leaf holding every triangle under binary node `n` (at most four).
+    fn leaf(&mut self, bvh2: &Bvh2, n: usize, tris: &[[Vec3; 3]]) -> u32 {
+        let mut ids = Vec::new();
+        let mut stack = vec![n];
+        while let Some(m) = stack.pop() {
+            let node = &bvh2.nodes[m];
+            if node.is_leaf() {
+                let range = node.first_index..node.first_index + node.prim_count;
+                ids.extend(range.map(|k| bvh2.primitive_indices[k as usize]));
+            } else {
+                stack.extend([node.first_index as usize + 1, node.first_index as usize]);
+            }
+        }
+        let nan = SoaTriangle {
+            rows: [glam::Vec3A::NAN; 3],
+        };
+        let lanes = std::array::from_fn(|lane| {
+            let id = ids.get(lane).copied().unwrap_or(u32::MAX);
+            let tri = match ids.get(lane) {
+                Some(&i) => SoaTriangle::new(tris[i as usize]),
+                None => nan,
+            };
+            self.tris.push(tri);
+            self.original.push(id);
+            // Zero-area triangles (collapsed to a point) can never be hit:
+            // NaN keeps them out of the rare-path checks as well.
+            let collapsed = tri.rows.iter().all(|r| r.x == r.y && r.y == r.z);
+            if collapsed {
+                nan
+            } else {
+                tri
+            }
+        });
+        self.leaves.push(Tri4::new(lanes));
+        (self.leaves.len() - 1) as u32 | LEAF
+    }
+
+    /// The closest hit in (0, t_max); `Hit::triangle` indexes the list
+    /// chapter 3's BVH was built from.
+    // ANCHOR: closest4
+    pub fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        self.with_stack(|stack| self.closest_in(ray, t_max, stack))
+    }
+
+    /// [`WideBvh::closest`] with `stack` for the subtrees still to visit.
+    fn closest_in(&self, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)]) -> Option<Hit> {
+        let wr = WatertightRay::new(ray);
+        let br = BoxRay::new(ray);
+        let mut best: Option<Hit> = None;
+        let mut t_best = t_max;
+        let mut depth = 0;
+        let mut at = self.root;
+        loop {
+            if at & LEAF == 0 {
+                let node = &self.nodes[at as usize];
+                let (mut entered, t_near) = br.enter(node, t_best);
+                let t_near = t_near.to_array();
+                if entered != 0 {
+                    // Visit the nearest child next; stack the others
+                    // farthest first, so they come off nearest first.
+                    let mut order = [(0u32, 0f32); 4];
+                    let mut count = 0;
+                    while entered != 0 {
+                        let lane = entered.trailing_zeros() as usize;
+                        entered &= entered - 1;
+                        let item = (node.child[lane], t_near[lane]);
+                        let mut i = count;
+                        while i > 0 && order[i - 1].1 < item.1 {
+                            order[i] = order[i - 1];
+                            i -= 1;
+                        }
+                        order[i] = item;
+                        count += 1;
+                    }
+                    for &item in &order[..count - 1] {
+                        stack[depth] = item;
+                        depth += 1;
+                    }
+                    at = order[count - 1].0;
+                    continue;
+                }
+            } else {
+                let leaf = (at & !LEAF) as usize;
+                if let Some((hit, lane)) = self.leaf_closest(&wr, leaf, t_best) {
+                    t_best = hit.t;
+                    best = Some(Hit {
+                        triangle: self.original[leaf * LANES + lane],
+                        ..hit
+                    });
+                }
+            }
+            // Pop the next subtree that can still hold a nearer hit.
+            loop {
+                if depth == 0 {
+                    return best;
+                }
+                depth -= 1;
+                let (next, t_near) = stack[depth];
+                if t_near <= t_best {
+                    at = next;
+                    break;
+                }
+            }
+        }
+    }
+    // ANCHOR_END: closest4
+
+    /// The nearest hit among leaf `leaf`'s triangles in (0, t_max), and
+    /// its lane.
+    #[inline(always)]
+    fn leaf_closest(&self, wr: &WatertightRay, leaf: usize, t_max: f32) -> Option<(Hit, usize)> {
+        let h = wr.intersect4(&self.leaves[leaf], 0.0, t_max);
+        let (t, u, v) = (h.t.to_array(), h.u.to_array(), h.v.to_array());
+        let mut best: Option<(Hit, usize)> = None;
+        let mut hits = h.hit;
+        while hits != 0 {
+            let lane = hits.trailing_zeros() as usize;
+            hits &= hits - 1;
+            if best.is_none_or(|(b, _)| t[lane] <= b.t) {
+                let hit = Hit {
+                    t: t[lane],
+                    u: u[lane],
+                    v: v[lane],
+                    triangle: 0,
+                };
+                best = Some((hit, lane));
+            }
+        }
+        if h.check != 0 {
+            best = self.closest_checked(wr, leaf, h.check, t_max, best);
+        }
+        best
+    }
+
+    /// The rare lanes of [`WideBvh::leaf_closest`] that the one-triangle
+    /// test must decide. Kept out of line, so the common path's registers
+    /// are not spent on the f64 tie-breakers.
+    #[cold]
+    #[inline(never)]
+    fn closest_checked(
+        &self,
+        wr: &WatertightRay,
+        leaf: usize,
+        mut check: u32,
+        t_max: f32,
+        mut best: Option<(Hit, usize)>,
+    ) -> Option<(Hit, usize)> {
+        while check != 0 {
+            let lane = check.trailing_zeros() as usize;
+            check &= check - 1;
+            let t_best = best.map_or(t_max, |(b, _)| b.t);
+            if let Some(hit) = wr.intersect(&self.tris[leaf * LANES + lane], 0.0, t_best) {
+                best = Some((hit, lane));
+            }
+        }
+        best
+    }
+
+    /// Whether anything is hit in (0, t_max): stops at the first hit, in
+    /// no particular order.
+    pub fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
+        self.with_stack(|stack| self.occluded_in(ray, t_max, stack))
+    }
+
+    /// [`WideBvh::occluded`] with `stack` for the subtrees still to visit.
+    fn occluded_in(&self, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
+        let wr = WatertightRay::new(ray);
+        let br = BoxRay::new(ray);
+        let mut depth = 0;
+        let mut at = self.root;
+        loop {
+            if at & LEAF == 0 {
+                let node = &self.nodes[at as usize];
+                let (mut entered, _) = br.enter(node, t_max);
+                while entered != 0 {
+                    let lane = entered.trailing_zeros() as usize;
+                    entered &= entered - 1;
+                    stack[depth] = (node.child[lane], 0.0);
+                    depth += 1;
+                }
+            } else {
+                let leaf = (at & !LEAF) as usize;
+                let h = wr.intersect4(&self.leaves[leaf], 0.0, t_max);
+                if h.hit != 0 || (h.check != 0 && self.any_checked(&wr, leaf, h.check, t_max)) {
+                    return true;
+                }
+            }
+            if depth == 0 {
+                return false;
+            }
+            depth -= 1;
+            at = stack[depth].0;
+        }
+    }
+
+    /// Whether any of the rare lanes `check` of leaf `leaf` is hit in
+    /// (0, t_max), by the one-triangle test (out of line, as above).
+    #[cold]
+    #[inline(never)]
+    fn any_checked(&self, wr: &WatertightRay, leaf: usize, mut check: u32, t_max: f32) -> bool {
+        while check != 0 {
+            let lane = check.trailing_zeros() as usize;
+            check &= check - 1;
+            if wr
+                .intersect(&self.tris[leaf * LANES + lane], 0.0, t_max)
+                .is_some()
+            {
+                return true;
+            }
+        }
+        false
+    }
+
+    /// Runs `query` with a traversal stack deep enough for this tree: this
+    /// thread's stack of [`ON_STACK`] entries, which trees of up to 15
+    /// levels fit in (the 6,404 triangles of `scenes/brdf-row.toml` make
+    /// 8), or a fresh one on the heap for a deeper tree. (A stack made
+    /// anew for every query would have to be zeroed every time.)
+    #[inline(always)]
+    fn with_stack<R>(&self, query: impl FnOnce(&mut [(u32, f32)]) -> R) -> R {
+        let needed = 3 * self.levels + 1;
+        if needed <= ON_STACK {
+            STACK.with_borrow_mut(|stack| query(stack))
+        } else {
+            query(&mut vec![(0, 0.0); needed])
+        }
+    }
+}
+
+/// Entries in each thread's traversal stack.
+const ON_STACK: usize = 46;
+
+thread_local! {
+    /// Each thread's traversal stack (a query does not call another, so
+    /// one per thread is enough).
+    static STACK: std::cell::RefCell<[(u32, f32); ON_STACK]> =
+        const { std::cell::RefCell::new([(0, 0.0); ON_STACK]) };
+}
+
+/// Fills `counts[n]` with the number of triangles under binary node `n`.
+fn count_triangles(bvh2: &Bvh2, n: usize, counts: &mut [u32]) -> u32 {
+    let node = &bvh2.nodes[n];
+    counts[n] = if node.is_leaf() {
+        node.prim_count
+    } else {
+        let first = node.first_index as usize;
+        count_triangles(bvh2, first, counts) + count_triangles(bvh2, first + 1, counts)
+    };
+    counts[n]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ch3_ray_triangle::bvh::Bvh;
+    use crate::ch3_ray_triangle::triangle::Intersector;
+    use crate::core::sampling::random;
+
+    /// A closed box of 12 triangles plus a few inside, scaled by `s`.
+    fn box_scene(s: f32) -> Vec<[Vec3; 3]> {
+        let mut tris = Vec::new();
+        let c = [
+            Vec3::new(-1.0, -1.0, -1.0),
+            Vec3::new(1.0, -1.0, -1.0),
+            Vec3::new(1.0, 1.0, -1.0),
+            Vec3::new(-1.0, 1.0, -1.0),
+            Vec3::new(-1.0, -1.0, 1.0),
+            Vec3::new(1.0, -1.0, 1.0),
+            Vec3::new(1.0, 1.0, 1.0),
+            Vec3::new(-1.0, 1.0, 1.0),
+        ];
+        for [a, b, cc, d] in [
+            [0, 1, 2, 3],
+            [4, 5, 6, 7],
+            [0, 1, 5, 4],
+            [3, 2, 6, 7],
+            [0, 3, 7, 4],
+            [1, 2, 6, 5],
+        ] {
+            tris.push([c[a], c[b], c[cc]]);
+            tris.push([c[a], c[cc], c[d]]);
+        }
+        for i in 0..40 {
+            let p = Vec3::new(
+                random(1, i, 0, 0) * 1.6 - 0.8,
+                random(1, i, 0, 1) * 1.6 - 0.8,
+                random(1, i, 0, 2) * 1.6 - 0.8,
+            );
+            let q = Vec3::new(random(1, i, 1, 0), random(1, i, 1, 1), random(1, i, 1, 2)) * 0.2;
+            tris.push([
+                p,
+                p + Vec3::new(q.x, 0.0, 0.0),
+                p + Vec3::new(0.0, q.y, q.z),
+            ]);
+        }
+        tris.iter().map(|t| t.map(|p| p * s)).collect()
+    }
+
+    #[test]
+    fn wide_and_binary_bvh_agree_ray_for_ray_at_every_scale() {
+        for scale in [1e-4f32, 1.0, 1e4] {
+            let tris = box_scene(scale);
+            let bvh = Bvh::build(&tris).unwrap();
+            let wide = WideBvh::build(&tris).unwrap();
+            let mut near_hits = 0;
+            for i in 0..20_000u64 {
+                // Origins anywhere inside, some a hair off a wall (hits at
+                // t far below any fixed ε), directions anywhere, some along
+                // an axis or in an axis plane (zero components: 1/0).
+                let u = |d| random(7, i, 0, d);
+                let mut o = Vec3::new(u(0), u(1), u(2)) * 1.98 - 0.99;
+                if i % 2 == 0 {
+                    o.x = -1.0 + 1e-6;
+                }
+                let mut dir = Vec3::new(u(3) - 0.5, u(4) - 0.5, u(5) - 0.5);
+                match i % 7 {
+                    1 => dir.x = 0.0,
+                    2 => dir = Vec3::new(0.0, 0.0, dir.z),
+                    3 => dir = Vec3::new(-0.0, dir.y, 0.0),
+                    _ => {}
+                }
+                let Ok(ray) = Ray::new(o * scale, dir) else {
+                    continue;
+                };
+                let t_max = if i % 3 == 0 {
+                    u(6) * scale
+                } else {
+                    f32::INFINITY
+                };
+                let a = bvh.closest(&ray, t_max, Intersector::Watertight);
+                let b = wide.closest(&ray, t_max);
+                assert_eq!(a, b, "scale {scale}, ray {i}: {ray:?}");
+                if a.is_some_and(|h| h.t < 1e-4) {
+                    near_hits += 1;
+                }
+                assert_eq!(
+                    bvh.occluded(&ray, t_max, Intersector::Watertight),
+                    wide.occluded(&ray, t_max),
+                    "scale {scale}, ray {i}"
+                );
+            }
+            // The near hits are the ones a box test with a fixed ε would
+            // drop (at 1e4, coordinates are too coarse to place an origin
+            // so near).
+            if scale <= 1.0 {
+                assert!(near_hits > 1000, "scale {scale}: {near_hits} near hits");
+            }
+        }
+    }
+
+    #[test]
+    fn a_root_that_is_a_leaf_agrees() {
+        // One to four triangles: the whole tree is one leaf, no node.
+        for n in 1..=4 {
+            let tris = &box_scene(1.0)[..n];
+            let bvh = Bvh::build(tris).unwrap();
+            let wide = WideBvh::build(tris).unwrap();
+            assert_eq!((wide.node_count(), wide.leaf_count()), (0, 1));
+            let mut hits = 0;
+            for i in 0..2_000u64 {
+                let u = |d| random(13, i, 0, d);
+                let o = Vec3::new(u(0), u(1), u(2)) * 1.98 - 0.99;
+                let Ok(ray) = Ray::new(o, Vec3::new(u(3), u(4), u(5)) - 0.5) else {
+                    continue;
+                };
+                let a = bvh.closest(&ray, f32::INFINITY, Intersector::Watertight);
+                assert_eq!(
+                    a,
+                    wide.closest(&ray, f32::INFINITY),
+                    "{n} triangles, ray {i}"
+                );
+                assert_eq!(
+                    bvh.occluded(&ray, f32::INFINITY, Intersector::Watertight),
+                    wide.occluded(&ray, f32::INFINITY)
+                );
+                hits += a.is_some() as u32;
+            }
+            assert!(hits > 100, "{n} triangles: {hits} hits");
+        }
+    }
+
+    #[test]
+    fn a_tree_too_deep_for_the_fixed_stack_still_agrees() {
+        // Triangles at exponentially growing distances make a lopsided
+        // tree, far deeper than the on-stack traversal stack allows, so
+        // queries take the heap-stack path.
+        let tris: Vec<[Vec3; 3]> = (0..300)
+            .map(|k| {
+                let x = 1.2f32.powi(k);
+                let s = 0.1 * x;
+                [
+                    Vec3::new(x, -s, -s),
+                    Vec3::new(x, s, -s),
+                    Vec3::new(x, 0.0, s),
+                ]
+            })
+            .collect();
+        let bvh = Bvh::build(&tris).unwrap();
+        let wide = WideBvh::build(&tris).unwrap();
+        assert!(3 * wide.levels + 1 > 46, "only {} levels", wide.levels);
+        let mut hits = 0;
+        for i in 0..2_000u64 {
+            let u = |d| random(11, i, 0, d);
+            let o = Vec3::new(u(0) * 1e3, u(1) - 0.5, u(2) - 0.5);
+            let dir = Vec3::new(u(3) - 0.3, (u(4) - 0.5) * 0.01, (u(5) - 0.5) * 0.01);
+            let Ok(ray) = Ray::new(o, dir) else {
+                continue;
+            };
+            let a = bvh.closest(&ray, f32::INFINITY, Intersector::Watertight);
+            assert_eq!(a, wide.closest(&ray, f32::INFINITY), "ray {i}");
+            hits += a.is_some() as u32;
+            assert_eq!(
+                bvh.occluded(&ray, f32::INFINITY, Intersector::Watertight),
+                wide.occluded(&ray, f32::INFINITY)
+            );
+        }
+        assert!(hits > 500, "{hits} hits");
+    }
+}

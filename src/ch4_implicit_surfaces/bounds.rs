@@ -1,0 +1,124 @@
+//! Axis-aligned boxes around SDFs: where the Eikonal check samples, and
+//! where the report says each object is. A plane's box is infinite.
+
+use glam::Vec3;
+
+use super::sdf::Sdf;
+
+/// An axis-aligned box; `min > max` on some axis means empty.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Aabb {
+    /// Lower corner.
+    pub min: Vec3,
+    /// Upper corner.
+    pub max: Vec3,
+}
+
+impl Aabb {
+    /// Everything.
+    pub const INFINITE: Aabb = Aabb {
+        min: Vec3::NEG_INFINITY,
+        max: Vec3::INFINITY,
+    };
+
+    /// A cube of half-size `h` around `c`.
+    pub fn around(c: Vec3, h: Vec3) -> Aabb {
+        Aabb {
+            min: c - h,
+            max: c + h,
+        }
+    }
+
+    /// Whether every coordinate is finite.
+    pub fn is_finite(&self) -> bool {
+        self.min.is_finite() && self.max.is_finite()
+    }
+
+    /// The smallest box holding both.
+    pub fn union(&self, o: &Aabb) -> Aabb {
+        Aabb {
+            min: self.min.min(o.min),
+            max: self.max.max(o.max),
+        }
+    }
+
+    /// The overlap (may be empty).
+    pub fn intersect(&self, o: &Aabb) -> Aabb {
+        Aabb {
+            min: self.min.max(o.min),
+            max: self.max.min(o.max),
+        }
+    }
+
+    /// Grown by `d` on every side.
+    pub fn inflate(&self, d: f32) -> Aabb {
+        Aabb {
+            min: self.min - Vec3::splat(d),
+            max: self.max + Vec3::splat(d),
+        }
+    }
+
+    /// max - min.
+    pub fn size(&self) -> Vec3 {
+        self.max - self.min
+    }
+
+    /// The box around the eight transformed corners; infinite boxes stay
+    /// infinite (no ∞ · 0).
+    pub fn map(&self, f: impl Fn(Vec3) -> Vec3) -> Aabb {
+        if !self.is_finite() {
+            return Aabb::INFINITE;
+        }
+        let mut out = Aabb {
+            min: Vec3::INFINITY,
+            max: Vec3::NEG_INFINITY,
+        };
+        for i in 0..8 {
+            let c = Vec3::new(
+                if i & 1 == 0 { self.min.x } else { self.max.x },
+                if i & 2 == 0 { self.min.y } else { self.max.y },
+                if i & 4 == 0 { self.min.z } else { self.max.z },
+            );
+            let q = f(c);
+            out.min = out.min.min(q);
+            out.max = out.max.max(q);
+        }
+        out
+    }
+}
+
+/// The bounds of an SDF's inside and surface.
+pub fn of(sdf: &Sdf) -> Aabb {
+    let all = |of: &[Sdf], pick: fn(&Aabb, &Aabb) -> Aabb| {
+        of.iter()
+            .map(Sdf::bounds)
+            .reduce(|a, b| pick(&a, &b))
+            .unwrap_or(Aabb::INFINITE)
+    };
+    match sdf {
+        Sdf::Sphere { radius } => Aabb::around(Vec3::ZERO, Vec3::splat(*radius)),
+        Sdf::Box { half_size } | Sdf::RoundedBox { half_size, .. } => {
+            Aabb::around(Vec3::ZERO, *half_size)
+        }
+        Sdf::Torus { major, minor } => {
+            Aabb::around(Vec3::ZERO, Vec3::new(major + minor, *minor, major + minor))
+        }
+        Sdf::Plane { .. } => Aabb::INFINITE,
+        Sdf::Capsule { a, b, radius } => Aabb {
+            min: a.min(*b) - Vec3::splat(*radius),
+            max: a.max(*b) + Vec3::splat(*radius),
+        },
+        Sdf::Cylinder {
+            radius,
+            half_height,
+        } => Aabb::around(Vec3::ZERO, Vec3::new(*radius, *half_height, *radius)),
+        Sdf::Union(of) => all(of, Aabb::union),
+        Sdf::Intersection(of) => all(of, Aabb::intersect),
+        Sdf::Difference(a, _) => a.bounds(),
+        Sdf::SmoothUnion { k, of } => all(of, Aabb::union).inflate(*k * 0.25),
+        Sdf::Translate { offset, of } => of.bounds().map(|c| c + *offset),
+        Sdf::Rotate { rotation, of } => of.bounds().map(|c| *rotation * c),
+        Sdf::Scale { factor, of } => of.bounds().map(|c| c * *factor),
+        Sdf::ScaleAxes { factors, of, .. } => of.bounds().map(|c| c * *factors),
+    }
+}

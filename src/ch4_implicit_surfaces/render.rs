@@ -1,0 +1,212 @@
+//! One ray per pixel through the scene, in parallel, and the views made
+//! from the traces: the SDF part is sphere traced, the mesh part (if any)
+//! goes through chapter 3's BVH, and the nearer hit wins. Each pixel is a
+//! pure function of its position, so the images are the same on any number
+//! of threads.
+
+use glam::{Vec2, Vec3};
+use rayon::prelude::*;
+
+use crate::ch1_projection::camera::Camera;
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::stage::Geometry;
+use crate::ch4_implicit_surfaces::hit::{nearest_hit, Surface, SurfaceHit};
+use crate::ch4_implicit_surfaces::march::{
+    fixed_step, over_relaxed, sphere_trace, Ending, March, Trace,
+};
+use crate::ch4_implicit_surfaces::normal::{normal, NormalScheme};
+use crate::ch4_implicit_surfaces::sdf::{scene_distance, SdfObject};
+use crate::core::film::Film;
+use crate::scene::mesh::Mesh;
+use crate::scene::Material;
+
+/// The scene's meshes as chapter 3 traces them (watertight triangles in
+/// a BVH), for scenes that mix meshes with SDFs.
+#[derive(Clone, Copy)]
+pub struct MeshTracer<'a> {
+    /// Chapter 3's triangles and BVH.
+    pub geometry: &'a Geometry,
+    /// The scene's meshes, for each triangle's material.
+    pub meshes: &'a [Mesh],
+}
+
+impl MeshTracer<'_> {
+    /// The first mesh hit along `ray`, as a surface hit.
+    pub fn hit(&self, ray: &Ray) -> Option<SurfaceHit> {
+        let hit = self.geometry.closest(ray)?;
+        let mesh = self.geometry.triangles.mesh[hit.triangle as usize] as usize;
+        let [p0, p1, p2] = self.geometry.triangles.tris[hit.triangle as usize];
+        let n = (p1 - p0).cross(p2 - p0).normalize_or_zero();
+        Some(SurfaceHit {
+            t: hit.t,
+            // Face the viewer, as SDF normals do.
+            normal: if n.dot(ray.dir) > 0.0 { -n } else { n },
+            material: self.meshes[mesh].material,
+            surface: Surface::Mesh(mesh),
+        })
+    }
+}
+
+/// Which march.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Method {
+    /// Sphere tracing.
+    Plain,
+    /// Over-relaxed sphere tracing with this ω.
+    OverRelaxed(f32),
+    /// Constant steps of this length.
+    FixedStep(f32),
+}
+
+impl Method {
+    /// A short name for reports.
+    pub fn describe(&self) -> String {
+        match self {
+            Method::Plain => "sphere tracing".into(),
+            Method::OverRelaxed(w) => format!("over-relaxed sphere tracing (ω = {w})"),
+            Method::FixedStep(d) => format!("fixed-step march (Δ = {d})"),
+        }
+    }
+}
+
+/// Marches one ray with `method`.
+pub fn march(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March, method: Method) -> Trace {
+    match method {
+        Method::Plain => sphere_trace(f, ray, m),
+        Method::OverRelaxed(omega) => over_relaxed(f, ray, m, omega),
+        Method::FixedStep(delta) => fixed_step(f, ray, delta, m),
+    }
+}
+
+/// What one pixel's ray found.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pixel {
+    /// The march.
+    pub trace: Trace,
+    /// The surface hit after "nearest hit wins".
+    pub hit: Option<SurfaceHit>,
+    /// The ray.
+    pub ray: Ray,
+}
+
+/// Traces every pixel of `camera` against `objects` (no SDF objects: no
+/// evaluation at all, every pixel a miss).
+pub fn trace_image(
+    camera: &Camera,
+    objects: &[SdfObject],
+    m: &March,
+    method: Method,
+    normals: NormalScheme,
+    meshes: Option<MeshTracer>,
+) -> Vec<Pixel> {
+    let (w, h) = (camera.width, camera.height);
+    (0..w * h)
+        .into_par_iter()
+        .map(|i| {
+            let raster = Vec2::new((i % w) as f32 + 0.5, (i / w) as f32 + 0.5);
+            trace_pixel(&camera.ray(raster), objects, m, method, normals, meshes)
+        })
+        .collect()
+}
+
+/// Traces one ray.
+// ANCHOR: trace_pixel
+pub fn trace_pixel(
+    ray: &Ray,
+    objects: &[SdfObject],
+    m: &March,
+    method: Method,
+    normals: NormalScheme,
+    meshes: Option<MeshTracer>,
+) -> Pixel {
+    let empty = Trace {
+        ending: Ending::Escaped,
+        t: 0.0,
+        steps: 0,
+        inside: false,
+        oversteps: 0,
+        lipschitz_violations: 0,
+        residual: f32::INFINITY,
+    };
+    // Meshes through chapter 3's BVH; nothing when the scene has none.
+    let mesh_hit = meshes.and_then(|mt| mt.hit(ray));
+    if objects.is_empty() {
+        return Pixel {
+            trace: empty,
+            hit: mesh_hit,
+            ray: *ray,
+        };
+    }
+    let f = |p: Vec3| scene_distance(objects, p).0;
+    let trace = march(&f, ray, m, method);
+    let sdf_hit = trace.hit().map(|t| {
+        let p = ray.at(t);
+        let object = scene_distance(objects, p).1;
+        let h = m.epsilon_at(p).max(1e-4);
+        let n = normal(&f, p, h, normals, -ray.dir);
+        SurfaceHit {
+            t,
+            // Face the viewer: from inside, the gradient points away.
+            normal: if n.dot(ray.dir) > 0.0 { -n } else { n },
+            material: objects[object].material,
+            surface: Surface::Sdf(object),
+        }
+    });
+    Pixel {
+        trace,
+        hit: nearest_hit(sdf_hit, mesh_hit),
+        ray: *ray,
+    }
+}
+// ANCHOR_END: trace_pixel
+
+/// The colour of a miss.
+pub const BACKGROUND: Vec3 = Vec3::new(0.04, 0.05, 0.07);
+
+/// A heat map: black, blue, red, yellow, white for x from 0 to 1.
+pub fn heat(x: f32) -> Vec3 {
+    let x = if x.is_finite() {
+        x.clamp(0.0, 1.0)
+    } else {
+        1.0
+    };
+    let stops = [
+        Vec3::ZERO,
+        Vec3::new(0.1, 0.1, 0.8),
+        Vec3::new(0.9, 0.1, 0.1),
+        Vec3::new(1.0, 0.9, 0.1),
+        Vec3::ONE,
+    ];
+    let s = x * 4.0;
+    let i = (s.floor() as usize).min(3);
+    stops[i].lerp(stops[i + 1], s - i as f32)
+}
+
+/// The five views: shaded (headlight), normals, depth, steps, error.
+pub fn views(pixels: &[Pixel], w: u32, h: u32, materials: &[Material], m: &March) -> Vec<Film> {
+    let mut films: Vec<Film> = (0..5).map(|_| Film::new(w, h)).collect();
+    let hits = pixels.iter().filter_map(|p| p.hit.map(|h| h.t));
+    let t_min = hits.clone().fold(f32::INFINITY, f32::min);
+    let t_max = hits.fold(0.0, f32::max).max(t_min);
+    for (i, px) in pixels.iter().enumerate() {
+        let steps = heat(px.trace.steps as f32 / m.max_steps as f32);
+        films[3].pixels[i] = steps;
+        let Some(hit) = px.hit else {
+            films[0].pixels[i] = BACKGROUND;
+            continue;
+        };
+        // A headlight: light from the eye, so brightness is cos θ.
+        let cos = hit.normal.dot(-px.ray.dir).abs();
+        films[0].pixels[i] = materials[hit.material].reflectance * (0.1 + 0.9 * cos);
+        films[1].pixels[i] = hit.normal * 0.5 + Vec3::splat(0.5);
+        let depth = if t_max > t_min {
+            1.0 - (hit.t - t_min) / (t_max - t_min)
+        } else {
+            1.0
+        };
+        films[2].pixels[i] = Vec3::splat(0.15 + 0.85 * depth);
+        let eps = m.epsilon_at(px.ray.at(hit.t));
+        films[4].pixels[i] = heat(px.trace.residual.abs() / eps);
+    }
+    films
+}

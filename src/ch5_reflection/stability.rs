@@ -1,0 +1,360 @@
+//! Chapter 5's stiff and extreme cases. Each builds the situation, runs the
+//! real code (lights, BRDFs, warps, the estimator) and checks that the
+//! outcome is the expected one and that nothing came out NaN or infinite.
+
+use glam::{Vec2, Vec3};
+
+use super::direct::{Counters, Estimator, Strategy};
+use crate::ch4_implicit_surfaces::hit::Surface;
+use crate::ch5_reflection::light::sky::Sky;
+use crate::ch5_reflection::material::glossy::Glossy;
+use crate::ch5_reflection::material::lambert::Lambertian;
+use crate::ch5_reflection::material::retro::Retro;
+use crate::ch5_reflection::material::semigloss::SemiGloss;
+use crate::ch5_reflection::material::Bsdf;
+use crate::ch5_reflection::warp;
+use crate::ch5_reflection::world::{Interaction, World};
+use crate::core::report::{format_number, StabilityCase};
+use crate::core::sampling::{random, Sampler};
+use crate::scene::Scene;
+
+/// A case and how many NaN/Inf values the estimator caught in it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CaseResult {
+    /// The report row.
+    pub case: StabilityCase,
+    /// Non-finite terms caught (and dropped) while running it.
+    pub caught: u64,
+}
+
+/// Total NaN/Inf caught over `cases`.
+pub fn caught(cases: &[CaseResult]) -> u64 {
+    cases.iter().map(|c| c.caught).sum()
+}
+
+/// The largest `u` in [0, 1) that [`random`] can return.
+pub const U_MAX: f32 = 1.0 - 1.0 / (1u32 << 24) as f32;
+
+fn world(text: &str) -> World {
+    let scene = Scene::parse(text, "stiff", "<stiff>", &|r| {
+        Err((r.into(), "none".into()))
+    })
+    .expect("stability scenes are valid (tested)");
+    World::new(&scene)
+}
+
+fn floor_point(world: &World) -> Interaction {
+    Interaction {
+        t: 1.0,
+        p: Vec3::ZERO,
+        n: Vec3::Z,
+        material: world.mesh_material[0],
+        surface: Surface::Mesh(0),
+    }
+}
+
+const FLOOR: &str = r#"
+[[materials]]
+name = "floor"
+reflectance = [0.5, 0.5, 0.5]
+[[objects]]
+shape = "rectangle"
+size = [4, 4]
+material = "floor"
+"#;
+
+/// Mean reflected radiance at the floor's centre, viewed from `wo`, over
+/// `n` samples; with the NaN/Inf count.
+fn shade(world: &World, strategy: Strategy, wo: Vec3, n: u32) -> (Vec3, Counters) {
+    let est = Estimator {
+        strategy,
+        max_mirror_bounces: 2,
+        shadow_rays: true,
+    };
+    let it = floor_point(world);
+    let mut c = Counters::default();
+    let mut sum = Vec3::ZERO;
+    for i in 0..n {
+        let mut s = Sampler::new(7, 0, i as u64);
+        sum += est.reflected(world, &it, wo, &mut s, &mut c);
+    }
+    (sum / n as f32, c)
+}
+
+fn finite_all(strategy_results: &[(Vec3, Counters)]) -> (bool, u64) {
+    let caught = strategy_results.iter().map(|r| r.1.nonfinite).sum();
+    (strategy_results.iter().all(|r| r.0.is_finite()), caught)
+}
+
+/// [`shade`] with each strategy; with whether every result is finite and
+/// the NaN/Inf caught over all of them.
+fn shade_each(
+    world: &World,
+    strategies: &[Strategy],
+    wo: Vec3,
+    n: u32,
+) -> (Vec<(Vec3, Counters)>, bool, u64) {
+    let results: Vec<_> = strategies.iter().map(|&s| shade(world, s, wo, n)).collect();
+    let (finite, caught) = finite_all(&results);
+    (results, finite, caught)
+}
+
+/// A point light of intensity 1 at `position` (TOML, `[x, y, z]`).
+fn point_light(position: &str) -> String {
+    format!("\n[[lights]]\ntype = \"point\"\nposition = {position}\nintensity = [1, 1, 1]\n")
+}
+
+/// A black rectangle emitting `emission` (TOML), one-sided unless
+/// `two_sided`, of `size`, placed by the TOML lines `placement`.
+fn lamp(emission: &str, two_sided: bool, size: &str, placement: &str) -> String {
+    let sides = if two_sided { "two_sided = true\n" } else { "" };
+    format!(
+        "[[materials]]
+name = \"lamp\"
+reflectance = [0, 0, 0]
+emission = {emission}
+{sides}[[objects]]
+shape = \"rectangle\"
+size = {size}
+material = \"lamp\"
+{placement}"
+    )
+}
+
+fn row(name: &str, expected: &str, measured: String, ok: bool, caught: u64) -> CaseResult {
+    CaseResult {
+        case: StabilityCase::new(name, expected, measured, ok),
+        caught,
+    }
+}
+
+/// Every case.
+pub fn stability_cases() -> Vec<CaseResult> {
+    vec![
+        point_light_at_distance_zero(),
+        grazing_light_and_view(),
+        glossy_exponent_1e4(),
+        pdf_at_the_ends_of_u(),
+        tiny_bright_area_light(),
+        light_in_the_surface_plane(),
+        back_facing_light(),
+    ]
+}
+
+/// A point light 1e-3 and 1e-30 above the floor: finite and huge, then
+/// refused (I/d² overflows) rather than infinite.
+pub fn point_light_at_distance_zero() -> CaseResult {
+    let mut results = Vec::new();
+    let mut values = Vec::new();
+    for d in [1e-3f32, 1e-30] {
+        let w = world(&format!(
+            "{FLOOR}{}",
+            point_light(&format!("[0, 0, {d:e}]"))
+        ));
+        let r = shade(&w, Strategy::Mis, Vec3::Z, 1);
+        values.push(r.0.x);
+        results.push(r);
+    }
+    let (finite, caught) = finite_all(&results);
+    // At d = 1e-3 the exact value is ρ/π · I / d² = 0.5/π · 1e6.
+    let exact = 0.5 / std::f32::consts::PI * 1e6;
+    let close = ((values[0] - exact) / exact).abs() < 1e-2;
+    row(
+        "point light at distance 1e-3 and 1e-30",
+        "ρI/(πd²) at 1e-3; no light (not Inf) at 1e-30",
+        format!(
+            "{} and {}",
+            format_number(values[0] as f64),
+            format_number(values[1] as f64)
+        ),
+        finite && close && values[1] == 0.0 && caught == 0,
+        caught,
+    )
+}
+
+/// Light and view at cos θ = 1e-7 from the horizon, for every BRDF.
+pub fn grazing_light_and_view() -> CaseResult {
+    let c = 1e-7f32;
+    let s = (1.0 - c * c).sqrt();
+    let w = world(&format!(
+        "{FLOOR}\n[[lights]]\ntype = \"directional\"\ndirection = [{}, 0, {}]\nirradiance = [1, 1, 1]\n",
+        -s, -c
+    ));
+    let (l, counters) = shade(&w, Strategy::Mis, Vec3::new(-s, 0.0, c), 1);
+    let mut ok = l.is_finite() && l.x >= 0.0 && l.x < 1e-6;
+    let wo = Vec3::new(s, 0.0, c);
+    let wi = Vec3::new(-s, 0.0, c);
+    for b in all_bsdfs(1e4) {
+        let (f, p) = (b.f(wo, wi), b.pdf(wo, wi));
+        ok &= f.is_finite() && p.is_finite() && p >= 0.0;
+    }
+    row(
+        "grazing light and view (cos θ = 1e-7)",
+        "≈ 0 reflected, every f and pdf finite",
+        format!("L = {}", format_number(l.x as f64)),
+        ok && counters.nonfinite == 0,
+        counters.nonfinite,
+    )
+}
+
+fn all_bsdfs(n: f32) -> Vec<Bsdf> {
+    vec![
+        Bsdf::Lambertian(Lambertian { rho: Vec3::ONE }),
+        Bsdf::Glossy(Glossy { rs: Vec3::ONE, n }),
+        Bsdf::Retro(Retro { rho: Vec3::ONE, n }),
+        Bsdf::SemiGloss(SemiGloss {
+            rho: Vec3::ONE,
+            ks: 0.5,
+            n,
+        }),
+    ]
+}
+
+/// Lobes of exponent 10⁴: finite values, albedo at normal incidence ≤ 1.
+pub fn glossy_exponent_1e4() -> CaseResult {
+    let wo = Vec3::new(0.3, 0.0, 1.0).normalize();
+    let mut worst = 0.0f32;
+    let mut ok = true;
+    for b in all_bsdfs(1e4) {
+        let n = 4096;
+        let mut sum = 0.0f32;
+        for i in 0..n {
+            let u = Vec2::new(random(9, i, 0, 0), random(9, i, 0, 1));
+            if let Some(s) = b.sample(wo, u, random(9, i, 0, 2)) {
+                ok &= s.weight.is_finite() && s.pdf.is_finite() && s.pdf > 0.0;
+                sum += s.weight.x;
+            }
+        }
+        worst = worst.max(sum / n as f32);
+    }
+    row(
+        "glossy, retro and semi-gloss lobes with n = 1e4",
+        "finite samples; albedo ≤ 1",
+        format!("largest albedo {}", format_number(worst as f64)),
+        ok && worst <= 1.0 + 1e-3,
+        0,
+    )
+}
+
+/// Uniform numbers 0 and the largest below 1, where pdfs go to 0 (a known
+/// failure in established renderers): every warp and sampler still gives a
+/// unit direction, and every sample it keeps has a finite weight.
+pub fn pdf_at_the_ends_of_u() -> CaseResult {
+    let ends = [0.0, U_MAX];
+    let mut ok = true;
+    let mut kept = 0;
+    let sky = Sky {
+        zenith: Vec3::new(0.2, 0.4, 1.0),
+        horizon: Vec3::ONE,
+        ground: Vec3::splat(0.1),
+    };
+    let wo = Vec3::new(0.5, 0.1, 0.8).normalize();
+    for &a in &ends {
+        for &b in &ends {
+            let u = Vec2::new(a, b);
+            for d in [
+                warp::uniform_hemisphere(u),
+                warp::cosine_hemisphere(u),
+                warp::uniform_sphere(u),
+                sky.sample(u),
+            ] {
+                ok &= d.is_finite() && (d.length() - 1.0).abs() < 1e-4;
+            }
+            ok &= sky.pdf(sky.sample(u)).is_finite();
+            for bsdf in all_bsdfs(50.0).into_iter().chain(all_bsdfs(1e4)) {
+                for lobe in ends {
+                    if let Some(s) = bsdf.sample(wo, u, lobe) {
+                        kept += 1;
+                        ok &= s.weight.is_finite() && s.pdf > 0.0 && s.pdf.is_finite();
+                    }
+                }
+            }
+        }
+    }
+    row(
+        "u = 0 and u = 1 − 2⁻²⁴ in every warp and BRDF sampler",
+        "unit directions, finite weights (or no sample)",
+        format!("{kept} samples kept, all finite: {ok}"),
+        ok,
+        0,
+    )
+}
+
+/// A 1e-4 × 1e-4 m light (area 1e-8) of radiance 1e8 above the floor.
+pub fn tiny_bright_area_light() -> CaseResult {
+    let w = world(&format!(
+        "{FLOOR}{}",
+        lamp(
+            "[1e8, 1e8, 1e8]",
+            false,
+            "[1e-4, 1e-4]",
+            "rotate = { axis = [1, 0, 0], degrees = 180 }\ntranslate = [0, 0, 1]\n"
+        )
+    ));
+    // Exact: E ≈ Le · A / d² (the light is tiny and straight above).
+    let exact = 0.5 / std::f32::consts::PI * 1e8 * 1e-8;
+    let strategies = [Strategy::Light, Strategy::Mis, Strategy::Uniform];
+    let (results, finite, caught) = shade_each(&w, &strategies, Vec3::Z, 64);
+    let light = results[0].0.x;
+    row(
+        "tiny area light (A = 1e-8 m², Le = 1e8)",
+        "light and MIS ≈ ρLeA/(πd²); uniform finite (it misses)",
+        format!(
+            "light {}, MIS {}, uniform {} (exact {})",
+            format_number(light as f64),
+            format_number(results[1].0.x as f64),
+            format_number(results[2].0.x as f64),
+            format_number(exact as f64)
+        ),
+        finite && ((light - exact) / exact).abs() < 0.02 && caught == 0,
+        caught,
+    )
+}
+
+/// Point and area lights lying exactly in the floor's plane.
+pub fn light_in_the_surface_plane() -> CaseResult {
+    let point = point_light("[1, 0, 0]");
+    let w = world(&format!(
+        "{FLOOR}{point}{}",
+        lamp(
+            "[1, 1, 1]",
+            true,
+            "[1, 1]",
+            "rotate = { axis = [1, 0, 0], degrees = 90 }\ntranslate = [0, 3, 0]\n"
+        )
+    ));
+    // The vertical lamp stands on the floor's plane: half of it is below.
+    // Only the point light is tested for exactly 0; everything must be finite.
+    let (_, finite, caught) = shade_each(&w, &Strategy::ALL, Vec3::Z, 16);
+    let in_plane = world(&format!("{FLOOR}{point}"));
+    let (l, _) = shade(&in_plane, Strategy::Mis, Vec3::Z, 1);
+    row(
+        "lights in the surface's plane (point; standing rectangle)",
+        "point: exactly 0; all finite",
+        format!("point light gives {}", format_number(l.x as f64)),
+        finite && l == Vec3::ZERO && caught == 0,
+        caught,
+    )
+}
+
+/// A one-sided area light facing away from the floor, and a point light
+/// under it: no light arrives from either.
+pub fn back_facing_light() -> CaseResult {
+    let w = world(&format!(
+        "{FLOOR}{}{}",
+        point_light("[0, 0, -1]"),
+        lamp("[5, 5, 5]", false, "[1, 1]", "translate = [0, 0, 1]\n")
+    ));
+    let (results, finite, caught) = shade_each(&w, &Strategy::ALL, Vec3::Z, 64);
+    let max = results
+        .iter()
+        .map(|r| r.0.max_element())
+        .fold(0.0f32, f32::max);
+    row(
+        "back-facing lights (one-sided rectangle facing up, point light below)",
+        "0 with every strategy",
+        format!("largest {}", format_number(max as f64)),
+        finite && max == 0.0 && caught == 0,
+        caught,
+    )
+}

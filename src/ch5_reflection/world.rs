@@ -1,0 +1,231 @@
+//! The scene as the shading chapters (5 and 6) see it: one `intersect`
+//! and one shadow-ray test over meshes (chapter 3's BVH, in the 4-wide form
+//! of [`crate::ch3_ray_triangle::wide_bvh`]) and SDF objects
+//! (chapter 4's sphere tracing), each surface's BSDF, and the lights.
+//!
+//! Nothing is built for what the scene lacks: no BVH without meshes, no
+//! marching without SDFs, no light tables without lights.
+
+use glam::Vec3;
+
+use crate::ch3_ray_triangle::bvh::Triangles;
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::spawn::offset_origin;
+use crate::ch3_ray_triangle::wide_bvh::WideBvh;
+use crate::ch4_implicit_surfaces::hit::Surface;
+use crate::ch4_implicit_surfaces::march::{sphere_trace, March};
+use crate::ch4_implicit_surfaces::normal::{normal, NormalScheme};
+use crate::ch4_implicit_surfaces::sdf::{scene_distance, SdfObject};
+use crate::ch5_reflection::light::{Light, Lights};
+use crate::ch5_reflection::material::Bsdf;
+use crate::scene::{Material, Scene};
+
+/// A ray's first hit, with what shading needs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interaction {
+    /// Distance along the ray.
+    pub t: f32,
+    /// The hit point.
+    pub p: Vec3,
+    /// The unit *outward* normal (a mesh's winding normal, an SDF's
+    /// gradient), whichever side the ray came from.
+    pub n: Vec3,
+    /// Index into [`World::materials`] and [`World::bsdfs`].
+    pub material: usize,
+    /// Which surface was hit.
+    pub surface: Surface,
+}
+
+/// Meshes, SDFs, materials and lights, ready for shading.
+pub struct World {
+    /// Every triangle of the scene's meshes (empty without meshes).
+    pub triangles: Triangles,
+    /// Chapter 3's BVH over them in its 4-wide form, which `intersect` and
+    /// `unoccluded` trace through; `None` for a scene without meshes.
+    pub wide: Option<WideBvh>,
+    /// The unit outward (winding) normal of each triangle.
+    pub normals: Vec<Vec3>,
+    /// The material of each scene mesh.
+    pub mesh_material: Vec<usize>,
+    /// SDF objects (empty: nothing is marched).
+    pub sdfs: Vec<SdfObject>,
+    /// How SDFs are marched.
+    pub march: March,
+    /// The scene's materials.
+    pub materials: Vec<Material>,
+    /// One BSDF per material.
+    pub bsdfs: Vec<Bsdf>,
+    /// Every light.
+    pub lights: Lights,
+}
+
+impl World {
+    /// Builds what `scene` needs.
+    pub fn new(scene: &Scene) -> World {
+        let triangles = Triangles::from_meshes(&scene.meshes);
+        let wide = WideBvh::build(&triangles.tris);
+        let normals = triangles
+            .tris
+            .iter()
+            .map(|[p0, p1, p2]| (*p1 - *p0).cross(*p2 - *p0).normalize_or(Vec3::Z))
+            .collect();
+        let march = March {
+            max_distance: scene_extent(scene),
+            ..March::default()
+        };
+        World {
+            triangles,
+            wide,
+            normals,
+            mesh_material: scene.meshes.iter().map(|m| m.material).collect(),
+            sdfs: scene.sdfs.clone(),
+            march,
+            materials: scene.materials.clone(),
+            bsdfs: scene.materials.iter().map(Bsdf::from_material).collect(),
+            lights: Lights::new(scene),
+        }
+    }
+
+    /// The first surface along `ray`, meshes and SDFs alike.
+    pub fn intersect(&self, ray: &Ray) -> Option<Interaction> {
+        self.intersect_within(ray, f32::INFINITY)
+    }
+
+    /// The first surface along `ray` before `t_max`.
+    pub fn intersect_within(&self, ray: &Ray, t_max: f32) -> Option<Interaction> {
+        let mut best: Option<Interaction> = None;
+        if let Some(bvh) = &self.wide {
+            if let Some(hit) = bvh.closest(ray, t_max) {
+                let k = hit.triangle as usize;
+                let mesh = self.triangles.mesh[k] as usize;
+                best = Some(Interaction {
+                    t: hit.t,
+                    p: hit.point(self.triangles.tris[k]),
+                    n: self.normals[k],
+                    material: self.mesh_material[mesh],
+                    surface: Surface::Mesh(mesh),
+                });
+            }
+        }
+        if !self.sdfs.is_empty() {
+            let f = |p: Vec3| scene_distance(&self.sdfs, p).0;
+            let m = March {
+                max_distance: self.march.max_distance.min(best.map_or(t_max, |b| b.t)),
+                ..self.march
+            };
+            if let Some(t) = sphere_trace(&f, ray, &m).hit() {
+                if best.is_none_or(|b| t < b.t) {
+                    let p = ray.at(t);
+                    let object = scene_distance(&self.sdfs, p).1;
+                    let h = m.epsilon_at(p).max(1e-4);
+                    best = Some(Interaction {
+                        t,
+                        p,
+                        n: normal(&f, p, h, NormalScheme::Central, -ray.dir),
+                        material: self.sdfs[object].material,
+                        surface: Surface::Sdf(object),
+                    });
+                }
+            }
+        }
+        best
+    }
+
+    /// A ray leaving the surface point `p` (outward normal `n`) along
+    /// `dir`, started far enough off the surface not to hit it again:
+    /// chapter 3's offset in ulps, plus a few marching ε when the scene has
+    /// SDFs (a march that starts on the surface stops at once).
+    pub fn spawn(&self, p: Vec3, n: Vec3, dir: Vec3) -> Option<Ray> {
+        let side = if n.dot(dir) < 0.0 { -n } else { n };
+        let mut origin = offset_origin(p, side);
+        if !self.sdfs.is_empty() {
+            origin += side * 4.0 * self.march.epsilon_at(p);
+        }
+        Ray::from_unit(origin, dir)
+    }
+
+    /// Whether nothing blocks the segment from the surface point `p`
+    /// (outward normal `n`) to the point `dist` away along the unit
+    /// direction `wi` (`dist` = ∞: to infinity). The far end is shortened by
+    /// a relative 1e-4 so the light's own surface does not block it.
+    pub fn unoccluded(&self, p: Vec3, n: Vec3, wi: Vec3, dist: f32) -> bool {
+        let Some(ray) = self.spawn(p, n, wi) else {
+            return false;
+        };
+        let t_max = if dist.is_finite() {
+            // Less the offset's L1 length, which is at least its length.
+            (dist - (ray.origin - p).abs().element_sum()) * (1.0 - 1e-4)
+        } else {
+            f32::INFINITY
+        };
+        if t_max <= 0.0 {
+            return true;
+        }
+        if let Some(bvh) = &self.wide {
+            if bvh.occluded(&ray, t_max) {
+                return false;
+            }
+        }
+        if !self.sdfs.is_empty() {
+            let f = |q: Vec3| scene_distance(&self.sdfs, q).0;
+            let m = March {
+                max_distance: self.march.max_distance.min(t_max),
+                ..self.march
+            };
+            if sphere_trace(&f, &ray, &m).hit().is_some() {
+                return false;
+            }
+        }
+        true
+    }
+
+    /// Radiance the surface at `it` emits towards the unit direction `wo`
+    /// (pointing away from the surface): Le on an emitting face, else 0.
+    pub fn emitted(&self, it: &Interaction, wo: Vec3) -> Vec3 {
+        let m = &self.materials[it.material];
+        if !m.is_emissive() {
+            return Vec3::ZERO;
+        }
+        if m.two_sided || it.n.dot(wo) > 0.0 {
+            m.emission
+        } else {
+            Vec3::ZERO
+        }
+    }
+
+    /// The area light of the surface `it` hit, if it is one that
+    /// [`Lights`] samples (emissive meshes; emissive SDFs are only found by
+    /// BSDF sampling).
+    pub fn area_light(
+        &self,
+        it: &Interaction,
+    ) -> Option<(usize, &crate::ch5_reflection::light::area::AreaLight)> {
+        let Surface::Mesh(m) = it.surface else {
+            return None;
+        };
+        let index = self.lights.area_of_mesh.get(m).copied().flatten()?;
+        match &self.lights.lights[index] {
+            Light::Area(a) => Some((index, a)),
+            _ => None,
+        }
+    }
+}
+
+/// A distance beyond which nothing can be hit: twice the diagonal of the
+/// box around the camera and every SDF's bounds (at least 100).
+fn scene_extent(scene: &Scene) -> f32 {
+    let eye = scene.camera.desc.eye.as_vec3();
+    let mut far = 0.0f32;
+    for o in &scene.sdfs {
+        let b = o.sdf.bounds();
+        if b.is_finite() {
+            far = far.max((b.min - eye).length()).max((b.max - eye).length());
+        }
+    }
+    for m in &scene.meshes {
+        for p in &m.positions {
+            far = far.max((*p - eye).length());
+        }
+    }
+    (2.0 * far).max(100.0)
+}

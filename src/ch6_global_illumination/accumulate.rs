@@ -1,0 +1,201 @@
+//! The accumulation film of a progressive render: per pixel the sum and
+//! the sum of squares of the sample values (for the mean and its standard
+//! error), and, when asked for, the sum per bounce layer. Each pass adds a
+//! few samples per pixel; the image can be read after any pass.
+
+use glam::{Vec2, Vec3};
+use rayon::prelude::*;
+
+use crate::ch1_projection::camera::Camera;
+use crate::ch5_reflection::world::World;
+use crate::core::film::Film;
+
+use super::integrator::{trace_path, PathSettings, PathStats, LAYER_SLOTS};
+use super::sampler::{PathSampler, SamplerKind};
+
+/// Sums over the samples taken so far.
+#[derive(Clone, Debug)]
+pub struct Accumulator {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Samples per pixel so far.
+    pub samples: u32,
+    /// Σ L per pixel.
+    pub sum: Vec<Vec3>,
+    /// Σ L² per pixel and channel.
+    pub sum_sq: Vec<Vec3>,
+    /// Σ L per pixel and layer slot; `None` when only the final image is
+    /// wanted (nothing allocated for layers then).
+    pub layers: Option<Vec<[Vec3; LAYER_SLOTS]>>,
+    /// Counts over every pass.
+    pub stats: PathStats,
+}
+
+impl Accumulator {
+    /// An empty accumulator, with layer sums if `layers`.
+    pub fn new(width: u32, height: u32, layers: bool) -> Accumulator {
+        let n = width as usize * height as usize;
+        Accumulator {
+            width,
+            height,
+            samples: 0,
+            sum: vec![Vec3::ZERO; n],
+            sum_sq: vec![Vec3::ZERO; n],
+            layers: layers.then(|| vec![[Vec3::ZERO; LAYER_SLOTS]; n]),
+            stats: PathStats::default(),
+        }
+    }
+
+    /// Traces samples `first .. first + count` of every pixel, rows in
+    /// parallel. The result does not depend on the number of threads: each
+    /// pixel's samples are added in order by one thread.
+    // ANCHOR: render_pass
+    pub fn add_samples(
+        &mut self,
+        world: &World,
+        camera: &Camera,
+        settings: &PathSettings,
+        sampler: SamplerKind,
+        seed: u64,
+        count: u32,
+    ) {
+        let w = self.width as usize;
+        let first = self.samples;
+        let mut layer_rows: Vec<Option<&mut [[Vec3; LAYER_SLOTS]]>> = match &mut self.layers {
+            Some(l) => l.chunks_mut(w).map(Some).collect(),
+            None => (0..self.height).map(|_| None).collect(),
+        };
+        let stats = self
+            .sum
+            .par_chunks_mut(w)
+            .zip(self.sum_sq.par_chunks_mut(w))
+            .zip(layer_rows.par_iter_mut())
+            .enumerate()
+            .map(|(y, ((sum, sum_sq), layer_row))| {
+                let mut stats = PathStats::default();
+                for x in 0..w {
+                    let pixel = (y * w + x) as u64;
+                    for s in first..first + count {
+                        let mut sampler = PathSampler::new(sampler, seed, pixel, s as u64);
+                        let raster = Vec2::new(x as f32, y as f32) + sampler.get2();
+                        let ray = camera.ray(raster);
+                        let l = match layer_row.as_deref_mut() {
+                            Some(row) => {
+                                let mut layers = [Vec3::ZERO; LAYER_SLOTS];
+                                trace_path(
+                                    world,
+                                    ray,
+                                    &mut sampler,
+                                    settings,
+                                    &mut layers,
+                                    &mut stats,
+                                );
+                                for (acc, v) in row[x].iter_mut().zip(layers) {
+                                    *acc += v;
+                                }
+                                layers.iter().sum()
+                            }
+                            None => {
+                                let mut l = Vec3::ZERO;
+                                trace_path(world, ray, &mut sampler, settings, &mut l, &mut stats);
+                                l
+                            }
+                        };
+                        sum[x] += l;
+                        sum_sq[x] += l * l;
+                    }
+                }
+                stats
+            })
+            .reduce(PathStats::default, |mut a, b| {
+                a.add(&b);
+                a
+            });
+        self.stats.add(&stats);
+        self.samples += count;
+    }
+    // ANCHOR_END: render_pass
+
+    /// The mean image.
+    pub fn mean(&self) -> Film {
+        let inv = 1.0 / self.samples.max(1) as f32;
+        Film {
+            width: self.width,
+            height: self.height,
+            pixels: self.sum.iter().map(|s| *s * inv).collect(),
+        }
+    }
+
+    /// Per pixel and channel, the estimated variance of the mean:
+    /// s² / n with the unbiased sample variance s².
+    pub fn variance_of_mean(&self) -> Film {
+        let n = self.samples as f64;
+        let pixels = self
+            .sum
+            .iter()
+            .zip(&self.sum_sq)
+            .map(|(s, q)| {
+                if n < 2.0 {
+                    return Vec3::ZERO;
+                }
+                let (s, q) = (s.as_dvec3(), q.as_dvec3());
+                let var = ((q - s * s / n) / (n - 1.0)).max(glam::DVec3::ZERO);
+                (var / n).as_vec3()
+            })
+            .collect();
+        Film {
+            width: self.width,
+            height: self.height,
+            pixels,
+        }
+    }
+
+    /// The mean of layer slot `slot` (see [`super::integrator`]), if layers
+    /// are kept.
+    pub fn layer(&self, slot: usize) -> Option<Film> {
+        let layers = self.layers.as_ref()?;
+        let inv = 1.0 / self.samples.max(1) as f32;
+        Some(Film {
+            width: self.width,
+            height: self.height,
+            pixels: layers.iter().map(|l| l[slot] * inv).collect(),
+        })
+    }
+
+    /// The mean of slots `0 ..= last` summed: the image "up to" a bounce.
+    pub fn prefix(&self, last: usize) -> Option<Film> {
+        let layers = self.layers.as_ref()?;
+        let inv = 1.0 / self.samples.max(1) as f32;
+        Some(Film {
+            width: self.width,
+            height: self.height,
+            pixels: layers
+                .iter()
+                .map(|l| l[..=last].iter().sum::<Vec3>() * inv)
+                .collect(),
+        })
+    }
+}
+
+/// The box-filtered image at 1/`factor` the resolution (each output pixel
+/// the mean of a factor x factor block). With box-filtered pixels this has
+/// exactly the expectation of a render at the lower resolution.
+pub fn downsample(film: &Film, factor: u32) -> Film {
+    let (w, h) = (film.width / factor, film.height / factor);
+    let mut out = Film::new(w, h);
+    let inv = 1.0 / (factor * factor) as f32;
+    for y in 0..h {
+        for x in 0..w {
+            let mut s = Vec3::ZERO;
+            for dy in 0..factor {
+                for dx in 0..factor {
+                    s += film.get(x * factor + dx, y * factor + dy);
+                }
+            }
+            *out.get_mut(x, y) = s * inv;
+        }
+    }
+    out
+}

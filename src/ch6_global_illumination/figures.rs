@@ -1,0 +1,114 @@
+//! What `ch6` writes besides the image: the bounce strip (the lecture's
+//! direct, 1, 2, 4, 8, 16 bounce sequence), every layer as EXR, the
+//! spp-doubling strip, and the strategy plot.
+
+use std::path::{Path, PathBuf};
+
+use glam::Vec3;
+
+use crate::core::error::Result;
+use crate::core::film::Film;
+use crate::core::plot::{log_log, LogLogStyle, Polyline};
+use crate::core::report::ErrorTime;
+
+use super::accumulate::Accumulator;
+use super::integrator::{LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
+
+/// The "up to k bounces" images of the lecture's sequence.
+pub const STRIP_BOUNCES: [u32; 6] = [0, 1, 2, 4, 8, 16];
+
+/// Films side by side with a 2-pixel black gap.
+pub fn side_by_side(films: &[Film]) -> Film {
+    let gap = 2;
+    let h = films.iter().map(|f| f.height).max().unwrap_or(1);
+    let w = films.iter().map(|f| f.width).sum::<u32>() + gap * films.len().saturating_sub(1) as u32;
+    let mut out = Film::new(w.max(1), h);
+    let mut x0 = 0;
+    for f in films {
+        for y in 0..f.height {
+            for x in 0..f.width {
+                *out.get_mut(x0 + x, y) = f.get(x, y);
+            }
+        }
+        x0 += f.width + gap;
+    }
+    out
+}
+
+/// Writes the bounce strip (PNG, "up to k" = layer E plus layers 0..=k)
+/// and every layer on its own as EXR. Nothing without layers.
+pub fn write_layers(acc: &Accumulator, out: &Path, stem: &str) -> Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    if acc.layers.is_none() {
+        return Ok(files);
+    }
+    let strip: Vec<Film> = STRIP_BOUNCES
+        .iter()
+        .filter_map(|k| acc.prefix(*k as usize + 1))
+        .collect();
+    let path = out.join(format!("{stem}-bounces.png"));
+    side_by_side(&strip).write_png(&path)?;
+    files.push(path);
+    for slot in 0..LAYER_SLOTS {
+        let name = match slot {
+            0 => "E".to_string(),
+            SLOT_BEYOND => "beyond".to_string(),
+            s => format!("{:02}", s - 1),
+        };
+        let mut f = acc.layer(slot).expect("layers kept");
+        f.scrub_nonfinite();
+        let path = out.join(format!("{stem}-layer-{name}.exr"));
+        f.write_exr(&path)?;
+        files.push(path);
+    }
+    debug_assert_eq!(SLOT_BEYOND, LAYERS_SHOWN as usize + 2);
+    Ok(files)
+}
+
+/// One colour per series of the strategy plot, by estimator (the sampler
+/// changes the brightness: independent bright, Sobol dark).
+pub fn series_color(series: &str) -> Vec3 {
+    let base = if series.contains("uniform") {
+        Vec3::new(0.9, 0.2, 0.2)
+    } else if series.contains("bsdf") {
+        Vec3::new(0.95, 0.75, 0.1)
+    } else if series.contains("light") {
+        Vec3::new(0.2, 0.5, 1.0)
+    } else {
+        Vec3::new(0.2, 0.85, 0.3)
+    };
+    if series.contains("sobol") {
+        base * 0.5
+    } else {
+        base
+    }
+}
+
+/// The strategy plot: log RMSE against log time, one polyline per series
+/// whose name starts with `prefix`, on a white background with grey
+/// decade lines; colours from [`series_color`].
+pub fn plot_error_time(et: &ErrorTime, prefix: &str, width: u32, height: u32) -> Film {
+    let series: Vec<Polyline> = et
+        .series()
+        .iter()
+        .filter(|s| s.starts_with(prefix))
+        .map(|s| Polyline {
+            // Drawn light-on-dark and inverted: the complement shows.
+            colour: Vec3::ONE - series_color(s),
+            points: et
+                .rows
+                .iter()
+                .filter(|r| &r.series == s && r.error > 0.0 && r.seconds > 0.0)
+                .map(|r| (r.seconds, r.error))
+                .collect(),
+        })
+        .collect();
+    let style = LogLogStyle {
+        background: Vec3::ZERO,
+        margin: 12.0,
+        grid: Vec3::splat(0.2),
+        guide: None,
+        invert: true,
+    };
+    log_log(&series, &style, width, height)
+}

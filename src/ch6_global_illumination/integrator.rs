@@ -1,0 +1,332 @@
+//! The path tracer: one light path per camera sample, built vertex by
+//! vertex in a loop (no recursion, so no stack limit however long a path
+//! gets). At each surface the path
+//!
+//! 1. adds what it sees emitted (weighted so no light is counted twice),
+//! 2. samples a light (next-event estimation, the "direct" partition of the
+//!    lecture's path-tracing slide),
+//! 3. samples the BSDF for the next direction (the "indirect" partition),
+//! 4. and plays Russian roulette on its throughput.
+//!
+//! Four estimators, the lecture's ladder, share this one loop
+//! ([`Estimator`]); only which directions are drawn and how emission found
+//! by each strategy is weighted differ.
+//!
+//! Every contribution is added to the *layer* of its bounce count: the
+//! slot [`SLOT_EMITTED`] holds emitters seen directly (layer E), slot
+//! `1 + k` light that scattered k + 1 times between emitter and camera
+//! (k = 0 is direct illumination), and [`SLOT_BEYOND`] everything with
+//! k > [`LAYERS_SHOWN`].
+
+use glam::Vec3;
+
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch5_reflection::material::{Bsdf, Frame};
+use crate::ch5_reflection::mis::power_heuristic;
+use crate::ch5_reflection::warp::{uniform_hemisphere, UNIFORM_HEMISPHERE_PDF};
+use crate::ch5_reflection::world::World;
+
+use super::sampler::PathSampler;
+
+/// The highest bounce count k with a layer of its own.
+pub const LAYERS_SHOWN: u32 = 16;
+/// The layer slot of emitters seen directly (layer E).
+pub const SLOT_EMITTED: usize = 0;
+/// The slot of light with more than [`LAYERS_SHOWN`] bounces.
+pub const SLOT_BEYOND: usize = LAYERS_SHOWN as usize + 2;
+/// Slots per pixel: E, k = 0 ..= LAYERS_SHOWN, beyond.
+pub const LAYER_SLOTS: usize = LAYERS_SHOWN as usize + 3;
+
+/// The slot of light that scattered `scatterings` ≥ 1 times (bounce count
+/// k = scatterings - 1).
+#[inline]
+pub fn slot_of(scatterings: u32) -> usize {
+    (scatterings as usize).min(SLOT_BEYOND)
+}
+
+/// With "unlimited" bounces only Russian roulette ends a path; this many
+/// scatterings end it anyway (counted in [`PathStats::cut`]), so a scene
+/// of perfect mirrors cannot hang a render. With ρ = 0.999 the chance of
+/// reaching it is about e^-65.
+pub const SAFETY_SCATTERINGS: u32 = 1 << 16;
+
+/// The lecture's ladder of estimators, from the plainest to the best.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Estimator {
+    /// Recursive Monte Carlo with uniform hemisphere directions: a random
+    /// walk that only finds light by hitting it.
+    UniformWalk,
+    /// Directions drawn from the BSDF (cosine-weighted for Lambert): still
+    /// finds light only by hitting it.
+    BsdfSampling,
+    /// Next-event estimation: every vertex samples a light; emitters hit by
+    /// the walk count only when light sampling could not have found them
+    /// (after a delta bounce, or an emitter no light sample reaches).
+    LightSampling,
+    /// Both strategies at every vertex, combined by the power heuristic.
+    Mis,
+}
+
+impl Estimator {
+    /// All four, in ladder order.
+    pub const ALL: [Estimator; 4] = [
+        Estimator::UniformWalk,
+        Estimator::BsdfSampling,
+        Estimator::LightSampling,
+        Estimator::Mis,
+    ];
+
+    /// A short name for tables and file names.
+    pub fn name(self) -> &'static str {
+        match self {
+            Estimator::UniformWalk => "uniform",
+            Estimator::BsdfSampling => "bsdf",
+            Estimator::LightSampling => "light",
+            Estimator::Mis => "mis",
+        }
+    }
+
+    fn samples_lights(self) -> bool {
+        matches!(self, Estimator::LightSampling | Estimator::Mis)
+    }
+}
+
+/// How paths are traced.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PathSettings {
+    /// Which estimator.
+    pub estimator: Estimator,
+    /// The largest bounce count k a path may contribute to (k + 1
+    /// scatterings); `None`: unlimited, Russian roulette alone ends paths.
+    pub max_bounces: Option<u32>,
+    /// Russian roulette starts after this many scatterings.
+    pub rr_min_scatterings: u32,
+}
+
+impl Default for PathSettings {
+    fn default() -> Self {
+        PathSettings {
+            estimator: Estimator::Mis,
+            max_bounces: Some(16),
+            rr_min_scatterings: 1,
+        }
+    }
+}
+
+/// Counts from tracing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct PathStats {
+    /// Paths traced.
+    pub paths: u64,
+    /// Rays cast: path segments and shadow rays.
+    pub rays: u64,
+    /// Contributions that were NaN or infinite, dropped and counted.
+    pub nonfinite: u64,
+    /// Paths ended by [`SAFETY_SCATTERINGS`] rather than by roulette.
+    pub cut: u64,
+}
+
+impl PathStats {
+    /// Adds another tally.
+    pub fn add(&mut self, o: &PathStats) {
+        self.paths += o.paths;
+        self.rays += o.rays;
+        self.nonfinite += o.nonfinite;
+        self.cut += o.cut;
+    }
+}
+
+/// Where a path's contributions go: into the layer of their bounce count
+/// (`[Vec3; LAYER_SLOTS]`), or, when only the final image is wanted,
+/// straight into one sum (`Vec3`, with nothing per layer to clear or add).
+pub trait Contributions {
+    /// Adds `c`, which belongs to layer slot `slot`.
+    fn add_to(&mut self, slot: usize, c: Vec3);
+}
+
+impl Contributions for [Vec3; LAYER_SLOTS] {
+    #[inline(always)]
+    fn add_to(&mut self, slot: usize, c: Vec3) {
+        self[slot] += c;
+    }
+}
+
+impl Contributions for Vec3 {
+    #[inline(always)]
+    fn add_to(&mut self, _slot: usize, c: Vec3) {
+        *self += c;
+    }
+}
+
+/// Adds `c` to slot `slot` unless it is NaN or infinite (then counts it).
+#[inline(always)]
+fn add(layers: &mut impl Contributions, slot: usize, c: Vec3, stats: &mut PathStats) {
+    if c.is_finite() {
+        layers.add_to(slot, c);
+    } else {
+        stats.nonfinite += 1;
+    }
+}
+
+/// Traces one path from the camera ray `ray`, adding its contributions to
+/// `layers` (by bounce count, or summed; the pixel value is their sum).
+// ANCHOR: trace_path
+pub fn trace_path(
+    world: &World,
+    mut ray: Ray,
+    sampler: &mut PathSampler,
+    settings: &PathSettings,
+    layers: &mut impl Contributions,
+    stats: &mut PathStats,
+) {
+    let estimator = settings.estimator;
+    let max_scatterings = settings
+        .max_bounces
+        .map_or(SAFETY_SCATTERINGS, |k| k.saturating_add(1))
+        .min(SAFETY_SCATTERINGS);
+    let sample_lights = estimator.samples_lights() && !world.lights.is_empty();
+    let mut beta = Vec3::ONE; // path throughput
+    let mut scatterings = 0u32; // surfaces the path has scattered at
+                                // About the previous vertex, for weighting emission the walk finds.
+    let mut prev_delta = true; // the camera counts as a delta "vertex"
+    let mut prev_pdf = 0.0f32;
+    let mut prev_p = ray.origin;
+    let mut prev_n = Vec3::Z;
+    stats.paths += 1;
+
+    loop {
+        stats.rays += 1;
+        let Some(it) = world.intersect(&ray) else {
+            // Escaped: add the environment, weighted like an emitter hit.
+            let le = world.lights.environment_radiance(ray.dir);
+            if le != Vec3::ZERO {
+                let w = match (world.lights.environment, sample_lights && !prev_delta) {
+                    (Some(i), true) => emission_weight(
+                        estimator,
+                        prev_pdf,
+                        world.lights.choose_pdf(i) * world.lights.environment_pdf(prev_n, ray.dir),
+                    ),
+                    _ => 1.0,
+                };
+                add(layers, slot_of(scatterings), beta * le * w, stats);
+            }
+            break;
+        };
+        let wo_world = -ray.dir;
+
+        // Add emitted light seen along the ray.
+        let le = world.emitted(&it, wo_world);
+        if le != Vec3::ZERO {
+            let w = match (world.area_light(&it), sample_lights && !prev_delta) {
+                (Some((i, light)), true) => emission_weight(
+                    estimator,
+                    prev_pdf,
+                    world.lights.choose_pdf(i) * light.pdf_li(prev_p, it.p, it.n),
+                ),
+                _ => 1.0,
+            };
+            add(layers, slot_of(scatterings), beta * le * w, stats);
+        }
+
+        // End the path at the bounce limit.
+        if scatterings >= max_scatterings {
+            if settings.max_bounces.is_none() {
+                stats.cut += 1;
+            }
+            break;
+        }
+        scatterings += 1;
+        sampler.align();
+
+        let bsdf: &Bsdf = &world.bsdfs[it.material];
+        let frame = Frame::from_normal(it.n);
+        let wo = frame.to_local(wo_world);
+        if wo.z == 0.0 {
+            break;
+        }
+        // The normal on the side the path arrived from.
+        let n_side = if wo.z > 0.0 { it.n } else { -it.n };
+        let delta = bsdf.is_delta();
+
+        // Sample a light (next-event estimation).
+        let u_choose = sampler.get1();
+        let u_light = sampler.get2();
+        if sample_lights && !delta {
+            if let Some((i, p_choose)) = world.lights.choose(u_choose) {
+                if let Some(ls) = world.lights.lights[i].sample_li(it.p, n_side, u_light) {
+                    let wi = frame.to_local(ls.wi);
+                    let f = bsdf.f(wo, wi);
+                    if f != Vec3::ZERO {
+                        stats.rays += 1;
+                        if world.unoccluded(it.p, it.n, ls.wi, ls.dist) {
+                            let pdf_light = ls.pdf * p_choose;
+                            let w = if ls.delta || estimator != Estimator::Mis {
+                                1.0
+                            } else {
+                                power_heuristic(pdf_light, bsdf.pdf(wo, wi))
+                            };
+                            let c = beta * f * ls.li * wi.z.abs() * (w / pdf_light);
+                            add(layers, slot_of(scatterings), c, stats);
+                        }
+                    }
+                }
+            }
+        }
+
+        // Sample the BSDF (or the uniform hemisphere) for the next direction.
+        let u_lobe = sampler.get1();
+        let u_dir = sampler.get2();
+        let (wi, weight, pdf) = if estimator == Estimator::UniformWalk && !delta {
+            let mut wi = uniform_hemisphere(u_dir);
+            wi.z = wi.z.copysign(wo.z);
+            let f = bsdf.f(wo, wi);
+            (
+                wi,
+                f * wi.z.abs() / UNIFORM_HEMISPHERE_PDF,
+                UNIFORM_HEMISPHERE_PDF,
+            )
+        } else {
+            match bsdf.sample(wo, u_dir, u_lobe) {
+                Some(s) => (s.wi, s.weight, s.pdf),
+                None => break,
+            }
+        };
+        if weight == Vec3::ZERO || !weight.is_finite() {
+            break;
+        }
+        beta *= weight;
+        prev_delta = delta;
+        prev_pdf = pdf;
+        prev_p = it.p;
+        prev_n = n_side;
+        let wi_world = frame.to_world(wi);
+
+        // Russian roulette: survive with probability q, then divide by q.
+        if scatterings >= settings.rr_min_scatterings {
+            let q = beta.max_element().min(1.0);
+            if sampler.get1() >= q {
+                break;
+            }
+            beta /= q;
+        }
+
+        match world.spawn(it.p, it.n, wi_world) {
+            Some(r) => ray = r,
+            None => break,
+        }
+    }
+}
+// ANCHOR_END: trace_path
+
+/// The weight of emission found by a BSDF-sampled direction of density
+/// `pdf_bsdf` that light sampling would have drawn with `pdf_light`.
+// ANCHOR: emission_weight
+fn emission_weight(estimator: Estimator, pdf_bsdf: f32, pdf_light: f32) -> f32 {
+    match estimator {
+        // Light sampling already counted it.
+        Estimator::LightSampling if pdf_light > 0.0 => 0.0,
+        Estimator::Mis => power_heuristic(pdf_bsdf, pdf_light),
+        _ => 1.0,
+    }
+}
+// ANCHOR_END: emission_weight

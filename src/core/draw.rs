@@ -1,0 +1,132 @@
+//! Drawing lines and dots on a film, for chapter 1's wireframes. This is
+//! plumbing, not the lesson: lines are sampled every quarter pixel and each
+//! sample lights the four nearest pixel centres with a tent weight, keeping
+//! the brighter value where lines cross. Deterministic and free of gaps.
+
+use glam::{DVec2, Vec2, Vec3};
+
+use crate::core::film::Film;
+
+/// Clips the segment a→b to the rectangle [lo, hi] (Liang–Barsky); returns
+/// the parameters (t0, t1) of the visible part, if any. In f64: an edge can
+/// reach a million pixels off screen, where f32 would misplace its visible
+/// part by many pixels.
+pub fn clip_segment_2d(a: DVec2, b: DVec2, lo: DVec2, hi: DVec2) -> Option<(f64, f64)> {
+    let d = b - a;
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-d.x, a.x - lo.x),
+        (d.x, hi.x - a.x),
+        (-d.y, a.y - lo.y),
+        (d.y, hi.y - a.y),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    (t0 <= t1).then_some((t0, t1))
+}
+
+/// Draws a line from `a` to `b` (raster coordinates), its colour blending
+/// linearly from `ca` to `cb`. Returns how many samples landed on the film.
+pub fn line(film: &mut Film, a: Vec2, b: Vec2, ca: Vec3, cb: Vec3) -> usize {
+    if !(a.is_finite() && b.is_finite()) {
+        return 0;
+    }
+    let (a, b) = (a.as_dvec2(), b.as_dvec2());
+    let margin = DVec2::splat(2.0);
+    let hi = DVec2::new(film.width as f64, film.height as f64) + margin;
+    let Some((t0, t1)) = clip_segment_2d(a, b, -margin, hi) else {
+        return 0;
+    };
+    let (p0, p1) = (a.lerp(b, t0).as_vec2(), a.lerp(b, t1).as_vec2());
+    let steps = ((p1 - p0).length() * 4.0).ceil().max(1.0) as usize;
+    let mut lit = 0;
+    for s in 0..=steps {
+        let f = s as f32 / steps as f32;
+        let t = (t0 + (t1 - t0) * f as f64) as f32;
+        lit += splat(film, p0.lerp(p1, f), ca.lerp(cb, t), 1.0);
+    }
+    lit
+}
+
+/// A filled dot of the given radius in pixels.
+pub fn dot(film: &mut Film, centre: Vec2, radius: f32, color: Vec3) -> usize {
+    if !centre.is_finite() {
+        return 0;
+    }
+    let r = radius.max(0.5);
+    let (x0, x1) = ((centre.x - r - 1.0).floor(), (centre.x + r + 1.0).ceil());
+    let (y0, y1) = ((centre.y - r - 1.0).floor(), (centre.y + r + 1.0).ceil());
+    let mut lit = 0;
+    for y in y0.max(0.0) as i64..y1.min(film.height as f32) as i64 {
+        for x in x0.max(0.0) as i64..x1.min(film.width as f32) as i64 {
+            let c = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
+            let cover = (r + 0.5 - c.distance(centre)).clamp(0.0, 1.0);
+            if cover > 0.0 {
+                let p = film.get_mut(x as u32, y as u32);
+                *p = p.max(color * cover);
+                lit += 1;
+            }
+        }
+    }
+    lit
+}
+
+/// Lights the four pixel centres around `p` with tent weights.
+fn splat(film: &mut Film, p: Vec2, color: Vec3, strength: f32) -> usize {
+    let q = p - Vec2::splat(0.5);
+    let (fx, fy) = (q.x.floor(), q.y.floor());
+    let mut lit = 0;
+    for (dx, dy) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)] {
+        let (x, y) = (fx + dx, fy + dy);
+        if x < 0.0 || y < 0.0 || x >= film.width as f32 || y >= film.height as f32 {
+            continue;
+        }
+        let w = (1.0 - (q.x - x).abs()) * (1.0 - (q.y - y).abs()) * strength;
+        let px = film.get_mut(x as u32, y as u32);
+        *px = px.max(color * w.min(1.0));
+        lit += 1;
+    }
+    lit
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_huge_line_is_clipped_not_walked() {
+        let mut f = Film::new(8, 8);
+        let lit = line(
+            &mut f,
+            Vec2::new(-1e9, 4.0),
+            Vec2::new(1e9, 4.0),
+            Vec3::ONE,
+            Vec3::ONE,
+        );
+        assert!(lit > 0 && lit < 200);
+        assert!(f.get(0, 3).x > 0.4 && f.get(7, 4).x > 0.4);
+    }
+
+    #[test]
+    fn liang_barsky_rejects_outside_segments() {
+        let (lo, hi) = (DVec2::ZERO, DVec2::splat(10.0));
+        assert_eq!(
+            clip_segment_2d(DVec2::new(-5.0, -1.0), DVec2::new(20.0, -1.0), lo, hi),
+            None
+        );
+        let (t0, t1) =
+            clip_segment_2d(DVec2::new(-10.0, 5.0), DVec2::new(20.0, 5.0), lo, hi).unwrap();
+        assert!((t0 - 1.0 / 3.0).abs() < 1e-12 && (t1 - 2.0 / 3.0).abs() < 1e-12);
+    }
+}

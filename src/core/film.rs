@@ -1,0 +1,233 @@
+//! The film: linear HDR RGB pixels, and how they leave the renderer.
+//!
+//! Colour stays linear inside raystep. Only when writing an 8-bit PNG do we
+//! apply the sRGB transfer curve; EXR files keep the linear f32 values.
+//! Every write goes to a temporary file beside the target and is renamed
+//! into place, so a failed or interrupted run never leaves half an image.
+
+use std::path::Path;
+
+use glam::Vec3;
+
+use crate::core::error::{Error, Result};
+
+/// A width x height grid of linear RGB values, row by row from the top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Film {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// `width * height` pixels, row-major, top row first.
+    pub pixels: Vec<Vec3>,
+}
+
+impl Film {
+    /// A black film. Sizes are checked by the camera before we get here.
+    pub fn new(width: u32, height: u32) -> Film {
+        Film {
+            width,
+            height,
+            pixels: vec![Vec3::ZERO; width as usize * height as usize],
+        }
+    }
+
+    /// The pixel at column `x`, row `y`.
+    pub fn get(&self, x: u32, y: u32) -> Vec3 {
+        self.pixels[(y * self.width + x) as usize]
+    }
+
+    /// A mutable reference to the pixel at column `x`, row `y`.
+    pub fn get_mut(&mut self, x: u32, y: u32) -> &mut Vec3 {
+        &mut self.pixels[(y * self.width + x) as usize]
+    }
+
+    /// Replaces every NaN or infinite channel by 0 and returns how many
+    /// pixels had one. Called before any image leaves the renderer.
+    pub fn scrub_nonfinite(&mut self) -> u64 {
+        let mut caught = 0;
+        for p in &mut self.pixels {
+            if !p.is_finite() {
+                caught += 1;
+                *p = Vec3::select(p.is_finite_mask(), *p, Vec3::ZERO);
+            }
+        }
+        caught
+    }
+
+    /// Root-mean-square difference to another film of the same size, over
+    /// all channels.
+    pub fn rmse(&self, other: &Film) -> f64 {
+        assert_eq!((self.width, self.height), (other.width, other.height));
+        let sum: f64 = self
+            .pixels
+            .iter()
+            .zip(&other.pixels)
+            .map(|(a, b)| (*a - *b).as_dvec3().length_squared())
+            .sum();
+        (sum / (3.0 * self.pixels.len().max(1) as f64)).sqrt()
+    }
+
+    /// |a - b| per pixel, scaled so the largest difference is white.
+    pub fn difference(&self, other: &Film) -> Film {
+        let mut d = self.clone();
+        for (p, q) in d.pixels.iter_mut().zip(&other.pixels) {
+            *p = (*p - *q).abs();
+        }
+        let max = d.pixels.iter().map(|p| p.max_element()).fold(0.0, f32::max);
+        if max > 0.0 {
+            d.pixels.iter_mut().for_each(|p| *p /= max);
+        }
+        d
+    }
+
+    /// 8-bit sRGB bytes (RGB, row-major), values clamped to [0, 1].
+    pub fn to_srgb8(&self) -> Vec<u8> {
+        self.pixels
+            .iter()
+            .flat_map(|p| p.to_array().map(encode_srgb))
+            .collect()
+    }
+
+    /// Writes an 8-bit sRGB PNG, atomically.
+    pub fn write_png(&self, path: &Path) -> Result<()> {
+        let bytes = self.to_srgb8();
+        write_atomically(path, |tmp| {
+            image::save_buffer_with_format(
+                tmp,
+                &bytes,
+                self.width,
+                self.height,
+                image::ColorType::Rgb8,
+                image::ImageFormat::Png,
+            )
+            .map_err(|e| e.to_string())
+        })
+    }
+
+    /// Writes a linear f32 OpenEXR file, atomically.
+    pub fn write_exr(&self, path: &Path) -> Result<()> {
+        write_atomically(path, |tmp| {
+            use exr::prelude::*;
+            let channels = SpecificChannels::rgb(|Vec2(x, y): Vec2<usize>| {
+                let p = self.pixels[y * self.width as usize + x];
+                (p.x, p.y, p.z)
+            });
+            // Compressed one block after another: the parallel writer stores
+            // blocks in the order they finish, so the same image would not
+            // always give the same bytes.
+            Image::from_channels((self.width as usize, self.height as usize), channels)
+                .write()
+                .non_parallel()
+                .to_file(tmp)
+                .map_err(|e| e.to_string())
+        })
+    }
+
+    /// Reads an 8-bit PNG back as linear values (for graders and tests).
+    pub fn read_png(path: &Path) -> Result<Film> {
+        let img = image::open(path)
+            .map_err(|e| Error::Image {
+                path: path.to_path_buf(),
+                message: e.to_string(),
+            })?
+            .to_rgb8();
+        Ok(Film {
+            width: img.width(),
+            height: img.height(),
+            pixels: img
+                .pixels()
+                .map(|p| Vec3::from(p.0.map(decode_srgb)))
+                .collect(),
+        })
+    }
+
+    /// Reads a linear RGB EXR file (for references and tests).
+    pub fn read_exr(path: &Path) -> Result<Film> {
+        use exr::prelude::*;
+        let image = read_first_rgba_layer_from_file(
+            path,
+            |res, _| Film::new(res.width() as u32, res.height() as u32),
+            |film: &mut Film, pos, (r, g, b, _a): (f32, f32, f32, f32)| {
+                *film.get_mut(pos.x() as u32, pos.y() as u32) = Vec3::new(r, g, b);
+            },
+        )
+        .map_err(|e| crate::core::error::Error::Image {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        })?;
+        Ok(image.layer_data.channel_data.pixels)
+    }
+}
+
+/// Linear [0, 1] → sRGB-encoded 8-bit value.
+pub fn encode_srgb(linear: f32) -> u8 {
+    let c = if linear.is_nan() {
+        0.0
+    } else {
+        linear.clamp(0.0, 1.0)
+    };
+    let s = if c <= 0.003_130_8 {
+        12.92 * c
+    } else {
+        1.055 * c.powf(1.0 / 2.4) - 0.055
+    };
+    (s * 255.0 + 0.5) as u8
+}
+
+/// 8-bit sRGB value → linear [0, 1].
+pub fn decode_srgb(v: u8) -> f32 {
+    let s = v as f32 / 255.0;
+    if s <= 0.04045 {
+        s / 12.92
+    } else {
+        ((s + 0.055) / 1.055).powf(2.4)
+    }
+}
+
+/// Creates the directory of `path`, lets `write` fill a temporary file next
+/// to it, and renames that into place. On failure the temporary is removed
+/// and `path` is untouched.
+pub fn write_atomically(
+    path: &Path,
+    write: impl FnOnce(&Path) -> std::result::Result<(), String>,
+) -> Result<()> {
+    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+    }
+    let file_name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    // Keep the extension last so encoders that look at it still work.
+    let tmp = path.with_file_name(format!(".{}.tmp-{file_name}", std::process::id()));
+    let result = write(&tmp).map_err(|message| Error::Image {
+        path: path.to_path_buf(),
+        message,
+    });
+    let result = result.and_then(|_| std::fs::rename(&tmp, path).map_err(|e| Error::io(path, e)));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn srgb_round_trips_every_byte() {
+        for v in 0..=255u8 {
+            assert_eq!(encode_srgb(decode_srgb(v)), v);
+        }
+    }
+
+    #[test]
+    fn scrub_counts_and_zeroes_nonfinite() {
+        let mut f = Film::new(2, 1);
+        f.pixels[0] = Vec3::new(f32::NAN, 1.0, f32::INFINITY);
+        assert_eq!(f.scrub_nonfinite(), 1);
+        assert_eq!(f.pixels[0], Vec3::new(0.0, 1.0, 0.0));
+    }
+}

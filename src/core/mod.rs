@@ -1,0 +1,14 @@
+//! The foundation every chapter stands on, with no lecture content of its
+//! own: errors, the film (an HDR image), drawing lines, terminal previews,
+//! plots, reports, random numbers, the stage boundary between a chapter and
+//! its front ends, and the headless runner.
+
+pub mod draw;
+pub mod error;
+pub mod film;
+pub mod plot;
+pub mod preview;
+pub mod report;
+pub mod run;
+pub mod sampling;
+pub mod stage;

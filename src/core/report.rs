@@ -1,0 +1,424 @@
+//! The report every chapter prints: the three standing requirements in one
+//! place.
+//!
+//! 1. *Error against run time*: a table of (variant, time, samples, error
+//!    against a reference, efficiency, notes) with a log-log slope per series,
+//!    also written as CSV next to the image.
+//! 2. *Numerical stability*: each stiff or extreme case with its expected
+//!    and measured outcome.
+//! 3. *What the scene led the stage to build, and what it left out.*
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use crate::core::error::Result;
+use crate::core::film::write_atomically;
+
+/// One measured run of one variant.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Measurement {
+    /// Rows of the same series share a log-log slope (e.g. one estimator).
+    pub series: String,
+    /// What was run (e.g. "f32, depth 1e3" or "16 spp").
+    pub variant: String,
+    /// Wall-clock seconds.
+    pub seconds: f64,
+    /// Samples (points, rays, paths) the run took.
+    pub samples: u64,
+    /// Error against the reference (RMSE unless the header says otherwise).
+    pub error: f64,
+    /// Anything worth saying about the row.
+    pub notes: String,
+}
+
+impl Measurement {
+    /// Efficiency 1 / (MSE · time): higher is better; infinite when exact.
+    pub fn efficiency(&self) -> f64 {
+        1.0 / (self.error * self.error * self.seconds)
+    }
+}
+
+/// The error-against-time study of a stage.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ErrorTime {
+    /// What the error is measured against.
+    pub reference: String,
+    /// What the error column means (e.g. "max error (px)", "RMSE").
+    pub error_name: String,
+    /// The runs.
+    pub rows: Vec<Measurement>,
+    /// Whether a log-log slope per series means something (it does for
+    /// Monte Carlo and supersampling; not for a precision sweep).
+    pub show_slopes: bool,
+}
+
+impl ErrorTime {
+    /// Least-squares slope of log(error) against log(time) for one series,
+    /// over rows with non-zero error; `None` with fewer than two such rows.
+    pub fn slope(&self, series: &str) -> Option<f64> {
+        let pts: Vec<(f64, f64)> = self
+            .rows
+            .iter()
+            .filter(|r| r.series == series && r.error > 0.0 && r.seconds > 0.0)
+            .map(|r| (r.seconds.ln(), r.error.ln()))
+            .collect();
+        log_log_slope(&pts)
+    }
+
+    /// The series names, in order of first appearance.
+    pub fn series(&self) -> Vec<String> {
+        let mut names: Vec<String> = Vec::new();
+        for r in &self.rows {
+            if !names.contains(&r.series) {
+                names.push(r.series.clone());
+            }
+        }
+        names
+    }
+
+    /// The table as CSV (times in seconds).
+    pub fn to_csv(&self) -> String {
+        let mut s = String::from("series,variant,seconds,samples,error,efficiency,notes\n");
+        for r in &self.rows {
+            let _ = writeln!(
+                s,
+                "{},{},{:e},{},{:e},{:e},{}",
+                csv(&r.series),
+                csv(&r.variant),
+                r.seconds,
+                r.samples,
+                r.error,
+                r.efficiency(),
+                csv(&r.notes)
+            );
+        }
+        s
+    }
+}
+
+/// Slope of the least-squares line through (x, y) points.
+pub fn log_log_slope(pts: &[(f64, f64)]) -> Option<f64> {
+    if pts.len() < 2 {
+        return None;
+    }
+    let n = pts.len() as f64;
+    let (mx, my) = (
+        pts.iter().map(|p| p.0).sum::<f64>() / n,
+        pts.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    (sxx > 0.0).then(|| sxy / sxx)
+}
+
+fn csv(s: &str) -> String {
+    if s.contains([',', '"', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+/// One stiff or extreme case and how the stage coped.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StabilityCase {
+    /// The case.
+    pub name: String,
+    /// What should happen.
+    pub expected: String,
+    /// What did happen.
+    pub measured: String,
+    /// Whether that is what should happen.
+    pub ok: bool,
+}
+
+impl StabilityCase {
+    /// A case with what should happen, what did, and whether they match.
+    pub fn new(name: &str, expected: &str, measured: String, ok: bool) -> StabilityCase {
+        StabilityCase {
+            name: name.into(),
+            expected: expected.into(),
+            measured,
+            ok,
+        }
+    }
+}
+
+/// A titled table of text cells.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Table {
+    /// Printed above the table.
+    pub title: String,
+    /// Column headers.
+    pub columns: Vec<String>,
+    /// Rows of cells.
+    pub rows: Vec<Vec<String>>,
+}
+
+impl Table {
+    /// An empty table with headers.
+    pub fn new(title: &str, columns: &[&str]) -> Table {
+        Table {
+            title: title.into(),
+            columns: columns.iter().map(|c| c.to_string()).collect(),
+            rows: Vec::new(),
+        }
+    }
+
+    /// Appends a row.
+    pub fn row(&mut self, cells: Vec<String>) {
+        self.rows.push(cells);
+    }
+
+    /// Aligned plain text.
+    pub fn to_text(&self) -> String {
+        let n = self.columns.len();
+        let mut widths: Vec<usize> = self.columns.iter().map(|c| c.chars().count()).collect();
+        for r in &self.rows {
+            for (i, c) in r.iter().enumerate().take(n) {
+                widths[i] = widths[i].max(c.chars().count());
+            }
+        }
+        let line = |cells: &[String]| {
+            let mut s = String::from(" ");
+            for (i, c) in cells.iter().enumerate().take(n) {
+                let pad = widths[i] - c.chars().count();
+                s += &format!(" {c}{} ", " ".repeat(pad));
+            }
+            s.trim_end().to_string() + "\n"
+        };
+        let mut s = format!("{}\n", self.title);
+        s += &line(&self.columns);
+        s += &format!(
+            "  {}\n",
+            widths
+                .iter()
+                .map(|w| "-".repeat(*w))
+                .collect::<Vec<_>>()
+                .join("  ")
+        );
+        for r in &self.rows {
+            s += &line(r);
+        }
+        s
+    }
+}
+
+/// A chapter's report.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Report {
+    /// e.g. "ch1 projection: tetrahedron".
+    pub title: String,
+    /// Key facts: resolution, render time, counts.
+    pub facts: Vec<(String, String)>,
+    /// Stage-specific tables (projected coordinates, mesh checks, ...).
+    pub tables: Vec<Table>,
+    /// Requirement 1.
+    pub error_vs_time: Option<ErrorTime>,
+    /// Requirement 2.
+    pub stability: Vec<StabilityCase>,
+    /// Requirement 3: what the scene led the stage to build...
+    pub built: Vec<String>,
+    /// ... and what it left out.
+    pub left_out: Vec<String>,
+    /// NaN or Inf values caught before they reached an image.
+    pub nonfinite_caught: u64,
+}
+
+/// Whether printed reports show wall-clock times (snapshots hide them).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Times {
+    /// Print measured times.
+    Show,
+    /// Print `-` instead, so the text is the same on every run.
+    Hide,
+}
+
+impl Report {
+    /// The report as text.
+    pub fn to_text(&self, times: Times) -> String {
+        let mut s = format!("== {} ==\n", self.title);
+        for (k, v) in &self.facts {
+            let _ = writeln!(s, "  {k}: {v}");
+        }
+        let _ = writeln!(s, "  built: {}", list_or_none(&self.built));
+        let _ = writeln!(s, "  left out: {}", list_or_none(&self.left_out));
+        let _ = writeln!(
+            s,
+            "  NaN/Inf caught before the image: {}",
+            self.nonfinite_caught
+        );
+        for t in &self.tables {
+            s += "\n";
+            s += &t.to_text();
+        }
+        if let Some(et) = &self.error_vs_time {
+            s += "\n";
+            s += &self.error_table(et, times).to_text();
+            for series in et.series().iter().filter(|_| et.show_slopes) {
+                match (et.slope(series), times) {
+                    (Some(k), Times::Show) => {
+                        let _ =
+                            writeln!(s, "  log-log slope of error against time, {series}: {k:.2}");
+                    }
+                    (Some(_), Times::Hide) => {
+                        let _ = writeln!(s, "  log-log slope of error against time, {series}: -");
+                    }
+                    (None, _) => {}
+                }
+            }
+        }
+        if !self.stability.is_empty() {
+            let mut t = Table::new(
+                "Stiff and extreme cases",
+                &["case", "expected", "measured", "ok"],
+            );
+            for c in &self.stability {
+                t.row(vec![
+                    c.name.clone(),
+                    c.expected.clone(),
+                    c.measured.clone(),
+                    if c.ok { "yes" } else { "NO" }.into(),
+                ]);
+            }
+            s += "\n";
+            s += &t.to_text();
+        }
+        s
+    }
+
+    fn error_table(&self, et: &ErrorTime, times: Times) -> Table {
+        let title = format!("Error against run time (reference: {})", et.reference);
+        let mut t = Table::new(
+            &title,
+            &[
+                "series",
+                "variant",
+                "time",
+                "samples",
+                &et.error_name,
+                "1/(MSE·time)",
+                "notes",
+            ],
+        );
+        for r in &et.rows {
+            let (time, eff) = match times {
+                Times::Show => (format_seconds(r.seconds), format_number(r.efficiency())),
+                Times::Hide => ("-".into(), "-".into()),
+            };
+            t.row(vec![
+                r.series.clone(),
+                r.variant.clone(),
+                time,
+                r.samples.to_string(),
+                format_number(r.error),
+                eff,
+                r.notes.clone(),
+            ]);
+        }
+        t
+    }
+
+    /// Whether every stiff case came out as expected.
+    pub fn all_stable(&self) -> bool {
+        self.stability.iter().all(|c| c.ok)
+    }
+
+    /// Writes the error-against-time table (`stem.csv`) and the stability
+    /// table (`stem-stability.csv`) into `dir`.
+    pub fn write_csv(&self, dir: &Path, stem: &str) -> Result<()> {
+        let write_text = |name: String, text: String| {
+            write_atomically(&dir.join(name), |tmp| {
+                std::fs::write(tmp, text).map_err(|e| e.to_string())
+            })
+        };
+        if let Some(et) = &self.error_vs_time {
+            write_text(format!("{stem}.csv"), et.to_csv())?;
+        }
+        if !self.stability.is_empty() {
+            let mut s = String::from("case,expected,measured,ok\n");
+            for c in &self.stability {
+                let _ = writeln!(
+                    s,
+                    "{},{},{},{}",
+                    csv(&c.name),
+                    csv(&c.expected),
+                    csv(&c.measured),
+                    c.ok
+                );
+            }
+            write_text(format!("{stem}-stability.csv"), s)?;
+        }
+        Ok(())
+    }
+}
+
+fn list_or_none(items: &[String]) -> String {
+    if items.is_empty() {
+        "nothing".into()
+    } else {
+        items.join("; ")
+    }
+}
+
+/// A number in a short, readable form: 4 significant digits, scientific
+/// notation when very small or large.
+pub fn format_number(x: f64) -> String {
+    if x.is_nan() {
+        "NaN".into()
+    } else if x.is_infinite() {
+        if x > 0.0 { "inf" } else { "-inf" }.into()
+    } else if x == 0.0 {
+        "0".into()
+    } else if (1e-3..1e5).contains(&x.abs()) {
+        let digits = (3 - x.abs().log10().floor() as i32).max(0) as usize;
+        format!("{x:.digits$}")
+    } else {
+        format!("{x:.3e}")
+    }
+}
+
+/// Seconds in a readable unit.
+pub fn format_seconds(s: f64) -> String {
+    if s < 1e-6 {
+        format!("{:.1} ns", s * 1e9)
+    } else if s < 1e-3 {
+        format!("{:.1} µs", s * 1e6)
+    } else if s < 1.0 {
+        format!("{:.1} ms", s * 1e3)
+    } else {
+        format!("{s:.2} s")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slope_of_inverse_square_root_is_minus_half() {
+        let mut et = ErrorTime::default();
+        for k in 0..6 {
+            let t = 2f64.powi(k);
+            et.rows.push(Measurement {
+                series: "mc".into(),
+                variant: format!("{t}"),
+                seconds: t,
+                samples: 1,
+                error: 0.3 / t.sqrt(),
+                notes: String::new(),
+            });
+        }
+        assert!((et.slope("mc").unwrap() + 0.5).abs() < 1e-12);
+        assert_eq!(et.slope("other"), None);
+    }
+
+    #[test]
+    fn numbers_read_well() {
+        assert_eq!(format_number(0.0), "0");
+        assert_eq!(format_number(1234.5678), "1235");
+        assert_eq!(format_number(0.012346), "0.01235");
+        assert_eq!(format_number(1.5e-7), "1.500e-7");
+        assert_eq!(format_number(f64::INFINITY), "inf");
+    }
+}

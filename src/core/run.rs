@@ -1,0 +1,230 @@
+//! Running a chapter without a terminal UI: parse the common flags, load the
+//! scene, render every pass, write the images and the report's CSV, print a
+//! preview and the report. Every chapter binary's `main` is one call to
+//! [`chapter_main`].
+
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::Arc;
+use std::time::Instant;
+
+use clap::Parser;
+
+use crate::core::error::{Error, Result};
+use crate::core::preview::{preview, PreviewStyle};
+use crate::core::report::Times;
+use crate::core::stage::{Chapter, Settings};
+use crate::scene::Scene;
+
+/// Flags every chapter binary takes.
+#[derive(Clone, Debug, clap::Args)]
+pub struct CommonArgs {
+    /// Scene file (TOML); the built-in Cornell box when omitted.
+    #[arg(long, value_name = "FILE")]
+    pub scene: Option<PathBuf>,
+    /// Image width in pixels (overrides the scene).
+    #[arg(long)]
+    pub width: Option<u32>,
+    /// Image height in pixels (overrides the scene).
+    #[arg(long)]
+    pub height: Option<u32>,
+    /// Samples per pixel, for chapters that sample (at least 1).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    pub spp: u32,
+    /// Seed for every random number.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Output folder for images and CSV files.
+    #[arg(long, value_name = "DIR", default_value = "out")]
+    pub out: PathBuf,
+    /// Also run the error-against-time and stability studies.
+    #[arg(long)]
+    pub report: bool,
+    /// Worker threads (default: all cores). Output does not depend on it.
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// Width of the printed preview in characters (at least 1).
+    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..))]
+    pub preview_width: u32,
+}
+
+#[derive(Parser)]
+struct ChapterCli {
+    #[command(flatten)]
+    common: CommonArgs,
+}
+
+impl CommonArgs {
+    /// The stage settings these flags ask for.
+    pub fn settings(&self) -> Settings {
+        Settings {
+            width: self.width,
+            height: self.height,
+            spp: self.spp,
+            seed: self.seed,
+            studies: self.report,
+        }
+    }
+
+    /// The scene the flags name, or the built-in one.
+    pub fn load_scene(&self) -> Result<Scene> {
+        match &self.scene {
+            Some(path) => Scene::load(path),
+            None => Ok(Scene::builtin()),
+        }
+    }
+}
+
+/// Sets the size of rayon's global pool (once per process).
+pub fn init_threads(threads: Option<usize>) -> Result<()> {
+    if let Some(n) = threads {
+        if n == 0 {
+            return Err(Error::Usage("`--threads` must be at least 1".into()));
+        }
+        // A second call in the same process keeps the first pool; fine.
+        let _ = rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build_global();
+    }
+    Ok(())
+}
+
+/// What one headless run produced.
+#[derive(Clone, Debug)]
+pub struct RunSummary {
+    /// Images and CSV files written.
+    pub files: Vec<PathBuf>,
+    /// Wall-clock seconds of the render (not the studies).
+    pub seconds: f64,
+    /// Whether every stiff case came out as expected.
+    pub stable: bool,
+}
+
+/// Renders `scene` with `chapter` to completion, writes its outputs into
+/// `out`, and prints preview and report to `w`.
+pub fn run_headless(
+    chapter: &dyn Chapter,
+    scene: Scene,
+    settings: &Settings,
+    out: &Path,
+    preview_width: u32,
+    w: &mut dyn Write,
+) -> Result<RunSummary> {
+    if let Some(why) = chapter.unsupported(&scene) {
+        return Err(Error::Usage(format!(
+            "ch{} cannot render scene `{}`: {why}",
+            chapter.number(),
+            scene.source
+        )));
+    }
+    let scene = match (settings.width, settings.height) {
+        (None, None) => scene,
+        (w_, h_) => {
+            let (w0, h0) = (scene.camera.width, scene.camera.height);
+            scene.with_resolution(w_.unwrap_or(w0), h_.unwrap_or(h0))?
+        }
+    };
+    let stem = format!("ch{}-{}", chapter.number(), scene.name);
+    let start = Instant::now();
+    let mut render = chapter.start(Arc::new(scene), settings)?;
+    let show_progress = std::io::stderr().is_terminal();
+    loop {
+        let done = render.pass();
+        if show_progress {
+            let (d, t) = render.progress();
+            eprint!("\r{stem}: pass {d}/{t}  ");
+        }
+        if done {
+            break;
+        }
+    }
+    if show_progress {
+        eprintln!();
+    }
+    let seconds = start.elapsed().as_secs_f64();
+
+    let mut files = Vec::new();
+    for (i, view) in chapter.views().iter().enumerate() {
+        let film = render.view(i);
+        let name = if i == 0 {
+            stem.clone()
+        } else {
+            format!("{stem}-{}", view.name)
+        };
+        let png = out.join(format!("{name}.png"));
+        film.write_png(&png)?;
+        files.push(png);
+        if i == 0 && chapter.is_radiance() {
+            let exr = out.join(format!("{name}.exr"));
+            film.write_exr(&exr)?;
+            files.push(exr);
+        }
+    }
+    let report = render.report();
+    report.write_csv(out, &stem)?;
+    if report.error_vs_time.is_some() {
+        files.push(out.join(format!("{stem}.csv")));
+    }
+    if !report.stability.is_empty() {
+        files.push(out.join(format!("{stem}-stability.csv")));
+    }
+
+    let io = |e: std::io::Error| Error::io(Path::new("<stdout>"), e);
+    write!(
+        w,
+        "{}",
+        preview(&render.view(0), preview_width, PreviewStyle::for_stdout())
+    )
+    .map_err(io)?;
+    write!(w, "{}", report.to_text(Times::Show)).map_err(io)?;
+    writeln!(
+        w,
+        "  wrote: {}\n",
+        files
+            .iter()
+            .map(|f| f.display().to_string())
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+    .map_err(io)?;
+    Ok(RunSummary {
+        files,
+        seconds,
+        stable: report.all_stable(),
+    })
+}
+
+/// The whole `main` of a chapter binary.
+pub fn chapter_main(chapter: &dyn Chapter) -> ExitCode {
+    let cli = ChapterCli::parse();
+    exit_code(run_with(chapter, &cli.common))
+}
+
+/// Sets the threads, loads the scene the flags name and runs `chapter` on
+/// it headless, printing to stdout. The common part of every chapter's
+/// `main`, including those with flags of their own.
+pub fn run_with(chapter: &dyn Chapter, common: &CommonArgs) -> Result<RunSummary> {
+    init_threads(common.threads)?;
+    let scene = common.load_scene()?;
+    let mut stdout = std::io::stdout().lock();
+    run_headless(
+        chapter,
+        scene,
+        &common.settings(),
+        &common.out,
+        common.preview_width,
+        &mut stdout,
+    )
+}
+
+/// Success, or the error on stderr and exit status 2.
+pub fn exit_code<T>(result: Result<T>) -> ExitCode {
+    match result {
+        Ok(_) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
