@@ -7,7 +7,7 @@ use crate::core::stage::Chapter;
 pub fn all() -> Vec<&'static dyn Chapter> {
     vec![
         &crate::ch1_projection::stage::Projection,
-        &crate::ch2_rasterization::RASTERIZATION,
+        &crate::ch2_rasterization::stage::RASTERIZATION,
         &crate::ch3_ray_triangle::stage::RayTriangle,
         &crate::ch4_implicit_surfaces::stage::DEFAULT,
         &crate::ch5_reflection::stage::DEFAULT,

@@ -7,7 +7,11 @@ use std::sync::Arc;
 
 use glam::{DVec2, Vec3};
 use raystep::ch1_projection::camera::project_pinhole;
-use raystep::ch1_projection::stage::{draw_scene, stability_cases, vanishing_points, Projection};
+use raystep::ch1_projection::camera::Camera;
+use raystep::ch1_projection::perspective::vanishing_points;
+use raystep::ch1_projection::stability::stability_cases;
+use raystep::ch1_projection::stage::Projection;
+use raystep::ch1_projection::wireframe::draw_scene;
 use raystep::core::preview::{preview, PreviewStyle};
 use raystep::core::report::{Report, Times};
 use raystep::core::stage::{Chapter, Settings};
@@ -53,14 +57,14 @@ fn tetrahedron_pixels_match_hand_computed_values() {
         );
         let (u, v) = (x / (5.0 - z), y / (5.0 - z));
         let want = DVec2::new((u / (aspect * t) + 1.0) / 2.0 * w, (1.0 - v / t) / 2.0 * h);
-        let got = s.camera.project(*p).unwrap().as_dvec2();
+        let got = Camera::of(&s).project(*p).unwrap().as_dvec2();
         assert!(
             (got - want).length() < 1e-4,
             "vertex {p}: got {got}, want {want}"
         );
     }
     // Vertex 0 by hand, to the last digit printed in the report.
-    let got = s.camera.project(Vec3::new(-1.0, -1.0, -1.0)).unwrap();
+    let got = Camera::of(&s).project(Vec3::new(-1.0, -1.0, -1.0)).unwrap();
     assert!((got.x - 111.7157).abs() < 1e-3 && (got.y - 168.2843).abs() < 1e-3);
     assert_eq!(
         s.meshes[0].triangles,
@@ -83,7 +87,7 @@ fn the_pinhole_is_similar_triangles() {
 #[test]
 fn every_stiff_case_comes_out_as_expected() {
     for name in ["tetrahedron", "cornell-box"] {
-        let cases = stability_cases(&scene(name).camera);
+        let cases = stability_cases(&Camera::of(&scene(name)));
         assert!(cases.len() >= 10);
         for c in &cases {
             assert!(
@@ -106,7 +110,7 @@ fn a_camera_inside_the_mesh_clips_edges_instead_of_smearing_them() {
         &|_| unreachable!(),
     )
     .unwrap();
-    let (films, stats) = draw_scene(&s.camera, &s.meshes, &s.materials);
+    let (films, stats) = draw_scene(&Camera::of(&s), &s.meshes, &s.materials);
     assert!(stats.edges_clipped > 0, "{stats:?}");
     assert_eq!(
         stats.edges_clipped + stats.edges_whole + stats.edges_culled,
@@ -122,7 +126,7 @@ fn a_camera_inside_the_mesh_clips_edges_instead_of_smearing_them() {
 #[test]
 fn railroad_lines_meet_at_the_analytic_vanishing_point() {
     let s = scene("railroad");
-    let vps = vanishing_points(&s.camera, &s.meshes);
+    let vps = vanishing_points(&Camera::of(&s), &s.meshes);
     let rails = vps
         .iter()
         .find(|v| v.direction.z.abs() > 0.999)
@@ -194,7 +198,7 @@ fn the_builtin_scene_is_the_shipped_cornell_box() {
     let file = scene("cornell-box");
     assert_eq!(builtin.meshes, file.meshes);
     assert_eq!(builtin.materials, file.materials);
-    assert_eq!(builtin.camera.desc, file.camera.desc);
+    assert_eq!(builtin.camera, file.camera);
     assert_eq!(builtin.triangle_count(), 36);
     assert!(builtin.has_emitters());
 }

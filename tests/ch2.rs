@@ -5,15 +5,16 @@ use std::path::Path;
 use std::sync::Arc;
 
 use glam::{DVec2, DVec3, I64Vec2, Vec3};
+use raystep::ch1_projection::camera::Camera;
 use raystep::ch2_rasterization::clip::ClipVertex;
 use raystep::ch2_rasterization::coverage::{coverage_counts, rasterize};
+use raystep::ch2_rasterization::frame::render_frame;
 use raystep::ch2_rasterization::interpolate::{interpolate, Interpolation};
 use raystep::ch2_rasterization::mesh_check::check_mesh;
 use raystep::ch2_rasterization::setup::{raster_triangle, setup_raster_polygon, ScreenTriangle};
-use raystep::ch2_rasterization::studies::{
-    screen_fan, screen_grid, stability_cases, star, test_camera,
-};
-use raystep::ch2_rasterization::{render_frame, Rasterization};
+use raystep::ch2_rasterization::stability::stability_cases;
+use raystep::ch2_rasterization::stage::Rasterization;
+use raystep::ch2_rasterization::studies::{screen_fan, screen_grid, star, test_camera};
 use raystep::core::report::Times;
 use raystep::core::stage::{Chapter, Settings};
 use raystep::grading::{self, Outcome, Solution};
@@ -186,7 +187,7 @@ fn slanted_triangle_differs_between_perspective_and_affine() {
     let s = scene("interpenetrating.toml")
         .with_resolution(96, 72)
         .unwrap();
-    let f = render_frame(&s.camera, &s.meshes, &s.materials, 1, 0, false).unwrap();
+    let f = render_frame(&Camera::of(&s), &s.meshes, &s.materials, 1, 0, false).unwrap();
     let diff = f.films[0].rmse(&f.films[1]);
     assert!(
         diff > 1e-3,
@@ -204,7 +205,9 @@ fn same_bytes_on_one_and_two_threads() {
             .num_threads(n)
             .build()
             .unwrap();
-        pool.install(|| render_frame(&s.camera, &s.meshes, &s.materials, 4, 3, false).unwrap())
+        pool.install(|| {
+            render_frame(&Camera::of(&s), &s.meshes, &s.materials, 4, 3, false).unwrap()
+        })
     };
     let (a, b) = (run(1), run(2));
     assert_eq!(a.buffer, b.buffer);
@@ -222,8 +225,8 @@ fn same_bytes_on_one_and_two_threads() {
 #[test]
 fn back_face_culling_changes_nothing_on_a_closed_convex_mesh() {
     let s = scene("tetrahedron.toml").with_resolution(80, 60).unwrap();
-    let all = render_frame(&s.camera, &s.meshes, &s.materials, 4, 0, false).unwrap();
-    let culled = render_frame(&s.camera, &s.meshes, &s.materials, 4, 0, true).unwrap();
+    let all = render_frame(&Camera::of(&s), &s.meshes, &s.materials, 4, 0, false).unwrap();
+    let culled = render_frame(&Camera::of(&s), &s.meshes, &s.materials, 4, 0, true).unwrap();
     assert!(culled.stats.culled_back > 0);
     assert!(culled.tris.len() < all.tris.len());
     assert_eq!(all.films[0], culled.films[0]);

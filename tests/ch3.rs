@@ -3,12 +3,16 @@
 use std::sync::Arc;
 
 use glam::{DVec3, Vec2, Vec3};
+use raystep::ch1_projection::camera::Camera;
 use raystep::ch3_ray_triangle::bvh::{closest_naive, occluded_naive, Bvh, Triangles};
+use raystep::ch3_ray_triangle::geometry::Geometry;
+use raystep::ch3_ray_triangle::leaks::{bunny, leak_test, self_intersections};
 use raystep::ch3_ray_triangle::ray::Ray;
-use raystep::ch3_ray_triangle::stage::{render_views, sample_position, Geometry, RayTriangle};
+use raystep::ch3_ray_triangle::render::{render_views, sample_position};
+use raystep::ch3_ray_triangle::stability::stability_cases;
+use raystep::ch3_ray_triangle::stage::RayTriangle;
 use raystep::ch3_ray_triangle::studies::{
-    bunny, leak_test, naive_vs_bvh, procedural_camera, procedural_mesh, scene_of,
-    self_intersections, stability_cases, StudySize,
+    naive_vs_bvh, procedural_camera, procedural_mesh, scene_of, StudySize,
 };
 use raystep::ch3_ray_triangle::triangle::{intersect_f64, Intersector};
 use raystep::core::sampling::random;
@@ -178,7 +182,7 @@ fn degenerate_and_parallel_cases_never_give_nan() {
 fn primary_hit_projects_back_onto_its_sample_position() {
     let scene = Scene::builtin().with_resolution(64, 48).unwrap();
     let geometry = Geometry::new(&scene);
-    let cam = &scene.camera;
+    let cam = &Camera::of(&scene);
     let mut checked = 0;
     for y in 0..cam.height {
         for x in 0..cam.width {
@@ -205,7 +209,7 @@ fn same_bytes_on_one_and_two_threads() {
             .num_threads(threads)
             .build()
             .unwrap();
-        pool.install(|| render_views(&scene.camera, &geometry, 3, 11))
+        pool.install(|| render_views(&Camera::of(&scene), &geometry, 3, 11))
             .iter()
             .map(|f| f.to_srgb8())
             .collect::<Vec<_>>()
@@ -252,7 +256,7 @@ fn naive_and_bvh_images_are_identical() {
 #[test]
 fn anti_aliasing_error_falls_with_samples() {
     let scene = scene_of(procedural_mesh(200), procedural_camera(32, 24));
-    let et = raystep::ch3_ray_triangle::studies::anti_aliasing_study(&scene, &[1, 16], 128, 0);
+    let et = raystep::ch3_ray_triangle::studies::error_against_time(&scene, &[1, 16], 128, 0);
     assert_eq!(et.rows.len(), 2);
     assert!(et.rows[1].error < et.rows[0].error * 0.6, "{:?}", et.rows);
 }
@@ -273,7 +277,7 @@ fn relative_error_of_t_stays_small_far_away() {
     };
     assert_eq!(reference(1e6).map(|h| h.0), Some(1e6));
     for k in 0..=7 {
-        let (err, misses) = raystep::ch3_ray_triangle::studies::t_relative_error(
+        let (err, misses) = raystep::ch3_ray_triangle::leaks::t_relative_error(
             10f64.powi(k),
             100,
             Intersector::Watertight,
@@ -332,7 +336,7 @@ fn snapshot_of_the_tetrahedron_views() {
     .with_resolution(48, 36)
     .unwrap();
     let geometry = Geometry::new(&scene);
-    let films = render_views(&scene.camera, &geometry, 1, 0);
+    let films = render_views(&Camera::of(&scene), &geometry, 1, 0);
     let mut text = String::new();
     for (view, film) in raystep::ch3_ray_triangle::stage::VIEWS.iter().zip(&films) {
         text += &format!("{}:\n{}", view.name, preview(film, 48, PreviewStyle::Ascii));
@@ -356,7 +360,7 @@ fn first_hits_agree_with_chapter_2_except_on_edges() {
             .unwrap()
             .with_resolution(160, 120)
             .unwrap();
-        let geometry = raystep::ch3_ray_triangle::stage::Geometry::new(&s);
+        let geometry = raystep::ch3_ray_triangle::geometry::Geometry::new(&s);
         let a = raster_agreement(&s, &geometry).unwrap();
         assert_eq!(a.pixels, 160 * 120);
         assert_eq!(a.differ_off_edges, 0, "{name}: {a:?}");
@@ -378,7 +382,11 @@ fn first_hits_agree_with_chapter_2_except_on_edges() {
             0.15, 0.0, 0.0,
         )));
     }
-    let a = raster_agreement(&s, &raystep::ch3_ray_triangle::stage::Geometry::new(&moved)).unwrap();
+    let a = raster_agreement(
+        &s,
+        &raystep::ch3_ray_triangle::geometry::Geometry::new(&moved),
+    )
+    .unwrap();
     assert!(a.differ_off_edges > 0, "{a:?}");
 }
 

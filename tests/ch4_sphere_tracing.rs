@@ -7,16 +7,17 @@ mod common;
 use std::sync::Arc;
 
 use glam::{DVec3, Vec2, Vec3};
+use raystep::ch4_implicit_surfaces::distance::{Exactness, ScaleBound};
+use raystep::ch4_implicit_surfaces::eikonal::eikonal_check;
 use raystep::ch4_implicit_surfaces::march::{
     fixed_step, over_relaxed, sphere_trace, Ending, March,
 };
 use raystep::ch4_implicit_surfaces::normal::{normal, NormalScheme};
 use raystep::ch4_implicit_surfaces::render::Method;
-use raystep::ch4_implicit_surfaces::sdf::{Exactness, ScaleBound};
 use raystep::ch4_implicit_surfaces::stability::{
     ellipsoid_wrong_pixels, grazing, stability_cases, thin_plate_wrong_pixels,
 };
-use raystep::ch4_implicit_surfaces::stage::{eikonal_check, SphereTracing, DEFAULT};
+use raystep::ch4_implicit_surfaces::stage::{SphereTracing, DEFAULT};
 use raystep::ch4_implicit_surfaces::studies::{
     analytic_hit, error_against_time, ray_ellipsoid, sphere_on_plane, study_camera,
 };
@@ -295,12 +296,12 @@ fn a_mixed_scene_traces_both_and_the_nearer_surface_wins() {
              [[sdfs]]\ntype = \"sphere\"\n"
         ))
         .unwrap();
-        let geometry = raystep::ch3_ray_triangle::stage::Geometry::new(&s);
+        let geometry = raystep::ch3_ray_triangle::geometry::Geometry::new(&s);
         let meshes = Some(MeshTracer {
             geometry: &geometry,
             meshes: &s.meshes,
         });
-        let ray = s.camera.ray(Vec2::new(20.0, 15.0));
+        let ray = raystep::ch1_projection::camera::Camera::of(&s).ray(Vec2::new(20.0, 15.0));
         let m = March::default();
         let px = trace_pixel(
             &ray,

@@ -14,8 +14,9 @@ use raystep::ch6_global_illumination::integrator::{
 use raystep::ch6_global_illumination::reference::{region_z_test, StoredReference};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::scenes;
+use raystep::ch6_global_illumination::stability::{self, centre_block, flat_z};
 use raystep::ch6_global_illumination::stage::DEFAULT;
-use raystep::ch6_global_illumination::studies::{self, centre_block, flat_z, render};
+use raystep::ch6_global_illumination::studies::{self, render};
 use raystep::core::stage::{Chapter, Settings};
 use raystep::scene::Scene;
 
@@ -224,17 +225,17 @@ fn a_wrong_renderer_fails_the_region_test() {
 
 #[test]
 fn the_stiff_cases_come_out_as_expected() {
-    let (case, mean, _, _) = studies::furnace_0999(4, 8);
+    let (case, mean, _, _) = stability::furnace_0999(4, 8);
     assert!(case.ok, "{case:?}");
     assert!((mean - 1.0).abs() < 0.2, "{mean}");
-    let (case, z) = studies::tiny_light(4, 32);
+    let (case, z) = stability::tiny_light(4, 32);
     assert!(case.ok && z.abs() < Z, "{case:?}");
-    let (case, trapped, _) = studies::total_internal_reflection(4, 8);
+    let (case, trapped, _) = stability::total_internal_reflection(4, 8);
     assert!(case.ok, "{case:?}");
     assert_eq!(trapped, 0.0);
-    let (case, _) = studies::index_matched_glass(32, 8);
+    let (case, _) = stability::index_matched_glass(32, 8);
     assert!(case.ok, "{case:?}");
-    let (case, _) = studies::camera_inside_glass(8, 8);
+    let (case, _) = stability::camera_inside_glass(8, 8);
     assert!(case.ok, "{case:?}");
 }
 

@@ -114,7 +114,7 @@ fn an_empty_file_is_the_default_scene() {
     let s = parse("").unwrap();
     assert!(s.meshes.is_empty() && s.lights.is_empty() && s.materials.is_empty());
     assert_eq!((s.camera.width, s.camera.height), (320, 240));
-    assert_eq!(s.camera.desc.fov_degrees, 45.0);
+    assert_eq!(s.camera.fov_degrees, 45.0);
 }
 
 #[test]

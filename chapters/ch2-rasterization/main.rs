@@ -11,7 +11,7 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use raystep::ch2_rasterization::bench::run_bench;
-use raystep::ch2_rasterization::Rasterization;
+use raystep::ch2_rasterization::stage::Rasterization;
 use raystep::core::run::{exit_code, run_with, CommonArgs};
 use raystep::scene::Scene;
 

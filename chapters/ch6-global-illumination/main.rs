@@ -10,11 +10,13 @@
 use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
-use raystep::ch6_global_illumination::cli;
+use raystep::ch6_global_illumination::bench;
 use raystep::ch6_global_illumination::integrator::Estimator;
+use raystep::ch6_global_illumination::reference::make_reference;
 use raystep::ch6_global_illumination::sampler::SamplerKind;
-use raystep::ch6_global_illumination::stage::DEFAULT;
-use raystep::core::run::{exit_code, CommonArgs};
+use raystep::ch6_global_illumination::stage::{GlobalIllumination, DEFAULT};
+use raystep::core::run::{exit_code, init_threads, run_with, CommonArgs};
+use raystep::{Error, Result};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum EstimatorArg {
@@ -94,14 +96,43 @@ fn main() -> ExitCode {
     stage.path.rr_min_scatterings = cli.rr_after;
     stage.spp_per_pass = cli.spp_per_pass;
     stage.layers = !cli.final_only;
-    let mode = if cli.bench {
-        cli::Mode::Bench
-    } else if cli.make_reference {
-        cli::Mode::MakeReference
-    } else {
-        cli::Mode::Render {
-            spp_figure: cli.spp_figure,
-        }
-    };
-    exit_code(cli::run(&stage, &cli.common, mode))
+    stage.spp_figure = cli.spp_figure;
+    exit_code(run(&stage, &cli))
+}
+
+fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
+    stage.check()?;
+    let common = &cli.common;
+    if cli.bench {
+        init_threads(common.threads)?;
+        let spp = if common.spp > 1 { common.spp } else { 64 };
+        let text = format!(
+            "{}\n{}",
+            bench::bench(spp, &stage.path)?.to_text(),
+            bench::query_bench().to_text()
+        );
+        return print(&text);
+    }
+    if cli.make_reference {
+        init_threads(common.threads)?;
+        let scene = common.load_sized_scene()?;
+        let (meta, files) =
+            make_reference(&stage.path, stage.sampler, &scene, common.spp, common.seed)?;
+        return print(&format!("{meta}wrote: {files:?}\n"));
+    }
+    let summary = run_with(stage, common)?;
+    if !summary.stable {
+        return Err(Error::Usage(
+            "a stiff case did not come out as expected".into(),
+        ));
+    }
+    Ok(())
+}
+
+fn print(text: &str) -> Result<()> {
+    use std::io::Write;
+    std::io::stdout()
+        .lock()
+        .write_all(text.as_bytes())
+        .map_err(|e| Error::io(std::path::Path::new("<stdout>"), e))
 }

@@ -15,6 +15,9 @@
 use glam::{DVec3, Mat4, Vec2, Vec3, Vec4Swizzles};
 
 use crate::core::error::{Error, Result};
+pub use crate::scene::camera::CameraDesc;
+use crate::scene::camera::MAX_RESOLUTION;
+use crate::scene::Scene;
 
 /// Projects a point given in camera space onto the image plane z = -1.
 ///
@@ -57,27 +60,6 @@ pub fn camera_from_world_look_at(eye: Vec3, target: Vec3, up: Vec3) -> Option<Ma
 }
 // ANCHOR_END: look_at
 
-/// What a scene says about its camera, kept in f64 so that reports can
-/// compute an exact reference next to the f32 renderer.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CameraDesc {
-    /// Where the pinhole is, in world space.
-    pub eye: DVec3,
-    /// A point the camera looks at.
-    pub target: DVec3,
-    /// Which way is up (need not be perpendicular to the view direction).
-    pub up: DVec3,
-    /// Full vertical field of view in degrees, in (0, 180).
-    pub fov_degrees: f64,
-    /// Image width in pixels.
-    pub width: u32,
-    /// Image height in pixels.
-    pub height: u32,
-}
-
-/// Largest width or height raystep renders; larger requests are refused.
-pub const MAX_RESOLUTION: u32 = 16384;
-
 /// A look-at pinhole camera with a vertical field of view and a viewport.
 #[derive(Clone, Debug)]
 pub struct Camera {
@@ -102,30 +84,10 @@ pub struct Camera {
 impl Camera {
     /// Builds and checks a camera. `at` names the scene key for errors.
     pub fn new(desc: CameraDesc) -> Result<Camera> {
-        let bad = |m: String| Error::Usage(format!("camera: {m}"));
-        for (name, v) in [("eye", desc.eye), ("target", desc.target), ("up", desc.up)] {
-            if !v.is_finite() {
-                return Err(bad(format!("`{name}` must be finite, got {v}")));
-            }
-        }
-        if !(desc.fov_degrees > 0.0 && desc.fov_degrees < 180.0) {
-            return Err(bad(format!(
-                "`fov` must be a vertical field of view in degrees strictly between 0 and 180, got {}",
-                desc.fov_degrees
-            )));
-        }
-        check_resolution(desc.width, desc.height)?;
-        let camera_from_world = camera_from_world_look_at(
-            desc.eye.as_vec3(),
-            desc.target.as_vec3(),
-            desc.up.as_vec3(),
-        )
-        .ok_or_else(|| {
-            bad(format!(
-                "`eye` {} and `target` {} must differ and `up` {} must not be parallel to the view direction",
-                desc.eye, desc.target, desc.up
-            ))
-        })?;
+        desc.check()?;
+        let camera_from_world =
+            camera_from_world_look_at(desc.eye.as_vec3(), desc.target.as_vec3(), desc.up.as_vec3())
+                .ok_or_else(|| Error::Usage("camera: no frame (checked above)".into()))?;
         let back = (desc.eye - desc.target).normalize();
         let right = desc.up.cross(back).normalize();
         Ok(Camera {
@@ -140,13 +102,28 @@ impl Camera {
         })
     }
 
+    /// The camera of a loaded scene. A scene checks its camera when it is
+    /// loaded, with the same [`CameraDesc::check`] that [`Camera::new`]
+    /// makes, so this cannot fail for a scene from [`Scene::load`] or
+    /// [`Scene::parse`]; a description changed by hand afterwards falls
+    /// back to a plain camera looking down -z.
+    pub fn of(scene: &Scene) -> Camera {
+        Camera::new(scene.camera).unwrap_or_else(|_| {
+            Camera::new(CameraDesc {
+                eye: DVec3::ZERO,
+                target: DVec3::NEG_Z,
+                up: DVec3::Y,
+                fov_degrees: 45.0,
+                width: scene.camera.width.clamp(1, MAX_RESOLUTION),
+                height: scene.camera.height.clamp(1, MAX_RESOLUTION),
+            })
+            .expect("a camera at the origin looking down -z is valid")
+        })
+    }
+
     /// The same camera at another resolution.
     pub fn with_resolution(&self, width: u32, height: u32) -> Result<Camera> {
-        Camera::new(CameraDesc {
-            width,
-            height,
-            ..self.desc
-        })
+        Camera::new(self.desc.with_resolution(width, height)?)
     }
 
     /// World space to camera space.
@@ -205,16 +182,4 @@ impl Camera {
             (1.0 - ndc.y) * 0.5 * d.height as f64,
         ))
     }
-}
-
-/// Refuses zero and absurd image sizes before anything is allocated.
-pub fn check_resolution(width: u32, height: u32) -> Result<()> {
-    for (name, v) in [("width", width), ("height", height)] {
-        if v == 0 || v > MAX_RESOLUTION {
-            return Err(Error::Usage(format!(
-                "`{name}` must be between 1 and {MAX_RESOLUTION} pixels, got {v}"
-            )));
-        }
-    }
-    Ok(())
 }

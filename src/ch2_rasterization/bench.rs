@@ -5,7 +5,7 @@ use std::time::Instant;
 
 use glam::Vec3;
 
-use super::stage::render_frame;
+use super::frame::render_frame;
 use super::studies::test_camera;
 use crate::core::error::{Error, Result};
 use crate::core::report::{format_number, format_seconds, Table};
@@ -54,7 +54,7 @@ pub fn run_bench(bunny: Option<Scene>, threads: &[usize], triangles: usize) -> R
         let scene = scene.with_resolution(w, h)?;
         cases.push((
             scene.name.clone(),
-            scene.camera,
+            crate::ch1_projection::camera::Camera::new(scene.camera)?,
             scene.meshes,
             scene.materials,
         ));

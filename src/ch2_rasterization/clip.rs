@@ -1,5 +1,5 @@
 //! Clipping a triangle against a plane: the near plane in camera space
-//! (chapter 1's z = -NEAR, see [`crate::ch1_projection::stage::NEAR`]), and the guard
+//! (chapter 1's z = -NEAR, see [`crate::ch1_projection::wireframe::NEAR`]), and the guard
 //! band, a rectangle far outside the screen, in raster space.
 //!
 //! A triangle that crosses the near plane is not dropped: the part in front

@@ -23,11 +23,12 @@ pub mod coverage;
 pub mod depth;
 pub mod edge;
 pub mod exact;
+pub mod frame;
 pub mod interpolate;
 pub mod mesh_check;
+pub mod report;
 pub mod setup;
+pub mod stability;
 pub mod stage;
 pub mod studies;
 pub mod views;
-
-pub use stage::{render_frame, Frame, Rasterization, RASTERIZATION};

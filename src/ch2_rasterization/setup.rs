@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use super::clip::{clip_guard_band, clip_near, Attributes, ClipVertex};
 use super::edge::{edge_fixed, to_fixed, SUBPIXEL};
 use crate::ch1_projection::camera::Camera;
-use crate::ch1_projection::stage::NEAR;
+use crate::ch1_projection::wireframe::NEAR;
 use crate::scene::mesh::Mesh;
 use crate::scene::Material;
 

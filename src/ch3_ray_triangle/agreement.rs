@@ -8,8 +8,9 @@
 use glam::Vec2;
 use rayon::prelude::*;
 
-use crate::ch2_rasterization::stage::render_frame;
-use crate::ch3_ray_triangle::stage::Geometry;
+use crate::ch1_projection::camera::Camera;
+use crate::ch2_rasterization::frame::render_frame;
+use crate::ch3_ray_triangle::geometry::Geometry;
 use crate::core::error::Result;
 use crate::scene::Scene;
 
@@ -31,7 +32,7 @@ const MISS: u32 = u32::MAX;
 /// chapter 3's ray tracer, compared.
 // ANCHOR: agreement
 pub fn raster_agreement(scene: &Scene, geometry: &Geometry) -> Result<Agreement> {
-    let cam = &scene.camera;
+    let cam = &Camera::of(scene);
     let (w, h) = (cam.width as usize, cam.height as usize);
     // Chapter 2: one sample at each pixel centre, depth-tested.
     let frame = render_frame(cam, &scene.meshes, &scene.materials, 1, 0, false)?;

@@ -12,8 +12,9 @@ use rayon::prelude::*;
 
 use crate::ch1_projection::camera::{Camera, CameraDesc};
 use crate::ch3_ray_triangle::bvh::{Bvh, ObvhsAlone, Triangles};
+use crate::ch3_ray_triangle::leaks::bunny;
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::studies::{bunny, procedural_mesh};
+use crate::ch3_ray_triangle::studies::procedural_mesh;
 use crate::ch3_ray_triangle::triangle::{intersect_watertight, Intersector};
 use crate::core::report::{format_number, format_seconds, Table};
 use crate::core::sampling::random;

@@ -3,8 +3,13 @@
 pub mod agreement;
 pub mod bench;
 pub mod bvh;
+pub mod geometry;
+pub mod leaks;
 pub mod ray;
+pub mod render;
+pub mod report;
 pub mod spawn;
+pub mod stability;
 pub mod stage;
 pub mod studies;
 pub mod triangle;

@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use super::sdf::Sdf;
+use crate::scene::sdf::Sdf;
 
 /// An axis-aligned box; `min > max` on some axis means empty.
 #[derive(Clone, Copy, Debug, PartialEq)]

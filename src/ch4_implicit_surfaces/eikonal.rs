@@ -11,6 +11,7 @@
 use glam::Vec3;
 
 use super::bounds::Aabb;
+use super::distance::{Exactness, SdfObject};
 use super::normal::gradient_central;
 use crate::core::sampling::random;
 
@@ -90,4 +91,44 @@ pub fn sample_region(bounds: &Aabb, scene_box: &Aabb) -> Aabb {
         bounds.intersect(scene_box)
     };
     b.inflate(0.25 * b.size().max_element().max(1e-3))
+}
+
+/// One object's row of the Eikonal check.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EikonalRow {
+    /// The object's name.
+    pub name: String,
+    /// What it is built from.
+    pub construction: String,
+    /// What the construction guarantees.
+    pub declared: Exactness,
+    /// The largest ‖∇f‖ it allows.
+    pub lipschitz: f32,
+    /// What was measured.
+    pub range: GradientRange,
+}
+
+/// Samples ‖∇f‖ over every object's bounds (4096 points each).
+pub fn eikonal_check(objects: &[SdfObject]) -> Vec<EikonalRow> {
+    // Planes are infinite: sample them over the box around everything else.
+    let finite = objects
+        .iter()
+        .map(|o| o.sdf.bounds())
+        .filter(Aabb::is_finite)
+        .reduce(|a, b| a.union(&b))
+        .unwrap_or(Aabb::around(glam::Vec3::ZERO, glam::Vec3::splat(2.0)));
+    objects
+        .iter()
+        .map(|o| {
+            let region = sample_region(&o.sdf.bounds(), &finite);
+            let h = 1e-3 * region.size().max_element().max(1e-3);
+            EikonalRow {
+                name: o.name.clone(),
+                construction: o.sdf.describe(),
+                declared: o.sdf.exactness(),
+                lipschitz: o.sdf.lipschitz(),
+                range: gradient_range(&|p| o.sdf.eval(p), &region, 4096, h),
+            }
+        })
+        .collect()
 }

@@ -1,6 +1,7 @@
 //! Chapter 4: implicit surfaces and sphere tracing.
 
 pub mod bounds;
+pub mod distance;
 pub mod eikonal;
 pub mod hit;
 pub mod march;
@@ -8,7 +9,7 @@ pub mod normal;
 pub mod operators;
 pub mod primitives;
 pub mod render;
-pub mod sdf;
+pub mod report;
 pub mod stability;
 pub mod stage;
 pub mod studies;

@@ -8,14 +8,14 @@ use glam::{Vec2, Vec3};
 use rayon::prelude::*;
 
 use crate::ch1_projection::camera::Camera;
+use crate::ch3_ray_triangle::geometry::Geometry;
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::stage::Geometry;
+use crate::ch4_implicit_surfaces::distance::{scene_distance, SdfObject};
 use crate::ch4_implicit_surfaces::hit::{nearest_hit, Surface, SurfaceHit};
 use crate::ch4_implicit_surfaces::march::{
     fixed_step, over_relaxed, sphere_trace, Ending, March, Trace,
 };
 use crate::ch4_implicit_surfaces::normal::{normal, NormalScheme};
-use crate::ch4_implicit_surfaces::sdf::{scene_distance, SdfObject};
 use crate::core::film::Film;
 use crate::scene::mesh::Mesh;
 use crate::scene::Material;
@@ -209,4 +209,51 @@ pub fn views(pixels: &[Pixel], w: u32, h: u32, materials: &[Material], m: &March
         films[4].pixels[i] = heat(px.trace.residual.abs() / eps);
     }
     films
+}
+
+/// Counts over the traced pixels.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TraceStats {
+    /// Rays that hit.
+    pub hits: usize,
+    /// Rays that went past the maximum distance.
+    pub escaped: usize,
+    /// Rays that ran out of steps.
+    pub budget: usize,
+    /// Evaluations of f over all rays (normals not included).
+    pub evaluations: u64,
+    /// The most steps one ray took.
+    pub max_steps: u32,
+    /// Steps that crossed the surface.
+    pub oversteps: u64,
+    /// Steps where f changed faster than the ray moved (f not 1-Lipschitz).
+    pub lipschitz_violations: u64,
+    /// Rays that started inside an object.
+    pub inside: usize,
+    /// Non-finite distances or hit positions met.
+    pub nonfinite: usize,
+}
+
+impl TraceStats {
+    /// Counts over `pixels`.
+    pub fn of(pixels: &[Pixel]) -> TraceStats {
+        let mut s = TraceStats::default();
+        for p in pixels {
+            match p.trace.ending {
+                Ending::Hit => s.hits += 1,
+                Ending::Escaped => s.escaped += 1,
+                Ending::Budget => s.budget += 1,
+            }
+            s.evaluations += p.trace.steps as u64;
+            s.max_steps = s.max_steps.max(p.trace.steps);
+            s.oversteps += p.trace.oversteps as u64;
+            s.lipschitz_violations += p.trace.lipschitz_violations as u64;
+            s.inside += usize::from(p.trace.inside);
+            let bad_hit = matches!(p.hit, Some(h) if !(h.t.is_finite() && h.normal.is_finite()));
+            if bad_hit || !p.trace.t.is_finite() {
+                s.nonfinite += 1;
+            }
+        }
+        s
+    }
 }

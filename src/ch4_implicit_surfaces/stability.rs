@@ -7,9 +7,9 @@ use super::render::{march, Method};
 use super::studies::ray_ellipsoid;
 use crate::ch1_projection::camera::{Camera, CameraDesc};
 use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch4_implicit_surfaces::distance::{ScaleBound, Sdf};
 use crate::ch4_implicit_surfaces::march::{sphere_trace, Ending, March};
 use crate::ch4_implicit_surfaces::normal::{normal, NormalScheme};
-use crate::ch4_implicit_surfaces::sdf::{ScaleBound, Sdf};
 use crate::core::report::{format_number, StabilityCase};
 
 fn camera(eye: DVec3, target: DVec3, fov: f64, w: u32, h: u32) -> Camera {

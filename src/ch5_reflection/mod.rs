@@ -6,6 +6,8 @@ pub mod material;
 pub mod mis;
 pub mod plot;
 pub mod radiometry;
+pub mod render;
+pub mod report;
 pub mod stability;
 pub mod stage;
 pub mod studies;

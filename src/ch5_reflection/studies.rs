@@ -122,7 +122,7 @@ pub fn area_problem() -> Problem {
         it: floor_point(&world, Vec3::Z),
         world,
         truth,
-        shadow_rays: !super::stage::scene_cannot_shadow(&scene),
+        shadow_rays: !super::render::scene_cannot_shadow(&scene),
     }
 }
 
@@ -138,7 +138,7 @@ pub fn sky_problem() -> Problem {
         it: floor_point(&world, Vec3::Y),
         world,
         truth,
-        shadow_rays: !super::stage::scene_cannot_shadow(&scene),
+        shadow_rays: !super::render::scene_cannot_shadow(&scene),
     }
 }
 

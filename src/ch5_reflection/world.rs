@@ -12,10 +12,10 @@ use crate::ch3_ray_triangle::bvh::Triangles;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::spawn::offset_origin;
 use crate::ch3_ray_triangle::wide_bvh::WideBvh;
+use crate::ch4_implicit_surfaces::distance::{scene_distance, SdfObject};
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch4_implicit_surfaces::march::{sphere_trace, March};
 use crate::ch4_implicit_surfaces::normal::{normal, NormalScheme};
-use crate::ch4_implicit_surfaces::sdf::{scene_distance, SdfObject};
 use crate::ch5_reflection::light::{Light, Lights};
 use crate::ch5_reflection::material::Bsdf;
 use crate::scene::{Material, Scene};
@@ -214,7 +214,7 @@ impl World {
 /// A distance beyond which nothing can be hit: twice the diagonal of the
 /// box around the camera and every SDF's bounds (at least 100).
 fn scene_extent(scene: &Scene) -> f32 {
-    let eye = scene.camera.desc.eye.as_vec3();
+    let eye = scene.camera.eye_f32();
     let mut far = 0.0f32;
     for o in &scene.sdfs {
         let b = o.sdf.bounds();

@@ -18,6 +18,7 @@ use std::time::Instant;
 
 use glam::Vec2;
 
+use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::bvh::Bvh;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Intersector;
@@ -103,7 +104,8 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
 /// Rays like the path tracer's, from one path vertex per pixel of
 /// `scene`: (bounce rays, shadow rays with their t_max).
 fn vertex_rays(world: &World, scene: &Scene) -> (Vec<Ray>, Vec<(Ray, f32)>) {
-    let (w, h) = (scene.camera.width, scene.camera.height);
+    let camera = Camera::of(scene);
+    let (w, h) = (camera.width, camera.height);
     let (mut bounce, mut shadow) = (Vec::new(), Vec::new());
     for pixel in 0..(w * h) as u64 {
         let u = |d| random(99, pixel, 0, d);
@@ -111,7 +113,7 @@ fn vertex_rays(world: &World, scene: &Scene) -> (Vec<Ray>, Vec<(Ray, f32)>) {
             (pixel % w as u64) as f32 + u(0),
             (pixel / w as u64) as f32 + u(1),
         );
-        let camera_ray = scene.camera.ray(raster);
+        let camera_ray = camera.ray(raster);
         let Some(it) = world.intersect(&camera_ray) else {
             continue;
         };

@@ -12,7 +12,11 @@ use crate::core::plot::{log_log, LogLogStyle, Polyline};
 use crate::core::report::ErrorTime;
 
 use super::accumulate::Accumulator;
-use super::integrator::{LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
+use super::integrator::{PathSettings, LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
+use super::sampler::SamplerKind;
+use crate::ch1_projection::camera::Camera;
+use crate::ch5_reflection::world::World;
+use crate::scene::Scene;
 
 /// The "up to k bounces" images of the lecture's sequence.
 pub const STRIP_BOUNCES: [u32; 6] = [0, 1, 2, 4, 8, 16];
@@ -63,6 +67,35 @@ pub fn write_layers(acc: &Accumulator, out: &Path, stem: &str) -> Result<Vec<Pat
     }
     debug_assert_eq!(SLOT_BEYOND, LAYERS_SHOWN as usize + 2);
     Ok(files)
+}
+
+/// The spp-doubling figure: one render, its image after 1, 2, 4, … `max`
+/// samples per pixel side by side, written to `dir/stem-spp.png`.
+pub fn spp_strip(
+    path: &PathSettings,
+    sampler: SamplerKind,
+    scene: &Scene,
+    seed: u64,
+    max: u32,
+    dir: &Path,
+    stem: &str,
+) -> Result<PathBuf> {
+    let camera = Camera::new(scene.camera)?;
+    let world = World::new(scene);
+    let mut acc = Accumulator::new(camera.width, camera.height, false);
+    let mut films = Vec::new();
+    let mut spp = 1;
+    while spp <= max.max(1) {
+        let count = spp - acc.samples;
+        acc.add_samples(&world, &camera, path, sampler, seed, count);
+        let mut f = acc.mean();
+        f.scrub_nonfinite();
+        films.push(f);
+        spp *= 2;
+    }
+    let out = dir.join(format!("{stem}-spp.png"));
+    side_by_side(&films).write_png(&out)?;
+    Ok(out)
 }
 
 /// One colour per series of the strategy plot, by estimator (the sampler

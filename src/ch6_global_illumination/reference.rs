@@ -22,6 +22,11 @@ use crate::core::film::{write_atomically, Film};
 use crate::scene::Scene;
 
 use super::accumulate::{downsample, Accumulator};
+use super::integrator::PathSettings;
+use super::sampler::SamplerKind;
+use crate::ch1_projection::camera::Camera;
+use crate::ch5_reflection::world::World;
+use std::time::Instant;
 
 /// Where references live.
 pub fn reference_dir() -> PathBuf {
@@ -260,6 +265,60 @@ pub fn normal_quantile(p: f64) -> f64 {
 /// The mean of a film's pixels.
 pub fn film_mean(f: &Film) -> Vec3 {
     f.pixels.iter().sum::<Vec3>() / f.pixels.len().max(1) as f32
+}
+
+/// Renders the stored reference of `scene` (`spp` samples per pixel with
+/// `path` and `sampler`, seeded by `seed`) into [`reference_dir`], with a
+/// text file of every setting and the command that remakes it; returns that
+/// text and the files written.
+pub fn make_reference(
+    path: &PathSettings,
+    sampler: SamplerKind,
+    scene: &Scene,
+    spp: u32,
+    seed: u64,
+) -> Result<(String, Vec<PathBuf>)> {
+    let camera = Camera::new(scene.camera)?;
+    let spp = spp.max(1);
+    let t = Instant::now();
+    let mut acc = Accumulator::new(scene.camera.width, scene.camera.height, false);
+    let world = World::new(scene);
+    let chunk = 256;
+    while acc.samples < spp {
+        let count = chunk.min(spp - acc.samples);
+        acc.add_samples(&world, &camera, path, sampler, seed, count);
+        eprint!("\rreference: {}/{spp} spp", acc.samples);
+    }
+    eprintln!();
+    let secs = t.elapsed().as_secs_f64();
+    let meta = format!(
+        "scene = {}\ntriangles = {}\nwidth = {}\nheight = {}\nspp = {spp}\nseed = {}\n\
+         estimator = {}\nsampler = {}\nmax_bounces = {}\nrr_after = {}\npaths = {}\nseconds = {secs:.1}\n\
+         threads = {}\ncommand = cargo run --release --bin ch6 -- --make-reference --width {} --height {} --spp {spp} --seed {} \
+         --estimator {} --sampler {} {} --rr-after {}\n",
+        scene.name,
+        scene.triangle_count(),
+        acc.width,
+        acc.height,
+        seed,
+        path.estimator.name(),
+        sampler.name(),
+        path.max_bounces.map_or("unlimited".into(), |k| k.to_string()),
+        path.rr_min_scatterings,
+        acc.stats.paths,
+        rayon::current_num_threads(),
+        acc.width,
+        acc.height,
+        seed,
+        path.estimator.name(),
+        sampler.name(),
+        path.max_bounces
+            .map_or("--unlimited".into(), |k| format!("--max-bounces {k}")),
+        path.rr_min_scatterings,
+    );
+    let name = stem(&scene.name, acc.width, acc.height);
+    let files = StoredReference::save(&acc, &reference_dir(), &name, &meta)?;
+    Ok((meta, files))
 }
 
 #[cfg(test)]

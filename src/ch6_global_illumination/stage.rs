@@ -10,20 +10,24 @@
 //! ends read the image, the per-bounce layers and, for the Cornell box, the
 //! error against the stored reference ([`reference`](mod@reference)) after every pass.
 
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::Instant;
 
 use glam::Vec3;
 
 use super::accumulate::{downsample, Accumulator};
-use super::integrator::{Estimator, PathSettings, LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
+use super::figures::{plot_error_time, spp_strip, write_layers};
+use super::integrator::{Estimator, PathSettings, LAYER_SLOTS};
+use super::reference::{upsample, StoredReference};
+use super::report::{chapter_report, ReportInputs};
 use super::sampler::SamplerKind;
+use crate::ch1_projection::camera::Camera;
 use crate::ch5_reflection::world::World;
 use crate::core::error::{Error, Result};
 use crate::core::film::Film;
-use crate::core::report::{format_number, format_seconds, Report, Table};
+use crate::core::report::Report;
 use crate::core::stage::{Chapter, Render, Settings, View};
-use crate::scene::file::MaterialKind;
 use crate::scene::Scene;
 
 /// The views of chapter 6.
@@ -85,6 +89,9 @@ pub struct GlobalIllumination {
     pub spp_per_pass: u32,
     /// Keep per-bounce layers (off when only the final image is wanted).
     pub layers: bool,
+    /// Also write the spp-doubling figure up to this many samples per
+    /// pixel (headless runs only).
+    pub spp_figure: Option<u32>,
 }
 
 /// The settings `ch6` uses unless told otherwise: MIS, 16 bounces,
@@ -98,6 +105,7 @@ pub const DEFAULT: GlobalIllumination = GlobalIllumination {
     sampler: SamplerKind::Independent,
     spp_per_pass: 4,
     layers: true,
+    spp_figure: None,
 };
 
 impl GlobalIllumination {
@@ -155,7 +163,7 @@ impl Chapter for GlobalIllumination {
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         self.check()?;
-        Ok(Box::new(PathTracingRender::new(*self, scene, settings)))
+        Ok(Box::new(PathTracingRender::new(*self, scene, settings)?))
     }
     fn start_variant(
         &self,
@@ -171,24 +179,26 @@ impl Chapter for GlobalIllumination {
 pub struct PathTracingRender {
     stage: GlobalIllumination,
     scene: Arc<Scene>,
+    camera: Camera,
     settings: Settings,
     world: Option<(World, f64)>,
     /// The sums so far.
     pub acc: Accumulator,
     seconds: f64,
     started: Option<Instant>,
-    reference: Option<super::reference::StoredReference>,
+    reference: Option<StoredReference>,
     errors: Vec<(f64, f64)>,
 }
 
 impl PathTracingRender {
     /// A render of `scene` that has not started.
-    pub fn new(stage: GlobalIllumination, scene: Arc<Scene>, settings: &Settings) -> Self {
+    pub fn new(stage: GlobalIllumination, scene: Arc<Scene>, settings: &Settings) -> Result<Self> {
         let (w, h) = (scene.camera.width, scene.camera.height);
-        let reference = super::reference::StoredReference::for_scene(&scene)
+        let reference = StoredReference::for_scene(&scene)
             .filter(|r| w % r.mean.width == 0 && h % r.mean.height == 0);
-        PathTracingRender {
+        Ok(PathTracingRender {
             stage,
+            camera: Camera::new(scene.camera)?,
             acc: Accumulator::new(w, h, stage.layers),
             scene,
             settings: settings.clone(),
@@ -197,7 +207,7 @@ impl PathTracingRender {
             started: None,
             reference,
             errors: Vec::new(),
-        }
+        })
     }
 
     fn planned(&self) -> u32 {
@@ -233,7 +243,7 @@ impl Render for PathTracingRender {
             let (world, _) = self.world.as_ref().expect("built above");
             self.acc.add_samples(
                 world,
-                &self.scene.camera,
+                &self.camera,
                 &self.stage.path,
                 self.stage.sampler,
                 self.settings.seed,
@@ -296,7 +306,7 @@ impl Render for PathTracingRender {
     fn reference(&self) -> Option<Film> {
         let r = self.reference.as_ref()?;
         let factor = self.acc.width / r.mean.width;
-        Some(super::reference::upsample(&r.mean, factor))
+        Some(upsample(&r.mean, factor))
     }
 
     fn error_series(&self) -> Vec<(f64, f64)> {
@@ -304,167 +314,42 @@ impl Render for PathTracingRender {
     }
 
     fn report(&self) -> Report {
-        let mut report = self.base_report();
-        if self.settings.studies {
-            super::studies::add_studies(&mut report, &self.settings);
-        }
-        report
+        chapter_report(&ReportInputs {
+            scene: &self.scene,
+            settings: &self.settings,
+            path: self.stage.path,
+            sampler: self.stage.sampler,
+            layers: self.stage.layers,
+            acc: &self.acc,
+            world: self.world.as_ref(),
+            seconds: self.seconds,
+            reference_rmse: self.reference_rmse().map(|e| {
+                let r = self.reference.as_ref().expect("an RMSE needs a reference");
+                (e, r.mean.width, r.mean.height)
+            }),
+        })
     }
-}
 
-impl PathTracingRender {
-    fn base_report(&self) -> Report {
-        let scene = &self.scene;
-        let acc = &self.acc;
-        let st = &acc.stats;
-        let mut report = Report {
-            title: format!("ch6 global illumination: {}", scene.name),
-            ..Report::default()
-        };
-        let s = self.stage;
-        let facts = [
-            ("resolution", format!("{}x{}", acc.width, acc.height)),
-            ("samples per pixel", acc.samples.to_string()),
-            (
-                "estimator",
-                format!("{} ({} numbers)", s.path.estimator.name(), s.sampler.name()),
-            ),
-            (
-                "max bounces",
-                s.path
-                    .max_bounces
-                    .map_or("unlimited (Russian roulette ends paths)".into(), |k| {
-                        k.to_string()
-                    }),
-            ),
-            (
-                "Russian roulette",
-                format!("after {} scatterings", s.path.rr_min_scatterings),
-            ),
-            ("paths", st.paths.to_string()),
-            ("rays (segments and shadow rays)", st.rays.to_string()),
-            ("render time", format_seconds(self.seconds)),
-            (
-                "paths/s",
-                format_number(st.paths as f64 / self.seconds.max(1e-9)),
-            ),
-            (
-                "rays/s",
-                format_number(st.rays as f64 / self.seconds.max(1e-9)),
-            ),
-        ];
-        report.facts = facts.into_iter().map(|(k, v)| (k.to_string(), v)).collect();
-        if st.cut > 0 {
-            report.facts.push((
-                "paths cut at the safety limit".into(),
-                format!("{} of {}", st.cut, st.paths),
-            ));
+    fn extra_files(&self, report: &Report, dir: &Path, stem: &str) -> Result<Vec<PathBuf>> {
+        let mut files = write_layers(&self.acc, dir, stem)?;
+        if let Some(max) = self.stage.spp_figure {
+            files.push(spp_strip(
+                &self.stage.path,
+                self.stage.sampler,
+                &self.scene,
+                self.settings.seed,
+                max,
+                dir,
+                stem,
+            )?);
         }
-        if let Some(e) = self.reference_rmse() {
-            let r = self.reference.as_ref().expect("rmse implies a reference");
-            report.facts.push((
-                "RMSE against the stored reference".into(),
-                format!(
-                    "{} (at {}x{}, image box-downsampled to it)",
-                    format_number(e),
-                    r.mean.width,
-                    r.mean.height
-                ),
-            ));
-        }
-        if acc.layers.is_some() {
-            let mut t = Table::new(
-                "Mean radiance per bounce layer (E: emitters seen directly; k: k + 1 scatterings)",
-                &["layer", "mean R", "mean G", "mean B"],
-            );
-            for slot in 0..LAYER_SLOTS {
-                let f = acc.layer(slot).expect("layers kept");
-                let m = f.pixels.iter().sum::<Vec3>() / f.pixels.len().max(1) as f32;
-                let name = match slot {
-                    0 => "E".to_string(),
-                    SLOT_BEYOND => format!("> {LAYERS_SHOWN}"),
-                    s => (s - 1).to_string(),
-                };
-                t.row(vec![
-                    name,
-                    format_number(m.x as f64),
-                    format_number(m.y as f64),
-                    format_number(m.z as f64),
-                ]);
+        if let Some(et) = &report.error_vs_time {
+            for name in ["cornell", "furnace"] {
+                let path = dir.join(format!("{stem}-strategies-{name}.png"));
+                plot_error_time(et, name, 480, 320).write_png(&path)?;
+                files.push(path);
             }
-            report.tables.push(t);
         }
-        // Dropped contributions, and any non-finite pixel left in the sums.
-        report.nonfinite_caught = st.nonfinite + acc.mean().scrub_nonfinite();
-        built_and_left_out(&mut report, scene, self.world.as_ref(), &self.stage);
-        report
-    }
-}
-
-/// Requirement 3: what the scene made the stage build, and leave out.
-fn built_and_left_out(
-    report: &mut Report,
-    scene: &Scene,
-    world: Option<&(World, f64)>,
-    stage: &GlobalIllumination,
-) {
-    let (b, l) = (&mut report.built, &mut report.left_out);
-    match world.and_then(|(w, s)| w.wide.as_ref().map(|wide| (w, wide, *s))) {
-        Some((w, wide, s)) => b.push(format!(
-            "chapter 3's BVH, 4 wide, over {} triangles ({} nodes, {} leaves; world built in {})",
-            w.triangles.tris.len(),
-            wide.node_count(),
-            wide.leaf_count(),
-            format_seconds(s)
-        )),
-        None => l.push("BVH: the scene has no meshes".into()),
-    }
-    if scene.sdfs.is_empty() {
-        l.push("sphere tracing: the scene has no SDFs".into());
-    } else {
-        b.push(format!(
-            "chapter 4's sphere tracing for {} SDF objects",
-            scene.sdfs.len()
-        ));
-    }
-    let lights = world.map(|(w, _)| &w.lights);
-    let n_lights = lights.map_or(0, |l| l.lights.len());
-    let samples_lights = matches!(
-        stage.path.estimator,
-        Estimator::LightSampling | Estimator::Mis
-    );
-    if n_lights == 0 {
-        l.push("light sampling: the scene has no lights or emitters (paths find light only by hitting it)".into());
-    } else if samples_lights {
-        let env = lights.is_some_and(|l| l.environment.is_some());
-        b.push(format!(
-            "light sampling over {n_lights} lights{}",
-            if env {
-                " (the environment sampled by cosine)"
-            } else {
-                ""
-            }
-        ));
-    } else {
-        l.push(format!(
-            "light sampling: the {} estimator does not sample lights",
-            stage.path.estimator.name()
-        ));
-    }
-    if stage.layers {
-        b.push(format!(
-            "per-bounce layers: E, k = 0..{LAYERS_SHOWN}, beyond ({LAYER_SLOTS} sums per pixel)"
-        ));
-    } else {
-        l.push("per-bounce layers: only the final image was asked for".into());
-    }
-    if scene
-        .materials
-        .iter()
-        .any(|m| m.kind == MaterialKind::Glass)
-    {
-        b.push("smooth dielectric (Fresnel reflection, Snell refraction)".into());
-    } else {
-        l.push("dielectric: no glass in the scene".into());
+        Ok(files)
     }
 }

@@ -14,6 +14,25 @@ use std::path::Path;
 use crate::core::error::Result;
 use crate::core::film::write_atomically;
 
+/// A point or vector as `(x, y, z)`, each number as [`format_number`].
+pub fn format_vec3(v: glam::DVec3) -> String {
+    format!(
+        "({}, {}, {})",
+        format_number(v.x),
+        format_number(v.y),
+        format_number(v.z)
+    )
+}
+
+/// A 2D point as `(x, y)`, each number as [`format_number`].
+pub fn format_vec2(v: glam::Vec2) -> String {
+    format!(
+        "({}, {})",
+        format_number(v.x as f64),
+        format_number(v.y as f64)
+    )
+}
+
 /// One measured run of one variant.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Measurement {
@@ -56,13 +75,19 @@ impl ErrorTime {
     /// Least-squares slope of log(error) against log(time) for one series,
     /// over rows with non-zero error; `None` with fewer than two such rows.
     pub fn slope(&self, series: &str) -> Option<f64> {
+        self.fit(series).map(|f| f.slope)
+    }
+
+    /// The least-squares line through one series on log-log axes: log
+    /// error against log seconds.
+    pub fn fit(&self, series: &str) -> Option<LogLogFit> {
         let pts: Vec<(f64, f64)> = self
             .rows
             .iter()
             .filter(|r| r.series == series && r.error > 0.0 && r.seconds > 0.0)
             .map(|r| (r.seconds.ln(), r.error.ln()))
             .collect();
-        log_log_slope(&pts)
+        LogLogFit::through(&pts)
     }
 
     /// The series names, in order of first appearance.
@@ -98,17 +123,60 @@ impl ErrorTime {
 
 /// Slope of the least-squares line through (x, y) points.
 pub fn log_log_slope(pts: &[(f64, f64)]) -> Option<f64> {
-    if pts.len() < 2 {
-        return None;
+    LogLogFit::through(pts).map(|f| f.slope)
+}
+
+/// A straight line through points on log-log axes, ln y = a + slope · ln x,
+/// with the range of ln x it was fitted over.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LogLogFit {
+    /// The slope (−1/2 for a Monte Carlo estimator against time).
+    pub slope: f64,
+    /// ln y at ln x = 0.
+    pub intercept: f64,
+    /// The smallest and largest ln x fitted.
+    pub ln_x_range: (f64, f64),
+    /// How many points.
+    pub points: usize,
+}
+
+impl LogLogFit {
+    /// The least-squares line through `(ln x, ln y)` points; `None` for
+    /// fewer than two points or when all share one x.
+    pub fn through(pts: &[(f64, f64)]) -> Option<LogLogFit> {
+        if pts.len() < 2 {
+            return None;
+        }
+        let n = pts.len() as f64;
+        let (mx, my) = (
+            pts.iter().map(|p| p.0).sum::<f64>() / n,
+            pts.iter().map(|p| p.1).sum::<f64>() / n,
+        );
+        let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+        let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+        if sxx <= 0.0 {
+            return None;
+        }
+        let slope = sxy / sxx;
+        let lo = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min);
+        let hi = pts.iter().map(|p| p.0).fold(f64::NEG_INFINITY, f64::max);
+        Some(LogLogFit {
+            slope,
+            intercept: my - slope * mx,
+            ln_x_range: (lo, hi),
+            points: pts.len(),
+        })
     }
-    let n = pts.len() as f64;
-    let (mx, my) = (
-        pts.iter().map(|p| p.0).sum::<f64>() / n,
-        pts.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    (sxx > 0.0).then(|| sxy / sxx)
+
+    /// The x at which the line reaches `y`, and whether that lies beyond
+    /// the fitted range (an extrapolation); `None` unless the line falls.
+    pub fn x_at(&self, y: f64) -> Option<(f64, bool)> {
+        if self.slope >= 0.0 {
+            return None;
+        }
+        let ln_x = (y.ln() - self.intercept) / self.slope;
+        Some((ln_x.exp(), ln_x > self.ln_x_range.1))
+    }
 }
 
 fn csv(s: &str) -> String {

@@ -74,6 +74,12 @@ impl CommonArgs {
             None => Ok(Scene::builtin()),
         }
     }
+
+    /// [`CommonArgs::load_scene`] at the size `--width` and `--height` ask
+    /// for (the scene's own where they are missing).
+    pub fn load_sized_scene(&self) -> Result<Scene> {
+        sized(self.load_scene()?, self.width, self.height)
+    }
 }
 
 /// Sets the size of rayon's global pool (once per process).
@@ -118,13 +124,7 @@ pub fn run_headless(
             scene.source
         )));
     }
-    let scene = match (settings.width, settings.height) {
-        (None, None) => scene,
-        (w_, h_) => {
-            let (w0, h0) = (scene.camera.width, scene.camera.height);
-            scene.with_resolution(w_.unwrap_or(w0), h_.unwrap_or(h0))?
-        }
-    };
+    let scene = sized(scene, settings.width, settings.height)?;
     let stem = format!("ch{}-{}", chapter.number(), scene.name);
     let start = Instant::now();
     let mut render = chapter.start(Arc::new(scene), settings)?;
@@ -162,6 +162,7 @@ pub fn run_headless(
         }
     }
     let report = render.report();
+    files.extend(render.extra_files(&report, out, &stem)?);
     report.write_csv(out, &stem)?;
     if report.error_vs_time.is_some() {
         files.push(out.join(format!("{stem}.csv")));
@@ -193,6 +194,17 @@ pub fn run_headless(
         seconds,
         stable: report.all_stable(),
     })
+}
+
+/// `scene` at `width` x `height`, each the scene's own where `None`.
+fn sized(scene: Scene, width: Option<u32>, height: Option<u32>) -> Result<Scene> {
+    match (width, height) {
+        (None, None) => Ok(scene),
+        (w, h) => {
+            let (w0, h0) = (scene.camera.width, scene.camera.height);
+            scene.with_resolution(w.unwrap_or(w0), h.unwrap_or(h0))
+        }
+    }
 }
 
 /// The whole `main` of a chapter binary.

@@ -49,11 +49,7 @@ pub struct View {
 /// View `index` of a render's films, or a black film of the camera's size
 /// before the first pass; any NaN or Inf scrubbed out. The common body of
 /// [`Render::view`] for stages that keep one film per view.
-pub fn view_of(
-    films: &[Film],
-    index: usize,
-    camera: &crate::ch1_projection::camera::Camera,
-) -> Film {
+pub fn view_of(films: &[Film], index: usize, camera: &crate::scene::camera::CameraDesc) -> Film {
     let mut film = films
         .get(index)
         .cloned()
@@ -145,5 +141,19 @@ pub trait Render: Send {
     /// count. Stages count cheaply (e.g. per pass: pixels × samples done).
     fn rays(&self) -> u64 {
         0
+    }
+
+    /// Files a headless run writes besides the views (and the EXR of a
+    /// radiance image): chapter 6's bounce strip and layers, say. `report`
+    /// is the report the run is about to print, so figures of its studies
+    /// need not run them again. Returns the paths written; none by default.
+    fn extra_files(
+        &self,
+        report: &Report,
+        dir: &std::path::Path,
+        stem: &str,
+    ) -> Result<Vec<std::path::PathBuf>> {
+        let _ = (report, dir, stem);
+        Ok(Vec::new())
     }
 }

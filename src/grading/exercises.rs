@@ -4,7 +4,7 @@
 
 #![allow(unused_variables)]
 
-use crate::grading::Exercise;
+use crate::grading::exercise::Exercise;
 
 #[path = "../../chapters/ch1-projection/exercises/mod.rs"]
 pub mod ch1;

@@ -5,20 +5,22 @@
 //! (OBJ through tobj) or generated, transformed to world space, and bound to
 //! materials. Nothing is built for a section the file does not mention.
 
+pub mod camera;
 pub mod file;
 pub mod mesh;
 pub mod obj;
+pub mod sdf;
 pub mod sdf_parse;
 
 use std::path::{Path, PathBuf};
 
 use glam::{DVec3, Mat4, Quat, Vec3};
 
-use crate::ch1_projection::camera::{Camera, CameraDesc};
-use crate::ch4_implicit_surfaces::sdf::SdfObject;
 use crate::core::error::{Error, Result};
 use crate::scene::mesh::Mesh;
+use camera::CameraDesc;
 use file::{LightSection, MaterialKind, ObjectSection, Scale, SceneFile, Shape};
+use sdf::SdfObject;
 
 /// A material, ready to render.
 #[derive(Clone, Debug, PartialEq)]
@@ -80,8 +82,9 @@ pub struct Scene {
     pub name: String,
     /// Where it came from: a path, or `<built-in>`.
     pub source: String,
-    /// The camera.
-    pub camera: Camera,
+    /// The camera, as the file describes it (checked: chapter 1 builds a
+    /// [`crate::ch1_projection::camera::Camera`] from it).
+    pub camera: CameraDesc,
     /// Meshes in world space.
     pub meshes: Vec<Mesh>,
     /// Materials used by at least one mesh or SDF object; unused ones are
@@ -241,15 +244,15 @@ fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result
 
     // Camera.
     let c = &file.camera;
-    let camera = Camera::new(CameraDesc {
+    let camera = CameraDesc {
         eye: DVec3::from(c.eye),
         target: DVec3::from(c.target),
         up: DVec3::from(c.up),
         fov_degrees: c.fov,
         width: c.width,
         height: c.height,
-    })
-    .map_err(|e| {
+    };
+    camera.check().map_err(|e| {
         scene_err(
             "[camera]".into(),
             e.to_string().trim_start_matches("camera: ").into(),

@@ -10,7 +10,7 @@
 use glam::{Quat, Vec3};
 use toml::{Table, Value};
 
-use crate::ch4_implicit_surfaces::sdf::{ScaleBound, Sdf};
+use super::sdf::{ScaleBound, Sdf};
 
 /// An error: (key path, message).
 pub type ParseError = (String, String);

@@ -8,8 +8,8 @@ use glam::{Mat4, Vec2, Vec3};
 use crate::ch1_projection::camera::{
     camera_from_world_look_at, project_pinhole, Camera, CameraDesc,
 };
-use crate::ch1_projection::stage::draw_scene;
-use crate::grading::{Check, Exercise, Solution};
+use crate::ch1_projection::wireframe::draw_scene;
+use crate::grading::exercise::{Check, Exercise, Solution};
 use crate::scene::Material;
 
 /// Chapter 1's exercises, in order.

@@ -8,7 +8,7 @@ use glam::{Vec2, Vec3};
 
 use crate::ch2_rasterization::depth;
 use crate::ch2_rasterization::edge;
-use crate::grading::{Check, Exercise, Solution};
+use crate::grading::exercise::{Check, Exercise, Solution};
 
 /// Chapter 2's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {

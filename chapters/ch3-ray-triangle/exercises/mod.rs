@@ -9,7 +9,7 @@ use glam::Vec3;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
 use crate::core::sampling::random;
-use crate::grading::{Check, Exercise, Solution};
+use crate::grading::exercise::{Check, Exercise, Solution};
 
 /// Barycentric (u, v).
 pub type Uv = (f32, f32);

@@ -11,7 +11,7 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch4_implicit_surfaces::march::{self, March};
 use crate::ch4_implicit_surfaces::normal::gradient_central;
 use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere, sd_torus};
-use crate::grading::{Check, Exercise, Solution};
+use crate::grading::exercise::{Check, Exercise, Solution};
 
 /// The candidate types.
 type SdfFn = fn(Vec3, Vec3, f32) -> f32;

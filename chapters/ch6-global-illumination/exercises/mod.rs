@@ -10,7 +10,7 @@ pub mod russian_roulette;
 
 use super::worst_of;
 use crate::core::sampling::random;
-use crate::grading::{Check, Exercise, Solution};
+use crate::grading::exercise::{Check, Exercise, Solution};
 
 type IntegralFn = fn(&dyn Fn(f64) -> f64, f64, f64, &[f64]) -> f64;
 type RouletteFn = fn(f64, f64, f64) -> f64;

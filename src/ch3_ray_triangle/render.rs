@@ -1,0 +1,103 @@
+//! Ray casting a whole image: for every pixel (and every sample in it) a
+//! primary ray leaves chapter 1's camera, and the closest triangle along it
+//! is found, through the BVH or by the naive loop over every triangle.
+//! Pixels are independent, so rows are traced in parallel with rayon; every
+//! sample position comes from (seed, pixel, sample), so the image is the
+//! same bytes on any number of threads.
+
+use glam::{Vec2, Vec3};
+use rayon::prelude::*;
+
+use super::bvh::closest_naive;
+use super::geometry::{shade, Geometry};
+use super::ray::Ray;
+use super::triangle::{Hit, Intersector};
+use crate::ch1_projection::camera::Camera;
+use crate::core::film::Film;
+use crate::core::sampling::Sampler;
+
+/// Where sample `sample` of pixel (x, y) lies in raster coordinates: the
+/// pixel's centre with one sample per pixel, else a uniform random point.
+pub fn sample_position(x: u32, y: u32, width: u32, spp: u32, seed: u64, sample: u32) -> Vec2 {
+    let base = Vec2::new(x as f32, y as f32);
+    if spp <= 1 {
+        return base + 0.5;
+    }
+    let pixel = y as u64 * width as u64 + x as u64;
+    base + Sampler::new(seed, pixel, sample as u64).next2()
+}
+
+/// Counts from tracing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TraceStats {
+    /// Primary rays traced.
+    pub rays: u64,
+    /// Rays that hit a triangle.
+    pub hits: u64,
+}
+
+/// Sums the four views over samples `samples` of every pixel, tracing rows
+/// in parallel: `trace` returns the first hit along a ray.
+// ANCHOR: render_rows
+pub fn render_sum(
+    camera: &Camera,
+    geometry: &Geometry,
+    samples: std::ops::Range<u32>,
+    spp: u32,
+    seed: u64,
+    trace: &(dyn Fn(&Ray) -> Option<Hit> + Sync),
+) -> (Vec<[Vec3; 4]>, TraceStats) {
+    let (w, h) = (camera.width, camera.height);
+    let mut sums = vec![[Vec3::ZERO; 4]; w as usize * h as usize];
+    let hits: u64 = sums
+        .par_chunks_mut(w as usize)
+        .enumerate()
+        .map(|(y, row)| {
+            let mut hits = 0;
+            for (x, px) in row.iter_mut().enumerate() {
+                for s in samples.clone() {
+                    let raster = sample_position(x as u32, y as u32, w, spp, seed, s);
+                    let hit = trace(&camera.ray(raster));
+                    hits += u64::from(hit.is_some());
+                    for (acc, v) in px.iter_mut().zip(shade(geometry, hit)) {
+                        *acc += v;
+                    }
+                }
+            }
+            hits
+        })
+        .sum();
+    let rays = w as u64 * h as u64 * samples.len() as u64;
+    (sums, TraceStats { rays, hits })
+}
+// ANCHOR_END: render_rows
+
+/// Turns summed views into films by dividing by the sample count.
+pub fn films_from_sums(camera: &Camera, sums: &[[Vec3; 4]], samples: u32) -> Vec<Film> {
+    (0..4)
+        .map(|v| {
+            let mut f = Film::new(camera.width, camera.height);
+            for (p, s) in f.pixels.iter_mut().zip(sums) {
+                *p = s[v] / samples.max(1) as f32;
+            }
+            f
+        })
+        .collect()
+}
+
+/// Renders all four views with `spp` samples through the BVH.
+pub fn render_views(camera: &Camera, geometry: &Geometry, spp: u32, seed: u64) -> Vec<Film> {
+    let (sums, _) = render_sum(camera, geometry, 0..spp, spp, seed, &|r| {
+        geometry.closest(r)
+    });
+    films_from_sums(camera, &sums, spp)
+}
+
+/// Renders the views with the naive loop over every triangle instead.
+pub fn render_views_naive(camera: &Camera, geometry: &Geometry, spp: u32, seed: u64) -> Vec<Film> {
+    let tris = &geometry.triangles.tris;
+    let (sums, _) = render_sum(camera, geometry, 0..spp, spp, seed, &|r| {
+        closest_naive(tris, r, f32::INFINITY, Intersector::Watertight)
+    });
+    films_from_sums(camera, &sums, spp)
+}

@@ -1,0 +1,164 @@
+//! What chapter 4 prints: the march settings, what the rays met (SDF hits,
+//! mesh hits, escapes, step budgets), the Eikonal check and, with
+//! `--report`, the studies.
+
+use super::eikonal::eikonal_check;
+use super::march::March;
+use super::normal::NormalScheme;
+use super::render::Method;
+use super::render::{Pixel, TraceStats};
+use crate::ch3_ray_triangle::geometry::Geometry;
+use crate::core::film::Film;
+use crate::core::report::{format_number, format_seconds, Report, Table};
+use crate::core::stage::Settings;
+use crate::scene::Scene;
+
+/// The chapter's report on a traced image.
+pub fn chapter_report(
+    march: &March,
+    method: Method,
+    normals: NormalScheme,
+    scene: &Scene,
+    settings: &Settings,
+    pixels: &[Pixel],
+    films: &[Film],
+    seconds: f64,
+    geometry: Option<&(Geometry, f64)>,
+) -> Report {
+    let cam = &scene.camera;
+    let m = march;
+    let stats = TraceStats::of(pixels);
+    let n = pixels.len().max(1) as f64;
+    let nonfinite: u64 = films.iter().map(|f| f.clone().scrub_nonfinite()).sum();
+    let mut report = Report {
+        title: format!("ch4 sphere tracing: {}", scene.name),
+        facts: vec![
+            ("scene".into(), scene.source.clone()),
+            (
+                "image".into(),
+                format!(
+                    "{}x{} pixels, one ray through each pixel centre",
+                    cam.width, cam.height
+                ),
+            ),
+            (
+                "march".into(),
+                format!(
+                    "{}, ε = {}, step budget {}, max distance {}, step factor {}, {} normals",
+                    method.describe(),
+                    format_number(m.epsilon as f64),
+                    m.max_steps,
+                    format_number(m.max_distance as f64),
+                    format_number(m.step_factor as f64),
+                    match normals {
+                        NormalScheme::Central => "central-difference (6 taps)",
+                        NormalScheme::Tetrahedron => "tetrahedron (4 taps)",
+                    }
+                ),
+            ),
+            (
+                "rays".into(),
+                format!(
+                    "{} hit, {} escaped, {} ran out of steps ({:.2}%), {} started inside",
+                    stats.hits,
+                    stats.escaped,
+                    stats.budget,
+                    100.0 * stats.budget as f64 / n,
+                    stats.inside
+                ),
+            ),
+            (
+                "steps".into(),
+                format!(
+                    "{} evaluations of f, {:.1} per ray on average, at most {}; {} oversteps; \
+                     {} steps where f changed faster than the ray moved (not 1-Lipschitz)",
+                    stats.evaluations,
+                    stats.evaluations as f64 / n,
+                    stats.max_steps,
+                    stats.oversteps,
+                    stats.lipschitz_violations
+                ),
+            ),
+            ("render time".into(), format_seconds(seconds)),
+        ],
+        nonfinite_caught: nonfinite + stats.nonfinite as u64,
+        ..Report::default()
+    };
+
+    // What the scene led the stage to build and to leave out.
+    report.built.push("camera rays".into());
+    if scene.sdfs.is_empty() {
+        report
+            .left_out
+            .push("SDF evaluation: the scene has no [[sdfs]] (0 evaluations of f)".into());
+    } else {
+        report.built.push(format!(
+            "sphere tracer over {} SDF objects ({} evaluations of f)",
+            scene.sdfs.len(),
+            stats.evaluations
+        ));
+    }
+    match geometry {
+        None => report
+            .left_out
+            .push("meshes and BVH: the scene has no meshes, none loaded, no BVH built".into()),
+        Some((g, build_seconds)) => report.built.push(format!(
+            "chapter 3's BVH over {} meshes ({} triangles, {} nodes, built in {}): \
+             mesh hits meet SDF hits in nearest_hit",
+            scene.meshes.len(),
+            scene.triangle_count(),
+            g.bvh.as_ref().map_or(0, |b| b.node_count()),
+            format_seconds(*build_seconds)
+        )),
+    }
+    report.left_out.push(match scene.lights.len() {
+        0 => "lights: the scene has none; shading is a headlight".into(),
+        k => format!("{k} lights: chapter 4 shades with a headlight"),
+    });
+    report
+        .left_out
+        .push("sampling: one ray per pixel centre (--spp ignored)".into());
+    if settings.spp != 1 {
+        report.facts.push((
+            "note".into(),
+            format!("--spp {} has no effect in chapter 4", settings.spp),
+        ));
+    }
+
+    if !scene.sdfs.is_empty() {
+        let mut t = Table::new(
+            "Eikonal check: ‖∇f‖ sampled over each object's bounds (4096 points)",
+            &[
+                "object",
+                "built from",
+                "declared",
+                "L",
+                "min",
+                "1%",
+                "99%",
+                "max",
+                "verdict",
+            ],
+        );
+        for row in eikonal_check(&scene.sdfs) {
+            let r = &row.range;
+            t.row(vec![
+                row.name,
+                row.construction,
+                row.declared.word().into(),
+                format_number(row.lipschitz as f64),
+                format_number(r.min as f64),
+                format_number(r.p01 as f64),
+                format_number(r.p99 as f64),
+                format_number(r.max as f64),
+                r.verdict().into(),
+            ]);
+        }
+        report.tables.push(t);
+    }
+    if settings.studies {
+        report.error_vs_time = Some(super::studies::error_against_time());
+        report.stability = super::stability::stability_cases();
+    }
+    report
+}

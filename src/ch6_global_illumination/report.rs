@@ -1,0 +1,204 @@
+//! What chapter 6 prints: the render's settings and counts, its error
+//! against the stored reference, the mean of every bounce layer, what the
+//! scene made the stage build or leave out and, with `--report`, the
+//! studies.
+
+use glam::Vec3;
+
+use super::accumulate::Accumulator;
+use super::integrator::{Estimator, PathSettings, LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
+use super::sampler::SamplerKind;
+use super::stability::stability_cases;
+use super::studies::{error_against_time, strategy_table};
+use crate::ch5_reflection::world::World;
+use crate::core::report::{format_number, format_seconds, Report, Table};
+use crate::core::stage::Settings;
+use crate::scene::file::MaterialKind;
+use crate::scene::Scene;
+
+/// What a chapter-6 render has to say for itself.
+pub struct ReportInputs<'a> {
+    /// The scene rendered.
+    pub scene: &'a Scene,
+    /// The command's settings.
+    pub settings: &'a Settings,
+    /// Estimator, bounce limit, roulette.
+    pub path: PathSettings,
+    /// Where the random numbers came from.
+    pub sampler: SamplerKind,
+    /// Whether per-bounce layers were kept.
+    pub layers: bool,
+    /// The sums so far.
+    pub acc: &'a Accumulator,
+    /// The world and the seconds it took to build, once built.
+    pub world: Option<&'a (World, f64)>,
+    /// Seconds spent rendering passes.
+    pub seconds: f64,
+    /// RMSE against the stored reference and the reference's size.
+    pub reference_rmse: Option<(f64, u32, u32)>,
+}
+
+/// The chapter's report.
+pub fn chapter_report(r: &ReportInputs) -> Report {
+    let scene = r.scene;
+    let acc = r.acc;
+    let st = &acc.stats;
+    let mut report = Report {
+        title: format!("ch6 global illumination: {}", scene.name),
+        ..Report::default()
+    };
+    let facts = [
+        ("resolution", format!("{}x{}", acc.width, acc.height)),
+        ("samples per pixel", acc.samples.to_string()),
+        (
+            "estimator",
+            format!("{} ({} numbers)", r.path.estimator.name(), r.sampler.name()),
+        ),
+        (
+            "max bounces",
+            r.path
+                .max_bounces
+                .map_or("unlimited (Russian roulette ends paths)".into(), |k| {
+                    k.to_string()
+                }),
+        ),
+        (
+            "Russian roulette",
+            format!("after {} scatterings", r.path.rr_min_scatterings),
+        ),
+        ("paths", st.paths.to_string()),
+        ("rays (segments and shadow rays)", st.rays.to_string()),
+        ("render time", format_seconds(r.seconds)),
+        (
+            "paths/s",
+            format_number(st.paths as f64 / r.seconds.max(1e-9)),
+        ),
+        (
+            "rays/s",
+            format_number(st.rays as f64 / r.seconds.max(1e-9)),
+        ),
+    ];
+    report.facts = facts.into_iter().map(|(k, v)| (k.to_string(), v)).collect();
+    if st.cut > 0 {
+        report.facts.push((
+            "paths cut at the safety limit".into(),
+            format!("{} of {}", st.cut, st.paths),
+        ));
+    }
+    if let Some((e, w, h)) = r.reference_rmse {
+        report.facts.push((
+            "RMSE against the stored reference".into(),
+            format!(
+                "{} (at {w}x{h}, image box-downsampled to it)",
+                format_number(e),
+            ),
+        ));
+    }
+    if acc.layers.is_some() {
+        let mut t = Table::new(
+            "Mean radiance per bounce layer (E: emitters seen directly; k: k + 1 scatterings)",
+            &["layer", "mean R", "mean G", "mean B"],
+        );
+        for slot in 0..LAYER_SLOTS {
+            let f = acc.layer(slot).expect("layers kept");
+            let m = f.pixels.iter().sum::<Vec3>() / f.pixels.len().max(1) as f32;
+            let name = match slot {
+                0 => "E".to_string(),
+                SLOT_BEYOND => format!("> {LAYERS_SHOWN}"),
+                s => (s - 1).to_string(),
+            };
+            t.row(vec![
+                name,
+                format_number(m.x as f64),
+                format_number(m.y as f64),
+                format_number(m.z as f64),
+            ]);
+        }
+        report.tables.push(t);
+    }
+    // Dropped contributions, and any non-finite pixel left in the sums.
+    report.nonfinite_caught = st.nonfinite + acc.mean().scrub_nonfinite();
+    built_and_left_out(&mut report, r);
+    if r.settings.studies {
+        add_studies(&mut report, r.settings);
+    }
+    report
+}
+
+/// Requirement 3: what the scene made the stage build, and leave out.
+fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
+    let (scene, world) = (r.scene, r.world);
+    let (b, l) = (&mut report.built, &mut report.left_out);
+    match world.and_then(|(w, s)| w.wide.as_ref().map(|wide| (w, wide, *s))) {
+        Some((w, wide, s)) => b.push(format!(
+            "chapter 3's BVH, 4 wide, over {} triangles ({} nodes, {} leaves; world built in {})",
+            w.triangles.tris.len(),
+            wide.node_count(),
+            wide.leaf_count(),
+            format_seconds(s)
+        )),
+        None => l.push("BVH: the scene has no meshes".into()),
+    }
+    if scene.sdfs.is_empty() {
+        l.push("sphere tracing: the scene has no SDFs".into());
+    } else {
+        b.push(format!(
+            "chapter 4's sphere tracing for {} SDF objects",
+            scene.sdfs.len()
+        ));
+    }
+    let lights = world.map(|(w, _)| &w.lights);
+    let n_lights = lights.map_or(0, |l| l.lights.len());
+    let samples_lights = matches!(r.path.estimator, Estimator::LightSampling | Estimator::Mis);
+    if n_lights == 0 {
+        l.push("light sampling: the scene has no lights or emitters (paths find light only by hitting it)".into());
+    } else if samples_lights {
+        let env = lights.is_some_and(|l| l.environment.is_some());
+        b.push(format!(
+            "light sampling over {n_lights} lights{}",
+            if env {
+                " (the environment sampled by cosine)"
+            } else {
+                ""
+            }
+        ));
+    } else {
+        l.push(format!(
+            "light sampling: the {} estimator does not sample lights",
+            r.path.estimator.name()
+        ));
+    }
+    if r.layers {
+        b.push(format!(
+            "per-bounce layers: E, k = 0..{LAYERS_SHOWN}, beyond ({LAYER_SLOTS} sums per pixel)"
+        ));
+    } else {
+        l.push("per-bounce layers: only the final image was asked for".into());
+    }
+    if scene
+        .materials
+        .iter()
+        .any(|m| m.kind == MaterialKind::Glass)
+    {
+        b.push("smooth dielectric (Fresnel reflection, Snell refraction)".into());
+    } else {
+        l.push("dielectric: no glass in the scene".into());
+    }
+}
+
+/// Adds the studies to a report: error against time, the strategy table
+/// and the stiff cases. Below 16 spp (a quick run, such as the main
+/// program's tour of every chapter) they run small: 2 spp per series and
+/// the tests' sizes; otherwise up to `spp` (at most 64) per series.
+fn add_studies(report: &mut Report, settings: &Settings) {
+    let quick = settings.spp < 16;
+    let max_spp = if quick {
+        2
+    } else {
+        settings.spp.min(64).next_power_of_two()
+    };
+    let et = error_against_time(max_spp);
+    report.tables.push(strategy_table(&et));
+    report.error_vs_time = Some(et);
+    report.stability = stability_cases(quick);
+}

@@ -1,0 +1,487 @@
+//! The source layout keeps its promises (`src/lib.rs`, "The layout"):
+//! imports only go down, there are no file-level import cycles, every
+//! chapter folder has the same shape, and files stay small enough to read.
+//!
+//! The import graph is read from the source text: every `use` tree and
+//! every inline `crate::…` or `super::…` path outside comments, strings
+//! and `#[cfg(test)]` modules, resolved to the file that defines it.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Every `.rs` file under `src/`, as a path relative to `src/`.
+fn sources() -> Vec<String> {
+    fn walk(dir: &Path, base: &Path, out: &mut Vec<String>) {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                walk(&p, base, out);
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                out.push(
+                    p.strip_prefix(base)
+                        .unwrap()
+                        .to_string_lossy()
+                        .replace('\\', "/"),
+                );
+            }
+        }
+    }
+    let src = root().join("src");
+    let mut out = Vec::new();
+    walk(&src, &src, &mut out);
+    out.sort();
+    out
+}
+
+/// The module path of a source file (`ch3_ray_triangle/bvh.rs` →
+/// `["ch3_ray_triangle", "bvh"]`, `core/mod.rs` → `["core"]`).
+fn module_of(file: &str) -> Vec<String> {
+    let mut parts: Vec<String> = file
+        .trim_end_matches(".rs")
+        .split('/')
+        .map(String::from)
+        .collect();
+    if parts.last().is_some_and(|p| p == "mod" || p == "lib") {
+        parts.pop();
+    }
+    parts
+}
+
+/// The source text without comments, string and char literals, and
+/// without anything from the first `#[cfg(test)]` on.
+fn code_of(text: &str) -> String {
+    let text = match text.find("#[cfg(test)]") {
+        Some(i) => &text[..i],
+        None => text,
+    };
+    let b = text.as_bytes();
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    while i < b.len() {
+        if b[i..].starts_with(b"//") {
+            while i < b.len() && b[i] != b'\n' {
+                i += 1;
+            }
+        } else if b[i..].starts_with(b"/*") {
+            let end = text[i + 2..].find("*/").map_or(b.len(), |e| i + 2 + e + 2);
+            i = end;
+        } else if b[i] == b'"' {
+            i += 1;
+            while i < b.len() && b[i] != b'"' {
+                i += if b[i] == b'\\' { 2 } else { 1 };
+            }
+            i += 1;
+            out.push_str("\"\"");
+        } else if b[i] == b'\'' && i + 2 < b.len() && (b[i + 2] == b'\'' || b[i + 1] == b'\\') {
+            // A char literal ('a', '\n'); lifetimes ('a without a closing quote) stay.
+            let end = text[i + 1..].find('\'').map_or(b.len(), |e| i + 1 + e + 1);
+            i = end;
+        } else {
+            let ch = text[i..].chars().next().unwrap();
+            out.push(ch);
+            i += ch.len_utf8();
+        }
+    }
+    out
+}
+
+/// Expands a `use` tree (`a::{b, c::{d, e}}`) into its full paths.
+fn expand_use(tree: &str) -> Vec<String> {
+    // Drop `as alias` renames, keeping any `,` or `}` that follows the alias.
+    let mut kept = Vec::new();
+    let mut tokens = tree.split_whitespace();
+    while let Some(t) = tokens.next() {
+        if t == "as" {
+            if let Some(alias) = tokens.next() {
+                kept.push(alias.trim_start_matches(|c: char| c.is_alphanumeric() || c == '_'));
+            }
+        } else {
+            kept.push(t);
+        }
+    }
+    let tree: String = kept.concat();
+    fn go(prefix: &str, t: &str, out: &mut Vec<String>) {
+        match t.find('{') {
+            None => {
+                for part in split_top(t) {
+                    out.push(format!("{prefix}{part}"));
+                }
+            }
+            Some(open) => {
+                let head = &t[..open];
+                let close = t.rfind('}').unwrap();
+                for part in split_top(&t[open + 1..close]) {
+                    if part.is_empty() {
+                        continue;
+                    }
+                    if part.contains('{') {
+                        go(&format!("{prefix}{head}"), part, out);
+                    } else {
+                        out.push(format!("{prefix}{head}{part}"));
+                    }
+                }
+            }
+        }
+    }
+    fn split_top(s: &str) -> Vec<&str> {
+        let (mut depth, mut start, mut parts) = (0, 0, Vec::new());
+        for (i, c) in s.char_indices() {
+            match c {
+                '{' => depth += 1,
+                '}' => depth -= 1,
+                ',' if depth == 0 => {
+                    parts.push(&s[start..i]);
+                    start = i + 1;
+                }
+                _ => {}
+            }
+        }
+        parts.push(&s[start..]);
+        parts
+    }
+    let mut out = Vec::new();
+    go("", &tree, &mut out);
+    out
+}
+
+/// The crate-relative module paths (as segment lists) that `code`, the
+/// code of the module at `module`, refers to.
+fn referenced_paths(code: &str, module: &[String], is_mod_file: bool) -> Vec<Vec<String>> {
+    // `super` of a file `a/b.rs` is `a`; of `a/b/mod.rs` it is `a` too
+    // (mod.rs is module a::b, whose parent is a).
+    let _ = is_mod_file;
+    let resolve = |path: &str| -> Option<Vec<String>> {
+        let segs: Vec<&str> = path.split("::").filter(|s| !s.is_empty()).collect();
+        let mut base: Vec<String> = match segs.first() {
+            Some(&"crate") => Vec::new(),
+            Some(&"super") => {
+                let mut m = module.to_vec();
+                m.pop();
+                m
+            }
+            Some(&"self") => module.to_vec(),
+            _ => return None,
+        };
+        let mut rest = &segs[1..];
+        while rest.first() == Some(&"super") {
+            base.pop();
+            rest = &rest[1..];
+        }
+        base.extend(rest.iter().map(|s| s.to_string()));
+        Some(base)
+    };
+    let mut out = Vec::new();
+    // `use` statements.
+    let mut rest = code;
+    while let Some(i) = rest.find("use ") {
+        let before_ok = i == 0
+            || !rest.as_bytes()[i - 1].is_ascii_alphanumeric() && rest.as_bytes()[i - 1] != b'_';
+        let after = &rest[i + 4..];
+        let end = after.find(';').unwrap_or(after.len());
+        if before_ok {
+            for p in expand_use(&after[..end]) {
+                if let Some(r) = resolve(&p) {
+                    out.push(r);
+                }
+            }
+        }
+        rest = &after[end.min(after.len())..];
+    }
+    // Inline paths.
+    for start in ["crate::", "super::"] {
+        let mut from = 0;
+        while let Some(i) = code[from..].find(start) {
+            let at = from + i;
+            let prev = code[..at].chars().next_back();
+            let inline = !matches!(prev, Some(c) if c.is_alphanumeric() || c == '_' || c == ':');
+            let end = code[at..]
+                .find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':'))
+                .map_or(code.len(), |e| at + e);
+            // `crate::a::{b, c}` is read with the `use` trees above.
+            if inline && !code[at..end].ends_with("::") {
+                if let Some(r) = resolve(&code[at..end]) {
+                    out.push(r);
+                }
+            }
+            from = end.max(at + 1);
+        }
+    }
+    out
+}
+
+/// The import graph: file → files it refers to (itself excluded).
+fn graph() -> BTreeMap<String, BTreeSet<String>> {
+    let files = sources();
+    let by_module: BTreeMap<Vec<String>, String> =
+        files.iter().map(|f| (module_of(f), f.clone())).collect();
+    let mut g = BTreeMap::new();
+    for f in &files {
+        let text = std::fs::read_to_string(root().join("src").join(f)).unwrap();
+        let module = module_of(f);
+        let mut deps = BTreeSet::new();
+        for path in referenced_paths(&code_of(&text), &module, f.ends_with("mod.rs")) {
+            // The longest prefix of the path that is a file.
+            for n in (1..=path.len()).rev() {
+                if let Some(target) = by_module.get(&path[..n]) {
+                    if target != f {
+                        deps.insert(target.clone());
+                    }
+                    break;
+                }
+            }
+        }
+        g.insert(f.clone(), deps);
+    }
+    g
+}
+
+/// What a file is, for the import rule.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Place {
+    /// `core/`: film, report, plots, sampling, the stage boundary, the runner.
+    Core,
+    /// `scene/`: scene file → Scene.
+    Scene,
+    /// A lesson file of chapter N (the slides' algorithms).
+    Lesson(u32),
+    /// Chapter N's stage, report, studies, stability or bench.
+    Harness(u32),
+    /// The front ends and the crate root: may use anything.
+    Top,
+}
+
+/// The file names that play the same role in every chapter.
+const HARNESS: [&str; 5] = [
+    "stage.rs",
+    "report.rs",
+    "studies.rs",
+    "stability.rs",
+    "bench.rs",
+];
+
+fn place(file: &str) -> Place {
+    let first = file.split('/').next().unwrap();
+    if first == "core" {
+        return Place::Core;
+    }
+    if first == "scene" {
+        return Place::Scene;
+    }
+    if let Some(n) = first
+        .strip_prefix("ch")
+        .and_then(|r| r.split('_').next())
+        .and_then(|n| n.parse().ok())
+    {
+        let name = file.rsplit('/').next().unwrap();
+        let depth = file.matches('/').count();
+        return if depth == 1 && HARNESS.contains(&name) {
+            Place::Harness(n)
+        } else {
+            Place::Lesson(n)
+        };
+    }
+    Place::Top
+}
+
+/// Whether a file at `from` may import one at `to`.
+fn allowed(from: Place, to: Place) -> bool {
+    use Place::*;
+    match (from, to) {
+        (Top, _) => true,
+        (_, Top) => false,
+        // The foundation is core/ and scene/: the stage boundary and the
+        // headless runner take a Scene, and the scene reports core errors.
+        (Core | Scene, Core | Scene) => true,
+        (Core, _) => false,
+        (Scene, _) => false,
+        (Lesson(_) | Harness(_), Core | Scene) => true,
+        // A lesson file uses earlier chapters' lessons and its own, never a
+        // harness file (that is where the old cycles came from).
+        (Lesson(n), Lesson(m)) => m <= n,
+        (Lesson(_), Harness(_)) => false,
+        (Harness(n), Lesson(m)) => m <= n,
+        (Harness(n), Harness(m)) => m == n,
+    }
+}
+
+#[test]
+fn imports_only_go_down() {
+    let mut bad = Vec::new();
+    for (from, deps) in graph() {
+        for to in deps {
+            if !allowed(place(&from), place(&to)) {
+                bad.push(format!(
+                    "{from} ({:?}) uses {to} ({:?})",
+                    place(&from),
+                    place(&to)
+                ));
+            }
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "imports that go up or sideways:\n{}",
+        bad.join("\n")
+    );
+}
+
+#[test]
+fn no_file_level_import_cycles() {
+    let g = graph();
+    // Tarjan's strongly connected components.
+    struct State<'a> {
+        g: &'a BTreeMap<String, BTreeSet<String>>,
+        index: BTreeMap<&'a str, usize>,
+        low: BTreeMap<&'a str, usize>,
+        stack: Vec<&'a str>,
+        on: BTreeSet<&'a str>,
+        next: usize,
+        cycles: Vec<Vec<String>>,
+    }
+    fn visit<'a>(s: &mut State<'a>, v: &'a str) {
+        s.index.insert(v, s.next);
+        s.low.insert(v, s.next);
+        s.next += 1;
+        s.stack.push(v);
+        s.on.insert(v);
+        for w in s.g[v].iter() {
+            if !s.index.contains_key(w.as_str()) {
+                visit(s, w);
+                let lw = s.low[w.as_str()];
+                let lv = s.low[v];
+                s.low.insert(v, lv.min(lw));
+            } else if s.on.contains(w.as_str()) {
+                let iw = s.index[w.as_str()];
+                let lv = s.low[v];
+                s.low.insert(v, lv.min(iw));
+            }
+        }
+        if s.low[v] == s.index[v] {
+            let mut comp = Vec::new();
+            loop {
+                let w = s.stack.pop().unwrap();
+                s.on.remove(w);
+                comp.push(w.to_string());
+                if w == v {
+                    break;
+                }
+            }
+            if comp.len() > 1 {
+                comp.sort();
+                s.cycles.push(comp);
+            }
+        }
+    }
+    let mut s = State {
+        g: &g,
+        index: BTreeMap::new(),
+        low: BTreeMap::new(),
+        stack: Vec::new(),
+        on: BTreeSet::new(),
+        next: 0,
+        cycles: Vec::new(),
+    };
+    for v in g.keys() {
+        if !s.index.contains_key(v.as_str()) {
+            visit(&mut s, v);
+        }
+    }
+    let shown: Vec<String> = s.cycles.iter().map(|c| c.join(" <-> ")).collect();
+    assert!(
+        shown.is_empty(),
+        "file-level import cycles:\n{}",
+        shown.join("\n")
+    );
+}
+
+#[test]
+fn the_import_reader_sees_what_it_should() {
+    // A small self-check of the parser, so the two tests above cannot pass
+    // by reading nothing.
+    let code = code_of(
+        "use crate::a::{b, c::{d, E}};\n// use crate::zz;\nfn f() { crate::x::y(); let s = \"crate::q\"; super::w::v(); }\n#[cfg(test)]\nmod tests { use crate::t; }",
+    );
+    let module = vec!["m".to_string(), "n".to_string()];
+    let got: BTreeSet<String> = referenced_paths(&code, &module, false)
+        .iter()
+        .map(|p| p.join("::"))
+        .collect();
+    let want: BTreeSet<String> = ["a::b", "a::c::d", "a::c::E", "x::y", "m::w::v"]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+    assert_eq!(got, want);
+    // And the real graph has edges: the chapter-6 path loop uses chapter 5's BSDFs.
+    let g = graph();
+    assert!(g["ch6_global_illumination/integrator.rs"]
+        .iter()
+        .any(|d| d.starts_with("ch5_reflection/")));
+}
+
+#[test]
+fn every_chapter_folder_has_the_same_shape() {
+    let files = sources();
+    let chapters: BTreeSet<&str> = files
+        .iter()
+        .filter_map(|f| f.split_once('/').map(|(d, _)| d))
+        .filter(|d| d.starts_with("ch"))
+        .collect();
+    assert_eq!(chapters.len(), 6, "one folder per chapter: {chapters:?}");
+    let mut missing = Vec::new();
+    for ch in &chapters {
+        for role in [
+            "mod.rs",
+            "stage.rs",
+            "report.rs",
+            "studies.rs",
+            "stability.rs",
+        ] {
+            if !files.contains(&format!("{ch}/{role}")) {
+                missing.push(format!("{ch}/{role}"));
+            }
+        }
+        let doc = std::fs::read_to_string(root().join("src").join(ch).join("mod.rs")).unwrap();
+        if !doc.contains("| slide") {
+            missing.push(format!("{ch}/mod.rs: the slide → file table"));
+        }
+    }
+    assert!(missing.is_empty(), "missing: {missing:?}");
+}
+
+/// Lines before the file's tests.
+fn code_lines(text: &str) -> usize {
+    let text = match text.find("#[cfg(test)]") {
+        Some(i) => &text[..i],
+        None => text,
+    };
+    text.lines().count()
+}
+
+#[test]
+fn files_a_reader_can_hold() {
+    // About 450 lines before the tests, unless the module doc says why one
+    // concept reads better whole ("reads better whole").
+    let mut long = Vec::new();
+    for f in sources() {
+        let text = std::fs::read_to_string(root().join("src").join(&f)).unwrap();
+        let n = code_lines(&text);
+        if n > 460 && !text.contains("reads better whole") {
+            long.push(format!("{f}: {n} lines"));
+        }
+    }
+    assert!(
+        long.is_empty(),
+        "files over ~450 lines before their tests:\n{}",
+        long.join("\n")
+    );
+}
+
+#[test]
+fn src_root_stays_small() {
+    let n = std::fs::read_dir(root().join("src")).unwrap().count();
+    assert!(n <= 16, "src/ holds {n} entries");
+}
