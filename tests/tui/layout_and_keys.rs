@@ -2,10 +2,8 @@
 //! logic as pure `update` tests, layout snapshots on ratatui's TestBackend
 //! at two sizes, the preview's cell colours, the render worker's
 //! generations, and the book's text capture of the UI.
-#![cfg(feature = "tui")]
 
-mod common;
-
+use crate::common;
 use std::sync::Arc;
 use std::time::Duration;
 

@@ -2,8 +2,7 @@
 //! strategy study, determinism across thread counts, and snapshots of its
 //! report and of quantized images.
 
-mod common;
-
+use crate::common;
 use std::sync::Arc;
 
 use raystep::ch5_reflection::direct::Strategy;

@@ -1,8 +1,7 @@
 //! Images leave the renderer whole or not at all; EXR keeps linear values;
 //! and the main program runs headless when its output is piped.
 
-mod common;
-
+use crate::common;
 use glam::Vec3;
 use raystep::core::film::Film;
 

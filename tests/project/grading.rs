@@ -2,8 +2,7 @@
 //! passes, wrong answers fail with a measured error (and images for image
 //! checks), and the `grade` command reports all of it.
 
-mod common;
-
+use crate::common;
 use glam::{Mat4, Vec2};
 use raystep::grading::exercises::ch1;
 use raystep::grading::{self, grade_report, write_failure_images, Outcome, Solution};

@@ -1,8 +1,7 @@
 //! Chapter 1: exact projected coordinates, the stiff cases, what the report
 //! says, and snapshots of the text outputs.
 
-mod common;
-
+use crate::common;
 use std::sync::Arc;
 
 use glam::{DVec2, Vec3};

@@ -1,7 +1,6 @@
 //! Chapter 6 in the terminal UI's render worker: the real stage delivers
 //! per-bounce layers whose "up to 16" sum is the image, a reference and a
 //! live error series, pass after pass, for every estimator variant.
-#![cfg(feature = "tui")]
 
 use std::sync::Arc;
 use std::time::Duration;

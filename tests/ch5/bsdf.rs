@@ -4,8 +4,7 @@
 //! material reflects more than arrives (white furnace by quadrature and by
 //! sampling), and f is reciprocal.
 
-mod common;
-
+use crate::common;
 use common::chi2::{chi2, expected_mass, p_value};
 use glam::{Vec2, Vec3};
 use raystep::ch5_reflection::material::glossy::Glossy;

@@ -2,8 +2,7 @@
 //! cleanly, and typical wrong answers (a missing factor, a biased
 //! roulette, the balance heuristic) fail.
 
-mod common;
-
+use crate::common;
 use raystep::grading::exercises::ch6;
 
 #[test]

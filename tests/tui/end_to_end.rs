@@ -6,10 +6,8 @@
 //!
 //! Without tmux the test is skipped with a message, except under `CI`,
 //! where a missing tmux is a failure (`.ci/run` installs it).
-#![cfg(feature = "tui")]
 
-mod common;
-
+use crate::common;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};

@@ -2,8 +2,7 @@
 //! the stiff cases, scene files with SDFs, what the report says it built
 //! and left out, determinism, and a snapshot of the report.
 
-mod common;
-
+use crate::common;
 use std::sync::Arc;
 
 use glam::{DVec3, Vec2, Vec3};

@@ -1,8 +1,7 @@
 //! Chapter 5's graders: the references pass, the shipped stubs fail
 //! cleanly, and typical wrong answers fail with their worst case.
 
-mod common;
-
+use crate::common;
 use glam::Vec3;
 use raystep::grading::exercises::ch5;
 

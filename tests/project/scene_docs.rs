@@ -2,8 +2,7 @@
 //! scene that loads, every key of the format is shown in an example, and the
 //! error messages it quotes are the ones raystep prints.
 
-mod common;
-
+use crate::common;
 use raystep::scene::Scene;
 
 fn page() -> String {

@@ -2,8 +2,7 @@
 //! or line, and what was expected, and the chapter binary exits non-zero
 //! without writing any image.
 
-mod common;
-
+use crate::common;
 use raystep::scene::Scene;
 
 const CUBE_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";

@@ -1,0 +1,6 @@
+//! Chapter 1: projection.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod projection;

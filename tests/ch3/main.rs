@@ -1,0 +1,3 @@
+//! Chapter 3: ray-triangle intersection and the BVH.
+
+mod ray_triangle;

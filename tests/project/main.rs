@@ -1,0 +1,11 @@
+//! The project as a whole: the book's includes, the source layout, the scene files and their errors, the film and the main binary, the grader.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod book;
+mod layout;
+mod scene_docs;
+mod scene_errors;
+mod film_and_main;
+mod grading;

@@ -1,0 +1,9 @@
+//! The terminal UI: layout snapshots, keys, and an end-to-end run in tmux.
+
+#![cfg(feature = "tui")]
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod layout_and_keys;
+mod end_to_end;
