@@ -5,7 +5,8 @@ use glam::{Vec2, Vec3};
 
 use super::camera::{project_pinhole, Camera};
 use super::wireframe::project_edge;
-use crate::core::report::{format_number, Table};
+use crate::core::format::format_number;
+use crate::core::report::Table;
 use crate::scene::mesh::Mesh;
 
 /// The image height of an upright stick 1 unit tall, straight ahead at

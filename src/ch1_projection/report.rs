@@ -8,7 +8,8 @@ use super::stability::stability_cases;
 use super::studies::error_against_time;
 use super::wireframe::{DrawStats, NEAR};
 use crate::core::film::Film;
-use crate::core::report::{format_number, format_vec2, format_vec3, Report, Table};
+use crate::core::format::{format_number, format_vec2, format_vec3};
+use crate::core::report::{Report, Table};
 use crate::core::stage::Settings;
 use crate::scene::Scene;
 
@@ -44,7 +45,7 @@ pub fn chapter_report(
                     stats.vertices_drawn, stats.vertices_culled
                 ),
             ),
-            ("render time".into(), crate::core::report::format_seconds(seconds)),
+            ("render time".into(), crate::core::format::format_seconds(seconds)),
         ],
         nonfinite_caught: nonfinite,
         ..Report::default()

@@ -9,7 +9,8 @@ use super::studies::points_at_depth;
 use super::wireframe::{project_edge, NEAR};
 use crate::core::draw;
 use crate::core::film::Film;
-use crate::core::report::{format_number, format_vec2, StabilityCase};
+use crate::core::format::{format_number, format_vec2};
+use crate::core::report::StabilityCase;
 
 /// Requirement 2 for chapter 1: the named stiff and extreme cases.
 pub fn stability_cases(cam: &Camera) -> Vec<StabilityCase> {

@@ -8,7 +8,8 @@ use glam::Vec3;
 use super::frame::render_frame;
 use super::studies::test_camera;
 use crate::core::error::{Error, Result};
-use crate::core::report::{format_number, format_seconds, Table};
+use crate::core::format::{format_number, format_seconds};
+use crate::core::report::Table;
 use crate::scene::mesh::Mesh;
 use crate::scene::{Material, Scene};
 

@@ -3,7 +3,7 @@
 //! The stage follows the lecture's rasterization pipeline, one file per
 //! step:
 //!
-//! | step | file |
+//! | slide | file |
 //! |---|---|
 //! | edge functions, the top-left rule, barycentrics | [`edge`] |
 //! | near-plane and guard-band clipping | [`clip`] |

@@ -56,9 +56,9 @@ pub fn chapter_report(
             "render time".into(),
             format!(
                 "setup {}, coverage and depth test {}, resolve {}",
-                crate::core::report::format_seconds(f.seconds[0]),
-                crate::core::report::format_seconds(f.seconds[1]),
-                crate::core::report::format_seconds(f.seconds[2])
+                crate::core::format::format_seconds(f.seconds[0]),
+                crate::core::format::format_seconds(f.seconds[1]),
+                crate::core::format::format_seconds(f.seconds[2])
             ),
         ));
         report.nonfinite_caught = f

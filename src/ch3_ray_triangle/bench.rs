@@ -16,7 +16,8 @@ use crate::ch3_ray_triangle::leaks::bunny;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::studies::procedural_mesh;
 use crate::ch3_ray_triangle::triangle::{intersect_watertight, Intersector};
-use crate::core::report::{format_number, format_seconds, Table};
+use crate::core::format::{format_number, format_seconds};
+use crate::core::report::Table;
 use crate::core::sampling::random;
 use crate::scene::mesh::Mesh;
 

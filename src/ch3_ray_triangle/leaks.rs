@@ -11,7 +11,8 @@ use crate::ch3_ray_triangle::bvh::{Bvh, Triangles};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::spawn::spawn_ray;
 use crate::ch3_ray_triangle::triangle::{intersect_f64, Intersector};
-use crate::core::report::{format_number, Table};
+use crate::core::format::format_number;
+use crate::core::report::Table;
 use crate::core::sampling::random;
 use crate::scene::mesh::Mesh;
 

@@ -1,4 +1,23 @@
-//! Chapter 3: ray-triangle intersection and a BVH.
+//! Chapter 3: ray-triangle intersection and a BVH. Rasterization asks, for
+//! each triangle, which pixels it covers; ray tracing turns the question
+//! round: for each pixel, which triangle is seen first along its ray?
+//!
+//! | slide | file |
+//! |---|---|
+//! | the ray equation r(t) = o + t d | [`ray`] |
+//! | ray-plane, then ray-triangle: solve for u, v, t (Möller-Trumbore), and the watertight test | [`triangle`] |
+//! | the same watertight test, rearranged for speed | [`watertight_fast`] |
+//! | ray-mesh intersection: the naive loop over every triangle, and the bounding volume hierarchy | [`bvh`] |
+//! | the BVH in the four-wide layout the shading chapters trace | [`wide_bvh`] |
+//! | what is traced and what a first hit shows (depth, normal, barycentrics) | [`geometry`], [`render`] |
+//! | leaving a surface without hitting it again | [`spawn`] |
+//! | rays aimed at edges and vertices: do they slip through? | [`leaks`] |
+//! | "which triangle is seen?" answered by rasterization and by rays alike | [`agreement`] |
+//! | the chapter as a stage (views, passes) | [`stage`] |
+//! | what the chapter prints | [`report`] |
+//! | error against run time: anti-aliasing, naive loop against the BVH | [`studies`] |
+//! | stiff cases: parallel rays, edges and vertices, far and tiny triangles | [`stability`] |
+//! | the speed benchmark (`ch3 --bench`) | [`bench`](mod@bench) |
 
 pub mod agreement;
 pub mod bench;

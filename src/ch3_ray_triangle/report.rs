@@ -6,7 +6,8 @@ use super::leaks::{leak_table, t_precision_table};
 use super::render::TraceStats;
 use super::stability::{agreement_case, stability_cases};
 use super::studies::{error_against_time, intersector_speed, naive_vs_bvh, StudySize};
-use crate::core::report::{format_number, format_seconds, Report};
+use crate::core::format::{format_number, format_seconds};
+use crate::core::report::Report;
 use crate::core::stage::Settings;
 use crate::scene::Scene;
 

@@ -9,7 +9,8 @@ use super::render::Method;
 use super::render::{Pixel, TraceStats};
 use crate::ch3_ray_triangle::geometry::Geometry;
 use crate::core::film::Film;
-use crate::core::report::{format_number, format_seconds, Report, Table};
+use crate::core::format::{format_number, format_seconds};
+use crate::core::report::{Report, Table};
 use crate::core::stage::Settings;
 use crate::scene::Scene;
 

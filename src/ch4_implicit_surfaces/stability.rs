@@ -10,7 +10,8 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch4_implicit_surfaces::distance::{ScaleBound, Sdf};
 use crate::ch4_implicit_surfaces::march::{sphere_trace, Ending, March};
 use crate::ch4_implicit_surfaces::normal::{normal, NormalScheme};
-use crate::core::report::{format_number, StabilityCase};
+use crate::core::format::format_number;
+use crate::core::report::StabilityCase;
 
 fn camera(eye: DVec3, target: DVec3, fov: f64, w: u32, h: u32) -> Camera {
     Camera::new(CameraDesc {

@@ -11,7 +11,8 @@ use crate::ch1_projection::camera::{Camera, CameraDesc};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch4_implicit_surfaces::march::{Ending, March};
 use crate::ch4_implicit_surfaces::primitives::{sd_plane, sd_sphere};
-use crate::core::report::{format_number, ErrorTime, Measurement};
+use crate::core::format::format_number;
+use crate::core::report::{ErrorTime, Measurement};
 
 /// The analytic scene: a unit sphere at the origin on the plane y = -1.
 pub fn sphere_on_plane(p: Vec3) -> f32 {

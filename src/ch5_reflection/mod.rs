@@ -1,4 +1,21 @@
-//! Chapter 5: the reflection equation.
+//! Chapter 5: the reflection equation. How much light leaves a surface
+//! point towards the eye? The integral over incoming directions of
+//! incident radiance × BRDF × cos θ, estimated by Monte Carlo.
+//!
+//! | slide | file |
+//! |---|---|
+//! | radiometry: flux, irradiance, Lambert's law, solid angle, radiance | [`radiometry`] |
+//! | types of light: directional, point, spot, area | [`light`] |
+//! | the BRDF: ideal diffuse, glossy, perfect mirror | [`material`] |
+//! | turning uniform numbers into directions, with their densities | [`warp`] |
+//! | the reflection equation, estimated at one point (uniform, cosine, BRDF and light sampling) | [`direct`] |
+//! | several strategies at once: multiple importance sampling | [`mis`] |
+//! | the scene the shading chapters see: one intersect, one shadow ray | [`world`] |
+//! | one image: camera rays, each shaded by the reflection equation | [`render`] |
+//! | the chapter as a stage | [`stage`] |
+//! | what the chapter prints | [`report`] |
+//! | error against run time for the four strategies | [`studies`], drawn by [`plot`] |
+//! | stiff cases: grazing light, tiny bright lights, mirror-like lobes | [`stability`] |
 
 pub mod direct;
 pub mod light;

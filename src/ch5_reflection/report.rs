@@ -7,7 +7,8 @@ use super::direct::{Counters, Estimator};
 use super::light::Light;
 use super::material::Bsdf;
 use super::world::World;
-use crate::core::report::{format_number, format_seconds, Report, Table};
+use crate::core::format::{format_number, format_seconds};
+use crate::core::report::{Report, Table};
 use crate::core::stage::Settings;
 use crate::scene::Scene;
 

@@ -14,7 +14,8 @@ use crate::ch5_reflection::material::semigloss::SemiGloss;
 use crate::ch5_reflection::material::Bsdf;
 use crate::ch5_reflection::warp;
 use crate::ch5_reflection::world::{Interaction, World};
-use crate::core::report::{format_number, StabilityCase};
+use crate::core::format::format_number;
+use crate::core::report::StabilityCase;
 use crate::core::sampling::{random, Sampler};
 use crate::scene::Scene;
 

@@ -25,7 +25,8 @@ use crate::ch3_ray_triangle::triangle::Intersector;
 use crate::ch5_reflection::material::Frame;
 use crate::ch5_reflection::warp::cosine_hemisphere;
 use crate::ch5_reflection::world::World;
-use crate::core::report::{format_number, Table};
+use crate::core::format::format_number;
+use crate::core::report::Table;
 use crate::core::sampling::random;
 use crate::scene::Scene;
 

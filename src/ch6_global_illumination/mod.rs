@@ -1,4 +1,20 @@
-//! Chapter 6: global illumination.
+//! Chapter 6: global illumination. The rendering equation is the
+//! reflection equation made recursive: the light arriving at a point is
+//! itself light leaving other points. A path tracer estimates it bounce by
+//! bounce.
+//!
+//! | slide | file |
+//! |---|---|
+//! | the rendering equation, one light path per sample, bounce by bounce | [`integrator`] |
+//! | where a path's random numbers come from (independent, Sobol) | [`sampler`] |
+//! | direct, one-bounce, two-bounce … global illumination: the layers | [`accumulate`], [`figures`] |
+//! | the converged answer and the statistical image test | [`reference`] |
+//! | scenes whose answer is known (furnace, Cornell box) | [`scenes`] |
+//! | the chapter as a stage | [`stage`] |
+//! | what the chapter prints | [`report`] |
+//! | error against run time: every estimator with both samplers | [`studies`] |
+//! | stiff cases: a bright furnace, a tiny light, total internal reflection | [`stability`] |
+//! | the speed benchmark (`ch6 --bench`) | [`bench`](mod@bench) |
 
 pub mod accumulate;
 pub mod bench;

@@ -3,7 +3,8 @@
 //! index-matched glass, a camera inside glass.
 
 use crate::core::film::Film;
-use crate::core::report::{format_number, format_seconds, StabilityCase};
+use crate::core::format::{format_number, format_seconds};
+use crate::core::report::StabilityCase;
 
 use super::accumulate::Accumulator;
 use super::integrator::{Estimator, PathSettings};

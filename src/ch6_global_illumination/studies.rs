@@ -9,7 +9,8 @@ use glam::Vec3;
 use crate::ch1_projection::camera::Camera;
 use crate::ch5_reflection::world::World;
 use crate::core::film::Film;
-use crate::core::report::{format_number, format_seconds, ErrorTime, Measurement, Table};
+use crate::core::format::{format_number, format_seconds};
+use crate::core::report::{ErrorTime, Measurement, Table};
 use crate::scene::Scene;
 
 use super::accumulate::Accumulator;

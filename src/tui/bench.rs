@@ -14,8 +14,9 @@ use std::time::{Duration, Instant};
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
 
-use super::app::{update, App, Msg};
+use super::app::{App, Msg};
 use super::scenes::scene_list;
+use super::update::update;
 use super::view::view;
 use super::worker::{Progress, Worker};
 

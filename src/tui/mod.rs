@@ -2,7 +2,7 @@
 //! feature (the rest of the library never uses ratatui or crossterm).
 //!
 //! Built after ratatui's templates: the state, the messages and a pure
-//! [`app::update`] in [`app`]; a pure [`view::view`]; key mapping in
+//! [`update::update`] in [`update`]; a pure [`view::view`]; key mapping in
 //! [`keys`]; a render [`worker`] thread that sends a snapshot after every
 //! pass; and this module's event loop, which owns the terminal. The UI
 //! drives chapters only through [`crate::core::stage::Chapter`] and
@@ -20,6 +20,7 @@ pub mod bench;
 pub mod keys;
 pub mod picture;
 pub mod scenes;
+pub mod update;
 pub mod view;
 pub mod worker;
 
@@ -37,7 +38,8 @@ use crossterm::terminal::{
 use ratatui::backend::CrosstermBackend;
 use ratatui::Terminal;
 
-use app::{save, update, App, Msg};
+use app::{App, Msg};
+use update::{save, update};
 use worker::Worker;
 
 /// Shortest time between two redraws (about 30 per second).

@@ -25,8 +25,8 @@ use super::app::{expose, App, Focus};
 use super::keys::KEYS;
 use super::picture::{fit, Picture};
 use crate::core::film::Film;
+use crate::core::format::{format_number, format_seconds};
 use crate::core::preview::downsample;
-use crate::core::report::{format_number, format_seconds};
 
 /// Width of the left column, in cells.
 pub fn sidebar_width(total: u16) -> u16 {

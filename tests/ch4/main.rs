@@ -3,5 +3,5 @@
 #[path = "../common/mod.rs"]
 mod common;
 
-mod sphere_tracing;
 mod exercises;
+mod sphere_tracing;

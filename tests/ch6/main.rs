@@ -3,7 +3,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
-mod global_illumination;
 mod exercises;
+mod global_illumination;
 #[cfg(feature = "tui")]
 mod tui;

@@ -4,8 +4,8 @@
 mod common;
 
 mod book;
+mod film_and_main;
+mod grading;
 mod layout;
 mod scene_docs;
 mod scene_errors;
-mod film_and_main;
-mod grading;

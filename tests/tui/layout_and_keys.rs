@@ -21,10 +21,11 @@ use raystep::core::film::{encode_srgb, Film};
 use raystep::core::report::Report;
 use raystep::core::stage::{Chapter, Render, Settings, View};
 use raystep::scene::Scene;
-use raystep::tui::app::{combine_layers, save, update, App, BounceMode, Compare, Focus, Msg};
+use raystep::tui::app::{combine_layers, App, BounceMode, Compare, Focus, Msg};
 use raystep::tui::keys::msg_for_key;
 use raystep::tui::picture::{fit, Picture};
 use raystep::tui::scenes::{scene_list, SceneEntry};
+use raystep::tui::update::{save, update};
 use raystep::tui::view::{control_lines, view};
 use raystep::tui::worker::{Job, Progress, Snapshot, Worker};
 

@@ -5,5 +5,5 @@
 #[path = "../common/mod.rs"]
 mod common;
 
-mod layout_and_keys;
 mod end_to_end;
+mod layout_and_keys;

@@ -1,0 +1,342 @@
+//! The building step of loading a scene: the parsed file checked section
+//! by section (each error names the key and what was expected), meshes
+//! read or generated and moved to world space, materials bound, and the
+//! SDF tree assembled. Nothing is built for a section the file leaves out.
+
+use glam::DVec3;
+
+use super::camera::CameraDesc;
+use super::file::{self, LightSection, MaterialKind, SceneFile};
+use super::object::{build_object, check_finite};
+use super::sdf::SdfObject;
+use super::{
+    Material, MeshReader, Scene, DEFAULT_EXPONENT, DEFAULT_IOR, DEFAULT_SPECULAR, MAX_EXPONENT,
+};
+use crate::core::error::{Error, Result};
+
+/// Turns a TOML or serde error into one that gives the line and, for an
+/// unknown key, the closest known one.
+pub(super) fn toml_error(source: &str, text: &str, e: &toml::de::Error) -> Error {
+    let at = match e.span() {
+        Some(span) => {
+            let before = &text[..span.start.min(text.len())];
+            let line = before.matches('\n').count() + 1;
+            let col = before.len() - before.rfind('\n').map(|i| i + 1).unwrap_or(0) + 1;
+            format!("line {line}, column {col}")
+        }
+        None => "top level".into(),
+    };
+    let message = e.message().trim().to_string();
+    let message = match unknown_key_suggestion(&message) {
+        Some(hint) => format!("{message}; {hint}"),
+        None => message,
+    };
+    Error::Scene {
+        file: source.to_string(),
+        at,
+        message,
+    }
+}
+
+/// From serde's "unknown field `fvo`, expected one of `eye`, ..." (or
+/// "unknown variant"), the closest expected name.
+fn unknown_key_suggestion(message: &str) -> Option<String> {
+    let rest = message
+        .strip_prefix("unknown field ")
+        .or_else(|| message.strip_prefix("unknown variant "))?;
+    let mut names = rest.split('`').skip(1).step_by(2);
+    let given = names.next()?;
+    let best = names
+        .map(|n| (strsim::levenshtein(given, n), n))
+        .min_by_key(|(d, _)| *d)?;
+    (best.0 <= given.len().max(2) / 2 + 1).then(|| format!("did you mean `{}`?", best.1))
+}
+
+pub(super) fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result<Scene> {
+    let scene_err = |at: String, message: String| Error::Scene {
+        file: source.to_string(),
+        at,
+        message,
+    };
+
+    // Camera.
+    let c = &file.camera;
+    let camera = CameraDesc {
+        eye: DVec3::from(c.eye),
+        target: DVec3::from(c.target),
+        up: DVec3::from(c.up),
+        fov_degrees: c.fov,
+        width: c.width,
+        height: c.height,
+    };
+    camera.check().map_err(|e| {
+        scene_err(
+            "[camera]".into(),
+            e.to_string().trim_start_matches("camera: ").into(),
+        )
+    })?;
+
+    // Materials: checked, then kept only if an object uses them.
+    let mut declared = Vec::new();
+    for (i, m) in file.materials.iter().enumerate() {
+        let at = format!("materials[{i}] (\"{}\")", m.name);
+        if declared.iter().any(|d: &Material| d.name == m.name) {
+            return Err(scene_err(
+                at,
+                format!("material name `{}` is used twice", m.name),
+            ));
+        }
+        check_finite(&m.reflectance)
+            .and_then(|_| {
+                m.reflectance
+                    .iter()
+                    .all(|r| (0.0..=1.0).contains(r))
+                    .then_some(())
+                    .ok_or("must lie in [0, 1] (a surface cannot reflect more than arrives)")
+            })
+            .map_err(|why| {
+                scene_err(
+                    format!("{at}.reflectance"),
+                    format!("{:?} {why}", m.reflectance),
+                )
+            })?;
+        check_finite(&m.emission)
+            .and_then(|_| {
+                m.emission
+                    .iter()
+                    .all(|r| *r >= 0.0)
+                    .then_some(())
+                    .ok_or("must not be negative")
+            })
+            .map_err(|why| {
+                scene_err(format!("{at}.emission"), format!("{:?} {why}", m.emission))
+            })?;
+        let (exponent, specular) =
+            lobe_keys(m).map_err(|(key, why)| scene_err(format!("{at}.{key}"), why))?;
+        let ior = match (m.kind, m.ior) {
+            (MaterialKind::Glass, None) => DEFAULT_IOR,
+            (MaterialKind::Glass, Some(ior)) if ior.is_finite() && (1.0..=10.0).contains(&ior) => {
+                ior
+            }
+            (MaterialKind::Glass, Some(ior)) => {
+                return Err(scene_err(
+                    format!("{at}.ior"),
+                    format!(
+                        "{ior} must be a finite index of refraction in [1, 10] (1 is vacuum, 1.5 glass)"
+                    ),
+                ))
+            }
+            (_, Some(_)) => {
+                return Err(scene_err(
+                    format!("{at}.ior"),
+                    "`ior` applies only to type = \"glass\"".into(),
+                ))
+            }
+            (_, None) => DEFAULT_IOR,
+        };
+        declared.push(Material {
+            name: m.name.clone(),
+            kind: m.kind,
+            reflectance: DVec3::from(m.reflectance).as_vec3(),
+            emission: DVec3::from(m.emission).as_vec3(),
+            two_sided: m.two_sided,
+            exponent,
+            specular,
+            ior: ior as f32,
+        });
+    }
+
+    let mut materials: Vec<Material> = Vec::new();
+    let mut meshes = Vec::new();
+    for (i, o) in file.objects.iter().enumerate() {
+        let at = format!("objects[{i}]");
+        let mut mesh = build_object(o, &at, source, read)?;
+        mesh.material = use_material(&declared, &mut materials, o.material.as_deref(), &at)
+            .map_err(|(a, m)| scene_err(a, m))?;
+        if let Some(n) = &o.name {
+            mesh.name = n.clone();
+        }
+        meshes.push(mesh);
+    }
+
+    let sdfs = build_sdfs(&file.sdfs, &declared, &mut materials, source)?;
+
+    let mut environment: Option<usize> = None;
+    for (i, l) in file.lights.iter().enumerate() {
+        if matches!(
+            l,
+            LightSection::Environment { .. } | LightSection::Sky { .. }
+        ) {
+            if let Some(first) = environment {
+                return Err(scene_err(
+                    format!("lights[{i}]"),
+                    format!(
+                        "a scene has at most one environment (\"environment\" or \"sky\"); lights[{first}] is one already"
+                    ),
+                ));
+            }
+            environment = Some(i);
+        }
+        let numbers: Vec<f64> = match l {
+            LightSection::Point {
+                position,
+                intensity,
+            } => [position.as_slice(), intensity].concat(),
+            LightSection::Directional {
+                direction,
+                irradiance,
+            } => [direction.as_slice(), irradiance].concat(),
+            LightSection::Spot {
+                position,
+                direction,
+                intensity,
+                cone_degrees,
+                falloff_degrees,
+            } => [
+                position.as_slice(),
+                direction,
+                intensity,
+                &[*cone_degrees, *falloff_degrees],
+            ]
+            .concat(),
+            LightSection::Environment { radiance } => radiance.to_vec(),
+            LightSection::Sky {
+                zenith,
+                horizon,
+                ground,
+            } => [zenith.as_slice(), horizon, ground].concat(),
+        };
+        check_finite(&numbers)
+            .map_err(|why| scene_err(format!("lights[{i}]"), format!("a value {why}")))?;
+    }
+
+    Ok(Scene {
+        name: name.to_string(),
+        source: source.to_string(),
+        camera,
+        meshes,
+        materials,
+        lights: file.lights,
+        sdfs,
+    })
+}
+
+/// The `[[sdfs]]` entries: each parsed into an SDF tree, named, and bound
+/// to a material (added to `materials` if no mesh uses it yet).
+fn build_sdfs(
+    tables: &[toml::Table],
+    declared: &[Material],
+    materials: &mut Vec<Material>,
+    source: &str,
+) -> Result<Vec<SdfObject>> {
+    let scene_err = |at: String, message: String| Error::Scene {
+        file: source.to_string(),
+        at,
+        message,
+    };
+    let mut out = Vec::with_capacity(tables.len());
+    for (i, t) in tables.iter().enumerate() {
+        let at = format!("sdfs[{i}]");
+        let sdf =
+            crate::scene::sdf_parse::parse_node(t, &at, true).map_err(|(a, m)| scene_err(a, m))?;
+        let name = match t.get("name") {
+            None => format!("{} {i}", t["type"].as_str().unwrap_or("sdf")),
+            Some(toml::Value::String(n)) => n.clone(),
+            Some(v) => {
+                return Err(scene_err(
+                    format!("{at}.name"),
+                    format!("expected a string, got {v}"),
+                ))
+            }
+        };
+        let wanted = match t.get("material") {
+            None => None,
+            Some(toml::Value::String(wanted)) => Some(wanted.as_str()),
+            Some(v) => {
+                return Err(scene_err(
+                    format!("{at}.material"),
+                    format!("expected a material's name, got {v}"),
+                ))
+            }
+        };
+        let index =
+            use_material(declared, materials, wanted, &at).map_err(|(a, m)| scene_err(a, m))?;
+        out.push(SdfObject {
+            name,
+            sdf,
+            material: index,
+        });
+    }
+    Ok(out)
+}
+
+/// The index in `used` of the material an object names (the default grey
+/// when it names none), adding it to `used` the first time it is used; or
+/// the key and message of the error when no material has that name.
+fn use_material(
+    declared: &[Material],
+    used: &mut Vec<Material>,
+    wanted: Option<&str>,
+    at: &str,
+) -> std::result::Result<usize, (String, String)> {
+    let material = match wanted {
+        None => Material::default_grey(),
+        Some(wanted) => declared
+            .iter()
+            .find(|m| m.name == wanted)
+            .cloned()
+            .ok_or_else(|| {
+                let known: Vec<&str> = declared.iter().map(|m| m.name.as_str()).collect();
+                (
+                    format!("{at}.material"),
+                    format!("no material named `{wanted}`; declared: {known:?}"),
+                )
+            })?,
+    };
+    Ok(match used.iter().position(|m| m.name == material.name) {
+        Some(k) => k,
+        None => {
+            used.push(material);
+            used.len() - 1
+        }
+    })
+}
+
+/// The `exponent` and `specular` of a material, checked: each only on the
+/// kinds that use it, in range, with defaults when omitted.
+fn lobe_keys(m: &file::MaterialSection) -> std::result::Result<(f32, f32), (String, String)> {
+    use MaterialKind::*;
+    let lobed = matches!(m.kind, Glossy | Retroreflective | Semigloss);
+    let exponent = match m.exponent {
+        Some(_) if !lobed => return Err((
+            "exponent".into(),
+            "`exponent` applies only to type = \"glossy\", \"retroreflective\" or \"semigloss\""
+                .into(),
+        )),
+        Some(n) if !(n.is_finite() && (0.0..=MAX_EXPONENT).contains(&n)) => {
+            return Err((
+                "exponent".into(),
+                format!("must be a number in [0, {MAX_EXPONENT:e}], got {n}"),
+            ))
+        }
+        Some(n) => n,
+        None => DEFAULT_EXPONENT,
+    };
+    let specular = match m.specular {
+        Some(_) if m.kind != Semigloss => {
+            return Err((
+                "specular".into(),
+                "`specular` applies only to type = \"semigloss\"".into(),
+            ))
+        }
+        Some(k) if !(k.is_finite() && (0.0..=1.0).contains(&k)) => {
+            return Err((
+                "specular".into(),
+                format!("must be a number in [0, 1] (a fraction of the light), got {k}"),
+            ))
+        }
+        Some(k) => k,
+        None => DEFAULT_SPECULAR,
+    };
+    Ok((exponent as f32, specular as f32))
+}

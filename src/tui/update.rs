@@ -1,0 +1,165 @@
+//! [`update`], a pure function from (state, message) to the next state,
+//! and [`save`]. `update` touches neither the terminal, the clock nor the
+//! disk: the event loop turns keys and worker reports into messages and
+//! carries out the three effects `update` asks for (start a render when the
+//! generation changes, save when `save_requested` is set, read the grader's
+//! images when `grade_requested` is set).
+
+use std::path::PathBuf;
+
+use super::app::*;
+use super::worker::Progress;
+
+/// The next state of the UI after `msg`.
+pub fn update(mut app: App, msg: Msg) -> App {
+    // Any key but `?` closes the help overlay first.
+    if app.help
+        && !matches!(
+            msg,
+            Msg::ToggleHelp | Msg::Quit | Msg::Progress(_) | Msg::Saved(_) | Msg::GradeLoaded(_)
+        )
+    {
+        app.help = false;
+        return app;
+    }
+    match msg {
+        Msg::Up => match app.focus {
+            Focus::Chapters => app.select_chapter(app.chapter.saturating_sub(1)),
+            Focus::Scenes => app.select_scene(app.scene.saturating_sub(1)),
+        },
+        Msg::Down => match app.focus {
+            Focus::Chapters => app.select_chapter(app.chapter + 1),
+            Focus::Scenes => app.select_scene(app.scene + 1),
+        },
+        Msg::SwitchFocus => {
+            app.focus = match app.focus {
+                Focus::Chapters => Focus::Scenes,
+                Focus::Scenes => Focus::Chapters,
+            }
+        }
+        Msg::ChapterNumber(n) => {
+            if let Some(i) = app.chapters.iter().position(|c| c.number() == n) {
+                app.select_chapter(i);
+            }
+        }
+        Msg::NextView | Msg::PrevView => {
+            let n = app.current_chapter().map_or(1, |c| c.views().len().max(1));
+            app.view = match msg {
+                Msg::NextView => (app.view + 1) % n,
+                _ => (app.view + n - 1) % n,
+            };
+        }
+        Msg::ExposureUp => app.exposure = (app.exposure + 1).min(10),
+        Msg::ExposureDown => app.exposure = (app.exposure - 1).max(-10),
+        Msg::ExposureReset => app.exposure = 0,
+        Msg::BounceUp if app.shows_bounces() => {
+            app.bounce = match app.bounce {
+                None => Some(0),
+                Some(k) if k >= MAX_BOUNCE => None,
+                Some(k) => Some(k + 1),
+            }
+        }
+        Msg::BounceDown if app.shows_bounces() => {
+            app.bounce = match app.bounce {
+                None => Some(MAX_BOUNCE),
+                Some(0) => None,
+                Some(k) => Some(k - 1),
+            }
+        }
+        Msg::ToggleBounceMode if app.shows_bounces() => {
+            app.bounce_mode = match app.bounce_mode {
+                BounceMode::Exactly => BounceMode::UpTo,
+                BounceMode::UpTo => BounceMode::Exactly,
+            }
+        }
+        Msg::BounceUp | Msg::BounceDown | Msg::ToggleBounceMode => {}
+        Msg::CycleCompare => {
+            if app.shows_compare() {
+                app.compare = match app.compare {
+                    Compare::Render => Compare::Reference,
+                    Compare::Reference => Compare::Difference,
+                    Compare::Difference => Compare::Render,
+                }
+            }
+        }
+        Msg::NextVariant => {
+            let n = app.current_chapter().map_or(0, |c| c.variants().len());
+            if n > 1 {
+                app.variant = (app.variant + 1) % n;
+                app.restart();
+            }
+        }
+        Msg::ToggleGrading => {
+            if app.grading.take().is_some() {
+                app.compare = Compare::Render;
+                app.message = "back to the render".into();
+            } else {
+                app.grade_requested = true;
+            }
+        }
+        Msg::GradeLoaded(result) => {
+            app.grade_requested = false;
+            match result {
+                Ok(Some(images)) => {
+                    app.message = format!(
+                        "grading {}: student vs reference (r: student → reference → difference, g: back)",
+                        images.stem
+                    );
+                    app.grading = Some(images);
+                    app.compare = Compare::Render;
+                }
+                Ok(None) => {
+                    app.message = format!(
+                        "no failed image checks in {}: run `cargo run --release --bin grade` first",
+                        app.grade_dir().display()
+                    )
+                }
+                Err(e) => app.message = format!("cannot read the grader's images: {e}"),
+            }
+        }
+        Msg::Save => {
+            if app.snapshot.is_some() || app.grading.is_some() {
+                app.save_requested = true;
+            } else {
+                app.message = "nothing to save yet".into();
+            }
+        }
+        Msg::Saved(result) => {
+            app.save_requested = false;
+            app.message = match result {
+                Ok(files) => format!(
+                    "saved {}",
+                    files
+                        .iter()
+                        .map(|f| f.display().to_string())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+                Err(e) => format!("save failed: {e}"),
+            };
+        }
+        Msg::ToggleHelp => app.help = !app.help,
+        Msg::Quit => app.quit = true,
+        Msg::Progress(p) if p.generation() == app.generation => match p {
+            Progress::Snapshot(s) => app.snapshot = Some(*s),
+            Progress::Failed { message, .. } => app.failure = Some(message),
+        },
+        // A pass of a render that has been replaced: dropped.
+        Msg::Progress(_) => {}
+    }
+    app
+}
+
+/// Writes what the preview shows (with exposure) as PNG and the same film
+/// without exposure as linear EXR into `app.out_dir`; returns the paths.
+pub fn save(app: &App) -> Result<Vec<PathBuf>, String> {
+    let film = app.displayed().ok_or("nothing to save yet")?;
+    let stem = app.save_stem();
+    let png = app.out_dir.join(format!("{stem}.png"));
+    let exr = app.out_dir.join(format!("{stem}.exr"));
+    expose(&film, app.exposure)
+        .write_png(&png)
+        .map_err(|e| e.to_string())?;
+    film.write_exr(&exr).map_err(|e| e.to_string())?;
+    Ok(vec![png, exr])
+}
