@@ -8,19 +8,38 @@
 //! ## The pipeline
 //!
 //! scene file (TOML) → [`scene::Scene`] (validated, holding only what the
-//! scene uses) → a chapter's [`stage::Render`] → [`film::Film`] →
-//! PNG/EXR, a [`report::Report`], and a terminal [`preview`].
-//! The terminal UI (`src/tui/`, behind the default `tui` feature) drives
-//! the same [`stage::Chapter`] boundary as the headless runs.
+//! scene uses) → a chapter's [`Render`](core::stage::Render) →
+//! [`Film`](core::film::Film) → PNG/EXR, a [`Report`](core::report::Report),
+//! and a terminal [`preview`](core::preview). The terminal UI (`src/tui/`,
+//! behind the default `tui` feature) drives the same
+//! [`Chapter`](core::stage::Chapter) boundary as the headless runs.
 //!
-//! | stage | chapter | module | binary | book page |
+//! ## Where things are
+//!
+//! One folder per chapter, each the same shape: `mod.rs` opens with the
+//! chapter's slide → file table; then the lesson files (the slides'
+//! algorithms, any fast version beside its readable twin); `stage.rs` (the
+//! chapter as a [`Chapter`](core::stage::Chapter)); `report.rs`;
+//! `studies.rs` (error against run time); `stability.rs` (stiff cases);
+//! `bench.rs` where the chapter has a benchmark. Imports only go down: a
+//! chapter uses the foundation and earlier chapters' lesson files, never
+//! another chapter's stage, report, studies, stability or bench
+//! (`tests/project/layout.rs` checks it).
+//!
+//! | chapter | lecture topic | folder | binary | book page |
 //! |---|---|---|---|---|
-//! | projection | 1 | [`camera`], [`projection`] | `ch1` | `book/src/ch1-projection.md` |
-//! | rasterization | 2 | [`raster`], [`mesh_check`] | `ch2` | `book/src/ch2-rasterization.md` |
-//! | ray-triangle | 3 | [`ray`], [`triangle`], [`bvh`], [`watertight_fast`], [`spawn`], [`raytrace`] | `ch3` | `book/src/ch3-ray-triangle.md` |
-//! | implicit surfaces | 4 | [`sdf`], [`sphere_tracing`] | `ch4` | `book/src/ch4-sphere-tracing.md` |
-//! | reflection equation | 5 | [`radiometry`], [`warp`], [`light`], [`material`], [`world`], [`wide_bvh`], [`reflection`], [`plot`] | `ch5` | `book/src/ch5-reflection.md` |
-//! | global illumination | 6 | [`material`], [`light`], [`world`], [`wide_bvh`], [`mis`], [`path_tracing`], [`plot`] | `ch6` | `book/src/ch6-global-illumination.md` |
+//! | 1 | projection | [`ch1_projection`] | `ch1` | `book/src/ch1-projection.md` |
+//! | 2 | rasterization | [`ch2_rasterization`] | `ch2` | `book/src/ch2-rasterization.md` |
+//! | 3 | ray-triangle intersection and a BVH | [`ch3_ray_triangle`] | `ch3` | `book/src/ch3-ray-triangle.md` |
+//! | 4 | implicit surfaces and sphere tracing | [`ch4_implicit_surfaces`] | `ch4` | `book/src/ch4-sphere-tracing.md` |
+//! | 5 | the reflection equation | [`ch5_reflection`] | `ch5` | `book/src/ch5-reflection.md` |
+//! | 6 | Monte Carlo global illumination | [`ch6_global_illumination`] | `ch6` | `book/src/ch6-global-illumination.md` |
+//!
+//! Below the chapters: [`core`] (film, report and plots, formatting,
+//! sampling, the stage boundary, the headless runner) and [`scene`] (scene
+//! files, meshes, the camera and SDF descriptions). Beside them:
+//! [`chapters`] (the registry the front ends list), [`grading`] (the
+//! exercises' grader) and `tui`.
 //!
 //! The lecture's symbols and the names used here are listed side by side in
 //! the book's notation table (`book/src/notation.md`).

@@ -8,16 +8,31 @@
 //! threads, raystep's stage against obvhs alone); `ch3 --bench bunny` only
 //! the bunny's rows.
 
-fn main() -> std::process::ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    if let Some(i) = args.iter().position(|a| a == "--bench") {
-        // `ch3 --bench [MESH]`: an optional filter on the mesh names.
-        let only = args.get(i + 1).map(String::as_str);
-        print!(
-            "{}",
-            raystep::ch3_ray_triangle::bench::benchmark(only).to_text()
-        );
-        return std::process::ExitCode::SUCCESS;
+use std::process::ExitCode;
+
+use clap::Parser;
+use raystep::ch3_ray_triangle::bench::benchmark;
+use raystep::ch3_ray_triangle::stage::RayTriangle;
+use raystep::core::run::{exit_code, run_with, CommonArgs};
+
+#[derive(Parser)]
+#[command(name = "ch3", about = "Chapter 3: ray-triangle intersection and a BVH")]
+struct Cli {
+    #[command(flatten)]
+    common: CommonArgs,
+    /// Print the throughput benchmark (BVH build, Mrays/s on 1 and 2
+    /// threads, the stage against obvhs alone) instead of rendering; an
+    /// optional MESH keeps only the rows whose mesh name contains it.
+    #[arg(long, value_name = "MESH", num_args = 0..=1, default_missing_value = "")]
+    bench: Option<String>,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    if let Some(only) = cli.bench {
+        let only = (!only.is_empty()).then_some(only.as_str());
+        print!("{}", benchmark(only).to_text());
+        return ExitCode::SUCCESS;
     }
-    raystep::core::run::chapter_main(&raystep::ch3_ray_triangle::stage::RayTriangle)
+    exit_code(run_with(&RayTriangle, &cli.common))
 }

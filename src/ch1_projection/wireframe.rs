@@ -91,7 +91,7 @@ fn wire_color(m: &Material) -> Vec3 {
     }
 }
 
-/// Draws `meshes` as seen by `camera`: the three [`VIEWS`] in order.
+/// Draws `meshes` as seen by `camera`: the three [views](crate::ch1_projection::stage::VIEWS) in order.
 // ANCHOR: draw_scene
 pub fn draw_scene(
     camera: &Camera,

@@ -22,7 +22,7 @@
 //!
 //! Note that ‖∇f‖ = 1 is necessary but not sufficient for an exact SDF:
 //! `max(a, b)` has unit gradient almost everywhere yet underestimates the
-//! distance near the edges. The Eikonal check ([`eikonal`]) catches the
+//! distance near the edges. The Eikonal check ([`eikonal`](super::eikonal)) catches the
 //! cases where it is > 1 (unsafe) or < 1 (a bound), not the rest.
 
 use glam::Vec3;

@@ -1,5 +1,5 @@
 //! Combining distance functions. Boolean operators keep the surface exact
-//! but not always the distance: see the table in [`crate::ch4_implicit_surfaces::sdf`].
+//! but not always the distance: see the table in [`distance`](super::distance).
 
 /// Union (either shape): the nearer surface. Exact outside; inside the
 /// overlap it underestimates (a bound).

@@ -14,18 +14,42 @@ use crate::core::report::{Report, Table};
 use crate::core::stage::Settings;
 use crate::scene::Scene;
 
+/// What the report is made from: the stage's settings and the traced
+/// image.
+pub struct ReportInputs<'a> {
+    /// The march's step rules.
+    pub march: &'a March,
+    /// Sphere tracing, over-relaxed, or the fixed step.
+    pub method: Method,
+    /// How normals were estimated.
+    pub normals: NormalScheme,
+    /// The scene traced.
+    pub scene: &'a Scene,
+    /// The run's settings.
+    pub settings: &'a Settings,
+    /// Every traced pixel.
+    pub pixels: &'a [Pixel],
+    /// The views made from them.
+    pub films: &'a [Film],
+    /// Seconds the trace took.
+    pub seconds: f64,
+    /// The mesh part of the scene and its BVH build time, if it has one.
+    pub geometry: Option<&'a (Geometry, f64)>,
+}
+
 /// The chapter's report on a traced image.
-pub fn chapter_report(
-    march: &March,
-    method: Method,
-    normals: NormalScheme,
-    scene: &Scene,
-    settings: &Settings,
-    pixels: &[Pixel],
-    films: &[Film],
-    seconds: f64,
-    geometry: Option<&(Geometry, f64)>,
-) -> Report {
+pub fn chapter_report(inputs: &ReportInputs) -> Report {
+    let ReportInputs {
+        march,
+        method,
+        normals,
+        scene,
+        settings,
+        pixels,
+        films,
+        seconds,
+        geometry,
+    } = *inputs;
     let cam = &scene.camera;
     let m = march;
     let stats = TraceStats::of(pixels);

@@ -12,7 +12,7 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use super::render::{trace_image, views, MeshTracer, Method, Pixel};
-use super::report::chapter_report;
+use super::report::{chapter_report, ReportInputs};
 use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::geometry::Geometry;
 use crate::ch4_implicit_surfaces::march::March;
@@ -178,16 +178,16 @@ impl Render for SphereTracingRender {
     }
 
     fn report(&self) -> Report {
-        chapter_report(
-            &self.stage.march,
-            self.stage.method,
-            self.stage.normals,
-            &self.scene,
-            &self.settings,
-            &self.pixels,
-            &self.films,
-            self.seconds,
-            self.geometry.as_ref(),
-        )
+        chapter_report(&ReportInputs {
+            march: &self.stage.march,
+            method: self.stage.method,
+            normals: self.stage.normals,
+            scene: &self.scene,
+            settings: &self.settings,
+            pixels: &self.pixels,
+            films: &self.films,
+            seconds: self.seconds,
+            geometry: self.geometry.as_ref(),
+        })
     }
 }

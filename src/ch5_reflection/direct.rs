@@ -93,7 +93,7 @@ pub struct Estimator {
     /// Mirror bounces followed before giving up (the rest is black).
     pub max_mirror_bounces: u32,
     /// Whether to trace shadow rays; `false` only for scenes where nothing
-    /// can shadow anything (see [`super::scene_cannot_shadow`]).
+    /// can shadow anything (see [`scene_cannot_shadow`](super::render::scene_cannot_shadow)).
     pub shadow_rays: bool,
 }
 

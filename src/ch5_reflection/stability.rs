@@ -37,10 +37,7 @@ pub fn caught(cases: &[CaseResult]) -> u64 {
 pub const U_MAX: f32 = 1.0 - 1.0 / (1u32 << 24) as f32;
 
 fn world(text: &str) -> World {
-    let scene = Scene::parse(text, "stiff", "<stiff>", &|r| {
-        Err((r.into(), "none".into()))
-    })
-    .expect("stability scenes are valid (tested)");
+    let scene = Scene::from_text(text, "stiff").expect("stability scenes are valid (tested)");
     World::new(&scene)
 }
 

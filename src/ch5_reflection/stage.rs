@@ -1,7 +1,7 @@
 //! Chapter 5 stage: the reflection equation with shadow rays, on meshes
 //! and SDFs alike (through [`crate::ch5_reflection::world::World`]). Each pixel averages
 //! `spp` camera rays through jittered positions; each ray's radiance is
-//! [`direct::Estimator::radiance`]: what it hits emits, plus light reflected
+//! [`direct::Estimator::radiance`](super::direct::Estimator::radiance): what it hits emits, plus light reflected
 //! from every light, plus what an ideal mirror sees.
 //!
 //! The variants are the four strategies for lights with extent (uniform,

@@ -99,10 +99,7 @@ pub struct Problem {
 }
 
 fn world_of(text: &str) -> (Scene, World) {
-    let scene = Scene::parse(text, "study", "<study>", &|r| {
-        Err((r.into(), "none".into()))
-    })
-    .expect("the study scenes are valid (tested)");
+    let scene = Scene::from_text(text, "study").expect("the study scenes are valid (tested)");
     let world = World::new(&scene);
     (scene, world)
 }

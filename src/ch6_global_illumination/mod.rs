@@ -8,7 +8,7 @@
 //! | the rendering equation, one light path per sample, bounce by bounce | [`integrator`] |
 //! | where a path's random numbers come from (independent, Sobol) | [`sampler`] |
 //! | direct, one-bounce, two-bounce … global illumination: the layers | [`accumulate`], [`figures`] |
-//! | the converged answer and the statistical image test | [`reference`] |
+//! | the converged answer and the statistical image test | [`reference`](mod@reference) |
 //! | scenes whose answer is known (furnace, Cornell box) | [`scenes`] |
 //! | the chapter as a stage | [`stage`] |
 //! | what the chapter prints | [`report`] |

@@ -6,10 +6,7 @@ use crate::scene::Scene;
 
 /// Parses one of these scenes (they use built-in shapes only).
 pub fn parse(text: &str, name: &str) -> Scene {
-    Scene::parse(text, name, &format!("<ch6>/{name}.toml"), &|rel| {
-        Err((rel.to_string(), "no mesh files here".to_string()))
-    })
-    .expect("the chapter's own test scenes are valid")
+    Scene::from_text(text, name).expect("the chapter's own test scenes are valid")
 }
 
 /// The closed furnace: the camera inside a sphere whose inside is

@@ -2,13 +2,13 @@
 //!
 //! The rendering equation L_o = L_e + ∫ f L_i cos θ dω has the unknown L on
 //! both sides; path tracing estimates it with one random path per sample
-//! ([`integrator`]), bounce after bounce, each contribution filed under its
+//! ([`integrator`](super::integrator)), bounce after bounce, each contribution filed under its
 //! bounce count so the lecture's sequence (direct, 1, 2, 4, 8, 16 bounces)
-//! comes out of one render ([`accumulate`]).
+//! comes out of one render ([`accumulate`](super::accumulate)).
 //!
 //! Passes of a few samples per pixel accumulate progressively; the front
 //! ends read the image, the per-bounce layers and, for the Cornell box, the
-//! error against the stored reference ([`reference`](mod@reference)) after every pass.
+//! error against the stored reference ([`reference`](mod@super::reference)) after every pass.
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;

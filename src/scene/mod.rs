@@ -142,6 +142,19 @@ impl Scene {
         build::build(file, name, source, read)
     }
 
+    /// Parses a scene given as text that uses built-in shapes only (no mesh
+    /// files): the one way studies, stiff cases and tests build a scene from
+    /// TOML, so what they check is exactly what a user could write. Errors
+    /// name `<name>.toml`.
+    pub fn from_text(text: &str, name: &str) -> Result<Scene> {
+        Scene::parse(text, name, &format!("{name}.toml"), &|rel| {
+            Err((
+                rel.to_string(),
+                "mesh files cannot be read here".to_string(),
+            ))
+        })
+    }
+
     /// The same scene seen at another resolution.
     pub fn with_resolution(mut self, width: u32, height: u32) -> Result<Scene> {
         self.camera = self.camera.with_resolution(width, height)?;

@@ -2,7 +2,7 @@
 //! feature (the rest of the library never uses ratatui or crossterm).
 //!
 //! Built after ratatui's templates: the state, the messages and a pure
-//! [`update::update`] in [`update`]; a pure [`view::view`]; key mapping in
+//! [`update::update`] in [`update`](mod@update); a pure [`view::view`]; key mapping in
 //! [`keys`]; a render [`worker`] thread that sends a snapshot after every
 //! pass; and this module's event loop, which owns the terminal. The UI
 //! drives chapters only through [`crate::core::stage::Chapter`] and

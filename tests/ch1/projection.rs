@@ -102,11 +102,9 @@ fn every_stiff_case_comes_out_as_expected() {
 fn a_camera_inside_the_mesh_clips_edges_instead_of_smearing_them() {
     // The pinhole at the origin sits inside the lecture's tetrahedron: every
     // edge has a part behind the camera.
-    let s = Scene::parse(
+    let s = Scene::from_text(
         "[camera]\neye = [0, 0, 0]\ntarget = [0, 0, -1]\nfov = 120\n[[objects]]\nshape = \"tetrahedron\"\n",
         "inside",
-        "inside.toml",
-        &|_| unreachable!(),
     )
     .unwrap();
     let (films, stats) = draw_scene(&Camera::of(&s), &s.meshes, &s.materials);

@@ -30,9 +30,7 @@ fn scene(name: &str) -> Scene {
 }
 
 fn parse(text: &str) -> raystep::Result<Scene> {
-    Scene::parse(text, "test", "test.toml", &|rel| {
-        Err((rel.to_string(), "no files in this test".to_string()))
-    })
+    Scene::from_text(text, "test")
 }
 
 fn render(stage: &SphereTracing, scene: Scene, studies: bool) -> (Report, Vec<Film>) {

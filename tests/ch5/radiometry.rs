@@ -16,7 +16,7 @@ use raystep::core::sampling::Sampler;
 use raystep::scene::Scene;
 
 fn world(text: &str) -> World {
-    World::new(&Scene::parse(text, "t", "t.toml", &|r| Err((r.into(), "no".into()))).unwrap())
+    World::new(&Scene::from_text(text, "t").unwrap())
 }
 
 const FLOOR: &str = "[[materials]]\nname = \"floor\"\nreflectance = [0.5, 0.25, 1.0]\n[[objects]]\nshape = \"rectangle\"\nsize = [4, 4]\nmaterial = \"floor\"\n";

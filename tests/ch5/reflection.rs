@@ -160,7 +160,7 @@ type = "point"
 position = [0, 0, 0]
 intensity = [1, 1, 1]
 "#;
-    let s = Scene::parse(text, "mirrors", "m.toml", &|r| Err((r.into(), "no".into()))).unwrap();
+    let s = Scene::from_text(text, "mirrors").unwrap();
     for bounces in [0u32, 3] {
         let stage = Reflection {
             strategy: Strategy::Mis,

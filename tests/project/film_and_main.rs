@@ -94,3 +94,31 @@ fn the_main_program_runs_headless_when_piped() {
     assert_eq!((film.width, film.height), (256, 256));
     assert!(dir.join("out/ch1-cornell-box.csv").exists());
 }
+
+/// Every chapter binary's flags are clap's: `--help` lists them all,
+/// including the ones that switch to a benchmark.
+#[test]
+fn chapter_help_lists_every_flag() {
+    let bins = [
+        (
+            env!("CARGO_BIN_EXE_ch2"),
+            &["--bench", "--cull-back-faces"][..],
+        ),
+        (env!("CARGO_BIN_EXE_ch3"), &["--bench", "--report"][..]),
+        (env!("CARGO_BIN_EXE_ch6"), &["--bench", "--report"][..]),
+    ];
+    for (bin, flags) in bins {
+        let out = std::process::Command::new(bin)
+            .arg("--help")
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{bin} --help failed");
+        let help = String::from_utf8_lossy(&out.stdout);
+        for flag in flags {
+            assert!(
+                help.contains(flag),
+                "{bin} --help does not list {flag}:\n{help}"
+            );
+        }
+    }
+}
