@@ -8,6 +8,7 @@
 //! | ray-plane, then ray-triangle: solve for u, v, t (Möller-Trumbore), and the watertight test | [`triangle`] |
 //! | the same watertight test, rearranged for speed | [`watertight_fast`] |
 //! | ray-mesh intersection: the naive loop over every triangle, and the bounding volume hierarchy | [`bvh`] |
+//! | the hierarchical approach, written to be read: a median-split BVH and its front-to-back traversal | [`readable_bvh`] |
 //! | the BVH in the four-wide layout the shading chapters trace | [`wide_bvh`] |
 //! | what is traced and what a first hit shows (depth, normal, barycentrics) | [`geometry`], [`render`] |
 //! | leaving a surface without hitting it again | [`spawn`] |
@@ -25,6 +26,7 @@ pub mod bvh;
 pub mod geometry;
 pub mod leaks;
 pub mod ray;
+pub mod readable_bvh;
 pub mod render;
 pub mod report;
 pub mod spawn;
