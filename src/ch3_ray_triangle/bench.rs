@@ -1,7 +1,7 @@
 //! Chapter 3's benchmark (`ch3 --bench`): BVH build time and ray
 //! throughput (Mrays/s) for coherent (primary) and incoherent (random)
-//! rays, closest hit and occlusion, on 1 and 2 threads, for raystep's stage
-//! and for obvhs alone. It prints a table; nothing here is a test.
+//! rays, closest hit and occlusion, on 1 and 2 threads, for raystep's stage,
+//! for obvhs alone and (closest hit only) for the readable BVH. It prints a table; nothing here is a test.
 //! `ch3 --bench bunny` (or `wavy`, or a triangle count such as `100000`)
 //! keeps only the matching meshes.
 
@@ -14,6 +14,7 @@ use crate::ch1_projection::camera::{Camera, CameraDesc};
 use crate::ch3_ray_triangle::bvh::{Bvh, ObvhsAlone, Triangles};
 use crate::ch3_ray_triangle::leaks::bunny;
 use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::readable_bvh::ReadableBvh;
 use crate::ch3_ray_triangle::studies::procedural_mesh;
 use crate::ch3_ray_triangle::triangle::{intersect_watertight, Intersector};
 use crate::core::format::{format_number, format_seconds};
@@ -108,7 +109,7 @@ pub fn benchmark(only: Option<&str>) -> Table {
         &[
             "mesh",
             "triangles",
-            "build (stage / obvhs)",
+            "build (stage / obvhs / readable)",
             "threads",
             "rays",
             "query",
@@ -116,6 +117,7 @@ pub fn benchmark(only: Option<&str>) -> Table {
             "stage, readable watertight",
             "stage, Möller–Trumbore",
             "obvhs alone",
+            "readable BVH",
             "stage / obvhs",
         ],
     );
@@ -133,6 +135,9 @@ pub fn benchmark(only: Option<&str>) -> Table {
         let t0 = Instant::now();
         let alone = ObvhsAlone::build(&tris.tris);
         let alone_build = t0.elapsed().as_secs_f64();
+        let t0 = Instant::now();
+        let readable = ReadableBvh::build(&tris.tris);
+        let readable_build = t0.elapsed().as_secs_f64();
         let batches = [
             ("primary", primary_rays(&framing_camera(&mesh, 640, 480))),
             ("random", random_rays(&mesh, 300_000)),
@@ -154,6 +159,7 @@ pub fn benchmark(only: Option<&str>) -> Table {
                                     &|r| bvh.closest_with(r, inf, intersect_watertight).is_some(),
                                     &|r| bvh.closest(r, inf, Intersector::MollerTrumbore).is_some(),
                                     &|r| alone.closest_t(r) < inf,
+                                    &|r| readable.closest(r, inf).is_some(),
                                 ],
                             )
                         } else {
@@ -172,9 +178,10 @@ pub fn benchmark(only: Option<&str>) -> Table {
                         mesh.name.clone(),
                         tris.tris.len().to_string(),
                         format!(
-                            "{} / {}",
+                            "{} / {} / {}",
                             format_seconds(bvh.build_seconds),
-                            format_seconds(alone_build)
+                            format_seconds(alone_build),
+                            format_seconds(readable_build)
                         ),
                         threads.to_string(),
                         format!("{kind} ({})", rays.len()),
@@ -183,6 +190,8 @@ pub fn benchmark(only: Option<&str>) -> Table {
                         format_number(r[1].0),
                         format_number(r[2].0),
                         format_number(r[3].0),
+                        // The readable BVH has no occlusion query of its own.
+                        r.get(4).map_or("-".into(), |q| format_number(q.0)),
                         format_number(r[0].0 / r[3].0),
                     ]);
                 }

@@ -18,6 +18,48 @@ use crate::ch5_reflection::warp::{uniform_hemisphere, UNIFORM_HEMISPHERE_PDF};
 use crate::ch5_reflection::world::{Interaction, World};
 use crate::core::sampling::Sampler;
 
+/// The first rung of the ladder, to be read on its own: the radiance
+/// arriving along a camera ray, with the reflection equation estimated by
+/// *light sampling* alone. Whatever the ray hits adds its own emission and,
+/// for each light, one sample: a point on the light (or the one direction
+/// of a point, spot or directional light) and a shadow ray to it,
+/// weighted f · L · cos θ / pdf. No BRDF sampling and no MIS.
+///
+/// This is [`Strategy::Light`] of [`Estimator::radiance`] without its
+/// options: it draws the same random numbers in the same order, so on a
+/// scene without mirrors the two give the same image up to rounding (a
+/// test checks it), and both converge to the image of [`Strategy::Mis`].
+/// An ideal mirror reflects light from one direction only, which no light
+/// sample hits: here it stays black, where [`Estimator::radiance`] follows
+/// its reflected ray.
+// ANCHOR: direct_lighting
+pub fn direct_lighting(world: &World, ray: &Ray, s: &mut Sampler) -> Vec3 {
+    let Some(it) = world.intersect(ray) else {
+        return world.lights.environment_radiance(ray.dir); // the sky, if any
+    };
+    let wo = -ray.dir;
+    let bsdf = &world.bsdfs[it.material];
+    let frame = Frame::from_normal(it.n);
+    // The normal on the viewer's side (BRDFs are two-sided).
+    let n = if wo.dot(it.n) < 0.0 { -it.n } else { it.n };
+    let mut l = world.emitted(&it, wo);
+    for light in &world.lights.lights {
+        // A direction towards the light, the radiance it brings and its pdf
+        // (per solid angle; 1 for a light with a single direction).
+        let Some(ls) = light.sample_li(it.p, n, s.next2()) else {
+            continue;
+        };
+        let cos = ls.wi.dot(n);
+        if cos <= 0.0 || !world.unoccluded(it.p, it.n, ls.wi, ls.dist) {
+            continue; // behind the surface, or in shadow
+        }
+        let f = bsdf.f(frame.to_local(wo), frame.to_local(ls.wi));
+        l += f * ls.li * cos / ls.pdf;
+    }
+    l
+}
+// ANCHOR_END: direct_lighting
+
 /// How the integral over lights with extent is estimated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Strategy {

@@ -5,5 +5,6 @@ mod common;
 
 mod bsdf;
 mod exercises;
+mod ladder;
 mod radiometry;
 mod reflection;
