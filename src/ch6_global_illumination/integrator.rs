@@ -12,6 +12,9 @@
 //! ([`Estimator`]); only which directions are drawn and how emission found
 //! by each strategy is weighted differ.
 //!
+//! [`random_walk`] is the ladder's first rung on its own, without the
+//! loop's options and bookkeeping, to be read first.
+//!
 //! Every contribution is added to the *layer* of its bounce count: the
 //! slot [`SLOT_EMITTED`] holds emitters seen directly (layer E), slot
 //! `1 + k` light that scattered k + 1 times between emitter and camera
@@ -25,6 +28,7 @@ use crate::ch5_reflection::material::{Bsdf, Frame};
 use crate::ch5_reflection::mis::power_heuristic;
 use crate::ch5_reflection::warp::{uniform_hemisphere, UNIFORM_HEMISPHERE_PDF};
 use crate::ch5_reflection::world::World;
+use crate::core::sampling::Sampler;
 
 use super::sampler::PathSampler;
 
@@ -317,6 +321,63 @@ pub fn trace_path(
     }
 }
 // ANCHOR_END: trace_path
+
+/// The lecture's simplest path tracer, to be read on its own: a *uniform
+/// random walk*. From the camera, the path hits a surface, adds the light
+/// that surface emits towards it, picks a direction uniformly over the
+/// hemisphere, and goes on, its throughput β multiplied each time by
+/// f · cos θ / pdf. Light is found only when the walk happens to hit an
+/// emitter (or escapes to the sky). A path scatters at most `max_depth`
+/// times (the full loop's `max_bounces` k is `max_depth` k + 1).
+///
+/// [`trace_path`] with [`Estimator::UniformWalk`] draws its directions the
+/// same way, but inside the full loop with its bookkeeping (light layers,
+/// Sobol dimensions, Russian roulette), so its numbers and this function's
+/// differ; a test checks that both converge to the image of the full MIS
+/// loop. The random numbers here are plain independent ones.
+// ANCHOR: random_walk
+pub fn random_walk(world: &World, mut ray: Ray, max_depth: u32, s: &mut Sampler) -> Vec3 {
+    let mut l = Vec3::ZERO; // the radiance gathered so far
+    let mut beta = Vec3::ONE; // the path's throughput
+    let mut depth = 0;
+    loop {
+        let Some(it) = world.intersect(&ray) else {
+            // Escaped: the sky, if the scene has one.
+            return l + beta * world.lights.environment_radiance(ray.dir);
+        };
+        // Light emitted towards the path by the surface it hit.
+        l += beta * world.emitted(&it, -ray.dir);
+        if depth == max_depth {
+            return l;
+        }
+        depth += 1;
+        let bsdf = &world.bsdfs[it.material];
+        let frame = Frame::from_normal(it.n);
+        let wo = frame.to_local(-ray.dir);
+        let (wi, weight) = if bsdf.is_delta() {
+            // A mirror or glass sends light into one direction only, which
+            // a uniform direction never finds: take that direction.
+            match bsdf.sample(wo, s.next2(), s.next()) {
+                Some(b) => (b.wi, b.weight),
+                None => return l,
+            }
+        } else {
+            // A direction uniform over the hemisphere the path came from.
+            let mut wi = uniform_hemisphere(s.next2());
+            wi.z = wi.z.copysign(wo.z);
+            (wi, bsdf.f(wo, wi) * wi.z.abs() / UNIFORM_HEMISPHERE_PDF)
+        };
+        if weight == Vec3::ZERO || !weight.is_finite() {
+            return l; // the path carries no more light
+        }
+        beta *= weight;
+        match world.spawn(it.p, it.n, frame.to_world(wi)) {
+            Some(next) => ray = next,
+            None => return l,
+        }
+    }
+}
+// ANCHOR_END: random_walk
 
 /// The weight of emission found by a BSDF-sampled direction of density
 /// `pdf_bsdf` that light sampling would have drawn with `pdf_light`.

@@ -5,5 +5,6 @@ mod common;
 
 mod exercises;
 mod global_illumination;
+mod ladder;
 #[cfg(feature = "tui")]
 mod tui;
