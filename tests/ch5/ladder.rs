@@ -82,6 +82,7 @@ fn direct_lighting_is_the_light_strategy_up_to_rounding() {
     assert!(lit > 500, "only {lit} lit samples");
 }
 
+// ANCHOR: converge
 #[test]
 fn direct_lighting_and_mis_converge_to_the_same_image() {
     let scene = Scene::builtin().with_resolution(16, 16).unwrap();
@@ -104,3 +105,4 @@ fn direct_lighting_and_mis_converge_to_the_same_image() {
     dimmer.pixels.iter_mut().for_each(|p| *p *= 0.9);
     assert!(!region_z_test(&dimmer, &lesson_var, &reference, 4, 1e-3).passed());
 }
+// ANCHOR_END: converge

@@ -43,6 +43,7 @@ fn walk_image(scene: &Scene, spp: u32, max_depth: u32) -> (Film, Film) {
     (mean, var)
 }
 
+// ANCHOR: walk_against_mis
 /// The random walk (`walk_spp` samples) against the full MIS loop
 /// (`mis_spp`), both with at most 16 bounces, in `block`² regions.
 /// `caught` is a brightness factor the test must catch (its power).
@@ -70,6 +71,7 @@ fn walk_against_mis(
     assert!(!power.passed(), "×{caught} passes: {power:?}");
     (t, walk)
 }
+// ANCHOR_END: walk_against_mis
 
 #[test]
 fn the_random_walk_converges_to_the_mis_image_of_the_cornell_box() {
