@@ -296,7 +296,7 @@ fn ch3_exercise_stubs_fail_cleanly_and_references_pass() {
         .into_iter()
         .filter(|e| e.chapter == 3)
         .collect();
-    assert_eq!(exercises.len(), 3);
+    assert_eq!(exercises.len(), 4);
     for ex in &exercises {
         let text = std::fs::read_to_string(ex.file).unwrap();
         if text.contains("todo!()") {

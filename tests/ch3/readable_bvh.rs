@@ -184,11 +184,6 @@ fn a_quarter_million_coincident_centroids_build_in_n_log_n() {
 }
 
 #[test]
-fn chapter_3_references_pass_and_stubs_fail_cleanly() {
-    crate::common::references_pass_and_stubs_fail_cleanly(3, 4);
-}
-
-#[test]
 fn the_traversal_exercise_passes_the_reference_and_fails_wrong_traversals() {
     let check = check_bvh_traversal(closest_hit);
     assert!(check.passed(), "{check:?}");
