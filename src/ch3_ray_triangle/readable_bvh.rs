@@ -135,78 +135,23 @@ pub struct ReadableBvh {
 }
 
 impl ReadableBvh {
-    /// Builds the tree over `tris`; an empty list gives an empty tree (no
-    /// nodes, and every ray misses).
+    /// Builds the tree over `tris` (see `subdivide` below); an empty list
+    /// gives an empty tree (no nodes, and every ray misses).
     // ANCHOR: build
     pub fn build(tris: &[[Vec3; 3]]) -> ReadableBvh {
-        let mut bvh = ReadableBvh {
-            nodes: Vec::with_capacity(2 * tris.len()),
-            order: (0..tris.len() as u32).collect(),
-            tris: tris.to_vec(),
-        };
+        let boxes: Vec<Aabb> = tris.iter().map(Aabb::around).collect();
+        // A triangle's centroid: the mean of its vertices.
+        let centroids: Vec<Vec3> = tris.iter().map(|[a, b, c]| (*a + *b + *c) / 3.0).collect();
+        let mut order: Vec<u32> = (0..tris.len() as u32).collect();
+        let mut nodes = Vec::with_capacity(2 * tris.len());
         if !tris.is_empty() {
-            let boxes: Vec<Aabb> = tris.iter().map(Aabb::around).collect();
-            // A triangle's centroid: the mean of its vertices.
-            let centroids: Vec<Vec3> = tris.iter().map(|[a, b, c]| (*a + *b + *c) / 3.0).collect();
-            let mut order = std::mem::take(&mut bvh.order);
-            bvh.subdivide(&mut order, 0, &boxes, &centroids);
-            bvh.order = order;
+            subdivide(&mut nodes, &mut order, 0, &boxes, &centroids);
         }
-        bvh
-    }
-
-    /// Makes a node for the triangles `ids` (which start at `first` in
-    /// `order`) and returns its index. Above [`MAX_LEAF`] triangles, the
-    /// node splits them at the median centroid along the axis where the
-    /// centroids spread most: half go left, half right, whatever the
-    /// geometry. The tree is therefore about log₂ N deep, and each level
-    /// costs O(N) (`select_nth_unstable_by` finds a median in linear time),
-    /// so building takes O(N log N) even when many centroids coincide
-    /// (ties are split by count like any others).
-    fn subdivide(
-        &mut self,
-        ids: &mut [u32],
-        first: usize,
-        boxes: &[Aabb],
-        centroids: &[Vec3],
-    ) -> u32 {
-        let bounds = ids
-            .iter()
-            .fold(Aabb::EMPTY, |b, &i| b.union(boxes[i as usize]));
-        let index = self.nodes.len();
-        self.nodes.push(Node {
-            bounds,
-            kind: NodeKind::Leaf {
-                first: first as u32,
-                count: ids.len() as u32,
-            },
-        });
-        if ids.len() <= MAX_LEAF {
-            return index as u32;
+        ReadableBvh {
+            nodes,
+            order,
+            tris: tris.to_vec(),
         }
-        // The axis along which the centroids spread most...
-        let spread = ids
-            .iter()
-            .fold(Aabb::EMPTY, |b, &i| b.grow(centroids[i as usize]));
-        let extent = spread.max - spread.min;
-        let axis = if extent.x >= extent.y && extent.x >= extent.z {
-            0
-        } else if extent.y >= extent.z {
-            1
-        } else {
-            2
-        };
-        // ... and the median along it: every id left of `mid` has a centroid
-        // no larger than every id right of it.
-        let mid = ids.len() / 2;
-        ids.select_nth_unstable_by(mid, |&a, &b| {
-            centroids[a as usize][axis].total_cmp(&centroids[b as usize][axis])
-        });
-        let (left_ids, right_ids) = ids.split_at_mut(mid);
-        let left = self.subdivide(left_ids, first, boxes, centroids);
-        let right = self.subdivide(right_ids, first + mid, boxes, centroids);
-        self.nodes[index].kind = NodeKind::Inner { left, right };
-        index as u32
     }
     // ANCHOR_END: build
 
@@ -233,6 +178,63 @@ impl ReadableBvh {
         }
     }
 }
+
+/// Makes a node for the triangles `ids` (which start at `first` in the
+/// tree's `order`), appends it and everything below it to `nodes`, and
+/// returns its index. Above [`MAX_LEAF`] triangles, the node splits them
+/// at the median centroid along the axis where the centroids spread most:
+/// half go left, half right, whatever the geometry. The tree is therefore
+/// about log₂ N deep, and each level costs O(N) (`select_nth_unstable_by`
+/// finds a median in linear time), so building takes O(N log N) even when
+/// many centroids coincide (ties are split by count like any others).
+// ANCHOR: subdivide
+fn subdivide(
+    nodes: &mut Vec<Node>,
+    ids: &mut [u32],
+    first: usize,
+    boxes: &[Aabb],
+    centroids: &[Vec3],
+) -> u32 {
+    let bounds = ids
+        .iter()
+        .fold(Aabb::EMPTY, |b, &i| b.union(boxes[i as usize]));
+    let index = nodes.len();
+    nodes.push(Node {
+        bounds,
+        kind: NodeKind::Leaf {
+            first: first as u32,
+            count: ids.len() as u32,
+        },
+    });
+    if ids.len() <= MAX_LEAF {
+        return index as u32;
+    }
+    // The axis along which the centroids spread most...
+    let spread = ids
+        .iter()
+        .fold(Aabb::EMPTY, |b, &i| b.grow(centroids[i as usize]));
+    let extent = spread.max - spread.min;
+    let axis = if extent.x >= extent.y && extent.x >= extent.z {
+        0
+    } else if extent.y >= extent.z {
+        1
+    } else {
+        2
+    };
+    // ... and the median along it: afterwards no id left of `mid` has a
+    // larger centroid than any id right of it.
+    let mid = ids.len() / 2;
+    ids.select_nth_unstable_by(mid, |&a, &b| {
+        centroids[a as usize][axis].total_cmp(&centroids[b as usize][axis])
+    });
+    let (left_ids, right_ids) = ids.split_at_mut(mid);
+    let left = subdivide(nodes, left_ids, first, boxes, centroids);
+    let right = subdivide(nodes, right_ids, first + mid, boxes, centroids);
+    // Now that both children exist, the leaf becomes an inner node.
+    nodes[index].kind = NodeKind::Inner { left, right };
+    index as u32
+}
+// ANCHOR_END: subdivide
 
 /// Subtrees waiting on the traversal's stack at most. The median split
 /// keeps the tree below 33 levels for any triangle count that fits in a
