@@ -3,15 +3,6 @@
 
 use crate::core::film::Film;
 
-/// Whose code a check runs.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Solution {
-    /// The exercise file as the student left it.
-    Student,
-    /// raystep's reference implementation.
-    Reference,
-}
-
 /// What a check measured.
 #[derive(Clone, Debug)]
 pub struct Check {
@@ -43,6 +34,16 @@ pub enum Outcome {
     NotImplemented,
     /// The code panicked; the panic message.
     Panicked(String),
+    /// The check ran past the time limit (seconds) and was stopped; what it
+    /// was doing last.
+    TimedOut {
+        /// The limit, in seconds.
+        seconds: f64,
+        /// The last progress line the check printed (which case).
+        doing: String,
+    },
+    /// The exercise file does not compile; the compiler's messages about it.
+    DoesNotCompile(String),
 }
 
 impl Outcome {
@@ -61,10 +62,12 @@ pub struct Exercise {
     pub name: &'static str,
     /// The file a student edits, relative to the repository root.
     pub file: &'static str,
-    /// Printed when it does not pass.
-    pub hint: &'static str,
-    /// Runs the check on the student's or the reference code.
-    pub grade: fn(Solution) -> Check,
+    /// Hints in tiers: a nudge (which slide, which idea) shown with a
+    /// failure, the idea worked out (`grade --hint`), the formula last.
+    pub hints: [&'static str; 3],
+    /// Runs the check on raystep's reference code (the student's code is
+    /// checked by the same function, from the exercises crate).
+    pub reference: fn() -> Check,
 }
 
 impl Exercise {

@@ -1,28 +1,33 @@
 //! Grading students' solutions.
 //!
 //! Each chapter ships exercise files (`chapters/chN-…/exercises/*.rs`) whose
-//! bodies are `todo!()` with `// TODO` notes; they are compiled into the
-//! library as [`crate::grading::exercises`], so they always build. A chapter's
-//! exercise manifest lists, for each file, a hint and a check that measures
-//! a candidate against raystep's own reference with a tolerance.
+//! bodies are `todo!()` with `// TODO` notes. They are a crate of their own,
+//! `raystep-exercises` (`chapters/Cargo.toml`), which the grader builds:
+//! an edit rebuilds only that crate, and a file that does not compile is
+//! left out of the build and reported, while the others are graded. A
+//! chapter's manifest ([`exercises`]) lists, for each file, hints in three
+//! tiers and a check that measures a candidate against raystep's own
+//! reference with a tolerance.
 //!
-//! `cargo run --release --bin grade` runs every check on the student's code
-//! and prints pass or fail, the measured error and the hint. A `todo!()` or
-//! any other panic is caught and reported: the grader never crashes. When a
-//! check compares images and fails, the student's image, the reference and
-//! their difference are written to `out/grade/`.
+//! `cargo run --release --bin grade` ([`driver`]) builds the exercises,
+//! then runs every check in a process of its own ([`runner`]) under a time
+//! limit, and prints each result as it finishes. A `todo!()`, a panic, a
+//! crash or a loop that never ends are reported: the grader never crashes
+//! and never hangs. When a check compares images and fails, the student's
+//! image, the reference and their difference are written to `out/grade/`.
 
+pub mod driver;
 pub mod exercise;
 pub mod exercises;
+pub mod hints;
+pub mod runner;
 
-pub use exercise::{Check, Exercise, Outcome, Solution};
+pub use driver::grade_main;
+pub use exercise::{Check, Exercise, Outcome};
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 use std::sync::Mutex;
-
-use clap::Parser;
 
 use crate::core::error::Result;
 use crate::core::film::Film;
@@ -35,12 +40,18 @@ pub fn all() -> Vec<Exercise> {
 /// Only one grading at a time swaps the panic hook.
 static HOOK: Mutex<()> = Mutex::new(());
 
-/// Grades one exercise, catching `todo!()` and any other panic.
-pub fn run(ex: &Exercise, who: Solution) -> Outcome {
+/// Grades raystep's reference solution of one exercise, in this process
+/// (the student's code runs in a process of its own: see [`driver`]).
+pub fn run(ex: &Exercise) -> Outcome {
+    run_check(ex.reference)
+}
+
+/// Runs a check, catching `todo!()` and any other panic.
+pub fn run_check(check: fn() -> Check) -> Outcome {
     let _guard = HOOK.lock().unwrap_or_else(|e| e.into_inner());
     let previous = std::panic::take_hook();
     std::panic::set_hook(Box::new(|_| {}));
-    let result = catch_unwind(AssertUnwindSafe(|| (ex.grade)(who)));
+    let result = catch_unwind(AssertUnwindSafe(check));
     std::panic::set_hook(previous);
     match result {
         Ok(check) if check.passed() => Outcome::Passed(check),
@@ -125,113 +136,21 @@ pub fn latest_failure_images(dir: &Path) -> Result<Option<FailureImages>> {
     }))
 }
 
-/// Grade your solutions to the exercises against raystep's reference.
-#[derive(Parser, Debug)]
-#[command(name = "grade")]
-struct GradeCli {
-    /// Chapters to grade (`ch1` or `1`); all when omitted.
-    chapters: Vec<String>,
-    /// Grade raystep's reference solutions instead (they must all pass).
-    #[arg(long)]
-    reference: bool,
-    /// Where images of failed image checks go.
-    #[arg(long, value_name = "DIR", default_value = "out/grade")]
-    out: PathBuf,
-}
+/// The prefix of a progress line on a check's standard error.
+pub const PROGRESS: &str = "@@raystep-progress@@ ";
 
-/// The whole `main` of the `grade` binary.
-pub fn grade_main() -> ExitCode {
-    let cli = GradeCli::parse();
-    let mut wanted = Vec::new();
-    for c in &cli.chapters {
-        match c.trim_start_matches("ch").parse::<u32>() {
-            Ok(n) => wanted.push(n),
-            Err(_) => {
-                eprintln!("error: `{c}` is not a chapter; expected e.g. `ch1` or `1`");
-                return ExitCode::from(2);
-            }
-        }
-    }
-    let exercises: Vec<Exercise> = all()
-        .into_iter()
-        .filter(|e| wanted.is_empty() || wanted.contains(&e.chapter))
-        .collect();
-    if exercises.is_empty() {
-        eprintln!("error: no exercises for chapters {:?}", cli.chapters);
-        return ExitCode::from(2);
-    }
-    let who = if cli.reference {
-        Solution::Reference
-    } else {
-        Solution::Student
-    };
-    let (text, passed) = grade_report(&exercises, who, &cli.out);
-    print!("{text}");
-    if passed == exercises.len() {
-        ExitCode::SUCCESS
-    } else {
-        ExitCode::from(1)
-    }
-}
+/// The variable the grader sets for the checks it runs in a process of
+/// their own; [`progress`] is silent without it.
+pub const PROGRESS_ENV: &str = "RAYSTEP_GRADE_PROGRESS";
 
-/// Grades `exercises` and returns the printed report and the number passed.
-pub fn grade_report(exercises: &[Exercise], who: Solution, out: &Path) -> (String, usize) {
-    let width = exercises.iter().map(|e| e.id().len()).max().unwrap_or(0);
-    let mut text = format!(
-        "grading {} exercises ({})\n",
-        exercises.len(),
-        match who {
-            Solution::Student => "your solutions",
-            Solution::Reference => "reference solutions",
-        }
-    );
-    let mut passed = 0;
-    let mut wrote_images = false;
-    for ex in exercises {
-        let outcome = run(ex, who);
-        let id = format!("{:width$}", ex.id());
-        let line = match &outcome {
-            Outcome::Passed(c) => {
-                passed += 1;
-                format!(
-                    "  {id}  PASS  error {:.3e} within {:.0e}\n",
-                    c.error, c.tolerance
-                )
-            }
-            Outcome::Failed(c) => {
-                let mut s = format!(
-                    "  {id}  FAIL  error {:.3e} exceeds {:.0e}: {}\n",
-                    c.error, c.tolerance, c.detail
-                );
-                match write_failure_images(ex, c, out) {
-                    Ok(files) if !files.is_empty() => {
-                        wrote_images = true;
-                        let names: Vec<String> =
-                            files.iter().map(|f| f.display().to_string()).collect();
-                        s += &format!("  {:width$}        images: {}\n", "", names.join(", "));
-                    }
-                    Ok(_) => {}
-                    Err(e) => s += &format!("  {:width$}        could not write images: {e}\n", ""),
-                }
-                s
-            }
-            Outcome::NotImplemented => {
-                format!(
-                    "  {id}  FAIL  not implemented yet: replace the todo!() in {}\n",
-                    ex.file
-                )
-            }
-            Outcome::Panicked(m) => format!("  {id}  FAIL  panicked: {m}\n"),
-        };
-        text += &line;
-        if !outcome.is_pass() {
-            text += &format!("  {:width$}        hint: {}\n", "", ex.hint);
-        }
+/// Tells the grader what a check is doing now (which case, which pixel):
+/// if the student's code never returns, the timeout names it.
+pub fn progress(what: impl std::fmt::Display) {
+    use std::io::Write;
+    if std::env::var_os(PROGRESS_ENV).is_none() {
+        return;
     }
-    text += &format!("{passed} of {} passed\n", exercises.len());
-    if wrote_images {
-        text += "to compare the newest images side by side: open the terminal UI \
-                 (`cargo run --release`) and press `g`\n";
-    }
-    (text, passed)
+    let mut err = std::io::stderr().lock();
+    let _ = writeln!(err, "{PROGRESS}{what}");
+    let _ = err.flush();
 }

@@ -17,7 +17,7 @@ use raystep::ch2_rasterization::stage::Rasterization;
 use raystep::ch2_rasterization::studies::{screen_fan, screen_grid, star, test_camera};
 use raystep::core::report::Times;
 use raystep::core::stage::{Chapter, Settings};
-use raystep::grading::{self, Outcome, Solution};
+use raystep::grading;
 use raystep::scene::mesh::Mesh;
 use raystep::scene::{Material, Scene};
 
@@ -369,23 +369,15 @@ fn mesh_checks_on_the_lecture_cases() {
 }
 
 #[test]
-fn exercise_stubs_fail_cleanly_and_references_pass() {
+fn exercise_references_pass() {
     let ex: Vec<_> = grading::all()
         .into_iter()
         .filter(|e| e.chapter == 2)
         .collect();
     assert_eq!(ex.len(), 3);
     for e in &ex {
-        let text =
-            std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(e.file)).unwrap();
-        if text.contains("todo!()") {
-            assert!(
-                matches!(grading::run(e, Solution::Student), Outcome::NotImplemented),
-                "{}",
-                e.id()
-            );
-        }
-        assert!(grading::run(e, Solution::Reference).is_pass(), "{}", e.id());
+        assert!(Path::new(env!("CARGO_MANIFEST_DIR")).join(e.file).is_file());
+        assert!(grading::run(e).is_pass(), "{}", e.id());
     }
 }
 

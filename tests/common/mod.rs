@@ -26,29 +26,20 @@ pub fn root() -> PathBuf {
 }
 pub mod chi2;
 
-/// Every exercise of `chapter` (there must be `count`): its reference
-/// solution passes, and while the student file still holds `todo!()`, the
-/// shipped stub is reported as not implemented (not as a crash or a pass).
-pub fn references_pass_and_stubs_fail_cleanly(chapter: u32, count: usize) {
-    use raystep::grading::{self, Outcome, Solution};
+/// Every exercise of `chapter` (there must be `count`): its file exists
+/// and its reference solution passes. (That every shipped stub fails
+/// cleanly is checked through the grader itself, which builds the
+/// exercises crate: `tests/project/grading.rs`.)
+pub fn references_pass(chapter: u32, count: usize) {
+    use raystep::grading;
     let exercises: Vec<_> = grading::all()
         .into_iter()
         .filter(|e| e.chapter == chapter)
         .collect();
     assert_eq!(exercises.len(), count);
     for ex in &exercises {
-        assert!(
-            grading::run(ex, Solution::Reference).is_pass(),
-            "{}",
-            ex.id()
-        );
-        let source = std::fs::read_to_string(root().join(ex.file)).unwrap();
-        if source.contains("todo!()") {
-            assert!(
-                matches!(grading::run(ex, Solution::Student), Outcome::NotImplemented),
-                "{}",
-                ex.id()
-            );
-        }
+        assert!(root().join(ex.file).is_file(), "{}", ex.file);
+        let outcome = grading::run(ex);
+        assert!(outcome.is_pass(), "{}: {outcome:?}", ex.id());
     }
 }

@@ -1,41 +1,67 @@
-//! The grader: every shipped stub fails cleanly, every reference solution
-//! passes, wrong answers fail with a measured error (and images for image
-//! checks), and the `grade` command reports all of it.
+//! The grader: every reference solution passes, every shipped stub is "not
+//! started" (through the real `grade` command, which builds the exercises
+//! crate), wrong answers fail with a measured error (and images for image
+//! checks), a loop that never ends is stopped, an exercise that does not
+//! compile is reported and leaves the others graded, hints come in tiers,
+//! and `--json` writes Gradescope's results.json.
+
+use std::path::{Path, PathBuf};
+use std::process::Output;
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
 
 use crate::common;
 use glam::{Mat4, Vec2};
+use raystep::grading::driver::{describe, grade_stream};
 use raystep::grading::exercises::ch1;
-use raystep::grading::{self, grade_report, write_failure_images, Outcome, Solution};
+use raystep::grading::{self, write_failure_images, Outcome};
+
+/// One `grade` that builds the exercises crate at a time (they share the
+/// crate's build folder and its `grade-student` binary).
+static BUILD: Mutex<()> = Mutex::new(());
+
+/// Runs the `grade` command with `args`; images and hints go to `out`.
+fn grade(args: &[&str], out: &Path) -> (Output, String, Duration) {
+    let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
+    let start = Instant::now();
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_grade"))
+        .args(args)
+        .arg("--out")
+        .arg(out)
+        .current_dir(common::root())
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&output.stdout).into_owned();
+    (output, text, start.elapsed())
+}
+
+/// A copy of every chapter's exercise folder under `dir`, as shipped.
+fn copy_exercises(dir: &Path) -> PathBuf {
+    let src = common::root().join("chapters");
+    for chapter in std::fs::read_dir(&src).unwrap().flatten() {
+        let ex = chapter.path().join("exercises");
+        if !ex.is_dir() {
+            continue;
+        }
+        let to = dir.join(chapter.file_name()).join("exercises");
+        std::fs::create_dir_all(&to).unwrap();
+        for f in std::fs::read_dir(&ex).unwrap().flatten() {
+            std::fs::copy(f.path(), to.join(f.file_name())).unwrap();
+        }
+    }
+    dir.to_path_buf()
+}
 
 #[test]
 fn every_reference_solution_passes() {
     let all = grading::all();
-    assert!(!all.is_empty());
+    assert!(all.len() >= 18);
     for ex in &all {
-        let outcome = grading::run(ex, Solution::Reference);
+        let outcome = grading::run(ex);
         assert!(outcome.is_pass(), "{}: {outcome:?}", ex.id());
-    }
-}
-
-#[test]
-fn every_shipped_stub_fails_cleanly() {
-    for ex in grading::all() {
-        let source = std::fs::read_to_string(common::root().join(ex.file)).unwrap();
-        let outcome = grading::run(&ex, Solution::Student);
-        if source.contains("todo!()") {
-            assert!(
-                matches!(outcome, Outcome::NotImplemented),
-                "{}: {outcome:?}",
-                ex.id()
-            );
-        } else {
-            // A student has filled it in: grading still ends in a verdict.
-            assert!(
-                matches!(outcome, Outcome::Passed(_) | Outcome::Failed(_)),
-                "{}: {outcome:?}",
-                ex.id()
-            );
-        }
+        assert!(common::root().join(ex.file).is_file(), "{}", ex.file);
+        // Three tiers, each saying something.
+        assert!(ex.hints.iter().all(|h| h.len() > 20), "{}", ex.id());
     }
 }
 
@@ -54,11 +80,14 @@ fn a_wrong_projection_fails_with_its_worst_case() {
 #[test]
 fn a_wrong_look_at_fails_and_writes_images() {
     // Returning world_from_camera instead of its inverse.
-    let check = ch1::check_look_at(|e, t, u| {
-        raystep::ch1_projection::camera::camera_from_world_look_at(e, t, u)
-            .unwrap()
-            .inverse()
-    });
+    let wrong = || {
+        ch1::check_look_at(|e, t, u| {
+            raystep::ch1_projection::camera::camera_from_world_look_at(e, t, u)
+                .unwrap()
+                .inverse()
+        })
+    };
+    let check = wrong();
     assert!(!check.passed());
     let (candidate, reference) = check.images.as_ref().unwrap();
     assert!(candidate.rmse(reference) > 0.01);
@@ -69,7 +98,7 @@ fn a_wrong_look_at_fails_and_writes_images() {
         .unwrap();
     let files = write_failure_images(&ex, &check, &dir).unwrap();
     assert_eq!(files.len(), 3);
-    for f in files {
+    for f in &files {
         assert!(f.exists(), "{}", f.display());
     }
     // The TUI's `g` reads the pair back: the student's image and the
@@ -78,23 +107,15 @@ fn a_wrong_look_at_fails_and_writes_images() {
     assert_eq!(pair.stem, "ch1-look_at");
     assert_eq!(pair.student.to_srgb8(), candidate.to_srgb8());
     assert_eq!(pair.reference.to_srgb8(), reference.to_srgb8());
-    // The printed report points to it when it has written images.
-    let wrong = grading::Exercise {
-        grade: |_| {
-            ch1::check_look_at(|e, t, u| {
-                raystep::ch1_projection::camera::camera_from_world_look_at(e, t, u)
-                    .unwrap()
-                    .inverse()
-            })
-        },
-        ..ex
-    };
-    let (text, passed) = grade_report(&[wrong], Solution::Student, &dir);
-    assert_eq!(passed, 0);
-    assert!(text.contains("images: "), "{text}");
-    assert!(text.contains("press `g`"), "{text}");
-    let (text, _) = grade_report(&[ex], Solution::Reference, &dir);
-    assert!(!text.contains("press `g`"), "{text}");
+    // The printed result names the images and gives the first hint only.
+    let text = describe(&ex, &grading::run_check(wrong), 12, &files);
+    assert!(text.contains("FAIL") && text.contains("images: "), "{text}");
+    assert!(text.contains(ex.hints[0]), "{text}");
+    assert!(
+        !text.contains(ex.hints[2]),
+        "the formula is the last tier: {text}"
+    );
+    assert!(text.contains("grade --hint ch1/look_at"), "{text}");
     // The identity is not a camera either.
     assert!(!ch1::check_look_at(|_, _, _| Mat4::IDENTITY).passed());
 }
@@ -105,15 +126,26 @@ fn a_panicking_solution_is_reported_not_fatal() {
         chapter: 0,
         name: "boom",
         file: "none.rs",
-        hint: "do not divide by zero",
-        grade: |_| ch1::check_project_point(|_| panic!("index out of bounds")),
+        hints: [
+            "do not divide by zero, says the first slide",
+            "the second tier of the hint, about the idea",
+            "the third tier of the hint, the formula",
+        ],
+        reference: || ch1::check_project_point(|_| panic!("index out of bounds")),
     };
-    match grading::run(&ex, Solution::Student) {
+    match grading::run(&ex) {
         Outcome::Panicked(m) => assert!(m.contains("index out of bounds")),
         other => panic!("{other:?}"),
     }
-    let (text, passed) = grade_report(&[ex], Solution::Student, &common::temp_dir("boom"));
-    assert_eq!(passed, 0);
+    let mut printed = Vec::new();
+    let results = grade_stream(
+        &[ex],
+        &mut |e| (grading::run(e), Vec::new()),
+        &mut printed,
+        false,
+    );
+    let text = String::from_utf8(printed).unwrap();
+    assert!(!results[0].1.is_pass());
     assert!(
         text.contains("FAIL  panicked: index out of bounds"),
         "{text}"
@@ -122,37 +154,175 @@ fn a_panicking_solution_is_reported_not_fatal() {
 }
 
 #[test]
-fn the_grade_command_reports_pass_and_fail() {
-    let dir = common::temp_dir("grade-cmd");
-    let run = |args: &[&str]| {
-        std::process::Command::new(env!("CARGO_BIN_EXE_grade"))
-            .args(args)
-            .args(["--out", dir.to_str().unwrap()])
-            .current_dir(common::root())
-            .output()
-            .unwrap()
-    };
-    let out = run(&["--reference"]);
-    let text = String::from_utf8_lossy(&out.stdout);
+fn the_grade_command_grades_references_and_rejects_bad_arguments() {
+    let dir = common::temp_dir("grade-ref");
+    let (out, text, _) = grade(&["--reference"], &dir);
     assert!(out.status.success(), "{text}");
     let n = grading::all().len();
     assert!(text.contains(&format!("{n} of {n} passed")), "{text}");
-
-    let out = run(&["ch1"]);
-    let text = String::from_utf8_lossy(&out.stdout);
-    let stubs = ["project_point", "look_at"].iter().filter(|f| {
-        std::fs::read_to_string(
-            common::root().join(format!("chapters/ch1-projection/exercises/{f}.rs")),
-        )
-        .unwrap()
-        .contains("todo!()")
-    });
-    if stubs.count() > 0 {
-        assert_eq!(out.status.code(), Some(1), "{text}");
-        assert!(text.contains("not implemented yet"), "{text}");
-        assert!(text.contains("hint:"), "{text}");
-    }
-    let out = run(&["chapter-one"]);
+    let (out, _, _) = grade(&["chapter-one"], &dir);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("is not a chapter"));
+    let (out, _, _) = grade(&["--hint", "ch9/nothing"], &dir);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn every_shipped_stub_is_not_started_and_gives_no_hint() {
+    let dir = common::temp_dir("grade-stubs");
+    let exercises = copy_exercises(&common::temp_dir("grade-stubs-src"));
+    let (out, text, _) = grade(&["--exercises", exercises.to_str().unwrap()], &dir);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    for ex in grading::all() {
+        let line = text
+            .lines()
+            .find(|l| l.trim_start().starts_with(&format!("{} ", ex.id())))
+            .unwrap_or_else(|| panic!("{} not graded:\n{text}", ex.id()));
+        assert!(line.contains("not started"), "{line}");
+    }
+    assert!(!text.contains("hint:"), "{text}");
+    assert!(text.contains("0 of "), "{text}");
+}
+
+/// Writes `text` as exercise `name` of the chapter folder `chapter`.
+fn put(dir: &Path, chapter: &str, name: &str, text: &str) {
+    std::fs::write(
+        dir.join(chapter)
+            .join("exercises")
+            .join(format!("{name}.rs")),
+        text,
+    )
+    .unwrap();
+}
+
+#[test]
+fn a_broken_exercise_is_isolated_and_a_loop_that_never_ends_is_stopped() {
+    let dir = common::temp_dir("grade-broken");
+    let ex = copy_exercises(&common::temp_dir("grade-broken-src"));
+    // A syntax error in one exercise, a changed signature in another.
+    put(
+        &ex,
+        "ch1-projection",
+        "look_at",
+        "use glam::{Mat4, Vec3};\npub fn look_at(eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {\n    let x = 3\n    Mat4::IDENTITY\n}\n",
+    );
+    put(
+        &ex,
+        "ch4-sphere-tracing",
+        "sphere_sdf",
+        "use glam::Vec3;\npub fn sphere_sdf(p: Vec3, center: Vec3, radius: f32) -> f64 { 1.0 }\n",
+    );
+    // A right answer next to them still passes.
+    put(
+        &ex,
+        "ch1-projection",
+        "project_point",
+        "use glam::{Vec2, Vec3};\npub fn project_point(p: Vec3) -> Option<Vec2> {\n    (p.z < 0.0).then(|| Vec2::new(p.x / -p.z, p.y / -p.z))\n}\n",
+    );
+    // A tracer that ignores its step budget and never ends on a miss.
+    put(
+        &ex,
+        "ch4-sphere-tracing",
+        "sphere_trace",
+        "use glam::Vec3;\npub fn sphere_trace(sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, eps: f32, steps: u32, max: f32) -> Option<f32> {\n    let mut t = 0.0;\n    loop {\n        let h = sdf(o + t * d);\n        if h < eps { return Some(t); }\n        t += h;\n    }\n}\n",
+    );
+    // A wrong answer: the sign of the edge function flipped.
+    put(
+        &ex,
+        "ch2-rasterization",
+        "edge_function",
+        "use glam::Vec2;\npub fn edge_function(a: Vec2, b: Vec2, p: Vec2) -> f32 {\n    let (e, q) = (b - a, p - a);\n    e.y * q.x - e.x * q.y\n}\n",
+    );
+    let json = dir.join("results.json");
+    let (out, text, took) = grade(
+        &[
+            "ch1",
+            "ch2/edge_function",
+            "ch4",
+            "--timeout",
+            "3",
+            "--exercises",
+            ex.to_str().unwrap(),
+            "--json",
+            json.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    let line = |id: &str| {
+        text.lines()
+            .find(|l| l.trim_start().starts_with(&format!("{id} ")))
+            .unwrap_or_else(|| panic!("{id} not graded:\n{text}"))
+            .to_string()
+    };
+    assert!(line("ch1/project_point").contains("PASS"), "{text}");
+    assert!(line("ch1/look_at").contains("does not compile"), "{text}");
+    assert!(
+        text.contains("look_at.rs:3:"),
+        "the compiler's file:line: {text}"
+    );
+    assert!(
+        line("ch4/sphere_sdf").contains("does not compile"),
+        "{text}"
+    );
+    assert!(text.contains("signature"), "{text}");
+    let timed = line("ch4/sphere_trace");
+    assert!(timed.contains("timed out after 3 s"), "{text}");
+    assert!(timed.contains("while "), "names what was running: {timed}");
+    assert!(line("ch2/edge_function").contains("FAIL  error"), "{text}");
+    assert!(text.contains("expected"), "{text}");
+    assert!(
+        line("ch4/gradient_normal").contains("not started"),
+        "{text}"
+    );
+    // One timeout of 3 s, a build of the small crate, the rest quick.
+    assert!(took < Duration::from_secs(120), "{took:?}");
+    // Gradescope's shape: a test per exercise with name, score, max_score
+    // and output.
+    let json = std::fs::read_to_string(&json).unwrap();
+    assert!(json.contains("\"tests\": ["), "{json}");
+    assert!(
+        json.contains("\"name\": \"ch1/project_point\", \"score\": 1, \"max_score\": 1"),
+        "{json}"
+    );
+    assert!(
+        json.contains("\"name\": \"ch4/sphere_trace\", \"score\": 0, \"max_score\": 1"),
+        "{json}"
+    );
+    assert!(json.contains("\"output\": \""), "{json}");
+    let tests = json.matches("\"max_score\": 1,").count();
+    let graded = grading::all()
+        .iter()
+        .filter(|e| e.chapter == 1 || e.chapter == 4)
+        .count()
+        + 1;
+    assert_eq!(tests, graded, "{json}");
+}
+
+#[test]
+fn hints_come_in_tiers_and_the_formula_last() {
+    let dir = common::temp_dir("grade-hints");
+    let ex = grading::all()
+        .into_iter()
+        .find(|e| e.id() == "ch3/moller_trumbore")
+        .unwrap();
+    let mut shown = Vec::new();
+    for _ in 0..3 {
+        let (out, text, _) = grade(&["--hint", "ch3/moller_trumbore"], &dir);
+        assert!(out.status.success(), "{text}");
+        shown.push(text);
+    }
+    assert!(
+        shown[0].contains("hint 2 of 3") && shown[0].contains(ex.hints[1]),
+        "{}",
+        shown[0]
+    );
+    assert!(!shown[0].contains(ex.hints[2]), "{}", shown[0]);
+    assert!(
+        shown[1].contains("hint 3 of 3") && shown[1].contains(ex.hints[2]),
+        "{}",
+        shown[1]
+    );
+    assert!(shown[1].contains("last hint"), "{}", shown[1]);
+    assert!(shown[2].contains("hint 3 of 3"), "{}", shown[2]);
 }

@@ -13,12 +13,12 @@
 //!
 //! Grade it with: `cargo run --release --bin grade -- ch3`
 
-use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::readable_bvh::ReadableBvh;
-use crate::ch3_ray_triangle::triangle::Hit;
+use raystep::ch3_ray_triangle::ray::Ray;
+use raystep::ch3_ray_triangle::readable_bvh::ReadableBvh;
+use raystep::ch3_ray_triangle::triangle::Hit;
 // What your traversal needs (until it uses them, they are unused).
 #[allow(unused_imports)]
-use crate::ch3_ray_triangle::{readable_bvh::NodeKind, triangle::intersect_watertight};
+use raystep::ch3_ray_triangle::{readable_bvh::NodeKind, triangle::intersect_watertight};
 
 /// The closest hit along `ray` before `t_max`, through `bvh`.
 pub fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {

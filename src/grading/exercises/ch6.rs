@@ -4,13 +4,9 @@
 //! with overwhelming probability; the numbers are seeded, so a grade is
 //! repeatable).
 
-pub mod mc_integral;
-pub mod mis_weight;
-pub mod russian_roulette;
-
 use super::worst_of;
 use crate::core::sampling::random;
-use crate::grading::exercise::{Check, Exercise, Solution};
+use crate::grading::exercise::{Check, Exercise};
 
 type IntegralFn = fn(&dyn Fn(f64) -> f64, f64, f64, &[f64]) -> f64;
 type RouletteFn = fn(f64, f64, f64) -> f64;
@@ -23,37 +19,34 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 6,
             name: "mc_integral",
             file: "chapters/ch6-global-illumination/exercises/mc_integral.rs",
-            hint: "x = a + u (b - a) has density 1/(b - a): the estimate is (b - a) · mean of f(x)",
-            grade: |who| {
-                check_mc_integral(match who {
-                    Solution::Student => mc_integral::mc_integral,
-                    Solution::Reference => reference_integral,
-                })
-            },
+            hints: [
+                "slide \"Monte Carlo integration\": the estimator is the average of f(x)/p(x) over samples x drawn with density p.",
+                "map u to x = a + u(b - a); a uniform x on [a, b] has the constant density 1/(b - a).",
+                "x = a + u (b - a) has density 1/(b - a): the estimate is (b - a) · mean of f(x)",
+            ],
+            reference: || check_mc_integral(reference_integral),
         },
         Exercise {
             chapter: 6,
             name: "russian_roulette",
             file: "chapters/ch6-global-illumination/exercises/russian_roulette.rs",
-            hint: "survive when u < q and return value / q; otherwise return 0",
-            grade: |who| {
-                check_russian_roulette(match who {
-                    Solution::Student => russian_roulette::russian_roulette,
-                    Solution::Reference => |v, q, u| if u < q { v / q } else { 0.0 },
-                })
-            },
+            hints: [
+                "slide \"Russian roulette\": ending paths at random adds noise but must not change the expected value.",
+                "a survivor must carry more to make up for the paths that die: E = q · (what it carries) + (1 - q) · 0.",
+                "survive when u < q and return value / q; otherwise return 0",
+            ],
+            reference: || check_russian_roulette(|v, q, u| if u < q { v / q } else { 0.0 }),
         },
         Exercise {
             chapter: 6,
             name: "mis_weight",
             file: "chapters/ch6-global-illumination/exercises/mis_weight.rs",
-            hint: "f² / (f² + g²); write it as 1 / (1 + (g/f)²) so huge pdfs do not overflow, and 0 when f = 0",
-            grade: |who| {
-                check_mis_weight(match who {
-                    Solution::Student => mis_weight::mis_weight,
-                    Solution::Reference => reference_weight,
-                })
-            },
+            hints: [
+                "slide \"multiple importance sampling\": a sample is weighted by how likely its own strategy was compared with the other's.",
+                "the power heuristic squares each density; mind 0/0 when both are 0 and overflow for huge densities (divide through by pdf_f).",
+                "f² / (f² + g²); write it as 1 / (1 + (g/f)²) so huge pdfs do not overflow, and 0 when f = 0",
+            ],
+            reference: || check_mis_weight(reference_weight),
         },
     ]
 }

@@ -1,15 +1,12 @@
 //! Chapter 1's exercises and how each is graded.
 
-pub mod look_at;
-pub mod project_point;
-
 use glam::{Mat4, Vec2, Vec3};
 
 use crate::ch1_projection::camera::{
     camera_from_world_look_at, project_pinhole, Camera, CameraDesc,
 };
 use crate::ch1_projection::wireframe::draw_scene;
-use crate::grading::exercise::{Check, Exercise, Solution};
+use crate::grading::exercise::{Check, Exercise};
 use crate::scene::Material;
 
 /// Chapter 1's exercises, in order.
@@ -19,26 +16,24 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 1,
             name: "project_point",
             file: "chapters/ch1-projection/exercises/project_point.rs",
-            hint: "the ray from the origin through p meets z = -1 at p / (-z); return None when z >= 0",
-            grade: |who| {
-                check_project_point(match who {
-                    Solution::Student => project_point::project_point,
-                    Solution::Reference => project_pinhole,
-                })
-            },
+            hints: [
+                "slide \"the pinhole camera\": draw the ray from the pinhole through p and the plane z = -1 (similar triangles).",
+                "the ray is t·p; it meets z = -1 where t·z = -1. Points with z >= 0 are beside or behind the pinhole: no image.",
+                "the ray from the origin through p meets z = -1 at p / (-z); return None when z >= 0",
+            ],
+            reference: || check_project_point(project_pinhole),
         },
         Exercise {
             chapter: 1,
             name: "look_at",
             file: "chapters/ch1-projection/exercises/look_at.rs",
-            hint: "back = normalize(eye - target), right = normalize(up x back), up' = back x right; \
+            hints: [
+                "slide \"placing the camera: look-at\": build the camera's own axes first, then the matrix that maps camera space to the world; you need its inverse.",
+                "+z points from the target back to the eye; +x is perpendicular to up and +z (a cross product); +y = z × x. The columns of world_from_camera are x, y, z and the eye.",
+                "back = normalize(eye - target), right = normalize(up x back), up' = back x right; \
                    world_from_camera has columns right, up', back, eye: invert it",
-            grade: |who| {
-                check_look_at(match who {
-                    Solution::Student => look_at::look_at,
-                    Solution::Reference => |e, t, u| camera_from_world_look_at(e, t, u).unwrap_or(Mat4::NAN),
-                })
-            },
+            ],
+            reference: || check_look_at(|e, t, u| camera_from_world_look_at(e, t, u).unwrap_or(Mat4::NAN)),
         },
     ]
 }

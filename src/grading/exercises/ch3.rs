@@ -1,10 +1,5 @@
 //! Chapter 3's exercises and how each is graded.
 
-pub mod barycentric_inside;
-pub mod bvh_traversal;
-pub mod moller_trumbore;
-pub mod ray_plane;
-
 use glam::{Vec2, Vec3};
 
 use crate::ch1_projection::camera::Camera;
@@ -14,7 +9,7 @@ use crate::ch3_ray_triangle::readable_bvh::{self, ReadableBvh};
 use crate::ch3_ray_triangle::render::{films_from_sums, render_sum};
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64, Hit};
 use crate::core::sampling::random;
-use crate::grading::exercise::{Check, Exercise, Solution};
+use crate::grading::exercise::{Check, Exercise};
 use crate::scene::Scene;
 
 /// Barycentric (u, v).
@@ -29,53 +24,49 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 3,
             name: "ray_plane",
             file: "chapters/ch3-ray-triangle/exercises/ray_plane.rs",
-            hint: "Nᵀ(o + t d) = c gives t = (c - Nᵀo) / (Nᵀd); None when Nᵀd = 0",
-            grade: |who| {
-                check_ray_plane(match who {
-                    Solution::Student => ray_plane::ray_plane,
-                    Solution::Reference => triangle::ray_plane,
-                })
-            },
+            hints: [
+                "slide \"ray-plane\": substitute the ray r(t) = o + t d into the plane equation Nᵀx = c and solve for t.",
+                "the equation is linear in t; it has no solution when the ray runs parallel to the plane (Nᵀd = 0).",
+                "Nᵀ(o + t d) = c gives t = (c - Nᵀo) / (Nᵀd); None when Nᵀd = 0",
+            ],
+            reference: || check_ray_plane(triangle::ray_plane),
         },
         Exercise {
             chapter: 3,
             name: "barycentric_inside",
             file: "chapters/ch3-ray-triangle/exercises/barycentric_inside.rs",
-            hint: "u = Nᵀ(q x e2) / |N|², v = Nᵀ(e1 x q) / |N|² with N = e1 x e2; \
+            hints: [
+                "slide \"ray-triangle\": u and v are area ratios of sub-triangles, measured along the triangle's normal.",
+                "with N = e1 × e2 and q = p - p0, project the cross products q × e2 and e1 × q onto N and divide by |N|²; inside when u, v >= 0 and u + v <= 1.",
+                "u = Nᵀ(q x e2) / |N|², v = Nᵀ(e1 x q) / |N|² with N = e1 x e2; \
                    inside when u ≥ 0, v ≥ 0 and u + v ≤ 1",
-            grade: |who| {
-                check_barycentric_inside(match who {
-                    Solution::Student => barycentric_inside::barycentric_inside,
-                    Solution::Reference => triangle::barycentric_inside,
-                })
-            },
+            ],
+            reference: || check_barycentric_inside(triangle::barycentric_inside),
         },
         Exercise {
             chapter: 3,
             name: "moller_trumbore",
             file: "chapters/ch3-ray-triangle/exercises/moller_trumbore.rs",
-            hint: "det = e1 · (d x e2); u = s · (d x e2) / det; with q = s x e1: \
+            hints: [
+                "slide \"ray-triangle: solve for u, v, t\": write o + t d = p0 + u e1 + v e2 as a 3×3 linear system and solve it with Cramer's rule.",
+                "the determinant is a triple product of d, e1, e2; each unknown is another triple product over it. Reject a zero determinant, u or v outside [0, 1], u + v > 1 and t <= 0.",
+                "det = e1 · (d x e2); u = s · (d x e2) / det; with q = s x e1: \
                    v = d · q / det, t = e2 · q / det",
-            grade: |who| {
-                check_moller_trumbore(match who {
-                    Solution::Student => moller_trumbore::moller_trumbore,
-                    Solution::Reference => reference_moller_trumbore,
-                })
-            },
+            ],
+            reference: || check_moller_trumbore(reference_moller_trumbore),
         },
         Exercise {
             chapter: 3,
             name: "bvh_traversal",
             file: "chapters/ch3-ray-triangle/exercises/bvh_traversal.rs",
-            hint: "pop (node, t_enter); skip it if t_enter > best t; a leaf tests its \
+            hints: [
+                "slide \"ray-mesh intersection: the bounding volume hierarchy\": visit the boxes the ray enters, nearest first, and skip any box that starts beyond the best hit so far.",
+                "keep a stack of (node, t where the ray enters its box); a leaf tests its triangles against the best t and shrinks it; an inner node pushes the children the ray enters, the farther one first so the nearer is popped next.",
+                "pop (node, t_enter); skip it if t_enter > best t; a leaf tests its \
                    triangles against the best t and shrinks it; an inner node pushes \
                    the children the ray enters, the farther first",
-            grade: |who| {
-                check_bvh_traversal(match who {
-                    Solution::Student => bvh_traversal::closest_hit,
-                    Solution::Reference => readable_bvh::closest_hit,
-                })
-            },
+            ],
+            reference: || check_bvh_traversal(readable_bvh::closest_hit),
         },
     ]
 }

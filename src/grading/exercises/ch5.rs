@@ -1,10 +1,5 @@
 //! Chapter 5's exercises and how each is graded.
 
-pub mod area_pdf;
-pub mod cosine_hemisphere;
-pub mod lambert_brdf;
-pub mod point_light;
-
 use std::f32::consts::FRAC_1_PI;
 
 use glam::{Vec2, Vec3};
@@ -14,7 +9,7 @@ use crate::ch5_reflection::light::area::solid_angle_pdf;
 use crate::ch5_reflection::material::lambert::Lambertian;
 use crate::ch5_reflection::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
 use crate::core::sampling::random;
-use crate::grading::exercise::{Check, Exercise, Solution};
+use crate::grading::exercise::{Check, Exercise};
 
 type BrdfFn = fn(Vec3, Vec3, Vec3) -> Vec3;
 type CosineFn = fn(Vec2) -> (Vec3, f32);
@@ -28,62 +23,58 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 5,
             name: "lambert_brdf",
             file: "chapters/ch5-reflection/exercises/lambert_brdf.rs",
-            hint: "same side when wo.z * wi.z > 0; then rho / PI, else Vec3::ZERO",
-            grade: |who| {
-                check_lambert_brdf(match who {
-                    Solution::Student => lambert_brdf::lambert_brdf,
-                    Solution::Reference => |rho, wo, wi| Lambertian { rho }.f(wo, wi),
-                })
-            },
+            hints: [
+                "slide \"the BRDF: ideal diffuse\": a Lambertian surface reflects the same radiance in every direction; energy conservation fixes the constant.",
+                "∫ f cos θ dω over the hemisphere must equal the albedo ρ; ∫ cos θ dω = π. Directions on opposite sides of the surface reflect nothing.",
+                "same side when wo.z * wi.z > 0; then rho / PI, else Vec3::ZERO",
+            ],
+            reference: || check_lambert_brdf(|rho, wo, wi| Lambertian { rho }.f(wo, wi)),
         },
         Exercise {
             chapter: 5,
             name: "cosine_hemisphere",
             file: "chapters/ch5-reflection/exercises/cosine_hemisphere.rs",
-            hint: "r = sqrt(u.x), phi = 2π u.y, (x, y) = r (cos phi, sin phi), z = sqrt(1 - r²), pdf = z / π",
-            grade: |who| {
-                check_cosine_hemisphere(match who {
-                    Solution::Student => cosine_hemisphere::cosine_hemisphere,
-                    Solution::Reference => |u| {
+            hints: [
+                "slide \"turning uniform numbers into directions\": sample a disk uniformly, then lift the point onto the hemisphere (Malley's method).",
+                "a uniform disk needs r = sqrt(u) (area grows with r²); lift with z = sqrt(1 - r²). The density of the direction is proportional to cos θ.",
+                "r = sqrt(u.x), phi = 2π u.y, (x, y) = r (cos phi, sin phi), z = sqrt(1 - r²), pdf = z / π",
+            ],
+            reference: || check_cosine_hemisphere(|u| {
                         let w = warp_cosine(u);
                         (w, cosine_hemisphere_pdf(w.z))
-                    },
-                })
-            },
+                    }),
         },
         Exercise {
             chapter: 5,
             name: "point_light",
             file: "chapters/ch5-reflection/exercises/point_light.rs",
-            hint: "to = light - p; r² = to.length_squared(); cos = max(0, n · to/|to|); I cos / r²",
-            grade: |who| {
-                check_point_light(match who {
-                    Solution::Student => point_light::point_light_irradiance,
-                    Solution::Reference => |i, light, p, n| {
+            hints: [
+                "slide \"radiometry: irradiance, Lambert's law\": intensity spreads over the sphere of radius r, and a tilted surface catches less.",
+                "the inverse-square law divides by r², Lambert's law multiplies by cos θ (clamped at zero: light behind the surface does nothing).",
+                "to = light - p; r² = to.length_squared(); cos = max(0, n · to/|to|); I cos / r²",
+            ],
+            reference: || check_point_light(|i, light, p, n| {
                         let to = light - p;
                         i * crate::ch5_reflection::radiometry::point_irradiance(
                             1.0,
                             to.length() as f64,
                             n.dot(to.normalize()) as f64,
                         ) as f32
-                    },
-                })
-            },
+                    }),
         },
         Exercise {
             chapter: 5,
             name: "area_pdf",
             file: "chapters/ch5-reflection/exercises/area_pdf.rs",
-            hint: "d² = (y - x).length_squared(); cos = |n_light · (x - y)/d|; 0 if cos == 0, else pdf_area d² / cos",
-            grade: |who| {
-                check_area_pdf(match who {
-                    Solution::Student => area_pdf::area_to_solid_angle,
-                    Solution::Reference => |pdf, x, y, n| {
+            hints: [
+                "slide \"solid angle\": a small patch dA at distance d, seen at angle θ, subtends dω = dA cos θ / d².",
+                "a density per area becomes a density per solid angle by the Jacobian dA/dω = d² / |cos θ_light|; edge-on (cos = 0) the light covers no solid angle.",
+                "d² = (y - x).length_squared(); cos = |n_light · (x - y)/d|; 0 if cos == 0, else pdf_area d² / cos",
+            ],
+            reference: || check_area_pdf(|pdf, x, y, n| {
                         let to = y - x;
                         solid_angle_pdf(pdf, to.length(), n.dot(to.normalize()))
-                    },
-                })
-            },
+                    }),
         },
     ]
 }

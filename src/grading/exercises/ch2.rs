@@ -1,14 +1,10 @@
 //! Chapter 2's exercises and how each is graded.
 
-pub mod barycentric;
-pub mod depth_test;
-pub mod edge_function;
-
 use glam::{Vec2, Vec3};
 
 use crate::ch2_rasterization::depth;
 use crate::ch2_rasterization::edge;
-use crate::grading::exercise::{Check, Exercise, Solution};
+use crate::grading::exercise::{Check, Exercise};
 
 /// Chapter 2's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {
@@ -17,37 +13,34 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 2,
             name: "edge_function",
             file: "chapters/ch2-rasterization/exercises/edge_function.rs",
-            hint: "E_ab(p) = (b.x - a.x)·(p.y - a.y) - (b.y - a.y)·(p.x - a.x); positive when p is left of a→b (y up)",
-            grade: |who| {
-                check_edge_function(match who {
-                    Solution::Student => edge_function::edge_function,
-                    Solution::Reference => edge::edge_function,
-                })
-            },
+            hints: [
+                "slide \"edge functions\": the sign of a 2D cross product says on which side of a line a point lies.",
+                "take the edge vector b - a and the vector p - a; their 2D cross product is dx·ey - dy·ex.",
+                "E_ab(p) = (b.x - a.x)·(p.y - a.y) - (b.y - a.y)·(p.x - a.x); positive when p is left of a→b (y up)",
+            ],
+            reference: || check_edge_function(edge::edge_function),
         },
         Exercise {
             chapter: 2,
             name: "barycentric",
             file: "chapters/ch2-rasterization/exercises/barycentric.rs",
-            hint: "φi = E(pj, pk, p) / E(pi, pj, pk), and so on around the triangle; None when E(pi, pj, pk) = 0",
-            grade: |who| {
-                check_barycentric(match who {
-                    Solution::Student => barycentric::barycentric,
-                    Solution::Reference => edge::barycentric,
-                })
-            },
+            hints: [
+                "slide \"barycentrics\": each coordinate is an area ratio, the sub-triangle opposite a vertex over the whole triangle.",
+                "the edge function is twice a signed area: divide edge functions of the sub-triangles by the one of the whole triangle (signs cancel for clockwise order).",
+                "φi = E(pj, pk, p) / E(pi, pj, pk), and so on around the triangle; None when E(pi, pj, pk) = 0",
+            ],
+            reference: || check_barycentric(edge::barycentric),
         },
         Exercise {
             chapter: 2,
             name: "depth_test",
             file: "chapters/ch2-rasterization/exercises/depth_test.rs",
-            hint: "pass only if z < depth[index] (strictly: ties keep the first; NaN compares false), then store z",
-            grade: |who| {
-                check_depth_test(match who {
-                    Solution::Student => depth_test::depth_test,
-                    Solution::Reference => depth::depth_test,
-                })
-            },
+            hints: [
+                "slide \"visibility: the depth buffer\": keep the nearest surface seen so far at each sample.",
+                "compare strictly: a tie must keep what was drawn first, and any comparison with NaN is false, which is what you want.",
+                "pass only if z < depth[index] (strictly: ties keep the first; NaN compares false), then store z",
+            ],
+            reference: || check_depth_test(depth::depth_test),
         },
     ]
 }

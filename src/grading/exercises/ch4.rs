@@ -1,9 +1,5 @@
 //! Chapter 4's exercises and how each is graded.
 
-pub mod gradient_normal;
-pub mod sphere_sdf;
-pub mod sphere_trace;
-
 use glam::Vec3;
 
 use super::worst_of;
@@ -11,7 +7,7 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch4_implicit_surfaces::march::{self, March};
 use crate::ch4_implicit_surfaces::normal::gradient_central;
 use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere, sd_torus};
-use crate::grading::exercise::{Check, Exercise, Solution};
+use crate::grading::exercise::{Check, Exercise};
 
 /// The candidate types.
 type SdfFn = fn(Vec3, Vec3, f32) -> f32;
@@ -27,37 +23,34 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 4,
             name: "sphere_sdf",
             file: "chapters/ch4-sphere-tracing/exercises/sphere_sdf.rs",
-            hint: "the distance to the centre, |p - center|, minus the radius",
-            grade: |who| {
-                check_sphere_sdf(match who {
-                    Solution::Student => sphere_sdf::sphere_sdf,
-                    Solution::Reference => |p, c, r| sd_sphere(p - c, r),
-                })
-            },
+            hints: [
+                "slide \"signed distance functions\": how far is a point from a sphere's surface, and what sign inside?",
+                "the distance to the centre tells you almost everything; the surface is where it equals the radius.",
+                "the distance to the centre, |p - center|, minus the radius",
+            ],
+            reference: || check_sphere_sdf(|p, c, r| sd_sphere(p - c, r)),
         },
         Exercise {
             chapter: 4,
             name: "sphere_trace",
             file: "chapters/ch4-sphere-tracing/exercises/sphere_trace.rs",
-            hint: "loop: d = sdf(o + t d); if d < ε return Some(t); t += d; if t > max_distance return None",
-            grade: |who| {
-                check_sphere_trace(match who {
-                    Solution::Student => sphere_trace::sphere_trace,
-                    Solution::Reference => reference_trace,
-                })
-            },
+            hints: [
+                "slide \"sphere tracing\": no surface is closer than the distance function says, so that distance is a safe step.",
+                "count your steps: stop with a hit when the distance is below epsilon, and give up when the budget of steps or the maximum distance is used up.",
+                "loop: d = sdf(o + t d); if d < ε return Some(t); t += d; if t > max_distance return None",
+            ],
+            reference: || check_sphere_trace(reference_trace),
         },
         Exercise {
             chapter: 4,
             name: "gradient_normal",
             file: "chapters/ch4-sphere-tracing/exercises/gradient_normal.rs",
-            hint: "(f(p + h e_i) - f(p - h e_i)) / 2h per axis i, then normalize",
-            grade: |who| {
-                check_gradient_normal(match who {
-                    Solution::Student => gradient_normal::gradient_normal,
-                    Solution::Reference => |f, p, h| gradient_central(f, p, h).normalize(),
-                })
-            },
+            hints: [
+                "slide \"the normal is the gradient of f\": estimate each partial derivative numerically.",
+                "central differences: sample f a little ahead and a little behind along each axis, divide the difference by 2h, and normalise the vector.",
+                "(f(p + h e_i) - f(p - h e_i)) / 2h per axis i, then normalize",
+            ],
+            reference: || check_gradient_normal(|f, p, h| gradient_central(f, p, h).normalize()),
         },
     ]
 }
@@ -127,6 +120,9 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         (&torus, Vec3::new(6.0, 0.0, 0.0), -Vec3::X, Some(3.5)),
     ];
     let (error, detail) = worst_of(cases.into_iter().map(|(sdf, o, d, want)| {
+        crate::grading::progress(format_args!(
+            "calling sphere_trace on the ray from {o} along {d} (ε = {eps}, 512 steps, max distance 50)"
+        ));
         let got = f(sdf, o, d, eps, 512, 50.0);
         let err = match (got, want) {
             (Some(g), Some(w)) => ((g - w).abs() as f64 - eps as f64).max(0.0),
@@ -141,6 +137,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
     // The step budget is respected: a ray passing 5e-5 above the sphere
     // counts as a hit with ε = 1e-4, but not within 3 steps from 40 away
     // (it creeps along the silhouette).
+    crate::grading::progress("calling sphere_trace on a grazing ray with a budget of 3 steps");
     let budget = f(
         &sphere,
         Vec3::new(-40.0, 1.00005, 0.0),

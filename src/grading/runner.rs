@@ -1,0 +1,136 @@
+//! The child side of grading: the `grade-student` binary of the exercises
+//! crate (`chapters/runner.rs`) runs one check on the student's code and
+//! prints its verdict for the grader ([`crate::grading::driver`]), which
+//! runs it under a time limit. One process per exercise: a loop that never
+//! ends, a stack overflow or an abort stops that exercise, not the grader.
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use serde::{Deserialize, Serialize};
+
+use crate::grading::exercise::{Check, Exercise, Outcome};
+use crate::grading::{run_check, write_failure_images};
+
+/// The student's checks, by exercise id (`chN/name`): what the exercises
+/// crate compiled (an exercise that does not compile is left out).
+pub type Registry = Vec<(&'static str, fn() -> Check)>;
+
+/// The line before the verdict on the child's standard output (anything a
+/// student prints comes before it and is ignored).
+pub const VERDICT: &str = "@@raystep-verdict@@";
+
+/// One exercise's result, as the child prints it.
+#[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
+pub struct Verdict {
+    /// `passed`, `failed`, `not_implemented`, `panicked` or `missing`.
+    pub outcome: String,
+    /// The measured error.
+    pub error: f64,
+    /// The tolerance.
+    pub tolerance: f64,
+    /// The worst case, or the panic message.
+    pub detail: String,
+    /// Images written for a failed image check.
+    pub images: Vec<PathBuf>,
+}
+
+impl Verdict {
+    /// The outcome this verdict stands for, with its images' paths (the
+    /// images themselves stay on disk).
+    pub fn outcome(&self) -> Outcome {
+        let check = || Check {
+            error: self.error,
+            tolerance: self.tolerance,
+            detail: self.detail.clone(),
+            images: None,
+        };
+        match self.outcome.as_str() {
+            "passed" => Outcome::Passed(check()),
+            "failed" => Outcome::Failed(check()),
+            "not_implemented" => Outcome::NotImplemented,
+            "missing" => Outcome::DoesNotCompile(self.detail.clone()),
+            _ => Outcome::Panicked(self.detail.clone()),
+        }
+    }
+}
+
+/// Runs the check of `ex` from `registry` and returns its verdict; images
+/// of a failed image check go to `out`.
+pub fn verdict(registry: &Registry, ex: &Exercise, out: &Path) -> Verdict {
+    let id = ex.id();
+    let Some((_, check)) = registry.iter().find(|(n, _)| *n == id) else {
+        return Verdict {
+            outcome: "missing".into(),
+            detail: format!("{id} is not in the exercises crate that was built"),
+            ..Verdict::default()
+        };
+    };
+    match run_check(*check) {
+        Outcome::Passed(c) => Verdict {
+            outcome: "passed".into(),
+            error: c.error,
+            tolerance: c.tolerance,
+            detail: c.detail,
+            images: Vec::new(),
+        },
+        Outcome::Failed(c) => {
+            let (images, note) = match write_failure_images(ex, &c, out) {
+                Ok(files) => (files, String::new()),
+                Err(e) => (Vec::new(), format!(" (could not write images: {e})")),
+            };
+            Verdict {
+                outcome: "failed".into(),
+                error: c.error,
+                tolerance: c.tolerance,
+                detail: c.detail + &note,
+                images,
+            }
+        }
+        Outcome::NotImplemented => Verdict {
+            outcome: "not_implemented".into(),
+            ..Verdict::default()
+        },
+        Outcome::Panicked(m) | Outcome::DoesNotCompile(m) => Verdict {
+            outcome: "panicked".into(),
+            detail: m,
+            ..Verdict::default()
+        },
+        Outcome::TimedOut { doing, .. } => Verdict {
+            outcome: "panicked".into(),
+            detail: doing,
+            ..Verdict::default()
+        },
+    }
+}
+
+/// The whole `main` of `grade-student`: `grade-student <chN/name> <out>`
+/// prints the verdict of one exercise after [`VERDICT`].
+pub fn runner_main(registry: Registry) -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let [id, out] = args.as_slice() else {
+        eprintln!("usage: grade-student <chN/name> <out dir> (run by `grade`)");
+        return ExitCode::from(2);
+    };
+    let Some(ex) = crate::grading::all().into_iter().find(|e| &e.id() == id) else {
+        eprintln!("error: no exercise `{id}`");
+        return ExitCode::from(2);
+    };
+    let v = verdict(&registry, &ex, Path::new(out));
+    match toml::to_string(&v) {
+        Ok(text) => {
+            println!("\n{VERDICT}\n{text}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: could not write the verdict: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Reads the verdict from a child's standard output.
+pub fn parse_verdict(stdout: &str) -> Option<Verdict> {
+    let (_, text) = stdout.rsplit_once(VERDICT)?;
+    toml::from_str(text).ok()
+}
