@@ -62,6 +62,10 @@ pub fn registry() -> Registry {
     r.push(("ch4/gradient_normal", || {
         checks::ch4::check_gradient_normal(ch4::gradient_normal::gradient_normal)
     }));
+    #[cfg(not(broken_ch4_trace_scene))]
+    r.push(("ch4/trace_scene", || {
+        checks::ch4::check_trace_scene(ch4::trace_scene::trace_scene)
+    }));
     #[cfg(not(broken_ch5_lambert_brdf))]
     r.push(("ch5/lambert_brdf", || {
         checks::ch5::check_lambert_brdf(ch5::lambert_brdf::lambert_brdf)

@@ -3,11 +3,12 @@
 
 use crate::common;
 use glam::Vec3;
+use raystep::ch4_implicit_surfaces::march::March;
 use raystep::grading::exercises::ch4;
 
 #[test]
 fn chapter_4_references_pass() {
-    common::references_pass(4, 3);
+    common::references_pass(4, 4);
 }
 
 #[test]
@@ -74,4 +75,63 @@ fn an_unnormalised_or_one_sided_gradient_fails() {
         .normalize()
     });
     assert!(!check.passed(), "{check:?}");
+}
+
+/// The capstone as a student writes it from the lecture.
+fn lecture_trace(sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
+    let mut t = 0.0;
+    let mut f = sdf(o);
+    let mut steps = 1;
+    loop {
+        let p = o + t * d;
+        if f.abs() < m.epsilon_at(p) {
+            break;
+        }
+        if t > m.max_distance || steps >= m.max_steps {
+            return None;
+        }
+        t += f;
+        f = sdf(o + t * d);
+        steps += 1;
+    }
+    let p = o + t * d;
+    let h = m.epsilon_at(p).max(1e-4);
+    let g = Vec3::new(
+        sdf(p + Vec3::X * h) - sdf(p - Vec3::X * h),
+        sdf(p + Vec3::Y * h) - sdf(p - Vec3::Y * h),
+        sdf(p + Vec3::Z * h) - sdf(p - Vec3::Z * h),
+    ) / (2.0 * h);
+    let n = g.try_normalize().unwrap_or(-d);
+    Some((t, if n.dot(d) > 0.0 { -n } else { n }))
+}
+
+#[test]
+fn the_sphere_tracing_capstone_passes_from_the_lecture_and_catches_mistakes() {
+    let check = ch4::check_trace_scene(lecture_trace);
+    assert!(check.passed(), "{check:?}");
+    // A normal that is not normalised: the normal image is wrong, and the
+    // message names a pixel, its ray and both answers.
+    let check = ch4::check_trace_scene(|f, o, d, m| {
+        let (t, n) = lecture_trace(f, o, d, m)?;
+        Some((t, n * 0.5))
+    });
+    assert!(!check.passed(), "{check:?}");
+    assert!(
+        check.detail.contains("pixel (") && check.detail.contains("the reference"),
+        "{}",
+        check.detail
+    );
+    assert!(check.images.is_some());
+    // A normal that does not face the viewer where the gradient points away.
+    let check = ch4::check_trace_scene(|f, o, d, m| {
+        let (t, n) = lecture_trace(f, o, d, m)?;
+        Some((t, -n))
+    });
+    assert!(!check.passed(), "{check:?}");
+    // A tiny budget of 8 steps: rays run out before they reach the far
+    // shapes.
+    let check =
+        ch4::check_trace_scene(|f, o, d, m| lecture_trace(f, o, d, &March { max_steps: 8, ..*m }));
+    assert!(!check.passed(), "{check:?}");
+    assert!(check.detail.contains("a miss"), "{}", check.detail);
 }

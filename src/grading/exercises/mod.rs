@@ -14,6 +14,7 @@ pub mod ch3;
 pub mod ch4;
 pub mod ch5;
 pub mod ch6;
+pub mod images;
 
 /// The worst error over `(error, which case)` pairs, a NaN counting as
 /// infinite; `(0, "all cases match")` when none is above 0. Shared by the
