@@ -24,6 +24,10 @@ pub fn registry() -> Registry {
     r.push(("ch1/look_at", || {
         checks::ch1::check_look_at(ch1::look_at::look_at)
     }));
+    #[cfg(not(broken_ch1_draw_edges))]
+    r.push(("ch1/draw_edges", || {
+        checks::ch1::check_draw_edges(ch1::draw_edges::draw_edges)
+    }));
     #[cfg(not(broken_ch2_edge_function))]
     r.push(("ch2/edge_function", || {
         checks::ch2::check_edge_function(ch2::edge_function::edge_function)
@@ -35,6 +39,10 @@ pub fn registry() -> Registry {
     #[cfg(not(broken_ch2_depth_test))]
     r.push(("ch2/depth_test", || {
         checks::ch2::check_depth_test(ch2::depth_test::depth_test)
+    }));
+    #[cfg(not(broken_ch2_rasterize_triangle))]
+    r.push(("ch2/rasterize_triangle", || {
+        checks::ch2::check_rasterize_triangle(ch2::rasterize_triangle::rasterize_triangle)
     }));
     #[cfg(not(broken_ch3_ray_plane))]
     r.push(("ch3/ray_plane", || {
@@ -81,6 +89,10 @@ pub fn registry() -> Registry {
     #[cfg(not(broken_ch5_area_pdf))]
     r.push(("ch5/area_pdf", || {
         checks::ch5::check_area_pdf(ch5::area_pdf::area_to_solid_angle)
+    }));
+    #[cfg(not(broken_ch5_direct_light))]
+    r.push(("ch5/direct_light", || {
+        checks::ch5::check_direct_light(ch5::direct_light::direct_light)
     }));
     #[cfg(not(broken_ch6_mc_integral))]
     r.push(("ch6/mc_integral", || {

@@ -1,3 +1,4 @@
 //! Chapter 2: rasterization.
 
+mod capstone;
 mod rasterization;

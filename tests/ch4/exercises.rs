@@ -18,7 +18,7 @@ fn a_sphere_sdf_without_the_radius_fails() {
     assert!(check.detail.contains("expected"), "{}", check.detail);
     // The unsigned distance is wrong inside.
     let check = ch4::check_sphere_sdf(|p, c, r| ((p - c).length() - r).abs());
-    assert!(!check.passed() && check.error >= 1.5, "{check:?}");
+    assert!(!check.passed() && check.error >= 1.5, "{}", check.detail);
 }
 
 #[test]
@@ -38,7 +38,7 @@ fn a_tracer_that_overshoots_or_ignores_the_budget_fails() {
         }
         None
     });
-    assert!(!check.passed(), "{check:?}");
+    assert!(!check.passed(), "{}", check.detail);
     // Never gives up: keeps stepping past the budget.
     let check = ch4::check_sphere_trace(|f, o, d, eps, _, max| {
         let mut t = 0.0;
@@ -51,7 +51,7 @@ fn a_tracer_that_overshoots_or_ignores_the_budget_fails() {
         }
         None
     });
-    assert!(!check.passed(), "{check:?}");
+    assert!(!check.passed(), "{}", check.detail);
     assert!(check.detail.contains("3 steps"), "{}", check.detail);
 }
 
@@ -64,7 +64,7 @@ fn an_unnormalised_or_one_sided_gradient_fails() {
             f(p + Vec3::Z * h) - f(p - Vec3::Z * h),
         )
     });
-    assert!(!check.passed(), "{check:?}");
+    assert!(!check.passed(), "{}", check.detail);
     // Swapped axes.
     let check = ch4::check_gradient_normal(|f, p, h| {
         Vec3::new(
@@ -74,7 +74,7 @@ fn an_unnormalised_or_one_sided_gradient_fails() {
         )
         .normalize()
     });
-    assert!(!check.passed(), "{check:?}");
+    assert!(!check.passed(), "{}", check.detail);
 }
 
 /// The capstone as a student writes it from the lecture.
@@ -108,14 +108,14 @@ fn lecture_trace(sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Opti
 #[test]
 fn the_sphere_tracing_capstone_passes_from_the_lecture_and_catches_mistakes() {
     let check = ch4::check_trace_scene(lecture_trace);
-    assert!(check.passed(), "{check:?}");
+    assert!(check.passed(), "{}", check.detail);
     // A normal that is not normalised: the normal image is wrong, and the
     // message names a pixel, its ray and both answers.
     let check = ch4::check_trace_scene(|f, o, d, m| {
         let (t, n) = lecture_trace(f, o, d, m)?;
         Some((t, n * 0.5))
     });
-    assert!(!check.passed(), "{check:?}");
+    assert!(!check.passed(), "{}", check.detail);
     assert!(
         check.detail.contains("pixel (") && check.detail.contains("the reference"),
         "{}",
@@ -127,11 +127,11 @@ fn the_sphere_tracing_capstone_passes_from_the_lecture_and_catches_mistakes() {
         let (t, n) = lecture_trace(f, o, d, m)?;
         Some((t, -n))
     });
-    assert!(!check.passed(), "{check:?}");
+    assert!(!check.passed(), "{}", check.detail);
     // A tiny budget of 8 steps: rays run out before they reach the far
     // shapes.
     let check =
         ch4::check_trace_scene(|f, o, d, m| lecture_trace(f, o, d, &March { max_steps: 8, ..*m }));
-    assert!(!check.passed(), "{check:?}");
+    assert!(!check.passed(), "{}", check.detail);
     assert!(check.detail.contains("a miss"), "{}", check.detail);
 }

@@ -2,10 +2,13 @@
 
 use glam::{Mat4, Vec2, Vec3};
 
+use super::images;
 use crate::ch1_projection::camera::{
     camera_from_world_look_at, project_pinhole, Camera, CameraDesc,
 };
-use crate::ch1_projection::wireframe::draw_scene;
+use crate::ch1_projection::wireframe::{clip_to_near, draw_scene, NEAR};
+use crate::core::draw;
+use crate::core::film::Film;
 use crate::grading::exercise::{Check, Exercise};
 use crate::scene::Material;
 
@@ -35,7 +38,122 @@ pub fn exercises() -> Vec<Exercise> {
             ],
             reference: || check_look_at(|e, t, u| camera_from_world_look_at(e, t, u).unwrap_or(Mat4::NAN)),
         },
+        Exercise {
+            chapter: 1,
+            name: "draw_edges",
+            file: "chapters/ch1-projection/exercises/draw_edges.rs",
+            hints: [
+                "slide \"drawing edges; what lies behind the camera\": an edge with one end behind the pinhole has no image as a whole, but its front part does. Cut it at the near plane before projecting.",
+                "the near plane is z = -near in camera space. Where an edge crosses it, the point a + s (b - a) with s = (a.z + near) / (a.z - b.z) lies on it. Project what is left with u = x / -z, then to raster coordinates.",
+                "a, b = camera.to_camera(..); da = a.z + near, db = b.z + near; both > 0: None; one > 0: move it to a.lerp(b, da / (da - db)) with z = -near; raster = camera.raster_from_image_plane(Vec2::new(x / -z, y / -z)) for both ends",
+            ],
+            reference: || check_draw_edges(reference_edge),
+        },
     ]
+}
+
+/// The capstone's candidate: a world-space edge to its two raster ends.
+pub type EdgeFn = fn(&Camera, Vec3, Vec3, f32) -> Option<(Vec2, Vec2)>;
+
+/// raystep's answer to the capstone: chapter 1's clip and projection.
+pub fn reference_edge(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(Vec2, Vec2)> {
+    let (ca, cb) = clip_to_near(camera.to_camera(a), camera.to_camera(b), near)?;
+    let (ua, ub) = (project_pinhole(ca)?, project_pinhole(cb)?);
+    Some((
+        camera.raster_from_image_plane(ua),
+        camera.raster_from_image_plane(ub),
+    ))
+}
+
+/// The capstone: chapter 1's railroad (`railroad.toml`, 160 × 120), seen
+/// from 3 m further down the track so that the rails run past the camera
+/// and cross its near plane, drawn edge by
+/// edge through the candidate and through the reference; the line images
+/// must match (but for a few pixels where rounding decides), every whole
+/// edge's ends must agree within 1e-4 (relative), and every clipped
+/// edge's direction within 1e-3 rad, its uncut end within 0.01 pixel.
+pub fn check_draw_edges(f: EdgeFn) -> Check {
+    let scene = images::scene("railroad.toml");
+    // The camera 3 m further down the track, standing between the rails:
+    // their near ends are now behind it.
+    let mut desc = scene.camera;
+    desc.eye.z -= 3.0;
+    desc.target.z -= 3.0;
+    desc.width = 160;
+    desc.height = 120;
+    let camera = Camera::new(desc).expect("a valid camera");
+    let edges: Vec<(Vec3, Vec3)> = scene
+        .meshes
+        .iter()
+        .flat_map(|m| {
+            m.edges()
+                .into_iter()
+                .map(|[i, j]| (m.positions[i as usize], m.positions[j as usize]))
+        })
+        .collect();
+    let draw = |g: EdgeFn| {
+        let mut film = Film::new(camera.width, camera.height);
+        for (k, (a, b)) in edges.iter().enumerate() {
+            crate::grading::progress(format_args!("calling draw_edges on edge {k}, {a} to {b}"));
+            if let Some((ra, rb)) = g(&camera, *a, *b, NEAR) {
+                draw::line(&mut film, ra, rb, Vec3::ONE, Vec3::ONE);
+            }
+        }
+        film
+    };
+    // The worst edge, for the message and the numeric test.
+    let mut worst = (0.0f64, String::new());
+    for (a, b) in &edges {
+        let got = f(&camera, *a, *b, NEAR);
+        let want = reference_edge(&camera, *a, *b, NEAR);
+        let (ca, cb) = (camera.to_camera(*a), camera.to_camera(*b));
+        let clipped = ca.z > -NEAR || cb.z > -NEAR;
+        // In units of the tolerance. A whole edge: its ends within 1e-4
+        // (relative). A clipped one: its direction within 1e-3 rad (its
+        // cut end lies far off the image, where f32 rounding of a point
+        // 1 mm before the pinhole moves it by many pixels).
+        let err = match (got, want) {
+            (Some(g), Some(w)) if clipped => {
+                let (dg, dw) = ((g.1 - g.0).normalize(), (w.1 - w.0).normalize());
+                let angle = dg.dot(dw).clamp(-1.0, 1.0).acos() as f64;
+                (angle / 1e-3).max((g.0 - w.0).length().min((g.1 - w.1).length()) as f64 / 1e-2)
+            }
+            (Some(g), Some(w)) => {
+                let rel = |p: Vec2, q: Vec2| ((p - q).length() / q.length().max(1.0)) as f64;
+                rel(g.0, w.0).max(rel(g.1, w.1)) / 1e-4
+            }
+            (None, None) => 0.0,
+            _ => f64::INFINITY,
+        };
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        if err > worst.0 {
+            worst = (
+                err,
+                format!(
+                    "the edge from {a} to {b} (camera space z = {:.3} m and {:.3} m): \
+                     yours ends at {got:?}, the reference at {want:?} (raster pixels)",
+                    ca.z, cb.z
+                ),
+            );
+        }
+    }
+    let explain = |_: u32, _: u32| worst.1.clone();
+    let check = images::compare(
+        draw(f),
+        draw(reference_edge),
+        0.05,
+        2e-3,
+        "wireframe",
+        &explain,
+    );
+    if check.passed() && worst.0 > 1.0 {
+        return Check {
+            error: 1.0,
+            detail: format!("the picture matches, but {}", worst.1),
+            ..check
+        };
+    }
+    check
 }
 
 /// Compares a pinhole projection with values worked out by hand.

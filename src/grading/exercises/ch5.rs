@@ -4,7 +4,8 @@ use std::f32::consts::FRAC_1_PI;
 
 use glam::{Vec2, Vec3};
 
-use super::worst_of;
+use super::{images, worst_of};
+use crate::ch1_projection::camera::Camera;
 use crate::ch5_reflection::light::area::solid_angle_pdf;
 use crate::ch5_reflection::material::lambert::Lambertian;
 use crate::ch5_reflection::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
@@ -76,7 +77,122 @@ pub fn exercises() -> Vec<Exercise> {
                         solid_angle_pdf(pdf, to.length(), n.dot(to.normalize()))
                     }),
         },
+        Exercise {
+            chapter: 5,
+            name: "direct_light",
+            file: "chapters/ch5-reflection/exercises/direct_light.rs",
+            hints: [
+                "slides \"the reflection equation, estimated at one point\" (light sampling) and \"solid angle\": L = f · Le · cos θ / pdf_ω, and a point drawn uniformly on the light has pdf_A = 1/A per area, not per solid angle.",
+                "turn pdf_A into pdf_ω with dω = dA cos θl / d²: the estimate becomes f · Le · cos θ · cos θl / d² · A. Both cosines must be positive (the light faces p, p faces the light) and the segment p→y unblocked.",
+                "wi = (y - p) / d; cos = n·wi; cos_l = n_light·(-wi); if cos <= 0 || cos_l <= 0 || !visible(p, y) { 0 } else { rho / π · le · cos · cos_l / d² · area }",
+            ],
+            reference: || check_direct_light(reference_direct),
+        },
     ]
+}
+
+/// The capstone's candidate: (p, n, ρ, y, n_light, A, Le, visible) to one
+/// sample of the reflected radiance.
+pub type DirectFn =
+    fn(Vec3, Vec3, Vec3, Vec3, Vec3, f32, Vec3, &dyn Fn(Vec3, Vec3) -> bool) -> Vec3;
+
+/// raystep's answer to the capstone.
+#[allow(clippy::too_many_arguments)]
+pub fn reference_direct(
+    p: Vec3,
+    n: Vec3,
+    rho: Vec3,
+    y: Vec3,
+    n_light: Vec3,
+    area: f32,
+    le: Vec3,
+    visible: &dyn Fn(Vec3, Vec3) -> bool,
+) -> Vec3 {
+    let to = y - p;
+    let d2 = to.length_squared();
+    let wi = to / d2.sqrt();
+    let (cos, cos_l) = (n.dot(wi), n_light.dot(-wi));
+    if !(cos > 0.0 && cos_l > 0.0 && d2 > 0.0) || !visible(p, y) {
+        return Vec3::ZERO;
+    }
+    rho * FRAC_1_PI * le * cos * cos_l / d2 * area
+}
+
+/// The capstone: the Cornell box (`cornell-box.toml`, 48 × 48, one ray
+/// through each pixel centre) lit only directly by its ceiling light,
+/// 32 light samples per pixel with the candidate and, with other random
+/// numbers, with the reference; 8 × 8-pixel blocks must agree within 5
+/// standard errors (a z-test: Monte Carlo answers are never exact).
+pub fn check_direct_light(f: DirectFn) -> Check {
+    use crate::ch5_reflection::light::Light;
+    use crate::ch5_reflection::warp::uniform_triangle;
+    use crate::ch5_reflection::world::World;
+    let scene = images::scene("cornell-box.toml");
+    let camera = Camera::of(&scene)
+        .with_resolution(48, 48)
+        .expect("a valid camera");
+    let world = World::new(&scene);
+    let light = world
+        .lights
+        .lights
+        .iter()
+        .find_map(|l| match l {
+            Light::Area(a) => Some(a),
+            _ => None,
+        })
+        .expect("the Cornell box has an area light");
+    let (w, h) = (camera.width, camera.height);
+    let (world, camera) = (&world, &camera);
+    let shade = |g: DirectFn, seed: u64| {
+        move |x: u32, y: u32, s: u32| -> Vec3 {
+            let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
+            let Some(it) = world.intersect(&ray) else {
+                return Vec3::ZERO;
+            };
+            let m = &world.materials[it.material];
+            if m.is_emissive() {
+                return m.emission;
+            }
+            let n = if it.n.dot(ray.dir) > 0.0 { -it.n } else { it.n };
+            let pixel = (y * w + x) as u64;
+            let u = Vec2::new(
+                random(seed, pixel, s as u64, 0),
+                random(seed, pixel, s as u64, 1),
+            );
+            // A point uniform by area: a triangle by area, then a point in it.
+            let k = light
+                .cdf
+                .partition_point(|c| *c <= u.x * light.area)
+                .min(light.cdf.len() - 1);
+            let [a, b, c] = light.triangles[k];
+            let bary = uniform_triangle(Vec2::new(random(seed, pixel, s as u64, 2), u.y));
+            let point = bary.x * a + bary.y * b + bary.z * c;
+            let visible = |p: Vec3, q: Vec3| {
+                let to = q - p;
+                let d = to.length();
+                d > 0.0 && world.unoccluded(p, n, to / d, d)
+            };
+            if x == 0 && s == 0 {
+                crate::grading::progress(format_args!(
+                    "calling direct_light for row {y} of {h}: p = {:.3}, n = {:.3}, light point {point:.3}",
+                    it.p, n
+                ));
+            }
+            g(
+                it.p,
+                n,
+                m.reflectance,
+                point,
+                light.normals[k],
+                light.area,
+                light.le,
+                &visible,
+            )
+        }
+    };
+    let student = images::Estimate::gather(w, h, 32, &shade(f, 501));
+    let reference = images::Estimate::gather(w, h, 32, &shade(reference_direct, 502));
+    images::z_test(student, reference, 8, 5.0, "reflected radiance")
 }
 
 fn rel(got: Vec3, want: Vec3) -> f64 {
