@@ -106,5 +106,9 @@ pub fn registry() -> Registry {
     r.push(("ch6/mis_weight", || {
         checks::ch6::check_mis_weight(ch6::mis_weight::mis_weight)
     }));
+    #[cfg(not(broken_ch6_path_radiance))]
+    r.push(("ch6/path_radiance", || {
+        checks::paths::check_path_radiance(ch6::path_radiance::path_radiance)
+    }));
     r
 }

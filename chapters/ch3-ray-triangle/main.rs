@@ -28,6 +28,10 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
+    // `--student`: the chapter's capstone rendered with your exercise.
+    if std::env::args().any(|a| a == "--student") {
+        return raystep::grading::driver::student_main(3);
+    }
     let cli = Cli::parse();
     if let Some(only) = cli.bench {
         let only = (!only.is_empty()).then_some(only.as_str());

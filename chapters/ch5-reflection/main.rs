@@ -41,6 +41,10 @@ struct Cli {
 }
 
 fn main() -> ExitCode {
+    // `--student`: the chapter's capstone rendered with your exercise.
+    if std::env::args().any(|a| a == "--student") {
+        return raystep::grading::driver::student_main(5);
+    }
     let cli = Cli::parse();
     let stage = Reflection {
         strategy: match cli.strategy {

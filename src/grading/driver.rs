@@ -256,6 +256,64 @@ pub fn describe(ex: &Exercise, outcome: &Outcome, width: usize, images: &[PathBu
     s
 }
 
+/// `chN --student`: builds the exercises, then renders chapter N's
+/// capstone scene with the student's code beside the reference and their
+/// difference, into `out/student/` (under a one-minute limit).
+pub fn student_main(chapter: u32) -> ExitCode {
+    let Some((_, name)) = crate::grading::runner::CAPSTONES
+        .iter()
+        .find(|(c, _)| *c == chapter)
+    else {
+        eprintln!("chapter {chapter} has no capstone to render yet");
+        return ExitCode::from(2);
+    };
+    eprintln!("building your exercises (the raystep-exercises crate)...");
+    let built = match build_exercises(&root().join("chapters")) {
+        Ok(b) => b,
+        Err(e) => {
+            eprintln!("error: could not build the exercises: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    let id = format!("ch{chapter}/{name}");
+    if let Some(m) = built.broken.get(&id) {
+        eprintln!("{id} does not compile:\n{m}");
+        return ExitCode::from(1);
+    }
+    let out = PathBuf::from("out/student");
+    let mut child = match Command::new(&built.runner)
+        .args(["render", &format!("ch{chapter}")])
+        .arg(&out)
+        .stdin(Stdio::null())
+        .spawn()
+    {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("error: could not start {}: {e}", built.runner.display());
+            return ExitCode::from(2);
+        }
+    };
+    let start = Instant::now();
+    loop {
+        match child.try_wait() {
+            Ok(Some(status)) => {
+                return ExitCode::from(u8::try_from(status.code().unwrap_or(1)).unwrap_or(1))
+            }
+            Ok(None) if start.elapsed() > Duration::from_secs(60) => {
+                let _ = child.kill();
+                let _ = child.wait();
+                eprintln!("your {id} ran for a minute and was stopped: does a loop never end?");
+                return ExitCode::from(1);
+            }
+            Ok(None) => std::thread::sleep(Duration::from_millis(10)),
+            Err(e) => {
+                eprintln!("error: {e}");
+                return ExitCode::from(2);
+            }
+        }
+    }
+}
+
 /// What building the exercises crate gave.
 #[derive(Debug)]
 pub struct Built {

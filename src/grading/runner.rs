@@ -104,10 +104,89 @@ pub fn verdict(registry: &Registry, ex: &Exercise, out: &Path) -> Verdict {
     }
 }
 
+/// Each chapter's capstone, the exercise that renders the chapter's scene
+/// (chapter 3's, walking the BVH, is still to come).
+pub const CAPSTONES: [(u32, &str); 5] = [
+    (1, "draw_edges"),
+    (2, "rasterize_triangle"),
+    (4, "trace_scene"),
+    (5, "direct_light"),
+    (6, "path_radiance"),
+];
+
+/// `grade-student render <N> <out>`: renders chapter N's capstone scene
+/// with the student's code and with the reference, writes both and their
+/// difference to `out`, and says how they compare.
+fn render(registry: &Registry, chapter: &str, out: &Path) -> ExitCode {
+    let n: u32 = chapter.trim_start_matches("ch").parse().unwrap_or(0);
+    let Some((_, name)) = CAPSTONES.iter().find(|(c, _)| *c == n) else {
+        eprintln!("chapter {chapter} has no capstone to render yet");
+        return ExitCode::from(2);
+    };
+    let Some(ex) = crate::grading::all()
+        .into_iter()
+        .find(|e| e.chapter == n && e.name == *name)
+    else {
+        eprintln!("error: no exercise ch{n}/{name}");
+        return ExitCode::from(2);
+    };
+    let Some((_, check)) = registry.iter().find(|(id, _)| *id == ex.id()) else {
+        eprintln!(
+            "error: {} is not in the exercises crate that was built",
+            ex.id()
+        );
+        return ExitCode::from(2);
+    };
+    let c = match run_check(*check) {
+        Outcome::Passed(c) | Outcome::Failed(c) => c,
+        Outcome::NotImplemented => {
+            println!(
+                "{} is not started: replace the todo!() in {}",
+                ex.id(),
+                ex.file
+            );
+            return ExitCode::from(1);
+        }
+        other => {
+            println!("{}: {other:?}", ex.id());
+            return ExitCode::from(1);
+        }
+    };
+    let verdict = if c.passed() {
+        "matches the reference"
+    } else {
+        "differs from the reference"
+    };
+    println!("your {} {verdict}: {}", ex.id(), c.detail);
+    match write_failure_images(&ex, &c, out) {
+        Ok(files) => {
+            for f in files {
+                println!("wrote {}", f.display());
+            }
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
 /// The whole `main` of `grade-student`: `grade-student <chN/name> <out>`
-/// prints the verdict of one exercise after [`VERDICT`].
+/// prints the verdict of one exercise after [`VERDICT`];
+/// `grade-student render <chN> <out>` renders a chapter's capstone.
 pub fn runner_main(registry: Registry) -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if let [cmd, chapter, out] = args.as_slice() {
+        if cmd == "render" {
+            let out = Path::new(out);
+            if let Err(e) = std::fs::create_dir_all(out) {
+                eprintln!("error: cannot create {}: {e}", out.display());
+                return ExitCode::from(2);
+            }
+            return render(&registry, chapter, out);
+        }
+    }
     let [id, out] = args.as_slice() else {
         eprintln!("usage: grade-student <chN/name> <out dir> (run by `grade`)");
         return ExitCode::from(2);

@@ -3,11 +3,13 @@
 //! roulette, the balance heuristic) fail.
 
 use crate::common;
+use glam::{Vec2, Vec3};
 use raystep::grading::exercises::ch6;
+use raystep::grading::exercises::paths::{check_path_radiance, PathScene};
 
 #[test]
 fn chapter_6_references_pass() {
-    common::references_pass(6, 3);
+    common::references_pass(6, 4);
 }
 
 #[test]
@@ -46,4 +48,67 @@ fn the_balance_heuristic_or_an_overflowing_power_heuristic_fails() {
         }
     });
     assert!(!check.passed(), "{check:?}");
+}
+
+/// The capstone as a student writes it from the lecture: roulette with a
+/// fixed q = 0.8 from the first bounce. `biased` forgets to divide by q;
+/// `twice` also adds the emission a bounce finds (counted twice, since the
+/// light sample already counted it).
+fn lecture_path(
+    scene: &PathScene,
+    origin: Vec3,
+    dir: Vec3,
+    rng: &mut dyn FnMut() -> f32,
+    biased: bool,
+    twice: bool,
+) -> Vec3 {
+    let Some(mut hit) = scene.first_hit(origin, dir) else {
+        return Vec3::ZERO;
+    };
+    let mut l = hit.emitted;
+    let mut beta = Vec3::ONE;
+    loop {
+        let f = hit.albedo / std::f32::consts::PI;
+        if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
+            let cos = hit.n.dot(ls.wi);
+            if cos > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
+                l += beta * f * ls.le * cos / ls.pdf;
+            }
+        }
+        let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
+        beta *= f * hit.n.dot(wi) / pdf;
+        let q = 0.8;
+        if rng() >= q {
+            break;
+        }
+        if !biased {
+            beta /= q;
+        }
+        let Some(next) = scene.next_hit(&hit, wi) else {
+            break;
+        };
+        hit = next;
+        if twice {
+            l += beta * hit.emitted;
+        }
+    }
+    l
+}
+
+#[test]
+fn the_path_capstone_passes_from_the_lecture_and_catches_mistakes() {
+    let check = check_path_radiance(|s, o, d, r| lecture_path(s, o, d, r, false, false));
+    assert!(check.passed(), "{}", check.detail);
+    // Roulette that does not divide by q: too dark.
+    let check = check_path_radiance(|s, o, d, r| lecture_path(s, o, d, r, true, false));
+    assert!(!check.passed(), "{}", check.detail);
+    assert!(
+        check.detail.contains("z = ") && check.detail.contains("block"),
+        "{}",
+        check.detail
+    );
+    assert!(check.images.is_some());
+    // Emission counted by the light sample and again by the bounce.
+    let check = check_path_radiance(|s, o, d, r| lecture_path(s, o, d, r, false, true));
+    assert!(!check.passed(), "{}", check.detail);
 }

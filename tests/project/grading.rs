@@ -226,6 +226,13 @@ fn a_broken_exercise_is_isolated_and_a_loop_that_never_ends_is_stopped() {
         "sphere_trace",
         "use glam::Vec3;\npub fn sphere_trace(sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, eps: f32, steps: u32, max: f32) -> Option<f32> {\n    let mut t = 0.0;\n    loop {\n        let h = sdf(o + t * d);\n        if h < eps { return Some(t); }\n        t += h;\n    }\n}\n",
     );
+    // The capstone with a march that forgets to step (and has no budget).
+    put(
+        &ex,
+        "ch4-sphere-tracing",
+        "trace_scene",
+        "use glam::Vec3;\nuse raystep::ch4_implicit_surfaces::march::March;\npub fn trace_scene(sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {\n    let t = 0.0;\n    loop {\n        let h = sdf(o + t * d);\n        if h < m.epsilon { return Some((t, -d)); }\n    }\n}\n",
+    );
     // A wrong answer: the sign of the edge function flipped.
     put(
         &ex,
@@ -269,13 +276,19 @@ fn a_broken_exercise_is_isolated_and_a_loop_that_never_ends_is_stopped() {
     let timed = line("ch4/sphere_trace");
     assert!(timed.contains("timed out after 3 s"), "{text}");
     assert!(timed.contains("while "), "names what was running: {timed}");
+    let timed = line("ch4/trace_scene");
+    assert!(timed.contains("timed out after 3 s"), "{text}");
+    assert!(
+        timed.contains("while calling trace_scene"),
+        "names what was running: {timed}"
+    );
     assert!(line("ch2/edge_function").contains("FAIL  error"), "{text}");
     assert!(text.contains("expected"), "{text}");
     assert!(
         line("ch4/gradient_normal").contains("not started"),
         "{text}"
     );
-    // One timeout of 3 s, a build of the small crate, the rest quick.
+    // Two timeouts of 3 s, a build of the small crate, the rest quick.
     assert!(took < Duration::from_secs(120), "{took:?}");
     // Gradescope's shape: a test per exercise with name, score, max_score
     // and output.
@@ -325,4 +338,38 @@ fn hints_come_in_tiers_and_the_formula_last() {
     );
     assert!(shown[1].contains("last hint"), "{}", shown[1]);
     assert!(shown[2].contains("hint 3 of 3"), "{}", shown[2]);
+}
+
+#[test]
+fn a_chapter_binary_renders_the_students_capstone() {
+    let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
+    let dir = common::temp_dir("student-render");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ch4"))
+        .arg("--student")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    let stub = std::fs::read_to_string(
+        common::root().join("chapters/ch4-sphere-tracing/exercises/trace_scene.rs"),
+    )
+    .unwrap()
+    .contains("todo!()");
+    if stub {
+        assert_eq!(out.status.code(), Some(1), "{text}");
+        assert!(text.contains("not started"), "{text}");
+    } else {
+        assert!(text.contains("wrote "), "{text}");
+        assert!(dir
+            .join("out/student/ch4-trace_scene-student.png")
+            .is_file());
+    }
+    // Chapter 3's capstone is not written yet: a clear word, no build.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ch3"))
+        .arg("--student")
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no capstone"));
 }

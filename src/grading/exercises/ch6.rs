@@ -48,6 +48,17 @@ pub fn exercises() -> Vec<Exercise> {
             ],
             reference: || check_mis_weight(reference_weight),
         },
+        Exercise {
+            chapter: 6,
+            name: "path_radiance",
+            file: "chapters/ch6-global-illumination/exercises/path_radiance.rs",
+            hints: [
+                "slides \"the rendering equation, one light path per sample\" and \"Russian roulette\": at every hit add a light sample (next-event estimation), then bounce; a path ends by roulette, and a survivor carries more.",
+                "with next-event estimation, emission is counted only where the camera sees it directly: a bounce that happens to hit the light was already counted by the light sample. The throughput β is multiplied by f cos θ / pdf at each bounce; roulette survives with probability q and divides β by q.",
+                "L = hit.emitted; β = 1; loop { if let Some(ls) = sample_light: if cos > 0 && unoccluded { L += β (ρ/π) ls.le cos / ls.pdf }; (wi, pdf) = sample_cosine; β *= (ρ/π) cos / pdf; after 2 bounces q = min(max(β), 0.95): if rng() >= q break, β /= q; hit = next_hit(wi) else break }",
+            ],
+            reference: || super::paths::check_path_radiance(super::paths::reference_path),
+        },
     ]
 }
 

@@ -15,6 +15,7 @@ pub mod ch4;
 pub mod ch5;
 pub mod ch6;
 pub mod images;
+pub mod paths;
 
 /// The worst error over `(error, which case)` pairs, a NaN counting as
 /// infinite; `(0, "all cases match")` when none is above 0. Shared by the
