@@ -7,7 +7,7 @@
 fn main() -> std::process::ExitCode {
     // `--student`: the chapter's capstone rendered with your exercise.
     if std::env::args().any(|a| a == "--student") {
-        return raystep::grading::driver::student_main(1);
+        return raystep::grading::process::student_main(1);
     }
     raystep::core::run::chapter_main(&raystep::ch1_projection::stage::Projection)
 }

@@ -35,7 +35,7 @@ struct Cli {
 fn main() -> ExitCode {
     // `--student`: the chapter's capstone rendered with your exercise.
     if std::env::args().any(|a| a == "--student") {
-        return raystep::grading::driver::student_main(2);
+        return raystep::grading::process::student_main(2);
     }
     let cli = Cli::parse();
     if cli.bench {

@@ -30,7 +30,7 @@ struct Cli {
 fn main() -> ExitCode {
     // `--student`: the chapter's capstone rendered with your exercise.
     if std::env::args().any(|a| a == "--student") {
-        return raystep::grading::driver::student_main(3);
+        return raystep::grading::process::student_main(3);
     }
     let cli = Cli::parse();
     if let Some(only) = cli.bench {

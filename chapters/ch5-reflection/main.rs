@@ -43,7 +43,7 @@ struct Cli {
 fn main() -> ExitCode {
     // `--student`: the chapter's capstone rendered with your exercise.
     if std::env::args().any(|a| a == "--student") {
-        return raystep::grading::driver::student_main(5);
+        return raystep::grading::process::student_main(5);
     }
     let cli = Cli::parse();
     let stage = Reflection {

@@ -82,7 +82,7 @@ struct Cli {
 fn main() -> ExitCode {
     // `--student`: the chapter's capstone rendered with your exercise.
     if std::env::args().any(|a| a == "--student") {
-        return raystep::grading::driver::student_main(6);
+        return raystep::grading::process::student_main(6);
     }
     let cli = Cli::parse();
     let mut stage = DEFAULT;

@@ -16,10 +16,12 @@
 //! and never hangs. When a check compares images and fails, the student's
 //! image, the reference and their difference are written to `out/grade/`.
 
+pub mod build;
 pub mod driver;
 pub mod exercise;
 pub mod exercises;
 pub mod hints;
+pub mod process;
 pub mod runner;
 
 pub use driver::grade_main;
