@@ -373,3 +373,40 @@ fn a_chapter_binary_renders_the_students_capstone() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no capstone"));
 }
+
+/// The reference pictures the capstones are graded against, summarised
+/// (size, mean colour, share of lit pixels) in an insta snapshot: when a
+/// chapter's renderer changes what a capstone expects, `cargo insta
+/// review` shows the instructor the change before students see it.
+#[test]
+fn the_capstones_reference_pictures_are_reviewed_snapshots() {
+    let mut table = String::from("capstone | size | mean RGB | lit pixels\n");
+    for (chapter, name) in raystep::grading::runner::CAPSTONES {
+        let ex = grading::all()
+            .into_iter()
+            .find(|e| e.chapter == chapter && e.name == name)
+            .unwrap();
+        let Outcome::Passed(check) = grading::run(&ex) else {
+            panic!("{} does not pass", ex.id());
+        };
+        let (_, reference) = check.images.expect("a capstone renders");
+        let n = reference.pixels.len() as f32;
+        let mean = reference.pixels.iter().copied().sum::<glam::Vec3>() / n;
+        let lit = reference
+            .pixels
+            .iter()
+            .filter(|p| p.max_element() > 0.0)
+            .count();
+        table += &format!(
+            "{} | {}x{} | {:.4} {:.4} {:.4} | {:.1}%\n",
+            ex.id(),
+            reference.width,
+            reference.height,
+            mean.x,
+            mean.y,
+            mean.z,
+            100.0 * lit as f32 / n
+        );
+    }
+    insta::assert_snapshot!(table);
+}
