@@ -140,7 +140,7 @@ pub fn run_student(
     let doing = stderr
         .lines()
         .filter_map(|l| l.strip_prefix(PROGRESS))
-        .last()
+        .next_back()
         .unwrap_or_default()
         .to_string();
     if timed_out {

@@ -112,7 +112,7 @@ pub fn reference_direct(
     let d2 = to.length_squared();
     let wi = to / d2.sqrt();
     let (cos, cos_l) = (n.dot(wi), n_light.dot(-wi));
-    if !(cos > 0.0 && cos_l > 0.0 && d2 > 0.0) || !visible(p, y) {
+    if !(cos > 0.0 && cos_l > 0.0 && d2 > 0.0 && visible(p, y)) {
         return Vec3::ZERO;
     }
     rho * FRAC_1_PI * le * cos * cos_l / d2 * area
