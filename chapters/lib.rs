@@ -57,7 +57,9 @@ pub fn registry() -> Registry {
         checks::ch3::check_moller_trumbore(ch3::moller_trumbore::moller_trumbore)
     }));
     #[cfg(not(broken_ch3_bvh_traversal))]
-    r.push(("ch3/bvh_traversal", || checks::ch3::check_bvh_traversal(ch3::bvh_traversal::closest_hit)));
+    r.push(("ch3/bvh_traversal", || {
+        checks::ch3::check_bvh_traversal(ch3::bvh_traversal::closest_hit)
+    }));
     #[cfg(not(broken_ch4_sphere_sdf))]
     r.push(("ch4/sphere_sdf", || {
         checks::ch4::check_sphere_sdf(ch4::sphere_sdf::sphere_sdf)

@@ -104,11 +104,11 @@ pub fn verdict(registry: &Registry, ex: &Exercise, out: &Path) -> Verdict {
     }
 }
 
-/// Each chapter's capstone, the exercise that renders the chapter's scene
-/// (chapter 3's, walking the BVH, is still to come).
-pub const CAPSTONES: [(u32, &str); 5] = [
+/// Each chapter's capstone, the exercise that renders the chapter's scene.
+pub const CAPSTONES: [(u32, &str); 6] = [
     (1, "draw_edges"),
     (2, "rasterize_triangle"),
+    (3, "bvh_traversal"),
     (4, "trace_scene"),
     (5, "direct_light"),
     (6, "path_radiance"),

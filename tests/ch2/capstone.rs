@@ -12,6 +12,7 @@ fn edge(a: Vec2, b: Vec2, p: Vec2) -> f32 {
 
 /// The capstone as a student writes it from the lecture, with the rule
 /// for samples on an edge, and whether to test depth, as parameters.
+#[allow(clippy::too_many_arguments)]
 fn lecture(
     v: [Vec3; 3],
     colors: [Vec3; 3],

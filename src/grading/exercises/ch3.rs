@@ -410,7 +410,8 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
         });
         films_from_sums(&camera, &sums, 1).swap_remove(0)
     };
-    let images = (wrong > 0).then(|| (film(f), film(reference)));
+    // Always: `ch3 --student` shows them whether or not they match.
+    let images = Some((film(f), film(reference)));
     Check {
         error: wrong as f64 / rays_checked as f64,
         tolerance: 0.0,
