@@ -235,7 +235,11 @@ pub fn describe(ex: &Exercise, outcome: &Outcome, width: usize, images: &[PathBu
         Outcome::Panicked(m) => format!("  {id}  FAIL  panicked: {m}\n"),
         Outcome::TimedOut { seconds, doing } => format!(
             "  {id}  FAIL  timed out after {seconds} s and was stopped, while {}: does a loop never end?\n",
-            if doing.is_empty() { "running your code".to_string() } else { doing.clone() }
+            if doing.is_empty() {
+                format!("running your {} ({})", ex.name, ex.file)
+            } else {
+                doing.clone()
+            }
         ),
         Outcome::DoesNotCompile(m) => {
             let mut s = format!("  {id}  FAIL  does not compile ({}):\n", ex.file);
