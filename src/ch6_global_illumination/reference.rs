@@ -55,6 +55,23 @@ impl StoredReference {
         StoredReference::for_scene_at(scene, REFERENCE_SIZE, REFERENCE_SIZE)
     }
 
+    /// The stored reference a render of `scene` at the scene's own size can
+    /// be compared with, and the factor by which the render is larger
+    /// ([`scale_factor`]). `None` when there is no reference, or when the
+    /// render's size is not a whole multiple of it with the same aspect (a
+    /// 256x128 Cornell box has no reference: the square one shows a
+    /// different picture).
+    pub fn for_render(scene: &Scene) -> Option<(StoredReference, u32)> {
+        let (w, h) = (scene.camera.width, scene.camera.height);
+        let (rw, rh) = if w >= h {
+            (REFERENCE_SIZE, REFERENCE_SIZE * h / w.max(1))
+        } else {
+            (REFERENCE_SIZE * w / h.max(1), REFERENCE_SIZE)
+        };
+        let factor = scale_factor(w, h, rw, rh)?;
+        Some((StoredReference::for_scene_at(scene, rw, rh)?, factor))
+    }
+
     /// The stored reference of `scene` at `width` x `height`, if there is
     /// one (`<name>-<width>x<height>` in [`reference_dir`]).
     pub fn for_scene_at(scene: &Scene, width: u32, height: u32) -> Option<StoredReference> {
@@ -115,6 +132,18 @@ impl StoredReference {
 /// The file stem of the reference of scene `name` at `width` x `height`.
 pub fn stem(name: &str, width: u32, height: u32) -> String {
     format!("{name}-{width}x{height}")
+}
+
+/// The integer factor by which a `width` x `height` render is larger than
+/// a `ref_width` x `ref_height` reference, when it is the same picture at a
+/// whole multiple of its size (same aspect, both sides divisible); `None`
+/// otherwise, and then the render and the reference cannot be compared.
+pub fn scale_factor(width: u32, height: u32, ref_width: u32, ref_height: u32) -> Option<u32> {
+    if ref_width == 0 || ref_height == 0 || width % ref_width != 0 || height % ref_height != 0 {
+        return None;
+    }
+    let factor = width / ref_width;
+    (factor >= 1 && height / ref_height == factor).then_some(factor)
 }
 
 /// Nearest-neighbour enlargement by an integer factor (for showing a

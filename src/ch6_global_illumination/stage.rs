@@ -186,7 +186,8 @@ pub struct PathTracingRender {
     pub acc: Accumulator,
     seconds: f64,
     started: Option<Instant>,
-    reference: Option<StoredReference>,
+    /// The stored reference and how many times larger the render is.
+    reference: Option<(StoredReference, u32)>,
     errors: Vec<(f64, f64)>,
 }
 
@@ -194,8 +195,7 @@ impl PathTracingRender {
     /// A render of `scene` that has not started.
     pub fn new(stage: GlobalIllumination, scene: Arc<Scene>, settings: &Settings) -> Result<Self> {
         let (w, h) = (scene.camera.width, scene.camera.height);
-        let reference = StoredReference::for_scene(&scene)
-            .filter(|r| w % r.mean.width == 0 && h % r.mean.height == 0);
+        let reference = StoredReference::for_render(&scene);
         Ok(PathTracingRender {
             stage,
             camera: Camera::new(scene.camera)?,
@@ -217,9 +217,8 @@ impl PathTracingRender {
     /// The RMSE of the current image against the stored reference, at the
     /// reference's resolution (the image box-downsampled to it).
     pub fn reference_rmse(&self) -> Option<f64> {
-        let r = self.reference.as_ref()?;
-        let factor = self.acc.width / r.mean.width;
-        Some(downsample(&self.acc.mean(), factor).rmse(&r.mean))
+        let (r, factor) = self.reference.as_ref()?;
+        Some(downsample(&self.acc.mean(), *factor).rmse(&r.mean))
     }
 
     /// Seconds spent rendering passes (not building the world).
@@ -304,9 +303,8 @@ impl Render for PathTracingRender {
     }
 
     fn reference(&self) -> Option<Film> {
-        let r = self.reference.as_ref()?;
-        let factor = self.acc.width / r.mean.width;
-        Some(upsample(&r.mean, factor))
+        let (r, factor) = self.reference.as_ref()?;
+        Some(upsample(&r.mean, *factor))
     }
 
     fn error_series(&self) -> Vec<(f64, f64)> {
@@ -324,7 +322,7 @@ impl Render for PathTracingRender {
             world: self.world.as_ref(),
             seconds: self.seconds,
             reference_rmse: self.reference_rmse().map(|e| {
-                let r = self.reference.as_ref().expect("an RMSE needs a reference");
+                let (r, _) = self.reference.as_ref().expect("an RMSE needs a reference");
                 (e, r.mean.width, r.mean.height)
             }),
         })

@@ -7,5 +7,6 @@ mod book;
 mod film_and_main;
 mod grading;
 mod layout;
+mod non_square;
 mod scene_docs;
 mod scene_errors;
