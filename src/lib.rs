@@ -64,6 +64,7 @@ pub mod chapters;
 pub mod core;
 pub mod grading;
 pub mod scene;
+pub mod summary;
 #[cfg(feature = "tui")]
 pub mod tui;
 

@@ -50,7 +50,7 @@ struct Cli {
     #[arg(long, value_enum, default_value = "mis")]
     estimator: EstimatorArg,
     /// Where the random numbers come from.
-    #[arg(long, value_enum, default_value = "independent")]
+    #[arg(long, value_enum, default_value = "sobol")]
     sampler: SamplerArg,
     /// Largest bounce count k (k + 1 scatterings); paths end there.
     #[arg(long, default_value_t = 16)]

@@ -83,6 +83,15 @@ impl Chapter for Reflection {
     fn variants(&self) -> &'static [View] {
         VARIANTS
     }
+    fn default_variant(&self) -> usize {
+        Strategy::ALL
+            .iter()
+            .position(|s| *s == self.strategy)
+            .unwrap_or(0)
+    }
+    fn progressive(&self) -> bool {
+        true
+    }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         Ok(Box::new(ReflectionRender::new(*self, scene, settings)?))
     }
@@ -168,6 +177,14 @@ impl Render for ReflectionRender {
 
     fn progress(&self) -> (u32, u32) {
         (self.passes, self.settings.spp.max(1))
+    }
+
+    fn samples(&self) -> u32 {
+        self.passes
+    }
+
+    fn set_spp(&mut self, spp: u32) {
+        self.settings.spp = spp.max(1);
     }
 
     fn rays(&self) -> u64 {

@@ -61,15 +61,20 @@ impl StoredReference {
     /// render's size is not a whole multiple of it with the same aspect (a
     /// 256x128 Cornell box has no reference: the square one shows a
     /// different picture).
+    /// A reference of the render's own size comes first (compared pixel
+    /// by pixel), then one of [`REFERENCE_SIZE`] on the longer side (the
+    /// render box-downsampled to it).
     pub fn for_render(scene: &Scene) -> Option<(StoredReference, u32)> {
         let (w, h) = (scene.camera.width, scene.camera.height);
-        let (rw, rh) = if w >= h {
+        let small = if w >= h {
             (REFERENCE_SIZE, REFERENCE_SIZE * h / w.max(1))
         } else {
             (REFERENCE_SIZE * w / h.max(1), REFERENCE_SIZE)
         };
-        let factor = scale_factor(w, h, rw, rh)?;
-        Some((StoredReference::for_scene_at(scene, rw, rh)?, factor))
+        [(w, h), small].into_iter().find_map(|(rw, rh)| {
+            let factor = scale_factor(w, h, rw, rh)?;
+            Some((StoredReference::for_scene_at(scene, rw, rh)?, factor))
+        })
     }
 
     /// The stored reference of `scene` at `width` x `height`, if there is

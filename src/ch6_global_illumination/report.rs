@@ -89,10 +89,14 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
     if let Some((e, w, h)) = r.reference_rmse {
         report.facts.push((
             "RMSE against the stored reference".into(),
-            format!(
-                "{} (at {w}x{h}, image box-downsampled to it)",
-                format_number(e),
-            ),
+            if (w, h) == (r.scene.camera.width, r.scene.camera.height) {
+                format!("{} (per pixel, at {w}x{h})", format_number(e))
+            } else {
+                format!(
+                    "{} (at {w}x{h}, image box-downsampled to it)",
+                    format_number(e),
+                )
+            },
         ));
     }
     if acc.layers.is_some() {

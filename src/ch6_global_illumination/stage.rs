@@ -42,39 +42,42 @@ pub const VIEWS: &[View] = &[
     },
 ];
 
-/// The estimator × sampler combinations a front end can switch between.
+/// The estimator × sampler combinations a front end can switch between:
+/// the lecture's ladder, from "average (uniform sampling)" to
+/// "importance-sampling, according to BRDF and light sources", each with
+/// independent random numbers and with a low-discrepancy sequence.
 pub const VARIANTS: &[View] = &[
     View {
         name: "uniform-independent",
-        about: "uniform hemisphere random walk, independent numbers",
+        about: "uniform sampling (average of random directions), random numbers",
     },
     View {
         name: "uniform-sobol",
-        about: "uniform hemisphere random walk, Owen-scrambled Sobol",
+        about: "uniform sampling (average of random directions), low-discrepancy numbers",
     },
     View {
         name: "bsdf-independent",
-        about: "BSDF (cosine) sampling only, independent numbers",
+        about: "importance sampling according to the BRDF, random numbers",
     },
     View {
         name: "bsdf-sobol",
-        about: "BSDF (cosine) sampling only, Owen-scrambled Sobol",
+        about: "importance sampling according to the BRDF, low-discrepancy numbers",
     },
     View {
         name: "light-independent",
-        about: "light sampling without MIS, independent numbers",
+        about: "importance sampling according to the light sources (direct + indirect), random numbers",
     },
     View {
         name: "light-sobol",
-        about: "light sampling without MIS, Owen-scrambled Sobol",
+        about: "importance sampling according to the light sources (direct + indirect), low-discrepancy numbers",
     },
     View {
         name: "mis-independent",
-        about: "light and BSDF sampling with the power heuristic, independent numbers",
+        about: "importance sampling according to BRDF and light sources, combined (MIS), random numbers",
     },
     View {
         name: "mis-sobol",
-        about: "light and BSDF sampling with the power heuristic, Owen-scrambled Sobol",
+        about: "importance sampling according to BRDF and light sources, combined (MIS), low-discrepancy numbers",
     },
 ];
 
@@ -94,15 +97,16 @@ pub struct GlobalIllumination {
     pub spp_figure: Option<u32>,
 }
 
-/// The settings `ch6` uses unless told otherwise: MIS, 16 bounces,
-/// independent numbers, 4 spp per pass, with layers.
+/// The settings `ch6` and the front ends use unless told otherwise: the
+/// best estimator and sampler (MIS with Owen-scrambled Sobol numbers), 16
+/// bounces, 4 spp per pass, with layers.
 pub const DEFAULT: GlobalIllumination = GlobalIllumination {
     path: PathSettings {
         estimator: Estimator::Mis,
         max_bounces: Some(16),
         rr_min_scatterings: 1,
     },
-    sampler: SamplerKind::Independent,
+    sampler: SamplerKind::Sobol,
     spp_per_pass: 4,
     layers: true,
     spp_figure: None,
@@ -161,6 +165,12 @@ impl Chapter for GlobalIllumination {
     fn variants(&self) -> &'static [View] {
         VARIANTS
     }
+    fn default_variant(&self) -> usize {
+        self.variant()
+    }
+    fn progressive(&self) -> bool {
+        true
+    }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         self.check()?;
         Ok(Box::new(PathTracingRender::new(*self, scene, settings)?))
@@ -210,8 +220,26 @@ impl PathTracingRender {
         })
     }
 
+    /// Samples in the pass after `done` samples: 1, 1, 2, 4, … up to
+    /// `spp_per_pass`, so the first picture comes after one sample per
+    /// pixel. (Each pixel's samples are added in order whatever the passes,
+    /// so the image does not depend on them.)
+    fn pass_size(&self, done: u32) -> u32 {
+        self.stage.spp_per_pass.min(done.max(1))
+    }
+
+    /// Passes to reach `spp` samples from `done`.
+    fn passes_between(&self, mut done: u32, spp: u32) -> u32 {
+        let mut passes = 0;
+        while done < spp {
+            done += self.pass_size(done).min(spp - done);
+            passes += 1;
+        }
+        passes
+    }
+
     fn planned(&self) -> u32 {
-        self.settings.spp.max(1).div_ceil(self.stage.spp_per_pass)
+        self.passes_between(0, self.settings.spp.max(1))
     }
 
     /// The RMSE of the current image against the stored reference, at the
@@ -237,7 +265,7 @@ impl Render for PathTracingRender {
         }
         let spp = self.settings.spp.max(1);
         if self.acc.samples < spp {
-            let count = self.stage.spp_per_pass.min(spp - self.acc.samples);
+            let count = self.pass_size(self.acc.samples).min(spp - self.acc.samples);
             let t = Instant::now();
             let (world, _) = self.world.as_ref().expect("built above");
             self.acc.add_samples(
@@ -257,10 +285,37 @@ impl Render for PathTracingRender {
     }
 
     fn progress(&self) -> (u32, u32) {
-        (
-            self.acc.samples.div_ceil(self.stage.spp_per_pass),
-            self.planned(),
-        )
+        let done = self.passes_between(0, self.acc.samples);
+        (done, done.max(self.planned()))
+    }
+
+    fn samples(&self) -> u32 {
+        self.acc.samples
+    }
+
+    fn set_spp(&mut self, spp: u32) {
+        self.settings.spp = spp.max(1);
+    }
+
+    fn noise(&self) -> Option<f64> {
+        if self.acc.samples < 2 {
+            return None;
+        }
+        // At the reference's resolution when there is one: a block mean of
+        // f² independent pixels has Σ var / f⁴.
+        let var = self.acc.variance_of_mean();
+        let var = match &self.reference {
+            Some((_, f)) if *f > 1 => {
+                let mut v = downsample(&var, *f);
+                let k = 1.0 / (f * f) as f32;
+                v.pixels.iter_mut().for_each(|p| *p *= k);
+                v
+            }
+            _ => var,
+        };
+        let n = var.pixels.len().max(1) as f64 * 3.0;
+        let sum: f64 = var.pixels.iter().map(|p| p.as_dvec3().element_sum()).sum();
+        Some((sum / n).sqrt())
     }
 
     fn rays(&self) -> u64 {

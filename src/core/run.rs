@@ -105,6 +105,10 @@ pub struct RunSummary {
     pub seconds: f64,
     /// Whether every stiff case came out as expected.
     pub stable: bool,
+    /// The main image's error against the stage's reference, where it has
+    /// one: the last point of its error series (at the reference's
+    /// resolution), else the RMSE pixel by pixel.
+    pub rmse: Option<f64>,
 }
 
 /// Renders `scene` with `chapter` to completion, writes its outputs into
@@ -189,10 +193,16 @@ pub fn run_headless(
             .join(", ")
     )
     .map_err(io)?;
+    let rmse = render.error_series().last().map(|p| p.1).or_else(|| {
+        let (image, reference) = (render.view(0), render.reference()?);
+        ((image.width, image.height) == (reference.width, reference.height))
+            .then(|| image.rmse(&reference))
+    });
     Ok(RunSummary {
         files,
         seconds,
         stable: report.all_stable(),
+        rmse,
     })
 }
 

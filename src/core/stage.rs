@@ -89,6 +89,18 @@ pub trait Chapter: Sync {
     fn variants(&self) -> &'static [View] {
         &[]
     }
+    /// The variant a front end opens with (index into
+    /// [`Chapter::variants`]): the best the stage has, while the others
+    /// stay one key away. 0 by default.
+    fn default_variant(&self) -> usize {
+        0
+    }
+    /// Whether the image keeps improving with more samples per pixel, so a
+    /// front end may go on rendering until a noise target or a sample
+    /// budget ([`Render::set_spp`], [`Render::noise`]). `false` by default.
+    fn progressive(&self) -> bool {
+        false
+    }
     /// Like [`Chapter::start`], with the estimator or sampler
     /// `variants()[variant]`. The default ignores `variant`, which is right
     /// for stages without variants.
@@ -141,6 +153,26 @@ pub trait Render: Send {
     /// count. Stages count cheaply (e.g. per pass: pixels × samples done).
     fn rays(&self) -> u64 {
         0
+    }
+    /// Samples per pixel taken so far, for progressive stages
+    /// ([`Chapter::progressive`]); 0 (the default) for the others.
+    fn samples(&self) -> u32 {
+        0
+    }
+    /// The render's own estimate of the RMSE of view 0 against the
+    /// converged image, from its sample variance: √(mean over pixels and
+    /// channels of the variance of each pixel's mean), at the resolution
+    /// [`Render::error_series`] measures at. `None` (the default) when the
+    /// stage keeps no variance.
+    fn noise(&self) -> Option<f64> {
+        None
+    }
+    /// Changes the sample target of a progressive render without starting
+    /// over: [`Render::pass`] keeps going until `spp` samples per pixel (or
+    /// reports done at once when there are already that many). Ignored by
+    /// default.
+    fn set_spp(&mut self, spp: u32) {
+        let _ = spp;
     }
 
     /// Files a headless run writes besides the views (and the EXR of a

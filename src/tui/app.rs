@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use glam::Vec3;
 
 use super::scenes::SceneEntry;
-use super::worker::{Job, Progress, Snapshot};
+use super::worker::{Job, Progress, Snapshot, Target};
 use crate::core::film::Film;
 use crate::core::stage::{Chapter, Settings};
 use crate::grading::FailureImages;
@@ -116,6 +116,11 @@ pub struct App {
     /// Asks the event loop to read the grader's images from
     /// [`App::grade_dir`].
     pub grade_requested: bool,
+    /// How far a progressive chapter renders (the event loop passes a
+    /// change on to the running render).
+    pub target: Target,
+    /// Whether the progressive render is paused (passed on likewise).
+    pub paused: bool,
 }
 
 /// Everything that can happen to the UI.
@@ -147,8 +152,16 @@ pub enum Msg {
     ToggleBounceMode,
     /// Render → reference → difference → render.
     CycleCompare,
-    /// Next estimator or sampler.
+    /// Next estimator or sampler (the next step of the lecture's ladder).
     NextVariant,
+    /// Previous estimator or sampler.
+    PrevVariant,
+    /// Pause or resume a progressive render.
+    TogglePause,
+    /// Twice the sample budget, and the noise level it reaches.
+    TargetUp,
+    /// Half the sample budget, and the noise level it reaches.
+    TargetDown,
     /// Show the grader's newest failure images (student vs reference), or
     /// go back to the render.
     ToggleGrading,
@@ -170,6 +183,7 @@ impl App {
     /// A UI on chapter 0 and scene 0, asking for its first render
     /// (generation 1).
     pub fn new(chapters: Vec<&'static dyn Chapter>, scenes: Vec<SceneEntry>, color: bool) -> App {
+        let variant = chapters.first().map_or(0, |c| c.default_variant());
         App {
             chapters,
             scenes,
@@ -181,7 +195,7 @@ impl App {
             bounce: None,
             bounce_mode: BounceMode::UpTo,
             compare: Compare::Render,
-            variant: 0,
+            variant,
             settings: Settings::default(),
             help: false,
             quit: false,
@@ -194,6 +208,8 @@ impl App {
             out_dir: PathBuf::from("out"),
             grading: None,
             grade_requested: false,
+            target: Target::DEFAULT,
+            paused: false,
         }
     }
 
@@ -244,7 +260,43 @@ impl App {
             scene,
             settings: self.settings.clone(),
             variant: self.variant,
+            target: self.progressive().then_some(self.target),
         })
+    }
+
+    /// Whether the selected chapter renders progressively to a target.
+    pub fn progressive(&self) -> bool {
+        self.current_chapter().is_some_and(|c| c.progressive())
+    }
+
+    /// The selected estimator or sampler's step on the ladder, in the
+    /// lecture's words: "step 8/8: importance sampling according to …".
+    pub fn variant_label(&self) -> Option<String> {
+        let c = self.current_chapter()?;
+        let v = c.variants().get(self.variant)?;
+        Some(format!(
+            "step {}/{}: {}",
+            self.variant + 1,
+            c.variants().len(),
+            v.about
+        ))
+    }
+
+    /// The share of the whole image's light that the selected bounces
+    /// carry (sum over pixels and channels), when bounces are selected.
+    pub fn bounce_share(&self) -> Option<f64> {
+        let snap = self.snapshot.as_ref()?;
+        let (k, layers) = (self.bounce?, snap.layers.as_ref()?);
+        let image = snap.views.first()?;
+        let sum = |f: &Film| {
+            f.pixels
+                .iter()
+                .map(|p| p.as_dvec3().element_sum())
+                .sum::<f64>()
+        };
+        let total = sum(image);
+        (self.shows_bounces() && total > 0.0)
+            .then(|| sum(&combine_layers(layers, k, self.bounce_mode, image)) / total)
     }
 
     /// Whether the bounce control is shown: the chapter has bounces and the
@@ -324,7 +376,8 @@ impl App {
         match self.bounce {
             None => "all bounces".into(),
             Some(k) => match self.bounce_mode {
-                BounceMode::Exactly => format!("exactly {k}: {}", bounce_name(k)),
+                BounceMode::Exactly if k == 0 => "exactly 0: direct light alone".into(),
+                BounceMode::Exactly => format!("exactly {k}: bounce {k} alone"),
                 BounceMode::UpTo => format!("up to {k}: {}", bounce_name(k)),
             },
         }
@@ -360,6 +413,7 @@ impl App {
     /// Starts over: a new generation, no picture yet.
     pub(super) fn restart(&mut self) {
         self.generation += 1;
+        self.paused = false;
         self.grading = None;
         self.snapshot = None;
         self.failure = None;
@@ -378,9 +432,10 @@ impl App {
     pub(super) fn select_chapter(&mut self, index: usize) {
         if index < self.chapters.len() && index != self.chapter {
             self.chapter = index;
-            // Views and estimators differ between chapters: start at the first.
+            // Views and estimators differ between chapters: start at the
+            // first view and the chapter's best estimator.
             self.view = 0;
-            self.variant = 0;
+            self.variant = self.chapters[index].default_variant();
             self.compare = Compare::Render;
             self.restart();
         }

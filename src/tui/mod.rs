@@ -25,7 +25,7 @@ pub mod view;
 pub mod worker;
 
 use std::io::{IsTerminal, Stdout};
-use std::path::Path;
+use std::path::PathBuf;
 use std::sync::OnceLock;
 use std::thread::ThreadId;
 use std::time::{Duration, Instant};
@@ -102,16 +102,54 @@ impl Drop for Restore {
     }
 }
 
-/// Runs the UI until the user quits. `scenes_dir` is listed after the
-/// built-in scene; `s` saves into `out_dir`.
-pub fn run(scenes_dir: &Path, out_dir: &Path) -> std::io::Result<()> {
+/// What the main binary's flags ask the UI to open with.
+#[derive(Clone, Debug, Default)]
+pub struct Launch {
+    /// The folder of scenes listed after the built-in scene.
+    pub scenes_dir: PathBuf,
+    /// Where `s` saves.
+    pub out_dir: PathBuf,
+    /// The chapter to open (lecture number); the first when `None`.
+    pub chapter: Option<u32>,
+    /// A scene file to open: selected in the list (added if the folder
+    /// does not hold it).
+    pub scene: Option<PathBuf>,
+    /// The sample budget of progressive chapters.
+    pub spp: Option<u32>,
+}
+
+/// The UI's first state for `launch`: its chapter, scene and budget
+/// selected, asking for its first render.
+pub fn launch_app(launch: &Launch, color: bool) -> App {
+    let mut entries = scenes::scene_list(&launch.scenes_dir);
+    let chosen = launch.scene.as_ref().map(|path| {
+        let same = |e: &scenes::SceneEntry| {
+            let a = std::fs::canonicalize(&e.source).ok();
+            a.is_some() && a == std::fs::canonicalize(path).ok()
+        };
+        entries.iter().position(same).unwrap_or_else(|| {
+            entries.push(scenes::SceneEntry::load(path));
+            entries.len() - 1
+        })
+    });
+    let mut app = App::new(crate::chapters::all(), entries, color);
+    app.out_dir = launch.out_dir.clone();
+    if let Some(spp) = launch.spp {
+        app.target.spp = spp.max(1);
+    }
+    if let Some(n) = launch.chapter {
+        app = update(app, Msg::ChapterNumber(n));
+    }
+    if let Some(i) = chosen {
+        app.select_scene(i);
+    }
+    app
+}
+
+/// Runs the UI until the user quits.
+pub fn run(launch: &Launch) -> std::io::Result<()> {
     install_panic_hook();
-    let mut app = App::new(
-        crate::chapters::all(),
-        scenes::scene_list(scenes_dir),
-        color_allowed(),
-    );
-    app.out_dir = out_dir.to_path_buf();
+    let app = launch_app(launch, color_allowed());
     enable_raw_mode()?;
     let _restore = Restore;
     execute!(
@@ -130,6 +168,9 @@ fn event_loop(
 ) -> std::io::Result<()> {
     let worker = Worker::spawn();
     let mut sent = 0;
+    // The target and pause state the running render was last given.
+    let mut sent_target = app.target;
+    let mut sent_paused = false;
     let mut dirty = true;
     let mut last_draw: Option<Instant> = None;
     loop {
@@ -139,6 +180,15 @@ fn event_loop(
             if let Some(job) = app.job() {
                 worker.start(job);
             }
+            (sent_target, sent_paused) = (app.target, false);
+        }
+        if app.target != sent_target {
+            sent_target = app.target;
+            worker.retarget(sent, app.target);
+        }
+        if app.paused != sent_paused {
+            sent_paused = app.paused;
+            worker.pause(sent, app.paused);
         }
         if app.save_requested {
             let result = save(&app);

@@ -82,11 +82,41 @@ pub fn update(mut app: App, msg: Msg) -> App {
                 }
             }
         }
-        Msg::NextVariant => {
+        Msg::NextVariant | Msg::PrevVariant => {
             let n = app.current_chapter().map_or(0, |c| c.variants().len());
             if n > 1 {
-                app.variant = (app.variant + 1) % n;
+                app.variant = match msg {
+                    Msg::NextVariant => (app.variant + 1) % n,
+                    _ => (app.variant + n - 1) % n,
+                };
                 app.restart();
+                app.message = app.variant_label().unwrap_or_default();
+            }
+        }
+        Msg::TogglePause => {
+            if !app.progressive() {
+                app.message = "this chapter renders once: nothing to pause".into();
+            } else if app.snapshot.is_none() {
+                app.message = "nothing to pause yet".into();
+            } else if app.snapshot.as_ref().is_some_and(|s| s.done) {
+                app.message = "finished: > raises the target".into();
+            } else {
+                app.paused = !app.paused;
+                app.message = if app.paused {
+                    "paused (space resumes)"
+                } else {
+                    "resumed"
+                }
+                .into();
+            }
+        }
+        Msg::TargetUp | Msg::TargetDown => {
+            if app.progressive() {
+                app.target = match msg {
+                    Msg::TargetUp => app.target.doubled(),
+                    _ => app.target.halved(),
+                };
+                app.message = format!("target: {}", target_text(&app.target));
             }
         }
         Msg::ToggleGrading => {
@@ -148,6 +178,18 @@ pub fn update(mut app: App, msg: Msg) -> App {
         Msg::Progress(_) => {}
     }
     app
+}
+
+/// A target in words: "1024 spp, or noise below 1.0% of the mean".
+pub fn target_text(t: &super::worker::Target) -> String {
+    match t.noise {
+        Some(n) => format!(
+            "{} spp, or noise below {:.2}% of the mean",
+            t.spp,
+            100.0 * n
+        ),
+        None => format!("{} spp", t.spp),
+    }
 }
 
 /// Writes what the preview shows (with exposure) as PNG and the same film

@@ -24,6 +24,8 @@ use ratatui::Frame;
 use super::app::{expose, App, Focus};
 use super::keys::KEYS;
 use super::picture::{fit, Picture};
+use super::update::target_text;
+use super::worker::Finish;
 use crate::core::film::Film;
 use crate::core::format::{format_number, format_seconds};
 use crate::core::preview::downsample;
@@ -159,7 +161,22 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
     }
     lines.push(Line::from(format!("exposure {:+} stops", app.exposure)));
     if app.shows_bounces() {
-        lines.push(Line::from(format!("bounces {}", app.bounce_label())));
+        let short = match app.bounce {
+            None => "all".to_string(),
+            Some(_) => app
+                .bounce_label()
+                .split(':')
+                .next()
+                .unwrap_or("")
+                .to_string(),
+        };
+        lines.push(Line::from(format!("bounces {short}")));
+        if let Some(share) = app.bounce_share() {
+            lines.push(Line::from(format!(
+                "  {:.1}% of the total light",
+                100.0 * share
+            )));
+        }
     }
     if app.shows_compare() {
         lines.push(Line::from(format!("compare: {}", app.compare_name())));
@@ -205,7 +222,19 @@ fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
 fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
     let title = match (&app.grading, app.current_chapter()) {
         (Some(g), _) => format!("grade · {} · {}", g.stem, app.compare_name()),
-        (None, Some(c)) => format!("ch{} {} · {}", c.number(), c.slug(), app.view_name()),
+        (None, Some(c)) => {
+            let mut t = format!("ch{} {} · {}", c.number(), c.slug(), app.view_name());
+            if let Some(v) = c.variants().get(app.variant) {
+                t += &format!(" · {}", v.name);
+            }
+            if app.view == 0 && app.shows_bounces() && app.bounce.is_some() {
+                t += &format!(" · {}", app.bounce_label());
+                if let Some(share) = app.bounce_share() {
+                    t += &format!(" ({:.1}% of the light)", 100.0 * share);
+                }
+            }
+            t
+        }
         (None, None) => "preview".into(),
     };
     let block = Block::bordered().title(title);
@@ -300,13 +329,34 @@ pub fn status_line(app: &App) -> Line<'static> {
         if let Some(f) = snap.views.first() {
             parts.push(format!("{}x{}", f.width, f.height));
         }
-        parts.push(format!("pass {}/{}", snap.progress.0, snap.progress.1));
+        match &snap.target {
+            Some(t) => parts.push(format!("spp {}/{}", snap.samples, t.spp)),
+            None => parts.push(format!("pass {}/{}", snap.progress.0, snap.progress.1)),
+        }
         parts.push(format_seconds(snap.elapsed.as_secs_f64()));
         if let Some(rate) = snap.rays_per_second() {
             parts.push(format!("{} rays/s", format_rate(rate)));
         }
+        if let Some(n) = snap.noise {
+            match snap.relative_noise() {
+                Some(r) => parts.push(format!("noise {} ({:.1}%)", format_number(n), 100.0 * r)),
+                None => parts.push(format!("noise {}", format_number(n))),
+            }
+        }
         if let Some(e) = snap.rmse {
             parts.push(format!("rmse {}", format_number(e)));
+        }
+        if snap.target.is_some() {
+            parts.push(
+                match (app.paused && !snap.done, snap.finish) {
+                    (true, _) => "paused",
+                    (_, Some(Finish::Clean)) => "clean",
+                    (_, Some(Finish::Budget)) => "budget spent",
+                    (_, Some(Finish::Complete)) => "done",
+                    (_, None) => "rendering",
+                }
+                .into(),
+            );
         }
     } else if app.failure.is_some() {
         parts.push("failed".into());
@@ -316,16 +366,40 @@ pub fn status_line(app: &App) -> Line<'static> {
     Line::from(Span::raw(parts.join(" │ ")))
 }
 
-fn draw_gauge(app: &App, frame: &mut Frame, area: Rect) {
-    let (done, planned) = app.snapshot.as_ref().map_or((0, 1), |s| s.progress);
+/// How far the render is, 0 to 1, and the gauge's label. A progressive
+/// render is as far as the nearer of its two stops: the budget (samples
+/// done / budget) and the noise level ((level / noise)², as noise falls
+/// with 1/√spp).
+pub fn gauge_state(app: &App) -> (f64, String) {
+    let Some(snap) = &app.snapshot else {
+        return (0.0, "0/1 passes".into());
+    };
+    if let Some(t) = &snap.target {
+        let budget = snap.samples as f64 / t.spp.max(1) as f64;
+        let clean = match (snap.relative_noise(), t.noise) {
+            (Some(n), Some(level)) if n > 0.0 => (level / n).powi(2),
+            _ => 0.0,
+        };
+        let ratio = if snap.done { 1.0 } else { budget.max(clean) };
+        return (
+            ratio.clamp(0.0, 1.0),
+            format!("{}/{} spp · target {}", snap.samples, t.spp, target_text(t)),
+        );
+    }
+    let (done, planned) = snap.progress;
     let ratio = if planned == 0 {
         0.0
     } else {
         (done as f64 / planned as f64).clamp(0.0, 1.0)
     };
+    (ratio, format!("{done}/{planned} passes"))
+}
+
+fn draw_gauge(app: &App, frame: &mut Frame, area: Rect) {
+    let (ratio, label) = gauge_state(app);
     let gauge = Gauge::default()
         .ratio(ratio)
-        .label(format!("{done}/{planned} passes"))
+        .label(label)
         .gauge_style(fg(app, Color::Green));
     frame.render_widget(gauge, area);
 }

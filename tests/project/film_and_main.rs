@@ -71,9 +71,12 @@ fn a_failed_write_leaves_no_file_behind() {
 }
 
 #[test]
-fn the_main_program_runs_headless_when_piped() {
+fn the_main_program_summarises_when_piped() {
     let dir = common::temp_dir("main");
+    // Few samples for the clean render: this is about the shape of the
+    // output, not the picture.
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_raystep"))
+        .args(["--spp", "2"])
         .current_dir(&dir)
         .env("CI", "true")
         .stdin(std::process::Stdio::null())
@@ -85,14 +88,69 @@ fn the_main_program_runs_headless_when_piped() {
         "stdout: {text}\nstderr: {}",
         String::from_utf8_lossy(&out.stderr)
     );
-    assert!(text.contains("== ch1 projection: cornell-box =="), "{text}");
-    assert!(text.contains("Stiff and extreme cases"), "{text}");
-    // Piped output gets the ASCII preview, never colour escapes.
+    // One line per chapter, then the clean chapter 6 render and its
+    // preview: short enough to read.
+    let lines: Vec<&str> = text.lines().collect();
+    assert!(lines.len() <= 100, "{} lines:\n{text}", lines.len());
+    for n in 1..=6 {
+        let line = lines
+            .iter()
+            .find(|l| l.starts_with(&format!("ch{n} ")))
+            .unwrap_or_else(|| panic!("no line for ch{n}:\n{text}"));
+        assert!(
+            line.contains(&format!("out/ch{n}-cornell-box.png")),
+            "{line}"
+        );
+    }
+    let ch6 = lines.iter().find(|l| l.starts_with("ch6 ")).unwrap();
+    assert!(ch6.contains("RMSE"), "chapter 6 has a reference: {ch6}");
+    assert!(
+        text.contains("ch6 clean: 2 spp, MIS + low-discrepancy"),
+        "{text}"
+    );
+    // The studies stay behind --report.
+    assert!(!text.contains("Stiff and extreme cases"), "{text}");
+    // Piped output gets the ASCII preview, never colour escapes, and no
+    // progress bar on a stderr that is not a terminal.
     assert!(!text.contains('\u{1b}'), "escape codes in piped output");
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let png = dir.join("out/ch1-cornell-box.png");
     let film = Film::read_png(&png).unwrap();
     assert_eq!((film.width, film.height), (256, 256));
-    assert!(dir.join("out/ch1-cornell-box.csv").exists());
+    let clean = Film::read_png(&dir.join("out/ch6-cornell-box-clean.png")).unwrap();
+    assert_eq!((clean.width, clean.height), (256, 256));
+}
+
+#[test]
+fn the_main_program_explains_its_flags() {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_raystep"))
+        .arg("--help")
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success());
+    for flag in [
+        "--chapter",
+        "--scene",
+        "--spp",
+        "--headless",
+        "--out",
+        "--report",
+    ] {
+        assert!(text.contains(flag), "--help lacks {flag}:\n{text}");
+    }
+    // A chapter that does not exist is refused with a clear message.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_raystep"))
+        .args(["--headless", "--chapter", "9"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("--chapter"), "{err}");
 }
 
 /// Every chapter binary's flags are clap's: `--help` lists them all,

@@ -251,22 +251,35 @@ fn bounce_stepping_shows_exactly_k_and_up_to_k_from_the_layers() {
     let app = update(app, Msg::ToggleBounceMode);
     assert_eq!(app.bounce_mode, BounceMode::Exactly);
     assert_eq!(pixel(&app), layer_color(1));
-    assert_eq!(
-        app.bounce_label(),
-        "exactly 1: one-bounce global illumination"
-    );
+    assert_eq!(app.bounce_label(), "exactly 1: bounce 1 alone");
     assert!(control_lines(&app)
         .iter()
-        .any(|l| l.to_string().contains("one-bounce")));
+        .any(|l| l.to_string().contains("bounces exactly 1")));
+    let app = update(app, Msg::ToggleBounceMode);
+    assert_eq!(
+        app.bounce_label(),
+        "up to 1: one-bounce global illumination"
+    );
+    let app = update(app, Msg::ToggleBounceMode);
 
     // Past the last layer "exactly" is black; stepping wraps through "all".
     let app = send(app, &vec![Msg::BounceUp; 3]);
     assert_eq!(app.bounce, Some(4));
     assert_eq!(pixel(&app), Vec3::ZERO);
-    assert!(app.bounce_label().contains("four-bounce"));
+    assert_eq!(app.bounce_label(), "exactly 4: bounce 4 alone");
     let app = send(app, &vec![Msg::BounceUp; 12]);
     assert_eq!(app.bounce, Some(16));
-    assert!(app.bounce_label().contains("sixteen-bounce"));
+    assert_eq!(app.bounce_label(), "exactly 16: bounce 16 alone");
+    // Up to k, the lecture's names: direct, one-bounce … sixteen-bounce.
+    for (k, name) in [
+        (0, "direct illumination"),
+        (2, "two-bounce global illumination"),
+        (4, "four-bounce global illumination"),
+        (8, "eight-bounce global illumination"),
+        (16, "sixteen-bounce global illumination"),
+    ] {
+        assert_eq!(raystep::tui::app::bounce_name(k), name);
+    }
     let app = update(app, Msg::BounceUp);
     assert_eq!(app.bounce, None);
     let app = update(app, Msg::BounceDown);
@@ -639,6 +652,7 @@ fn the_worker_discards_stale_passes() {
         scene: scene.clone(),
         settings: Settings::default(),
         variant: 0,
+        target: None,
     };
     worker.start(job(1));
     let first = worker

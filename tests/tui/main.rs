@@ -5,5 +5,6 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod converge;
 mod end_to_end;
 mod layout_and_keys;

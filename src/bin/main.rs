@@ -1,0 +1,173 @@
+//! `cargo run --release`: the front door.
+//!
+//! In a terminal (stdout is a TTY, and the default `tui` feature is on) this
+//! opens the terminal UI, on the chapter and scene the flags name. Piped,
+//! in CI, or with `--headless` it renders every chapter on the scene and
+//! prints one line per chapter, then chapter 6's Cornell box rendered clean
+//! with its preview ([`raystep::summary`]); `--report` prints every
+//! chapter's full report and studies instead, and `--chapter N` runs one
+//! chapter with its full report. `raystep --help` lists every flag.
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::Parser;
+
+use raystep::core::run::run_headless;
+use raystep::core::stage::Settings;
+use raystep::scene::Scene;
+use raystep::summary::{summarise, NoProgress, Progress, CLEAN_SPP};
+use raystep::{Error, Result};
+
+/// Rendering, step by step: the lecture's six chapters, from a pinhole
+/// camera to Monte Carlo global illumination.
+#[derive(Parser, Debug)]
+#[command(name = "raystep", version)]
+struct Cli {
+    /// Open (or, headless, run only) chapter N, 1 to 6.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=6))]
+    chapter: Option<u32>,
+    /// Scene file (TOML); the built-in Cornell box when omitted.
+    #[arg(long, value_name = "FILE")]
+    scene: Option<PathBuf>,
+    /// Samples per pixel: the budget of the terminal UI's progressive
+    /// render (default 1024), the clean chapter 6 render of the headless
+    /// summary (default 64), or every sampling chapter with --report or
+    /// --chapter.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    spp: Option<u32>,
+    /// Never open the terminal UI: render and print a summary.
+    #[arg(long)]
+    headless: bool,
+    /// Headless: every chapter's full report, with its error-against-time
+    /// and stability studies (slow), instead of the summary.
+    #[arg(long)]
+    report: bool,
+    /// Where images and CSV files go (and the UI's `s` saves).
+    #[arg(long, value_name = "DIR", default_value = "out")]
+    out: PathBuf,
+    /// The folder of scene files the UI lists.
+    #[arg(long, value_name = "DIR", default_value = "scenes")]
+    scenes: PathBuf,
+    /// Time the UI's start-up and redraws and print a table (needs the
+    /// `tui` feature).
+    #[arg(long)]
+    bench_ui: bool,
+}
+
+fn main() -> ExitCode {
+    #[cfg(feature = "tui")]
+    let started = std::time::Instant::now();
+    let cli = Cli::parse();
+    if cli.bench_ui {
+        #[cfg(feature = "tui")]
+        {
+            let mut stdout = std::io::stdout().lock();
+            return match raystep::tui::bench::run(started, &cli.scenes, &mut stdout) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("error: {e}");
+                    ExitCode::from(2)
+                }
+            };
+        }
+        #[cfg(not(feature = "tui"))]
+        {
+            eprintln!("error: --bench-ui needs the `tui` feature");
+            return ExitCode::from(2);
+        }
+    }
+    #[cfg(feature = "tui")]
+    if !cli.headless && !cli.report && raystep::tui::should_open() {
+        let launch = raystep::tui::Launch {
+            scenes_dir: cli.scenes.clone(),
+            out_dir: cli.out.clone(),
+            chapter: cli.chapter,
+            scene: cli.scene.clone(),
+            spp: cli.spp,
+        };
+        return match raystep::tui::run(&launch) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("error: terminal UI: {e}");
+                ExitCode::from(2)
+            }
+        };
+    }
+    match headless(&cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn headless(cli: &Cli) -> Result<()> {
+    let scene = match &cli.scene {
+        Some(path) => Scene::load(path)?,
+        None => Scene::builtin(),
+    };
+    let mut stdout = std::io::stdout().lock();
+    if cli.report || cli.chapter.is_some() {
+        let settings = Settings {
+            spp: cli.spp.unwrap_or(1),
+            studies: cli.report,
+            ..Settings::default()
+        };
+        for chapter in raystep::chapters::all() {
+            if cli.chapter.is_some_and(|n| n != chapter.number()) {
+                continue;
+            }
+            run_headless(chapter, scene.clone(), &settings, &cli.out, 64, &mut stdout)
+                .map_err(|e| Error::Usage(format!("ch{}: {e}", chapter.number())))?;
+        }
+        return Ok(());
+    }
+    summarise(
+        &scene,
+        &cli.out,
+        cli.spp.unwrap_or(CLEAN_SPP),
+        64,
+        &mut stdout,
+        &mut *progress_bar(),
+    )?;
+    Ok(())
+}
+
+/// A progress bar on stderr when stderr is a terminal (and the `tui`
+/// feature brings indicatif); nothing otherwise.
+fn progress_bar() -> Box<dyn Progress> {
+    #[cfg(feature = "tui")]
+    if std::io::IsTerminal::is_terminal(&std::io::stderr()) {
+        return Box::new(Bar(None));
+    }
+    Box::new(NoProgress)
+}
+
+#[cfg(feature = "tui")]
+struct Bar(Option<indicatif::ProgressBar>);
+
+#[cfg(feature = "tui")]
+impl Progress for Bar {
+    fn begin(&mut self, what: &str, total: u64) {
+        let bar = indicatif::ProgressBar::new(total);
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{msg} [{bar:40}] {pos}/{len} · {elapsed} · about {eta} left",
+        ) {
+            bar.set_style(style.progress_chars("=> "));
+        }
+        bar.set_message(what.to_string());
+        self.0 = Some(bar);
+    }
+    fn advance(&mut self, done: u64) {
+        if let Some(b) = &self.0 {
+            b.set_position(done);
+        }
+    }
+    fn end(&mut self) {
+        if let Some(b) = self.0.take() {
+            b.finish_and_clear();
+        }
+    }
+}

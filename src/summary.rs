@@ -1,0 +1,203 @@
+//! What `cargo run --release` prints without the terminal UI: one line per
+//! chapter (what it rendered, how long it took, its error against its
+//! reference where it has one, the image written), then chapter 6's Cornell
+//! box rendered clean with the best estimator, with its preview. The full
+//! reports and studies are behind `--report` and the chapter binaries.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::Instant;
+
+use crate::ch6_global_illumination::stage::DEFAULT as CH6;
+use crate::core::error::{Error, Result};
+use crate::core::format::{format_number, format_seconds};
+use crate::core::preview::{preview, PreviewStyle};
+use crate::core::run::run_headless;
+use crate::core::stage::{Chapter, Settings};
+use crate::scene::Scene;
+
+/// Samples per pixel of the clean chapter 6 render unless `--spp` says
+/// otherwise: on the 256x256 Cornell box an RMSE below two hundredths
+/// per pixel against the stored 16,384-spp reference, in seconds on 2 cores.
+pub const CLEAN_SPP: u32 = 32;
+
+/// Where long work reports how far it is (the main binary draws a
+/// progress bar on a terminal; the default does nothing).
+pub trait Progress {
+    /// Work of `total` steps called `what` begins.
+    fn begin(&mut self, what: &str, total: u64) {
+        let _ = (what, total);
+    }
+    /// `done` of the steps are done.
+    fn advance(&mut self, done: u64) {
+        let _ = done;
+    }
+    /// The work is over.
+    fn end(&mut self) {}
+}
+
+/// Reports nothing.
+pub struct NoProgress;
+
+impl Progress for NoProgress {}
+
+/// What the clean render came to.
+#[derive(Clone, Debug)]
+pub struct Clean {
+    /// Samples per pixel.
+    pub spp: u32,
+    /// Seconds of rendering.
+    pub seconds: f64,
+    /// RMSE against the stored reference, when there is one at this size.
+    pub rmse: Option<f64>,
+    /// The render's own noise estimate.
+    pub noise: Option<f64>,
+    /// The PNG and EXR written.
+    pub files: Vec<PathBuf>,
+    /// The image.
+    pub image: crate::core::film::Film,
+}
+
+fn io(e: std::io::Error) -> Error {
+    Error::io(Path::new("<stdout>"), e)
+}
+
+/// One line per chapter on `scene`, then the clean chapter 6 render of it
+/// (`clean_spp` samples per pixel), written to `w`; images into `out`.
+pub fn summarise(
+    scene: &Scene,
+    out: &Path,
+    clean_spp: u32,
+    preview_width: u32,
+    w: &mut dyn Write,
+    progress: &mut dyn Progress,
+) -> Result<Option<Clean>> {
+    let (width, height) = (scene.camera.width, scene.camera.height);
+    writeln!(
+        w,
+        "raystep: every chapter on {} ({width}x{height}); images in {}",
+        scene.name,
+        out.display()
+    )
+    .map_err(io)?;
+    for chapter in crate::chapters::all() {
+        writeln!(w, "{}", chapter_line(chapter, scene, out)?).map_err(io)?;
+    }
+    if CH6.unsupported(scene).is_some() {
+        return Ok(None);
+    }
+    let clean = clean_render(scene, out, clean_spp, progress)?;
+    let rmse = clean
+        .rmse
+        .map_or("no stored reference at this size".into(), |e| {
+            format!("RMSE {} against the stored reference", format_number(e))
+        });
+    writeln!(
+        w,
+        "\nch6 clean: {} spp, MIS + low-discrepancy (Sobol) numbers, 16 bounces, {}: {rmse}, noise estimate {}",
+        clean.spp,
+        format_seconds(clean.seconds),
+        clean.noise.map_or("-".into(), format_number),
+    )
+    .map_err(io)?;
+    write!(
+        w,
+        "{}",
+        preview(&clean.image, preview_width, PreviewStyle::for_stdout())
+    )
+    .map_err(io)?;
+    writeln!(
+        w,
+        "wrote: {}\nfull reports and studies: --report (or cargo run --release --bin chN); the terminal UI: run in a terminal",
+        clean
+            .files
+            .iter()
+            .map(|f| f.display().to_string())
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+    .map_err(io)?;
+    Ok(Some(clean))
+}
+
+/// "ch3 ray-triangle: image, normal, … · 34.1 ms · no reference · out/…png".
+fn chapter_line(chapter: &dyn Chapter, scene: &Scene, out: &Path) -> Result<String> {
+    let name = format!("ch{} {}", chapter.number(), chapter.slug());
+    if let Some(why) = chapter.unsupported(scene) {
+        return Ok(format!("{name}: skipped: {why}"));
+    }
+    let settings = Settings::default();
+    let summary = run_headless(
+        chapter,
+        scene.clone(),
+        &settings,
+        out,
+        16,
+        &mut std::io::sink(),
+    )?;
+    let views = chapter.views();
+    let what = match views.len() {
+        0 | 1 => views.first().map_or("image", |v| v.name).to_string(),
+        n => format!("{} + {} views", views[0].name, n - 1),
+    };
+    let error = match summary.rmse {
+        Some(e) => format!("RMSE {} vs reference", format_number(e)),
+        None => "no reference".into(),
+    };
+    let sampled = if chapter.progressive() {
+        format!(", {} spp", settings.spp)
+    } else {
+        String::new()
+    };
+    Ok(format!(
+        "{name:<24} {:<26} {:>9}  {error:<26} {}",
+        format!("{what}{sampled}"),
+        format_seconds(summary.seconds),
+        summary
+            .files
+            .first()
+            .map(|f| f.display().to_string())
+            .unwrap_or_default(),
+    ))
+}
+
+/// Chapter 6 with its defaults (MIS, Sobol, 16 bounces) to `spp` samples
+/// per pixel; writes `ch6-<scene>-clean.png` and `.exr`.
+pub fn clean_render(
+    scene: &Scene,
+    out: &Path,
+    spp: u32,
+    progress: &mut dyn Progress,
+) -> Result<Clean> {
+    let mut stage = CH6;
+    stage.layers = false;
+    let settings = Settings {
+        spp: spp.max(1),
+        ..Settings::default()
+    };
+    let t = Instant::now();
+    let mut render = stage.start(Arc::new(scene.clone()), &settings)?;
+    progress.begin("ch6 clean render (spp)", settings.spp as u64);
+    while !render.pass() {
+        progress.advance(render.samples() as u64);
+    }
+    progress.end();
+    let seconds = t.elapsed().as_secs_f64();
+    let image = render.view(0);
+    let stem = format!("ch6-{}-clean", scene.name);
+    let files = vec![
+        out.join(format!("{stem}.png")),
+        out.join(format!("{stem}.exr")),
+    ];
+    image.write_png(&files[0])?;
+    image.write_exr(&files[1])?;
+    Ok(Clean {
+        spp: render.samples(),
+        seconds,
+        rmse: render.error_series().last().map(|p| p.1),
+        noise: render.noise(),
+        files,
+        image,
+    })
+}

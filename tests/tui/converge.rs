@@ -1,0 +1,381 @@
+//! Rendering to convergence: the pure stopping rule, the keys that pause
+//! and move the target, and the real worker going on pass after pass until
+//! the noise target or the budget stops it, then going on again when the
+//! target moves, without starting over.
+
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use glam::Vec3;
+
+use raystep::core::error::Result;
+use raystep::core::film::Film;
+use raystep::core::report::Report;
+use raystep::core::stage::{Chapter, Render, Settings, View};
+use raystep::scene::Scene;
+use raystep::tui::app::{App, Msg};
+use raystep::tui::keys::msg_for_key;
+use raystep::tui::scenes::SceneEntry;
+use raystep::tui::update::update;
+use raystep::tui::worker::{
+    finished, Finish, Job, Progress, Snapshot, Target, Worker, MIN_SPP_FOR_NOISE,
+};
+
+/// A progressive stage whose noise is exactly 1/√spp of a flat image of
+/// value 1: the sample variance of a unit-variance estimator.
+struct Noisy;
+
+static NOISY: Noisy = Noisy;
+
+const VARIANTS: &[View] = &[
+    View {
+        name: "uniform",
+        about: "uniform sampling",
+    },
+    View {
+        name: "best",
+        about: "the best",
+    },
+];
+
+impl Chapter for Noisy {
+    fn number(&self) -> u32 {
+        6
+    }
+    fn slug(&self) -> &'static str {
+        "noisy"
+    }
+    fn title(&self) -> &'static str {
+        "A progressive fake"
+    }
+    fn views(&self) -> &'static [View] {
+        &[View {
+            name: "image",
+            about: "",
+        }]
+    }
+    fn variants(&self) -> &'static [View] {
+        VARIANTS
+    }
+    fn default_variant(&self) -> usize {
+        1
+    }
+    fn progressive(&self) -> bool {
+        true
+    }
+    fn start(&self, _: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
+        Ok(Box::new(NoisyRender {
+            samples: 0,
+            spp: settings.spp,
+            passes: 0,
+        }))
+    }
+}
+
+struct NoisyRender {
+    samples: u32,
+    spp: u32,
+    passes: u32,
+}
+
+impl Render for NoisyRender {
+    fn pass(&mut self) -> bool {
+        if self.samples < self.spp {
+            std::thread::sleep(Duration::from_millis(10));
+            self.samples += 1.min(self.spp - self.samples);
+            self.passes += 1;
+        }
+        self.samples >= self.spp
+    }
+    fn progress(&self) -> (u32, u32) {
+        (self.passes, self.spp)
+    }
+    fn view(&self, _: usize) -> Film {
+        let mut f = Film::new(4, 2);
+        f.pixels.iter_mut().for_each(|p| *p = Vec3::ONE);
+        f
+    }
+    fn report(&self) -> Report {
+        Report::default()
+    }
+    fn samples(&self) -> u32 {
+        self.samples
+    }
+    fn noise(&self) -> Option<f64> {
+        (self.samples >= 2).then(|| 1.0 / (self.samples as f64).sqrt())
+    }
+    fn set_spp(&mut self, spp: u32) {
+        self.spp = spp;
+    }
+}
+
+fn job(generation: u64, target: Target) -> Job {
+    Job {
+        generation,
+        chapter: &NOISY,
+        scene: Arc::new(Scene::builtin()),
+        settings: Settings::default(),
+        variant: 1,
+        target: Some(target),
+    }
+}
+
+/// Every snapshot of `generation` until one is done.
+fn until_done(worker: &Worker, generation: u64) -> Vec<Snapshot> {
+    let mut seen = Vec::new();
+    loop {
+        match worker.results.recv_timeout(Duration::from_secs(30)) {
+            Ok(Progress::Snapshot(s)) if s.generation == generation => {
+                let done = s.done;
+                seen.push(*s);
+                if done {
+                    return seen;
+                }
+            }
+            Ok(Progress::Snapshot(_)) => {}
+            Ok(Progress::Failed { message, .. }) => panic!("{message}"),
+            Err(e) => panic!("no snapshot: {e}"),
+        }
+    }
+}
+
+#[test]
+fn the_stopping_rule_takes_the_nearer_of_noise_and_budget() {
+    let t = Target {
+        spp: 256,
+        noise: Some(0.1),
+    };
+    // Noise 1/√spp of a mean of 1: clean at 100 spp, before the budget.
+    let noise = |spp: u32| Some(1.0 / (spp as f64).sqrt());
+    assert_eq!(finished(&t, 64, noise(64), 1.0), None);
+    assert_eq!(finished(&t, 100, noise(100), 1.0), Some(Finish::Clean));
+    assert_eq!(finished(&t, 256, noise(256), 1.0), Some(Finish::Budget));
+    // Relative to the image: twice as bright, clean sooner.
+    assert_eq!(finished(&t, 64, noise(64), 2.0), Some(Finish::Clean));
+    // A noise estimate from too few samples is not trusted.
+    assert_eq!(
+        finished(&t, MIN_SPP_FOR_NOISE - 1, Some(0.0), 1.0),
+        None,
+        "too few samples"
+    );
+    // Without a noise level (or a noise estimate) only the budget stops.
+    let budget_only = Target {
+        spp: 8,
+        noise: None,
+    };
+    assert_eq!(finished(&budget_only, 7, Some(0.0), 1.0), None);
+    assert_eq!(finished(&budget_only, 8, None, 1.0), Some(Finish::Budget));
+    assert_eq!(finished(&t, 64, None, 1.0), None);
+}
+
+#[test]
+fn doubling_the_target_doubles_the_budget_and_lowers_the_noise_level_by_root_two() {
+    let t = Target::DEFAULT.doubled();
+    assert_eq!(t.spp, 2 * Target::DEFAULT.spp);
+    let (a, b) = (t.noise.unwrap(), Target::DEFAULT.noise.unwrap());
+    assert!((a * std::f64::consts::SQRT_2 - b).abs() < 1e-12);
+    assert_eq!(t.halved(), Target::DEFAULT);
+    let one = Target {
+        spp: 1,
+        noise: None,
+    };
+    assert_eq!(one.halved(), one, "never below one sample");
+}
+
+#[test]
+fn the_worker_goes_on_until_the_noise_target_then_further_when_it_moves() {
+    let worker = Worker::spawn();
+    // 1/√spp ≤ 0.25 at 16 spp, long before the budget.
+    let target = Target {
+        spp: 1024,
+        noise: Some(0.25),
+    };
+    worker.start(job(1, target));
+    let seen = until_done(&worker, 1);
+    let last = seen.last().unwrap();
+    assert_eq!(last.samples, 16, "stops as soon as it is clean");
+    assert_eq!(last.finish, Some(Finish::Clean));
+    assert_eq!(last.target, Some(target));
+    // Samples grow and the noise estimate falls, snapshot after snapshot.
+    assert!(seen.windows(2).all(|w| w[0].samples < w[1].samples));
+    let mut noise: Vec<f64> = seen.iter().filter_map(|s| s.noise).collect();
+
+    // A lower level: the same render goes on (the samples keep counting up
+    // from 16, they do not start over).
+    let lower = Target {
+        spp: 1024,
+        noise: Some(0.125),
+    };
+    worker.retarget(1, lower);
+    let more = until_done(&worker, 1);
+    assert!(more.iter().all(|s| s.samples >= 16), "started over");
+    noise.extend(more.iter().filter_map(|s| s.noise));
+    assert!(noise.len() >= 3, "{noise:?}");
+    assert!(noise.windows(2).all(|w| w[1] <= w[0]), "{noise:?}");
+    assert!(noise.last().unwrap() < &noise[0]);
+    let last = more.last().unwrap();
+    assert_eq!(last.samples, 64);
+    assert_eq!(last.finish, Some(Finish::Clean));
+
+    // A budget below what is done stops at once, nothing added.
+    worker.retarget(
+        1,
+        Target {
+            spp: 32,
+            noise: None,
+        },
+    );
+    let stopped = until_done(&worker, 1);
+    assert_eq!(stopped.last().unwrap().samples, 64);
+    assert_eq!(stopped.last().unwrap().finish, Some(Finish::Budget));
+    // A retarget for an old generation is ignored.
+    worker.retarget(0, Target::DEFAULT);
+    assert!(worker
+        .results
+        .recv_timeout(Duration::from_millis(200))
+        .is_err());
+    worker.stop();
+}
+
+#[test]
+fn a_paused_render_sends_nothing_until_resumed() {
+    let worker = Worker::spawn();
+    let budget = Target {
+        spp: 100,
+        noise: None,
+    };
+    let wall = Instant::now();
+    worker.start(job(3, budget));
+    // The first pass is shown, then pause.
+    let first = worker
+        .results
+        .recv_timeout(Duration::from_secs(10))
+        .unwrap();
+    assert_eq!(first.generation(), 3);
+    worker.pause(3, true);
+    // Drain what was under way; the pause snapshot comes last.
+    let mut at_pause = 0;
+    while let Ok(Progress::Snapshot(s)) = worker.results.recv_timeout(Duration::from_millis(300)) {
+        at_pause = s.samples;
+    }
+    assert!(at_pause < 100, "paused before the end");
+    // Paused: nothing more arrives.
+    assert!(worker
+        .results
+        .recv_timeout(Duration::from_millis(300))
+        .is_err());
+    worker.pause(3, false);
+    let rest = until_done(&worker, 3);
+    let last = rest.last().unwrap();
+    assert_eq!(last.samples, 100);
+    assert!(rest.iter().all(|s| s.samples >= at_pause));
+    // The 600 ms and more of waiting above are not rendering time.
+    assert!(
+        last.elapsed + Duration::from_millis(500) < wall.elapsed(),
+        "{:?} of {:?}",
+        last.elapsed,
+        wall.elapsed()
+    );
+    worker.stop();
+}
+
+fn app() -> App {
+    App::new(vec![&NOISY], vec![SceneEntry::builtin()], false)
+}
+
+fn snapshot(app: &App, samples: u32, done: bool) -> Msg {
+    let render = NoisyRender {
+        samples,
+        spp: app.target.spp,
+        passes: samples,
+    };
+    let mut snap = Snapshot::capture(&NOISY, &render, app.generation, Duration::ZERO, done);
+    snap.target = Some(app.target);
+    Msg::Progress(Progress::Snapshot(Box::new(snap)))
+}
+
+#[test]
+fn a_progressive_chapter_opens_on_its_best_variant_and_asks_for_its_target() {
+    let app = app();
+    assert_eq!(app.variant, 1, "the chapter's default variant");
+    let job = app.job().unwrap();
+    assert_eq!(job.target, Some(Target::DEFAULT));
+    // The ladder is one key away in both directions, labelled.
+    let app = update(app, Msg::NextVariant);
+    assert_eq!(app.variant, 0);
+    assert!(
+        app.message.contains("step 1/2: uniform sampling"),
+        "{}",
+        app.message
+    );
+    let app = update(app, Msg::PrevVariant);
+    assert_eq!(app.variant, 1);
+    assert!(
+        app.message.contains("step 2/2: the best"),
+        "{}",
+        app.message
+    );
+}
+
+#[test]
+fn space_pauses_and_resumes_and_a_restart_unpauses() {
+    let app = app();
+    let app = update(app, Msg::TogglePause);
+    assert!(!app.paused, "nothing to pause before the first picture");
+    let mut app = update(app, Msg::ToggleHelp);
+    app = update(app, Msg::ToggleHelp);
+    let msg = snapshot(&app, 4, false);
+    let app = update(app, msg);
+    let app = update(app, Msg::TogglePause);
+    assert!(app.paused);
+    assert!(app.message.contains("paused"));
+    let app = update(app, Msg::TogglePause);
+    assert!(!app.paused);
+    let app = update(app, Msg::TogglePause);
+    let generation = app.generation;
+    // Changing the estimator starts over, running.
+    let app = update(app, Msg::NextVariant);
+    assert_eq!(app.generation, generation + 1);
+    assert!(!app.paused);
+    // A finished render cannot be paused; the message says how to go on.
+    let msg = snapshot(&app, 16, true);
+    let app = update(app, msg);
+    let app = update(app, Msg::TogglePause);
+    assert!(!app.paused);
+    assert!(app.message.contains("raises the target"), "{}", app.message);
+}
+
+#[test]
+fn target_keys_move_the_target_without_restarting() {
+    let app = app();
+    let generation = app.generation;
+    let app = update(app, Msg::TargetUp);
+    assert_eq!(app.target, Target::DEFAULT.doubled());
+    assert!(app.message.contains("2048 spp"), "{}", app.message);
+    let app = update(app, Msg::TargetDown);
+    let app = update(app, Msg::TargetDown);
+    assert_eq!(app.target, Target::DEFAULT.halved());
+    assert_eq!(app.generation, generation, "the render goes on");
+    assert_eq!(app.job().unwrap().target, Some(Target::DEFAULT.halved()));
+}
+
+#[test]
+fn the_new_keys_map_to_their_messages() {
+    let app = app();
+    let key = |c| KeyEvent::new(KeyCode::Char(c), KeyModifiers::NONE);
+    assert!(matches!(
+        msg_for_key(&app, key(' ')),
+        Some(Msg::TogglePause)
+    ));
+    assert!(matches!(msg_for_key(&app, key('>')), Some(Msg::TargetUp)));
+    assert!(matches!(msg_for_key(&app, key('<')), Some(Msg::TargetDown)));
+    assert!(matches!(
+        msg_for_key(&app, key('E')),
+        Some(Msg::PrevVariant)
+    ));
+    assert!(matches!(
+        msg_for_key(&app, key('e')),
+        Some(Msg::NextVariant)
+    ));
+}
