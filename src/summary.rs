@@ -139,6 +139,7 @@ fn chapter_line(chapter: &dyn Chapter, scene: &Scene, out: &Path) -> Result<Stri
     let views = chapter.views();
     let what = match views.len() {
         0 | 1 => views.first().map_or("image", |v| v.name).to_string(),
+        2 => format!("{} + 1 view", views[0].name),
         n => format!("{} + {} views", views[0].name, n - 1),
     };
     let error = match summary.rmse {

@@ -18,8 +18,10 @@
 pub mod app;
 pub mod bench;
 pub mod keys;
+pub mod layers;
 pub mod picture;
 pub mod scenes;
+pub mod target;
 pub mod update;
 pub mod view;
 pub mod worker;

@@ -24,7 +24,6 @@ use ratatui::Frame;
 use super::app::{expose, App, Focus};
 use super::keys::KEYS;
 use super::picture::{fit, Picture};
-use super::update::target_text;
 use super::worker::Finish;
 use crate::core::film::Film;
 use crate::core::format::{format_number, format_seconds};
@@ -224,9 +223,6 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
         (Some(g), _) => format!("grade · {} · {}", g.stem, app.compare_name()),
         (None, Some(c)) => {
             let mut t = format!("ch{} {} · {}", c.number(), c.slug(), app.view_name());
-            if let Some(v) = c.variants().get(app.variant) {
-                t += &format!(" · {}", v.name);
-            }
             if app.view == 0 && app.shows_bounces() && app.bounce.is_some() {
                 t += &format!(" · {}", app.bounce_label());
                 if let Some(share) = app.bounce_share() {
@@ -287,6 +283,15 @@ fn draw_film(app: &App, frame: &mut Frame, film: &Film, area: Rect) {
     );
 }
 
+/// Three significant digits: 0.012345 → "0.0123".
+pub fn short_number(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format_number(x);
+    }
+    let digits = (2 - x.abs().log10().floor() as i32).clamp(0, 8) as usize;
+    format!("{x:.digits$}")
+}
+
 /// A rate in the status line: 1234567 → "1.23M".
 pub fn format_rate(rate: f64) -> String {
     let (value, unit) = if rate >= 1e9 {
@@ -317,7 +322,11 @@ pub fn status_line(app: &App) -> Line<'static> {
         parts.push(format!("ch{} {}", c.number(), c.slug()));
     }
     if let Some(s) = app.current_scene() {
-        parts.push(s.name.clone());
+        // The scene's own name ("(built-in)" is in the scene list).
+        parts.push(match &s.scene {
+            Ok(scene) => scene.name.clone(),
+            Err(_) => s.name.clone(),
+        });
     }
     parts.push(app.view_name().to_string());
     if let Some(g) = &app.grading {
@@ -338,25 +347,10 @@ pub fn status_line(app: &App) -> Line<'static> {
             parts.push(format!("{} rays/s", format_rate(rate)));
         }
         if let Some(n) = snap.noise {
-            match snap.relative_noise() {
-                Some(r) => parts.push(format!("noise {} ({:.1}%)", format_number(n), 100.0 * r)),
-                None => parts.push(format!("noise {}", format_number(n))),
-            }
+            parts.push(format!("noise {}", short_number(n)));
         }
         if let Some(e) = snap.rmse {
-            parts.push(format!("rmse {}", format_number(e)));
-        }
-        if snap.target.is_some() {
-            parts.push(
-                match (app.paused && !snap.done, snap.finish) {
-                    (true, _) => "paused",
-                    (_, Some(Finish::Clean)) => "clean",
-                    (_, Some(Finish::Budget)) => "budget spent",
-                    (_, Some(Finish::Complete)) => "done",
-                    (_, None) => "rendering",
-                }
-                .into(),
-            );
+            parts.push(format!("rmse {}", short_number(e)));
         }
     } else if app.failure.is_some() {
         parts.push("failed".into());
@@ -381,9 +375,25 @@ pub fn gauge_state(app: &App) -> (f64, String) {
             _ => 0.0,
         };
         let ratio = if snap.done { 1.0 } else { budget.max(clean) };
+        let state = match (app.paused && !snap.done, snap.finish) {
+            (true, _) => "paused",
+            (_, Some(Finish::Clean)) => "clean",
+            (_, Some(Finish::Budget)) => "budget spent",
+            (_, Some(Finish::Complete)) => "done",
+            (_, None) => "rendering",
+        };
+        let noise = match (snap.relative_noise(), t.noise) {
+            (Some(n), Some(level)) => format!(
+                " · noise {:.1}% of the mean, target {:.1}%",
+                100.0 * n,
+                100.0 * level
+            ),
+            (Some(n), None) => format!(" · noise {:.1}% of the mean", 100.0 * n),
+            _ => String::new(),
+        };
         return (
             ratio.clamp(0.0, 1.0),
-            format!("{}/{} spp · target {}", snap.samples, t.spp, target_text(t)),
+            format!("{}/{} spp{noise} · {state}", snap.samples, t.spp),
         );
     }
     let (done, planned) = snap.progress;

@@ -241,3 +241,59 @@ fn an_error_restores_the_terminal_before_printing() {
         s.contains("typed-42")
     });
 }
+
+/// The numbers after `spp ` and `rmse ` in the status line, if shown.
+fn spp_and_rmse(screen: &str) -> Option<(u32, f64)> {
+    let line = screen.lines().find(|l| l.starts_with("ch6 "))?;
+    let field = |key: &str| {
+        line.split(" │ ")
+            .find_map(|f| f.strip_prefix(key))
+            .map(str::to_string)
+    };
+    let spp = field("spp ")?.split('/').next()?.parse().ok()?;
+    let rmse = field("rmse ")?.parse().ok()?;
+    Some((spp, rmse))
+}
+
+#[test]
+fn chapter_6_converges_in_a_real_terminal() {
+    let Some((tmux, dir)) = shell("tui-e2e-converge") else {
+        return;
+    };
+    // Wide enough for the whole status line.
+    tmux.run(&["resize-window", "-t", "t", "-x", "170", "-y", "40"]);
+    let command = format!(
+        "{} --chapter 6 --spp 64 --scenes {} --out {}; echo \"EXIT=$?\"",
+        env!("CARGO_BIN_EXE_raystep"),
+        dir.display(),
+        dir.join("out").display()
+    );
+    tmux.keys(&command);
+    tmux.key("Enter");
+    // It opens on chapter 6 with the best estimator, and the first
+    // preview comes with its sample count and error.
+    let first = tmux.wait("chapter 6's first preview", 60, |_, s| {
+        spp_and_rmse(s).is_some()
+    });
+    assert!(first.contains("mis-sobol"), "{first}");
+    let (spp0, rmse0) = spp_and_rmse(&first).unwrap();
+    // It keeps going: more samples, and the error falls below what one
+    // or two samples per pixel give (about 0.2 and 0.12).
+    let later = tmux.wait("spp to grow and the RMSE to fall", 180, |_, s| {
+        spp_and_rmse(s).is_some_and(|(spp, rmse)| spp > spp0 && rmse < 0.06)
+    });
+    let (spp1, rmse1) = spp_and_rmse(&later).unwrap();
+    assert!(
+        spp1 > spp0 && rmse1 < rmse0,
+        "{spp0} {rmse0} → {spp1} {rmse1}"
+    );
+    // Space pauses; the status says so.
+    tmux.keys(" ");
+    tmux.wait("paused or finished", 20, |_, s| {
+        s.contains("· paused") || s.contains("finished: > raises the target")
+    });
+    tmux.keys("q");
+    tmux.wait("the shell after quitting", 20, |t, s| {
+        s.contains("EXIT=0") && t.flag("alternate_on") == "0"
+    });
+}
