@@ -367,7 +367,9 @@ fn the_stage_boundary_gives_layers_that_sum_to_the_image_and_an_error_series() {
     while !render.pass() {
         passes += 1;
     }
-    assert_eq!(passes, 0, "2 spp is one pass of 4");
+    assert_eq!(passes, 1, "2 spp: the first passes take 1 and 1 spp");
+    assert_eq!(render.samples(), 2);
+    assert_eq!(render.progress(), (2, 2));
     let layers = render.layers().unwrap();
     assert_eq!(layers.len(), LAYER_SLOTS - 1);
     let image = render.view(0);
@@ -375,11 +377,33 @@ fn the_stage_boundary_gives_layers_that_sum_to_the_image_and_an_error_series() {
     let sum: Vec3 = layers.iter().map(|l| l.pixels[i]).sum();
     assert!((sum - image.pixels[i]).abs().max_element() < 1e-4);
     let series = render.error_series();
-    assert_eq!(series.len(), 1);
+    assert_eq!(series.len(), 2, "one point per pass");
     assert!(series[0].1 > 0.0 && series[0].1 < 1.0, "{series:?}");
     assert_eq!(render.reference().unwrap().width, image.width);
     // Downsampling keeps the mean.
     let d = downsample(&image, 2);
     let m = |f: &raystep::core::film::Film| f.pixels.iter().sum::<Vec3>() / f.pixels.len() as f32;
     assert!((m(&d) - m(&image)).abs().max_element() < 1e-4);
+}
+
+#[test]
+fn the_image_does_not_depend_on_how_samples_are_split_into_passes() {
+    let scene = Arc::new(Scene::builtin().with_resolution(16, 16).unwrap());
+    let settings = Settings {
+        spp: 8,
+        ..Settings::default()
+    };
+    let image = |per_pass: u32| {
+        let mut stage = DEFAULT;
+        stage.spp_per_pass = per_pass;
+        let mut r = stage.start(scene.clone(), &settings).unwrap();
+        while !r.pass() {}
+        assert_eq!(r.samples(), 8);
+        r.view(0)
+    };
+    let (a, b) = (image(4), image(1));
+    assert_eq!(
+        a.pixels, b.pixels,
+        "same bytes for passes of 1, 1, 2, 4 and of 1 each"
+    );
 }
