@@ -144,7 +144,11 @@ pub fn stem(name: &str, width: u32, height: u32) -> String {
 /// whole multiple of its size (same aspect, both sides divisible); `None`
 /// otherwise, and then the render and the reference cannot be compared.
 pub fn scale_factor(width: u32, height: u32, ref_width: u32, ref_height: u32) -> Option<u32> {
-    if ref_width == 0 || ref_height == 0 || width % ref_width != 0 || height % ref_height != 0 {
+    if ref_width == 0
+        || ref_height == 0
+        || !width.is_multiple_of(ref_width)
+        || !height.is_multiple_of(ref_height)
+    {
         return None;
     }
     let factor = width / ref_width;
