@@ -359,7 +359,10 @@ impl Render for PathTracingRender {
 
     fn reference(&self) -> Option<Film> {
         let (r, factor) = self.reference.as_ref()?;
-        Some(upsample(&r.mean, *factor))
+        Some(match factor {
+            1 => r.mean.clone(),
+            f => upsample(&r.mean, *f),
+        })
     }
 
     fn error_series(&self) -> Vec<(f64, f64)> {

@@ -376,9 +376,13 @@ fn work(commands: Receiver<Command>, results: Sender<Progress>) {
         let pass = catch_unwind(AssertUnwindSafe(|| {
             let mut done = cur.render.pass();
             if let (false, Some(target)) = (done, &cur.job.target) {
-                let noise = cur.render.noise();
+                // The noise costs a pass over the image: only once trusted.
+                let samples = cur.render.samples();
+                let noise = (samples >= MIN_SPP_FOR_NOISE && target.noise.is_some())
+                    .then(|| cur.render.noise())
+                    .flatten();
                 let mean = noise.map_or(0.0, |_| film_mean(&cur.render.view(0)));
-                done = finished(target, cur.render.samples(), noise, mean).is_some();
+                done = finished(target, samples, noise, mean).is_some();
             }
             done
         }));

@@ -379,3 +379,37 @@ fn the_new_keys_map_to_their_messages() {
         Some(Msg::NextVariant)
     ));
 }
+
+#[test]
+fn the_flags_choose_the_chapter_the_scene_and_the_budget() {
+    use raystep::tui::{launch_app, Launch};
+    let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let launch = Launch {
+        scenes_dir: root.join("scenes"),
+        out_dir: "out".into(),
+        chapter: Some(6),
+        scene: Some(root.join("scenes/cornell-glass.toml")),
+        spp: Some(64),
+    };
+    let app = launch_app(&launch, false);
+    let chapter = app.current_chapter().unwrap();
+    assert_eq!(chapter.number(), 6);
+    assert_eq!(app.variant, chapter.default_variant());
+    assert_eq!(
+        chapter.variants()[app.variant].name,
+        "mis-sobol",
+        "chapter 6 opens on its best estimator"
+    );
+    assert_eq!(app.current_scene().unwrap().name, "cornell-glass");
+    let job = app.job().expect("chapter 6 renders the glass box");
+    assert_eq!(job.target.map(|t| t.spp), Some(64));
+    // A scene outside the listed folder is added to the list and opened.
+    let elsewhere = Launch {
+        scenes_dir: root.join("no-such-folder"),
+        scene: Some(root.join("scenes/tetrahedron.toml")),
+        ..launch
+    };
+    let app = launch_app(&elsewhere, false);
+    assert_eq!(app.scenes.len(), 2, "the built-in scene and the file");
+    assert_eq!(app.current_scene().unwrap().name, "tetrahedron");
+}
