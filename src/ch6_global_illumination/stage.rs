@@ -341,18 +341,24 @@ impl Render for PathTracingRender {
     fn layers(&self) -> Option<Vec<Film>> {
         // The trait's convention: layers[0] is direct illumination with
         // the emitters seen directly included, layers[k] bounce k; the
-        // last holds everything beyond.
-        let e = self.acc.layer(0)?;
-        let mut out = Vec::with_capacity(LAYER_SLOTS - 1);
-        for slot in 1..LAYER_SLOTS {
-            let mut f = self.acc.layer(slot)?;
-            if slot == 1 {
-                for (p, q) in f.pixels.iter_mut().zip(&e.pixels) {
-                    *p += *q;
+        // last holds everything beyond. One sweep over the sums (they are
+        // stored per pixel, all slots together), as `acc.layer(slot)`
+        // for every slot would read them all once per slot.
+        let sums = self.acc.layers.as_ref()?;
+        let inv = 1.0 / self.acc.samples.max(1) as f32;
+        let (w, h) = (self.acc.width, self.acc.height);
+        let mut out: Vec<Film> = (1..LAYER_SLOTS).map(|_| Film::new(w, h)).collect();
+        for (i, l) in sums.iter().enumerate() {
+            for slot in 1..LAYER_SLOTS {
+                let mut v = l[slot] * inv;
+                if slot == 1 {
+                    v += l[0] * inv;
                 }
+                out[slot - 1].pixels[i] = v;
             }
+        }
+        for f in &mut out {
             f.scrub_nonfinite();
-            out.push(f);
         }
         Some(out)
     }
