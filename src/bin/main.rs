@@ -49,6 +49,10 @@ struct Cli {
     /// The folder of scene files the UI lists.
     #[arg(long, value_name = "DIR", default_value = "scenes")]
     scenes: PathBuf,
+    /// Draw the UI's preview with coloured half blocks even where the
+    /// terminal shows full-resolution pictures (kitty, iTerm2, sixel).
+    #[arg(long)]
+    halfblocks: bool,
     /// Time the UI's start-up and redraws and print a table (needs the
     /// `tui` feature).
     #[arg(long)]
@@ -85,6 +89,7 @@ fn main() -> ExitCode {
             chapter: cli.chapter,
             scene: cli.scene.clone(),
             spp: cli.spp,
+            halfblocks: cli.halfblocks,
         };
         return match raystep::tui::run(&launch) {
             Ok(()) => ExitCode::SUCCESS,

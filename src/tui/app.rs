@@ -111,6 +111,10 @@ pub struct App {
     pub target: Target,
     /// Whether the progressive render is paused (passed on likewise).
     pub paused: bool,
+    /// How the preview is drawn ([`super::graphics::detect`]).
+    pub graphics: super::graphics::Graphics,
+    /// The picker for a graphics protocol; `None` draws half blocks.
+    pub picker: Option<ratatui_image::picker::Picker>,
 }
 
 /// Everything that can happen to the UI.
@@ -200,6 +204,8 @@ impl App {
             grade_requested: false,
             target: Target::DEFAULT,
             paused: false,
+            graphics: super::graphics::Graphics::HalfBlocks,
+            picker: None,
         }
     }
 

@@ -17,6 +17,7 @@
 
 pub mod app;
 pub mod bench;
+pub mod graphics;
 pub mod keys;
 pub mod layers;
 pub mod picture;
@@ -118,6 +119,9 @@ pub struct Launch {
     pub scene: Option<PathBuf>,
     /// The sample budget of progressive chapters.
     pub spp: Option<u32>,
+    /// Draw the preview with half blocks even where the terminal has a
+    /// graphics protocol.
+    pub halfblocks: bool,
 }
 
 /// The UI's first state for `launch`: its chapter, scene and budget
@@ -151,7 +155,15 @@ pub fn launch_app(launch: &Launch, color: bool) -> App {
 /// Runs the UI until the user quits.
 pub fn run(launch: &Launch) -> std::io::Result<()> {
     install_panic_hook();
-    let app = launch_app(launch, color_allowed());
+    let mut app = launch_app(launch, color_allowed());
+    if !launch.halfblocks {
+        let font = graphics::font_size();
+        app.graphics = graphics::detect(&|k| std::env::var(k).ok(), font);
+        app.picker = font.and_then(|f| graphics::picker(app.graphics, f));
+        if app.picker.is_none() {
+            app.graphics = graphics::Graphics::HalfBlocks;
+        }
+    }
     enable_raw_mode()?;
     let _restore = Restore;
     execute!(

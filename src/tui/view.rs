@@ -223,6 +223,9 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
         (Some(g), _) => format!("grade · {} · {}", g.stem, app.compare_name()),
         (None, Some(c)) => {
             let mut t = format!("ch{} {} · {}", c.number(), c.slug(), app.view_name());
+            if app.picker.is_some() {
+                t += &format!(" · {}", app.graphics.name());
+            }
             if app.view == 0 && app.shows_bounces() && app.bounce.is_some() {
                 t += &format!(" · {}", app.bounce_label());
                 if let Some(share) = app.bounce_share() {
@@ -266,6 +269,23 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
 /// and allocates only the small one. (Exposure is a power of two, so for
 /// ordinary values the order changes no bit.)
 fn draw_film(app: &App, frame: &mut Frame, film: &Film, area: Rect) {
+    if let (Some(picker), true) = (&app.picker, app.color) {
+        // Every pixel, through the terminal's graphics protocol, as large
+        // as fits (never enlarged).
+        let exposed = expose(film, app.exposure);
+        let bytes: Vec<u8> = exposed
+            .pixels
+            .iter()
+            .flat_map(|p| p.to_array().map(crate::core::film::encode_srgb))
+            .collect();
+        if let Some(img) = image::RgbImage::from_raw(film.width, film.height, bytes) {
+            let resize = ratatui_image::Resize::Fit(None);
+            if let Ok(protocol) = picker.new_protocol(img.into(), area, resize) {
+                frame.render_widget(ratatui_image::Image::new(&protocol), area);
+                return;
+            }
+        }
+    }
     let r = fit(area, film.width, film.height);
     if r.width == 0 {
         return;

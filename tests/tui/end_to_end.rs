@@ -297,3 +297,37 @@ fn chapter_6_converges_in_a_real_terminal() {
         s.contains("EXIT=0") && t.flag("alternate_on") == "0"
     });
 }
+
+/// A terminal that claims kitty graphics but runs inside tmux (the test's
+/// own), and one forced with `--halfblocks`: both show the half-block
+/// preview, start as fast as ever, and put the terminal back on quit.
+#[test]
+fn the_half_block_fallback_in_tmux_and_with_the_flag() {
+    let Some((tmux, dir)) = shell("tui-e2e-halfblocks") else {
+        return;
+    };
+    for flag in ["", "--halfblocks"] {
+        let command = format!(
+            "TERM=xterm-kitty KITTY_WINDOW_ID=1 {} {flag} --scenes {}; echo \"EXIT=$?\"",
+            env!("CARGO_BIN_EXE_raystep"),
+            dir.display()
+        );
+        tmux.keys(&command);
+        tmux.key("Enter");
+        let screen = tmux.wait("the first preview", 30, |t, s| {
+            t.flag("alternate_on") == "1" && s.contains("│ pass ")
+        });
+        // Half blocks in the preview, no graphics escape shown as text,
+        // and the title does not claim a graphics protocol.
+        assert!(screen.contains('▀'), "{screen}");
+        assert!(!screen.contains("kitty graphics"), "{screen}");
+        assert!(!screen.contains("_G"), "{screen}");
+        tmux.keys("q");
+        tmux.wait("the shell after quitting", 20, |t, s| {
+            s.contains("EXIT=0") && t.flag("alternate_on") == "0"
+        });
+        tmux.keys("clear");
+        tmux.key("Enter");
+        tmux.wait("a clear screen", 10, |_, s| !s.contains("EXIT=0"));
+    }
+}

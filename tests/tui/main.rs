@@ -7,4 +7,5 @@ mod common;
 
 mod converge;
 mod end_to_end;
+mod graphics;
 mod layout_and_keys;
