@@ -113,6 +113,8 @@ pub struct App {
     pub paused: bool,
     /// How the preview is drawn ([`super::graphics::detect`]).
     pub graphics: super::graphics::Graphics,
+    /// Inspect mode's cursor, a pixel of the image; `None` when off.
+    pub inspect: Option<(u32, u32)>,
     /// The picker for a graphics protocol; `None` draws half blocks.
     pub picker: Option<ratatui_image::picker::Picker>,
 }
@@ -154,6 +156,10 @@ pub enum Msg {
     TogglePause,
     /// Twice the sample budget, and the noise level it reaches.
     TargetUp,
+    /// Inspect mode on (cursor at the centre) or off.
+    ToggleInspect,
+    /// Move the inspect cursor by (dx, dy) pixels.
+    CursorMove(i32, i32),
     /// Half the sample budget, and the noise level it reaches.
     TargetDown,
     /// Show the grader's newest failure images (student vs reference), or
@@ -206,6 +212,7 @@ impl App {
             paused: false,
             graphics: super::graphics::Graphics::HalfBlocks,
             picker: None,
+            inspect: None,
         }
     }
 

@@ -28,6 +28,11 @@ pub const KEYS: &[(&str, &str)] = &[
         ">  <",
         "double / halve the target (samples, and the noise reached)",
     ),
+    ("i", "inspect a pixel: a cursor, its values and its bounces"),
+    (
+        "h j k l",
+        "inspecting: move the cursor (also arrows; Shift: 8 pixels)",
+    ),
     ("s", "save the view as PNG and its film as EXR in out/"),
     ("?", "show / hide this help"),
     ("q  Esc  Ctrl-C", "quit (Esc first closes the help)"),
@@ -41,8 +46,33 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
     if key.modifiers.contains(KeyModifiers::CONTROL) {
         return matches!(key.code, KeyCode::Char('c')).then_some(Msg::Quit);
     }
+    if app.inspect.is_some() {
+        let shift = key.modifiers.contains(KeyModifiers::SHIFT);
+        let (step, code) = match key.code {
+            // Shift with a letter arrives as the capital letter.
+            KeyCode::Char(c) if c.is_ascii_uppercase() => {
+                (8, KeyCode::Char(c.to_ascii_lowercase()))
+            }
+            code if shift => (8, code),
+            code => (1, code),
+        };
+        let moved = match code {
+            KeyCode::Left | KeyCode::Char('h') => Some((-step, 0)),
+            KeyCode::Right | KeyCode::Char('l') => Some((step, 0)),
+            KeyCode::Up | KeyCode::Char('k') => Some((0, -step)),
+            KeyCode::Down | KeyCode::Char('j') => Some((0, step)),
+            _ => None,
+        };
+        if let Some((dx, dy)) = moved {
+            return Some(Msg::CursorMove(dx, dy));
+        }
+        if key.code == KeyCode::Esc {
+            return Some(Msg::ToggleInspect);
+        }
+    }
     Some(match key.code {
         KeyCode::Char('q') => Msg::Quit,
+        KeyCode::Char('i') => Msg::ToggleInspect,
         KeyCode::Esc if app.help => Msg::ToggleHelp,
         KeyCode::Esc => Msg::Quit,
         KeyCode::Up | KeyCode::Char('k') => Msg::Up,

@@ -17,7 +17,9 @@
 
 pub mod app;
 pub mod bench;
+pub mod gauge;
 pub mod graphics;
+pub mod inspect;
 pub mod keys;
 pub mod layers;
 pub mod picture;

@@ -110,6 +110,29 @@ pub fn update(mut app: App, msg: Msg) -> App {
                 .into();
             }
         }
+        Msg::ToggleInspect => {
+            let size = app
+                .snapshot
+                .as_ref()
+                .and_then(|s| s.views.first())
+                .map(|f| (f.width, f.height));
+            app.inspect = match (app.inspect, size) {
+                (None, Some((w, h))) => Some((w / 2, h / 2)),
+                _ => None,
+            };
+        }
+        Msg::CursorMove(dx, dy) => {
+            let size = app
+                .snapshot
+                .as_ref()
+                .and_then(|s| s.views.first())
+                .map(|f| (f.width, f.height));
+            if let (Some((x, y)), Some((w, h))) = (app.inspect, size) {
+                let clamp =
+                    |v: u32, d: i32, n: u32| (v as i64 + d as i64).clamp(0, n as i64 - 1) as u32;
+                app.inspect = Some((clamp(x, dx, w), clamp(y, dy, h)));
+            }
+        }
         Msg::TargetUp | Msg::TargetDown => {
             if app.progressive() {
                 app.target = match msg {

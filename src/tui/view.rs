@@ -16,15 +16,15 @@ use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::Marker;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{
-    Axis, Block, Chart, Clear, Dataset, Gauge, GraphType, List, ListItem, ListState, Paragraph,
-    Wrap,
+    Axis, Block, Chart, Clear, Dataset, GraphType, List, ListItem, ListState, Paragraph, Wrap,
 };
 use ratatui::Frame;
 
 use super::app::{expose, App, Focus};
+use super::gauge::draw_gauge;
+pub use super::gauge::{gauge_state, short_number};
 use super::keys::KEYS;
 use super::picture::{fit, Picture};
-use super::worker::Finish;
 use crate::core::film::Film;
 use crate::core::format::{format_number, format_seconds};
 use crate::core::preview::downsample;
@@ -142,7 +142,9 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         Paragraph::new(controls).block(Block::bordered().title("controls")),
         ctrl,
     );
-    if has_chart && rest.height >= 6 {
+    if app.inspect.is_some() && rest.height >= 3 {
+        super::inspect::draw_panel(app, frame, rest);
+    } else if has_chart && rest.height >= 6 {
         draw_chart(app, frame, rest);
     }
 }
@@ -301,15 +303,9 @@ fn draw_film(app: &App, frame: &mut Frame, film: &Film, area: Rect) {
         },
         r,
     );
-}
-
-/// Three significant digits: 0.012345 → "0.0123".
-pub fn short_number(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return format_number(x);
+    if let Some(p) = app.inspect {
+        super::inspect::draw_cursor(frame, r, p, film.width, film.height);
     }
-    let digits = (2 - x.abs().log10().floor() as i32).clamp(0, 8) as usize;
-    format!("{x:.digits$}")
 }
 
 /// A rate in the status line: 1234567 → "1.23M".
@@ -378,60 +374,6 @@ pub fn status_line(app: &App) -> Line<'static> {
         parts.push("rendering…".into());
     }
     Line::from(Span::raw(parts.join(" │ ")))
-}
-
-/// How far the render is, 0 to 1, and the gauge's label. A progressive
-/// render is as far as the nearer of its two stops: the budget (samples
-/// done / budget) and the noise level ((level / noise)², as noise falls
-/// with 1/√spp).
-pub fn gauge_state(app: &App) -> (f64, String) {
-    let Some(snap) = &app.snapshot else {
-        return (0.0, "0/1 passes".into());
-    };
-    if let Some(t) = &snap.target {
-        let budget = snap.samples as f64 / t.spp.max(1) as f64;
-        let clean = match (snap.relative_noise(), t.noise) {
-            (Some(n), Some(level)) if n > 0.0 => (level / n).powi(2),
-            _ => 0.0,
-        };
-        let ratio = if snap.done { 1.0 } else { budget.max(clean) };
-        let state = match (app.paused && !snap.done, snap.finish) {
-            (true, _) => "paused",
-            (_, Some(Finish::Clean)) => "clean",
-            (_, Some(Finish::Budget)) => "budget spent",
-            (_, Some(Finish::Complete)) => "done",
-            (_, None) => "rendering",
-        };
-        let noise = match (snap.relative_noise(), t.noise) {
-            (Some(n), Some(level)) => format!(
-                " · noise {:.1}% of the mean, target {:.1}%",
-                100.0 * n,
-                100.0 * level
-            ),
-            (Some(n), None) => format!(" · noise {:.1}% of the mean", 100.0 * n),
-            _ => String::new(),
-        };
-        return (
-            ratio.clamp(0.0, 1.0),
-            format!("{}/{} spp{noise} · {state}", snap.samples, t.spp),
-        );
-    }
-    let (done, planned) = snap.progress;
-    let ratio = if planned == 0 {
-        0.0
-    } else {
-        (done as f64 / planned as f64).clamp(0.0, 1.0)
-    };
-    (ratio, format!("{done}/{planned} passes"))
-}
-
-fn draw_gauge(app: &App, frame: &mut Frame, area: Rect) {
-    let (ratio, label) = gauge_state(app);
-    let gauge = Gauge::default()
-        .ratio(ratio)
-        .label(label)
-        .gauge_style(fg(app, Color::Green));
-    frame.render_widget(gauge, area);
 }
 
 fn draw_help(app: &App, frame: &mut Frame, area: Rect) {

@@ -8,4 +8,5 @@ mod common;
 mod converge;
 mod end_to_end;
 mod graphics;
+mod inspect;
 mod layout_and_keys;

@@ -1,0 +1,110 @@
+//! Inspect mode: a cursor on the preview (`i`, then the arrow keys or
+//! `h j k l`; with Shift eight pixels at a time) and a panel with that
+//! pixel's story: its value in every view of the chapter (for chapter 6
+//! the mean radiance and its standard error), its light split by bounce
+//! layer with each layer's share, and the reference and the difference
+//! where there is one.
+
+use ratatui::layout::Rect;
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::text::Line;
+use ratatui::widgets::{Block, Paragraph};
+use ratatui::Frame;
+
+use super::app::{bounce_name, App};
+use crate::core::film::Film;
+use crate::core::format::format_number;
+
+fn rgb(film: &Film, x: u32, y: u32) -> Option<String> {
+    (x < film.width && y < film.height).then(|| {
+        let p = film.get(x, y);
+        format!(
+            "{} {} {}",
+            format_number(p.x as f64),
+            format_number(p.y as f64),
+            format_number(p.z as f64)
+        )
+    })
+}
+
+/// The panel's lines for the pixel under the cursor (empty when there is
+/// no cursor or no picture).
+pub fn inspect_lines(app: &App) -> Vec<String> {
+    let (Some((x, y)), Some(snap), Some(chapter)) =
+        (app.inspect, app.snapshot.as_ref(), app.current_chapter())
+    else {
+        return Vec::new();
+    };
+    let mut lines = vec![format!("pixel ({x}, {y})")];
+    for (view, film) in chapter.views().iter().zip(&snap.views) {
+        if let Some(v) = rgb(film, x, y) {
+            let name = match view.name {
+                "stderr" => "± std error",
+                other => other,
+            };
+            lines.push(format!("{name}: {v}"));
+        }
+    }
+    if let (Some(layers), Some(image)) = (&snap.layers, snap.views.first()) {
+        if x < image.width && y < image.height {
+            let total = image.get(x, y).element_sum().max(1e-30);
+            lines.push("by bounce (share of the pixel):".into());
+            for (k, layer) in layers.iter().enumerate() {
+                let v = layer.get(x, y);
+                if v.element_sum() <= 0.0 {
+                    continue;
+                }
+                let name = if k + 1 == layers.len() {
+                    "beyond 16".to_string()
+                } else if k == 0 {
+                    "direct".to_string()
+                } else {
+                    bounce_name(k as u32).replace(" global illumination", "")
+                };
+                lines.push(format!(" {name}: {:.1}%", 100.0 * v.element_sum() / total));
+            }
+        }
+    }
+    if let (Some(r), Some(image)) = (&snap.reference, snap.views.first()) {
+        if (r.width, r.height) == (image.width, image.height) {
+            if let Some(v) = rgb(r, x, y) {
+                lines.push(format!("reference: {v}"));
+                let d = image.get(x, y) - r.get(x, y);
+                lines.push(format!(
+                    "difference: {} {} {}",
+                    format_number(d.x as f64),
+                    format_number(d.y as f64),
+                    format_number(d.z as f64)
+                ));
+            }
+        }
+    }
+    lines
+}
+
+/// Draws the panel into `area`.
+pub fn draw_panel(app: &App, frame: &mut Frame, area: Rect) {
+    let lines: Vec<Line> = inspect_lines(app).into_iter().map(Line::from).collect();
+    frame.render_widget(
+        Paragraph::new(lines).block(Block::bordered().title("pixel (i: close)")),
+        area,
+    );
+}
+
+/// Marks the cell showing pixel (`x`, `y`) of a `width` x `height` film
+/// drawn into `r` (half blocks: a cell is one pixel wide, two tall).
+pub fn draw_cursor(frame: &mut Frame, r: Rect, (x, y): (u32, u32), width: u32, height: u32) {
+    if r.width == 0 || r.height == 0 || x >= width || y >= height {
+        return;
+    }
+    let cx = r.x + (x as u64 * r.width as u64 / width as u64) as u16;
+    let cy = r.y + (y as u64 * r.height as u64 / height as u64) as u16;
+    if let Some(cell) = frame.buffer_mut().cell_mut((cx, cy)) {
+        cell.set_symbol("+").set_style(
+            Style::default()
+                .fg(Color::Black)
+                .bg(Color::Yellow)
+                .add_modifier(Modifier::BOLD),
+        );
+    }
+}
