@@ -12,17 +12,17 @@ use ratatui::widgets::{Block, Paragraph};
 use ratatui::Frame;
 
 use super::app::{bounce_name, App};
+use super::gauge::short_number;
 use crate::core::film::Film;
-use crate::core::format::format_number;
 
 fn rgb(film: &Film, x: u32, y: u32) -> Option<String> {
     (x < film.width && y < film.height).then(|| {
         let p = film.get(x, y);
         format!(
             "{} {} {}",
-            format_number(p.x as f64),
-            format_number(p.y as f64),
-            format_number(p.z as f64)
+            short_number(p.x as f64),
+            short_number(p.y as f64),
+            short_number(p.z as f64)
         )
     })
 }
@@ -72,9 +72,9 @@ pub fn inspect_lines(app: &App) -> Vec<String> {
                 let d = image.get(x, y) - r.get(x, y);
                 lines.push(format!(
                     "difference: {} {} {}",
-                    format_number(d.x as f64),
-                    format_number(d.y as f64),
-                    format_number(d.z as f64)
+                    short_number(d.x as f64),
+                    short_number(d.y as f64),
+                    short_number(d.z as f64)
                 ));
             }
         }
