@@ -132,18 +132,21 @@ pub fn run_headless(
     let stem = format!("ch{}-{}", chapter.number(), scene.name);
     let start = Instant::now();
     let mut render = chapter.start(Arc::new(scene), settings)?;
+    // Progress on a terminal's stderr, only for renders that take a while.
     let show_progress = std::io::stderr().is_terminal();
+    let mut shown = false;
     loop {
         let done = render.pass();
-        if show_progress {
+        if show_progress && start.elapsed().as_secs_f64() > 1.0 {
             let (d, t) = render.progress();
             eprint!("\r{stem}: pass {d}/{t}  ");
+            shown = true;
         }
         if done {
             break;
         }
     }
-    if show_progress {
+    if shown {
         eprintln!();
     }
     let seconds = start.elapsed().as_secs_f64();
