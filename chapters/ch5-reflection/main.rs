@@ -11,7 +11,6 @@ use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
 use raystep::ch5_reflection::direct::Strategy;
-use raystep::ch5_reflection::plot::{plot, rows_from_csv};
 use raystep::ch5_reflection::stage::{Reflection, DEFAULT};
 use raystep::core::run::{exit_code, run_with, CommonArgs};
 
@@ -55,21 +54,5 @@ fn main() -> ExitCode {
         },
         max_mirror_bounces: cli.max_mirror_bounces,
     };
-    exit_code(run_with(&stage, &cli.common).and_then(|summary| {
-        // With --report: the log-log plots, from the CSV just written.
-        let csv = summary.files.iter().find(|f| {
-            f.extension().is_some_and(|e| e == "csv")
-                && !f.to_string_lossy().ends_with("-stability.csv")
-        });
-        if let Some(csv) = csv {
-            let text = std::fs::read_to_string(csv).map_err(|e| raystep::Error::io(csv, e))?;
-            let rows = rows_from_csv(&text);
-            for group in ["area", "environment"] {
-                let path = cli.common.out.join(format!("ch5-error-time-{group}.png"));
-                plot(&rows, group, 480, 320).write_png(&path)?;
-                println!("  plot: {}", path.display());
-            }
-        }
-        Ok(())
-    }))
+    exit_code(run_with(&stage, &cli.common))
 }

@@ -122,7 +122,11 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
         let scene = common.load_sized_scene()?;
         let (meta, files) =
             make_reference(&stage.path, stage.sampler, &scene, common.spp, common.seed)?;
-        return print(&format!("{meta}wrote: {files:?}\n"));
+        let list: String = files
+            .iter()
+            .map(|f| format!("    {}\n", f.display()))
+            .collect();
+        return print(&format!("{meta}wrote:\n{list}"));
     }
     let summary = run_with(stage, common)?;
     if !summary.stable {

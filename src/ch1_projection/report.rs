@@ -59,11 +59,13 @@ pub fn chapter_report(
     report
         .left_out
         .push("shading: materials give edge colours only".into());
-    report.left_out.push(match scene.lights.len() {
-        0 => "lights: the scene has none".into(),
-        1 => "1 light: projection needs no light".into(),
-        n => format!("{n} lights: projection needs no light"),
-    });
+    report.facts.push((
+        "lights".into(),
+        format!(
+            "{}, not used by this chapter (projection needs no light)",
+            scene.describe_lights()
+        ),
+    ));
     report
         .left_out
         .push("depth buffer, BVH and sampling: one deterministic pass (--spp ignored)".into());

@@ -103,10 +103,13 @@ pub fn chapter_report(
             .left_out
             .push("back-face culling: off (the depth buffer alone decides)".into());
     }
-    report.left_out.push(match scene.lights.len() {
-        0 => "lights: the scene has none".into(),
-        n => format!("{n} lights: rasterization here does no shading"),
-    });
+    report.facts.push((
+        "lights".into(),
+        format!(
+            "{}, not used by this chapter (it shades by the normal, with a headlight)",
+            scene.describe_lights()
+        ),
+    ));
     report
         .left_out
         .push("BVH and rays: rasterization walks triangles, not pixels".into());

@@ -79,12 +79,13 @@ pub fn chapter_report(
     report
         .left_out
         .push("shading: materials and lights are ignored; the views show the first hit".into());
-    if !scene.lights.is_empty() {
-        report.left_out.push(format!(
-            "{} lights: visibility needs none",
-            scene.lights.len()
-        ));
-    }
+    report.facts.push((
+        "lights".into(),
+        format!(
+            "{}, not used by this chapter (visibility needs no light)",
+            scene.describe_lights()
+        ),
+    ));
     report
         .left_out
         .push("secondary rays: only the studies spawn them".into());

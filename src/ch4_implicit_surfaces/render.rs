@@ -230,6 +230,9 @@ pub struct TraceStats {
     pub lipschitz_violations: u64,
     /// Rays that started inside an object.
     pub inside: usize,
+    /// Pixels whose nearest hit is a mesh (chapter 3's BVH), whatever the
+    /// march did.
+    pub mesh_hits: usize,
     /// Non-finite distances or hit positions met.
     pub nonfinite: usize,
 }
@@ -249,6 +252,13 @@ impl TraceStats {
             s.oversteps += p.trace.oversteps as u64;
             s.lipschitz_violations += p.trace.lipschitz_violations as u64;
             s.inside += usize::from(p.trace.inside);
+            s.mesh_hits += usize::from(matches!(
+                p.hit,
+                Some(SurfaceHit {
+                    surface: Surface::Mesh(_),
+                    ..
+                })
+            ));
             let bad_hit = matches!(p.hit, Some(h) if !(h.t.is_finite() && h.normal.is_finite()));
             if bad_hit || !p.trace.t.is_finite() {
                 s.nonfinite += 1;

@@ -82,9 +82,11 @@ pub fn chapter_report(inputs: &ReportInputs) -> Report {
                 ),
             ),
             (
-                "rays".into(),
+                "camera rays".into(),
                 format!(
-                    "{} hit, {} escaped, {} ran out of steps ({:.2}%), {} started inside",
+                    "{} mesh hits (nearest hit); sphere tracing against the SDFs: {} SDF hits, \
+                     {} escaped, {} ran out of steps ({:.2}%), {} started inside",
+                    stats.mesh_hits,
                     stats.hits,
                     stats.escaped,
                     stats.budget,
@@ -136,10 +138,13 @@ pub fn chapter_report(inputs: &ReportInputs) -> Report {
             format_seconds(*build_seconds)
         )),
     }
-    report.left_out.push(match scene.lights.len() {
-        0 => "lights: the scene has none; shading is a headlight".into(),
-        k => format!("{k} lights: chapter 4 shades with a headlight"),
-    });
+    report.facts.push((
+        "lights".into(),
+        format!(
+            "{}, not used by this chapter (it shades with a headlight)",
+            scene.describe_lights()
+        ),
+    ));
     report
         .left_out
         .push("sampling: one ray per pixel centre (--spp ignored)".into());

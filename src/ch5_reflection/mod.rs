@@ -14,14 +14,13 @@
 //! | one image: camera rays, each shaded by the reflection equation | [`render`] |
 //! | the chapter as a stage | [`stage`] |
 //! | what the chapter prints | [`report`] |
-//! | error against run time for the four strategies | [`studies`], drawn by [`plot`] |
+//! | error against run time for the four strategies | [`studies`], drawn by [`crate::core::plot`] |
 //! | stiff cases: grazing light, tiny bright lights, mirror-like lobes | [`stability`] |
 
 pub mod direct;
 pub mod light;
 pub mod material;
 pub mod mis;
-pub mod plot;
 pub mod radiometry;
 pub mod render;
 pub mod report;

@@ -109,6 +109,7 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
         title: format!("ch5 reflection: {}", scene.name),
         facts: vec![
             ("scene".into(), scene.source.clone()),
+            ("lights".into(), scene.describe_lights()),
             (
                 "image".into(),
                 format!(
@@ -192,8 +193,9 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
             .push("light-sampling tables: the scene has no area lights".into());
     } else {
         report.built.push(format!(
-            "light-sampling tables (triangle areas) for {} area lights, {} triangles",
+            "light-sampling tables (triangle areas) for {} area light{}, {} triangles",
             areas.len(),
+            if areas.len() == 1 { "" } else { "s" },
             areas.iter().map(|a| a.triangles.len()).sum::<usize>()
         ));
     }

@@ -221,4 +221,20 @@ impl Render for ReflectionRender {
             seconds: self.seconds,
         })
     }
+
+    /// With `--report`: the study's plots, one per problem.
+    fn extra_files(
+        &self,
+        report: &Report,
+        dir: &std::path::Path,
+        _stem: &str,
+    ) -> Result<Vec<std::path::PathBuf>> {
+        let mut files = Vec::new();
+        for (name, plot) in report.error_vs_time.iter().flat_map(super::studies::plots) {
+            let path = dir.join(name);
+            plot.write_png(&path, 640, 420)?;
+            files.push(path);
+        }
+        Ok(files)
+    }
 }

@@ -20,6 +20,7 @@ use super::direct::{Counters, Estimator, Strategy};
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::radiometry::polygon_irradiance;
 use crate::ch5_reflection::world::{Interaction, World};
+use crate::core::plot::{LogLogPlot, Look};
 use crate::core::report::{ErrorTime, Measurement};
 use crate::core::sampling::Sampler;
 use crate::scene::Scene;
@@ -212,4 +213,27 @@ pub fn error_against_time(study: &Study) -> ErrorTime {
         }
     }
     et
+}
+
+/// The study's two log-log plots, one per problem: (file name, plot). The
+/// strategies keep one colour and marker each in every plot of the book.
+pub fn plots(et: &ErrorTime) -> Vec<(String, LogLogPlot)> {
+    let look = |series: &str| {
+        let i = Strategy::ALL
+            .iter()
+            .position(|s| series.ends_with(s.name()))
+            .unwrap_or(Strategy::ALL.len());
+        Look::nth(i)
+    };
+    [
+        ("area", "Area light: error against time"),
+        ("environment", "Sky: error against time"),
+    ]
+    .into_iter()
+    .map(|(group, title)| {
+        let mut plot = LogLogPlot::error_time(et, group, title, look);
+        plot.y_label = "RMSE of the reflected radiance".into();
+        (format!("ch5-error-time-{group}.png"), plot)
+    })
+    .collect()
 }

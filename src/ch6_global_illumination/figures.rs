@@ -4,11 +4,9 @@
 
 use std::path::{Path, PathBuf};
 
-use glam::Vec3;
-
 use crate::core::error::Result;
 use crate::core::film::Film;
-use crate::core::plot::{log_log, LogLogStyle, Polyline};
+use crate::core::plot::{LogLogPlot, Look};
 use crate::core::report::ErrorTime;
 
 use super::accumulate::Accumulator;
@@ -98,50 +96,29 @@ pub fn spp_strip(
     Ok(out)
 }
 
-/// One colour per series of the strategy plot, by estimator (the sampler
-/// changes the brightness: independent bright, Sobol dark).
-pub fn series_color(series: &str) -> Vec3 {
-    let base = if series.contains("uniform") {
-        Vec3::new(0.9, 0.2, 0.2)
-    } else if series.contains("bsdf") {
-        Vec3::new(0.95, 0.75, 0.1)
-    } else if series.contains("light") {
-        Vec3::new(0.2, 0.5, 1.0)
-    } else {
-        Vec3::new(0.2, 0.85, 0.3)
-    };
-    if series.contains("sobol") {
-        base * 0.5
-    } else {
-        base
+/// How a series of the strategy plot looks: colour and marker by
+/// estimator (as in chapter 5: uniform, BSDF, light, MIS), dashed for the
+/// Sobol sampler, solid for independent numbers.
+pub fn series_look(series: &str) -> Look {
+    let estimator = ["uniform", "bsdf", "light", "mis"]
+        .iter()
+        .position(|e| series.split(' ').any(|w| w == *e))
+        .unwrap_or(4);
+    Look {
+        dashed: series.contains("sobol"),
+        ..Look::nth(estimator)
     }
 }
 
-/// The strategy plot: log RMSE against log time, one polyline per series
-/// whose name starts with `prefix`, on a white background with grey
-/// decade lines; colours from [`series_color`].
-pub fn plot_error_time(et: &ErrorTime, prefix: &str, width: u32, height: u32) -> Film {
-    let series: Vec<Polyline> = et
-        .series()
-        .iter()
-        .filter(|s| s.starts_with(prefix))
-        .map(|s| Polyline {
-            // Drawn light-on-dark and inverted: the complement shows.
-            colour: Vec3::ONE - series_color(s),
-            points: et
-                .rows
-                .iter()
-                .filter(|r| &r.series == s && r.error > 0.0 && r.seconds > 0.0)
-                .map(|r| (r.seconds, r.error))
-                .collect(),
-        })
-        .collect();
-    let style = LogLogStyle {
-        background: Vec3::ZERO,
-        margin: 12.0,
-        grid: Vec3::splat(0.2),
-        guide: None,
-        invert: true,
+/// The strategy plot of one scene of the study (`cornell` or `furnace`):
+/// RMSE against run time, one line per estimator and sampler.
+pub fn strategy_plot(et: &ErrorTime, scene: &str) -> LogLogPlot {
+    let title = match scene {
+        "cornell" => "Cornell box: error against time",
+        "furnace" => "White furnace: error against time",
+        other => other,
     };
-    log_log(&series, &style, width, height)
+    let mut plot = LogLogPlot::error_time(et, scene, title, series_look);
+    plot.y_label = "RMSE of the pixel radiance".into();
+    plot
 }

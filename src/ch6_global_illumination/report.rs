@@ -49,6 +49,8 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
         ..Report::default()
     };
     let facts = [
+        ("scene", scene.source.clone()),
+        ("lights", scene.describe_lights()),
         ("resolution", format!("{}x{}", acc.width, acc.height)),
         ("samples per pixel", acc.samples.to_string()),
         (
@@ -160,7 +162,8 @@ fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
     } else if samples_lights {
         let env = lights.is_some_and(|l| l.environment.is_some());
         b.push(format!(
-            "light sampling over {n_lights} lights{}",
+            "light sampling over {n_lights} light{}{}",
+            if n_lights == 1 { "" } else { "s" },
             if env {
                 " (the environment sampled by cosine)"
             } else {
@@ -202,6 +205,16 @@ fn add_studies(report: &mut Report, settings: &Settings) {
     } else {
         settings.spp.min(64).next_power_of_two()
     };
+    report.facts.push((
+        "studies".into(),
+        if quick {
+            "quick (under 16 spp): 2 spp per series and the tests' small stiff cases; \
+             run with --spp 16 or more for the full study"
+                .into()
+        } else {
+            format!("up to {max_spp} spp per series")
+        },
+    ));
     let et = error_against_time(max_spp);
     report.tables.push(strategy_table(&et));
     report.error_vs_time = Some(et);

@@ -17,7 +17,7 @@ use std::time::Instant;
 use glam::Vec3;
 
 use super::accumulate::{downsample, Accumulator};
-use super::figures::{plot_error_time, spp_strip, write_layers};
+use super::figures::{spp_strip, strategy_plot, write_layers};
 use super::integrator::{Estimator, PathSettings, LAYER_SLOTS};
 use super::reference::{upsample, StoredReference};
 use super::report::{chapter_report, ReportInputs};
@@ -408,7 +408,7 @@ impl Render for PathTracingRender {
         if let Some(et) = &report.error_vs_time {
             for name in ["cornell", "furnace"] {
                 let path = dir.join(format!("{stem}-strategies-{name}.png"));
-                plot_error_time(et, name, 480, 320).write_png(&path)?;
+                strategy_plot(et, name).write_png(&path, 640, 440)?;
                 files.push(path);
             }
         }

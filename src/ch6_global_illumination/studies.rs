@@ -124,7 +124,8 @@ pub fn error_against_time(max_spp: u32) -> ErrorTime {
 
 /// Time to reach an RMSE, from the least-squares line of log error
 /// against log time of one series ([`ErrorTime::fit`]), and whether that
-/// is an extrapolation. `None` when the series has no negative slope.
+/// is an extrapolation. `None` when the series has no trustworthy falling
+/// fit, or the time lies over 10x outside the measured times.
 pub fn time_to_error(et: &ErrorTime, series: &str, target: f64) -> Option<(f64, bool)> {
     et.fit(series)?.x_at(target)
 }
@@ -133,7 +134,8 @@ pub fn time_to_error(et: &ErrorTime, series: &str, target: f64) -> Option<(f64, 
 /// slope, and the time to RMSE 0.02 and 0.01.
 pub fn strategy_table(et: &ErrorTime) -> Table {
     let mut t = Table::new(
-        "Strategies: efficiency and time to reach an RMSE (fitted on log-log axes; * = extrapolated)",
+        "Strategies: efficiency, and t(x) = the time to reach RMSE x read off the log-log fit \
+         (* = extrapolated, at most 10x beyond the measured times; — = no trustworthy fit, or further)",
         &[
             "series",
             "spp",
@@ -141,8 +143,8 @@ pub fn strategy_table(et: &ErrorTime) -> Table {
             "RMSE",
             "1/(MSE·time)",
             "slope",
-            "t(RMSE 0.02)",
-            "t(RMSE 0.01)",
+            "t(0.02)",
+            "t(0.01)",
         ],
     );
     for s in et.series() {
@@ -151,7 +153,7 @@ pub fn strategy_table(et: &ErrorTime) -> Table {
         };
         let fmt = |x: Option<(f64, bool)>| match x {
             Some((t, extra)) => format!("{}{}", format_seconds(t), if extra { "*" } else { "" }),
-            None => "-".into(),
+            None => "—".into(),
         };
         t.row(vec![
             s.clone(),
@@ -159,7 +161,7 @@ pub fn strategy_table(et: &ErrorTime) -> Table {
             format_seconds(last.seconds),
             format_number(last.error),
             format_number(last.efficiency()),
-            et.slope(&s).map_or("-".into(), |k| format!("{k:.2}")),
+            et.slope(&s).map_or("—".into(), |k| format!("{k:.2}")),
             fmt(time_to_error(et, &s, 0.02)),
             fmt(time_to_error(et, &s, 0.01)),
         ]);

@@ -1,159 +1,535 @@
-//! Log-log plots drawn into a film with [`crate::core::draw`], for the
-//! error-against-time studies of chapters 5 and 6: one coloured polyline
-//! with dots per series, grid lines at every power of ten, an optional
-//! guide of a given slope. No text: the book's captions name the colours.
+//! The one plot module of the book: error against run time on log-log
+//! axes, drawn with the `plotters` crate. Every chapter that plots goes
+//! through [`LogLogPlot`]: labelled axes with units, ticks at every power of
+//! ten, a legend, and a look per series (colour, marker, solid or dashed)
+//! so lines stay apart in print and for colour-blind readers.
+//!
+//! Text is rendered from the DejaVu Sans font shipped in `assets/fonts/`
+//! (Bitstream Vera licence, beside it), so a fresh machine needs no system
+//! fonts.
 
-use glam::{Vec2, Vec3};
+use std::path::Path;
+use std::sync::OnceLock;
 
-use crate::core::draw::{dot, line};
-use crate::core::film::Film;
+use plotters::coord::Shift;
+use plotters::element::{Drawable, PointCollection};
+use plotters::prelude::*;
+use plotters::style::{register_font, FontStyle};
+use plotters_backend::{BackendCoord, DrawingErrorKind};
 
-/// One series of a plot: its colour and its (x, y) points, both positive
-/// (they are plotted as log10).
-#[derive(Clone, Debug)]
-pub struct Polyline {
-    /// Colour of the line and the dots.
-    pub colour: Vec3,
-    /// The points in order, joined by straight lines.
+use crate::core::error::{Error, Result};
+use crate::core::film::write_atomically;
+use crate::core::report::ErrorTime;
+
+/// DejaVu Sans, Bitstream Vera licence (`assets/fonts/DejaVu-LICENSE.txt`).
+static FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+/// The family name plotters looks the font up by.
+const FAMILY: &str = "sans-serif";
+
+/// Registers the font once; an error if the bytes are not a font.
+fn font() -> Result<()> {
+    static DONE: OnceLock<bool> = OnceLock::new();
+    let ok = *DONE.get_or_init(|| register_font(FAMILY, FontStyle::Normal, FONT).is_ok());
+    if ok {
+        Ok(())
+    } else {
+        Err(Error::Usage("the bundled plot font does not parse".into()))
+    }
+}
+
+/// Okabe–Ito colours, safe for the common colour-vision deficiencies
+/// (yellow left out: it vanishes on white).
+pub const PALETTE: [(u8, u8, u8); 7] = [
+    (0, 114, 178),   // blue
+    (213, 94, 0),    // vermillion
+    (0, 158, 115),   // bluish green
+    (204, 121, 167), // reddish purple
+    (230, 159, 0),   // orange
+    (86, 180, 233),  // sky blue
+    (0, 0, 0),       // black
+];
+
+/// The point marker of a series.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Marker {
+    /// A filled circle.
+    Circle,
+    /// A filled triangle.
+    Triangle,
+    /// An outlined square.
+    Square,
+    /// A cross.
+    Cross,
+}
+
+/// How one series looks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Look {
+    /// Index into [`PALETTE`] (taken modulo its length).
+    pub colour: usize,
+    /// The marker at every point.
+    pub marker: Marker,
+    /// Dashed instead of solid line.
+    pub dashed: bool,
+}
+
+impl Look {
+    /// The `i`-th of a sequence of looks that differ in colour and marker.
+    pub fn nth(i: usize) -> Look {
+        const MARKERS: [Marker; 4] = [
+            Marker::Circle,
+            Marker::Triangle,
+            Marker::Square,
+            Marker::Cross,
+        ];
+        Look {
+            colour: i,
+            marker: MARKERS[i % MARKERS.len()],
+            dashed: false,
+        }
+    }
+
+    fn rgb(&self) -> RGBColor {
+        let (r, g, b) = PALETTE[self.colour % PALETTE.len()];
+        RGBColor(r, g, b)
+    }
+}
+
+/// One line of a plot.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    /// The legend entry.
+    pub label: String,
+    /// (x, y) points in order; points with a non-positive or non-finite
+    /// coordinate have no logarithm and are left out.
     pub points: Vec<(f64, f64)>,
+    /// Colour, marker and dash.
+    pub look: Look,
 }
 
-/// How a plot looks.
-#[derive(Clone, Copy, Debug)]
-pub struct LogLogStyle {
-    /// Colour of the empty film.
-    pub background: Vec3,
-    /// Pixels between the film's edge and the outermost decade.
-    pub margin: f64,
-    /// Colour of the decade lines.
-    pub grid: Vec3,
-    /// A guide line (slope in decades per decade, colour) from the first
-    /// point to the right edge.
-    pub guide: Option<(f64, Vec3)>,
-    /// Invert the finished film. The draw helpers keep the brighter of old
-    /// and new, so a light plot is drawn light-on-dark and inverted: give
-    /// the complements of the colours that should show.
-    pub invert: bool,
+/// A reference line of a given slope (in decades per decade), e.g. the
+/// −1/2 every Monte Carlo estimator follows against time.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Guide {
+    /// Decades of y per decade of x.
+    pub slope: f64,
+    /// The legend entry.
+    pub label: String,
 }
 
-/// Draws `series` on log-log axes spanning whole decades around every
-/// point.
+/// A log-log plot.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LogLogPlot {
+    /// Above the plot.
+    pub title: String,
+    /// Under the x axis, with its unit, e.g. "run time (s)".
+    pub x_label: String,
+    /// Beside the y axis, e.g. "RMSE (radiance)".
+    pub y_label: String,
+    /// The lines.
+    pub series: Vec<Series>,
+    /// A dashed grey line through the highest first point, or none.
+    pub guide: Option<Guide>,
+}
+
 // ANCHOR: log_log
-pub fn log_log(series: &[Polyline], style: &LogLogStyle, width: u32, height: u32) -> Film {
-    let mut film = Film::new(width, height);
-    film.pixels.fill(style.background);
-    let logs: Vec<(Vec3, Vec<(f64, f64)>)> = series
-        .iter()
-        .map(|s| {
-            let pts = s.points.iter().map(|&(x, y)| (x.log10(), y.log10()));
-            (s.colour, pts.collect())
+impl LogLogPlot {
+    /// The plot as 8-bit RGB pixels, row by row.
+    pub fn draw(&self, width: u32, height: u32) -> Result<Vec<u8>> {
+        font()?;
+        let mut pixels = vec![255u8; (width * height * 3) as usize];
+        {
+            let root = BitMapBackend::with_buffer(&mut pixels, (width, height)).into_drawing_area();
+            self.draw_on(&root)
+                .map_err(|e| Error::Usage(format!("drawing a plot: {e}")))?;
+            root.present()
+                .map_err(|e| Error::Usage(format!("drawing a plot: {e}")))?;
+        }
+        Ok(pixels)
+    }
+
+    /// Writes the plot as a PNG, atomically.
+    pub fn write_png(&self, path: &Path, width: u32, height: u32) -> Result<()> {
+        let pixels = self.draw(width, height)?;
+        write_atomically(path, |tmp| {
+            image::save_buffer_with_format(
+                tmp,
+                &pixels,
+                width,
+                height,
+                image::ColorType::Rgb8,
+                image::ImageFormat::Png,
+            )
+            .map_err(|e| e.to_string())
         })
-        .collect();
-    let all = || logs.iter().flat_map(|(_, pts)| pts.iter().copied());
-    let Some(first) = all().next() else {
-        return finish(film, style.invert);
-    };
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for (x, y) in all() {
-        (x0, x1) = (x0.min(x), x1.max(x));
-        (y0, y1) = (y0.min(y), y1.max(y));
     }
-    let (x0, x1, y0, y1) = (x0.floor(), x1.ceil(), y0.floor(), y1.ceil());
-    let m = style.margin;
-    let (w, h) = (width as f64 - 2.0 * m, height as f64 - 2.0 * m);
-    let to_px = |x: f64, y: f64| {
-        let fx = (x - x0) / (x1 - x0).max(1e-9);
-        let fy = (y - y0) / (y1 - y0).max(1e-9);
-        Vec2::new((m + fx * w) as f32, (height as f64 - m - fy * h) as f32)
-    };
-    let g = style.grid;
-    for k in x0 as i64..=x1 as i64 {
-        line(&mut film, to_px(k as f64, y0), to_px(k as f64, y1), g, g);
-    }
-    for k in y0 as i64..=y1 as i64 {
-        line(&mut film, to_px(x0, k as f64), to_px(x1, k as f64), g, g);
-    }
-    if let Some((slope, c)) = style.guide {
-        let (gx, gy) = first;
-        let end = to_px(x1, gy + slope * (x1 - gx));
-        line(&mut film, to_px(gx, gy), end, c, c);
-    }
-    for (c, pts) in &logs {
-        let px: Vec<Vec2> = pts.iter().map(|&(x, y)| to_px(x, y)).collect();
-        for pair in px.windows(2) {
-            line(&mut film, pair[0], pair[1], *c, *c);
+
+    fn draw_on<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+    ) -> std::result::Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+        let lines: Vec<(&Series, Vec<(f64, f64)>)> = self
+            .series
+            .iter()
+            .map(|s| {
+                (
+                    s,
+                    s.points.iter().copied().filter(|p| loggable(*p)).collect(),
+                )
+            })
+            .collect();
+        let (xs, ys) = decades(lines.iter().flat_map(|(_, p)| p.iter().copied()));
+        let mut chart = ChartBuilder::on(root)
+            .caption(&self.title, (FAMILY, 17))
+            .margin(12)
+            .margin_right(28)
+            .x_label_area_size(44)
+            .y_label_area_size(64)
+            .build_cartesian_2d(xs.clone().log_scale(), ys.clone().log_scale())?;
+        chart
+            .configure_mesh()
+            .x_desc(&self.x_label)
+            .y_desc(&self.y_label)
+            .label_style((FAMILY, 13))
+            .axis_desc_style((FAMILY, 14))
+            .x_label_formatter(&|v| labelled_tick(*v, &xs))
+            .y_label_formatter(&|v| labelled_tick(*v, &ys))
+            .light_line_style(RGBColor(235, 235, 235))
+            .bold_line_style(RGBColor(200, 200, 200))
+            .draw()?;
+        if let Some(g) = &self.guide {
+            if let Some(seg) = guide_segment(g.slope, &lines, chart.x_range(), chart.y_range()) {
+                let grey = RGBColor(120, 120, 120).stroke_width(1);
+                chart
+                    .draw_series(DashedLineSeries::new(seg, 6, 5, grey))?
+                    .label(&g.label)
+                    .legend(move |at| Mark {
+                        at,
+                        colour: RGBColor(120, 120, 120),
+                        marker: None,
+                        legend_line: Some(true),
+                    });
+            }
         }
-        for p in &px {
-            dot(&mut film, *p, 2.5, *c);
+        for (s, pts) in &lines {
+            let c = s.look.rgb();
+            let line = c.stroke_width(2);
+            if s.look.dashed {
+                chart.draw_series(DashedLineSeries::new(pts.iter().copied(), 8, 5, line))?;
+            } else {
+                chart.draw_series(LineSeries::new(pts.iter().copied(), line))?;
+            }
+            let look = s.look;
+            chart
+                .draw_series(pts.iter().map(|p| Mark::point(*p, look)))?
+                .label(&s.label)
+                .legend(move |at| Mark {
+                    legend_line: Some(look.dashed),
+                    ..Mark::point(at, look)
+                });
         }
+        chart
+            .configure_series_labels()
+            .label_font((FAMILY, 12))
+            .background_style(WHITE.mix(0.85))
+            .border_style(RGBColor(160, 160, 160))
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()?;
+        Ok(())
     }
-    finish(film, style.invert)
 }
 // ANCHOR_END: log_log
 
-fn finish(mut film: Film, invert: bool) -> Film {
-    if invert {
-        for p in &mut film.pixels {
-            *p = (Vec3::ONE - *p).max(Vec3::ZERO);
+impl LogLogPlot {
+    /// The error-against-time plot of the series of `et` whose names start
+    /// with `prefix` (the prefix is left out of the legend), each looked up
+    /// in `look`; with the −1/2 guide when `et` shows slopes.
+    pub fn error_time(
+        et: &ErrorTime,
+        prefix: &str,
+        title: &str,
+        look: impl Fn(&str) -> Look,
+    ) -> LogLogPlot {
+        let series = et
+            .series()
+            .into_iter()
+            .filter(|s| s.starts_with(prefix))
+            .map(|s| Series {
+                label: s[prefix.len()..].trim_matches([' ', ':', '/']).to_string(),
+                look: look(&s),
+                points: et
+                    .rows
+                    .iter()
+                    .filter(|r| r.series == s)
+                    .map(|r| (r.seconds, r.error))
+                    .collect(),
+            })
+            .collect();
+        LogLogPlot {
+            title: title.into(),
+            x_label: "run time (s)".into(),
+            y_label: et.error_name.clone(),
+            series,
+            guide: et.show_slopes.then(|| Guide {
+                slope: -0.5,
+                label: "slope −1/2".into(),
+            }),
         }
     }
-    film
+}
+
+fn loggable((x, y): (f64, f64)) -> bool {
+    x > 0.0 && y > 0.0 && x.is_finite() && y.is_finite()
+}
+
+/// Whole decades around every point (one decade when there are none).
+fn decades(pts: impl Iterator<Item = (f64, f64)>) -> (std::ops::Range<f64>, std::ops::Range<f64>) {
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for (x, y) in pts {
+        let (lx, ly) = (x.log10(), y.log10());
+        (x0, x1, y0, y1) = (x0.min(lx), x1.max(lx), y0.min(ly), y1.max(ly));
+    }
+    if x0 > x1 {
+        return (1.0..10.0, 1.0..10.0);
+    }
+    let span = |lo: f64, hi: f64| {
+        let (a, b) = (lo.floor(), hi.ceil());
+        let b = if b <= a { a + 1.0 } else { b };
+        // A hair lower, so rounding in the tick positions keeps the
+        // lowest decade's tick.
+        10f64.powf(a) * 0.999..10f64.powf(b)
+    };
+    (span(x0, x1), span(y0, y1))
+}
+
+/// The guide through the first point of the line that starts highest,
+/// clipped to the axes: two points, or none without data.
+fn guide_segment(
+    slope: f64,
+    lines: &[(&Series, Vec<(f64, f64)>)],
+    xs: std::ops::Range<f64>,
+    ys: std::ops::Range<f64>,
+) -> Option<Vec<(f64, f64)>> {
+    let (gx, gy) = lines
+        .iter()
+        .filter_map(|(_, p)| p.first().copied())
+        .max_by(|a, b| a.1.total_cmp(&b.1))?;
+    let (lx, ly) = (gx.log10(), gy.log10());
+    let y_at = |x: f64| ly + slope * (x - lx);
+    let x_at = |y: f64| lx + (y - ly) / slope;
+    let (a, b) = (xs.start.log10(), xs.end.log10());
+    let (lo, hi) = (ys.start.log10(), ys.end.log10());
+    // Clip the line x in [a, b] to y in [lo, hi].
+    let mut x_lo = a;
+    let mut x_hi = b;
+    if slope != 0.0 {
+        let (p, q) = (x_at(lo), x_at(hi));
+        x_lo = x_lo.max(p.min(q));
+        x_hi = x_hi.min(p.max(q));
+    }
+    (x_lo < x_hi).then(|| {
+        [x_lo, x_hi]
+            .iter()
+            .map(|x| (10f64.powf(*x), 10f64.powf(y_at(*x))))
+            .collect()
+    })
+}
+
+/// The label of a tick at `v` on an axis spanning `range`: every power of
+/// ten, and 2 and 5 times it when the axis spans at most two decades;
+/// other ticks get grid lines but no label, so labels never overlap.
+fn labelled_tick(v: f64, range: &std::ops::Range<f64>) -> String {
+    let decades = (range.end / range.start).log10();
+    let mantissa = v / 10f64.powf(v.log10().floor());
+    let near = |m: f64| (mantissa - m).abs() < 1e-3 * m;
+    if near(1.0) || near(10.0) || (decades <= 2.01 && (near(2.0) || near(5.0))) {
+        tick(v)
+    } else {
+        String::new()
+    }
+}
+
+/// A tick label: 0.001 … 1000 as decimals, anything else as 1e-5.
+pub fn tick(v: f64) -> String {
+    if (1e-3..1e4).contains(&v) {
+        let s = format!("{v:.3}");
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        let e = v.log10().round() as i32;
+        if (v / 10f64.powi(e) - 1.0).abs() < 1e-6 {
+            format!("1e{e}")
+        } else {
+            format!("{v:.0e}")
+        }
+    }
+}
+
+/// A point marker, optionally with a 24-pixel legend line through it
+/// (drawn from the anchor rightwards, the marker in its middle).
+struct Mark<C> {
+    at: C,
+    colour: RGBColor,
+    marker: Option<Marker>,
+    /// `Some(dashed)` for a legend entry.
+    legend_line: Option<bool>,
+}
+
+impl<C> Mark<C> {
+    fn point(at: C, look: Look) -> Mark<C> {
+        Mark {
+            at,
+            colour: look.rgb(),
+            marker: Some(look.marker),
+            legend_line: None,
+        }
+    }
+}
+
+impl<'b, C> PointCollection<'b, C> for &'b Mark<C> {
+    type Point = &'b C;
+    type IntoIter = std::iter::Once<&'b C>;
+    fn point_iter(self) -> Self::IntoIter {
+        std::iter::once(&self.at)
+    }
+}
+
+impl<C, DB: DrawingBackend> Drawable<DB> for Mark<C> {
+    fn draw<I: Iterator<Item = BackendCoord>>(
+        &self,
+        mut pos: I,
+        backend: &mut DB,
+        _: (u32, u32),
+    ) -> std::result::Result<(), DrawingErrorKind<DB::ErrorType>> {
+        let Some((mut x, y)) = pos.next() else {
+            return Ok(());
+        };
+        let thin = self.colour.stroke_width(2);
+        if let Some(dashed) = self.legend_line {
+            let pieces: &[(i32, i32)] = if dashed {
+                &[(0, 7), (11, 17), (21, 24)]
+            } else {
+                &[(0, 24)]
+            };
+            for (a, b) in pieces {
+                backend.draw_line((x + a, y), (x + b, y), &thin)?;
+            }
+            x += 12;
+        }
+        let fill = self.colour.filled();
+        match self.marker {
+            None => Ok(()),
+            Some(Marker::Circle) => backend.draw_circle((x, y), 4, &fill, true),
+            Some(Marker::Triangle) => {
+                backend.fill_polygon(vec![(x, y - 5), (x - 5, y + 4), (x + 5, y + 4)], &fill)
+            }
+            Some(Marker::Square) => backend.draw_rect((x - 3, y - 3), (x + 3, y + 3), &thin, false),
+            Some(Marker::Cross) => {
+                backend.draw_line((x - 4, y - 4), (x + 4, y + 4), &thin)?;
+                backend.draw_line((x - 4, y + 4), (x + 4, y - 4), &thin)
+            }
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    const STYLE: LogLogStyle = LogLogStyle {
-        background: Vec3::ZERO,
-        margin: 10.0,
-        grid: Vec3::splat(0.2),
-        guide: None,
-        invert: false,
-    };
-
-    fn red(points: Vec<(f64, f64)>) -> Polyline {
-        Polyline {
-            colour: Vec3::X,
-            points,
+    fn plot(series: Vec<Series>) -> LogLogPlot {
+        LogLogPlot {
+            title: "test".into(),
+            x_label: "run time (s)".into(),
+            y_label: "RMSE".into(),
+            series,
+            guide: Some(Guide {
+                slope: -0.5,
+                label: "slope −1/2".into(),
+            }),
         }
     }
 
-    #[test]
-    fn decades_span_the_film_inside_the_margin() {
-        // x from 1 to 100, y from 0.01 to 1: the corners of the axes.
-        let f = log_log(&[red(vec![(1.0, 1.0), (100.0, 0.01)])], &STYLE, 101, 61);
-        // The first point sits at the top-left corner (10, 10), the last at
-        // the bottom-right (91, 51): red there, nothing red in the corner.
-        assert!(f.get(10, 10).x > 0.9 && f.get(90, 50).x > 0.9);
-        assert_eq!(f.get(0, 0), Vec3::ZERO);
-        // The middle decade line x = 10 is grey, away from the series.
-        assert!((f.get(50, 15).y - 0.2).abs() < 0.01, "{:?}", f.get(50, 15));
+    fn at(px: &[u8], w: u32, x: u32, y: u32) -> (u8, u8, u8) {
+        let i = ((y * w + x) * 3) as usize;
+        (px[i], px[i + 1], px[i + 2])
     }
 
     #[test]
-    fn an_empty_plot_is_background_and_inversion_applies() {
-        let style = LogLogStyle {
-            invert: true,
-            ..STYLE
-        };
-        let f = log_log(&[red(vec![])], &style, 8, 8);
-        assert!(f.pixels.iter().all(|p| *p == Vec3::ONE));
+    fn ticks_read_as_numbers() {
+        assert_eq!(tick(0.001), "0.001");
+        assert_eq!(tick(1.0), "1");
+        assert_eq!(tick(100.0), "100");
+        assert_eq!(tick(1e-5), "1e-5");
+        assert_eq!(tick(1e6), "1e6");
     }
 
     #[test]
-    fn the_guide_starts_at_the_first_point() {
-        let style = LogLogStyle {
-            guide: Some((-1.0, Vec3::Z)),
-            ..STYLE
+    fn only_decades_are_labelled_on_long_axes() {
+        let long = 1e-6..1.0;
+        let short = 0.01..1.0;
+        assert_eq!(labelled_tick(1e-3, &long), "0.001");
+        assert_eq!(labelled_tick(2e-3, &long), "");
+        assert_eq!(labelled_tick(0.05, &short), "0.05");
+        assert_eq!(labelled_tick(0.03, &short), "");
+    }
+
+    #[test]
+    fn decades_round_outwards() {
+        let (x, y) = decades([(2.0, 0.05), (30.0, 0.5)].into_iter());
+        assert!((x.start - 1.0).abs() < 2e-3 && x.end == 100.0);
+        assert!((y.start - 0.01).abs() < 2e-5 && (y.end - 1.0).abs() < 2e-3);
+    }
+
+    #[test]
+    fn the_guide_is_clipped_to_the_axes() {
+        let s = Series {
+            label: "a".into(),
+            points: vec![(1.0, 1.0), (100.0, 0.1)],
+            look: Look::nth(0),
         };
-        // The series runs along the top and right edges of a one-decade
-        // square; the guide of slope -1 is its diagonal, through the
-        // centre of pixel (29, 29).
-        let pts = vec![(1.0, 10.0), (10.0, 10.0), (10.0, 1.0)];
-        let f = log_log(&[red(pts)], &style, 60, 60);
-        assert!(f.get(29, 29).z > 0.8, "{:?}", f.get(29, 29));
-        assert_eq!(f.get(29, 29).x, 0.0);
-        assert_eq!(f.get(20, 40), Vec3::ZERO);
+        let lines = vec![(&s, s.points.clone())];
+        let seg = guide_segment(-0.5, &lines, 1.0..100.0, 0.1..1.0).unwrap();
+        // From (1, 1) down to (100, 0.1): slope -1/2 over two decades.
+        assert!((seg[0].0 - 1.0).abs() < 1e-9 && (seg[0].1 - 1.0).abs() < 1e-9);
+        assert!((seg[1].0 - 100.0).abs() < 1e-6 && (seg[1].1 - 0.1).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_plot_draws_coloured_lines_and_text_on_white() {
+        let series = vec![
+            Series {
+                label: "uniform".into(),
+                points: vec![(0.01, 1.0), (0.1, 0.3), (1.0, 0.1)],
+                look: Look::nth(0),
+            },
+            Series {
+                label: "light".into(),
+                points: vec![(0.01, 0.1), (0.1, 0.03), (1.0, 0.01), (0.0, 5.0)],
+                look: Look {
+                    dashed: true,
+                    ..Look::nth(1)
+                },
+            },
+        ];
+        let (w, h) = (480, 320);
+        let px = plot(series).draw(w, h).unwrap();
+        assert_eq!(at(&px, w, 0, 0), (255, 255, 255));
+        let count = |c: (u8, u8, u8)| {
+            (0..h)
+                .flat_map(|y| (0..w).map(move |x| (x, y)))
+                .filter(|&(x, y)| at(&px, w, x, y) == c)
+                .count()
+        };
+        // Both series' colours show, and dark text (axis labels, ticks,
+        // legend) is drawn.
+        assert!(count(PALETTE[0]) > 100, "blue {}", count(PALETTE[0]));
+        assert!(count(PALETTE[1]) > 50, "vermillion {}", count(PALETTE[1]));
+        let dark = px.chunks(3).filter(|p| p.iter().all(|v| *v < 60)).count();
+        assert!(dark > 500, "dark pixels {dark}");
+    }
+
+    #[test]
+    fn an_empty_plot_still_draws_its_axes() {
+        let px = plot(vec![]).draw(200, 150).unwrap();
+        assert!(px.chunks(3).any(|p| p == [0, 0, 0]));
     }
 }

@@ -55,13 +55,16 @@ pub struct ErrorTime {
 
 impl ErrorTime {
     /// Least-squares slope of log(error) against log(time) for one series,
-    /// over rows with non-zero error; `None` with fewer than two such rows.
+    /// over rows with non-zero error; `None` when [`ErrorTime::fit`] is.
     pub fn slope(&self, series: &str) -> Option<f64> {
         self.fit(series).map(|f| f.slope)
     }
 
     /// The least-squares line through one series on log-log axes: log
-    /// error against log seconds.
+    /// error against log seconds. `None` unless the fit can be trusted:
+    /// at least [`MIN_FIT_POINTS`] rows with non-zero error spanning at
+    /// least [`MIN_FIT_SPAN`] times in run time (timing noise swamps a
+    /// slope over a shorter span).
     pub fn fit(&self, series: &str) -> Option<LogLogFit> {
         let pts: Vec<(f64, f64)> = self
             .rows
@@ -69,7 +72,7 @@ impl ErrorTime {
             .filter(|r| r.series == series && r.error > 0.0 && r.seconds > 0.0)
             .map(|r| (r.seconds.ln(), r.error.ln()))
             .collect();
-        LogLogFit::through(&pts)
+        LogLogFit::through(&pts).filter(LogLogFit::is_trustworthy)
     }
 
     /// The series names, in order of first appearance.
@@ -102,6 +105,14 @@ impl ErrorTime {
         s
     }
 }
+
+/// A slope is printed only from at least this many points...
+pub const MIN_FIT_POINTS: usize = 3;
+/// ... spanning at least this factor in run time.
+pub const MIN_FIT_SPAN: f64 = 4.0;
+/// A fitted line is read off (e.g. "time to reach RMSE 0.01") at most
+/// this factor beyond the measured range; further out is a guess.
+pub const MAX_EXTRAPOLATION: f64 = 10.0;
 
 /// Slope of the least-squares line through (x, y) points.
 pub fn log_log_slope(pts: &[(f64, f64)]) -> Option<f64> {
@@ -150,14 +161,27 @@ impl LogLogFit {
         })
     }
 
-    /// The x at which the line reaches `y`, and whether that lies beyond
-    /// the fitted range (an extrapolation); `None` unless the line falls.
+    /// Whether the fit spans enough to mean something: at least
+    /// [`MIN_FIT_POINTS`] points over at least [`MIN_FIT_SPAN`] times in x.
+    pub fn is_trustworthy(&self) -> bool {
+        self.points >= MIN_FIT_POINTS
+            && self.ln_x_range.1 - self.ln_x_range.0 >= MIN_FIT_SPAN.ln() - 1e-12
+    }
+
+    /// The x at which the line reaches `y`, and whether that lies outside
+    /// the fitted range (an extrapolation); `None` unless the line falls,
+    /// and `None` more than [`MAX_EXTRAPOLATION`] times beyond the range.
     pub fn x_at(&self, y: f64) -> Option<(f64, bool)> {
-        if self.slope >= 0.0 {
+        if self.slope >= 0.0 || !(y > 0.0) {
             return None;
         }
         let ln_x = (y.ln() - self.intercept) / self.slope;
-        Some((ln_x.exp(), ln_x > self.ln_x_range.1))
+        let (lo, hi) = self.ln_x_range;
+        let reach = MAX_EXTRAPOLATION.ln();
+        if ln_x < lo - reach || ln_x > hi + reach {
+            return None;
+        }
+        Some((ln_x.exp(), ln_x < lo || ln_x > hi))
     }
 }
 
@@ -220,7 +244,9 @@ impl Table {
         self.rows.push(cells);
     }
 
-    /// Aligned plain text.
+    /// Aligned plain text, at most [`COLUMNS`] wide: one line per row
+    /// when the table fits, else one block per row (the first cell as its
+    /// heading, every other cell as `column: value` under it).
     pub fn to_text(&self) -> String {
         let n = self.columns.len();
         let mut widths: Vec<usize> = self.columns.iter().map(|c| c.chars().count()).collect();
@@ -229,20 +255,38 @@ impl Table {
                 widths[i] = widths[i].max(c.chars().count());
             }
         }
+        let mut s = wrap(&self.title, "", "  ", COLUMNS);
+        let fits = |k: usize| 1 + widths.iter().take(k).map(|w| w + 2).sum::<usize>() <= COLUMNS;
+        // Too wide: the last column (notes, say) under each row, or else
+        // one block per row.
+        let shown = if fits(n) {
+            n
+        } else if n > 2 && fits(n - 1) {
+            n - 1
+        } else {
+            return s + &self.as_blocks();
+        };
         let line = |cells: &[String]| {
             let mut s = String::from(" ");
-            for (i, c) in cells.iter().enumerate().take(n) {
+            for (i, c) in cells.iter().enumerate().take(shown) {
                 let pad = widths[i] - c.chars().count();
                 s += &format!(" {c}{} ", " ".repeat(pad));
             }
-            s.trim_end().to_string() + "\n"
+            let mut s = s.trim_end().to_string() + "\n";
+            if shown < n {
+                if let Some(last) = cells.get(n - 1).filter(|c| !c.is_empty()) {
+                    let text = format!("{}: {last}", self.columns[n - 1]);
+                    s += &wrap(&text, "      ", "        ", COLUMNS);
+                }
+            }
+            s
         };
-        let mut s = format!("{}\n", self.title);
-        s += &line(&self.columns);
+        s += &line(&self.columns[..shown]);
         s += &format!(
             "  {}\n",
             widths
                 .iter()
+                .take(shown)
                 .map(|w| "-".repeat(*w))
                 .collect::<Vec<_>>()
                 .join("  ")
@@ -252,6 +296,56 @@ impl Table {
         }
         s
     }
+
+    /// The rows as blocks: a table too wide for one line per row.
+    fn as_blocks(&self) -> String {
+        let mut s = String::new();
+        for r in &self.rows {
+            let Some((head, rest)) = r.split_first() else {
+                continue;
+            };
+            s += &wrap(
+                &format!("{}: {head}", self.columns[0]),
+                "  - ",
+                "      ",
+                COLUMNS,
+            );
+            for (c, v) in self.columns.iter().skip(1).zip(rest) {
+                if !v.is_empty() {
+                    s += &wrap(&format!("{c}: {v}"), "      ", "        ", COLUMNS);
+                }
+            }
+        }
+        s
+    }
+}
+
+/// The widest line a report prints.
+pub const COLUMNS: usize = 100;
+
+/// `text` wrapped at spaces to lines of at most `width` characters, the
+/// first line starting with `first`, the others with `rest`; a word longer
+/// than a line (a path, say) gets a line of its own. Ends with a newline.
+pub fn wrap(text: &str, first: &str, rest: &str, width: usize) -> String {
+    let mut out = String::new();
+    let mut line = first.to_string();
+    let mut empty = true;
+    for word in text.split(' ').filter(|w| !w.is_empty()) {
+        let len = line.chars().count() + usize::from(!empty) + word.chars().count();
+        if !empty && len > width {
+            out += line.trim_end();
+            out += "\n";
+            line = rest.to_string();
+            empty = true;
+        }
+        if !empty {
+            line.push(' ');
+        }
+        line += word;
+        empty = false;
+    }
+    out += line.trim_end();
+    out + "\n"
 }
 
 /// A chapter's report.
@@ -289,10 +383,10 @@ impl Report {
     pub fn to_text(&self, times: Times) -> String {
         let mut s = format!("== {} ==\n", self.title);
         for (k, v) in &self.facts {
-            let _ = writeln!(s, "  {k}: {v}");
+            s += &wrap(&format!("{k}: {v}"), "  ", "      ", COLUMNS);
         }
-        let _ = writeln!(s, "  built: {}", list_or_none(&self.built));
-        let _ = writeln!(s, "  left out: {}", list_or_none(&self.left_out));
+        s += &list("built", &self.built);
+        s += &list("left out", &self.left_out);
         let _ = writeln!(
             s,
             "  NaN/Inf caught before the image: {}",
@@ -305,16 +399,15 @@ impl Report {
         if let Some(et) = &self.error_vs_time {
             s += "\n";
             s += &self.error_table(et, times).to_text();
-            for series in et.series().iter().filter(|_| et.show_slopes) {
-                match (et.slope(series), times) {
-                    (Some(k), Times::Show) => {
-                        let _ =
-                            writeln!(s, "  log-log slope of error against time, {series}: {k:.2}");
-                    }
-                    (Some(_), Times::Hide) => {
-                        let _ = writeln!(s, "  log-log slope of error against time, {series}: -");
-                    }
-                    (None, _) => {}
+            if et.show_slopes {
+                s += "  log-log slope of error against time (— = fewer than 3 runs or under 4x in time):\n";
+                for series in et.series() {
+                    let k = match (et.slope(&series), times) {
+                        (Some(k), Times::Show) => format!("{k:.2}"),
+                        (Some(_), Times::Hide) => "-".into(),
+                        (None, _) => "—".into(),
+                    };
+                    s += &wrap(&format!("{series}: {k}"), "    ", "      ", COLUMNS);
                 }
             }
         }
@@ -403,17 +496,69 @@ impl Report {
     }
 }
 
-fn list_or_none(items: &[String]) -> String {
+/// `  name: nothing`, or `  name:` and one wrapped `- item` per line.
+fn list(name: &str, items: &[String]) -> String {
     if items.is_empty() {
-        "nothing".into()
-    } else {
-        items.join("; ")
+        return format!("  {name}: nothing\n");
     }
+    let mut s = format!("  {name}:\n");
+    for item in items {
+        s += &wrap(item, "    - ", "      ", COLUMNS);
+    }
+    s
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn wrap_breaks_at_spaces_with_a_hanging_indent() {
+        let w = wrap("aaa bbb ccc ddd", "  ", "    ", 10);
+        assert_eq!(w, "  aaa bbb\n    ccc\n    ddd\n");
+        // A word longer than a line gets a line of its own.
+        assert_eq!(wrap("x 0123456789ab y", "", "", 8), "x\n0123456789ab\ny\n");
+    }
+
+    #[test]
+    fn wide_tables_keep_within_the_columns() {
+        let mut t = Table::new("t", &["name", "value", "notes"]);
+        t.row(vec!["a".into(), "1".into(), "note ".repeat(30)]);
+        let text = t.to_text();
+        assert!(text.lines().all(|l| l.chars().count() <= COLUMNS), "{text}");
+        // The notes go under their row.
+        assert!(text.contains("  a     1\n      notes: note note"), "{text}");
+        let mut wide = Table::new("w", &["case", "expected", "measured"]);
+        wide.row(vec!["c".into(), "e ".repeat(60), "m ".repeat(40)]);
+        let text = wide.to_text();
+        assert!(text.lines().all(|l| l.chars().count() <= COLUMNS), "{text}");
+        assert!(text.contains("  - case: c\n      expected: e e"), "{text}");
+    }
+
+    #[test]
+    fn a_slope_needs_three_runs_over_four_times_in_time() {
+        let row = |t: f64| Measurement {
+            series: "mc".into(),
+            variant: String::new(),
+            seconds: t,
+            samples: 1,
+            error: 1.0 / t.sqrt(),
+            notes: String::new(),
+        };
+        let et = |ts: &[f64]| ErrorTime {
+            rows: ts.iter().map(|t| row(*t)).collect(),
+            ..ErrorTime::default()
+        };
+        assert_eq!(et(&[1.0, 4.0]).slope("mc"), None);
+        assert_eq!(et(&[1.0, 1.5, 3.9]).slope("mc"), None);
+        assert!(et(&[1.0, 2.0, 4.0]).slope("mc").is_some());
+        // Read off the line within 10x of the measured times only.
+        let fit = et(&[1.0, 2.0, 4.0]).fit("mc").unwrap();
+        let (t, extrapolated) = fit.x_at(0.25).unwrap(); // t = 16
+        assert!((t - 16.0).abs() < 1e-9 && extrapolated);
+        assert_eq!(fit.x_at(0.1), None); // t = 100: 25x beyond
+        assert!(!fit.x_at(0.6).unwrap().1);
+    }
 
     #[test]
     fn slope_of_inverse_square_root_is_minus_half() {

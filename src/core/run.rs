@@ -186,16 +186,11 @@ pub fn run_headless(
     )
     .map_err(io)?;
     write!(w, "{}", report.to_text(Times::Show)).map_err(io)?;
-    writeln!(
-        w,
-        "  wrote: {}\n",
-        files
-            .iter()
-            .map(|f| f.display().to_string())
-            .collect::<Vec<_>>()
-            .join(", ")
-    )
-    .map_err(io)?;
+    writeln!(w, "  wrote {} files:", files.len()).map_err(io)?;
+    for f in &files {
+        writeln!(w, "    {}", f.display()).map_err(io)?;
+    }
+    writeln!(w).map_err(io)?;
     let rmse = render.error_series().last().map(|p| p.1).or_else(|| {
         let (image, reference) = (render.view(0), render.reference()?);
         ((image.width, image.height) == (reference.width, reference.height))

@@ -166,6 +166,50 @@ impl Scene {
         self.meshes.iter().map(|m| m.triangles.len()).sum()
     }
 
+    /// The scene's lights in words, the same in every chapter's report:
+    /// "1 area light", "2 point lights, 1 sky", or "no lights". Area
+    /// lights are emissive meshes; emissive SDFs count apart.
+    pub fn describe_lights(&self) -> String {
+        let emissive = |m: usize| self.materials[m].is_emissive();
+        let mut kinds: Vec<(&str, usize)> = vec![
+            (
+                "area light",
+                self.meshes.iter().filter(|m| emissive(m.material)).count(),
+            ),
+            (
+                "emissive SDF",
+                self.sdfs.iter().filter(|o| emissive(o.material)).count(),
+            ),
+        ];
+        for l in &self.lights {
+            let kind = match l {
+                file::LightSection::Point { .. } => "point light",
+                file::LightSection::Directional { .. } => "directional light",
+                file::LightSection::Spot { .. } => "spot light",
+                file::LightSection::Environment { .. } => "environment",
+                file::LightSection::Sky { .. } => "sky",
+            };
+            match kinds.iter_mut().find(|(k, _)| *k == kind) {
+                Some((_, n)) => *n += 1,
+                None => kinds.push((kind, 1)),
+            }
+        }
+        let parts: Vec<String> = kinds
+            .iter()
+            .filter(|(_, n)| *n > 0)
+            .map(|(k, n)| match (*n, *k) {
+                (1, k) => format!("1 {k}"),
+                (n, "sky") => format!("{n} skies"),
+                (n, k) => format!("{n} {k}s"),
+            })
+            .collect();
+        if parts.is_empty() {
+            "no lights".into()
+        } else {
+            parts.join(", ")
+        }
+    }
+
     /// Whether any surface emits light.
     pub fn has_emitters(&self) -> bool {
         self.meshes

@@ -8,5 +8,6 @@ mod film_and_main;
 mod grading;
 mod layout;
 mod non_square;
+mod reports;
 mod scene_docs;
 mod scene_errors;
