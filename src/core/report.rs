@@ -256,43 +256,49 @@ impl Table {
             }
         }
         let mut s = wrap(&self.title, "", "  ", COLUMNS);
-        let fits = |k: usize| 1 + widths.iter().take(k).map(|w| w + 2).sum::<usize>() <= COLUMNS;
-        // Too wide: the last column (notes, say) under each row, or else
-        // one block per row.
-        let shown = if fits(n) {
-            n
-        } else if n > 2 && fits(n - 1) {
-            n - 1
+        let total = 1 + widths.iter().map(|w| w + 2).sum::<usize>();
+        // Too wide: the widest column but the first (notes, say) goes under
+        // each row; if that is not enough, one block per row.
+        let under = if total <= COLUMNS {
+            None
         } else {
-            return s + &self.as_blocks();
+            let widest = (1..n).max_by_key(|&i| (widths[i], i));
+            match widest {
+                Some(i) if n > 2 && total - widths[i] - 2 <= COLUMNS => Some(i),
+                _ => return s + &self.as_blocks(),
+            }
         };
-        let line = |cells: &[String]| {
+        let line = |cells: &[String], header: bool| {
             let mut s = String::from(" ");
-            for (i, c) in cells.iter().enumerate().take(shown) {
-                let pad = widths[i] - c.chars().count();
+            for (i, c) in cells.iter().enumerate().take(n) {
+                if Some(i) == under {
+                    continue;
+                }
+                let pad = widths[i].saturating_sub(c.chars().count());
                 s += &format!(" {c}{} ", " ".repeat(pad));
             }
             let mut s = s.trim_end().to_string() + "\n";
-            if shown < n {
-                if let Some(last) = cells.get(n - 1).filter(|c| !c.is_empty()) {
-                    let text = format!("{}: {last}", self.columns[n - 1]);
+            if let Some(i) = under.filter(|_| !header) {
+                if let Some(cell) = cells.get(i).filter(|c| !c.is_empty()) {
+                    let text = format!("{}: {cell}", self.columns[i]);
                     s += &wrap(&text, "      ", "        ", COLUMNS);
                 }
             }
             s
         };
-        s += &line(&self.columns[..shown]);
+        s += &line(&self.columns, true);
         s += &format!(
             "  {}\n",
             widths
                 .iter()
-                .take(shown)
-                .map(|w| "-".repeat(*w))
+                .enumerate()
+                .filter(|(i, _)| Some(*i) != under)
+                .map(|(_, w)| "-".repeat(*w))
                 .collect::<Vec<_>>()
                 .join("  ")
         );
         for r in &self.rows {
-            s += &line(r);
+            s += &line(r, false);
         }
         s
     }
@@ -529,7 +535,7 @@ mod tests {
         // The notes go under their row.
         assert!(text.contains("  a     1\n      notes: note note"), "{text}");
         let mut wide = Table::new("w", &["case", "expected", "measured"]);
-        wide.row(vec!["c".into(), "e ".repeat(60), "m ".repeat(40)]);
+        wide.row(vec!["c".into(), "e ".repeat(60), "m ".repeat(60)]);
         let text = wide.to_text();
         assert!(text.lines().all(|l| l.chars().count() <= COLUMNS), "{text}");
         assert!(text.contains("  - case: c\n      expected: e e"), "{text}");

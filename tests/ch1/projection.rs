@@ -145,19 +145,16 @@ fn the_report_says_what_was_built_and_left_out() {
         .built
         .iter()
         .any(|b| b.contains("wireframes of 1 meshes")));
-    assert!(report
-        .left_out
-        .iter()
-        .any(|l| l == "lights: the scene has none"));
+    assert!(report.facts.iter().any(|(k, v)| k == "lights"
+        && v == "no lights, not used by this chapter (projection needs no light)"));
     assert!(
         report.error_vs_time.is_none() && report.stability.is_empty(),
         "no studies unless asked"
     );
     let (report, _) = render_report(scene("bunny"), true);
-    assert!(report
-        .left_out
-        .iter()
-        .any(|l| l == "1 light: projection needs no light"));
+    assert!(report.facts.iter().any(|(k, v)| k == "lights"
+        && v.ends_with(", not used by this chapter (projection needs no light)")
+        && v.starts_with("1 ")));
     let et = report.error_vs_time.unwrap();
     assert_eq!(et.rows.len(), 22, "11 depths, f32 and f64");
     // The f32 camera is within a hundredth of a pixel from 1e-2 to 1e7.
