@@ -1,28 +1,47 @@
 #!/usr/bin/env bash
-# Regenerates every figure of the book from the chapter binaries.
-# Usage: bash book/figures.sh   (from anywhere; takes a few minutes)
+# Regenerates every figure and table of the book, all six chapters, from the
+# chapter binaries. tests/project/figures.rs checks that every image the book
+# shows is in book/src/figures and is made by a line of this script.
+# Usage: bash book/figures.sh   (from anywhere; several minutes on 2 cores)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=book/src/figures
 cargo build --release --bins
+bin=${CARGO_TARGET_DIR:-target}/release
 
 # Chapter 1: wireframes, depth and points of every shipped scene; the
-# precision study and stiff cases of the tetrahedron (CSV).
+# precision study and stiff cases of the tetrahedron (CSV and report).
 for scene in tetrahedron railroad bunny cornell-box; do
-  target/release/ch1 --scene "scenes/$scene.toml" --out "$out" > /dev/null
+  "$bin/ch1" --scene "scenes/$scene.toml" --out "$out" > /dev/null
 done
-target/release/ch1 --scene scenes/tetrahedron.toml --report --out "$out" > "$out/ch1-tetrahedron-report.txt"
+"$bin/ch1" --scene scenes/tetrahedron.toml --report --out "$out" > "$out/ch1-tetrahedron-report.txt"
 
-# Chapter 2: every view of the tetrahedron and the interpenetrating scene at
-# 16 samples per pixel; the anti-aliasing study and stiff cases (CSV and
-# the report's text).
-for scene in tetrahedron interpenetrating; do
-  target/release/ch2 --scene "scenes/$scene.toml" --spp 16 --out "$out" > /dev/null
+# Chapter 2: every view of the tetrahedron, the interpenetrating scene and
+# the Cornell box at 16 samples per pixel; the anti-aliasing study and stiff
+# cases (CSV and the report's text).
+for scene in tetrahedron interpenetrating cornell-box; do
+  "$bin/ch2" --scene "scenes/$scene.toml" --spp 16 --out "$out" > /dev/null
 done
-target/release/ch2 --scene scenes/tetrahedron.toml --spp 16 --report --out "$out" > "$out/ch2-tetrahedron-report.txt"
+"$bin/ch2" --scene scenes/tetrahedron.toml --spp 16 --report --out "$out" > "$out/ch2-tetrahedron-report.txt"
+
+# Chapter 3: every view of the bunny at 16 samples per pixel.
+"$bin/ch3" --scene scenes/bunny.toml --spp 16 --out "$out" > /dev/null
 
 # Chapter 4: every view of the SDF shapes with the report (error against
 # time, stiff cases); the Lipschitz scene with holes, then fixed.
-target/release/ch4 --scene scenes/sdf-shapes.toml --report --out "$out" > "$out/ch4-sdf-shapes-report.txt"
-target/release/ch4 --scene scenes/sdf-lipschitz.toml --out "$out" > /dev/null
-target/release/ch4 --scene scenes/sdf-lipschitz.toml --step-factor 0.1 --max-steps 2048 --max-distance 20 --out "$out/ch4-lipschitz-fixed" > /dev/null
+"$bin/ch4" --scene scenes/sdf-shapes.toml --report --out "$out" > "$out/ch4-sdf-shapes-report.txt"
+"$bin/ch4" --scene scenes/sdf-lipschitz.toml --out "$out" > /dev/null
+"$bin/ch4" --scene scenes/sdf-lipschitz.toml --step-factor 0.1 --max-steps 2048 --max-distance 20 --out "$out/ch4-lipschitz-fixed" > /dev/null
+
+# Chapter 5: the lights gallery, the BRDF row, the Cornell box (direct light
+# only), the SDFs lit, and the Lambertian sphere with the strategy study
+# (its two error-against-time plots).
+"$bin/ch5" --scene scenes/lights-gallery.toml --spp 64 --out "$out" > /dev/null
+"$bin/ch5" --scene scenes/brdf-row.toml --spp 64 --out "$out" > /dev/null
+"$bin/ch5" --scene scenes/cornell-box.toml --spp 32 --out "$out" > /dev/null
+"$bin/ch5" --scene scenes/sdf-lit.toml --spp 8 --out "$out" > /dev/null
+"$bin/ch5" --scene scenes/lambert-sphere.toml --spp 16 --report --out "$out" > "$out/ch5-lambert-sphere-report.txt"
+
+# Chapter 6: the Cornell box at 128 spp (final image, noise image, bounce
+# strip), the spp strip, and the strategy study (table and plots).
+"$bin/ch6" --scene scenes/cornell-box.toml --spp 128 --spp-figure 128 --report --threads 2 --out "$out" > "$out/ch6-cornell-box-report.txt"

@@ -232,7 +232,7 @@ impl Render for ReflectionRender {
         let mut files = Vec::new();
         for (name, plot) in report.error_vs_time.iter().flat_map(super::studies::plots) {
             let path = dir.join(name);
-            plot.write_png(&path, 640, 420)?;
+            plot.write_png(&path, 760, 420)?;
             files.push(path);
         }
         Ok(files)

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use crate::core::error::Result;
 use crate::core::film::Film;
-use crate::core::plot::{LogLogPlot, Look};
+use crate::core::plot::{write_captioned_strip, LogLogPlot, Look};
 use crate::core::report::ErrorTime;
 
 use super::accumulate::Accumulator;
@@ -18,6 +18,16 @@ use crate::scene::Scene;
 
 /// The "up to k bounces" images of the lecture's sequence.
 pub const STRIP_BOUNCES: [u32; 6] = [0, 1, 2, 4, 8, 16];
+
+/// Their captions, as the lecture names them.
+pub const STRIP_LABELS: [&str; 6] = [
+    "direct",
+    "one bounce",
+    "two bounces",
+    "four bounces",
+    "eight bounces",
+    "sixteen bounces",
+];
 
 /// Films side by side with a 2-pixel black gap.
 pub fn side_by_side(films: &[Film]) -> Film {
@@ -44,12 +54,14 @@ pub fn write_layers(acc: &Accumulator, out: &Path, stem: &str) -> Result<Vec<Pat
     if acc.layers.is_none() {
         return Ok(files);
     }
-    let strip: Vec<Film> = STRIP_BOUNCES
+    let strip: Vec<(Film, &str)> = STRIP_BOUNCES
         .iter()
-        .filter_map(|k| acc.prefix(*k as usize + 1))
+        .zip(STRIP_LABELS)
+        .filter_map(|(k, label)| Some((acc.prefix(*k as usize + 1)?, label)))
         .collect();
     let path = out.join(format!("{stem}-bounces.png"));
-    side_by_side(&strip).write_png(&path)?;
+    let captioned: Vec<(&Film, &str)> = strip.iter().map(|(f, l)| (f, *l)).collect();
+    write_captioned_strip(&captioned, &path)?;
     files.push(path);
     for slot in 0..LAYER_SLOTS {
         let name = match slot {
@@ -88,11 +100,12 @@ pub fn spp_strip(
         acc.add_samples(&world, &camera, path, sampler, seed, count);
         let mut f = acc.mean();
         f.scrub_nonfinite();
-        films.push(f);
+        films.push((f, format!("{spp} spp")));
         spp *= 2;
     }
     let out = dir.join(format!("{stem}-spp.png"));
-    side_by_side(&films).write_png(&out)?;
+    let captioned: Vec<(&Film, &str)> = films.iter().map(|(f, l)| (f, l.as_str())).collect();
+    write_captioned_strip(&captioned, &out)?;
     Ok(out)
 }
 

@@ -408,7 +408,7 @@ impl Render for PathTracingRender {
         if let Some(et) = &report.error_vs_time {
             for name in ["cornell", "furnace"] {
                 let path = dir.join(format!("{stem}-strategies-{name}.png"));
-                strategy_plot(et, name).write_png(&path, 640, 440)?;
+                strategy_plot(et, name).write_png(&path, 760, 440)?;
                 files.push(path);
             }
         }

@@ -14,15 +14,18 @@ use std::sync::OnceLock;
 use plotters::coord::Shift;
 use plotters::element::{Drawable, PointCollection};
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::{register_font, FontStyle};
 use plotters_backend::{BackendCoord, DrawingErrorKind};
 
 use crate::core::error::{Error, Result};
-use crate::core::film::write_atomically;
+use crate::core::film::{write_atomically, Film};
 use crate::core::report::ErrorTime;
 
 /// DejaVu Sans, Bitstream Vera licence (`assets/fonts/DejaVu-LICENSE.txt`).
 static FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+/// Pixels right of the axes kept for the legend.
+const LEGEND_WIDTH: i32 = 170;
 /// The family name plotters looks the font up by.
 const FAMILY: &str = "sans-serif";
 
@@ -151,17 +154,7 @@ impl LogLogPlot {
     /// Writes the plot as a PNG, atomically.
     pub fn write_png(&self, path: &Path, width: u32, height: u32) -> Result<()> {
         let pixels = self.draw(width, height)?;
-        write_atomically(path, |tmp| {
-            image::save_buffer_with_format(
-                tmp,
-                &pixels,
-                width,
-                height,
-                image::ColorType::Rgb8,
-                image::ImageFormat::Png,
-            )
-            .map_err(|e| e.to_string())
-        })
+        write_rgb_png(&pixels, width, height, path)
     }
 
     fn draw_on<DB: DrawingBackend>(
@@ -179,10 +172,14 @@ impl LogLogPlot {
             })
             .collect();
         let (xs, ys) = decades(lines.iter().flat_map(|(_, p)| p.iter().copied()));
-        let mut chart = ChartBuilder::on(root)
+        // The legend gets a panel of its own right of the axes, so it never
+        // hides a line.
+        let (plot_area, legend_area) =
+            root.split_horizontally(root.dim_in_pixel().0 as i32 - LEGEND_WIDTH);
+        let mut chart = ChartBuilder::on(&plot_area)
             .caption(&self.title, (FAMILY, 17))
             .margin(12)
-            .margin_right(28)
+            .margin_right(20)
             .x_label_area_size(44)
             .y_label_area_size(64)
             .build_cartesian_2d(xs.clone().log_scale(), ys.clone().log_scale())?;
@@ -197,44 +194,43 @@ impl LogLogPlot {
             .light_line_style(RGBColor(235, 235, 235))
             .bold_line_style(RGBColor(200, 200, 200))
             .draw()?;
+        let grey = RGBColor(120, 120, 120);
+        let mut legend: Vec<(&str, Mark<(i32, i32)>)> = Vec::new();
         if let Some(g) = &self.guide {
             if let Some(seg) = guide_segment(g.slope, &lines, chart.x_range(), chart.y_range()) {
-                let grey = RGBColor(120, 120, 120).stroke_width(1);
-                chart
-                    .draw_series(DashedLineSeries::new(seg, 6, 5, grey))?
-                    .label(&g.label)
-                    .legend(move |at| Mark {
-                        at,
-                        colour: RGBColor(120, 120, 120),
-                        marker: None,
-                        legend_line: Some(true),
-                    });
+                chart.draw_series(DashedLineSeries::new(seg, 6, 5, grey.stroke_width(1)))?;
+                let mark = Mark {
+                    at: (0, 0),
+                    colour: grey,
+                    marker: None,
+                    legend_line: Some(true),
+                };
+                legend.push((&g.label, mark));
             }
         }
         for (s, pts) in &lines {
-            let c = s.look.rgb();
-            let line = c.stroke_width(2);
+            let line = s.look.rgb().stroke_width(2);
             if s.look.dashed {
                 chart.draw_series(DashedLineSeries::new(pts.iter().copied(), 8, 5, line))?;
             } else {
                 chart.draw_series(LineSeries::new(pts.iter().copied(), line))?;
             }
-            let look = s.look;
-            chart
-                .draw_series(pts.iter().map(|p| Mark::point(*p, look)))?
-                .label(&s.label)
-                .legend(move |at| Mark {
-                    legend_line: Some(look.dashed),
-                    ..Mark::point(at, look)
-                });
+            chart.draw_series(pts.iter().map(|p| Mark::point(*p, s.look)))?;
+            let mark = Mark {
+                legend_line: Some(s.look.dashed),
+                ..Mark::point((0, 0), s.look)
+            };
+            legend.push((&s.label, mark));
         }
-        chart
-            .configure_series_labels()
-            .label_font((FAMILY, 12))
-            .background_style(WHITE.mix(0.85))
-            .border_style(RGBColor(160, 160, 160))
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()?;
+        let text = TextStyle::from((FAMILY, 13).into_font())
+            .color(&BLACK)
+            .pos(Pos::new(HPos::Left, VPos::Center));
+        for (i, (label, mut mark)) in legend.into_iter().enumerate() {
+            let y = 48 + 20 * i as i32;
+            mark.at = (4, y);
+            legend_area.draw(&mark)?;
+            legend_area.draw_text(label, &text, (34, y))?;
+        }
         Ok(())
     }
 }
@@ -276,6 +272,67 @@ impl LogLogPlot {
             }),
         }
     }
+}
+
+/// Images side by side on white, 2 pixels apart, each with its caption
+/// centred under it: the book's strips (bounces, samples per pixel).
+/// Returns 8-bit RGB pixels, width and height.
+pub fn captioned_strip(images: &[(&Film, &str)]) -> Result<(Vec<u8>, u32, u32)> {
+    font()?;
+    let gap = 2;
+    let band = 22;
+    let image_h = images.iter().map(|(f, _)| f.height).max().unwrap_or(1);
+    let width = images.iter().map(|(f, _)| f.width).sum::<u32>()
+        + gap * images.len().saturating_sub(1) as u32;
+    let (width, height) = (width.max(1), image_h + band);
+    let mut pixels = vec![255u8; (width * height * 3) as usize];
+    let mut x0 = 0;
+    for (film, _) in images {
+        let rgb = film.to_srgb8();
+        for y in 0..film.height {
+            let src = (y * film.width * 3) as usize;
+            let dst = ((y * width + x0) * 3) as usize;
+            let n = (film.width * 3) as usize;
+            pixels[dst..dst + n].copy_from_slice(&rgb[src..src + n]);
+        }
+        x0 += film.width + gap;
+    }
+    {
+        let root = BitMapBackend::with_buffer(&mut pixels, (width, height)).into_drawing_area();
+        let style = TextStyle::from((FAMILY, 14).into_font())
+            .color(&BLACK)
+            .pos(Pos::new(HPos::Center, VPos::Center));
+        let mut x0 = 0i32;
+        for (film, caption) in images {
+            let at = (x0 + film.width as i32 / 2, image_h as i32 + band as i32 / 2);
+            root.draw_text(caption, &style, at)
+                .map_err(|e| Error::Usage(format!("drawing a caption: {e}")))?;
+            x0 += (film.width + gap) as i32;
+        }
+        root.present()
+            .map_err(|e| Error::Usage(format!("drawing a caption: {e}")))?;
+    }
+    Ok((pixels, width, height))
+}
+
+/// [`captioned_strip`] written as a PNG, atomically.
+pub fn write_captioned_strip(images: &[(&Film, &str)], path: &Path) -> Result<()> {
+    let (pixels, width, height) = captioned_strip(images)?;
+    write_rgb_png(&pixels, width, height, path)
+}
+
+fn write_rgb_png(pixels: &[u8], width: u32, height: u32, path: &Path) -> Result<()> {
+    write_atomically(path, |tmp| {
+        image::save_buffer_with_format(
+            tmp,
+            pixels,
+            width,
+            height,
+            image::ColorType::Rgb8,
+            image::ImageFormat::Png,
+        )
+        .map_err(|e| e.to_string())
+    })
 }
 
 fn loggable((x, y): (f64, f64)) -> bool {
@@ -525,6 +582,24 @@ mod tests {
         assert!(count(PALETTE[1]) > 50, "vermillion {}", count(PALETTE[1]));
         let dark = px.chunks(3).filter(|p| p.iter().all(|v| *v < 60)).count();
         assert!(dark > 500, "dark pixels {dark}");
+    }
+
+    #[test]
+    fn a_strip_keeps_its_images_and_captions_them() {
+        let mut red = Film::new(40, 30);
+        red.pixels.fill(glam::Vec3::X);
+        let blue = Film {
+            pixels: vec![glam::Vec3::Z; 40 * 30],
+            ..Film::new(40, 30)
+        };
+        let (px, w, h) = captioned_strip(&[(&red, "one"), (&blue, "two")]).unwrap();
+        assert_eq!((w, h), (82, 52));
+        assert_eq!(at(&px, w, 10, 10), (255, 0, 0));
+        assert_eq!(at(&px, w, 60, 10), (0, 0, 255));
+        // The gap stays white, and the caption band has dark text.
+        assert_eq!(at(&px, w, 40, 10), (255, 255, 255));
+        let band = &px[(30 * w * 3) as usize..];
+        assert!(band.chunks(3).filter(|p| p[0] < 100).count() > 20);
     }
 
     #[test]

@@ -4,6 +4,7 @@
 mod common;
 
 mod book;
+mod figures;
 mod film_and_main;
 mod grading;
 mod layout;
