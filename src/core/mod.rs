@@ -13,3 +13,6 @@ pub mod report;
 pub mod run;
 pub mod sampling;
 pub mod stage;
+pub mod strip;
+pub mod style;
+pub mod table;

@@ -6,98 +6,22 @@
 //!
 //! Text is rendered from the DejaVu Sans font shipped in `assets/fonts/`
 //! (Bitstream Vera licence, beside it), so a fresh machine needs no system
-//! fonts.
+//! fonts; the font, palette and markers are in [`crate::core::style`].
 
 use std::path::Path;
-use std::sync::OnceLock;
 
 use plotters::coord::Shift;
-use plotters::element::{Drawable, PointCollection};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use plotters::style::{register_font, FontStyle};
-use plotters_backend::{BackendCoord, DrawingErrorKind};
 
 use crate::core::error::{Error, Result};
-use crate::core::film::{write_atomically, Film};
 use crate::core::report::ErrorTime;
+pub use crate::core::strip::{captioned_strip, write_captioned_strip};
+use crate::core::style::{font, write_rgb_png, Mark, FAMILY};
+pub use crate::core::style::{Look, Marker, PALETTE};
 
-/// DejaVu Sans, Bitstream Vera licence (`assets/fonts/DejaVu-LICENSE.txt`).
-static FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 /// Pixels right of the axes kept for the legend.
 const LEGEND_WIDTH: i32 = 170;
-/// The family name plotters looks the font up by.
-const FAMILY: &str = "sans-serif";
-
-/// Registers the font once; an error if the bytes are not a font.
-fn font() -> Result<()> {
-    static DONE: OnceLock<bool> = OnceLock::new();
-    let ok = *DONE.get_or_init(|| register_font(FAMILY, FontStyle::Normal, FONT).is_ok());
-    if ok {
-        Ok(())
-    } else {
-        Err(Error::Usage("the bundled plot font does not parse".into()))
-    }
-}
-
-/// Okabe–Ito colours, safe for the common colour-vision deficiencies
-/// (yellow left out: it vanishes on white).
-pub const PALETTE: [(u8, u8, u8); 7] = [
-    (0, 114, 178),   // blue
-    (213, 94, 0),    // vermillion
-    (0, 158, 115),   // bluish green
-    (204, 121, 167), // reddish purple
-    (230, 159, 0),   // orange
-    (86, 180, 233),  // sky blue
-    (0, 0, 0),       // black
-];
-
-/// The point marker of a series.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Marker {
-    /// A filled circle.
-    Circle,
-    /// A filled triangle.
-    Triangle,
-    /// An outlined square.
-    Square,
-    /// A cross.
-    Cross,
-}
-
-/// How one series looks.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Look {
-    /// Index into [`PALETTE`] (taken modulo its length).
-    pub colour: usize,
-    /// The marker at every point.
-    pub marker: Marker,
-    /// Dashed instead of solid line.
-    pub dashed: bool,
-}
-
-impl Look {
-    /// The `i`-th of a sequence of looks that differ in colour and marker.
-    pub fn nth(i: usize) -> Look {
-        const MARKERS: [Marker; 4] = [
-            Marker::Circle,
-            Marker::Triangle,
-            Marker::Square,
-            Marker::Cross,
-        ];
-        Look {
-            colour: i,
-            marker: MARKERS[i % MARKERS.len()],
-            dashed: false,
-        }
-    }
-
-    fn rgb(&self) -> RGBColor {
-        let (r, g, b) = PALETTE[self.colour % PALETTE.len()];
-        RGBColor(r, g, b)
-    }
-}
-
 /// One line of a plot.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Series {
@@ -274,67 +198,6 @@ impl LogLogPlot {
     }
 }
 
-/// Images side by side on white, 2 pixels apart, each with its caption
-/// centred under it: the book's strips (bounces, samples per pixel).
-/// Returns 8-bit RGB pixels, width and height.
-pub fn captioned_strip(images: &[(&Film, &str)]) -> Result<(Vec<u8>, u32, u32)> {
-    font()?;
-    let gap = 2;
-    let band = 22;
-    let image_h = images.iter().map(|(f, _)| f.height).max().unwrap_or(1);
-    let width = images.iter().map(|(f, _)| f.width).sum::<u32>()
-        + gap * images.len().saturating_sub(1) as u32;
-    let (width, height) = (width.max(1), image_h + band);
-    let mut pixels = vec![255u8; (width * height * 3) as usize];
-    let mut x0 = 0;
-    for (film, _) in images {
-        let rgb = film.to_srgb8();
-        for y in 0..film.height {
-            let src = (y * film.width * 3) as usize;
-            let dst = ((y * width + x0) * 3) as usize;
-            let n = (film.width * 3) as usize;
-            pixels[dst..dst + n].copy_from_slice(&rgb[src..src + n]);
-        }
-        x0 += film.width + gap;
-    }
-    {
-        let root = BitMapBackend::with_buffer(&mut pixels, (width, height)).into_drawing_area();
-        let style = TextStyle::from((FAMILY, 14).into_font())
-            .color(&BLACK)
-            .pos(Pos::new(HPos::Center, VPos::Center));
-        let mut x0 = 0i32;
-        for (film, caption) in images {
-            let at = (x0 + film.width as i32 / 2, image_h as i32 + band as i32 / 2);
-            root.draw_text(caption, &style, at)
-                .map_err(|e| Error::Usage(format!("drawing a caption: {e}")))?;
-            x0 += (film.width + gap) as i32;
-        }
-        root.present()
-            .map_err(|e| Error::Usage(format!("drawing a caption: {e}")))?;
-    }
-    Ok((pixels, width, height))
-}
-
-/// [`captioned_strip`] written as a PNG, atomically.
-pub fn write_captioned_strip(images: &[(&Film, &str)], path: &Path) -> Result<()> {
-    let (pixels, width, height) = captioned_strip(images)?;
-    write_rgb_png(&pixels, width, height, path)
-}
-
-fn write_rgb_png(pixels: &[u8], width: u32, height: u32, path: &Path) -> Result<()> {
-    write_atomically(path, |tmp| {
-        image::save_buffer_with_format(
-            tmp,
-            pixels,
-            width,
-            height,
-            image::ColorType::Rgb8,
-            image::ImageFormat::Png,
-        )
-        .map_err(|e| e.to_string())
-    })
-}
-
 fn loggable((x, y): (f64, f64)) -> bool {
     x > 0.0 && y > 0.0 && x.is_finite() && y.is_finite()
 }
@@ -417,73 +280,6 @@ pub fn tick(v: f64) -> String {
             format!("1e{e}")
         } else {
             format!("{v:.0e}")
-        }
-    }
-}
-
-/// A point marker, optionally with a 24-pixel legend line through it
-/// (drawn from the anchor rightwards, the marker in its middle).
-struct Mark<C> {
-    at: C,
-    colour: RGBColor,
-    marker: Option<Marker>,
-    /// `Some(dashed)` for a legend entry.
-    legend_line: Option<bool>,
-}
-
-impl<C> Mark<C> {
-    fn point(at: C, look: Look) -> Mark<C> {
-        Mark {
-            at,
-            colour: look.rgb(),
-            marker: Some(look.marker),
-            legend_line: None,
-        }
-    }
-}
-
-impl<'b, C> PointCollection<'b, C> for &'b Mark<C> {
-    type Point = &'b C;
-    type IntoIter = std::iter::Once<&'b C>;
-    fn point_iter(self) -> Self::IntoIter {
-        std::iter::once(&self.at)
-    }
-}
-
-impl<C, DB: DrawingBackend> Drawable<DB> for Mark<C> {
-    fn draw<I: Iterator<Item = BackendCoord>>(
-        &self,
-        mut pos: I,
-        backend: &mut DB,
-        _: (u32, u32),
-    ) -> std::result::Result<(), DrawingErrorKind<DB::ErrorType>> {
-        let Some((mut x, y)) = pos.next() else {
-            return Ok(());
-        };
-        let thin = self.colour.stroke_width(2);
-        if let Some(dashed) = self.legend_line {
-            let pieces: &[(i32, i32)] = if dashed {
-                &[(0, 7), (11, 17), (21, 24)]
-            } else {
-                &[(0, 24)]
-            };
-            for (a, b) in pieces {
-                backend.draw_line((x + a, y), (x + b, y), &thin)?;
-            }
-            x += 12;
-        }
-        let fill = self.colour.filled();
-        match self.marker {
-            None => Ok(()),
-            Some(Marker::Circle) => backend.draw_circle((x, y), 4, &fill, true),
-            Some(Marker::Triangle) => {
-                backend.fill_polygon(vec![(x, y - 5), (x - 5, y + 4), (x + 5, y + 4)], &fill)
-            }
-            Some(Marker::Square) => backend.draw_rect((x - 3, y - 3), (x + 3, y + 3), &thin, false),
-            Some(Marker::Cross) => {
-                backend.draw_line((x - 4, y - 4), (x + 4, y + 4), &thin)?;
-                backend.draw_line((x - 4, y + 4), (x + 4, y - 4), &thin)
-            }
         }
     }
 }
@@ -582,24 +378,6 @@ mod tests {
         assert!(count(PALETTE[1]) > 50, "vermillion {}", count(PALETTE[1]));
         let dark = px.chunks(3).filter(|p| p.iter().all(|v| *v < 60)).count();
         assert!(dark > 500, "dark pixels {dark}");
-    }
-
-    #[test]
-    fn a_strip_keeps_its_images_and_captions_them() {
-        let mut red = Film::new(40, 30);
-        red.pixels.fill(glam::Vec3::X);
-        let blue = Film {
-            pixels: vec![glam::Vec3::Z; 40 * 30],
-            ..Film::new(40, 30)
-        };
-        let (px, w, h) = captioned_strip(&[(&red, "one"), (&blue, "two")]).unwrap();
-        assert_eq!((w, h), (82, 52));
-        assert_eq!(at(&px, w, 10, 10), (255, 0, 0));
-        assert_eq!(at(&px, w, 60, 10), (0, 0, 255));
-        // The gap stays white, and the caption band has dark text.
-        assert_eq!(at(&px, w, 40, 10), (255, 255, 255));
-        let band = &px[(30 * w * 3) as usize..];
-        assert!(band.chunks(3).filter(|p| p[0] < 100).count() > 20);
     }
 
     #[test]
