@@ -16,10 +16,10 @@ for scene in tetrahedron railroad bunny cornell-box; do
 done
 "$bin/ch1" --scene scenes/tetrahedron.toml --report --out "$out" > "$out/ch1-tetrahedron-report.txt"
 
-# Chapter 2: every view of the tetrahedron and the interpenetrating scene
-# at 16 samples per pixel; the anti-aliasing study and stiff
+# Chapter 2: every view of the tetrahedron, the interpenetrating scene and
+# the Cornell box at 16 samples per pixel; the anti-aliasing study and stiff
 # cases (CSV and the report's text).
-for scene in tetrahedron interpenetrating; do
+for scene in tetrahedron interpenetrating cornell-box; do
   "$bin/ch2" --scene "scenes/$scene.toml" --spp 16 --out "$out" > /dev/null
 done
 "$bin/ch2" --scene scenes/tetrahedron.toml --spp 16 --report --out "$out" > "$out/ch2-tetrahedron-report.txt"

@@ -91,6 +91,14 @@ pub fn attributes(color: Vec3, corner: usize) -> Attributes {
     a
 }
 
+/// A headlight at the eye: 0.1 + 0.9 |cos θ| between the camera-space
+/// normal `n` and the direction from the point `p` back to the eye (the
+/// same shading as chapters 3 and 4).
+pub fn headlight(n: DVec3, p: DVec3) -> f32 {
+    let cos = n.dot(-p.normalize_or_zero()).abs();
+    (0.1 + 0.9 * cos) as f32
+}
+
 /// The colour a triangle gets without vertex colours: its material's
 /// reflectance, or its emission scaled into [0, 1] for lights.
 pub fn material_color(m: &Material) -> Vec3 {
@@ -138,14 +146,29 @@ pub fn setup_scene(
             .get(mesh.material)
             .map(material_color)
             .unwrap_or(Vec3::splat(0.5));
+        // Material colours are lit by a headlight, as in chapters 3 and 4,
+        // so faces at different angles differ; vertex colours and lights
+        // are shown as they are.
+        let lit = mesh.colors.is_none()
+            && !materials
+                .get(mesh.material)
+                .is_some_and(|m| m.is_emissive());
         let per_triangle: Vec<(Vec<ScreenTriangle>, SetupStats)> = mesh
             .triangles
             .par_iter()
             .enumerate()
             .map(|(t, idx)| {
+                let cam_n = (camera_space[idx[1] as usize] - camera_space[idx[0] as usize])
+                    .cross(camera_space[idx[2] as usize] - camera_space[idx[0] as usize])
+                    .normalize_or_zero();
                 let corner = |n: usize| {
                     let i = idx[n] as usize;
                     let color = mesh.colors.as_ref().map_or(base, |c| c[i]);
+                    let color = if lit {
+                        color * headlight(cam_n, camera_space[i])
+                    } else {
+                        color
+                    };
                     ClipVertex {
                         p: camera_space[i],
                         attr: attributes(color, n),

@@ -15,7 +15,7 @@ use crate::core::stage::View;
 pub const VIEWS: &[View] = &[
     View {
         name: "color",
-        about: "vertex colours (or material colours) interpolated perspective-correctly",
+        about: "vertex colours (or material colours lit by a headlight) interpolated perspective-correctly",
     },
     View {
         name: "affine",
