@@ -173,7 +173,7 @@ impl LogLogFit {
     /// the fitted range (an extrapolation); `None` unless the line falls,
     /// and `None` more than [`MAX_EXTRAPOLATION`] times beyond the range.
     pub fn x_at(&self, y: f64) -> Option<(f64, bool)> {
-        if self.slope >= 0.0 || !(y > 0.0) {
+        if self.slope >= 0.0 || y.is_nan() || y <= 0.0 {
             return None;
         }
         let ln_x = (y.ln() - self.intercept) / self.slope;
