@@ -106,7 +106,7 @@ pub fn chapter_report(
     report.facts.push((
         "lights".into(),
         format!(
-            "{}, not used by this chapter (it shades by the normal, with a headlight)",
+            "{}, not used by this chapter (material colours are lit by a headlight instead)",
             scene.describe_lights()
         ),
     ));
