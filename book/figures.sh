@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=book/src/figures
 cargo build --release --bins
-bin=${CARGO_TARGET_DIR:-target}/release
+bin=$(cd "${CARGO_TARGET_DIR:-target}/release" && pwd)
 
 # Chapter 1: wireframes, depth and points of every shipped scene; the
 # precision study and stiff cases of the tetrahedron (CSV and report).
@@ -45,3 +45,9 @@ done
 # Chapter 6: the Cornell box at 128 spp (final image, noise image, bounce
 # strip), the spp strip, and the strategy study (table and plots).
 "$bin/ch6" --scene scenes/cornell-box.toml --spp 128 --spp-figure 128 --report --threads 2 --out "$out" > "$out/ch6-cornell-box-report.txt"
+
+# The main program's headless summary (running.md), run where its images
+# land in a scratch folder so the listing shows the plain `out/` paths.
+tmp=$(mktemp -d)
+(cd "$tmp" && "$bin/raystep" --headless) > "$out/headless.txt"
+rm -rf "$tmp"

@@ -76,7 +76,8 @@ pub fn summarise(
     let (width, height) = (scene.camera.width, scene.camera.height);
     writeln!(
         w,
-        "raystep: every chapter on {} ({width}x{height}); images in {}",
+        "raystep: every chapter on {} ({width}x{height}); images in {}\n\
+         (RMSE: against the stored reference, where there is one)",
         scene.name,
         out.display()
     )
@@ -95,7 +96,8 @@ pub fn summarise(
         });
     writeln!(
         w,
-        "\nch6 clean: {} spp, MIS + low-discrepancy (Sobol) numbers, 16 bounces, {}: {rmse}, noise estimate {}",
+        "\nch6 clean: {} spp, MIS + low-discrepancy (Sobol) numbers, 16 bounces, {}\n  \
+         {rmse}, noise estimate {}",
         clean.spp,
         format_seconds(clean.seconds),
         clean.noise.map_or("-".into(), format_number),
@@ -109,7 +111,8 @@ pub fn summarise(
     .map_err(io)?;
     writeln!(
         w,
-        "wrote: {}\nfull reports and studies: --report (or cargo run --release --bin chN); the terminal UI: run in a terminal",
+        "wrote: {}\nfull reports and studies: --report (or cargo run --release --bin chN)\n\
+         the terminal UI: run raystep in a terminal",
         clean
             .files
             .iter()
@@ -121,7 +124,8 @@ pub fn summarise(
     Ok(Some(clean))
 }
 
-/// "ch3 ray-triangle: image, normal, … · 34.1 ms · no reference · out/…png".
+/// "ch3 ray-triangle  depth + 3 views  34.1 ms  -  out/…png": name, views,
+/// time, RMSE against the stored reference (or "-" without one), image.
 fn chapter_line(chapter: &dyn Chapter, scene: &Scene, out: &Path) -> Result<String> {
     let name = format!("ch{} {}", chapter.number(), chapter.slug());
     if let Some(why) = chapter.unsupported(scene) {
@@ -143,8 +147,8 @@ fn chapter_line(chapter: &dyn Chapter, scene: &Scene, out: &Path) -> Result<Stri
         n => format!("{} + {} views", views[0].name, n - 1),
     };
     let error = match summary.rmse {
-        Some(e) => format!("RMSE {} vs reference", format_number(e)),
-        None => "no reference".into(),
+        Some(e) => format!("RMSE {}", format_number(e)),
+        None => "-".into(),
     };
     let sampled = if chapter.progressive() {
         format!(", {} spp", settings.spp)
@@ -152,7 +156,7 @@ fn chapter_line(chapter: &dyn Chapter, scene: &Scene, out: &Path) -> Result<Stri
         String::new()
     };
     Ok(format!(
-        "{name:<24} {:<26} {:>9}  {error:<26} {}",
+        "{name:<23} {:<22} {:>9}  {error:<12} {}",
         format!("{what}{sampled}"),
         format_seconds(summary.seconds),
         summary

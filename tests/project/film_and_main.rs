@@ -92,6 +92,8 @@ fn the_main_program_summarises_when_piped() {
     // preview: short enough to read.
     let lines: Vec<&str> = text.lines().collect();
     assert!(lines.len() <= 100, "{} lines:\n{text}", lines.len());
+    let wide: Vec<&&str> = lines.iter().filter(|l| l.chars().count() > 100).collect();
+    assert!(wide.is_empty(), "lines over 100 columns: {wide:#?}");
     for n in 1..=6 {
         let line = lines
             .iter()
