@@ -17,12 +17,13 @@ use std::time::{Duration, Instant};
 use glam::Vec3;
 use glam34::Vec3A;
 use obvhs::aabb::Aabb;
-use obvhs::bvh2::builder::{build_bvh2, build_bvh2_from_tris};
+use obvhs::bvh2::builder::build_bvh2_from_tris;
 use obvhs::bvh2::Bvh2;
 use obvhs::ray::{Ray as ORay, RayHit};
 use obvhs::triangle::Triangle as OTriangle;
 use obvhs::BvhBuildParams;
 
+use crate::ch3_ray_triangle::bvh_robust::build_guarded;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{Hit, Intersector};
 use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, WatertightRay};
@@ -120,12 +121,10 @@ impl Bvh {
         // slab test rounds, and a ray aimed exactly at a vertex or an edge
         // (which lie on the faces of their triangles' boxes) could otherwise
         // be culled a box too early, undoing the watertight test.
+        // The guard keeps the build O(n log n) on coincident and tiny
+        // triangles (see `bvh_robust`); other scenes get obvhs' own tree.
         let boxes = padded_boxes(tris);
-        let bvh = build_bvh2(
-            &boxes,
-            BvhBuildParams::medium_build(),
-            &mut Duration::default(),
-        );
+        let bvh = build_guarded(&boxes, BvhBuildParams::medium_build());
         // obvhs reports hits as positions in `primitive_indices`: store the
         // triangles in that order so the hot loop needs no indirection.
         let original = bvh.primitive_indices.clone();

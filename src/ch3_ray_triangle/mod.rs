@@ -9,6 +9,7 @@
 //! | the same watertight test, rearranged for speed | [`watertight_fast`] |
 //! | ray-mesh intersection: the naive loop over every triangle, and the bounding volume hierarchy | [`bvh`] |
 //! | the hierarchical approach, written to be read: a median-split BVH and its front-to-back traversal | [`readable_bvh`] |
+//! | building the BVH without going quadratic on coincident or tiny triangles | [`bvh_robust`] |
 //! | the BVH in the four-wide layout the shading chapters trace | [`wide_bvh`] |
 //! | what is traced and what a first hit shows (depth, normal, barycentrics) | [`geometry`], [`render`] |
 //! | leaving a surface without hitting it again | [`spawn`] |
@@ -23,6 +24,7 @@
 pub mod agreement;
 pub mod bench;
 pub mod bvh;
+pub mod bvh_robust;
 pub mod geometry;
 pub mod leaks;
 pub mod ray;

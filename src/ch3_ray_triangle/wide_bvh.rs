@@ -11,14 +11,12 @@
 //! questions with the same watertight arithmetic, and a test checks that
 //! they agree ray for ray.
 
-use std::time::Duration;
-
 use glam::{Vec3, Vec3A, Vec4};
-use obvhs::bvh2::builder::build_bvh2;
 use obvhs::bvh2::Bvh2;
 use obvhs::BvhBuildParams;
 
 use crate::ch3_ray_triangle::bvh::padded_boxes;
+use crate::ch3_ray_triangle::bvh_robust::build_guarded;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{gamma, Hit};
 use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, Tri4, WatertightRay};
@@ -126,7 +124,7 @@ impl WideBvh {
             max_prims_per_leaf: 1,
             ..BvhBuildParams::medium_build()
         };
-        let bvh2 = build_bvh2(&padded_boxes(tris), params, &mut Duration::default());
+        let bvh2 = build_guarded(&padded_boxes(tris), params);
         let mut counts = vec![0u32; bvh2.nodes.len()];
         count_triangles(&bvh2, 0, &mut counts);
         let mut wide = WideBvh {
