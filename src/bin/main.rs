@@ -46,8 +46,8 @@ struct Cli {
     /// Where images and CSV files go (and the UI's `s` saves).
     #[arg(long, value_name = "DIR", default_value = "out")]
     out: PathBuf,
-    /// The folder of scene files the UI lists.
-    #[arg(long, value_name = "DIR", default_value = "scenes")]
+    /// The folder of scene files the UI lists (given, it must exist).
+    #[arg(long, value_name = "DIR", default_value = "scenes", value_parser = scenes_folder)]
     scenes: PathBuf,
     /// Draw the UI's preview with coloured half blocks even where the
     /// terminal shows full-resolution pictures (kitty, iTerm2, sixel).
@@ -57,6 +57,16 @@ struct Cli {
     /// `tui` feature).
     #[arg(long)]
     bench_ui: bool,
+}
+
+/// `--scenes DIR`: a folder that exists, unless it is the default (a
+/// checkout without `scenes/` just lists none).
+fn scenes_folder(s: &str) -> Result<PathBuf, String> {
+    let path = PathBuf::from(s);
+    if s != "scenes" && !path.is_dir() {
+        return Err("no such folder".into());
+    }
+    Ok(path)
 }
 
 fn main() -> ExitCode {

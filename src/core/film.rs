@@ -5,7 +5,10 @@
 //! Every write goes to a temporary file beside the target and is renamed
 //! into place, so a failed or interrupted run never leaves half an image.
 
-use std::path::Path;
+use std::cell::RefCell;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::{Mutex, MutexGuard};
 
 use glam::Vec3;
 
@@ -185,9 +188,31 @@ pub fn decode_srgb(v: u8) -> f32 {
     }
 }
 
+/// Temporary files on disk right now, process-wide, for
+/// [`remove_temporaries_and_exit`]. Its lock is held for the whole of one
+/// write, and for the whole of a set's renames, so a signal handler that
+/// takes it lets the current write finish and never sees half a set.
+static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+/// Set once a signal handler has started cleaning up: no new write starts.
+static STOPPING: AtomicBool = AtomicBool::new(false);
+/// Distinguishes temporaries of one process.
+static COUNTER: AtomicU64 = AtomicU64::new(0);
+
+thread_local! {
+    /// The set this thread is writing, if any: (temporary, final path).
+    static STAGED: RefCell<Option<Vec<(PathBuf, PathBuf)>>> = const { RefCell::new(None) };
+}
+
+fn temporaries() -> MutexGuard<'static, Vec<PathBuf>> {
+    TEMPORARIES
+        .lock()
+        .unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
 /// Creates the directory of `path`, lets `write` fill a temporary file next
 /// to it, and renames that into place. On failure the temporary is removed
-/// and `path` is untouched.
+/// and `path` is untouched. Inside an [`OutputSet`] the rename waits for
+/// [`OutputSet::commit`].
 pub fn write_atomically(
     path: &Path,
     write: impl FnOnce(&Path) -> std::result::Result<(), String>,
@@ -200,16 +225,102 @@ pub fn write_atomically(
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
     // Keep the extension last so encoders that look at it still work.
-    let tmp = path.with_file_name(format!(".{}.tmp-{file_name}", std::process::id()));
+    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+    let tmp = path.with_file_name(format!(".{}.tmp{n}-{file_name}", std::process::id()));
+    let mut temps = temporaries();
+    if STOPPING.load(Ordering::SeqCst) {
+        return Err(Error::Usage(
+            "interrupted: no more files are written".into(),
+        ));
+    }
+    temps.push(tmp.clone());
     let result = write(&tmp).map_err(|message| Error::Image {
         path: path.to_path_buf(),
         message,
     });
+    let staged = result.is_ok()
+        && STAGED.with(|s| match s.borrow_mut().as_mut() {
+            Some(set) => {
+                set.push((tmp.clone(), path.to_path_buf()));
+                true
+            }
+            None => false,
+        });
+    if staged {
+        return Ok(());
+    }
     let result = result.and_then(|_| std::fs::rename(&tmp, path).map_err(|e| Error::io(path, e)));
     if result.is_err() {
         let _ = std::fs::remove_file(&tmp);
     }
+    temps.retain(|t| *t != tmp);
     result
+}
+
+/// A set of outputs that appear together or not at all: while it is alive,
+/// [`write_atomically`] on this thread leaves each file as a temporary;
+/// [`OutputSet::commit`] renames them all into place, and dropping the set
+/// uncommitted (an error, a panic) removes them.
+pub struct OutputSet {
+    committed: bool,
+}
+
+impl OutputSet {
+    /// Starts staging this thread's writes. Sets do not nest.
+    pub fn begin() -> OutputSet {
+        STAGED.with(|s| *s.borrow_mut() = Some(Vec::new()));
+        OutputSet { committed: false }
+    }
+
+    /// Renames every staged file into place, under the lock a signal
+    /// handler waits for, so an interrupt sees all of them or none.
+    pub fn commit(mut self) -> Result<()> {
+        self.committed = true;
+        let staged = STAGED.with(|s| s.borrow_mut().take()).unwrap_or_default();
+        let mut temps = temporaries();
+        let mut result = Ok(());
+        for (tmp, path) in &staged {
+            if result.is_ok() {
+                result = std::fs::rename(tmp, path).map_err(|e| Error::io(path, e));
+            }
+            if result.is_err() {
+                let _ = std::fs::remove_file(tmp);
+            }
+            temps.retain(|t| t != tmp);
+        }
+        result
+    }
+}
+
+impl Drop for OutputSet {
+    fn drop(&mut self) {
+        if self.committed {
+            return;
+        }
+        let staged = STAGED.with(|s| s.borrow_mut().take()).unwrap_or_default();
+        let mut temps = temporaries();
+        for (tmp, _) in &staged {
+            let _ = std::fs::remove_file(tmp);
+            temps.retain(|t| t != tmp);
+        }
+    }
+}
+
+/// For a SIGINT/SIGTERM handler: waits for the write in progress, removes
+/// every temporary file of this process and exits with `code`. No file is
+/// renamed into place afterwards.
+pub fn remove_temporaries_and_exit(code: i32) -> ! {
+    STOPPING.store(true, Ordering::SeqCst);
+    let temps = temporaries();
+    for t in temps.iter() {
+        let _ = std::fs::remove_file(t);
+    }
+    std::process::exit(code)
+}
+
+/// How many temporary files this process has on disk (for tests).
+pub fn temporaries_on_disk() -> usize {
+    temporaries().iter().filter(|t| t.exists()).count()
 }
 
 #[cfg(test)]

@@ -16,3 +16,4 @@ pub mod stage;
 pub mod strip;
 pub mod style;
 pub mod table;
+pub mod text;

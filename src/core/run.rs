@@ -12,10 +12,14 @@ use std::time::Instant;
 use clap::Parser;
 
 use crate::core::error::{Error, Result};
+use crate::core::film::OutputSet;
 use crate::core::preview::{preview, PreviewStyle};
 use crate::core::report::Times;
 use crate::core::stage::{Chapter, Settings};
-use crate::scene::Scene;
+use crate::core::text::{escape, escape_keep_newlines};
+use crate::scene::camera::MAX_RESOLUTION;
+use crate::scene::obj::DEFAULT_MAX_TRIANGLES;
+use crate::scene::{Limits, Scene, DEFAULT_MAX_FILE_BYTES};
 
 /// Flags every chapter binary takes.
 #[derive(Clone, Debug, clap::Args)]
@@ -24,16 +28,19 @@ pub struct CommonArgs {
     #[arg(long, value_name = "FILE")]
     pub scene: Option<PathBuf>,
     /// Image width in pixels (overrides the scene).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_RESOLUTION as i64))]
     pub width: Option<u32>,
     /// Image height in pixels (overrides the scene).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_RESOLUTION as i64))]
     pub height: Option<u32>,
-    /// Samples per pixel, for chapters that sample (at least 1).
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    /// Samples per pixel, for chapters that sample (1 to 1,000,000).
+    #[arg(long, default_value_t = 1, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=MAX_SPP as i64))]
     pub spp: u32,
     /// Seed for every random number.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, allow_negative_numbers = true)]
     pub seed: u64,
     /// Output folder for images and CSV files.
     #[arg(long, value_name = "DIR", default_value = "out")]
@@ -41,13 +48,32 @@ pub struct CommonArgs {
     /// Also run the error-against-time and stability studies.
     #[arg(long)]
     pub report: bool,
-    /// Worker threads (default: all cores). Output does not depend on it.
-    #[arg(long)]
+    /// Worker threads (default: all cores; at most 4 per core). Output does
+    /// not depend on it.
+    #[arg(long, allow_negative_numbers = true)]
     pub threads: Option<usize>,
-    /// Width of the printed preview in characters (at least 1).
-    #[arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..))]
+    /// Width of the printed preview in characters (1 to 4096).
+    #[arg(long, default_value_t = 64, allow_negative_numbers = true,
+          value_parser = clap::value_parser!(u32).range(1..=4096))]
     pub preview_width: u32,
+    /// Largest scene or OBJ file read, in MiB.
+    #[arg(long, value_name = "MIB", default_value_t = DEFAULT_MAX_FILE_BYTES >> 20,
+          allow_negative_numbers = true, value_parser = clap::value_parser!(u64).range(1..=1 << 20))]
+    pub max_file_mib: u64,
+    /// Most triangles a scene may hold.
+    #[arg(long, default_value_t = DEFAULT_MAX_TRIANGLES, allow_negative_numbers = true)]
+    pub max_triangles: usize,
 }
+
+/// The most samples per pixel a run may ask for.
+pub const MAX_SPP: u32 = 1_000_000;
+/// Runs of more samples (samples per pixel × pixels) than this are refused.
+pub const MAX_SAMPLES: u64 = 1 << 40;
+/// Runs of more samples than this get a warning with a time estimate.
+pub const WARN_SAMPLES: u64 = 1 << 30;
+/// A rough rate for the warning's estimate: path samples per second per
+/// core on a laptop (chapter 6, Cornell box).
+const SAMPLES_PER_CORE_SECOND: f64 = 2e6;
 
 #[derive(Parser)]
 struct ChapterCli {
@@ -67,10 +93,18 @@ impl CommonArgs {
         }
     }
 
+    /// The limits `--max-file-mib` and `--max-triangles` set.
+    pub fn limits(&self) -> Limits {
+        Limits {
+            max_file_bytes: self.max_file_mib << 20,
+            max_triangles: self.max_triangles,
+        }
+    }
+
     /// The scene the flags name, or the built-in one.
     pub fn load_scene(&self) -> Result<Scene> {
         match &self.scene {
-            Some(path) => Scene::load(path),
+            Some(path) => Scene::load_with(path, &self.limits()),
             None => Ok(Scene::builtin()),
         }
     }
@@ -82,11 +116,20 @@ impl CommonArgs {
     }
 }
 
+/// The most worker threads a run may ask for: 4 per core (at least 8).
+pub fn max_threads() -> usize {
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    (4 * cores).max(8)
+}
+
 /// Sets the size of rayon's global pool (once per process).
 pub fn init_threads(threads: Option<usize>) -> Result<()> {
     if let Some(n) = threads {
-        if n == 0 {
-            return Err(Error::Usage("`--threads` must be at least 1".into()));
+        let max = max_threads();
+        if n == 0 || n > max {
+            return Err(Error::Usage(format!(
+                "`--threads` must be between 1 and {max} (4 per core, at least 8), got {n}"
+            )));
         }
         // A second call in the same process keeps the first pool; fine.
         let _ = rayon::ThreadPoolBuilder::new()
@@ -129,6 +172,7 @@ pub fn run_headless(
         )));
     }
     let scene = sized(scene, settings.width, settings.height)?;
+    check_samples(&scene, settings.spp, chapter.is_radiance())?;
     let stem = format!("ch{}-{}", chapter.number(), scene.name);
     let start = Instant::now();
     let mut render = chapter.start(Arc::new(scene), settings)?;
@@ -139,7 +183,7 @@ pub fn run_headless(
         let done = render.pass();
         if show_progress && start.elapsed().as_secs_f64() > 1.0 {
             let (d, t) = render.progress();
-            eprint!("\r{stem}: pass {d}/{t}  ");
+            eprint!("\r{}: pass {d}/{t}  ", escape(&stem));
             shown = true;
         }
         if done {
@@ -151,6 +195,8 @@ pub fn run_headless(
     }
     let seconds = start.elapsed().as_secs_f64();
 
+    // Every output of the run appears together or not at all.
+    let set = OutputSet::begin();
     let mut files = Vec::new();
     for (i, view) in chapter.views().iter().enumerate() {
         let film = render.view(i);
@@ -177,6 +223,7 @@ pub fn run_headless(
     if !report.stability.is_empty() {
         files.push(out.join(format!("{stem}-stability.csv")));
     }
+    set.commit()?;
 
     let io = |e: std::io::Error| Error::io(Path::new("<stdout>"), e);
     write!(
@@ -185,10 +232,11 @@ pub fn run_headless(
         preview(&render.view(0), preview_width, PreviewStyle::for_stdout())
     )
     .map_err(io)?;
-    write!(w, "{}", report.to_text(Times::Show)).map_err(io)?;
+    // Names in the report come from the scene file: no raw control codes.
+    write!(w, "{}", escape_keep_newlines(&report.to_text(Times::Show))).map_err(io)?;
     writeln!(w, "  wrote {} files:", files.len()).map_err(io)?;
     for f in &files {
-        writeln!(w, "    {}", f.display()).map_err(io)?;
+        writeln!(w, "    {}", escape(&f.display().to_string())).map_err(io)?;
     }
     writeln!(w).map_err(io)?;
     let rmse = render.error_series().last().map(|p| p.1).or_else(|| {
@@ -202,6 +250,29 @@ pub fn run_headless(
         stable: report.all_stable(),
         rmse,
     })
+}
+
+/// Refuses more than [`MAX_SAMPLES`] samples, and warns (on stderr, with a
+/// rough time estimate) above [`WARN_SAMPLES`]; the pass counter shows the
+/// progress. Only chapters that sample radiance take `spp`.
+fn check_samples(scene: &Scene, spp: u32, samples_radiance: bool) -> Result<()> {
+    let pixels = scene.camera.width as u64 * scene.camera.height as u64;
+    let spp = if samples_radiance { spp as u64 } else { 1 };
+    let samples = pixels * spp;
+    if samples > MAX_SAMPLES {
+        return Err(Error::Usage(format!(
+            "{spp} samples per pixel x {pixels} pixels = {samples} samples, more than the limit of {MAX_SAMPLES} (2^40); lower --spp or the size"
+        )));
+    }
+    if samples > WARN_SAMPLES {
+        let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+        let seconds = samples as f64 / (SAMPLES_PER_CORE_SECOND * cores as f64);
+        eprintln!(
+            "warning: {samples} samples ({spp} per pixel x {pixels} pixels) may take about {:.0} minutes on {cores} cores; progress is shown per pass",
+            seconds / 60.0
+        );
+    }
+    Ok(())
 }
 
 /// `scene` at `width` x `height`, each the scene's own where `None`.
@@ -225,6 +296,7 @@ pub fn chapter_main(chapter: &dyn Chapter) -> ExitCode {
 /// it headless, printing to stdout. The common part of every chapter's
 /// `main`, including those with flags of their own.
 pub fn run_with(chapter: &dyn Chapter, common: &CommonArgs) -> Result<RunSummary> {
+    clean_up_on_signals();
     init_threads(common.threads)?;
     let scene = common.load_scene()?;
     let mut stdout = std::io::stdout().lock();
@@ -236,6 +308,28 @@ pub fn run_with(chapter: &dyn Chapter, common: &CommonArgs) -> Result<RunSummary
         common.preview_width,
         &mut stdout,
     )
+}
+
+/// From now on SIGINT and SIGTERM let the file being written finish,
+/// remove every temporary file and exit with 130 or 143, so an interrupted
+/// run leaves no debris and no partial set of outputs. Once per process;
+/// nothing on platforms without signals.
+pub fn clean_up_on_signals() {
+    #[cfg(unix)]
+    {
+        use signal_hook::consts::{SIGINT, SIGTERM};
+        static ONCE: std::sync::Once = std::sync::Once::new();
+        ONCE.call_once(|| {
+            let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM]) else {
+                return;
+            };
+            std::thread::spawn(move || {
+                if let Some(signal) = signals.forever().next() {
+                    crate::core::film::remove_temporaries_and_exit(128 + signal);
+                }
+            });
+        });
+    }
 }
 
 /// Success, or the error on stderr and exit status 2.

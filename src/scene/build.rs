@@ -9,8 +9,10 @@ use super::camera::CameraDesc;
 use super::file::{self, LightSection, MaterialKind, SceneFile};
 use super::object::{build_object, check_finite};
 use super::sdf::SdfObject;
+use super::validate;
 use super::{
-    Material, MeshReader, Scene, DEFAULT_EXPONENT, DEFAULT_IOR, DEFAULT_SPECULAR, MAX_EXPONENT,
+    Limits, Material, MeshReader, Scene, DEFAULT_EXPONENT, DEFAULT_IOR, DEFAULT_SPECULAR,
+    MAX_EXPONENT,
 };
 use crate::core::error::{Error, Result};
 
@@ -27,6 +29,16 @@ pub(super) fn toml_error(source: &str, text: &str, e: &toml::de::Error) -> Error
         None => "top level".into(),
     };
     let message = e.message().trim().to_string();
+    let message = match (
+        e.span(),
+        message.starts_with("expected an array of exactly")
+            || message.starts_with("expected a number or exactly")
+            || message.starts_with("row ")
+            || message.starts_with("expected 4 rows"),
+    ) {
+        (Some(span), true) => format!("`{}`: {message}", key_on_line(text, span.start)),
+        _ => message,
+    };
     let message = match unknown_key_suggestion(&message) {
         Some(hint) => format!("{message}; {hint}"),
         None => message,
@@ -36,6 +48,23 @@ pub(super) fn toml_error(source: &str, text: &str, e: &toml::de::Error) -> Error
         at,
         message,
     }
+}
+
+/// The key written before the `=` on the line where `offset` lies (or
+/// before the last `=` ahead of it, for an inline table).
+fn key_on_line(text: &str, offset: usize) -> String {
+    let offset = offset.min(text.len());
+    let start = text[..offset].rfind('\n').map(|i| i + 1).unwrap_or(0);
+    let before = &text[start..offset];
+    let Some(eq) = before.rfind('=') else {
+        return "?".into();
+    };
+    let key = before[..eq].trim_end();
+    let key = key
+        .rsplit(|c: char| c == '{' || c == ',' || c.is_whitespace())
+        .next()
+        .unwrap_or(key);
+    key.chars().take(64).collect()
 }
 
 /// From serde's "unknown field `fvo`, expected one of `eye`, ..." (or
@@ -52,7 +81,13 @@ fn unknown_key_suggestion(message: &str) -> Option<String> {
     (best.0 <= given.len().max(2) / 2 + 1).then(|| format!("did you mean `{}`?", best.1))
 }
 
-pub(super) fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader) -> Result<Scene> {
+pub(super) fn build(
+    file: SceneFile,
+    name: &str,
+    source: &str,
+    read: &MeshReader,
+    limits: &Limits,
+) -> Result<Scene> {
     let scene_err = |at: String, message: String| Error::Scene {
         file: source.to_string(),
         at,
@@ -100,17 +135,7 @@ pub(super) fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader
                     format!("{:?} {why}", m.reflectance),
                 )
             })?;
-        check_finite(&m.emission)
-            .and_then(|_| {
-                m.emission
-                    .iter()
-                    .all(|r| *r >= 0.0)
-                    .then_some(())
-                    .ok_or("must not be negative")
-            })
-            .map_err(|why| {
-                scene_err(format!("{at}.emission"), format!("{:?} {why}", m.emission))
-            })?;
+        validate::light(&m.emission).map_err(|why| scene_err(format!("{at}.emission"), why))?;
         let (exponent, specular) =
             lobe_keys(m).map_err(|(key, why)| scene_err(format!("{at}.{key}"), why))?;
         let ior = match (m.kind, m.ior) {
@@ -148,9 +173,11 @@ pub(super) fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader
 
     let mut materials: Vec<Material> = Vec::new();
     let mut meshes = Vec::new();
+    let mut triangles = 0usize;
     for (i, o) in file.objects.iter().enumerate() {
         let at = format!("objects[{i}]");
-        let mut mesh = build_object(o, &at, source, read)?;
+        let mut mesh = build_object(o, &at, source, read, limits.max_triangles - triangles)?;
+        triangles += mesh.triangles.len();
         mesh.material = use_material(&declared, &mut materials, o.material.as_deref(), &at)
             .map_err(|(a, m)| scene_err(a, m))?;
         if let Some(n) = &o.name {
@@ -177,37 +204,8 @@ pub(super) fn build(file: SceneFile, name: &str, source: &str, read: &MeshReader
             }
             environment = Some(i);
         }
-        let numbers: Vec<f64> = match l {
-            LightSection::Point {
-                position,
-                intensity,
-            } => [position.as_slice(), intensity].concat(),
-            LightSection::Directional {
-                direction,
-                irradiance,
-            } => [direction.as_slice(), irradiance].concat(),
-            LightSection::Spot {
-                position,
-                direction,
-                intensity,
-                cone_degrees,
-                falloff_degrees,
-            } => [
-                position.as_slice(),
-                direction,
-                intensity,
-                &[*cone_degrees, *falloff_degrees],
-            ]
-            .concat(),
-            LightSection::Environment { radiance } => radiance.to_vec(),
-            LightSection::Sky {
-                zenith,
-                horizon,
-                ground,
-            } => [zenith.as_slice(), horizon, ground].concat(),
-        };
-        check_finite(&numbers)
-            .map_err(|why| scene_err(format!("lights[{i}]"), format!("a value {why}")))?;
+        validate::check_light(l)
+            .map_err(|(key, why)| scene_err(format!("lights[{i}].{key}"), why))?;
     }
 
     Ok(Scene {

@@ -41,9 +41,8 @@ impl CameraDesc {
     pub fn check(&self) -> Result<()> {
         let bad = |m: String| Error::Usage(format!("camera: {m}"));
         for (name, v) in [("eye", self.eye), ("target", self.target), ("up", self.up)] {
-            if !v.is_finite() {
-                return Err(bad(format!("`{name}` must be finite, got {v}")));
-            }
+            crate::scene::validate::position(&v.to_array())
+                .map_err(|why| bad(format!("`{name}` {why}")))?;
         }
         if !(self.fov_degrees > 0.0 && self.fov_degrees < 180.0) {
             return Err(bad(format!(

@@ -3,7 +3,52 @@
 //! The book's "Scene files" page shows an example for every key, and a test
 //! parses every example there.
 
-use serde::Deserialize;
+use serde::{Deserialize, Deserializer};
+
+/// Arrays of exactly `N` numbers: serde's fixed-size arrays would drop extra
+/// elements silently (`eye = [0, 1, 5, 1]`); here they are an error. The
+/// TOML error then names the line, and the loader adds the key.
+pub mod exact {
+    use serde::de::Error;
+    use serde::{Deserialize, Deserializer};
+
+    fn exactly<E: Error, const N: usize>(v: Vec<f64>) -> Result<[f64; N], E> {
+        let n = v.len();
+        v.try_into()
+            .map_err(|_| E::custom(format!("expected an array of exactly {N} numbers, got {n}")))
+    }
+
+    /// `[x, y, z]` and other fixed-length arrays.
+    pub fn array<'de, D: Deserializer<'de>, const N: usize>(d: D) -> Result<[f64; N], D::Error> {
+        exactly(Vec::<f64>::deserialize(d)?)
+    }
+
+    /// An optional fixed-length array.
+    pub fn option<'de, D: Deserializer<'de>, const N: usize>(
+        d: D,
+    ) -> Result<Option<[f64; N]>, D::Error> {
+        Option::<Vec<f64>>::deserialize(d)?.map(exactly).transpose()
+    }
+
+    /// An optional 4 x 4 matrix, row by row.
+    pub fn matrix<'de, D: Deserializer<'de>>(d: D) -> Result<Option<[[f64; 4]; 4]>, D::Error> {
+        let Some(rows) = Option::<Vec<Vec<f64>>>::deserialize(d)? else {
+            return Ok(None);
+        };
+        let n = rows.len();
+        let rows: Vec<[f64; 4]> = rows
+            .into_iter()
+            .enumerate()
+            .map(|(i, r)| {
+                exactly::<D::Error, 4>(r)
+                    .map_err(|e| D::Error::custom(format!("row {}: {e}", i + 1)))
+            })
+            .collect::<Result<_, _>>()?;
+        rows.try_into()
+            .map(Some)
+            .map_err(|_| D::Error::custom(format!("expected 4 rows of 4 numbers, got {n} rows")))
+    }
+}
 
 /// A whole scene file.
 #[derive(Debug, Default, Deserialize)]
@@ -33,10 +78,13 @@ pub struct SceneFile {
 #[serde(deny_unknown_fields, default)]
 pub struct CameraSection {
     /// Pinhole position.
+    #[serde(deserialize_with = "exact::array")]
     pub eye: [f64; 3],
     /// Point looked at.
+    #[serde(deserialize_with = "exact::array")]
     pub target: [f64; 3],
     /// Up hint.
+    #[serde(deserialize_with = "exact::array")]
     pub up: [f64; 3],
     /// Full vertical field of view in degrees.
     pub fov: f64,
@@ -69,11 +117,11 @@ pub struct MaterialSection {
     #[serde(rename = "type", default)]
     pub kind: MaterialKind,
     /// Diffuse reflectance ρ in linear RGB, each in [0, 1].
-    #[serde(default = "default_reflectance")]
+    #[serde(default = "default_reflectance", deserialize_with = "exact::array")]
     pub reflectance: [f64; 3],
     /// Emitted radiance Le (W/(m²·sr)) in linear RGB; non-zero makes every
     /// surface with this material an area light.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "exact::array")]
     pub emission: [f64; 3],
     /// Whether an emissive surface emits from both faces; by default only
     /// the front face (the side its triangles wind counter-clockwise
@@ -135,6 +183,7 @@ pub struct ObjectSection {
     /// Sphere radius (default 1).
     pub radius: Option<f64>,
     /// Sphere centre (default the origin), applied before the transform.
+    #[serde(default, deserialize_with = "exact::option")]
     pub center: Option<[f64; 3]>,
     /// Icosphere subdivisions (default 3, at most 7).
     pub subdivisions: Option<u32>,
@@ -145,9 +194,11 @@ pub struct ObjectSection {
     /// Rotation about an axis through the origin.
     pub rotate: Option<Rotate>,
     /// Translation.
+    #[serde(default, deserialize_with = "exact::option")]
     pub translate: Option<[f64; 3]>,
     /// A full world-from-object matrix, four rows of four; excludes the
     /// other transform keys.
+    #[serde(default, deserialize_with = "exact::matrix")]
     pub matrix: Option<[[f64; 4]; 4]>,
 }
 
@@ -166,8 +217,7 @@ pub enum Shape {
 }
 
 /// `scale = 2.0` or `scale = [1, 2, 1]`.
-#[derive(Clone, Copy, Debug, Deserialize)]
-#[serde(untagged, expecting = "a number or an array of three numbers")]
+#[derive(Clone, Copy, Debug)]
 pub enum Scale {
     /// The same factor on every axis.
     Uniform(f64),
@@ -175,11 +225,33 @@ pub enum Scale {
     PerAxis([f64; 3]),
 }
 
+impl<'de> Deserialize<'de> for Scale {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Scale, D::Error> {
+        use serde::de::Error;
+        #[derive(Deserialize)]
+        #[serde(untagged, expecting = "a number or an array of three numbers")]
+        enum Either {
+            Uniform(f64),
+            PerAxis(Vec<f64>),
+        }
+        match Either::deserialize(d)? {
+            Either::Uniform(s) => Ok(Scale::Uniform(s)),
+            Either::PerAxis(v) => {
+                let n = v.len();
+                v.try_into().map(Scale::PerAxis).map_err(|_| {
+                    D::Error::custom(format!("expected a number or exactly 3 numbers, got {n}"))
+                })
+            }
+        }
+    }
+}
+
 /// `rotate = { axis = [0, 1, 0], degrees = 30 }`.
 #[derive(Clone, Copy, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Rotate {
     /// The axis (need not be unit length).
+    #[serde(deserialize_with = "exact::array")]
     pub axis: [f64; 3],
     /// Counter-clockwise angle looking down the axis, in degrees.
     pub degrees: f64,
@@ -193,24 +265,31 @@ pub enum LightSection {
     /// An isotropic point light of intensity I (W/sr).
     Point {
         /// Position.
+        #[serde(deserialize_with = "exact::array")]
         position: [f64; 3],
         /// Intensity, linear RGB.
+        #[serde(deserialize_with = "exact::array")]
         intensity: [f64; 3],
     },
     /// Light from infinitely far away along `direction`.
     Directional {
         /// Direction the light travels.
+        #[serde(deserialize_with = "exact::array")]
         direction: [f64; 3],
         /// Irradiance at normal incidence (W/m²), linear RGB.
+        #[serde(deserialize_with = "exact::array")]
         irradiance: [f64; 3],
     },
     /// A point light limited to a cone with a smooth edge.
     Spot {
         /// Position.
+        #[serde(deserialize_with = "exact::array")]
         position: [f64; 3],
         /// Cone axis, the direction light travels.
+        #[serde(deserialize_with = "exact::array")]
         direction: [f64; 3],
         /// Intensity on the axis (W/sr), linear RGB.
+        #[serde(deserialize_with = "exact::array")]
         intensity: [f64; 3],
         /// Half-angle of the cone in degrees.
         cone_degrees: f64,
@@ -221,6 +300,7 @@ pub enum LightSection {
     /// Constant radiance from every direction.
     Environment {
         /// Radiance (W/(m²·sr)), linear RGB.
+        #[serde(deserialize_with = "exact::array")]
         radiance: [f64; 3],
     },
     /// A sky (chapter 5): radiance blends linearly in the height of the
@@ -228,11 +308,13 @@ pub enum LightSection {
     /// world +y); below the horizon every direction sees `ground`.
     Sky {
         /// Radiance straight up (W/(m²·sr)), linear RGB.
+        #[serde(deserialize_with = "exact::array")]
         zenith: [f64; 3],
         /// Radiance along the horizon, linear RGB.
+        #[serde(deserialize_with = "exact::array")]
         horizon: [f64; 3],
         /// Radiance from below the horizon (default black).
-        #[serde(default)]
+        #[serde(default, deserialize_with = "exact::array")]
         ground: [f64; 3],
     },
 }

@@ -13,6 +13,7 @@ pub mod obj;
 mod object;
 pub mod sdf;
 pub mod sdf_parse;
+pub mod validate;
 
 use std::path::{Path, PathBuf};
 
@@ -99,21 +100,88 @@ pub struct Scene {
     pub sdfs: Vec<SdfObject>,
 }
 
+/// Limits on what one load may read and build, so that a huge or endless
+/// input is refused with an error naming the bound instead of exhausting
+/// memory.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// Largest scene or OBJ file, in bytes (`--max-file-mib`).
+    pub max_file_bytes: u64,
+    /// Most triangles in the whole scene (`--max-triangles`).
+    pub max_triangles: usize,
+}
+
+/// The default file size limit: 512 MiB.
+pub const DEFAULT_MAX_FILE_BYTES: u64 = 512 << 20;
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_file_bytes: DEFAULT_MAX_FILE_BYTES,
+            max_triangles: obj::DEFAULT_MAX_TRIANGLES,
+        }
+    }
+}
+
+/// Reads a text file of at most `max` bytes; larger files (and endless
+/// ones such as `/dev/zero`) are refused before they fill memory.
+pub fn read_limited(path: &Path, max: u64) -> Result<String> {
+    use std::io::Read;
+    let too_big = || {
+        Error::Usage(format!(
+            "{}: the file is larger than the limit of {} MiB (raise it with --max-file-mib)",
+            path.display(),
+            max >> 20
+        ))
+    };
+    let file = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
+    if file
+        .metadata()
+        .map(|m| m.is_file() && m.len() > max)
+        .unwrap_or(false)
+    {
+        return Err(too_big());
+    }
+    let mut bytes = Vec::new();
+    file.take(max.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(|e| Error::io(path, e))?;
+    if bytes.len() as u64 > max {
+        return Err(too_big());
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        Error::io(
+            path,
+            std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                format!("not UTF-8 text: {e}"),
+            ),
+        )
+    })
+}
+
 impl Scene {
     /// Loads a scene file; mesh paths are relative to it.
     pub fn load(path: &Path) -> Result<Scene> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+        Scene::load_with(path, &Limits::default())
+    }
+
+    /// [`Scene::load`] within `limits`.
+    pub fn load_with(path: &Path, limits: &Limits) -> Result<Scene> {
+        let max = limits.max_file_bytes;
+        let text = read_limited(path, max)?;
         let base = path.parent().map(Path::to_path_buf).unwrap_or_default();
         let name = path
             .file_stem()
             .map(|s| s.to_string_lossy().into_owned())
             .unwrap_or_else(|| "scene".into());
-        Scene::parse(&text, &name, &path.display().to_string(), &move |rel| {
+        let read = move |rel: &str| {
             let p: PathBuf = base.join(rel);
-            std::fs::read_to_string(&p)
+            read_limited(&p, max)
                 .map_err(|e| (p.display().to_string(), e.to_string()))
                 .map(|t| (p.display().to_string(), t))
-        })
+        };
+        Scene::parse_with(&text, &name, &path.display().to_string(), &read, limits)
     }
 
     /// The built-in default scene: the Cornell box of `scenes/cornell-box.toml`
@@ -137,9 +205,20 @@ impl Scene {
     /// Parses scene text. `read` returns (display name, text) of a mesh file
     /// named relative to the scene, or (display name, reason) on failure.
     pub fn parse(text: &str, name: &str, source: &str, read: &MeshReader) -> Result<Scene> {
+        Scene::parse_with(text, name, source, read, &Limits::default())
+    }
+
+    /// [`Scene::parse`] within `limits`.
+    pub fn parse_with(
+        text: &str,
+        name: &str,
+        source: &str,
+        read: &MeshReader,
+        limits: &Limits,
+    ) -> Result<Scene> {
         let file: SceneFile =
             toml::from_str(text).map_err(|e| build::toml_error(source, text, &e))?;
-        build::build(file, name, source, read)
+        build::build(file, name, source, read, limits)
     }
 
     /// Parses a scene given as text that uses built-in shapes only (no mesh

@@ -15,7 +15,14 @@ use crate::scene::mesh::Mesh;
 /// its own vertex array, so a vertex shared by two groups appears once per
 /// group: mesh checks see the seam between groups as a boundary.
 pub fn parse_obj(text: &str, file: &str) -> Result<Mesh> {
-    check_obj(text, file)?;
+    parse_obj_limited(text, file, DEFAULT_MAX_TRIANGLES)
+}
+
+/// [`parse_obj`] with a limit on the number of triangles.
+pub fn parse_obj_limited(text: &str, file: &str, max_triangles: usize) -> Result<Mesh> {
+    let text = normalize_line_endings(text);
+    let text = text.as_ref();
+    check_obj(text, file, max_triangles)?;
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: false,
@@ -63,75 +70,101 @@ fn stem(file: &str) -> String {
         .unwrap_or_else(|| file.to_string())
 }
 
-/// The line-numbered checks tobj does not make.
-fn check_obj(text: &str, file: &str) -> Result<()> {
+/// The largest number of triangles one OBJ file may hold (after polygons
+/// are split into triangles); raise it with `--max-triangles`.
+pub const DEFAULT_MAX_TRIANGLES: usize = 20_000_000;
+
+/// Line endings made `\n`: tobj splits lines at `\n` only, so a file with
+/// old Mac (CR-only) endings would be one long line.
+pub fn normalize_line_endings(text: &str) -> std::borrow::Cow<'_, str> {
+    if text.contains('\r') {
+        text.replace("\r\n", "\n").replace('\r', "\n").into()
+    } else {
+        text.into()
+    }
+}
+
+/// The line-numbered checks tobj does not make: every number parses and is
+/// finite in f32, every face index (vertex, texture and normal) exists, and
+/// the triangle count stays within `max_triangles`.
+fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
     let err = |line: usize, message: String| Error::Mesh {
         file: file.to_string(),
         line: Some(line),
         message,
     };
-    let mut vertices: i64 = 0;
+    let numbers = |line: usize, what: &str, words: &[&str]| -> Result<Vec<f32>> {
+        words
+            .iter()
+            .map(|c| match c.parse::<f32>() {
+                Ok(x) if x.is_finite() => Ok(x),
+                Ok(_) => Err(err(
+                    line,
+                    format!("{what} `{c}` is not a finite number in f32"),
+                )),
+                Err(_) => Err(err(line, format!("{what} `{c}` is not a number"))),
+            })
+            .collect()
+    };
+    // Vertices, texture coordinates and normals defined so far.
+    let mut counts = [0i64; 3];
     let mut faces = 0usize;
+    let mut triangles = 0usize;
     for (n, raw) in text.lines().enumerate() {
         let line = n + 1;
         let mut words = raw.split_whitespace();
-        match words.next() {
-            Some("v") => {
-                let coords: Vec<&str> = words.collect();
-                if coords.len() < 3 {
-                    return Err(err(line, format!("a vertex needs x y z, got `{raw}`")));
-                }
-                for c in &coords[..3] {
-                    match c.parse::<f32>() {
-                        Ok(x) if x.is_finite() => {}
-                        Ok(_) => {
-                            return Err(err(
-                                line,
-                                format!("vertex coordinate `{c}` is not a finite number"),
-                            ))
-                        }
-                        Err(_) => {
-                            return Err(err(
-                                line,
-                                format!("vertex coordinate `{c}` is not a number"),
-                            ))
-                        }
-                    }
-                }
-                vertices += 1;
-            }
-            Some("f") => {
-                let corners: Vec<&str> = words.collect();
-                if corners.len() < 3 {
-                    return Err(err(
-                        line,
-                        format!("a face needs at least 3 vertices, got {}", corners.len()),
-                    ));
-                }
-                for c in corners {
-                    let first = c.split('/').next().unwrap_or("");
-                    let index: i64 = first.parse().map_err(|_| {
-                        err(
-                            line,
-                            format!("face corner `{c}` does not start with a vertex index"),
-                        )
-                    })?;
-                    // OBJ indices are 1-based; negative ones count back from the last vertex.
-                    let resolved = if index < 0 {
-                        vertices + index + 1
-                    } else {
-                        index
-                    };
-                    if resolved < 1 || resolved > vertices {
+        let Some(kind) = words.next() else { continue };
+        let rest: Vec<&str> = words.collect();
+        match kind {
+            "v" => {
+                let xyz = numbers(line, "vertex coordinate", &rest)?;
+                match xyz.len() {
+                    3 | 6 => {}
+                    4 if xyz[3] != 0.0 && xyz[..3].iter().all(|c| (c / xyz[3]).is_finite()) => {}
+                    4 => {
                         return Err(err(
                             line,
-                            format!(
-                                "face refers to vertex {index}, but only {vertices} vertices are defined before this line"
-                            ),
-                        ));
+                            format!("the weight w = {} of `v x y z w` must be non-zero and keep x/w, y/w, z/w finite", xyz[3]),
+                        ))
+                    }
+                    k => {
+                        return Err(err(
+                            line,
+                            format!("a vertex is `v x y z`, `v x y z w` or `v x y z r g b`; got {k} numbers"),
+                        ))
                     }
                 }
+                counts[0] += 1;
+            }
+            "vt" | "vn" => {
+                let need = if kind == "vt" { 2 } else { 3 };
+                let values = numbers(line, "coordinate", &rest)?;
+                if values.len() < need || values.len() > 3 {
+                    return Err(err(
+                        line,
+                        format!("`{kind}` takes {need} to 3 numbers, got {}", values.len()),
+                    ));
+                }
+                counts[if kind == "vt" { 1 } else { 2 }] += 1;
+            }
+            "f" => {
+                if rest.len() < 3 {
+                    return Err(err(
+                        line,
+                        format!("a face needs at least 3 vertices, got {}", rest.len()),
+                    ));
+                }
+                for c in &rest {
+                    check_corner(c, &counts).map_err(|why| err(line, why))?;
+                }
                 faces += 1;
+                triangles += rest.len() - 2;
+                if triangles > max_triangles {
+                    return Err(err(
+                        line,
+                        format!("more than {max_triangles} triangles (the limit; raise it with --max-triangles)"),
+                    ));
+                }
             }
             _ => {}
         }
@@ -141,9 +174,46 @@ fn check_obj(text: &str, file: &str) -> Result<()> {
             file: file.to_string(),
             line: None,
             message: format!(
-                "the mesh has no triangles ({vertices} vertices, no `f` lines): expected at least one face"
+                "the mesh has no triangles ({} vertices, no `f` lines): expected at least one face",
+                counts[0]
             ),
         });
+    }
+    Ok(())
+}
+
+/// One face corner `v`, `v/vt`, `v//vn` or `v/vt/vn`: every index given is
+/// an integer that names an element defined before this line (negative ones
+/// count back from the last).
+fn check_corner(corner: &str, counts: &[i64; 3]) -> std::result::Result<(), String> {
+    let parts: Vec<&str> = corner.split('/').collect();
+    if parts.len() > 3 {
+        return Err(format!(
+            "face corner `{corner}` has more than three `/`-separated indices"
+        ));
+    }
+    const NAMES: [&str; 3] = ["vertex", "texture coordinate", "normal"];
+    for (k, part) in parts.iter().enumerate() {
+        if part.is_empty() && k > 0 {
+            continue;
+        }
+        let index: i64 = part.parse().map_err(|_| {
+            format!(
+                "face corner `{corner}`: `{part}` is not a {} index (an integer)",
+                NAMES[k]
+            )
+        })?;
+        let resolved = if index < 0 {
+            counts[k] + index + 1
+        } else {
+            index
+        };
+        if resolved < 1 || resolved > counts[k] {
+            return Err(format!(
+                "face corner `{corner}` refers to {} {index}, but only {} are defined before this line",
+                NAMES[k], counts[k]
+            ));
+        }
     }
     Ok(())
 }

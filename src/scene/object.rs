@@ -6,6 +6,7 @@ use glam::{DVec3, Mat4, Quat, Vec3};
 
 use super::file::{ObjectSection, Scale, Shape};
 use super::obj;
+use super::validate::{self, MAX_COORDINATE, MIN_LENGTH};
 use super::MeshReader;
 use crate::core::error::{Error, Result};
 use crate::scene::mesh::Mesh;
@@ -24,6 +25,7 @@ pub(super) fn build_object(
     at: &str,
     source: &str,
     read: &MeshReader,
+    max_triangles: usize,
 ) -> Result<Mesh> {
     let err = |key: &str, message: String| Error::Scene {
         file: source.to_string(),
@@ -61,14 +63,17 @@ pub(super) fn build_object(
             let (display, text) = read(path).map_err(|(display, why)| {
                 err("mesh", format!("cannot read mesh `{display}`: {why}"))
             })?;
-            obj::parse_obj(&text, &display)?
+            obj::parse_obj_limited(&text, &display, max_triangles)?
         }
         (None, Some(shape)) => match shape {
             Shape::Tetrahedron => Mesh::tetrahedron(),
             Shape::Sphere => {
                 let radius = o.radius.unwrap_or(1.0);
-                if !(radius.is_finite() && radius > 0.0) {
-                    return Err(err("radius", format!("must be a positive number, got {radius}")));
+                if !(radius.is_finite() && (MIN_LENGTH..=MAX_COORDINATE).contains(&radius)) {
+                    return Err(err(
+                        "radius",
+                        format!("must be a number in [{MIN_LENGTH:e}, {MAX_COORDINATE:e}] (f32 lengths), got {radius}"),
+                    ));
                 }
                 let subdivisions = o.subdivisions.unwrap_or(3);
                 if subdivisions > 7 {
@@ -78,7 +83,7 @@ pub(super) fn build_object(
                     ));
                 }
                 let center = o.center.unwrap_or([0.0; 3]);
-                check_finite(&center).map_err(|why| err("center", why.into()))?;
+                validate::position(&center).map_err(|why| err("center", why))?;
                 let mut m = Mesh::icosphere(subdivisions);
                 m.transform(&Mat4::from_scale_rotation_translation(
                     Vec3::splat(radius as f32),
@@ -90,10 +95,13 @@ pub(super) fn build_object(
             Shape::Rectangle | Shape::Box => {
                 let dims = if shape == Shape::Rectangle { 2 } else { 3 };
                 let size = o.size.clone().unwrap_or_else(|| vec![1.0; dims]);
-                if size.len() != dims || !size.iter().all(|s| s.is_finite() && *s > 0.0) {
+                let length = |s: &f64| (MIN_LENGTH..=MAX_COORDINATE).contains(s);
+                if size.len() != dims || !size.iter().all(length) {
                     return Err(err(
                         "size",
-                        format!("expected {dims} positive numbers, got {size:?}"),
+                        format!(
+                            "expected exactly {dims} numbers in [{MIN_LENGTH:e}, {MAX_COORDINATE:e}], got {size:?}"
+                        ),
                     ));
                 }
                 if shape == Shape::Rectangle {
@@ -104,12 +112,23 @@ pub(super) fn build_object(
             }
         },
     };
-    mesh.transform(&object_transform(o, &err)?);
-    if let Some(i) = mesh.positions.iter().position(|p| !p.is_finite()) {
+    if mesh.triangles.len() > max_triangles {
         return Err(err(
             "",
             format!(
-                "vertex {i} is not finite after the transform ({})",
+                "{} triangles would pass the scene's limit (at most {max_triangles} more; raise it with --max-triangles)",
+                mesh.triangles.len()
+            ),
+        ));
+    }
+    mesh.transform(&object_transform(o, &err)?);
+    let limit = MAX_COORDINATE as f32;
+    let outside = |p: &Vec3| !(p.is_finite() && p.abs().max_element() <= limit);
+    if let Some(i) = mesh.positions.iter().position(outside) {
+        return Err(err(
+            "",
+            format!(
+                "vertex {i} lies at {} after the transform, outside ±{MAX_COORDINATE:e} (the renderer squares distances in f32)",
                 mesh.positions[i]
             ),
         ));
@@ -128,7 +147,7 @@ fn object_transform(o: &ObjectSection, err: &dyn Fn(&str, String) -> Error) -> R
             ));
         }
         let flat: Vec<f64> = rows.iter().flatten().copied().collect();
-        check_finite(&flat).map_err(|why| err("matrix", why.into()))?;
+        validate::position(&flat).map_err(|why| err("matrix", why))?;
         // Rows as written; glam stores columns.
         let m = glam::DMat4::from_cols_array_2d(&rows).transpose().as_mat4();
         if m.determinant().abs() < 1e-12 {
@@ -141,25 +160,29 @@ fn object_transform(o: &ObjectSection, err: &dyn Fn(&str, String) -> Error) -> R
         Some(Scale::Uniform(s)) => Vec3::splat(s as f32),
         Some(Scale::PerAxis(s)) => DVec3::from(s).as_vec3(),
     };
-    if !scale.is_finite() || scale.abs().min_element() == 0.0 {
+    let given = match o.scale {
+        None => vec![1.0],
+        Some(Scale::Uniform(s)) => vec![s],
+        Some(Scale::PerAxis(s)) => s.to_vec(),
+    };
+    validate::position(&given).map_err(|why| err("scale", why))?;
+    if scale.abs().min_element() < MIN_LENGTH as f32 {
         return Err(err(
             "scale",
-            format!("must be finite and non-zero, got {scale}"),
+            format!("{given:?} must be non-zero, at least {MIN_LENGTH:e} in size (f32)"),
         ));
     }
     let rotation = match o.rotate {
         None => Quat::IDENTITY,
         Some(r) => {
-            check_finite(&[r.axis[0], r.axis[1], r.axis[2], r.degrees])
-                .map_err(|why| err("rotate", why.into()))?;
-            let axis = DVec3::from(r.axis)
-                .try_normalize()
-                .ok_or_else(|| err("rotate.axis", "must not be the zero vector".into()))?;
+            validate::within(&[r.degrees], 1e6).map_err(|why| err("rotate.degrees", why))?;
+            validate::direction(&r.axis).map_err(|why| err("rotate.axis", why))?;
+            let axis = DVec3::from(r.axis).normalize();
             Quat::from_axis_angle(axis.as_vec3(), (r.degrees as f32).to_radians())
         }
     };
     let translate = o.translate.unwrap_or([0.0; 3]);
-    check_finite(&translate).map_err(|why| err("translate", why.into()))?;
+    validate::position(&translate).map_err(|why| err("translate", why))?;
     Ok(Mat4::from_scale_rotation_translation(
         scale,
         rotation,

@@ -11,6 +11,7 @@
 //!  status line · progress gauge · message
 //! ```
 
+use crate::core::text::{escape, escape_keep_newlines};
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::symbols::Marker;
@@ -74,7 +75,7 @@ pub fn view(app: &App, frame: &mut Frame) {
     let text = if app.message.is_empty() {
         "? help · q quit".to_string()
     } else {
-        app.message.clone()
+        escape(&app.message).into_owned()
     };
     frame.render_widget(Paragraph::new(text).style(fg(app, Color::Gray)), message);
     if app.help {
@@ -122,10 +123,10 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         .enumerate()
         .map(
             |(i, s)| match chapter.and_then(|c| app.scene_problem(c, i)) {
-                None => ListItem::new(s.name.clone()),
+                None => ListItem::new(escape(&s.name).into_owned()),
                 Some(why) => ListItem::new(vec![
-                    Line::from(format!("✗ {}", s.name)),
-                    Line::from(format!("  {why}")),
+                    Line::from(format!("✗ {}", escape(&s.name))),
+                    Line::from(format!("  {}", escape(&why.to_string()))),
                 ])
                 .style(fg(app, Color::DarkGray)),
             },
@@ -242,7 +243,7 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
     let inner = block.inner(area);
     frame.render_widget(block, area);
     let note = |text: String, color: Color| {
-        Paragraph::new(text)
+        Paragraph::new(escape_keep_newlines(&text).into_owned())
             .style(fg(app, color))
             .wrap(Wrap { trim: true })
     };
@@ -340,8 +341,8 @@ pub fn status_line(app: &App) -> Line<'static> {
     if let Some(s) = app.current_scene() {
         // The scene's own name ("(built-in)" is in the scene list).
         parts.push(match &s.scene {
-            Ok(scene) => scene.name.clone(),
-            Err(_) => s.name.clone(),
+            Ok(scene) => escape(&scene.name).into_owned(),
+            Err(_) => escape(&s.name).into_owned(),
         });
     }
     parts.push(app.view_name().to_string());
