@@ -30,6 +30,19 @@ pub mod exact {
         Option::<Vec<f64>>::deserialize(d)?.map(exactly).transpose()
     }
 
+    /// Three numbers for the key named `$key`, saying so in the error: for
+    /// the lights, whose tagged enum loses the position of the key.
+    macro_rules! named {
+        ($($name:ident),*) => {$(
+            #[doc = concat!("`", stringify!($name), "`: exactly three numbers.")]
+            pub fn $name<'de, D: Deserializer<'de>>(d: D) -> Result<[f64; 3], D::Error> {
+                exactly(Vec::<f64>::deserialize(d)?)
+                    .map_err(|e: D::Error| D::Error::custom(format!("`{}`: {e}", stringify!($name))))
+            }
+        )*};
+    }
+    named!(position, direction, intensity, irradiance, radiance, zenith, horizon, ground);
+
     /// An optional 4 x 4 matrix, row by row.
     pub fn matrix<'de, D: Deserializer<'de>>(d: D) -> Result<Option<[[f64; 4]; 4]>, D::Error> {
         let Some(rows) = Option::<Vec<Vec<f64>>>::deserialize(d)? else {
@@ -265,31 +278,31 @@ pub enum LightSection {
     /// An isotropic point light of intensity I (W/sr).
     Point {
         /// Position.
-        #[serde(deserialize_with = "exact::array")]
+        #[serde(deserialize_with = "exact::position")]
         position: [f64; 3],
         /// Intensity, linear RGB.
-        #[serde(deserialize_with = "exact::array")]
+        #[serde(deserialize_with = "exact::intensity")]
         intensity: [f64; 3],
     },
     /// Light from infinitely far away along `direction`.
     Directional {
         /// Direction the light travels.
-        #[serde(deserialize_with = "exact::array")]
+        #[serde(deserialize_with = "exact::direction")]
         direction: [f64; 3],
         /// Irradiance at normal incidence (W/m²), linear RGB.
-        #[serde(deserialize_with = "exact::array")]
+        #[serde(deserialize_with = "exact::irradiance")]
         irradiance: [f64; 3],
     },
     /// A point light limited to a cone with a smooth edge.
     Spot {
         /// Position.
-        #[serde(deserialize_with = "exact::array")]
+        #[serde(deserialize_with = "exact::position")]
         position: [f64; 3],
         /// Cone axis, the direction light travels.
-        #[serde(deserialize_with = "exact::array")]
+        #[serde(deserialize_with = "exact::direction")]
         direction: [f64; 3],
         /// Intensity on the axis (W/sr), linear RGB.
-        #[serde(deserialize_with = "exact::array")]
+        #[serde(deserialize_with = "exact::intensity")]
         intensity: [f64; 3],
         /// Half-angle of the cone in degrees.
         cone_degrees: f64,
@@ -300,7 +313,7 @@ pub enum LightSection {
     /// Constant radiance from every direction.
     Environment {
         /// Radiance (W/(m²·sr)), linear RGB.
-        #[serde(deserialize_with = "exact::array")]
+        #[serde(deserialize_with = "exact::radiance")]
         radiance: [f64; 3],
     },
     /// A sky (chapter 5): radiance blends linearly in the height of the
@@ -308,13 +321,13 @@ pub enum LightSection {
     /// world +y); below the horizon every direction sees `ground`.
     Sky {
         /// Radiance straight up (W/(m²·sr)), linear RGB.
-        #[serde(deserialize_with = "exact::array")]
+        #[serde(deserialize_with = "exact::zenith")]
         zenith: [f64; 3],
         /// Radiance along the horizon, linear RGB.
-        #[serde(deserialize_with = "exact::array")]
+        #[serde(deserialize_with = "exact::horizon")]
         horizon: [f64; 3],
         /// Radiance from below the horizon (default black).
-        #[serde(default, deserialize_with = "exact::array")]
+        #[serde(default, deserialize_with = "exact::ground")]
         ground: [f64; 3],
     },
 }

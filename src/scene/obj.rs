@@ -108,6 +108,7 @@ fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
     };
     // Vertices, texture coordinates and normals defined so far.
     let mut counts = [0i64; 3];
+    let mut first_colour: Option<(bool, usize)> = None;
     let mut faces = 0usize;
     let mut triangles = 0usize;
     for (n, raw) in text.lines().enumerate() {
@@ -133,6 +134,21 @@ fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
                             format!("a vertex is `v x y z`, `v x y z w` or `v x y z r g b`; got {k} numbers"),
                         ))
                     }
+                }
+                // tobj needs colours on every vertex or on none.
+                let coloured = xyz.len() == 6;
+                match first_colour {
+                    None => first_colour = Some((coloured, line)),
+                    Some((c, first)) if c != coloured => {
+                        return Err(err(
+                            line,
+                            format!(
+                                "vertex colours (`v x y z r g b`) must be on every vertex or none; line {first} {} one",
+                                if c { "has" } else { "has no" }
+                            ),
+                        ))
+                    }
+                    Some(_) => {}
                 }
                 counts[0] += 1;
             }
