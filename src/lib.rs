@@ -62,6 +62,7 @@ pub mod ch5_reflection;
 pub mod ch6_global_illumination;
 pub mod chapters;
 pub mod core;
+pub mod fuzz;
 pub mod grading;
 pub mod scene;
 pub mod summary;

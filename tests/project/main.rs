@@ -6,6 +6,7 @@ mod common;
 mod book;
 mod figures;
 mod film_and_main;
+mod fuzz;
 mod grading;
 mod hostile;
 mod hostile_bvh;
