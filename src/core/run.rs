@@ -28,12 +28,10 @@ pub struct CommonArgs {
     #[arg(long, value_name = "FILE")]
     pub scene: Option<PathBuf>,
     /// Image width in pixels (overrides the scene).
-    #[arg(long, allow_negative_numbers = true,
-          value_parser = clap::value_parser!(u32).range(1..=MAX_RESOLUTION as i64))]
+    #[arg(long, allow_negative_numbers = true, value_parser = pixels)]
     pub width: Option<u32>,
     /// Image height in pixels (overrides the scene).
-    #[arg(long, allow_negative_numbers = true,
-          value_parser = clap::value_parser!(u32).range(1..=MAX_RESOLUTION as i64))]
+    #[arg(long, allow_negative_numbers = true, value_parser = pixels)]
     pub height: Option<u32>,
     /// Samples per pixel, for chapters that sample (1 to 1,000,000).
     #[arg(long, default_value_t = 1, allow_negative_numbers = true,
@@ -63,6 +61,14 @@ pub struct CommonArgs {
     /// Most triangles a scene may hold.
     #[arg(long, default_value_t = DEFAULT_MAX_TRIANGLES, allow_negative_numbers = true)]
     pub max_triangles: usize,
+}
+
+/// An image size from the command line, 1 to [`MAX_RESOLUTION`] pixels.
+fn pixels(s: &str) -> std::result::Result<u32, String> {
+    match s.parse::<i64>() {
+        Ok(v) if (1..=MAX_RESOLUTION as i64).contains(&v) => Ok(v as u32),
+        _ => Err(format!("must be between 1 and {MAX_RESOLUTION} pixels")),
+    }
 }
 
 /// The most samples per pixel a run may ask for.

@@ -209,6 +209,7 @@ fn check_corner(corner: &str, counts: &[i64; 3]) -> std::result::Result<(), Stri
         ));
     }
     const NAMES: [&str; 3] = ["vertex", "texture coordinate", "normal"];
+    const PLURALS: [&str; 3] = ["vertices", "texture coordinates", "normals"];
     for (k, part) in parts.iter().enumerate() {
         if part.is_empty() && k > 0 {
             continue;
@@ -226,8 +227,8 @@ fn check_corner(corner: &str, counts: &[i64; 3]) -> std::result::Result<(), Stri
         };
         if resolved < 1 || resolved > counts[k] {
             return Err(format!(
-                "face corner `{corner}` refers to {} {index}, but only {} are defined before this line",
-                NAMES[k], counts[k]
+                "face corner `{corner}` refers to {} {index}, but only {} {} are defined before this line",
+                NAMES[k], counts[k], PLURALS[k]
             ));
         }
     }

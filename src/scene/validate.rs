@@ -22,7 +22,7 @@ pub fn within(values: &[f64], max: f64) -> Result<(), String> {
     match values.iter().find(|v| !(v.is_finite() && v.abs() <= max)) {
         None => Ok(()),
         Some(v) => Err(format!(
-            "{values:?} must be finite numbers within ±{max:e} (the renderer computes in f32); {v} is not"
+            "must be finite numbers within ±{max:e} (the renderer computes in f32), got {values:?} ({v} is not)"
         )),
     }
 }
@@ -37,7 +37,7 @@ pub fn light(values: &[f64]) -> Result<(), String> {
     within(values, MAX_LIGHT)?;
     if values.iter().any(|v| *v < 0.0) {
         return Err(format!(
-            "{values:?} must not be negative (light cannot be taken away)"
+            "must not be negative (light cannot be taken away), got {values:?}"
         ));
     }
     Ok(())
@@ -48,7 +48,7 @@ pub fn direction(values: &[f64; 3]) -> Result<(), String> {
     within(values, MAX_COORDINATE)?;
     if DVec3::from(*values).as_vec3().try_normalize().is_none() {
         return Err(format!(
-            "{values:?} must be a non-zero direction (at least {MIN_LENGTH:e} long in f32)"
+            "must not be the zero vector (a direction at least {MIN_LENGTH:e} long in f32), got {values:?}"
         ));
     }
     Ok(())

@@ -72,7 +72,7 @@ fn negative_light_is_refused_naming_the_key() {
 fn zero_directions_and_bad_cones_are_refused() {
     error(
         &format!("{SPHERE}[[lights]]\ntype = \"directional\"\ndirection = [0, 0, 0]\nirradiance = [1, 1, 1]\n"),
-        &["lights[0].direction", "non-zero"],
+        &["lights[0].direction", "zero vector"],
     );
     let spot = |dir: &str, cone: &str, falloff: &str| {
         format!(
