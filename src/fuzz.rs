@@ -384,6 +384,8 @@ pub struct Tally {
     pub slowest: (f64, u64),
     /// The indices of panicking and slow cases (the first 100).
     pub bad: Vec<u64>,
+    /// The indices of every slow case.
+    pub slow_cases: Vec<u64>,
 }
 
 impl Tally {
@@ -397,6 +399,9 @@ impl Tally {
         }
         let slow = seconds > SLOW_SECONDS;
         self.slow += slow as u64;
+        if slow {
+            self.slow_cases.push(index);
+        }
         if (slow || outcome == Outcome::Panic) && self.bad.len() < 100 {
             self.bad.push(index);
         }
@@ -416,6 +421,7 @@ impl Tally {
             self.slowest = other.slowest;
         }
         self.bad.extend(other.bad);
+        self.slow_cases.extend(other.slow_cases);
         self.bad.sort_unstable();
         self.bad.truncate(100);
         self
