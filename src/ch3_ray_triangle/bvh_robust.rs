@@ -14,10 +14,11 @@
 //!
 //! The guard answers each: boxes are scaled by a power of two (exact in
 //! floating point, so the tree is the one the unscaled boxes would give)
-//! into a range where areas neither underflow nor overflow, and large groups
-//! of triangles whose boxes land in the same tiny cell are built as *one*
-//! box, then split in halves by index (an object split) into a balanced
-//! subtree. Scenes with neither problem get obvhs' tree untouched.
+//! into a range where areas neither underflow nor overflow; and large groups
+//! of triangles that would tie anyway (bit-identical boxes, or boxes in one
+//! tiny cell whose areas underflow) are built as *one* box, then split in
+//! halves by index (an object split) into a balanced subtree. Scenes with
+//! neither problem get obvhs' tree untouched.
 
 use std::time::Duration;
 
@@ -33,9 +34,15 @@ use obvhs::BvhBuildParams;
 pub const CLUSTER_MIN: usize = 32;
 /// Cells are 2⁻³² of the scene's extent along each axis.
 const CELLS_PER_AXIS: f64 = 4_294_967_296.0;
-/// Extents in [2⁻²⁰, 2²⁰] need no scaling: their areas are far from f32's
-/// limits.
-const SAFE_EXPONENT: i32 = 20;
+/// Extents in [2⁻²⁰, 2⁶⁰] need no scaling: their areas are far from f32's
+/// limits (2⁻¹⁴⁹ and 2¹²⁸).
+const SAFE_EXPONENTS: std::ops::RangeInclusive<i32> = -20..=60;
+/// Other scenes are scaled to an extent of 2⁴⁰: areas up to 2⁸⁰, with as
+/// much room below for small triangles as the unscaled range leaves.
+const TARGET_EXPONENT: i32 = 40;
+/// A cell group whose (scaled) area is below this is about to underflow:
+/// its members' costs tie.
+const TINY_AREA: f32 = 1e-30;
 
 /// A binary BVH over `boxes` (non-empty) with obvhs' PLOC builder and
 /// `params`, guarded against the inputs that make PLOC quadratic (see the
@@ -47,7 +54,7 @@ pub fn build_guarded(boxes: &[Aabb], params: BvhBuildParams) -> Bvh2 {
         total = total.union(b);
     }
     let scale = power_of_two_scale(&total);
-    let clusters = clusters(boxes, &total);
+    let clusters = clusters(boxes, &total, scale);
     if scale == 1.0 && clusters.iter().all(|c| c.len() == 1) {
         return build_bvh2(boxes, params, &mut Duration::default());
     }
@@ -71,50 +78,82 @@ pub fn build_guarded(boxes: &[Aabb], params: BvhBuildParams) -> Bvh2 {
     )
 }
 
-/// 2^k such that the scaled extent lies in [2⁻²⁰, 2²⁰]; 1 when it does already.
+/// 1 when the extent is in the safe range, else the power of two that
+/// scales it to about 2⁴⁰.
 fn power_of_two_scale(total: &Aabb) -> f32 {
     let extent = (total.max - total.min).max_element();
     if !(extent.is_finite() && extent > 0.0) {
         return 1.0;
     }
     let exponent = extent.log2().round() as i32;
-    if exponent.abs() <= SAFE_EXPONENT {
+    if SAFE_EXPONENTS.contains(&exponent) {
         return 1.0;
     }
     // Keep the largest coordinate finite after scaling.
     let largest = total.min.abs().max(total.max.abs()).max_element();
-    let mut k = -exponent;
+    let mut k = TARGET_EXPONENT - exponent;
     while k > 0 && !(largest * 2f32.powi(k)).is_finite() {
         k -= 1;
     }
     2f32.powi(k)
 }
 
-/// The boxes grouped by the cell their corners fall in (2⁻³² of the scene
-/// per axis): every group of at least [`CLUSTER_MIN`] becomes one cluster,
-/// every other box is a cluster of its own. Clusters come in the boxes'
-/// order (by first member), so the result is deterministic.
-fn clusters(boxes: &[Aabb], total: &Aabb) -> Vec<Vec<u32>> {
+/// The boxes grouped into clusters: every run of at least [`CLUSTER_MIN`]
+/// bit-identical boxes, and every group of at least [`CLUSTER_MIN`] boxes
+/// whose corners fall in one cell (2⁻³² of the scene per axis) and whose
+/// union's area, scaled, is below [`TINY_AREA`]. Every other box is a
+/// cluster of its own. Clusters come in the boxes' order (by first
+/// member), so the result is deterministic.
+fn clusters(boxes: &[Aabb], total: &Aabb, scale: f32) -> Vec<Vec<u32>> {
+    let mut in_cluster = vec![u32::MAX; boxes.len()];
+    let mut big: Vec<Vec<u32>> = Vec::new();
+    let mut take = |run: &[u32], in_cluster: &mut Vec<u32>| {
+        for &i in run {
+            in_cluster[i as usize] = big.len() as u32;
+        }
+        let mut members = run.to_vec();
+        members.sort_unstable();
+        big.push(members);
+    };
+    // Exact duplicates.
+    let bits = |b: &Aabb| {
+        let (lo, hi) = (b.min.to_array(), b.max.to_array());
+        [lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]].map(f32::to_bits)
+    };
+    let mut order: Vec<u32> = (0..boxes.len() as u32).collect();
+    order.sort_by_key(|&i| (bits(&boxes[i as usize]), i));
+    for run in order.chunk_by(|a, b| bits(&boxes[*a as usize]) == bits(&boxes[*b as usize])) {
+        if run.len() >= CLUSTER_MIN {
+            take(run, &mut in_cluster);
+        }
+    }
+    // Tiny cells.
     let lo = total.min.as_dvec3();
     let size = (total.max.as_dvec3() - lo).max(glam34::DVec3::splat(f64::MIN_POSITIVE));
     let cell = |p: Vec3A| -> [u64; 3] {
         let q = (p.as_dvec3() - lo) / size * CELLS_PER_AXIS;
         q.to_array().map(|c| c.clamp(0.0, CELLS_PER_AXIS) as u64)
     };
-    let keys: Vec<([u64; 3], [u64; 3])> =
-        boxes.iter().map(|b| (cell(b.min), cell(b.max))).collect();
-    let mut order: Vec<u32> = (0..boxes.len() as u32).collect();
-    order.sort_by_key(|&i| (keys[i as usize], i));
-    let mut in_cluster = vec![u32::MAX; boxes.len()];
-    let mut big: Vec<Vec<u32>> = Vec::new();
-    for run in order.chunk_by(|a, b| keys[*a as usize] == keys[*b as usize]) {
-        if run.len() >= CLUSTER_MIN {
-            for &i in run {
-                in_cluster[i as usize] = big.len() as u32;
-            }
-            let mut members = run.to_vec();
-            members.sort_unstable();
-            big.push(members);
+    let key = |i: u32| {
+        let b = &boxes[i as usize];
+        (cell(b.min), cell(b.max))
+    };
+    let mut rest: Vec<u32> = order
+        .into_iter()
+        .filter(|&i| in_cluster[i as usize] == u32::MAX)
+        .collect();
+    rest.sort_by_key(|&i| (key(i), i));
+    for run in rest.chunk_by(|a, b| key(*a) == key(*b)) {
+        if run.len() < CLUSTER_MIN {
+            continue;
+        }
+        let mut union = Aabb::empty();
+        for &i in run {
+            union = union.union(&boxes[i as usize]);
+        }
+        let area = Aabb::new(union.min * scale, union.max * scale).half_area();
+        if area < TINY_AREA {
+            take(run, &mut in_cluster);
         }
     }
     let mut out = Vec::new();
