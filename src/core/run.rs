@@ -128,7 +128,9 @@ pub fn max_threads() -> usize {
     (4 * cores).max(8)
 }
 
-/// Sets the size of rayon's global pool (once per process).
+/// Sets the size of rayon's global pool (once per process), and installs
+/// the SIGINT/SIGTERM clean-up ([`clean_up_on_signals`]): every headless
+/// entry point calls this first.
 pub fn init_threads(threads: Option<usize>) -> Result<()> {
     if let Some(n) = threads {
         let max = max_threads();
@@ -142,6 +144,7 @@ pub fn init_threads(threads: Option<usize>) -> Result<()> {
             .num_threads(n)
             .build_global();
     }
+    clean_up_on_signals();
     Ok(())
 }
 
@@ -302,7 +305,6 @@ pub fn chapter_main(chapter: &dyn Chapter) -> ExitCode {
 /// it headless, printing to stdout. The common part of every chapter's
 /// `main`, including those with flags of their own.
 pub fn run_with(chapter: &dyn Chapter, common: &CommonArgs) -> Result<RunSummary> {
-    clean_up_on_signals();
     init_threads(common.threads)?;
     let scene = common.load_scene()?;
     let mut stdout = std::io::stdout().lock();

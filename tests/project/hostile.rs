@@ -380,7 +380,10 @@ fn interrupted_runs_leave_all_outputs_or_none_and_no_temporaries() {
             .unwrap()
     };
     let full = dir.join("full");
+    let began = std::time::Instant::now();
     assert!(run(&full).wait().unwrap().success());
+    // Signals spread over the whole run, writing included.
+    let duration = began.elapsed();
     let list = |d: &Path| -> Vec<String> {
         let mut v: Vec<String> = std::fs::read_dir(d)
             .map(|r| {
@@ -397,7 +400,7 @@ fn interrupted_runs_leave_all_outputs_or_none_and_no_temporaries() {
     for k in 0..16u64 {
         let out = dir.join(format!("run{k}"));
         let mut child = run(&out);
-        std::thread::sleep(std::time::Duration::from_millis(40 * k));
+        std::thread::sleep(duration * k as u32 / 14);
         let signal = if k % 2 == 0 { "-TERM" } else { "-INT" };
         let _ = Command::new("kill")
             .args([signal, &child.id().to_string()])
@@ -416,4 +419,31 @@ fn interrupted_runs_leave_all_outputs_or_none_and_no_temporaries() {
         }
     }
     eprintln!("interrupted runs: {whole} complete sets, {none} without outputs");
+}
+
+#[test]
+fn too_many_samples_are_refused_before_anything_renders() {
+    let dir = common::temp_dir("hostile-samples").join("out");
+    let settings = raystep::core::stage::Settings {
+        width: Some(16384),
+        height: Some(16384),
+        spp: 1_000_000,
+        ..Default::default()
+    };
+    let chapter = raystep::chapters::all()[5];
+    let mut sink = Vec::new();
+    let start = std::time::Instant::now();
+    let e =
+        raystep::core::run::run_headless(chapter, Scene::builtin(), &settings, &dir, 8, &mut sink)
+            .unwrap_err()
+            .to_string();
+    assert!(
+        e.contains("2^40") && e.contains("--spp") && e.contains("268435456 pixels"),
+        "{e}"
+    );
+    assert!(
+        start.elapsed().as_secs_f64() < 10.0,
+        "refused only after rendering"
+    );
+    assert!(!dir.exists());
 }
