@@ -178,7 +178,7 @@ fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
                 if triangles > max_triangles {
                     return Err(err(
                         line,
-                        format!("more than {max_triangles} triangles (the limit; raise it with --max-triangles)"),
+                        format!("more than {max_triangles} triangles, the most this file may add (raise the limit with --max-triangles)"),
                     ));
                 }
             }
