@@ -142,10 +142,26 @@ pub fn read_limited(path: &Path, max: u64) -> Result<String> {
     {
         return Err(too_big());
     }
+    // In chunks, so that a binary or endless file (`/dev/zero`) is refused
+    // at its first NUL byte instead of after the whole limit.
     let mut bytes = Vec::new();
-    file.take(max.saturating_add(1))
-        .read_to_end(&mut bytes)
-        .map_err(|e| Error::io(path, e))?;
+    let mut reader = file.take(max.saturating_add(1));
+    let mut chunk = vec![0u8; 1 << 16];
+    loop {
+        let n = match reader.read(&mut chunk) {
+            Ok(0) => break,
+            Ok(n) => n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(Error::io(path, e)),
+        };
+        if chunk[..n].contains(&0) {
+            return Err(Error::Usage(format!(
+                "{}: not a text file (it contains NUL bytes)",
+                path.display()
+            )));
+        }
+        bytes.extend_from_slice(&chunk[..n]);
+    }
     if bytes.len() as u64 > max {
         return Err(too_big());
     }
