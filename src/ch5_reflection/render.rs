@@ -27,8 +27,14 @@ pub fn scene_cannot_shadow(scene: &Scene) -> bool {
 // ANCHOR_END: cannot_shadow
 
 /// Whether every vertex lies on or behind every face's plane (a single flat
-/// polygon passes: all vertices lie on its plane).
+/// polygon passes: all vertices lie on its plane). The test costs triangles
+/// × vertices; above [`CONVEXITY_WORK`] (a sphere of 81,920 triangles took
+/// seconds) the mesh is taken as possibly self-shadowing, which only costs
+/// shadow rays.
 fn is_convex(mesh: &Mesh) -> bool {
+    if mesh.triangles.len() as u64 * mesh.positions.len() as u64 > CONVEXITY_WORK {
+        return false;
+    }
     let scale = mesh
         .positions
         .iter()
@@ -44,6 +50,9 @@ fn is_convex(mesh: &Mesh) -> bool {
             .all(|p| (*p - a).dot(n) <= 1e-4 * scale)
     })
 }
+
+/// The most triangle-vertex pairs the convexity test looks at.
+const CONVEXITY_WORK: u64 = 50_000_000;
 
 /// Adds sample `sample` of every pixel to `sums`, rows in parallel; every
 /// random number comes from (seed, pixel, sample), so the result does not

@@ -450,3 +450,18 @@ fn too_many_samples_are_refused_before_anything_renders() {
     );
     assert!(!dir.exists());
 }
+
+/// Found by the fuzzer: chapter 5's "can anything cast a shadow?" test
+/// compared every vertex with every face, seconds for a sphere of 81,920
+/// triangles and a minute for the largest one a scene may ask for. Above a
+/// fixed amount of work it now answers "maybe" (and traces shadow rays).
+#[test]
+fn the_shadow_question_stays_cheap_on_a_fine_sphere() {
+    use raystep::ch5_reflection::render::scene_cannot_shadow;
+    let fine = parse("[[objects]]\nshape = \"sphere\"\nsubdivisions = 6\n").unwrap();
+    let start = std::time::Instant::now();
+    assert!(!scene_cannot_shadow(&fine));
+    assert!(start.elapsed().as_secs_f64() < 1.0);
+    let coarse = parse("[[objects]]\nshape = \"sphere\"\nsubdivisions = 3\n").unwrap();
+    assert!(scene_cannot_shadow(&coarse));
+}
