@@ -2,46 +2,15 @@
 //! random walk, readable on its own), converges to the image of the full
 //! MIS path loop: region z-tests with both sample variances.
 
-use glam::{Vec2, Vec3};
-use raystep::ch1_projection::camera::Camera;
-use raystep::ch5_reflection::world::World;
 use raystep::ch6_global_illumination::integrator::{random_walk, PathSettings};
 use raystep::ch6_global_illumination::reference::{region_z_test, RegionTest, StoredReference};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::scenes;
 use raystep::ch6_global_illumination::studies::render;
 use raystep::core::film::Film;
-use raystep::core::sampling::Sampler;
 use raystep::scene::Scene;
 
-/// Per-pixel mean and variance of the mean of `spp` random walks.
-fn walk_image(scene: &Scene, spp: u32, max_depth: u32) -> (Film, Film) {
-    let world = World::new(scene);
-    let cam = Camera::of(scene);
-    let (mut mean, mut var) = (
-        Film::new(cam.width, cam.height),
-        Film::new(cam.width, cam.height),
-    );
-    for y in 0..cam.height {
-        for x in 0..cam.width {
-            let pixel = (y * cam.width + x) as u64;
-            let (mut sum, mut sum_sq) = (Vec3::ZERO, Vec3::ZERO);
-            for sample in 0..spp {
-                let mut s = Sampler::new(17, pixel, sample as u64);
-                let raster = Vec2::new(x as f32, y as f32) + s.next2();
-                let l = random_walk(&world, cam.ray(raster), max_depth, &mut s);
-                assert!(l.is_finite(), "pixel ({x}, {y}): {l}");
-                sum += l;
-                sum_sq += l * l;
-            }
-            let n = spp as f32;
-            let m = sum / n;
-            mean.pixels[pixel as usize] = m;
-            var.pixels[pixel as usize] = (sum_sq - n * m * m).max(Vec3::ZERO) / (n - 1.0) / n;
-        }
-    }
-    (mean, var)
-}
+use crate::common::mean_and_variance;
 
 // ANCHOR: walk_against_mis
 /// The random walk (`walk_spp` samples) against the full MIS loop
@@ -56,7 +25,8 @@ fn walk_against_mis(
 ) -> (RegionTest, Film) {
     let path = PathSettings::default();
     assert_eq!(path.max_bounces, Some(16));
-    let (walk, walk_var) = walk_image(scene, walk_spp, 16 + 1);
+    let (walk, walk_var) =
+        mean_and_variance(scene, walk_spp, 17, &|w, r, s| random_walk(w, r, 16 + 1, s));
     let (acc, _) = render(scene, &path, SamplerKind::Independent, mis_spp, 11, false);
     let reference = StoredReference {
         mean: acc.mean(),

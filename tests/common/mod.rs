@@ -43,3 +43,47 @@ pub fn references_pass(chapter: u32, count: usize) {
         assert!(outcome.is_pass(), "{}: {outcome:?}", ex.id());
     }
 }
+
+/// Per-pixel mean and variance of the mean of `spp` samples of
+/// `radiance`, each sample's camera ray jittered inside its pixel (as the
+/// shading chapters' render passes do), every number from
+/// (seed, pixel, sample). The estimator ladders' tests compare such images.
+pub fn mean_and_variance(
+    scene: &raystep::scene::Scene,
+    spp: u32,
+    seed: u64,
+    radiance: &dyn Fn(
+        &raystep::ch5_reflection::world::World,
+        raystep::ch3_ray_triangle::ray::Ray,
+        &mut raystep::core::sampling::Sampler,
+    ) -> glam::Vec3,
+) -> (raystep::core::film::Film, raystep::core::film::Film) {
+    use glam::{Vec2, Vec3};
+    use raystep::core::film::Film;
+    let world = raystep::ch5_reflection::world::World::new(scene);
+    let cam = raystep::ch1_projection::camera::Camera::of(scene);
+    let (mut mean, mut var) = (
+        Film::new(cam.width, cam.height),
+        Film::new(cam.width, cam.height),
+    );
+    for y in 0..cam.height {
+        for x in 0..cam.width {
+            let pixel = (y * cam.width + x) as u64;
+            let (mut sum, mut sum_sq) = (Vec3::ZERO, Vec3::ZERO);
+            for sample in 0..spp {
+                let mut s = raystep::core::sampling::Sampler::new(seed, pixel, sample as u64);
+                let raster = Vec2::new(x as f32, y as f32) + s.next2();
+                let l = radiance(&world, cam.ray(raster), &mut s);
+                assert!(l.is_finite(), "pixel ({x}, {y}): {l}");
+                sum += l;
+                sum_sq += l * l;
+            }
+            let n = spp as f32;
+            let m = sum / n;
+            mean.pixels[pixel as usize] = m;
+            // The sample variance, divided by n: the variance of the mean.
+            var.pixels[pixel as usize] = (sum_sq - n * m * m).max(Vec3::ZERO) / (n - 1.0) / n;
+        }
+    }
+    (mean, var)
+}
