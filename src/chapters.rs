@@ -8,7 +8,7 @@ pub fn all() -> Vec<&'static dyn Chapter> {
     vec![
         &crate::ch1_projection::stage::Projection,
         &crate::ch2_rasterization::stage::RASTERIZATION,
-        &crate::ch3_ray_triangle::stage::RayTriangle,
+        &crate::ch3_ray_triangle::stage::DEFAULT,
         &crate::ch4_implicit_surfaces::stage::DEFAULT,
         &crate::ch5_reflection::stage::DEFAULT,
         &crate::ch6_global_illumination::stage::DEFAULT,

@@ -12,7 +12,7 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use raystep::ch3_ray_triangle::bench::benchmark;
-use raystep::ch3_ray_triangle::stage::RayTriangle;
+use raystep::ch3_ray_triangle::stage::DEFAULT;
 use raystep::core::run::{exit_code, run_with, CommonArgs};
 
 #[derive(Parser)]
@@ -38,5 +38,5 @@ fn main() -> ExitCode {
         print!("{}", benchmark(only).to_text());
         return ExitCode::SUCCESS;
     }
-    exit_code(run_with(&RayTriangle, &cli.common))
+    exit_code(run_with(&DEFAULT, &cli.common))
 }

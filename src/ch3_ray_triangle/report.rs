@@ -92,11 +92,6 @@ pub fn chapter_report(
     report
 }
 
-/// Adds every study to `report` (full size).
-pub fn add_studies(report: &mut Report, scene: &Scene, settings: &Settings) {
-    add_studies_sized(report, scene, settings, &StudySize::full());
-}
-
 /// Adds every study to `report`, at the given size.
 pub fn add_studies_sized(
     report: &mut Report,

@@ -9,7 +9,8 @@ use glam::Vec3;
 
 use super::geometry::Geometry;
 use super::render::{films_from_sums, render_sum, TraceStats};
-use super::report::{add_studies, chapter_report};
+use super::report::{add_studies_sized, chapter_report};
+use super::studies::StudySize;
 use crate::ch1_projection::camera::Camera;
 use crate::core::error::Result;
 use crate::core::film::Film;
@@ -38,7 +39,16 @@ pub const VIEWS: &[View] = &[
 ];
 
 /// Chapter 3 as a stage.
-pub struct RayTriangle;
+pub struct RayTriangle {
+    /// How big the report's studies are: [`StudySize::full`] for the
+    /// report, smaller in tests of the report's layout.
+    pub study_size: fn() -> StudySize,
+}
+
+/// Chapter 3 with the report's full studies.
+pub const DEFAULT: RayTriangle = RayTriangle {
+    study_size: StudySize::full,
+};
 
 impl Chapter for RayTriangle {
     fn number(&self) -> u32 {
@@ -60,6 +70,7 @@ impl Chapter for RayTriangle {
             camera: Camera::new(scene.camera)?,
             scene,
             settings: settings.clone(),
+            study_size: self.study_size,
             geometry,
             sums: vec![[Vec3::ZERO; 4]; n],
             done: 0,
@@ -73,6 +84,7 @@ struct RayTriangleRender {
     scene: Arc<Scene>,
     camera: Camera,
     settings: Settings,
+    study_size: fn() -> StudySize,
     geometry: Geometry,
     sums: Vec<[Vec3; 4]>,
     done: u32,
@@ -146,7 +158,12 @@ impl Render for RayTriangleRender {
         );
         report.nonfinite_caught = nonfinite;
         if self.settings.studies {
-            add_studies(&mut report, &self.scene, &self.settings);
+            add_studies_sized(
+                &mut report,
+                &self.scene,
+                &self.settings,
+                &(self.study_size)(),
+            );
         }
         report
     }

@@ -61,6 +61,18 @@ impl StudySize {
             spawn_rays: 10_000,
         }
     }
+
+    /// The report's table rows (so its widest numbers appear) at a cost a
+    /// debug-build test of the report's layout can afford: the naive loop
+    /// is skipped above 10^6 ray-triangle tests and few rays are shot.
+    pub fn layout() -> StudySize {
+        StudySize {
+            naive_budget: 1e6,
+            leak_rays: 10_000,
+            spawn_rays: 1_000,
+            ..StudySize::full()
+        }
+    }
 }
 
 /// A wavy height field over [-1, 1]² facing +z with exactly `n` triangles

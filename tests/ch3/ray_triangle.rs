@@ -10,7 +10,7 @@ use raystep::ch3_ray_triangle::leaks::{bunny, leak_test, self_intersections};
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch3_ray_triangle::render::{render_views, sample_position};
 use raystep::ch3_ray_triangle::stability::stability_cases;
-use raystep::ch3_ray_triangle::stage::RayTriangle;
+use raystep::ch3_ray_triangle::stage::DEFAULT as RayTriangle;
 use raystep::ch3_ray_triangle::studies::{
     naive_vs_bvh, procedural_camera, procedural_mesh, scene_of, StudySize,
 };
