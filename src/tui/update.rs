@@ -183,7 +183,7 @@ pub fn update(mut app: App, msg: Msg) -> App {
         Msg::ToggleStudent => toggle_student(&mut app),
         Msg::Student(chapter, event) => student_event(&mut app, chapter, event),
         Msg::Save => {
-            if app.snapshot.is_some() || app.grading.is_some() {
+            if app.snapshot.is_some() || app.grading.is_some() || app.student_render().is_some() {
                 app.save_requested = true;
             } else {
                 app.message = "nothing to save yet".into();
