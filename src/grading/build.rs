@@ -5,7 +5,10 @@
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Command;
+use std::sync::atomic::AtomicBool;
+
+use crate::grading::child::{run_limited, Ran};
 
 /// The repository root (where `Cargo.toml` and `chapters/` are).
 pub fn root() -> PathBuf {
@@ -22,18 +25,56 @@ pub struct Built {
     pub broken: BTreeMap<String, String>,
 }
 
-/// Builds `raystep-exercises` with the exercise files under `dir`; an
-/// exercise whose file (or whose call in the crate's table) draws a
-/// compiler error is left out (`RAYSTEP_BROKEN`) and the crate rebuilt.
+/// Where the exercises crate is built: a target folder and a profile.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Place {
+    /// The target folder (`target/`).
+    pub target: PathBuf,
+    /// The release profile (else the dev profile, in `debug/`).
+    pub release: bool,
+}
+
+impl Place {
+    /// Beside the running program, with its profile: the grader, the TUI
+    /// and the chapter binaries live in `<target>/<profile>/`, a test in
+    /// `<target>/<profile>/deps/`. Building there reuses the library
+    /// they were built with.
+    pub fn current() -> Result<Place, String> {
+        let exe = std::env::current_exe().map_err(|e| e.to_string())?;
+        let mut dir = exe.parent().ok_or("no folder for this program")?;
+        if dir.file_name().is_some_and(|n| n == "deps") {
+            dir = dir.parent().ok_or("no profile folder")?;
+        }
+        Ok(Place {
+            target: dir.parent().ok_or("no target folder")?.to_path_buf(),
+            release: !cfg!(debug_assertions),
+        })
+    }
+
+    /// The `grade-student` binary a build here makes.
+    pub fn runner(&self) -> PathBuf {
+        let profile = if self.release { "release" } else { "debug" };
+        self.target
+            .join(profile)
+            .join(format!("grade-student{}", std::env::consts::EXE_SUFFIX))
+    }
+}
+
+/// Builds `raystep-exercises` with the exercise files under `dir`, beside
+/// the running program ([`Place::current`]); see [`build_exercises_in`].
 pub fn build_exercises(dir: &Path) -> Result<Built, String> {
-    let exe = std::env::current_exe().map_err(|e| e.to_string())?;
-    let bin_dir = exe
-        .parent()
-        .ok_or("no folder for the grader")?
-        .to_path_buf();
-    // `grade` lives in <target>/<profile>/: build beside it, same profile.
-    let target = bin_dir.parent().ok_or("no target folder")?.to_path_buf();
-    let release = !cfg!(debug_assertions);
+    build_exercises_in(dir, &Place::current()?, None)
+}
+
+/// Builds `raystep-exercises` with the exercise files under `dir` at
+/// `place`; an exercise whose file (or whose call in the crate's table)
+/// draws a compiler error is left out (`RAYSTEP_BROKEN`) and the crate
+/// rebuilt. Setting `cancel` stops cargo and returns an error.
+pub fn build_exercises_in(
+    dir: &Path,
+    place: &Place,
+    cancel: Option<&AtomicBool>,
+) -> Result<Built, String> {
     let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
     let dir = dir
         .canonicalize()
@@ -52,22 +93,24 @@ pub fn build_exercises(dir: &Path) -> Result<Built, String> {
         .args(["--bin", "grade-student", "--manifest-path"])
         .arg(root().join("Cargo.toml"))
         .arg("--target-dir")
-        .arg(&target)
+        .arg(&place.target)
         .env("RAYSTEP_EXERCISES_DIR", &dir)
         .env(
             "RAYSTEP_BROKEN",
             broken.keys().cloned().collect::<Vec<_>>().join(","),
-        )
-        .stdin(Stdio::null());
-        if release {
+        );
+        if place.release {
             cmd.arg("--release");
         }
-        let output = cmd.output().map_err(|e| format!("cannot run cargo: {e}"))?;
-        let runner = bin_dir.join(format!("grade-student{}", std::env::consts::EXE_SUFFIX));
-        if output.status.success() {
+        let (ok, stderr) = match run_limited(&mut cmd, None, cancel) {
+            Ok(Ran::Exited { status, stderr, .. }) => (status.success(), stderr),
+            Ok(_) => return Err("the build was cancelled".into()),
+            Err(e) => return Err(format!("cannot run cargo: {e}")),
+        };
+        if ok {
+            let runner = place.runner();
             return Ok(Built { runner, broken });
         }
-        let stderr = String::from_utf8_lossy(&output.stderr);
         let (found, other) = attribute_errors(&stderr);
         let new: Vec<_> = found
             .into_iter()

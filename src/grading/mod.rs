@@ -17,10 +17,12 @@
 //! image, the reference and their difference are written to `out/grade/`.
 
 pub mod build;
+pub mod child;
 pub mod driver;
 pub mod exercise;
 pub mod exercises;
 pub mod hints;
+pub mod live;
 pub mod process;
 pub mod runner;
 

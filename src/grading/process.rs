@@ -3,15 +3,15 @@
 //! verdict read back; and `chN --student`, which renders a chapter's
 //! capstone with the student's code.
 
-use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode, Stdio};
 use std::time::{Duration, Instant};
 
 use crate::grading::build::{build_exercises, root};
+use crate::grading::child::{crash_message, last_progress, run_limited, Ran};
 use crate::grading::exercise::{Exercise, Outcome};
 use crate::grading::runner::parse_verdict;
-use crate::grading::{run, write_failure_images, PROGRESS, PROGRESS_ENV};
+use crate::grading::{run, write_failure_images, PROGRESS_ENV};
 
 /// `chN --student`: builds the exercises, then renders chapter N's
 /// capstone scene with the student's code beside the reference and their
@@ -90,86 +90,29 @@ pub fn run_student(
     out: &Path,
     timeout: Duration,
 ) -> (Outcome, Vec<PathBuf>) {
-    let none = Vec::new;
-    let mut child = match Command::new(runner)
-        .arg(ex.id())
-        .arg(out)
-        .env(PROGRESS_ENV, "1")
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-    {
-        Ok(c) => c,
+    let mut cmd = Command::new(runner);
+    cmd.arg(ex.id()).arg(out).env(PROGRESS_ENV, "1");
+    match run_limited(&mut cmd, Some(timeout), None) {
         Err(e) => {
             let m = format!("could not start {}: {e}", runner.display());
-            return (Outcome::Panicked(m), none());
+            (Outcome::Panicked(m), Vec::new())
         }
-    };
-    let read = |mut r: Box<dyn Read + Send>| {
-        std::thread::spawn(move || {
-            let mut buf = Vec::new();
-            let _ = r.read_to_end(&mut buf);
-            String::from_utf8_lossy(&buf).into_owned()
-        })
-    };
-    let stdout = read(Box::new(child.stdout.take().expect("piped")));
-    let stderr = read(Box::new(child.stderr.take().expect("piped")));
-    let start = Instant::now();
-    let mut timed_out = false;
-    let status = loop {
-        match child.try_wait() {
-            Ok(Some(status)) => break Some(status),
-            Ok(None) if start.elapsed() >= timeout => {
-                let _ = child.kill();
-                let _ = child.wait();
-                timed_out = true;
-                break None;
-            }
-            Ok(None) => std::thread::sleep(Duration::from_millis(5)),
-            Err(e) => {
-                return (
-                    Outcome::Panicked(format!("lost the check's process: {e}")),
-                    none(),
-                )
-            }
+        Ok(Ran::TimedOut { stderr }) => {
+            let seconds = timeout.as_secs_f64();
+            let doing = last_progress(&stderr);
+            (Outcome::TimedOut { seconds, doing }, Vec::new())
         }
-    };
-    let stdout = stdout.join().unwrap_or_default();
-    let stderr = stderr.join().unwrap_or_default();
-    let doing = stderr
-        .lines()
-        .filter_map(|l| l.strip_prefix(PROGRESS))
-        .next_back()
-        .unwrap_or_default()
-        .to_string();
-    if timed_out {
-        let seconds = timeout.as_secs_f64();
-        return (Outcome::TimedOut { seconds, doing }, none());
-    }
-    match parse_verdict(&stdout) {
-        Some(v) => (v.outcome(), v.images),
-        None => {
-            let tail: Vec<&str> = stderr
-                .lines()
-                .filter(|l| !l.starts_with(PROGRESS))
-                .collect();
-            let tail = tail[tail.len().saturating_sub(3)..].join(" / ");
-            let m = format!(
-                "the check's process crashed ({}){}{}",
-                status.map(|s| s.to_string()).unwrap_or_default(),
-                if doing.is_empty() {
-                    String::new()
-                } else {
-                    format!(" while {doing}")
-                },
-                if tail.is_empty() {
-                    String::new()
-                } else {
-                    format!(": {tail}")
-                }
-            );
-            (Outcome::Panicked(m), none())
-        }
+        Ok(Ran::Cancelled) => (Outcome::Panicked("cancelled".into()), Vec::new()),
+        Ok(Ran::Exited {
+            status,
+            stdout,
+            stderr,
+        }) => match parse_verdict(&stdout) {
+            Some(v) => (v.outcome(), v.images),
+            None => (
+                Outcome::Panicked(crash_message(&status, &stderr)),
+                Vec::new(),
+            ),
+        },
     }
 }

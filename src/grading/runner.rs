@@ -10,7 +10,7 @@ use std::process::ExitCode;
 use serde::{Deserialize, Serialize};
 
 use crate::grading::exercise::{Check, Exercise, Outcome};
-use crate::grading::{run_check, write_failure_images};
+use crate::grading::{run_check, write_failure_images, PROGRESS_ENV};
 
 /// The student's checks, by exercise id (`chN/name`): what the exercises
 /// crate compiled (an exercise that does not compile is left out).
@@ -116,7 +116,9 @@ pub const CAPSTONES: [(u32, &str); 6] = [
 
 /// `grade-student render <N> <out>`: renders chapter N's capstone scene
 /// with the student's code and with the reference, writes both and their
-/// difference to `out`, and says how they compare.
+/// difference to `out`, and says how they compare. When the grader runs it
+/// ([`PROGRESS_ENV`] set: the TUI's student mode), the verdict follows, as
+/// for a check, with the three images' paths.
 fn render(registry: &Registry, chapter: &str, out: &Path) -> ExitCode {
     let n: u32 = chapter.trim_start_matches("ch").parse().unwrap_or(0);
     let Some((_, name)) = CAPSTONES.iter().find(|(c, _)| *c == n) else {
@@ -137,7 +139,23 @@ fn render(registry: &Registry, chapter: &str, out: &Path) -> ExitCode {
         );
         return ExitCode::from(2);
     };
-    let c = match run_check(*check) {
+    let (code, verdict) = render_check(&ex, *check, out);
+    if std::env::var_os(PROGRESS_ENV).is_some() {
+        if let Ok(text) = toml::to_string(&verdict) {
+            println!("\n{VERDICT}\n{text}");
+        }
+    }
+    code
+}
+
+/// Runs the capstone's check, prints what it found and writes its images.
+fn render_check(ex: &Exercise, check: fn() -> Check, out: &Path) -> (ExitCode, Verdict) {
+    let fail = |outcome: &str, detail: String| Verdict {
+        outcome: outcome.into(),
+        detail,
+        ..Verdict::default()
+    };
+    let c = match run_check(check) {
         Outcome::Passed(c) | Outcome::Failed(c) => c,
         Outcome::NotImplemented => {
             println!(
@@ -145,29 +163,42 @@ fn render(registry: &Registry, chapter: &str, out: &Path) -> ExitCode {
                 ex.id(),
                 ex.file
             );
-            return ExitCode::from(1);
+            return (ExitCode::from(1), fail("not_implemented", String::new()));
         }
         other => {
             println!("{}: {other:?}", ex.id());
-            return ExitCode::from(1);
+            let detail = match other {
+                Outcome::Panicked(m) | Outcome::DoesNotCompile(m) => m,
+                other => format!("{other:?}"),
+            };
+            return (ExitCode::from(1), fail("panicked", detail));
         }
     };
-    let verdict = if c.passed() {
+    let passed = c.passed();
+    let verdict = if passed {
         "matches the reference"
     } else {
         "differs from the reference"
     };
     println!("your {} {verdict}: {}", ex.id(), c.detail);
-    match write_failure_images(&ex, &c, out) {
+    match write_failure_images(ex, &c, out) {
         Ok(files) => {
-            for f in files {
+            for f in &files {
                 println!("wrote {}", f.display());
             }
-            ExitCode::SUCCESS
+            let v = Verdict {
+                outcome: if passed { "passed" } else { "failed" }.into(),
+                error: c.error,
+                tolerance: c.tolerance,
+                detail: c.detail,
+                images: files,
+            };
+            (ExitCode::SUCCESS, v)
         }
         Err(e) => {
             eprintln!("error: {e}");
-            ExitCode::from(2)
+            let detail = format!("could not write the images: {e}");
+            (ExitCode::from(2), fail("panicked", detail))
         }
     }
 }

@@ -6,7 +6,7 @@
 use std::borrow::Cow;
 use std::path::PathBuf;
 
-pub use super::layers::{bounce_name, combine_layers, expose, BounceMode};
+pub use super::layers::{bounce_name, combine_layers, expose, BounceMode, Compare};
 use super::scenes::SceneEntry;
 use super::worker::{Job, Progress, Snapshot, Target};
 use crate::core::film::Film;
@@ -23,37 +23,6 @@ pub enum Focus {
     Chapters,
     /// The scene list.
     Scenes,
-}
-
-/// What the preview compares.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Compare {
-    /// The render.
-    Render,
-    /// The stage's reference.
-    Reference,
-    /// |render - reference|, scaled so the largest difference is white.
-    Difference,
-}
-
-impl Compare {
-    /// Name for the status line and file names.
-    pub fn name(self) -> &'static str {
-        match self {
-            Compare::Render => "render",
-            Compare::Reference => "reference",
-            Compare::Difference => "difference",
-        }
-    }
-
-    /// The name while the grader's images are shown: the render is the
-    /// student's image.
-    pub fn grading_name(self) -> &'static str {
-        match self {
-            Compare::Render => "student",
-            other => other.name(),
-        }
-    }
 }
 
 /// Everything the UI knows.
@@ -106,6 +75,8 @@ pub struct App {
     /// Asks the event loop to read the grader's images from
     /// [`App::grade_dir`].
     pub grade_requested: bool,
+    /// Student mode (`x`): the event loop keeps a watcher on this chapter.
+    pub student: Option<super::student::StudentMode>,
     /// How far a progressive chapter renders (the event loop passes a
     /// change on to the running render).
     pub target: Target,
@@ -167,6 +138,10 @@ pub enum Msg {
     ToggleGrading,
     /// The grader's images were read: the pair, none, or the error.
     GradeLoaded(Result<Option<FailureImages>, String>),
+    /// Student mode on (the current chapter's capstone, live) or off.
+    ToggleStudent,
+    /// A report from the student-mode watcher of this chapter.
+    Student(u32, super::student::StudentEvent),
     /// Save the current view.
     Save,
     /// The save finished: the files written, or the error.
@@ -208,6 +183,7 @@ impl App {
             out_dir: PathBuf::from("out"),
             grading: None,
             grade_requested: false,
+            student: None,
             target: Target::DEFAULT,
             paused: false,
             graphics: super::graphics::Graphics::HalfBlocks,
@@ -220,6 +196,11 @@ impl App {
     /// folder, as `cargo run --bin grade` does by default (`out/grade`).
     pub fn grade_dir(&self) -> PathBuf {
         self.out_dir.join("grade")
+    }
+
+    /// Student mode's newest images, when it has some.
+    pub fn student_render(&self) -> Option<&crate::grading::live::StudentRender> {
+        self.student.as_ref()?.render.as_ref()
     }
 
     /// The selected chapter, if there is any.
@@ -313,6 +294,7 @@ impl App {
     /// or the grader's images are shown.
     pub fn shows_compare(&self) -> bool {
         self.grading.is_some()
+            || self.student_render().is_some()
             || self
                 .snapshot
                 .as_ref()
@@ -322,7 +304,7 @@ impl App {
     /// The compare selection's name: render, reference, difference, or
     /// student, reference, difference for the grader's images.
     pub fn compare_name(&self) -> &'static str {
-        if self.grading.is_some() {
+        if self.grading.is_some() || self.student_render().is_some() {
             self.compare.grading_name()
         } else {
             self.compare.name()
@@ -347,11 +329,16 @@ impl App {
     /// (the common case: a view or the reference as it is), so a redraw
     /// does not copy a whole film.
     pub fn displayed_ref(&self) -> Option<Cow<'_, Film>> {
-        if let Some(g) = &self.grading {
+        let pair = match (&self.grading, &self.student) {
+            (Some(g), _) => Some((&g.student, &g.reference)),
+            (None, Some(s)) => Some((&s.render.as_ref()?.student, &s.render.as_ref()?.reference)),
+            (None, None) => None,
+        };
+        if let Some((student, reference)) = pair {
             return Some(match self.compare {
-                Compare::Render => Cow::Borrowed(&g.student),
-                Compare::Reference => Cow::Borrowed(&g.reference),
-                Compare::Difference => Cow::Owned(g.student.difference(&g.reference)),
+                Compare::Render => Cow::Borrowed(student),
+                Compare::Reference => Cow::Borrowed(reference),
+                Compare::Difference => Cow::Owned(student.difference(reference)),
             });
         }
         let snap = self.snapshot.as_ref()?;
@@ -390,6 +377,10 @@ impl App {
     pub fn save_stem(&self) -> String {
         if let Some(g) = &self.grading {
             return format!("tui-grade-{}-{}", g.stem, self.compare_name());
+        }
+        if let Some(r) = self.student_render() {
+            let id = r.id.replace('/', "-");
+            return format!("tui-student-{id}-{}", self.compare_name());
         }
         let chapter = self.current_chapter().map(|c| c.number()).unwrap_or(0);
         let scene = self

@@ -20,6 +20,10 @@ pub const KEYS: &[(&str, &str)] = &[
         "grader's newest failed image: student / reference / diff",
     ),
     (
+        "x",
+        "student mode: your capstone, live (r: yours / ref / diff)",
+    ),
+    (
         "e  E",
         "next / previous estimator or sampler: the lecture's ladder",
     ),
@@ -94,6 +98,7 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         KeyCode::Char('>') | KeyCode::Char('.') => Msg::TargetUp,
         KeyCode::Char('<') | KeyCode::Char(',') => Msg::TargetDown,
         KeyCode::Char('g') => Msg::ToggleGrading,
+        KeyCode::Char('x') => Msg::ToggleStudent,
         KeyCode::Char('s') => Msg::Save,
         KeyCode::Char('?') => Msg::ToggleHelp,
         _ => return None,

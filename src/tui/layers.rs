@@ -1,5 +1,6 @@
 //! The bounce layers of a render: how the bounce control combines them,
-//! what the lecture calls each picture, and exposure.
+//! what the lecture calls each picture, exposure, and what the preview
+//! compares.
 
 use glam::Vec3;
 
@@ -59,5 +60,36 @@ pub fn expose(film: &Film, stops: i32) -> Film {
             .iter()
             .map(|p| *p * Vec3::splat(scale))
             .collect(),
+    }
+}
+
+/// What the preview compares.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Compare {
+    /// The render.
+    Render,
+    /// The stage's reference.
+    Reference,
+    /// |render - reference|, scaled so the largest difference is white.
+    Difference,
+}
+
+impl Compare {
+    /// Name for the status line and file names.
+    pub fn name(self) -> &'static str {
+        match self {
+            Compare::Render => "render",
+            Compare::Reference => "reference",
+            Compare::Difference => "difference",
+        }
+    }
+
+    /// The name while the grader's images are shown: the render is the
+    /// student's image.
+    pub fn grading_name(self) -> &'static str {
+        match self {
+            Compare::Render => "student",
+            other => other.name(),
+        }
     }
 }

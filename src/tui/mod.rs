@@ -24,6 +24,7 @@ pub mod keys;
 pub mod layers;
 pub mod picture;
 pub mod scenes;
+pub mod student;
 pub mod target;
 pub mod update;
 pub mod view;
@@ -183,6 +184,9 @@ fn event_loop(
     mut app: App,
 ) -> std::io::Result<()> {
     let worker = Worker::spawn();
+    // Student mode's watcher, on the chapter `app.student` names; dropped
+    // (its build or render stopped) on the way out.
+    let mut student: Option<student::Watcher> = None;
     let mut sent = 0;
     // The target and pause state the running render was last given.
     let mut sent_target = app.target;
@@ -216,6 +220,19 @@ fn event_loop(
                 crate::grading::latest_failure_images(&app.grade_dir()).map_err(|e| e.to_string());
             app = update(app, Msg::GradeLoaded(result));
             dirty = true;
+        }
+        let wanted = app.student.as_ref().map(|s| s.chapter);
+        if wanted != student.as_ref().map(|w| w.chapter) {
+            if let Some(w) = student.take() {
+                w.detach();
+            }
+            student = wanted.map(|n| student::Watcher::spawn(n, app.out_dir.clone()));
+        }
+        if let Some(w) = &student {
+            while let Ok(event) = w.events.try_recv() {
+                app = update(app, Msg::Student(w.chapter, event));
+                dirty = true;
+            }
         }
         if app.quit {
             return Ok(());

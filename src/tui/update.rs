@@ -1,14 +1,18 @@
 //! [`update`], a pure function from (state, message) to the next state,
-//! and [`save`]. `update` touches neither the terminal, the clock nor the
-//! disk: the event loop turns keys and worker reports into messages and
-//! carries out the three effects `update` asks for (start a render when the
-//! generation changes, save when `save_requested` is set, read the grader's
-//! images when `grade_requested` is set).
+//! student mode's part of it included, and [`save`]. `update` touches
+//! neither the terminal, the clock nor the disk: the event loop turns keys
+//! and worker reports into messages and carries out the effects `update`
+//! asks for (start a render when the generation changes, save when
+//! `save_requested` is set, read the grader's images when
+//! `grade_requested` is set, keep a student-mode watcher on the chapter
+//! `student` names).
 
 use std::path::PathBuf;
 
 use super::app::*;
+use super::student::{StudentEvent, StudentMode};
 use super::worker::Progress;
+use crate::grading::live::{capstone, LiveError};
 
 /// The next state of the UI after `msg`.
 pub fn update(mut app: App, msg: Msg) -> App {
@@ -16,7 +20,12 @@ pub fn update(mut app: App, msg: Msg) -> App {
     if app.help
         && !matches!(
             msg,
-            Msg::ToggleHelp | Msg::Quit | Msg::Progress(_) | Msg::Saved(_) | Msg::GradeLoaded(_)
+            Msg::ToggleHelp
+                | Msg::Quit
+                | Msg::Progress(_)
+                | Msg::Saved(_)
+                | Msg::GradeLoaded(_)
+                | Msg::Student(..)
         )
     {
         app.help = false;
@@ -154,6 +163,7 @@ pub fn update(mut app: App, msg: Msg) -> App {
             app.grade_requested = false;
             match result {
                 Ok(Some(images)) => {
+                    app.student = None;
                     app.message = format!(
                         "grading {}: student vs reference (r: student → reference → difference, g: back)",
                         images.stem
@@ -170,8 +180,10 @@ pub fn update(mut app: App, msg: Msg) -> App {
                 Err(e) => app.message = format!("cannot read the grader's images: {e}"),
             }
         }
+        Msg::ToggleStudent => toggle_student(&mut app),
+        Msg::Student(chapter, event) => student_event(&mut app, chapter, event),
         Msg::Save => {
-            if app.snapshot.is_some() || app.grading.is_some() {
+            if app.snapshot.is_some() || app.grading.is_some() || app.student_render().is_some() {
                 app.save_requested = true;
             } else {
                 app.message = "nothing to save yet".into();
@@ -200,7 +212,83 @@ pub fn update(mut app: App, msg: Msg) -> App {
         // A pass of a render that has been replaced: dropped.
         Msg::Progress(_) => {}
     }
+    student_follows_chapter(&mut app);
     app
+}
+
+/// `x`: student mode on for the current chapter (when it has a capstone),
+/// or off.
+fn toggle_student(app: &mut App) {
+    if app.student.take().is_some() {
+        app.compare = Compare::Render;
+        app.message = "back to the render".into();
+        return;
+    }
+    start_student(app);
+}
+
+/// Student mode for the current chapter, or a message why there is none.
+fn start_student(app: &mut App) {
+    let n = app.current_chapter().map_or(0, |c| c.number());
+    let Some(ex) = capstone(n) else {
+        app.student = None;
+        app.message = format!("chapter {n} has no capstone for student mode");
+        return;
+    };
+    app.grading = None;
+    app.compare = Compare::Render;
+    app.message = format!(
+        "student mode: {} from {}, re-rendered when you save (r: student → reference → difference, x: back)",
+        ex.id(),
+        ex.file
+    );
+    app.student = Some(StudentMode {
+        chapter: n,
+        id: ex.id(),
+        status: "starting…".into(),
+        details: String::new(),
+        render: None,
+    });
+}
+
+/// A report from the watcher of chapter `chapter`; one about another
+/// chapter (the student has moved on) is dropped.
+fn student_event(app: &mut App, chapter: u32, event: StudentEvent) {
+    let Some(s) = app.student.as_mut().filter(|s| s.chapter == chapter) else {
+        return;
+    };
+    match event {
+        StudentEvent::Building => s.status = "building…".into(),
+        StudentEvent::Done(Ok(render)) => {
+            s.status = render.status();
+            app.message = format!("{}: {}", render.id, render.detail);
+            s.render = Some(render);
+        }
+        StudentEvent::Done(Err(e)) => {
+            s.status = e.status();
+            s.details = match &e {
+                LiveError::DoesNotCompile { message, .. } => {
+                    app.message = message.lines().take(2).collect::<Vec<_>>().join(" ");
+                    message.lines().take(24).collect::<Vec<_>>().join("\n")
+                }
+                LiveError::Panicked { message, .. } | LiveError::Build(message) => message.clone(),
+                LiveError::NotStarted { file, .. } => {
+                    format!("replace the todo!() in {file}: its comments say what to write")
+                }
+                _ => String::new(),
+            };
+            s.render = None;
+            app.compare = Compare::Render;
+        }
+    }
+}
+
+/// Student mode follows the selected chapter.
+fn student_follows_chapter(app: &mut App) {
+    let n = app.current_chapter().map_or(0, |c| c.number());
+    if app.student.as_ref().is_some_and(|s| s.chapter != n) {
+        start_student(app);
+    }
 }
 
 /// A target in words: "1024 spp, or noise below 1.0% of the mean".

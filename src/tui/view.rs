@@ -224,6 +224,7 @@ fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
 fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
     let title = match (&app.grading, app.current_chapter()) {
         (Some(g), _) => format!("grade · {} · {}", g.stem, app.compare_name()),
+        (None, _) if app.student.is_some() => student_title(app),
         (None, Some(c)) => {
             let mut t = format!("ch{} {} · {}", c.number(), c.slug(), app.view_name());
             if app.picker.is_some() {
@@ -247,11 +248,18 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
             .style(fg(app, color))
             .wrap(Wrap { trim: true })
     };
-    if app.grading.is_some() {
+    if app.grading.is_some() || app.student_render().is_some() {
         // The grader's images need no render: shown whatever the selection.
         if let Some(film) = app.displayed_ref() {
             draw_film(app, frame, &film, inner);
         }
+    } else if let Some(s) = &app.student {
+        let color = match s.status.as_str() {
+            "starting…" | "building…" => Color::Gray,
+            _ => Color::Red,
+        };
+        let text = format!("{}\n\n{}", s.status, s.details);
+        frame.render_widget(note(text, color), inner);
     } else if let Some(why) = app.problem() {
         let scene = app.current_scene().map(|s| s.source.as_str()).unwrap_or("");
         frame.render_widget(
@@ -264,6 +272,16 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
         draw_film(app, frame, &film, inner);
     } else {
         frame.render_widget(note("rendering…".into(), Color::Gray), inner);
+    }
+}
+
+/// The preview's title in student mode: `student · ch1/draw_edges ·
+/// reference`.
+fn student_title(app: &App) -> String {
+    let id = app.student.as_ref().map_or("", |s| s.id.as_str());
+    match app.student_render() {
+        Some(_) => format!("student · {id} · {}", app.compare_name()),
+        None => format!("student · {id}"),
     }
 }
 
@@ -351,6 +369,13 @@ pub fn status_line(app: &App) -> Line<'static> {
         parts.push(format!("grade {}", g.stem));
         parts.push(format!("{}x{}", f.width, f.height));
         parts.push(app.compare_name().to_string());
+    } else if let Some(s) = &app.student {
+        parts.push(format!("student {}", s.id));
+        if let Some(r) = &s.render {
+            parts.push(format!("{}x{}", r.student.width, r.student.height));
+            parts.push(app.compare_name().to_string());
+        }
+        parts.push(escape(&s.status).into_owned());
     } else if let Some(snap) = &app.snapshot {
         if let Some(f) = snap.views.first() {
             parts.push(format!("{}x{}", f.width, f.height));

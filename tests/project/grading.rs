@@ -18,7 +18,7 @@ use raystep::grading::{self, write_failure_images, Outcome};
 
 /// One `grade` that builds the exercises crate at a time (they share the
 /// crate's build folder and its `grade-student` binary).
-static BUILD: Mutex<()> = Mutex::new(());
+pub(crate) static BUILD: Mutex<()> = Mutex::new(());
 
 /// Runs the `grade` command with `args`; images and hints go to `out`.
 fn grade(args: &[&str], out: &Path) -> (Output, String, Duration) {
@@ -36,7 +36,7 @@ fn grade(args: &[&str], out: &Path) -> (Output, String, Duration) {
 }
 
 /// A copy of every chapter's exercise folder under `dir`, as shipped.
-fn copy_exercises(dir: &Path) -> PathBuf {
+pub(crate) fn copy_exercises(dir: &Path) -> PathBuf {
     let src = common::root().join("chapters");
     for chapter in std::fs::read_dir(&src).unwrap().flatten() {
         let ex = chapter.path().join("exercises");

@@ -11,6 +11,7 @@ mod grading;
 mod hostile;
 mod hostile_bvh;
 mod layout;
+mod live_student;
 mod non_square;
 mod reports;
 mod scene_docs;

@@ -455,7 +455,7 @@ fn keys_map_to_messages() {
         Some("ChapterNumber(3)")
     );
     assert_eq!(m(key(KeyCode::Down)).as_deref(), Some("Down"));
-    assert_eq!(m(key(KeyCode::Char('x'))), None);
+    assert_eq!(m(key(KeyCode::Char('z'))), None);
 
     // With the help open, Esc closes it, and any other key only closes it.
     let app = update(app, Msg::ToggleHelp);
@@ -878,4 +878,122 @@ fn g_shows_the_graders_newest_failure_student_against_reference() {
             .as_deref(),
         Some("ToggleGrading")
     );
+}
+
+#[test]
+fn x_shows_the_students_capstone_live_and_follows_the_chapter() {
+    use raystep::grading::live::{LiveError, StudentRender};
+    use raystep::tui::student::StudentEvent;
+    let app = rendered(app());
+    assert_eq!(
+        msg_for_key(&app, key(KeyCode::Char('x')))
+            .map(|m| format!("{m:?}"))
+            .as_deref(),
+        Some("ToggleStudent")
+    );
+    // On: the current chapter's capstone, before the watcher reports.
+    let app = update(app, Msg::ToggleStudent);
+    let s = app.student.as_ref().expect("student mode on");
+    assert_eq!((s.chapter, s.id.as_str()), (6, "ch6/path_radiance"));
+    assert!(app.message.contains("path_radiance.rs"), "{}", app.message);
+    let done =
+        |r: std::result::Result<StudentRender, LiveError>| Msg::Student(6, StudentEvent::Done(r));
+    let status = |app: &App| app.student.as_ref().unwrap().status.clone();
+    let app = update(app, Msg::Student(6, StudentEvent::Building));
+    assert_eq!(status(&app), "building…");
+    let screen = draw(&app, 80, 24);
+    assert!(screen.contains("student · ch6/path_radiance"), "{screen}");
+    assert!(screen.contains("building…"), "{screen}");
+    // The stub, then a compile error: a status each, and no picture.
+    let id = "ch6/path_radiance".to_string();
+    let file = "chapters/ch6-global-illumination/exercises/path_radiance.rs".to_string();
+    let app = update(
+        app,
+        done(Err(LiveError::NotStarted {
+            id: id.clone(),
+            file,
+        })),
+    );
+    assert_eq!(status(&app), "ch6/path_radiance: not started (todo!)");
+    assert!(app.student_render().is_none() && app.displayed().is_none());
+    let message = "error: expected `;`, found `todo`\n --> /home/s/raystep/chapters/\
+                   ch6-global-illumination/exercises/path_radiance.rs:42:14\n   |\n"
+        .to_string();
+    let app = update(
+        app,
+        done(Err(LiveError::DoesNotCompile {
+            id: id.clone(),
+            message,
+        })),
+    );
+    assert_eq!(
+        status(&app),
+        "compile error: ch6-global-illumination/exercises/path_radiance.rs:42:14: \
+         expected `;`, found `todo`"
+    );
+    assert!(draw(&app, 100, 24).contains("compile error: ch6-global"));
+    assert!(app
+        .student
+        .as_ref()
+        .unwrap()
+        .details
+        .contains("path_radiance.rs:42:14"));
+    // A report from another chapter's watcher is dropped.
+    let app = update(app, Msg::Student(2, StudentEvent::Building));
+    assert!(status(&app).starts_with("compile error"));
+    // Images: student / reference / difference with r, as `g` does.
+    let (red, blue) = (Vec3::new(1.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 1.0));
+    let images = |matches| StudentRender {
+        id: id.clone(),
+        student: flat(red),
+        reference: flat(blue),
+        matches,
+        detail: "32 of 32 blocks differ".into(),
+    };
+    let mut app = update(app, done(Ok(images(false))));
+    assert_eq!(status(&app), "differs: 32 pixels / RMSE 0.8165");
+    assert!(app.shows_compare());
+    for (name, colour) in [
+        ("student", red),
+        ("reference", blue),
+        ("difference", Vec3::new(1.0, 0.0, 1.0)),
+    ] {
+        assert_eq!(app.compare_name(), name);
+        assert_eq!(pixel(&app), colour, "{name}");
+        assert_eq!(
+            app.save_stem(),
+            format!("tui-student-ch6-path_radiance-{name}")
+        );
+        app = update(app, Msg::CycleCompare);
+    }
+    let screen = draw(&app, 100, 24);
+    assert!(
+        screen.contains("student · ch6/path_radiance · student"),
+        "{screen}"
+    );
+    assert!(screen.contains("differs: 32 pixels"), "{screen}");
+    let app = update(app, done(Ok(images(true))));
+    assert_eq!(status(&app), "student matches reference");
+    let timed = LiveError::TimedOut {
+        id: id.clone(),
+        seconds: 20.0,
+        doing: "calling path_radiance for the camera rays of row 3 of 32".into(),
+    };
+    let app = update(app, done(Err(timed)));
+    assert_eq!(
+        status(&app),
+        "ch6/path_radiance timed out after 20 s while calling path_radiance for the \
+         camera rays of row 3 of 32"
+    );
+    assert!(app.student_render().is_none());
+    // Student mode follows the chapter: chapter 2's capstone, from scratch.
+    let app = update(app, Msg::ChapterNumber(2));
+    let s = app.student.as_ref().unwrap();
+    assert_eq!((s.chapter, s.id.as_str()), (2, "ch2/rasterize_triangle"));
+    assert!(s.render.is_none() && s.status == "starting…");
+    // x again: back to the render.
+    let app = update(app, Msg::ToggleStudent);
+    assert!(app.student.is_none());
+    assert_eq!(app.compare, Compare::Render);
+    assert_eq!(app.message, "back to the render");
 }

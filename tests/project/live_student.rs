@@ -1,0 +1,75 @@
+//! The TUI's student mode without a terminal: the library function it
+//! calls builds the exercises crate as the grader does and renders a
+//! chapter's capstone with the student's code. The shipped stub is "not
+//! started"; the reference solution, written into the exercise file,
+//! matches the reference image; a file that does not compile gives the
+//! compiler's file:line. (The builds share the grader tests' lock and
+//! their build folder: each is one small rebuild of the exercises crate.)
+
+use std::time::Duration;
+
+use raystep::grading::build::Place;
+use raystep::grading::live::{live_student, LiveError, LiveOptions};
+
+use super::grading::{copy_exercises, BUILD};
+use crate::common;
+
+#[test]
+fn live_student_is_not_started_for_the_stub_and_matches_with_the_reference() {
+    let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
+    let exercises = copy_exercises(&common::temp_dir("live-src"));
+    let opts = LiveOptions {
+        exercises: exercises.clone(),
+        place: Place::current().unwrap(),
+        out: common::temp_dir("live-out"),
+        timeout: Duration::from_secs(60),
+    };
+    let file = exercises.join("ch1-projection/exercises/draw_edges.rs");
+    let stub = std::fs::read_to_string(&file).unwrap();
+    assert!(stub.contains("todo!()"), "the shipped stub");
+
+    // The shipped stub: not started, with the status the TUI shows.
+    let err = live_student(1, &opts, None).unwrap_err();
+    assert!(matches!(err, LiveError::NotStarted { .. }), "{err:?}");
+    assert_eq!(err.status(), "ch1/draw_edges: not started (todo!)");
+
+    // The reference solution in the student's file: the two images match.
+    std::fs::write(
+        &file,
+        "use glam::{Vec2, Vec3};\nuse raystep::ch1_projection::camera::Camera;\n\
+         pub fn draw_edges(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(Vec2, Vec2)> {\n    \
+         raystep::grading::exercises::ch1::reference_edge(camera, a, b, near)\n}\n",
+    )
+    .unwrap();
+    let render = live_student(1, &opts, None).unwrap();
+    assert!(render.matches, "{}", render.detail);
+    assert_eq!(render.id, "ch1/draw_edges");
+    assert_eq!(render.status(), "student matches reference");
+    assert_eq!(render.differing_pixels(), 0);
+    assert_eq!(
+        (render.student.width, render.student.height),
+        (160, 120),
+        "the grader's size"
+    );
+    assert!(render
+        .reference
+        .pixels
+        .iter()
+        .any(|p| p.max_element() > 0.0));
+
+    // A syntax error: the compiler's file:line and message, first line.
+    std::fs::write(&file, stub.replace("todo!()", "let x = 3\n    todo!()")).unwrap();
+    let err = live_student(1, &opts, None).unwrap_err();
+    let status = err.status();
+    assert!(
+        status.starts_with("compile error: ch1-projection/exercises/draw_edges.rs:"),
+        "{status}"
+    );
+    assert!(status.contains("expected `;`"), "{status}");
+
+    // A chapter without a capstone is said so, before anything is built.
+    assert_eq!(
+        live_student(9, &opts, None).unwrap_err(),
+        LiveError::NoCapstone(9)
+    );
+}
