@@ -17,8 +17,9 @@ done
 "$bin/ch1" --scene scenes/tetrahedron.toml --report --out "$out" > "$out/ch1-tetrahedron-report.txt"
 
 # Chapter 2: every view of the tetrahedron, the interpenetrating scene and
-# the Cornell box at 16 samples per pixel; the anti-aliasing study and stiff
-# cases (CSV and the report's text).
+# the Cornell box at 16 samples per pixel; the anti-aliasing study, stiff
+# cases and the checkered floor, affine against perspective-correct (CSV,
+# the report's text and ch2-checker-floor*.png).
 for scene in tetrahedron interpenetrating cornell-box; do
   "$bin/ch2" --scene "scenes/$scene.toml" --spp 16 --out "$out" > /dev/null
 done
