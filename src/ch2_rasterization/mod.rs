@@ -11,6 +11,7 @@
 //! | coverage and the parallel band loop | [`coverage`] |
 //! | visibility: the depth buffer | [`depth`] |
 //! | attribute interpolation, perspective-correct and affine | [`interpolate`] |
+//! | texture coordinates on a checkered floor, both ways and ray cast | [`checker`] |
 //! | the views | [`views`] |
 //! | exact coverage, the anti-aliasing reference | [`exact`] |
 //! | the chapter boundary and report | [`stage`] |
@@ -18,6 +19,7 @@
 //! | the speed benchmark (`ch2 --bench`) | [`bench`](mod@bench) |
 
 pub mod bench;
+pub mod checker;
 pub mod clip;
 pub mod coverage;
 pub mod depth;

@@ -1,6 +1,7 @@
 //! What chapter 2 prints: setup and coverage counts, timings, the mesh
 //! checks and, with `--report`, the studies.
 
+use super::checker::{checker_counts, CHECKER_SIZE};
 use super::frame::Frame;
 use super::mesh_check::check_mesh;
 use super::stability::stability_cases;
@@ -117,6 +118,21 @@ pub fn chapter_report(
     report.tables.push(mesh_check_table(scene));
     if settings.studies {
         report.error_vs_time = Some(error_against_time(settings.seed));
+        let (w, h) = CHECKER_SIZE;
+        let c = checker_counts(w, h);
+        let pct = |n: usize| 100.0 * n as f64 / c.floor_pixels.max(1) as f64;
+        report.facts.push((
+            "checker floor".into(),
+            format!(
+                "{w}x{h}, {} floor pixels (centres); square colour differs from the ray cast \
+                 on {} ({:.2}%) perspective-correct, {} ({:.1}%) affine",
+                c.floor_pixels,
+                c.perspective_vs_exact,
+                pct(c.perspective_vs_exact),
+                c.affine_vs_exact,
+                pct(c.affine_vs_exact),
+            ),
+        ));
         report.stability = stability_cases();
     }
     report

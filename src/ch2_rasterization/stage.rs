@@ -1,8 +1,10 @@
 //! Chapter 2 as a stage: one deterministic pass rasterizes the scene at
 //! `--spp` samples per pixel and resolves the views.
 
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+use super::checker::{checker_figures, CHECKER_SIZE, CHECKER_SPP};
 use super::frame::{render_frame, Frame, MAX_SAMPLES};
 use super::report::chapter_report;
 use super::views::VIEWS;
@@ -100,5 +102,26 @@ impl Render for RasterRender {
             self.options.cull_back_faces,
             self.frame.as_ref(),
         )
+    }
+
+    /// With `--report`: the checkered floor, perspective-correct, affine and
+    /// their difference (the same three images whatever the scene).
+    fn extra_files(&self, _report: &Report, dir: &Path, _stem: &str) -> Result<Vec<PathBuf>> {
+        if !self.settings.studies {
+            return Ok(Vec::new());
+        }
+        let (w, h) = CHECKER_SIZE;
+        let figures = checker_figures(w, h, CHECKER_SPP, self.settings.seed);
+        let mut files = Vec::new();
+        for (name, film) in [
+            ("ch2-checker-floor", &figures.perspective),
+            ("ch2-checker-floor-affine", &figures.affine),
+            ("ch2-checker-floor-difference", &figures.difference),
+        ] {
+            let path = dir.join(format!("{name}.png"));
+            film.write_png(&path)?;
+            files.push(path);
+        }
+        Ok(files)
     }
 }

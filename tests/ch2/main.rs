@@ -1,4 +1,5 @@
 //! Chapter 2: rasterization.
 
 mod capstone;
+mod checker;
 mod rasterization;

@@ -106,8 +106,10 @@ fn makes(run: &Run, image: &str) -> bool {
     if dir != run.subdir {
         return false;
     }
-    // Chapter 5's study plots come from any run with --report.
-    let study_plot = run.chapter == 5 && name.starts_with("error-time-");
+    // Chapter 5's study plots and chapter 2's checkered floor come from any
+    // run with --report, whatever its scene.
+    let study_plot = (run.chapter == 5 && name.starts_with("error-time-"))
+        || (run.chapter == 2 && name.starts_with("checker-floor"));
     (study_plot && run.report)
         || run
             .scenes
@@ -143,13 +145,17 @@ fn every_image_the_book_shows_exists_and_the_script_makes_it() {
 fn the_script_parser_sees_loops_subfolders_and_reports() {
     let script = "for scene in a b; do\n  \"$bin/ch1\" --scene \"scenes/$scene.toml\" --out \"$out\"\ndone\n\
                   \"$bin/ch4\" --scene scenes/x.toml --out \"$out/fixed\" > /dev/null\n\
-                  \"$bin/ch5\" --scene scenes/s.toml --report --out \"$out\"\n";
+                  \"$bin/ch5\" --scene scenes/s.toml --report --out \"$out\"\n\
+                  \"$bin/ch2\" --scene scenes/t.toml --out \"$out\"\n\
+                  \"$bin/ch2\" --scene scenes/t.toml --report --out \"$out\"\n";
     let runs = runs(script);
-    assert_eq!(runs.len(), 3);
+    assert_eq!(runs.len(), 5);
     assert!(makes(&runs[0], "ch1-b-depth.png"));
     assert!(!makes(&runs[0], "ch1-c.png"));
     assert!(makes(&runs[1], "fixed/ch4-x.png"));
     assert!(!makes(&runs[1], "ch4-x.png"));
     assert!(makes(&runs[2], "ch5-error-time-area.png"));
     assert!(!makes(&runs[0], "ch2-a.png"));
+    assert!(!makes(&runs[3], "ch2-checker-floor.png"));
+    assert!(makes(&runs[4], "ch2-checker-floor-affine.png"));
 }

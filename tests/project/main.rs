@@ -7,6 +7,7 @@ mod book;
 mod figures;
 mod film_and_main;
 mod fuzz;
+mod glossary;
 mod grading;
 mod hostile;
 mod hostile_bvh;
