@@ -33,6 +33,11 @@ pub const KEYS: &[(&str, &str)] = &[
         "h j k l",
         "inspecting: move the cursor (also arrows; Shift: 8 pixels)",
     ),
+    ("click", "inspecting: put the cursor on the clicked pixel"),
+    (
+        "t",
+        "inspecting (ch6): trace one path from the pixel; again: next sample",
+    ),
     ("s", "save the view as PNG and its film as EXR in out/"),
     ("?", "show / hide this help"),
     ("q  Esc  Ctrl-C", "quit (Esc first closes the help)"),
@@ -68,6 +73,9 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         }
         if key.code == KeyCode::Esc {
             return Some(Msg::ToggleInspect);
+        }
+        if key.code == KeyCode::Char('t') {
+            return Some(Msg::TracePath);
         }
     }
     Some(match key.code {
