@@ -97,7 +97,13 @@ pub fn trace_table(
         pixel,
         sample,
     );
-    let lines = table_lines(scene, world, &record);
+    let lights = stage.path.estimator.name() == "light" || stage.path.estimator.name() == "mis";
+    let lines = table_lines(
+        scene,
+        world,
+        &record,
+        lights && !world.lights.lights.is_empty(),
+    );
     Ok(PathTable {
         pixel,
         sample,
@@ -108,7 +114,7 @@ pub fn trace_table(
 
 /// The table: a block per vertex.
 // ANCHOR: table_lines
-pub fn table_lines(scene: &Scene, world: &World, r: &PathRecord) -> Vec<String> {
+pub fn table_lines(scene: &Scene, world: &World, r: &PathRecord, nee: bool) -> Vec<String> {
     let mut out = vec![format!("camera ray {}", dir(r.camera_dir))];
     for (k, v) in r.vertices.iter().enumerate() {
         let material = scene
@@ -145,6 +151,8 @@ pub fn table_lines(scene: &Scene, world: &World, r: &PathRecord) -> Vec<String> 
             } else {
                 out.push(format!("  NEE light {name}: in shadow → +0"));
             }
+        } else if nee && v.scatter.is_none_or(|s| !s.delta) && v.scatter.is_some() {
+            out.push("  NEE: no light sample reaches this side → +0".into());
         }
         if let Some(s) = v.scatter {
             let how = if s.delta {
