@@ -28,15 +28,14 @@ pub const KEYS: &[(&str, &str)] = &[
         ">  <",
         "double / halve the target (samples, and the noise reached)",
     ),
-    ("i", "inspect a pixel: a cursor, its values and its bounces"),
+    ("i", "inspect a pixel: a cursor, its values and its story"),
     (
         "h j k l",
-        "inspecting: move the cursor (also arrows; Shift: 8 pixels)",
+        "inspecting: move the cursor (arrows, Shift: 8, or click)",
     ),
-    ("click", "inspecting: put the cursor on the clicked pixel"),
     (
         "t",
-        "inspecting (ch6): trace one path from the pixel; again: next sample",
+        "inspecting ch6: trace one path from the pixel (again: next)",
     ),
     ("s", "save the view as PNG and its film as EXR in out/"),
     ("?", "show / hide this help"),
