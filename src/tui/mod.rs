@@ -25,6 +25,7 @@ pub mod layers;
 pub mod msg;
 pub mod picture;
 pub mod scenes;
+pub mod screen;
 pub mod story;
 pub mod target;
 pub mod trace;
