@@ -120,7 +120,7 @@ pub struct App {
     pub picker: Option<ratatui_image::picker::Picker>,
     /// The path traced from the inspected pixel (`t`), as the panel shows
     /// it; cleared when the cursor moves or the render restarts.
-    pub trace: Option<super::trace::PathTable>,
+    pub trace: Option<Box<super::trace::PathTable>>,
     /// Asks the event loop to trace sample `.2` of pixel (`.0`, `.1`).
     pub trace_requested: Option<(u32, u32, u32)>,
     /// How many paths `t` has traced at this pixel (the next one traces

@@ -243,7 +243,7 @@ fn event_loop(
                 }
                 _ => Err("no scene".into()),
             };
-            app = update(app, Msg::Traced(result));
+            app = update(app, Msg::Traced(result.map(Box::new)));
             dirty = true;
         }
         let key = (

@@ -216,7 +216,7 @@ fn t_traces_a_path_and_the_panel_shows_its_table() {
     let scene = app.current_scene().unwrap().scene.clone().unwrap();
     let world = raystep::ch5_reflection::world::World::new(&scene);
     let table = raystep::tui::trace::trace_table(&scene, &world, app.variant, 0, (x, y), sample);
-    let app = update(app, Msg::Traced(table));
+    let app = update(app, Msg::Traced(table.map(Box::new)));
     let t = app.trace.as_ref().unwrap();
     assert!(t.lines[1].starts_with("#1 "), "{:?}", t.lines);
     assert!(t.lines.iter().any(|l| l.contains("NEE")), "{:?}", t.lines);
