@@ -88,7 +88,11 @@ pub fn story_lines(
                 Ending::Escaped => "escaped".to_string(),
                 Ending::Budget => format!("budget of {} steps exhausted", stage.march.max_steps),
             };
-            let mut out = vec![format!("sphere tracing: {} steps, {ending}", m.steps.len())];
+            let mut out = if scene.sdfs.is_empty() {
+                vec!["no SDF objects: nothing to march".to_string()]
+            } else {
+                vec![format!("sphere tracing: {} steps, {ending}", m.steps.len())]
+            };
             let n = m.steps.len();
             for (i, (t, d)) in m.steps.iter().enumerate() {
                 if i < 4 || i + 3 >= n {
@@ -97,8 +101,9 @@ pub fn story_lines(
                     out.push("  …".into());
                 }
             }
-            if let Some(h) = m.pixel.hit {
-                out.push(format!("nearest hit t {}", num(h.t)));
+            match m.pixel.hit {
+                Some(h) => out.push(format!("nearest hit t {} ({:?})", num(h.t), h.surface)),
+                None => out.push("nearest hit: none".into()),
             }
             out
         }

@@ -244,10 +244,17 @@ fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
     assert!(ch3[0].starts_with("primary ray hits triangle"), "{ch3:?}");
     assert!(ch3.iter().any(|l| l.contains("u = ")));
     let ch4 = story(4);
-    assert!(ch4[0].starts_with("sphere tracing: "), "{ch4:?}");
+    assert!(ch4[0].starts_with("no SDF objects"), "{ch4:?}");
+    assert!(ch4[1].starts_with("nearest hit t "), "{ch4:?}");
     let ch5 = story(5);
     assert!(ch5[0].starts_with("sample 0: L = "), "{ch5:?}");
     assert!(ch5.iter().any(|l| l.starts_with("light 0 area")), "{ch5:?}");
+    let path = crate::common::root().join("scenes/sdf-shapes.toml");
+    let sdf = Arc::new(Scene::load(&path).unwrap().with_resolution(32, 24).unwrap());
+    let (mut w2, mut g2) = (Default::default(), GeometryCache::default());
+    let ch4 = story_lines(4, &sdf, &settings, 0, (16, 12), &mut w2, &mut g2).unwrap();
+    assert!(ch4[0].starts_with("sphere tracing: "), "{ch4:?}");
+    assert!(ch4.iter().any(|l| l.starts_with("   0: t 0 f ")), "{ch4:?}");
     // The panel shows the story of the pixel under the cursor.
     let ch3_stage = raystep::chapters::all()[2];
     let entry = SceneEntry {
