@@ -282,6 +282,7 @@ impl Contributions for PathRecord {
 /// [`Accumulator::add_samples`](super::accumulate::Accumulator::add_samples)
 /// does (same camera ray, same random numbers, same loop) and writes the
 /// path down.
+// ANCHOR: record_path
 pub fn record_path(
     world: &World,
     camera: &Camera,
@@ -308,6 +309,7 @@ pub fn record_path(
     };
     record
 }
+// ANCHOR_END: record_path
 
 /// A surface's name for a table: "mesh 3 \"short box\"".
 pub fn surface_name(scene: &Scene, surface: Surface) -> String {

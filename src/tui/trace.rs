@@ -113,7 +113,6 @@ pub fn trace_table(
 }
 
 /// The table: a block per vertex.
-// ANCHOR: table_lines
 pub fn table_lines(scene: &Scene, world: &World, r: &PathRecord, nee: bool) -> Vec<String> {
     let mut out = vec![format!("camera ray {}", dir(r.camera_dir))];
     for (k, v) in r.vertices.iter().enumerate() {
@@ -197,4 +196,3 @@ pub fn table_lines(scene: &Scene, world: &World, r: &PathRecord, nee: bool) -> V
     ));
     out
 }
-// ANCHOR_END: table_lines
