@@ -274,3 +274,24 @@ fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
     let lines = inspect_lines(&app);
     assert!(lines.contains(&ch3[0]), "{lines:?}");
 }
+
+#[test]
+fn with_a_graphics_protocol_a_click_maps_proportionally() {
+    // A 64x64 film with 10x20-pixel cells is drawn at its own size, 7x4
+    // cells from the preview's top-left corner (ratatui-image never
+    // enlarges): clicks inside map proportionally, clicks beside it miss.
+    let mut app = update(rendered(), Msg::ToggleInspect);
+    app.color = true;
+    let mut picker = ratatui_image::picker::Picker::from_fontsize((10, 20));
+    picker.set_protocol_type(ratatui_image::picker::ProtocolType::Kitty);
+    app.picker = Some(picker);
+    let screen = ratatui::layout::Rect::new(0, 0, 120, 40);
+    let preview = raystep::tui::view::areas(&app, screen).preview;
+    let (x0, y0) = (preview.x + 1, preview.y + 1);
+    let at = |c, r| raystep::tui::view::pixel_at(&app, screen, x0 + c, y0 + r);
+    assert_eq!(at(0, 0), Some((0, 0)));
+    assert_eq!(at(6, 3), Some((55, 48)));
+    assert_eq!(at(3, 2), Some((28, 32)));
+    assert_eq!(at(7, 0), None);
+    assert_eq!(at(0, 4), None);
+}
