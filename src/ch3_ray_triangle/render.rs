@@ -101,3 +101,69 @@ pub fn render_views_naive(camera: &Camera, geometry: &Geometry, spp: u32, seed: 
     });
     films_from_sums(camera, &sums, spp)
 }
+
+/// What one primary ray found: the ray of sample `sample` of pixel
+/// (`x`, `y`), placed as [`render_sum`] places it, and its first hit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PixelHit {
+    /// The primary ray.
+    pub ray: Ray,
+    /// Its closest hit (triangle, t, barycentrics), or a miss.
+    pub hit: Option<Hit>,
+    /// The scene mesh of the triangle hit.
+    pub mesh: Option<usize>,
+}
+
+/// The primary ray of sample `sample` of pixel (`x`, `y`) in a render of
+/// `spp` samples per pixel, traced through the BVH as the render does.
+pub fn pixel_hit(
+    camera: &Camera,
+    geometry: &Geometry,
+    (x, y): (u32, u32),
+    spp: u32,
+    seed: u64,
+    sample: u32,
+) -> PixelHit {
+    let raster = sample_position(x, y, camera.width, spp, seed, sample);
+    let ray = camera.ray(raster);
+    let hit = geometry.closest(&ray);
+    let mesh = hit.map(|h| geometry.triangles.mesh[h.triangle as usize] as usize);
+    PixelHit { ray, hit, mesh }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::Scene;
+
+    #[test]
+    fn a_pixels_hit_is_what_the_render_shaded() {
+        // The four views of a one-sample render are `shade` of the hit:
+        // the story's hit must shade to exactly the rendered values (its
+        // t gives the depth view, its u, v the barycentrics view).
+        let scene = Scene::builtin().with_resolution(20, 16).unwrap();
+        let camera = Camera::of(&scene);
+        let geometry = Geometry::new(&scene);
+        let views = render_views(&camera, &geometry, 1, 3);
+        let mut hits = 0;
+        for y in 0..16 {
+            for x in 0..20 {
+                let h = pixel_hit(&camera, &geometry, (x, y), 1, 3, 0);
+                let shaded = shade(&geometry, h.hit);
+                for (v, film) in views.iter().enumerate() {
+                    assert_eq!(film.get(x, y), shaded[v], "view {v} at ({x}, {y})");
+                }
+                if let Some(hit) = h.hit {
+                    hits += 1;
+                    assert_eq!(film_bary(&views[2], x, y), hit.barycentrics());
+                    assert!(h.mesh.is_some());
+                }
+            }
+        }
+        assert!(hits > 100, "{hits}");
+    }
+
+    fn film_bary(f: &Film, x: u32, y: u32) -> Vec3 {
+        f.get(x, y)
+    }
+}

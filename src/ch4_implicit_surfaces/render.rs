@@ -160,6 +160,47 @@ pub fn trace_pixel(
 }
 // ANCHOR_END: trace_pixel
 
+/// The camera ray through the centre of pixel (`x`, `y`), as
+/// [`trace_image`] shoots it.
+pub fn pixel_ray(camera: &Camera, x: u32, y: u32) -> Ray {
+    camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5))
+}
+
+/// One pixel's march written down: every evaluation of f as (t, f(t)),
+/// the one at the origin first, and the pixel as [`trace_pixel`] finds it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MarchSteps {
+    /// (t, f at o + t d) of every evaluation, in order.
+    pub steps: Vec<(f32, f32)>,
+    /// The pixel (the march's ending, the hit after meshes are compared).
+    pub pixel: Pixel,
+}
+
+/// Marches `ray` as [`trace_pixel`] does, noting every evaluation.
+pub fn march_steps(
+    ray: &Ray,
+    objects: &[SdfObject],
+    m: &March,
+    method: Method,
+    normals: NormalScheme,
+    meshes: Option<MeshTracer>,
+) -> MarchSteps {
+    let pixel = trace_pixel(ray, objects, m, method, normals, meshes);
+    let log = std::cell::RefCell::new(Vec::new());
+    if !objects.is_empty() {
+        let f = |p: Vec3| {
+            let d = scene_distance(objects, p).0;
+            log.borrow_mut().push(((p - ray.origin).dot(ray.dir), d));
+            d
+        };
+        march(&f, ray, m, method);
+    }
+    MarchSteps {
+        steps: log.into_inner(),
+        pixel,
+    }
+}
+
 /// The colour of a miss.
 pub const BACKGROUND: Vec3 = Vec3::new(0.04, 0.05, 0.07);
 
@@ -265,5 +306,46 @@ impl TraceStats {
             }
         }
         s
+    }
+}
+
+#[cfg(test)]
+mod story_tests {
+    use super::*;
+    use crate::scene::Scene;
+
+    #[test]
+    fn a_pixels_march_steps_are_the_renders_march() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sdf-shapes.toml");
+        let scene = Scene::load(std::path::Path::new(path))
+            .unwrap()
+            .with_resolution(16, 12)
+            .unwrap();
+        let camera = Camera::of(&scene);
+        let m = March::default();
+        let n = NormalScheme::Tetrahedron;
+        let pixels = trace_image(&camera, &scene.sdfs, &m, Method::Plain, n, None);
+        let mut hits = 0;
+        for y in 0..12 {
+            for x in 0..16 {
+                let ray = pixel_ray(&camera, x, y);
+                let s = march_steps(&ray, &scene.sdfs, &m, Method::Plain, n, None);
+                let rendered = pixels[(y * 16 + x) as usize];
+                assert_eq!(s.pixel, rendered);
+                // One entry per evaluation, ending where the march stopped.
+                assert_eq!(s.steps.len() as u32, rendered.trace.steps);
+                if let Some(t) = rendered.trace.hit() {
+                    hits += 1;
+                    let (last_t, last_f) = *s.steps.last().unwrap();
+                    assert!((last_t - t).abs() <= 1e-4 * t.max(1.0), "{last_t} vs {t}");
+                    assert!(last_f.abs() < m.epsilon_at(ray.at(t)) * 2.0);
+                    // Sphere tracing steps by f: each step is the last f.
+                    for w in s.steps.windows(2).skip(1) {
+                        assert!(((w[1].0 - w[0].0) - w[0].1).abs() < 1e-3 * w[1].0.max(1.0));
+                    }
+                }
+            }
+        }
+        assert!(hits > 10, "{hits}");
     }
 }

@@ -12,6 +12,7 @@
 //! | several strategies at once: multiple importance sampling | [`mis`] |
 //! | the scene the shading chapters see: one intersect, one shadow ray | [`world`] |
 //! | one image: camera rays, each shaded by the reflection equation | [`render`] |
+//! | one pixel's sample, light by light (the inspect mode's story) | [`light_terms`] |
 //! | the chapter as a stage | [`stage`] |
 //! | what the chapter prints | [`report`] |
 //! | error against run time for the four strategies | [`studies`], drawn by [`crate::core::plot`] |
@@ -19,6 +20,7 @@
 
 pub mod direct;
 pub mod light;
+pub mod light_terms;
 pub mod material;
 pub mod mis;
 pub mod radiometry;

@@ -7,11 +7,30 @@ use glam::{Vec2, Vec3};
 use rayon::prelude::*;
 
 use crate::ch1_projection::camera::Camera;
+use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch5_reflection::world::World;
 use crate::core::film::Film;
 
 use super::integrator::{trace_path, PathSettings, PathStats, LAYER_SLOTS};
 use super::sampler::{PathSampler, SamplerKind};
+
+/// The random numbers and the camera ray of sample `sample` of pixel
+/// (`x`, `y`): the first two numbers place the ray in the pixel, the path
+/// goes on with the rest. Anything that wants to trace the very sample a
+/// render traced starts here.
+pub fn camera_sample(
+    camera: &Camera,
+    kind: SamplerKind,
+    seed: u64,
+    x: usize,
+    y: usize,
+    sample: u32,
+) -> (PathSampler, Ray) {
+    let pixel = (y * camera.width as usize + x) as u64;
+    let mut sampler = PathSampler::new(kind, seed, pixel, sample as u64);
+    let raster = Vec2::new(x as f32, y as f32) + sampler.get2();
+    (sampler, camera.ray(raster))
+}
 
 /// Sums over the samples taken so far.
 #[derive(Clone, Debug)]
@@ -76,11 +95,8 @@ impl Accumulator {
             .map(|(y, ((sum, sum_sq), layer_row))| {
                 let mut stats = PathStats::default();
                 for x in 0..w {
-                    let pixel = (y * w + x) as u64;
                     for s in first..first + count {
-                        let mut sampler = PathSampler::new(sampler, seed, pixel, s as u64);
-                        let raster = Vec2::new(x as f32, y as f32) + sampler.get2();
-                        let ray = camera.ray(raster);
+                        let (mut sampler, ray) = camera_sample(camera, sampler, seed, x, y, s);
                         let l = match layer_row.as_deref_mut() {
                             Some(row) => {
                                 let mut layers = [Vec3::ZERO; LAYER_SLOTS];

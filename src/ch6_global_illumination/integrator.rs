@@ -30,6 +30,7 @@ use crate::ch5_reflection::warp::{uniform_hemisphere, UNIFORM_HEMISPHERE_PDF};
 use crate::ch5_reflection::world::World;
 use crate::core::sampling::Sampler;
 
+use super::path_events::PathEvent;
 use super::sampler::PathSampler;
 
 /// The highest bounce count k with a layer of its own.
@@ -146,6 +147,11 @@ impl PathStats {
 pub trait Contributions {
     /// Adds `c`, which belongs to layer slot `slot`.
     fn add_to(&mut self, slot: usize, c: Vec3);
+
+    /// Hears about each step of the path. Does nothing (and costs nothing)
+    /// unless a recorder ([`super::path_record`]) listens.
+    #[inline(always)]
+    fn note(&mut self, _event: PathEvent<'_>) {}
 }
 
 impl Contributions for [Vec3; LAYER_SLOTS] {
@@ -213,10 +219,17 @@ pub fn trace_path(
                     _ => 1.0,
                 };
                 add(layers, slot_of(scatterings), beta * le * w, stats);
+                layers.note(PathEvent::Escaped {
+                    dir: ray.dir,
+                    le,
+                    weight: w,
+                    contribution: beta * le * w,
+                });
             }
             break;
         };
         let wo_world = -ray.dir;
+        layers.note(PathEvent::Hit { it: &it, beta });
 
         // Add emitted light seen along the ray.
         let le = world.emitted(&it, wo_world);
@@ -230,6 +243,11 @@ pub fn trace_path(
                 _ => 1.0,
             };
             add(layers, slot_of(scatterings), beta * le * w, stats);
+            layers.note(PathEvent::Emission {
+                le,
+                weight: w,
+                contribution: beta * le * w,
+            });
         }
 
         // End the path at the bounce limit.
@@ -262,16 +280,29 @@ pub fn trace_path(
                     let f = bsdf.f(wo, wi);
                     if f != Vec3::ZERO {
                         stats.rays += 1;
-                        if world.unoccluded(it.p, it.n, ls.wi, ls.dist) {
-                            let pdf_light = ls.pdf * p_choose;
-                            let w = if ls.delta || estimator != Estimator::Mis {
+                        let pdf_light = ls.pdf * p_choose;
+                        let visible = world.unoccluded(it.p, it.n, ls.wi, ls.dist);
+                        let (mut w, mut c) = (0.0, Vec3::ZERO);
+                        if visible {
+                            w = if ls.delta || estimator != Estimator::Mis {
                                 1.0
                             } else {
                                 power_heuristic(pdf_light, bsdf.pdf(wo, wi))
                             };
-                            let c = beta * f * ls.li * wi.z.abs() * (w / pdf_light);
+                            c = beta * f * ls.li * wi.z.abs() * (w / pdf_light);
                             add(layers, slot_of(scatterings), c, stats);
                         }
+                        layers.note(PathEvent::Light {
+                            light: i,
+                            wi: ls.wi,
+                            f,
+                            li: ls.li,
+                            pdf: pdf_light,
+                            cos: wi.z.abs(),
+                            weight: w,
+                            visible,
+                            contribution: c,
+                        });
                     }
                 }
             }
@@ -280,18 +311,15 @@ pub fn trace_path(
         // Sample the BSDF (or the uniform hemisphere) for the next direction.
         let u_lobe = sampler.get1();
         let u_dir = sampler.get2();
-        let (wi, weight, pdf) = if estimator == Estimator::UniformWalk && !delta {
+        let (wi, f, weight, pdf) = if estimator == Estimator::UniformWalk && !delta {
             let mut wi = uniform_hemisphere(u_dir);
             wi.z = wi.z.copysign(wo.z);
             let f = bsdf.f(wo, wi);
-            (
-                wi,
-                f * wi.z.abs() / UNIFORM_HEMISPHERE_PDF,
-                UNIFORM_HEMISPHERE_PDF,
-            )
+            let weight = f * wi.z.abs() / UNIFORM_HEMISPHERE_PDF;
+            (wi, f, weight, UNIFORM_HEMISPHERE_PDF)
         } else {
             match bsdf.sample(wo, u_dir, u_lobe) {
-                Some(s) => (s.wi, s.weight, s.pdf),
+                Some(s) => (s.wi, s.f, s.weight, s.pdf),
                 None => break,
             }
         };
@@ -304,11 +332,21 @@ pub fn trace_path(
         prev_p = it.p;
         prev_n = n_side;
         let wi_world = frame.to_world(wi);
+        layers.note(PathEvent::Scatter {
+            wi: wi_world,
+            f,
+            pdf,
+            cos: wi.z.abs(),
+            delta,
+            beta,
+        });
 
         // Russian roulette: survive with probability q, then divide by q.
         if scatterings >= settings.rr_min_scatterings {
             let q = beta.max_element().min(1.0);
-            if sampler.get1() >= q {
+            let dies = sampler.get1() >= q;
+            layers.note(PathEvent::Roulette { q, survived: !dies });
+            if dies {
                 break;
             }
             beta /= q;

@@ -7,6 +7,7 @@
 //! |---|---|
 //! | the rendering equation, one light path per sample, bounce by bounce | [`integrator`] |
 //! | where a path's random numbers come from (independent, Sobol) | [`sampler`] |
+//! | one path written down vertex by vertex, for a pixel one asks about | [`path_events`], [`path_record`] |
 //! | direct, one-bounce, two-bounce … global illumination: the layers | [`accumulate`], [`figures`] |
 //! | the converged answer and the statistical image test | [`reference`](mod@reference) |
 //! | scenes whose answer is known (furnace, Cornell box) | [`scenes`] |
@@ -20,6 +21,8 @@ pub mod accumulate;
 pub mod bench;
 pub mod figures;
 pub mod integrator;
+pub mod path_events;
+pub mod path_record;
 pub mod reference;
 pub mod report;
 pub mod sampler;

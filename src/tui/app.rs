@@ -7,8 +7,9 @@ use std::borrow::Cow;
 use std::path::PathBuf;
 
 pub use super::layers::{bounce_name, combine_layers, expose, BounceMode, Compare};
+pub use super::msg::Msg;
 use super::scenes::SceneEntry;
-use super::worker::{Job, Progress, Snapshot, Target};
+use super::worker::{Job, Snapshot, Target};
 use crate::core::film::Film;
 use crate::core::stage::{Chapter, Settings};
 use crate::grading::FailureImages;
@@ -88,70 +89,17 @@ pub struct App {
     pub inspect: Option<(u32, u32)>,
     /// The picker for a graphics protocol; `None` draws half blocks.
     pub picker: Option<ratatui_image::picker::Picker>,
-}
-
-/// Everything that can happen to the UI.
-#[derive(Clone, Debug)]
-pub enum Msg {
-    /// Move up in the focused list.
-    Up,
-    /// Move down in the focused list.
-    Down,
-    /// Switch focus between the chapter and scene lists.
-    SwitchFocus,
-    /// Select the chapter with this lecture number.
-    ChapterNumber(u32),
-    /// Next view of the chapter.
-    NextView,
-    /// Previous view of the chapter.
-    PrevView,
-    /// One stop brighter.
-    ExposureUp,
-    /// One stop darker.
-    ExposureDown,
-    /// Exposure back to 0.
-    ExposureReset,
-    /// One bounce more (after 16: all bounces).
-    BounceUp,
-    /// One bounce less (before 0: all bounces).
-    BounceDown,
-    /// Toggle "exactly k" / "up to k".
-    ToggleBounceMode,
-    /// Render → reference → difference → render.
-    CycleCompare,
-    /// Next estimator or sampler (the next step of the lecture's ladder).
-    NextVariant,
-    /// Previous estimator or sampler.
-    PrevVariant,
-    /// Pause or resume a progressive render.
-    TogglePause,
-    /// Twice the sample budget, and the noise level it reaches.
-    TargetUp,
-    /// Inspect mode on (cursor at the centre) or off.
-    ToggleInspect,
-    /// Move the inspect cursor by (dx, dy) pixels.
-    CursorMove(i32, i32),
-    /// Half the sample budget, and the noise level it reaches.
-    TargetDown,
-    /// Show the grader's newest failure images (student vs reference), or
-    /// go back to the render.
-    ToggleGrading,
-    /// The grader's images were read: the pair, none, or the error.
-    GradeLoaded(Result<Option<FailureImages>, String>),
-    /// Student mode on (the current chapter's capstone, live) or off.
-    ToggleStudent,
-    /// A report from the student-mode watcher of this chapter.
-    Student(u32, super::student::StudentEvent),
-    /// Save the current view.
-    Save,
-    /// The save finished: the files written, or the error.
-    Saved(Result<Vec<PathBuf>, String>),
-    /// Show or hide the help overlay.
-    ToggleHelp,
-    /// Quit.
-    Quit,
-    /// A report from the render worker.
-    Progress(Progress),
+    /// The path traced from the inspected pixel (`t`), as the panel shows
+    /// it; cleared when the cursor moves or the render restarts.
+    pub trace: Option<Box<super::trace::PathTable>>,
+    /// Asks the event loop to trace sample `.2` of pixel (`.0`, `.1`).
+    pub trace_requested: Option<(u32, u32, u32)>,
+    /// How many paths `t` has traced at this pixel (the next one traces
+    /// the next sample).
+    pub traces: u32,
+    /// The per-pixel story of chapters 3 to 5 for the inspected pixel
+    /// (the event loop fills it in when the cursor moves).
+    pub story: Option<(u32, u32, Vec<String>)>,
 }
 
 impl App {
@@ -189,6 +137,10 @@ impl App {
             graphics: super::graphics::Graphics::HalfBlocks,
             picker: None,
             inspect: None,
+            trace: None,
+            trace_requested: None,
+            traces: 0,
+            story: None,
         }
     }
 
@@ -246,6 +198,11 @@ impl App {
             variant: self.variant,
             target: self.progressive().then_some(self.target),
         })
+    }
+
+    /// Whether `t` traces paths here: chapter 6 (the path tracer).
+    pub fn traces_paths(&self) -> bool {
+        self.current_chapter().is_some_and(|c| c.number() == 6) && self.grading.is_none()
     }
 
     /// Whether the selected chapter renders progressively to a target.
@@ -411,6 +368,9 @@ impl App {
         self.grading = None;
         self.snapshot = None;
         self.failure = None;
+        self.trace = None;
+        self.trace_requested = None;
+        self.story = None;
         let (views, variants) = self
             .current_chapter()
             .map(|c| (c.views().len(), c.variants().len()))

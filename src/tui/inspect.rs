@@ -8,7 +8,7 @@
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::Line;
-use ratatui::widgets::{Block, Paragraph};
+use ratatui::widgets::{Block, Paragraph, Wrap};
 use ratatui::Frame;
 
 use super::app::{bounce_name, App};
@@ -65,6 +65,14 @@ pub fn inspect_lines(app: &App) -> Vec<String> {
             }
         }
     }
+    if let Some((sx, sy, story)) = &app.story {
+        if (*sx, *sy) == (x, y) {
+            lines.extend(story.iter().cloned());
+        }
+    }
+    if app.traces_paths() && app.trace.is_none() {
+        lines.push("t: trace one path from here".into());
+    }
     if let (Some(r), Some(image)) = (&snap.reference, snap.views.first()) {
         if (r.width, r.height) == (image.width, image.height) {
             if let Some(v) = rgb(r, x, y) {
@@ -86,7 +94,9 @@ pub fn inspect_lines(app: &App) -> Vec<String> {
 pub fn draw_panel(app: &App, frame: &mut Frame, area: Rect) {
     let lines: Vec<Line> = inspect_lines(app).into_iter().map(Line::from).collect();
     frame.render_widget(
-        Paragraph::new(lines).block(Block::bordered().title("pixel (i: close)")),
+        Paragraph::new(lines)
+            .wrap(Wrap { trim: false })
+            .block(Block::bordered().title("pixel (i: close)")),
         area,
     );
 }
@@ -107,4 +117,49 @@ pub fn draw_cursor(frame: &mut Frame, r: Rect, (x, y): (u32, u32), width: u32, h
                 .add_modifier(Modifier::BOLD),
         );
     }
+}
+
+/// The pixel (0 ..`pixels`) under cell `cell` of a picture `cells` wide
+/// (or tall) showing `pixels`: the inverse of [`draw_cursor`]'s mapping, so
+/// the cursor lands on the cell that was clicked.
+pub fn cell_to_pixel(cell: u16, cells: u16, pixels: u32) -> u32 {
+    let (c, n, p) = (cell as u64, cells.max(1) as u64, pixels as u64);
+    let x = if n <= p {
+        // Several pixels per cell: the first whose cell is this one.
+        (c * p).div_ceil(n)
+    } else {
+        c * p / n
+    };
+    x.min(p.saturating_sub(1)) as u32
+}
+
+/// The cells a graphics protocol's picture of a `width` x `height` film
+/// takes in `area` with cells of `font` pixels: ratatui-image's
+/// `Resize::Fit` keeps the aspect, never enlarges, and starts at the
+/// area's top-left corner.
+pub fn graphics_rect(area: Rect, width: u32, height: u32, font: (u16, u16)) -> Rect {
+    let (fw, fh) = (font.0.max(1) as f64, font.1.max(1) as f64);
+    let (w, h) = (width.max(1) as f64, height.max(1) as f64);
+    let s = (area.width as f64 * fw / w)
+        .min(area.height as f64 * fh / h)
+        .min(1.0);
+    let cols = ((w * s / fw).ceil() as u16).clamp(1, area.width.max(1));
+    let rows = ((h * s / fh).ceil() as u16).clamp(1, area.height.max(1));
+    Rect::new(area.x, area.y, cols.min(area.width), rows.min(area.height))
+}
+
+/// Draws the traced path's table into `area`.
+pub fn draw_table(app: &App, frame: &mut Frame, area: Rect) {
+    let Some(t) = &app.trace else { return };
+    let title = format!(
+        "path: sample {} of pixel ({}, {}) (t: next)",
+        t.sample, t.pixel.0, t.pixel.1
+    );
+    let lines: Vec<Line> = t.lines.iter().map(|l| Line::from(l.as_str())).collect();
+    frame.render_widget(
+        Paragraph::new(lines)
+            .wrap(Wrap { trim: false })
+            .block(Block::bordered().title(title)),
+        area,
+    );
 }

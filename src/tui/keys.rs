@@ -32,10 +32,14 @@ pub const KEYS: &[(&str, &str)] = &[
         ">  <",
         "double / halve the target (samples, and the noise reached)",
     ),
-    ("i", "inspect a pixel: a cursor, its values and its bounces"),
+    ("i", "inspect a pixel: a cursor, its values and its story"),
     (
         "h j k l",
-        "inspecting: move the cursor (also arrows; Shift: 8 pixels)",
+        "inspecting: move the cursor (arrows, Shift: 8, or click)",
+    ),
+    (
+        "t",
+        "inspecting ch6: trace one path from the pixel (again: next)",
     ),
     ("s", "save the view as PNG and its film as EXR in out/"),
     ("?", "show / hide this help"),
@@ -72,6 +76,9 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         }
         if key.code == KeyCode::Esc {
             return Some(Msg::ToggleInspect);
+        }
+        if key.code == KeyCode::Char('t') {
+            return Some(Msg::TracePath);
         }
     }
     Some(match key.code {

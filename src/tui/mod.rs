@@ -22,10 +22,14 @@ pub mod graphics;
 pub mod inspect;
 pub mod keys;
 pub mod layers;
+pub mod msg;
 pub mod picture;
 pub mod scenes;
+pub mod screen;
+pub mod story;
 pub mod student;
 pub mod target;
+pub mod trace;
 pub mod update;
 pub mod view;
 pub mod worker;
@@ -36,7 +40,9 @@ use std::sync::OnceLock;
 use std::thread::ThreadId;
 use std::time::{Duration, Instant};
 
-use crossterm::event::{self, Event};
+use crossterm::event::{
+    self, DisableMouseCapture, EnableMouseCapture, Event, MouseButton, MouseEventKind,
+};
 use crossterm::execute;
 use crossterm::terminal::{
     disable_raw_mode, enable_raw_mode, EnterAlternateScreen, LeaveAlternateScreen,
@@ -73,12 +79,13 @@ pub const TEST_ERROR: &str = "RAYSTEP_TUI_TEST_ERROR";
 /// The thread that owns the terminal; panics elsewhere leave it alone.
 static UI_THREAD: OnceLock<ThreadId> = OnceLock::new();
 
-/// Puts the terminal back: raw mode off, main screen, cursor shown.
-/// Harmless when the terminal is already restored.
+/// Puts the terminal back: raw mode and mouse reports off, main screen,
+/// cursor shown. Harmless when the terminal is already restored.
 pub fn restore_terminal() {
     let _ = disable_raw_mode();
     let _ = execute!(
         std::io::stdout(),
+        DisableMouseCapture,
         LeaveAlternateScreen,
         crossterm::cursor::Show
     );
@@ -172,6 +179,7 @@ pub fn run(launch: &Launch) -> std::io::Result<()> {
     execute!(
         std::io::stdout(),
         EnterAlternateScreen,
+        EnableMouseCapture,
         crossterm::cursor::Hide
     )?;
     let mut terminal = Terminal::new(CrosstermBackend::new(std::io::stdout()))?;
@@ -193,6 +201,9 @@ fn event_loop(
     let mut sent_paused = false;
     let mut dirty = true;
     let mut last_draw: Option<Instant> = None;
+    // What inspect mode traces in, built once per scene.
+    let (mut worlds, mut geometries) = (trace::Cache::default(), story::GeometryCache::default());
+    let mut story_key = None;
     loop {
         // Effects asked for by `update`: a new render, a save.
         if app.generation != sent {
@@ -234,6 +245,53 @@ fn event_loop(
                 dirty = true;
             }
         }
+        if let Some((x, y, sample)) = app.trace_requested {
+            let result = match app.current_scene().map(|s| s.scene.clone()) {
+                Some(Ok(scene)) => {
+                    let world = worlds.world(&scene);
+                    trace::trace_table(
+                        &scene,
+                        world,
+                        app.variant,
+                        app.settings.seed,
+                        (x, y),
+                        sample,
+                    )
+                }
+                _ => Err("no scene".into()),
+            };
+            app = update(app, Msg::Traced(result.map(Box::new)));
+            dirty = true;
+        }
+        let key = (
+            app.inspect,
+            app.generation,
+            app.chapter,
+            app.scene,
+            app.variant,
+        );
+        if app.inspect.is_some() && app.snapshot.is_some() && story_key != Some(key) {
+            story_key = Some(key);
+            if let (Some(c), Some(Ok(scene)), Some(p)) = (
+                app.current_chapter(),
+                app.current_scene().map(|s| s.scene.clone()),
+                app.inspect,
+            ) {
+                let lines = story::story_lines(
+                    c.number(),
+                    &scene,
+                    &app.settings,
+                    app.variant,
+                    p,
+                    &mut worlds,
+                    &mut geometries,
+                );
+                if let Some(lines) = lines {
+                    app = update(app, Msg::Story(p.0, p.1, lines));
+                    dirty = true;
+                }
+            }
+        }
         if app.quit {
             return Ok(());
         }
@@ -266,6 +324,19 @@ fn event_loop(
                         app = update(app, msg);
                         dirty = true;
                     }
+                }
+                Event::Mouse(m) if m.kind == MouseEventKind::Down(MouseButton::Left) => {
+                    let size = terminal.size()?;
+                    app = update(
+                        app,
+                        Msg::Click {
+                            column: m.column,
+                            row: m.row,
+                            width: size.width,
+                            height: size.height,
+                        },
+                    );
+                    dirty = true;
                 }
                 Event::Resize(..) => {
                     terminal.autoresize()?;

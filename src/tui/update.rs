@@ -129,6 +129,7 @@ pub fn update(mut app: App, msg: Msg) -> App {
                 (None, Some((w, h))) => Some((w / 2, h / 2)),
                 _ => None,
             };
+            app.trace = None;
         }
         Msg::CursorMove(dx, dy) => {
             let size = app
@@ -140,8 +141,49 @@ pub fn update(mut app: App, msg: Msg) -> App {
                 let clamp =
                     |v: u32, d: i32, n: u32| (v as i64 + d as i64).clamp(0, n as i64 - 1) as u32;
                 app.inspect = Some((clamp(x, dx, w), clamp(y, dy, h)));
+                app.trace = None;
+                app.traces = 0;
             }
         }
+        Msg::Click {
+            column,
+            row,
+            width,
+            height,
+        } => {
+            let screen = ratatui::layout::Rect::new(0, 0, width, height);
+            if let Some(p) = super::view::pixel_at(&app, screen, column, row) {
+                if app.inspect != Some(p) {
+                    app.trace = None;
+                    app.traces = 0;
+                }
+                app.inspect = Some(p);
+            }
+        }
+        Msg::TracePath => match (app.inspect, app.snapshot.as_ref()) {
+            (Some((x, y)), Some(snap)) if app.traces_paths() => {
+                let sample = app.traces % snap.samples.max(1);
+                app.trace_requested = Some((x, y, sample));
+                app.traces += 1;
+            }
+            (Some(_), _) if app.traces_paths() => app.message = "nothing rendered yet".into(),
+            _ => app.message = "t traces a path in chapter 6's inspect mode (i)".into(),
+        },
+        Msg::Traced(result) => {
+            app.trace_requested = None;
+            match result {
+                Ok(t) if Some(t.pixel) == app.inspect => {
+                    app.message = format!(
+                        "traced sample {} of pixel ({}, {}) (t: the next sample)",
+                        t.sample, t.pixel.0, t.pixel.1
+                    );
+                    app.trace = Some(t);
+                }
+                Ok(_) => {}
+                Err(e) => app.message = format!("cannot trace: {e}"),
+            }
+        }
+        Msg::Story(x, y, lines) => app.story = Some((x, y, lines)),
         Msg::TargetUp | Msg::TargetDown => {
             if app.progressive() {
                 app.target = match msg {

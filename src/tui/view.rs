@@ -26,14 +26,10 @@ use super::gauge::draw_gauge;
 pub use super::gauge::{gauge_state, short_number};
 use super::keys::KEYS;
 use super::picture::{fit, Picture};
+pub use super::screen::{areas, pixel_at, sidebar_width, Areas};
 use crate::core::film::Film;
 use crate::core::format::{format_number, format_seconds};
 use crate::core::preview::downsample;
-
-/// Width of the left column, in cells.
-pub fn sidebar_width(total: u16) -> u16 {
-    (total / 3).clamp(16, 34).min(total)
-}
 
 /// A style with this foreground colour, or plain without colour.
 fn fg(app: &App, color: Color) -> Style {
@@ -56,20 +52,17 @@ fn block<'a>(app: &App, title: &'a str, focused: bool) -> Block<'a> {
 /// Draws the whole UI.
 pub fn view(app: &App, frame: &mut Frame) {
     let area = frame.area();
-    let [main, status, gauge, message] = Layout::vertical([
-        Constraint::Min(3),
-        Constraint::Length(1),
-        Constraint::Length(1),
-        Constraint::Length(1),
-    ])
-    .areas(area);
-    let [side, preview] = Layout::horizontal([
-        Constraint::Length(sidebar_width(area.width)),
-        Constraint::Min(1),
-    ])
-    .areas(main);
+    let Areas {
+        side,
+        preview,
+        table,
+        lines: [status, gauge, message],
+    } = areas(app, area);
     draw_sidebar(app, frame, side);
     draw_preview(app, frame, preview);
+    if let Some(t) = table {
+        super::inspect::draw_table(app, frame, t);
+    }
     frame.render_widget(Paragraph::new(status_line(app)), status);
     draw_gauge(app, frame, gauge);
     let text = if app.message.is_empty() {

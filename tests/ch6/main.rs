@@ -6,5 +6,6 @@ mod common;
 mod exercises;
 mod global_illumination;
 mod ladder;
+mod path_record;
 #[cfg(feature = "tui")]
 mod tui;

@@ -123,3 +123,175 @@ fn the_panel_tells_the_pixels_story() {
     assert!(screen.contains("pixel (32, 32)"));
     assert!(screen.contains('+'));
 }
+
+/// The screen as text, one string per row.
+fn screen_rows(app: &App, w: u16, h: u16) -> Vec<String> {
+    let mut t = ratatui::Terminal::new(ratatui::backend::TestBackend::new(w, h)).unwrap();
+    t.draw(|f| raystep::tui::view::view(app, f)).unwrap();
+    let buf = t.backend().buffer().clone();
+    (0..h)
+        .map(|y| (0..w).map(|x| buf[(x, y)].symbol().to_string()).collect())
+        .collect()
+}
+
+#[test]
+fn a_click_on_the_picture_puts_the_cursor_on_that_pixel() {
+    let app = rendered();
+    let (w, h) = (120u16, 40u16);
+    let screen = ratatui::layout::Rect::new(0, 0, w, h);
+    // Click every cell of the screen: inside the picture the cursor goes
+    // to a pixel whose drawn cursor is that very cell; outside nothing.
+    let mut inside = 0;
+    for row in (0..h).step_by(3) {
+        for column in (0..w).step_by(7) {
+            let click = Msg::Click {
+                column,
+                row,
+                width: w,
+                height: h,
+            };
+            let expected = raystep::tui::view::pixel_at(&app, screen, column, row);
+            let after = update(update(rendered(), Msg::ToggleInspect), click.clone());
+            match expected {
+                Some(p) => {
+                    inside += 1;
+                    assert_eq!(after.inspect, Some(p));
+                    // The cursor is drawn on the clicked cell (on an enlarged
+                    // picture: the first cell of that pixel, at most one off).
+                    let mut after = after;
+                    after.color = true;
+                    let rows = screen_rows(&after, w, h);
+                    let at: Vec<(usize, usize)> = rows
+                        .iter()
+                        .enumerate()
+                        .flat_map(|(y, r)| {
+                            r.chars()
+                                .enumerate()
+                                .filter(|(_, c)| *c == '+')
+                                .map(move |(x, _)| (x, y))
+                        })
+                        .filter(|&(x, _)| x >= 34)
+                        .collect();
+                    assert_eq!(at.len(), 1, "{at:?}");
+                    let (cx, cy) = at[0];
+                    let near = |a: usize, b: u16| a <= b as usize && a + 1 >= b as usize;
+                    assert!(
+                        near(cx, column) && near(cy, row),
+                        "click ({column}, {row}) -> {p:?} drawn at {:?}",
+                        at[0]
+                    );
+                }
+                None => assert_eq!(after.inspect, Some((32, 32)), "({column}, {row})"),
+            }
+        }
+    }
+    assert!(inside > 20, "{inside}");
+    // The picture's corners map to the image's corners, and a click on
+    // the sidebar changes nothing.
+    let _ = app;
+    let app = update(rendered(), Msg::ToggleInspect);
+    let side = Msg::Click {
+        column: 2,
+        row: 2,
+        width: w,
+        height: h,
+    };
+    assert_eq!(update(app, side).inspect, Some((32, 32)));
+}
+
+#[test]
+fn t_traces_a_path_and_the_panel_shows_its_table() {
+    // A pixel of the floor, lit by the ceiling light.
+    let app = update(
+        update(rendered(), Msg::ToggleInspect),
+        Msg::CursorMove(0, 18),
+    );
+    let key = KeyEvent::new(KeyCode::Char('t'), KeyModifiers::NONE);
+    let msg = msg_for_key(&app, key).unwrap();
+    assert!(matches!(msg, Msg::TracePath));
+    let app = update(app, msg);
+    let (x, y, sample) = app.trace_requested.unwrap();
+    assert_eq!((x, y, sample), (32, 50, 0));
+    // What the event loop does: trace in the scene's world.
+    let scene = app.current_scene().unwrap().scene.clone().unwrap();
+    let world = raystep::ch5_reflection::world::World::new(&scene);
+    let table = raystep::tui::trace::trace_table(&scene, &world, app.variant, 0, (x, y), sample);
+    let app = update(app, Msg::Traced(table.map(Box::new)));
+    let t = app.trace.as_ref().unwrap();
+    assert!(t.lines[1].starts_with("#1 "), "{:?}", t.lines);
+    assert!(t.lines.iter().any(|l| l.contains("NEE")), "{:?}", t.lines);
+    assert!(t.lines.last().unwrap().starts_with("sum of the + terms"));
+    let rows = screen_rows(&app, 160, 50);
+    let text = rows.join("\n");
+    assert!(text.contains("path: sample 0 of pixel (32, 50)"), "{text}");
+    assert!(text.contains("#1 "), "{text}");
+    // Again: the next sample; moving the cursor clears the table.
+    let app = update(app, Msg::TracePath);
+    assert_eq!(app.trace_requested, Some((32, 50, 1)));
+    let app = update(app, Msg::CursorMove(1, 0));
+    assert!(app.trace.is_none());
+    insta::assert_snapshot!("inspect_trace_160x50", text);
+}
+
+#[test]
+fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
+    use raystep::tui::story::{story_lines, GeometryCache};
+    let scene = Arc::new(Scene::builtin().with_resolution(32, 32).unwrap());
+    let settings = Settings::default();
+    let (mut w, mut g) = (Default::default(), GeometryCache::default());
+    let mut story = |ch| story_lines(ch, &scene, &settings, 3, (16, 20), &mut w, &mut g).unwrap();
+    let ch3 = story(3);
+    assert!(ch3[0].starts_with("primary ray hits triangle"), "{ch3:?}");
+    assert!(ch3.iter().any(|l| l.contains("u = ")));
+    let ch4 = story(4);
+    assert!(ch4[0].starts_with("no SDF objects"), "{ch4:?}");
+    assert!(ch4[1].starts_with("nearest hit t "), "{ch4:?}");
+    let ch5 = story(5);
+    assert!(ch5[0].starts_with("sample 0: L = "), "{ch5:?}");
+    assert!(ch5.iter().any(|l| l.starts_with("light 0 area")), "{ch5:?}");
+    let path = crate::common::root().join("scenes/sdf-shapes.toml");
+    let sdf = Arc::new(Scene::load(&path).unwrap().with_resolution(32, 24).unwrap());
+    let (mut w2, mut g2) = (Default::default(), GeometryCache::default());
+    let ch4 = story_lines(4, &sdf, &settings, 0, (16, 12), &mut w2, &mut g2).unwrap();
+    assert!(ch4[0].starts_with("sphere tracing: "), "{ch4:?}");
+    assert!(ch4.iter().any(|l| l.starts_with("   0: t 0 f ")), "{ch4:?}");
+    // The panel shows the story of the pixel under the cursor.
+    let ch3_stage = raystep::chapters::all()[2];
+    let entry = SceneEntry {
+        name: "cornell-box".into(),
+        source: "<built-in>".into(),
+        scene: Ok(scene.clone()),
+    };
+    let app = App::new(vec![ch3_stage], vec![entry], false);
+    let job = app.job().unwrap();
+    let mut render = ch3_stage.start(job.scene, &settings).unwrap();
+    while !render.pass() {}
+    let snap = Snapshot::capture(ch3_stage, &*render, job.generation, Duration::ZERO, true);
+    let app = update(app, Msg::Progress(Progress::Snapshot(Box::new(snap))));
+    let app = update(app, Msg::ToggleInspect);
+    let app = update(app, Msg::CursorMove(0, 4));
+    let app = update(app, Msg::Story(16, 20, ch3.clone()));
+    let lines = inspect_lines(&app);
+    assert!(lines.contains(&ch3[0]), "{lines:?}");
+}
+
+#[test]
+fn with_a_graphics_protocol_a_click_maps_proportionally() {
+    // A 64x64 film with 10x20-pixel cells is drawn at its own size, 7x4
+    // cells from the preview's top-left corner (ratatui-image never
+    // enlarges): clicks inside map proportionally, clicks beside it miss.
+    let mut app = update(rendered(), Msg::ToggleInspect);
+    app.color = true;
+    let mut picker = ratatui_image::picker::Picker::from_fontsize((10, 20));
+    picker.set_protocol_type(ratatui_image::picker::ProtocolType::Kitty);
+    app.picker = Some(picker);
+    let screen = ratatui::layout::Rect::new(0, 0, 120, 40);
+    let preview = raystep::tui::view::areas(&app, screen).preview;
+    let (x0, y0) = (preview.x + 1, preview.y + 1);
+    let at = |c, r| raystep::tui::view::pixel_at(&app, screen, x0 + c, y0 + r);
+    assert_eq!(at(0, 0), Some((0, 0)));
+    assert_eq!(at(6, 3), Some((55, 48)));
+    assert_eq!(at(3, 2), Some((28, 32)));
+    assert_eq!(at(7, 0), None);
+    assert_eq!(at(0, 4), None);
+}

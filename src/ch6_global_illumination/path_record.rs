@@ -1,0 +1,344 @@
+//! One path, written down. [`record_path`] traces the very sample a render
+//! traced for a pixel (same seed, pixel, sample index and so the same
+//! random numbers) through the render's own loop, [`trace_path`], with a
+//! [`PathRecord`] listening to its [`PathEvent`]s. The record is a table:
+//! per vertex what was hit, the light that next-event estimation found
+//! there, the emission the path picked up, the direction it went on in,
+//! and Russian roulette. Its contributions add up to exactly what the
+//! render added to the pixel for that sample (a test checks it).
+
+use glam::Vec3;
+
+use crate::ch1_projection::camera::Camera;
+use crate::ch4_implicit_surfaces::hit::Surface;
+use crate::ch5_reflection::light::Light;
+use crate::ch5_reflection::world::World;
+use crate::scene::Scene;
+
+use super::accumulate::camera_sample;
+use super::integrator::{trace_path, Contributions, PathSettings, PathStats, LAYER_SLOTS};
+use super::path_events::PathEvent;
+use super::sampler::SamplerKind;
+
+/// Emission the path picked up: what a surface emits towards it, or the
+/// sky it escaped to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Emission {
+    /// Emitted radiance Le.
+    pub le: Vec3,
+    /// The MIS weight against light sampling (1 where light sampling could
+    /// not have found it, 0 where it already counted it).
+    pub weight: f32,
+    /// β · Le · w, what was added to the pixel.
+    pub contribution: Vec3,
+}
+
+/// Next-event estimation at a vertex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightSample {
+    /// Index into the world's lights.
+    pub light: usize,
+    /// World direction towards the light sample.
+    pub wi: Vec3,
+    /// BSDF value towards it.
+    pub f: Vec3,
+    /// Radiance arriving from the sample (before the shadow test).
+    pub li: Vec3,
+    /// pdf of the sample (choosing the light times sampling a point).
+    pub pdf: f32,
+    /// |cos θi|.
+    pub cos: f32,
+    /// MIS weight.
+    pub weight: f32,
+    /// Whether the shadow ray got through.
+    pub visible: bool,
+    /// β f Li cos w / pdf: what was added (0 in shadow).
+    pub contribution: Vec3,
+}
+
+/// The sampled next direction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Scatter {
+    /// World direction.
+    pub wi: Vec3,
+    /// BSDF value (0 for a delta lobe).
+    pub f: Vec3,
+    /// Its pdf (0 for a delta lobe).
+    pub pdf: f32,
+    /// |cos θi|.
+    pub cos: f32,
+    /// From a delta lobe (mirror, glass).
+    pub delta: bool,
+    /// Throughput after the bounce, before roulette.
+    pub beta: Vec3,
+}
+
+/// One surface the path reached.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Vertex {
+    /// Which object.
+    pub surface: Surface,
+    /// Index into the scene's materials.
+    pub material: usize,
+    /// Distance along the ray that reached it.
+    pub t: f32,
+    /// The point.
+    pub p: Vec3,
+    /// Throughput β with which the path arrived.
+    pub beta: Vec3,
+    /// Emission found here by the ray that arrived.
+    pub emission: Option<Emission>,
+    /// Light sampling here (none after a delta surface or without lights).
+    pub light: Option<LightSample>,
+    /// The direction the path went on in.
+    pub scatter: Option<Scatter>,
+    /// Russian roulette: (survival probability, survived).
+    pub roulette: Option<(f32, bool)>,
+}
+
+impl Vertex {
+    /// What this vertex added to the pixel.
+    pub fn contribution(&self) -> Vec3 {
+        let e = self.emission.map_or(Vec3::ZERO, |e| e.contribution);
+        e + self.light.map_or(Vec3::ZERO, |l| l.contribution)
+    }
+}
+
+/// Why the path ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PathEnd {
+    /// It left the scene.
+    Escaped,
+    /// Russian roulette ended it.
+    Roulette,
+    /// It reached the bounce limit.
+    BounceLimit,
+    /// The surface sent it nowhere (the BSDF drew no direction, or one
+    /// carrying nothing).
+    Absorbed,
+}
+
+/// One path, as a table of vertices.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PathRecord {
+    /// The pixel.
+    pub pixel: (u32, u32),
+    /// The sample index.
+    pub sample: u32,
+    /// Direction of the camera ray.
+    pub camera_dir: Vec3,
+    /// Every surface reached, in order.
+    pub vertices: Vec<Vertex>,
+    /// The sky (or nothing) found when the path left the scene.
+    pub escaped: Option<(Vec3, Emission)>,
+    /// Why it ended.
+    pub end: PathEnd,
+    /// What the render added per layer slot (see [`super::integrator`]).
+    pub layers: [Vec3; LAYER_SLOTS],
+    /// Counts: rays, dropped non-finite contributions.
+    pub stats: PathStats,
+}
+
+impl PathRecord {
+    fn empty(pixel: (u32, u32), sample: u32, camera_dir: Vec3) -> PathRecord {
+        PathRecord {
+            pixel,
+            sample,
+            camera_dir,
+            vertices: Vec::new(),
+            escaped: None,
+            end: PathEnd::Absorbed,
+            layers: [Vec3::ZERO; LAYER_SLOTS],
+            stats: PathStats::default(),
+        }
+    }
+
+    /// The sum of the table's contributions (those the render kept: finite
+    /// ones): the sample's radiance.
+    pub fn contributions_sum(&self) -> Vec3 {
+        let escaped = self.escaped.map(|(_, e)| e.contribution);
+        self.vertices
+            .iter()
+            .flat_map(|v| {
+                [
+                    v.emission.map(|e| e.contribution),
+                    v.light.map(|l| l.contribution),
+                ]
+            })
+            .chain([escaped])
+            .flatten()
+            .filter(|c| c.is_finite())
+            .sum()
+    }
+
+    /// The radiance the render added, by layer, summed.
+    pub fn radiance(&self) -> Vec3 {
+        self.layers.iter().sum()
+    }
+
+    fn last(&mut self) -> Option<&mut Vertex> {
+        self.vertices.last_mut()
+    }
+}
+
+impl Contributions for PathRecord {
+    fn add_to(&mut self, slot: usize, c: Vec3) {
+        self.layers[slot] += c;
+    }
+
+    fn note(&mut self, event: PathEvent<'_>) {
+        match event {
+            PathEvent::Hit { it, beta } => self.vertices.push(Vertex {
+                surface: it.surface,
+                material: it.material,
+                t: it.t,
+                p: it.p,
+                beta,
+                emission: None,
+                light: None,
+                scatter: None,
+                roulette: None,
+            }),
+            PathEvent::Escaped {
+                dir,
+                le,
+                weight,
+                contribution,
+            } => {
+                let e = Emission {
+                    le,
+                    weight,
+                    contribution,
+                };
+                self.escaped = Some((dir, e));
+            }
+            PathEvent::Emission {
+                le,
+                weight,
+                contribution,
+            } => {
+                if let Some(v) = self.last() {
+                    v.emission = Some(Emission {
+                        le,
+                        weight,
+                        contribution,
+                    });
+                }
+            }
+            PathEvent::Light {
+                light,
+                wi,
+                f,
+                li,
+                pdf,
+                cos,
+                weight,
+                visible,
+                contribution,
+            } => {
+                if let Some(v) = self.last() {
+                    v.light = Some(LightSample {
+                        light,
+                        wi,
+                        f,
+                        li,
+                        pdf,
+                        cos,
+                        weight,
+                        visible,
+                        contribution,
+                    });
+                }
+            }
+            PathEvent::Scatter {
+                wi,
+                f,
+                pdf,
+                cos,
+                delta,
+                beta,
+            } => {
+                if let Some(v) = self.last() {
+                    v.scatter = Some(Scatter {
+                        wi,
+                        f,
+                        pdf,
+                        cos,
+                        delta,
+                        beta,
+                    });
+                }
+            }
+            PathEvent::Roulette { q, survived } => {
+                if let Some(v) = self.last() {
+                    v.roulette = Some((q, survived));
+                }
+            }
+        }
+    }
+}
+
+/// Traces sample `sample` of pixel `pixel` exactly as
+/// [`Accumulator::add_samples`](super::accumulate::Accumulator::add_samples)
+/// does (same camera ray, same random numbers, same loop) and writes the
+/// path down.
+// ANCHOR: record_path
+pub fn record_path(
+    world: &World,
+    camera: &Camera,
+    settings: &PathSettings,
+    kind: SamplerKind,
+    seed: u64,
+    pixel: (u32, u32),
+    sample: u32,
+) -> PathRecord {
+    let (x, y) = (pixel.0 as usize, pixel.1 as usize);
+    let (mut sampler, ray) = camera_sample(camera, kind, seed, x, y, sample);
+    let mut record = PathRecord::empty(pixel, sample, ray.dir);
+    let mut stats = PathStats::default();
+    trace_path(world, ray, &mut sampler, settings, &mut record, &mut stats);
+    record.stats = stats;
+    let limit = settings.max_bounces.map(|k| k as usize + 1);
+    record.end = match record.vertices.last() {
+        None => PathEnd::Escaped,
+        Some(v) if v.roulette.is_some_and(|(_, survived)| !survived) => PathEnd::Roulette,
+        // Went on in a direction and found nothing (or only the sky).
+        Some(v) if v.scatter.is_some() => PathEnd::Escaped,
+        Some(_) if Some(record.vertices.len()) > limit => PathEnd::BounceLimit,
+        Some(_) => PathEnd::Absorbed,
+    };
+    record
+}
+// ANCHOR_END: record_path
+
+/// A surface's name for a table: "mesh 3 \"short box\"".
+pub fn surface_name(scene: &Scene, surface: Surface) -> String {
+    match surface {
+        Surface::Mesh(i) => match scene.meshes.get(i) {
+            Some(m) if !m.name.is_empty() => format!("mesh {i} \"{}\"", m.name),
+            _ => format!("mesh {i}"),
+        },
+        Surface::Sdf(i) => match scene.sdfs.get(i) {
+            Some(o) if !o.name.is_empty() => format!("sdf {i} \"{}\"", o.name),
+            _ => format!("sdf {i}"),
+        },
+    }
+}
+
+/// A light's name for a table: its kind, and for an area light its mesh.
+pub fn light_name(scene: &Scene, world: &World, index: usize) -> String {
+    match world.lights.lights.get(index) {
+        Some(Light::Area(a)) => {
+            format!(
+                "{index} area, {}",
+                surface_name(scene, Surface::Mesh(a.mesh))
+            )
+        }
+        Some(Light::Point { .. }) => format!("{index} point"),
+        Some(Light::Directional { .. }) => format!("{index} directional"),
+        Some(Light::Environment { .. }) => format!("{index} environment"),
+        Some(Light::Spot(_)) => format!("{index} spot"),
+        Some(Light::Sky(_)) => format!("{index} sky"),
+        None => format!("{index}"),
+    }
+}

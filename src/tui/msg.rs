@@ -1,0 +1,89 @@
+//! Everything that can happen to the UI: the messages
+//! [`update`](super::update::update) takes.
+
+use std::path::PathBuf;
+
+use super::worker::Progress;
+use crate::grading::FailureImages;
+
+/// Everything that can happen to the UI.
+#[derive(Clone, Debug)]
+pub enum Msg {
+    /// Move up in the focused list.
+    Up,
+    /// Move down in the focused list.
+    Down,
+    /// Switch focus between the chapter and scene lists.
+    SwitchFocus,
+    /// Select the chapter with this lecture number.
+    ChapterNumber(u32),
+    /// Next view of the chapter.
+    NextView,
+    /// Previous view of the chapter.
+    PrevView,
+    /// One stop brighter.
+    ExposureUp,
+    /// One stop darker.
+    ExposureDown,
+    /// Exposure back to 0.
+    ExposureReset,
+    /// One bounce more (after 16: all bounces).
+    BounceUp,
+    /// One bounce less (before 0: all bounces).
+    BounceDown,
+    /// Toggle "exactly k" / "up to k".
+    ToggleBounceMode,
+    /// Render → reference → difference → render.
+    CycleCompare,
+    /// Next estimator or sampler (the next step of the lecture's ladder).
+    NextVariant,
+    /// Previous estimator or sampler.
+    PrevVariant,
+    /// Pause or resume a progressive render.
+    TogglePause,
+    /// Twice the sample budget, and the noise level it reaches.
+    TargetUp,
+    /// Inspect mode on (cursor at the centre) or off.
+    ToggleInspect,
+    /// Move the inspect cursor by (dx, dy) pixels.
+    CursorMove(i32, i32),
+    /// Half the sample budget, and the noise level it reaches.
+    TargetDown,
+    /// Trace one path from the inspected pixel (the next sample each time).
+    TracePath,
+    /// The traced path, or why there is none.
+    Traced(Result<Box<super::trace::PathTable>, String>),
+    /// The story of the inspected pixel (chapters 3 to 5): pixel, lines.
+    Story(u32, u32, Vec<String>),
+    /// A mouse click at terminal cell (`column`, `row`) of a terminal of
+    /// `width` x `height` cells.
+    Click {
+        /// Cell column.
+        column: u16,
+        /// Cell row.
+        row: u16,
+        /// Terminal width in cells.
+        width: u16,
+        /// Terminal height in cells.
+        height: u16,
+    },
+    /// Show the grader's newest failure images (student vs reference), or
+    /// go back to the render.
+    ToggleGrading,
+    /// The grader's images were read: the pair, none, or the error.
+    GradeLoaded(Result<Option<FailureImages>, String>),
+    /// Student mode on (the current chapter's capstone, live) or off.
+    ToggleStudent,
+    /// A report from the student-mode watcher of this chapter.
+    Student(u32, super::student::StudentEvent),
+    /// Save the current view.
+    Save,
+    /// The save finished: the files written, or the error.
+    Saved(Result<Vec<PathBuf>, String>),
+    /// Show or hide the help overlay.
+    ToggleHelp,
+    /// Quit.
+    Quit,
+    /// A report from the render worker.
+    Progress(Progress),
+}
