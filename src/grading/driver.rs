@@ -85,8 +85,8 @@ pub fn grade_main() -> ExitCode {
         say(
             &mut stdout,
             &format!(
-                "grading {} exercises (reference solutions)\n",
-                exercises.len()
+                "grading {} (reference solutions)\n",
+                count(exercises.len(), "exercise")
             ),
         );
         grade_stream(
@@ -113,7 +113,10 @@ pub fn grade_main() -> ExitCode {
         };
         say(
             &mut stdout,
-            &format!("grading {} exercises (your solutions)\n", exercises.len()),
+            &format!(
+                "grading {} (your solutions)\n",
+                count(exercises.len(), "exercise")
+            ),
         );
         let timeout = Duration::from_secs_f64(cli.timeout.max(0.1));
         grade_stream(
@@ -292,4 +295,13 @@ fn json_string(s: &str) -> String {
     }
     o.push('"');
     o
+}
+
+/// "1 exercise", "3 exercises".
+fn count(n: usize, what: &str) -> String {
+    if n == 1 {
+        format!("1 {what}")
+    } else {
+        format!("{n} {what}s")
+    }
 }
