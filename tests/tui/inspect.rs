@@ -26,17 +26,26 @@ fn rendered() -> App {
         scene: Ok(Arc::new(scene)),
     };
     let app = App::new(vec![ch6], vec![entry], false);
-    let job = app.job().unwrap();
-    let settings = Settings {
-        spp: 2,
-        ..Settings::default()
-    };
-    let mut render = ch6
-        .start_variant(job.scene, &settings, job.variant)
-        .unwrap();
-    while !render.pass() {}
-    let snap = Snapshot::capture(ch6, &*render, job.generation, Duration::ZERO, true);
-    update(app, Msg::Progress(Progress::Snapshot(Box::new(snap))))
+    // The render is the same every time (same scene, seed and samples):
+    // made once per test binary, the many clicks of the click test cost a
+    // UI update each, not a render each.
+    static SNAPSHOT: std::sync::OnceLock<Snapshot> = std::sync::OnceLock::new();
+    let snap = SNAPSHOT.get_or_init(|| {
+        let job = app.job().unwrap();
+        let settings = Settings {
+            spp: 2,
+            ..Settings::default()
+        };
+        let mut render = ch6
+            .start_variant(job.scene, &settings, job.variant)
+            .unwrap();
+        while !render.pass() {}
+        Snapshot::capture(ch6, &*render, job.generation, Duration::ZERO, true)
+    });
+    update(
+        app,
+        Msg::Progress(Progress::Snapshot(Box::new(snap.clone()))),
+    )
 }
 
 #[test]
