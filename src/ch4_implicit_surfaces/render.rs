@@ -103,8 +103,8 @@ pub fn trace_image(
     (0..w * h)
         .into_par_iter()
         .map(|i| {
-            let raster = Vec2::new((i % w) as f32 + 0.5, (i / w) as f32 + 0.5);
-            trace_pixel(&camera.ray(raster), objects, m, method, normals, meshes)
+            let ray = pixel_ray(camera, i % w, i / w);
+            trace_pixel(&ray, objects, m, method, normals, meshes)
         })
         .collect()
 }

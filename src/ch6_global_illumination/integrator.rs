@@ -30,7 +30,7 @@ use crate::ch5_reflection::warp::{uniform_hemisphere, UNIFORM_HEMISPHERE_PDF};
 use crate::ch5_reflection::world::World;
 use crate::core::sampling::Sampler;
 
-use super::path_events::PathEvent;
+use super::path_events::{Emission, LightSample, PathEvent, Scatter};
 use super::sampler::PathSampler;
 
 /// The highest bounce count k with a layer of its own.
@@ -221,9 +221,11 @@ pub fn trace_path(
                 add(layers, slot_of(scatterings), beta * le * w, stats);
                 layers.note(PathEvent::Escaped {
                     dir: ray.dir,
-                    le,
-                    weight: w,
-                    contribution: beta * le * w,
+                    emission: Emission {
+                        le,
+                        weight: w,
+                        contribution: beta * le * w,
+                    },
                 });
             }
             break;
@@ -243,11 +245,11 @@ pub fn trace_path(
                 _ => 1.0,
             };
             add(layers, slot_of(scatterings), beta * le * w, stats);
-            layers.note(PathEvent::Emission {
+            layers.note(PathEvent::Emission(Emission {
                 le,
                 weight: w,
                 contribution: beta * le * w,
-            });
+            }));
         }
 
         // End the path at the bounce limit.
@@ -292,7 +294,7 @@ pub fn trace_path(
                             c = beta * f * ls.li * wi.z.abs() * (w / pdf_light);
                             add(layers, slot_of(scatterings), c, stats);
                         }
-                        layers.note(PathEvent::Light {
+                        layers.note(PathEvent::Light(LightSample {
                             light: i,
                             wi: ls.wi,
                             f,
@@ -302,7 +304,7 @@ pub fn trace_path(
                             weight: w,
                             visible,
                             contribution: c,
-                        });
+                        }));
                     }
                 }
             }
@@ -332,14 +334,14 @@ pub fn trace_path(
         prev_p = it.p;
         prev_n = n_side;
         let wi_world = frame.to_world(wi);
-        layers.note(PathEvent::Scatter {
+        layers.note(PathEvent::Scatter(Scatter {
             wi: wi_world,
             f,
             pdf,
             cos: wi.z.abs(),
             delta,
             beta,
-        });
+        }));
 
         // Russian roulette: survive with probability q, then divide by q.
         if scatterings >= settings.rr_min_scatterings {

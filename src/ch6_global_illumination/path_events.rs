@@ -20,65 +20,21 @@ pub enum PathEvent<'a> {
         /// The path throughput β before this vertex.
         beta: Vec3,
     },
-    /// The ray left the scene along `dir`; `le` is the environment's
-    /// radiance there (0 without one), `weight` its MIS weight and
-    /// `contribution` what was added (β · Le · w).
+    /// The ray left the scene along `dir`, picking up the environment's
+    /// radiance there (0 without one).
     Escaped {
         /// The direction the path left in.
         dir: Vec3,
-        /// The environment's radiance along it.
-        le: Vec3,
-        /// Its MIS weight (1 where light sampling could not find it).
-        weight: f32,
-        /// β · Le · w.
-        contribution: Vec3,
+        /// The environment's radiance, its MIS weight (1 where light
+        /// sampling could not find it) and what was added.
+        emission: Emission,
     },
-    /// The surface just hit emits towards the path: radiance `le`,
-    /// weighted by `weight` against light sampling.
-    Emission {
-        /// Emitted radiance Le.
-        le: Vec3,
-        /// The MIS weight of the BSDF-sampled direction that found it.
-        weight: f32,
-        /// β · Le · w.
-        contribution: Vec3,
-    },
-    /// Next-event estimation: light `light` was sampled towards `wi`.
-    Light {
-        /// Index into the world's lights.
-        light: usize,
-        /// World direction towards the sampled point.
-        wi: Vec3,
-        /// The BSDF value f(ωo, ωi).
-        f: Vec3,
-        /// The radiance Li arriving from the sample.
-        li: Vec3,
-        /// The sample's pdf (choosing the light times sampling it).
-        pdf: f32,
-        /// |cos θi|.
-        cos: f32,
-        /// The MIS weight (1 without MIS or for a delta light).
-        weight: f32,
-        /// Whether the shadow ray got through.
-        visible: bool,
-        /// What was added: β f Li cos w / pdf (0 when shadowed).
-        contribution: Vec3,
-    },
+    /// The surface just hit emits towards the path.
+    Emission(Emission),
+    /// Next-event estimation: a light was sampled.
+    Light(LightSample),
     /// The next direction was sampled.
-    Scatter {
-        /// World direction the path goes on in.
-        wi: Vec3,
-        /// The BSDF value (0 for a delta lobe, whose value is in `beta`).
-        f: Vec3,
-        /// The pdf of the direction (0 for a delta lobe).
-        pdf: f32,
-        /// |cos θi|.
-        cos: f32,
-        /// Whether it came from a delta lobe (mirror, glass).
-        delta: bool,
-        /// The throughput after this bounce (before roulette).
-        beta: Vec3,
-    },
+    Scatter(Scatter),
     /// Russian roulette was played with survival probability `q`.
     Roulette {
         /// Survival probability.
@@ -86,4 +42,57 @@ pub enum PathEvent<'a> {
         /// Whether the path survived (β was then divided by q).
         survived: bool,
     },
+}
+
+/// Emission the path picked up: what a surface emits towards it, or the
+/// sky it escaped to.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Emission {
+    /// Emitted radiance Le.
+    pub le: Vec3,
+    /// The MIS weight against light sampling (1 where light sampling could
+    /// not have found it, 0 where it already counted it).
+    pub weight: f32,
+    /// β · Le · w, what was added to the pixel.
+    pub contribution: Vec3,
+}
+
+/// Next-event estimation at a vertex.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightSample {
+    /// Index into the world's lights.
+    pub light: usize,
+    /// World direction towards the light sample.
+    pub wi: Vec3,
+    /// BSDF value towards it.
+    pub f: Vec3,
+    /// Radiance arriving from the sample (before the shadow test).
+    pub li: Vec3,
+    /// pdf of the sample (choosing the light times sampling a point).
+    pub pdf: f32,
+    /// |cos θi|.
+    pub cos: f32,
+    /// MIS weight.
+    pub weight: f32,
+    /// Whether the shadow ray got through.
+    pub visible: bool,
+    /// β f Li cos w / pdf: what was added (0 in shadow).
+    pub contribution: Vec3,
+}
+
+/// The sampled next direction.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Scatter {
+    /// World direction.
+    pub wi: Vec3,
+    /// BSDF value (0 for a delta lobe).
+    pub f: Vec3,
+    /// Its pdf (0 for a delta lobe).
+    pub pdf: f32,
+    /// |cos θi|.
+    pub cos: f32,
+    /// From a delta lobe (mirror, glass).
+    pub delta: bool,
+    /// Throughput after the bounce, before roulette.
+    pub beta: Vec3,
 }

@@ -17,61 +17,8 @@ use crate::scene::Scene;
 
 use super::accumulate::camera_sample;
 use super::integrator::{trace_path, Contributions, PathSettings, PathStats, LAYER_SLOTS};
-use super::path_events::PathEvent;
+pub use super::path_events::{Emission, LightSample, PathEvent, Scatter};
 use super::sampler::SamplerKind;
-
-/// Emission the path picked up: what a surface emits towards it, or the
-/// sky it escaped to.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Emission {
-    /// Emitted radiance Le.
-    pub le: Vec3,
-    /// The MIS weight against light sampling (1 where light sampling could
-    /// not have found it, 0 where it already counted it).
-    pub weight: f32,
-    /// β · Le · w, what was added to the pixel.
-    pub contribution: Vec3,
-}
-
-/// Next-event estimation at a vertex.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LightSample {
-    /// Index into the world's lights.
-    pub light: usize,
-    /// World direction towards the light sample.
-    pub wi: Vec3,
-    /// BSDF value towards it.
-    pub f: Vec3,
-    /// Radiance arriving from the sample (before the shadow test).
-    pub li: Vec3,
-    /// pdf of the sample (choosing the light times sampling a point).
-    pub pdf: f32,
-    /// |cos θi|.
-    pub cos: f32,
-    /// MIS weight.
-    pub weight: f32,
-    /// Whether the shadow ray got through.
-    pub visible: bool,
-    /// β f Li cos w / pdf: what was added (0 in shadow).
-    pub contribution: Vec3,
-}
-
-/// The sampled next direction.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Scatter {
-    /// World direction.
-    pub wi: Vec3,
-    /// BSDF value (0 for a delta lobe).
-    pub f: Vec3,
-    /// Its pdf (0 for a delta lobe).
-    pub pdf: f32,
-    /// |cos θi|.
-    pub cos: f32,
-    /// From a delta lobe (mirror, glass).
-    pub delta: bool,
-    /// Throughput after the bounce, before roulette.
-    pub beta: Vec3,
-}
 
 /// One surface the path reached.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -199,74 +146,20 @@ impl Contributions for PathRecord {
                 scatter: None,
                 roulette: None,
             }),
-            PathEvent::Escaped {
-                dir,
-                le,
-                weight,
-                contribution,
-            } => {
-                let e = Emission {
-                    le,
-                    weight,
-                    contribution,
-                };
-                self.escaped = Some((dir, e));
-            }
-            PathEvent::Emission {
-                le,
-                weight,
-                contribution,
-            } => {
+            PathEvent::Escaped { dir, emission } => self.escaped = Some((dir, emission)),
+            PathEvent::Emission(e) => {
                 if let Some(v) = self.last() {
-                    v.emission = Some(Emission {
-                        le,
-                        weight,
-                        contribution,
-                    });
+                    v.emission = Some(e);
                 }
             }
-            PathEvent::Light {
-                light,
-                wi,
-                f,
-                li,
-                pdf,
-                cos,
-                weight,
-                visible,
-                contribution,
-            } => {
+            PathEvent::Light(l) => {
                 if let Some(v) = self.last() {
-                    v.light = Some(LightSample {
-                        light,
-                        wi,
-                        f,
-                        li,
-                        pdf,
-                        cos,
-                        weight,
-                        visible,
-                        contribution,
-                    });
+                    v.light = Some(l);
                 }
             }
-            PathEvent::Scatter {
-                wi,
-                f,
-                pdf,
-                cos,
-                delta,
-                beta,
-            } => {
+            PathEvent::Scatter(sc) => {
                 if let Some(v) = self.last() {
-                    v.scatter = Some(Scatter {
-                        wi,
-                        f,
-                        pdf,
-                        cos,
-                        delta,
-                        beta,
-                    });
+                    v.scatter = Some(sc);
                 }
             }
             PathEvent::Roulette { q, survived } => {
