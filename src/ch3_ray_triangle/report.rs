@@ -93,12 +93,7 @@ pub fn chapter_report(
 }
 
 /// Adds every study to `report`, at the given size.
-pub fn add_studies_sized(
-    report: &mut Report,
-    scene: &Scene,
-    settings: &Settings,
-    size: &StudySize,
-) {
+pub fn add_studies(report: &mut Report, scene: &Scene, settings: &Settings, size: &StudySize) {
     let mut et = error_against_time(scene, &size.spp, size.reference_spp, settings.seed);
     let (table, rows) = naive_vs_bvh(&size.triangle_counts, size.naive_budget);
     et.rows.extend(rows);

@@ -9,7 +9,7 @@ use glam::Vec3;
 
 use super::geometry::Geometry;
 use super::render::{films_from_sums, render_sum, TraceStats};
-use super::report::{add_studies_sized, chapter_report};
+use super::report::{add_studies, chapter_report};
 use super::studies::StudySize;
 use crate::ch1_projection::camera::Camera;
 use crate::core::error::Result;
@@ -158,7 +158,7 @@ impl Render for RayTriangleRender {
         );
         report.nonfinite_caught = nonfinite;
         if self.settings.studies {
-            add_studies_sized(
+            add_studies(
                 &mut report,
                 &self.scene,
                 &self.settings,

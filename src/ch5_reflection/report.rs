@@ -7,7 +7,7 @@ use super::direct::{Counters, Estimator};
 use super::light::Light;
 use super::material::Bsdf;
 use super::world::World;
-use crate::core::format::{format_number, format_seconds};
+use crate::core::format::{format_count, format_number, format_seconds};
 use crate::core::report::{Report, Table};
 use crate::core::stage::Settings;
 use crate::scene::Scene;
@@ -193,9 +193,8 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
             .push("light-sampling tables: the scene has no area lights".into());
     } else {
         report.built.push(format!(
-            "light-sampling tables (triangle areas) for {} area light{}, {} triangles",
-            areas.len(),
-            if areas.len() == 1 { "" } else { "s" },
+            "light-sampling tables (triangle areas) for {}, {} triangles",
+            format_count(areas.len(), "area light"),
             areas.iter().map(|a| a.triangles.len()).sum::<usize>()
         ));
     }

@@ -11,7 +11,7 @@ use super::sampler::SamplerKind;
 use super::stability::stability_cases;
 use super::studies::{error_against_time, strategy_table};
 use crate::ch5_reflection::world::World;
-use crate::core::format::{format_number, format_seconds};
+use crate::core::format::{format_count, format_number, format_seconds};
 use crate::core::report::{Report, Table};
 use crate::core::stage::Settings;
 use crate::scene::file::MaterialKind;
@@ -162,8 +162,8 @@ fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
     } else if samples_lights {
         let env = lights.is_some_and(|l| l.environment.is_some());
         b.push(format!(
-            "light sampling over {n_lights} light{}{}",
-            if n_lights == 1 { "" } else { "s" },
+            "light sampling over {}{}",
+            format_count(n_lights, "light"),
             if env {
                 " (the environment sampled by cosine)"
             } else {

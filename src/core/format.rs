@@ -50,9 +50,25 @@ pub fn format_vec2(v: glam::Vec2) -> String {
     )
 }
 
+/// A count and its noun: "1 light", "3 lights".
+pub fn format_count(n: usize, noun: &str) -> String {
+    if n == 1 {
+        format!("1 {noun}")
+    } else {
+        format!("{n} {noun}s")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn counts_take_the_plural_except_one() {
+        assert_eq!(format_count(0, "light"), "0 lights");
+        assert_eq!(format_count(1, "exercise"), "1 exercise");
+        assert_eq!(format_count(24, "exercise"), "24 exercises");
+    }
 
     #[test]
     fn numbers_read_well() {

@@ -10,6 +10,7 @@ use std::time::Duration;
 
 use clap::Parser;
 
+use crate::core::format::format_count;
 use crate::grading::build::{build_exercises, root};
 use crate::grading::exercise::{Exercise, Outcome};
 use crate::grading::process::{reference, run_student};
@@ -86,7 +87,7 @@ pub fn grade_main() -> ExitCode {
             &mut stdout,
             &format!(
                 "grading {} (reference solutions)\n",
-                count(exercises.len(), "exercise")
+                format_count(exercises.len(), "exercise")
             ),
         );
         grade_stream(
@@ -115,7 +116,7 @@ pub fn grade_main() -> ExitCode {
             &mut stdout,
             &format!(
                 "grading {} (your solutions)\n",
-                count(exercises.len(), "exercise")
+                format_count(exercises.len(), "exercise")
             ),
         );
         let timeout = Duration::from_secs_f64(cli.timeout.max(0.1));
@@ -295,13 +296,4 @@ fn json_string(s: &str) -> String {
     }
     o.push('"');
     o
-}
-
-/// "1 exercise", "3 exercises".
-fn count(n: usize, what: &str) -> String {
-    if n == 1 {
-        format!("1 {what}")
-    } else {
-        format!("{n} {what}s")
-    }
 }
