@@ -93,16 +93,3 @@ pub fn directional_irradiance(e: f64, cos_theta: f64) -> f64 {
 pub fn lambertian_radiance(rho: f64, e: f64) -> f64 {
     rho / PI * e
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn an_octant_is_an_eighth_of_the_sphere() {
-        let o = triangle_solid_angle(DVec3::X, DVec3::Y, DVec3::Z);
-        assert!((o - 4.0 * PI / 8.0).abs() < 1e-12, "{o}");
-        assert!((cap_solid_angle(PI) - 4.0 * PI).abs() < 1e-12);
-        assert!((cap_solid_angle(PI / 2.0) - 2.0 * PI).abs() < 1e-12);
-    }
-}

@@ -358,16 +358,3 @@ pub fn make_reference(
     let files = StoredReference::save(&acc, &reference_dir(), &name, &meta)?;
     Ok((meta, files))
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn normal_quantiles_match_tables() {
-        assert!(normal_quantile(0.5).abs() < 1e-9);
-        assert!((normal_quantile(0.975) - 1.959964).abs() < 1e-5);
-        assert!((normal_quantile(0.999) - 3.090232).abs() < 1e-5);
-        assert!((normal_quantile(0.001) + 3.090232).abs() < 1e-5);
-    }
-}

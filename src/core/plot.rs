@@ -203,7 +203,9 @@ fn loggable((x, y): (f64, f64)) -> bool {
 }
 
 /// Whole decades around every point (one decade when there are none).
-fn decades(pts: impl Iterator<Item = (f64, f64)>) -> (std::ops::Range<f64>, std::ops::Range<f64>) {
+pub fn decades(
+    pts: impl Iterator<Item = (f64, f64)>,
+) -> (std::ops::Range<f64>, std::ops::Range<f64>) {
     let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
     for (x, y) in pts {
         let (lx, ly) = (x.log10(), y.log10());
@@ -224,7 +226,7 @@ fn decades(pts: impl Iterator<Item = (f64, f64)>) -> (std::ops::Range<f64>, std:
 
 /// The guide through the first point of the line that starts highest,
 /// clipped to the axes: two points, or none without data.
-fn guide_segment(
+pub fn guide_segment(
     slope: f64,
     lines: &[(&Series, Vec<(f64, f64)>)],
     xs: std::ops::Range<f64>,
@@ -258,7 +260,7 @@ fn guide_segment(
 /// The label of a tick at `v` on an axis spanning `range`: every power of
 /// ten, and 2 and 5 times it when the axis spans at most two decades;
 /// other ticks get grid lines but no label, so labels never overlap.
-fn labelled_tick(v: f64, range: &std::ops::Range<f64>) -> String {
+pub fn labelled_tick(v: f64, range: &std::ops::Range<f64>) -> String {
     let decades = (range.end / range.start).log10();
     let mantissa = v / 10f64.powf(v.log10().floor());
     let near = |m: f64| (mantissa - m).abs() < 1e-3 * m;
@@ -281,108 +283,5 @@ pub fn tick(v: f64) -> String {
         } else {
             format!("{v:.0e}")
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn plot(series: Vec<Series>) -> LogLogPlot {
-        LogLogPlot {
-            title: "test".into(),
-            x_label: "run time (s)".into(),
-            y_label: "RMSE".into(),
-            series,
-            guide: Some(Guide {
-                slope: -0.5,
-                label: "slope −1/2".into(),
-            }),
-        }
-    }
-
-    fn at(px: &[u8], w: u32, x: u32, y: u32) -> (u8, u8, u8) {
-        let i = ((y * w + x) * 3) as usize;
-        (px[i], px[i + 1], px[i + 2])
-    }
-
-    #[test]
-    fn ticks_read_as_numbers() {
-        assert_eq!(tick(0.001), "0.001");
-        assert_eq!(tick(1.0), "1");
-        assert_eq!(tick(100.0), "100");
-        assert_eq!(tick(1e-5), "1e-5");
-        assert_eq!(tick(1e6), "1e6");
-    }
-
-    #[test]
-    fn only_decades_are_labelled_on_long_axes() {
-        let long = 1e-6..1.0;
-        let short = 0.01..1.0;
-        assert_eq!(labelled_tick(1e-3, &long), "0.001");
-        assert_eq!(labelled_tick(2e-3, &long), "");
-        assert_eq!(labelled_tick(0.05, &short), "0.05");
-        assert_eq!(labelled_tick(0.03, &short), "");
-    }
-
-    #[test]
-    fn decades_round_outwards() {
-        let (x, y) = decades([(2.0, 0.05), (30.0, 0.5)].into_iter());
-        assert!((x.start - 1.0).abs() < 2e-3 && x.end == 100.0);
-        assert!((y.start - 0.01).abs() < 2e-5 && (y.end - 1.0).abs() < 2e-3);
-    }
-
-    #[test]
-    fn the_guide_is_clipped_to_the_axes() {
-        let s = Series {
-            label: "a".into(),
-            points: vec![(1.0, 1.0), (100.0, 0.1)],
-            look: Look::nth(0),
-        };
-        let lines = vec![(&s, s.points.clone())];
-        let seg = guide_segment(-0.5, &lines, 1.0..100.0, 0.1..1.0).unwrap();
-        // From (1, 1) down to (100, 0.1): slope -1/2 over two decades.
-        assert!((seg[0].0 - 1.0).abs() < 1e-9 && (seg[0].1 - 1.0).abs() < 1e-9);
-        assert!((seg[1].0 - 100.0).abs() < 1e-6 && (seg[1].1 - 0.1).abs() < 1e-9);
-    }
-
-    #[test]
-    fn a_plot_draws_coloured_lines_and_text_on_white() {
-        let series = vec![
-            Series {
-                label: "uniform".into(),
-                points: vec![(0.01, 1.0), (0.1, 0.3), (1.0, 0.1)],
-                look: Look::nth(0),
-            },
-            Series {
-                label: "light".into(),
-                points: vec![(0.01, 0.1), (0.1, 0.03), (1.0, 0.01), (0.0, 5.0)],
-                look: Look {
-                    dashed: true,
-                    ..Look::nth(1)
-                },
-            },
-        ];
-        let (w, h) = (480, 320);
-        let px = plot(series).draw(w, h).unwrap();
-        assert_eq!(at(&px, w, 0, 0), (255, 255, 255));
-        let count = |c: (u8, u8, u8)| {
-            (0..h)
-                .flat_map(|y| (0..w).map(move |x| (x, y)))
-                .filter(|&(x, y)| at(&px, w, x, y) == c)
-                .count()
-        };
-        // Both series' colours show, and dark text (axis labels, ticks,
-        // legend) is drawn.
-        assert!(count(PALETTE[0]) > 100, "blue {}", count(PALETTE[0]));
-        assert!(count(PALETTE[1]) > 50, "vermillion {}", count(PALETTE[1]));
-        let dark = px.chunks(3).filter(|p| p.iter().all(|v| *v < 60)).count();
-        assert!(dark > 500, "dark pixels {dark}");
-    }
-
-    #[test]
-    fn an_empty_plot_still_draws_its_axes() {
-        let px = plot(vec![]).draw(200, 150).unwrap();
-        assert!(px.chunks(3).any(|p| p == [0, 0, 0]));
     }
 }

@@ -9,7 +9,7 @@ use raystep::core::run::run_headless;
 use raystep::core::stage::Settings;
 use raystep::scene::Scene;
 
-use super::common;
+use crate::common;
 
 const SIZES: [(u32, u32); 2] = [(256, 128), (128, 256)];
 

@@ -81,7 +81,7 @@ fn every_report_on_the_cornell_box_fits_in_100_columns_and_agrees_on_lights() {
         );
         assert!(!text.contains("the scene has none"), "ch{n}:\n{text}");
         // Every label the report prints is defined in the book's glossary.
-        let undefined = crate::glossary::undefined_labels(text);
+        let undefined = super::glossary::undefined_labels(text);
         assert!(
             undefined.is_empty(),
             "ch{n} prints labels book/src/glossary.md does not define: {undefined:?}"

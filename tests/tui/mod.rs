@@ -2,9 +2,6 @@
 
 #![cfg(feature = "tui")]
 
-#[path = "../common/mod.rs"]
-mod common;
-
 mod converge;
 mod end_to_end;
 mod graphics;

@@ -1,8 +1,5 @@
 //! The project as a whole: the book's includes, the source layout, the scene files and their errors, the film and the main binary, the grader.
 
-#[path = "../common/mod.rs"]
-mod common;
-
 mod book;
 mod figures;
 mod film_and_main;
@@ -17,3 +14,4 @@ mod non_square;
 mod reports;
 mod scene_docs;
 mod scene_errors;
+mod unit;

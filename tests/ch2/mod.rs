@@ -3,3 +3,4 @@
 mod capstone;
 mod checker;
 mod rasterization;
+mod unit;

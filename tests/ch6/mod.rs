@@ -1,11 +1,9 @@
 //! Chapter 6: global illumination, its exercises, and its terminal preview.
 
-#[path = "../common/mod.rs"]
-mod common;
-
 mod exercises;
 mod global_illumination;
 mod ladder;
 mod path_record;
 #[cfg(feature = "tui")]
 mod tui;
+mod unit;

@@ -1,7 +1,4 @@
 //! Chapter 1: projection.
 
-#[path = "../common/mod.rs"]
-mod common;
-
 mod capstone;
 mod projection;

@@ -2,3 +2,4 @@
 
 mod ray_triangle;
 mod readable_bvh;
+mod unit;

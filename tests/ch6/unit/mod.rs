@@ -1,0 +1,5 @@
+//! The tests of single library files, one file here per file in `src/`
+//! (they live outside the library so that `cargo test` compiles it once).
+
+mod reference;
+mod sampler;
