@@ -62,12 +62,15 @@ impl StudySize {
         }
     }
 
-    /// The report's table rows (so its widest numbers appear) at a cost a
-    /// debug-build test of the report's layout can afford: the naive loop
-    /// is skipped above 10^6 ray-triangle tests and few rays are shot.
+    /// Every kind of row and cell of the report's tables (a naive loop run
+    /// and one skipped, every sample count) at a cost a debug-build test of
+    /// the report's layout can afford: the naive loop is skipped above 10^6
+    /// ray-triangle tests, the largest mesh has 10^5 triangles (a 7-digit
+    /// count is narrower than its column's header) and few rays are shot.
     pub fn layout() -> StudySize {
         StudySize {
             naive_budget: 1e6,
+            triangle_counts: vec![10, 1_000, 100_000],
             leak_rays: 10_000,
             spawn_rays: 1_000,
             ..StudySize::full()
