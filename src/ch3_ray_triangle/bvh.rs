@@ -6,8 +6,9 @@
 //! *closest hit* (which surface does the ray see first) and *occlusion* (is
 //! anything in the way before `t_max`).
 //!
-//! obvhs works with glam 0.34 while raystep uses glam 0.30, so this file is
-//! the only one that names obvhs types and converts vectors at the boundary.
+//! obvhs works with 16-byte `Vec3A`s where raystep uses `Vec3`, so this file
+//! is the only one that names obvhs types and converts vectors at the
+//! boundary.
 //! Two facts about obvhs 0.4 shape the code: hit ids index the BVH's
 //! `primitive_indices`, not our triangle list (we store the triangles in BVH
 //! order and keep the map back), and we compute barycentrics ourselves.
@@ -15,7 +16,7 @@
 use std::time::{Duration, Instant};
 
 use glam::Vec3;
-use glam34::Vec3A;
+use glam::Vec3A;
 use obvhs::aabb::Aabb;
 use obvhs::bvh2::builder::build_bvh2_from_tris;
 use obvhs::bvh2::Bvh2;
@@ -78,10 +79,6 @@ pub fn occluded_naive(tris: &[[Vec3; 3]], ray: &Ray, t_max: f32, x: Intersector)
         .any(|tri| x.intersect(ray, *tri, 0.0, t_max).is_some())
 }
 
-fn v34(v: Vec3) -> Vec3A {
-    Vec3A::new(v.x, v.y, v.z)
-}
-
 /// How much each triangle's box grows, relative to its coordinates (2⁻²⁰).
 pub const BOX_PADDING: f32 = 1.0 / 1_048_576.0;
 
@@ -92,7 +89,7 @@ pub(crate) fn padded_boxes(tris: &[[Vec3; 3]]) -> Vec<Aabb> {
             let lo = tri[0].min(tri[1]).min(tri[2]);
             let hi = tri[0].max(tri[1]).max(tri[2]);
             let pad = lo.abs().max(hi.abs()) * BOX_PADDING + f32::MIN_POSITIVE;
-            Aabb::new(v34(lo - pad), v34(hi + pad))
+            Aabb::new(Vec3A::from(lo - pad), Vec3A::from(hi + pad))
         })
         .collect()
 }
@@ -152,7 +149,7 @@ impl Bvh {
     }
 
     fn oray(ray: &Ray, t_max: f32) -> ORay {
-        ORay::new(v34(ray.origin), v34(ray.dir), 0.0, t_max)
+        ORay::new(Vec3A::from(ray.origin), Vec3A::from(ray.dir), 0.0, t_max)
     }
 
     /// The closest hit in (0, t_max); `Hit::triangle` indexes the list the
@@ -259,9 +256,9 @@ impl ObvhsAlone {
         let tris: Vec<OTriangle> = tris
             .iter()
             .map(|[a, b, c]| OTriangle {
-                v0: v34(*a),
-                v1: v34(*b),
-                v2: v34(*c),
+                v0: Vec3A::from(*a),
+                v1: Vec3A::from(*b),
+                v2: Vec3A::from(*c),
             })
             .collect();
         let bvh = build_bvh2_from_tris(
@@ -276,7 +273,7 @@ impl ObvhsAlone {
     pub fn closest_t(&self, ray: &Ray) -> f32 {
         let mut hit = RayHit::none();
         self.bvh.ray_traverse(
-            ORay::new_inf(v34(ray.origin), v34(ray.dir)),
+            ORay::new_inf(Vec3A::from(ray.origin), Vec3A::from(ray.dir)),
             &mut hit,
             |r, id| self.tris[self.bvh.primitive_indices[id] as usize].intersect(r),
         );

@@ -22,7 +22,7 @@
 
 use std::time::Duration;
 
-use glam34::Vec3A;
+use glam::Vec3A;
 use obvhs::aabb::Aabb;
 use obvhs::bvh2::builder::build_bvh2;
 use obvhs::bvh2::node::Bvh2Node;
@@ -129,7 +129,7 @@ fn clusters(boxes: &[Aabb], total: &Aabb, scale: f32) -> Vec<Vec<u32>> {
     }
     // Tiny cells.
     let lo = total.min.as_dvec3();
-    let size = (total.max.as_dvec3() - lo).max(glam34::DVec3::splat(f64::MIN_POSITIVE));
+    let size = (total.max.as_dvec3() - lo).max(glam::DVec3::splat(f64::MIN_POSITIVE));
     let cell = |p: Vec3A| -> [u64; 3] {
         let q = (p.as_dvec3() - lo) / size * CELLS_PER_AXIS;
         q.to_array().map(|c| c.clamp(0.0, CELLS_PER_AXIS) as u64)
