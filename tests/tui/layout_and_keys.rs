@@ -684,7 +684,7 @@ fn the_worker_discards_stale_passes() {
 
 /// The book's capture of the UI: chapter 1 on the built-in Cornell box, in
 /// plain (NO_COLOR) style so the text shows the picture. Regenerate with
-/// `RAYSTEP_UPDATE_FIGURES=1 cargo test --test tui`.
+/// `RAYSTEP_UPDATE_FIGURES=1 cargo test tui::`.
 #[test]
 fn book_capture_is_current() {
     let root = common::root();
@@ -708,7 +708,7 @@ fn book_capture_is_current() {
         assert_eq!(
             stored,
             capture,
-            "{} is stale: RAYSTEP_UPDATE_FIGURES=1 cargo test --test tui",
+            "{} is stale: RAYSTEP_UPDATE_FIGURES=1 cargo test tui::",
             path.display()
         );
     }
