@@ -91,7 +91,8 @@ impl Estimator {
         }
     }
 
-    fn samples_lights(self) -> bool {
+    /// Whether every vertex samples a light (next-event estimation).
+    pub fn samples_lights(self) -> bool {
         matches!(self, Estimator::LightSampling | Estimator::Mis)
     }
 }
@@ -218,13 +219,14 @@ pub fn trace_path(
                     ),
                     _ => 1.0,
                 };
-                add(layers, slot_of(scatterings), beta * le * w, stats);
+                let c = beta * le * w;
+                add(layers, slot_of(scatterings), c, stats);
                 layers.note(PathEvent::Escaped {
                     dir: ray.dir,
                     emission: Emission {
                         le,
                         weight: w,
-                        contribution: beta * le * w,
+                        contribution: c,
                     },
                 });
             }
@@ -244,11 +246,12 @@ pub fn trace_path(
                 ),
                 _ => 1.0,
             };
-            add(layers, slot_of(scatterings), beta * le * w, stats);
+            let c = beta * le * w;
+            add(layers, slot_of(scatterings), c, stats);
             layers.note(PathEvent::Emission(Emission {
                 le,
                 weight: w,
-                contribution: beta * le * w,
+                contribution: c,
             }));
         }
 

@@ -43,14 +43,6 @@ pub struct Vertex {
     pub roulette: Option<(f32, bool)>,
 }
 
-impl Vertex {
-    /// What this vertex added to the pixel.
-    pub fn contribution(&self) -> Vec3 {
-        let e = self.emission.map_or(Vec3::ZERO, |e| e.contribution);
-        e + self.light.map_or(Vec3::ZERO, |l| l.contribution)
-    }
-}
-
 /// Why the path ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PathEnd {

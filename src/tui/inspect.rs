@@ -153,7 +153,7 @@ pub fn draw_table(app: &App, frame: &mut Frame, area: Rect) {
     let Some(t) = &app.trace else { return };
     let title = format!(
         "path: sample {} of pixel ({}, {}) (t: next)",
-        t.sample, t.pixel.0, t.pixel.1
+        t.record.sample, t.record.pixel.0, t.record.pixel.1
     );
     let lines: Vec<Line> = t.lines.iter().map(|l| Line::from(l.as_str())).collect();
     frame.render_widget(

@@ -20,11 +20,7 @@ use crate::scene::Scene;
 /// A traced path as the panel shows it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PathTable {
-    /// The pixel.
-    pub pixel: (u32, u32),
-    /// The sample index.
-    pub sample: u32,
-    /// The record itself.
+    /// The record itself (its pixel and sample index among it).
     pub record: PathRecord,
     /// The panel's lines.
     pub lines: Vec<String>,
@@ -97,19 +93,9 @@ pub fn trace_table(
         pixel,
         sample,
     );
-    let lights = stage.path.estimator.name() == "light" || stage.path.estimator.name() == "mis";
-    let lines = table_lines(
-        scene,
-        world,
-        &record,
-        lights && !world.lights.lights.is_empty(),
-    );
-    Ok(PathTable {
-        pixel,
-        sample,
-        record,
-        lines,
-    })
+    let nee = stage.path.estimator.samples_lights() && !world.lights.lights.is_empty();
+    let lines = table_lines(scene, world, &record, nee);
+    Ok(PathTable { record, lines })
 }
 
 /// The table: a block per vertex.
@@ -150,7 +136,7 @@ pub fn table_lines(scene: &Scene, world: &World, r: &PathRecord, nee: bool) -> V
             } else {
                 out.push(format!("  NEE light {name}: in shadow → +0"));
             }
-        } else if nee && v.scatter.is_none_or(|s| !s.delta) && v.scatter.is_some() {
+        } else if nee && v.scatter.is_some_and(|s| !s.delta) {
             out.push("  NEE: no light sample reaches this side → +0".into());
         }
         if let Some(s) = v.scatter {

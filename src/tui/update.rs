@@ -172,10 +172,10 @@ pub fn update(mut app: App, msg: Msg) -> App {
         Msg::Traced(result) => {
             app.trace_requested = None;
             match result {
-                Ok(t) if Some(t.pixel) == app.inspect => {
+                Ok(t) if Some(t.record.pixel) == app.inspect => {
                     app.message = format!(
                         "traced sample {} of pixel ({}, {}) (t: the next sample)",
-                        t.sample, t.pixel.0, t.pixel.1
+                        t.record.sample, t.record.pixel.0, t.record.pixel.1
                     );
                     app.trace = Some(t);
                 }
