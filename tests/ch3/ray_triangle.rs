@@ -347,12 +347,7 @@ fn first_hits_agree_with_chapter_2_except_on_edges() {
         "interpenetrating",
         "railroad",
     ] {
-        let path =
-            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.toml"));
-        let s = raystep::scene::Scene::load(&path)
-            .unwrap()
-            .with_resolution(160, 120)
-            .unwrap();
+        let s = crate::common::shipped_scene(name, 160, 120);
         let geometry = raystep::ch3_ray_triangle::geometry::Geometry::new(&s);
         let a = raster_agreement(&s, &geometry).unwrap();
         assert_eq!(a.pixels, 160 * 120);
@@ -364,11 +359,7 @@ fn first_hits_agree_with_chapter_2_except_on_edges() {
     }
     // The check can fail: geometry shifted by about 6 pixels disagrees
     // with the rasterizer across whole faces, not only on edges.
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/cornell-box.toml");
-    let s = raystep::scene::Scene::load(&path)
-        .unwrap()
-        .with_resolution(160, 120)
-        .unwrap();
+    let s = crate::common::shipped_scene("cornell-box", 160, 120);
     let mut moved = s.clone();
     for m in &mut moved.meshes {
         m.transform(&glam::Mat4::from_translation(glam::Vec3::new(

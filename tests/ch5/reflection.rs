@@ -14,12 +14,7 @@ use raystep::core::report::{Report, Times};
 use raystep::core::stage::{Chapter, Settings};
 use raystep::scene::Scene;
 
-fn scene(name: &str, w: u32, h: u32) -> Scene {
-    Scene::load(&common::root().join(format!("scenes/{name}.toml")))
-        .unwrap()
-        .with_resolution(w, h)
-        .unwrap()
-}
+use common::shipped_scene as scene;
 
 fn render(stage: &Reflection, scene: Scene, spp: u32) -> (Film, Report) {
     let settings = Settings {

@@ -100,11 +100,7 @@ fn cornell() -> Scene {
 }
 
 fn glass() -> Scene {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/cornell-glass.toml");
-    Scene::load(std::path::Path::new(path))
-        .unwrap()
-        .with_resolution(24, 24)
-        .unwrap()
+    crate::common::shipped_scene("cornell-glass", 24, 24)
 }
 
 #[test]

@@ -24,6 +24,14 @@ pub fn write_files(dir: &Path, files: &[(&str, &str)]) {
 pub fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
+
+/// The shipped scene `scenes/<name>.toml` at `w` x `h` pixels.
+pub fn shipped_scene(name: &str, w: u32, h: u32) -> raystep::scene::Scene {
+    raystep::scene::Scene::load(&root().join(format!("scenes/{name}.toml")))
+        .unwrap()
+        .with_resolution(w, h)
+        .unwrap()
+}
 pub mod chi2;
 
 /// Every exercise of `chapter` (there must be `count`): its file exists

@@ -258,8 +258,7 @@ fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
     let ch5 = story(5);
     assert!(ch5[0].starts_with("sample 0: L = "), "{ch5:?}");
     assert!(ch5.iter().any(|l| l.starts_with("light 0 area")), "{ch5:?}");
-    let path = crate::common::root().join("scenes/sdf-shapes.toml");
-    let sdf = Arc::new(Scene::load(&path).unwrap().with_resolution(32, 24).unwrap());
+    let sdf = Arc::new(crate::common::shipped_scene("sdf-shapes", 32, 24));
     let (mut w2, mut g2) = (Default::default(), GeometryCache::default());
     let ch4 = story_lines(4, &sdf, &settings, 0, (16, 12), &mut w2, &mut g2).unwrap();
     assert!(ch4[0].starts_with("sphere tracing: "), "{ch4:?}");

@@ -4,15 +4,10 @@ use raystep::ch1_projection::camera::Camera;
 use raystep::ch4_implicit_surfaces::march::March;
 use raystep::ch4_implicit_surfaces::normal::NormalScheme;
 use raystep::ch4_implicit_surfaces::render::*;
-use raystep::scene::Scene;
 
 #[test]
 fn a_pixels_march_steps_are_the_renders_march() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sdf-shapes.toml");
-    let scene = Scene::load(std::path::Path::new(path))
-        .unwrap()
-        .with_resolution(16, 12)
-        .unwrap();
+    let scene = crate::common::shipped_scene("sdf-shapes", 16, 12);
     let camera = Camera::of(&scene);
     let m = March::default();
     let n = NormalScheme::Tetrahedron;

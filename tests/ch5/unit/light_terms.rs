@@ -45,11 +45,7 @@ fn check(scene: &Scene, strategy: Strategy) -> usize {
 
 #[test]
 fn the_lights_terms_add_up_to_the_renders_sample() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/lights-gallery.toml");
-    let gallery = Scene::load(std::path::Path::new(path))
-        .unwrap()
-        .with_resolution(20, 15)
-        .unwrap();
+    let gallery = crate::common::shipped_scene("lights-gallery", 20, 15);
     for s in Strategy::ALL {
         let split = check(&gallery, s);
         if s != Strategy::Uniform && s != Strategy::Cosine {
