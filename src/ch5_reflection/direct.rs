@@ -96,7 +96,8 @@ impl Strategy {
         }
     }
 
-    fn samples_lights(self) -> bool {
+    /// Whether the strategy samples the lights (light sampling or MIS).
+    pub fn samples_lights(self) -> bool {
         matches!(self, Strategy::Light | Strategy::Mis)
     }
 

@@ -85,7 +85,7 @@ pub fn pixel_light(
     let frame = Frame::from_normal(it.n);
     let wo_local = frame.to_local(wo);
     let n = if wo.dot(it.n) < 0.0 { -it.n } else { it.n };
-    let samples_lights = matches!(est.strategy, Strategy::Light | Strategy::Mis);
+    let samples_lights = est.strategy.samples_lights();
     let mut extended = false;
     for (i, light) in world.lights.lights.iter().enumerate() {
         let mut term = LightTerm {
@@ -149,7 +149,8 @@ pub fn pixel_light(
                     None => (None, world.emitted(&h, -wi), 0.0),
                 },
             };
-            if let (true, (i, le, pdf_light)) = (cos > 0.0 && found.1 != Vec3::ZERO, found) {
+            let (i, le, pdf_light) = found;
+            if cos > 0.0 && le != Vec3::ZERO {
                 let w = if est.strategy == Strategy::Mis {
                     power_heuristic(pdf, pdf_light)
                 } else {
