@@ -7,6 +7,7 @@ pub mod draw;
 pub mod error;
 pub mod film;
 pub mod format;
+pub mod guard;
 pub mod plot;
 pub mod preview;
 pub mod report;

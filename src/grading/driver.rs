@@ -12,7 +12,7 @@ use clap::Parser;
 
 use crate::core::format::format_count;
 use crate::grading::build::{build_exercises, root};
-use crate::grading::exercise::{Exercise, Outcome};
+use crate::grading::exercise::{Check, Exercise, Outcome};
 use crate::grading::process::{reference, run_student};
 use crate::grading::{all, hints};
 
@@ -254,7 +254,16 @@ pub fn describe(ex: &Exercise, outcome: &Outcome, width: usize, images: &[PathBu
             return s;
         }
     };
-    s += &format!("{pad}hint: {}\n", ex.hints[0]);
+    match outcome {
+        Outcome::Failed(Check {
+            symptom: Some(symptom),
+            ..
+        }) => {
+            s += &format!("{pad}symptom: {}\n", symptom.name);
+            s += &format!("{pad}hint: {}\n", symptom.hint);
+        }
+        _ => s += &format!("{pad}hint: {}\n", ex.hints[0]),
+    }
     s += &format!("{pad}more: grade --hint {}\n", ex.id());
     s
 }

@@ -14,9 +14,30 @@ pub struct Check {
     pub detail: String,
     /// For image checks: (candidate, reference).
     pub images: Option<(Film, Film)>,
+    /// What went wrong, when the check recognised it: picks the hint shown
+    /// with the failure (one of the exercise's [`Exercise::symptoms`]).
+    pub symptom: Option<Symptom>,
+}
+
+/// A failure a check recognises, and the hint it calls for: a mirrored
+/// image points at the projection's sign, a picture dark by a constant
+/// factor at a missing 1/pdf.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Symptom {
+    /// What the check saw, in a few words ("mirrored", "no pruning").
+    pub name: &'static str,
+    /// The hint for it; cites a lecture slide (`slide "…"`) or a book
+    /// section (`book "…"`) by its exact title.
+    pub hint: &'static str,
 }
 
 impl Check {
+    /// The same check, naming what went wrong.
+    pub fn with_symptom(mut self, symptom: Symptom) -> Check {
+        self.symptom = Some(symptom);
+        self
+    }
+
     /// Passes when the error is within tolerance (a NaN error never passes).
     pub fn passed(&self) -> bool {
         self.error <= self.tolerance
@@ -65,6 +86,9 @@ pub struct Exercise {
     /// Hints in tiers: a nudge (which slide, which idea) shown with a
     /// failure, the idea worked out (`grade --hint`), the formula last.
     pub hints: [&'static str; 3],
+    /// The failures its check recognises, each with its own hint (shown
+    /// instead of the first tier when the check names it).
+    pub symptoms: &'static [Symptom],
     /// Runs the check on raystep's reference code (the student's code is
     /// checked by the same function, from the exercises crate).
     pub reference: fn() -> Check,

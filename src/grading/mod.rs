@@ -27,7 +27,7 @@ pub mod process;
 pub mod runner;
 
 pub use driver::grade_main;
-pub use exercise::{Check, Exercise, Outcome};
+pub use exercise::{Check, Exercise, Outcome, Symptom};
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
@@ -57,6 +57,11 @@ pub fn run_check(check: fn() -> Check) -> Outcome {
     std::panic::set_hook(Box::new(|_| {}));
     let result = catch_unwind(AssertUnwindSafe(check));
     std::panic::set_hook(previous);
+    // Calling raystep's own solution fails, even when the panic that
+    // refused it was caught.
+    if let Some(id) = crate::core::guard::reference_called() {
+        return Outcome::Panicked(crate::core::guard::message(id));
+    }
     match result {
         Ok(check) if check.passed() => Outcome::Passed(check),
         Ok(check) => Outcome::Failed(check),

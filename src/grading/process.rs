@@ -108,7 +108,7 @@ pub fn run_student(
             stdout,
             stderr,
         }) => match parse_verdict(&stdout) {
-            Some(v) => (v.outcome(), v.images),
+            Some(v) => (v.outcome(ex), v.images),
             None => (
                 Outcome::Panicked(crash_message(&status, &stderr)),
                 Vec::new(),

@@ -33,17 +33,22 @@ pub struct Verdict {
     pub detail: String,
     /// Images written for a failed image check.
     pub images: Vec<PathBuf>,
+    /// The symptom the check named (one of the exercise's), or empty.
+    #[serde(default)]
+    pub symptom: String,
 }
 
 impl Verdict {
     /// The outcome this verdict stands for, with its images' paths (the
     /// images themselves stay on disk).
-    pub fn outcome(&self) -> Outcome {
+    pub fn outcome(&self, ex: &Exercise) -> Outcome {
+        let symptom = ex.symptoms.iter().find(|s| s.name == self.symptom).copied();
         let check = || Check {
             error: self.error,
             tolerance: self.tolerance,
             detail: self.detail.clone(),
             images: None,
+            symptom,
         };
         match self.outcome.as_str() {
             "passed" => Outcome::Passed(check()),
@@ -72,7 +77,7 @@ pub fn verdict(registry: &Registry, ex: &Exercise, out: &Path) -> Verdict {
             error: c.error,
             tolerance: c.tolerance,
             detail: c.detail,
-            images: Vec::new(),
+            ..Verdict::default()
         },
         Outcome::Failed(c) => {
             let (images, note) = match write_failure_images(ex, &c, out) {
@@ -83,6 +88,7 @@ pub fn verdict(registry: &Registry, ex: &Exercise, out: &Path) -> Verdict {
                 outcome: "failed".into(),
                 error: c.error,
                 tolerance: c.tolerance,
+                symptom: c.symptom.map(|s| s.name.to_string()).unwrap_or_default(),
                 detail: c.detail + &note,
                 images,
             }
@@ -190,6 +196,7 @@ fn render_check(ex: &Exercise, check: fn() -> Check, out: &Path) -> (ExitCode, V
                 outcome: if passed { "passed" } else { "failed" }.into(),
                 error: c.error,
                 tolerance: c.tolerance,
+                symptom: c.symptom.map(|s| s.name.to_string()).unwrap_or_default(),
                 detail: c.detail,
                 images: files,
             };

@@ -131,6 +131,7 @@ fn a_panicking_solution_is_reported_not_fatal() {
             "the second tier of the hint, about the idea",
             "the third tier of the hint, the formula",
         ],
+        symptoms: &[],
         reference: || ch1::check_project_point(|_| panic!("index out of bounds")),
     };
     match grading::run(&ex) {

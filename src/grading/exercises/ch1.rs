@@ -24,6 +24,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "the ray is t·p; it meets z = -1 where t·z = -1. Points with z >= 0 are beside or behind the pinhole: no image.",
                 "the ray from the origin through p meets z = -1 at p / (-z); return None when z >= 0",
             ],
+            symptoms: &[],
             reference: || check_project_point(project_pinhole),
         },
         Exercise {
@@ -36,6 +37,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "back = normalize(eye - target), right = normalize(up x back), up' = back x right; \
                    world_from_camera has columns right, up', back, eye: invert it",
             ],
+            symptoms: &[],
             reference: || check_look_at(|e, t, u| camera_from_world_look_at(e, t, u).unwrap_or(Mat4::NAN)),
         },
         Exercise {
@@ -47,6 +49,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "the near plane is z = -near in camera space. Where an edge crosses it, the point a + s (b - a) with s = (a.z + near) / (a.z - b.z) lies on it. Project what is left with u = x / -z, then to raster coordinates.",
                 "a, b = camera.to_camera(..); da = a.z + near, db = b.z + near; both > 0: None; one > 0: move it to a.lerp(b, da / (da - db)) with z = -near; raster = camera.raster_from_image_plane(Vec2::new(x / -z, y / -z)) for both ends",
             ],
+            symptoms: &[],
             reference: || check_draw_edges(reference_edge),
         },
     ]
@@ -197,6 +200,7 @@ pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
         tolerance: 1e-5,
         detail: worst.1,
         images: None,
+        symptom: None,
     }
 }
 
@@ -260,5 +264,6 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
         tolerance: 1e-4,
         detail: worst.1,
         images: Some((cand_films[0].clone(), ref_films[0].clone())),
+        symptom: None,
     }
 }

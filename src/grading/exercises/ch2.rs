@@ -21,6 +21,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "take the edge vector b - a and the vector p - a; their 2D cross product is dx·ey - dy·ex.",
                 "E_ab(p) = (b.x - a.x)·(p.y - a.y) - (b.y - a.y)·(p.x - a.x); positive when p is left of a→b (y up)",
             ],
+            symptoms: &[],
             reference: || check_edge_function(edge::edge_function),
         },
         Exercise {
@@ -32,6 +33,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "the edge function is twice a signed area: divide edge functions of the sub-triangles by the one of the whole triangle (signs cancel for clockwise order).",
                 "φi = E(pj, pk, p) / E(pi, pj, pk), and so on around the triangle; None when E(pi, pj, pk) = 0",
             ],
+            symptoms: &[],
             reference: || check_barycentric(edge::barycentric),
         },
         Exercise {
@@ -43,6 +45,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "compare strictly: a tie must keep what was drawn first, and any comparison with NaN is false, which is what you want.",
                 "pass only if z < depth[index] (strictly: ties keep the first; NaN compares false), then store z",
             ],
+            symptoms: &[],
             reference: || check_depth_test(depth::depth_test),
         },
         Exercise {
@@ -54,6 +57,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "orient the triangle so the edge functions are positive inside (swap two vertices if its area is negative). A sample with an edge function of exactly 0 counts only for a top or left edge. The three edge functions over the area are the barycentrics: they interpolate z and the colours.",
                 "for the edge a→b, top-left is (b.y < a.y) || (b.y == a.y && b.x > a.x); inside when every w > 0, or w == 0 on a top-left edge. φ = (E(b,c,p), E(c,a,p), E(a,b,p)) / E(a,b,c); z = φ·(za, zb, zc); write if z < depth[i]",
             ],
+            symptoms: &[],
             reference: || check_rasterize_triangle(reference_rasterize),
         },
     ]
@@ -252,6 +256,7 @@ fn worst_of(cases: impl Iterator<Item = (f64, String)>, tolerance: f64, ok: &str
         tolerance,
         detail: worst.1,
         images: None,
+        symptom: None,
     }
 }
 

@@ -29,6 +29,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "the equation is linear in t; it has no solution when the ray runs parallel to the plane (Nᵀd = 0).",
                 "Nᵀ(o + t d) = c gives t = (c - Nᵀo) / (Nᵀd); None when Nᵀd = 0",
             ],
+            symptoms: &[],
             reference: || check_ray_plane(triangle::ray_plane),
         },
         Exercise {
@@ -41,6 +42,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "u = Nᵀ(q x e2) / |N|², v = Nᵀ(e1 x q) / |N|² with N = e1 x e2; \
                    inside when u ≥ 0, v ≥ 0 and u + v ≤ 1",
             ],
+            symptoms: &[],
             reference: || check_barycentric_inside(triangle::barycentric_inside),
         },
         Exercise {
@@ -53,6 +55,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "det = e1 · (d x e2); u = s · (d x e2) / det; with q = s x e1: \
                    v = d · q / det, t = e2 · q / det",
             ],
+            symptoms: &[],
             reference: || check_moller_trumbore(reference_moller_trumbore),
         },
         Exercise {
@@ -66,6 +69,7 @@ pub fn exercises() -> Vec<Exercise> {
                    triangles against the best t and shrinks it; an inner node pushes \
                    the children the ray enters, the farther first",
             ],
+            symptoms: &[],
             reference: || check_bvh_traversal(readable_bvh::closest_hit),
         },
     ]
@@ -101,6 +105,7 @@ fn check(cases: impl Iterator<Item = (f64, String)>, tolerance: f64) -> Check {
         tolerance,
         detail: worst.1,
         images: None,
+        symptom: None,
     }
 }
 
@@ -421,5 +426,6 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
             format!("{wrong} of {rays_checked} rays differ; first: {first_wrong}")
         },
         images,
+        symptom: None,
     }
 }

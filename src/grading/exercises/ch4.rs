@@ -32,6 +32,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "the distance to the centre tells you almost everything; the surface is where it equals the radius.",
                 "the distance to the centre, |p - center|, minus the radius",
             ],
+            symptoms: &[],
             reference: || check_sphere_sdf(|p, c, r| sd_sphere(p - c, r)),
         },
         Exercise {
@@ -43,6 +44,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "count your steps: stop with a hit when the distance is below epsilon, and give up when the budget of steps or the maximum distance is used up.",
                 "loop: d = sdf(o + t d); if d < ε return Some(t); t += d; if t > max_distance return None",
             ],
+            symptoms: &[],
             reference: || check_sphere_trace(reference_trace),
         },
         Exercise {
@@ -54,6 +56,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "central differences: sample f a little ahead and a little behind along each axis, divide the difference by 2h, and normalise the vector.",
                 "(f(p + h e_i) - f(p - h e_i)) / 2h per axis i, then normalize",
             ],
+            symptoms: &[],
             reference: || check_gradient_normal(|f, p, h| gradient_central(f, p, h).normalize()),
         },
         Exercise {
@@ -65,6 +68,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "stop with a hit when |f(p)| < march.epsilon_at(p); give up when t > march.max_distance or after march.max_steps evaluations. The normal: central differences with h = max(ε, 1e-4), normalised (fall back to -dir), turned to face the viewer.",
                 "t = 0; f0 = sdf(o); repeat at most max_steps times: p = o + t d, if |f| < eps_at(p) hit; if t > max_distance miss; t += f; f = sdf(o + t d). n = normalize(f(p+h x̂)-f(p-h x̂), …); if n·d > 0 { n = -n }",
             ],
+            symptoms: &[],
             reference: || check_trace_scene(reference_trace_ray),
         },
     ]
@@ -220,6 +224,7 @@ pub fn check_sphere_sdf(f: SdfFn) -> Check {
         tolerance: 1e-5,
         detail,
         images: None,
+        symptom: None,
     }
 }
 
@@ -282,6 +287,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         tolerance: 1e-5,
         detail,
         images: None,
+        symptom: None,
     }
 }
 
@@ -316,5 +322,6 @@ pub fn check_gradient_normal(f: NormalFn) -> Check {
         tolerance: 1e-3,
         detail,
         images: None,
+        symptom: None,
     }
 }

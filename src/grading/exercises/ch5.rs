@@ -29,6 +29,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "∫ f cos θ dω over the hemisphere must equal the albedo ρ; ∫ cos θ dω = π. Directions on opposite sides of the surface reflect nothing.",
                 "same side when wo.z * wi.z > 0; then rho / PI, else Vec3::ZERO",
             ],
+            symptoms: &[],
             reference: || check_lambert_brdf(|rho, wo, wi| Lambertian { rho }.f(wo, wi)),
         },
         Exercise {
@@ -40,6 +41,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "a uniform disk needs r = sqrt(u) (area grows with r²); lift with z = sqrt(1 - r²). The density of the direction is proportional to cos θ.",
                 "r = sqrt(u.x), phi = 2π u.y, (x, y) = r (cos phi, sin phi), z = sqrt(1 - r²), pdf = z / π",
             ],
+            symptoms: &[],
             reference: || check_cosine_hemisphere(|u| {
                         let w = warp_cosine(u);
                         (w, cosine_hemisphere_pdf(w.z))
@@ -54,6 +56,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "the inverse-square law divides by r², Lambert's law multiplies by cos θ (clamped at zero: light behind the surface does nothing).",
                 "to = light - p; r² = to.length_squared(); cos = max(0, n · to/|to|); I cos / r²",
             ],
+            symptoms: &[],
             reference: || check_point_light(|i, light, p, n| {
                         let to = light - p;
                         i * crate::ch5_reflection::radiometry::point_irradiance(
@@ -72,6 +75,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "a density per area becomes a density per solid angle by the Jacobian dA/dω = d² / |cos θ_light|; edge-on (cos = 0) the light covers no solid angle.",
                 "d² = (y - x).length_squared(); cos = |n_light · (x - y)/d|; 0 if cos == 0, else pdf_area d² / cos",
             ],
+            symptoms: &[],
             reference: || check_area_pdf(|pdf, x, y, n| {
                         let to = y - x;
                         solid_angle_pdf(pdf, to.length(), n.dot(to.normalize()))
@@ -86,6 +90,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "turn pdf_A into pdf_ω with dω = dA cos θl / d²: the estimate becomes f · Le · cos θ · cos θl / d² · A. Both cosines must be positive (the light faces p, p faces the light) and the segment p→y unblocked.",
                 "wi = (y - p) / d; cos = n·wi; cos_l = n_light·(-wi); if cos <= 0 || cos_l <= 0 || !visible(p, y) { 0 } else { rho / π · le · cos · cos_l / d² · area }",
             ],
+            symptoms: &[],
             reference: || check_direct_light(reference_direct),
         },
     ]
@@ -228,6 +233,7 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
         tolerance: 1e-5,
         detail,
         images: None,
+        symptom: None,
     }
 }
 
@@ -248,6 +254,7 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
                 tolerance: 5.0,
                 detail: format!("u = {u}: {w} is not a unit direction with z ≥ 0"),
                 images: None,
+                symptom: None,
             };
         }
         let want = w.z.max(0.0) * FRAC_1_PI;
@@ -257,6 +264,7 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
                 tolerance: 5.0,
                 detail: format!("u = {u}: direction {w} has pdf {pdf}, expected z/π = {want}"),
                 images: None,
+                symptom: None,
             };
         }
         sx += w.x as f64;
@@ -285,6 +293,7 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
         tolerance: 5.0,
         detail,
         images: None,
+        symptom: None,
     }
 }
 
@@ -328,6 +337,7 @@ pub fn check_point_light(f: PointFn) -> Check {
         tolerance: 1e-4,
         detail,
         images: None,
+        symptom: None,
     }
 }
 
@@ -366,5 +376,6 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
         tolerance: 1e-4,
         detail,
         images: None,
+        symptom: None,
     }
 }

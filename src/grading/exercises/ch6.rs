@@ -24,6 +24,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "map u to x = a + u(b - a); a uniform x on [a, b] has the constant density 1/(b - a).",
                 "x = a + u (b - a) has density 1/(b - a): the estimate is (b - a) · mean of f(x)",
             ],
+            symptoms: &[],
             reference: || check_mc_integral(reference_integral),
         },
         Exercise {
@@ -35,6 +36,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "a survivor must carry more to make up for the paths that die: E = q · (what it carries) + (1 - q) · 0.",
                 "survive when u < q and return value / q; otherwise return 0",
             ],
+            symptoms: &[],
             reference: || check_russian_roulette(|v, q, u| if u < q { v / q } else { 0.0 }),
         },
         Exercise {
@@ -46,6 +48,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "the power heuristic squares each density; mind 0/0 when both are 0 and overflow for huge densities (divide through by pdf_f).",
                 "f² / (f² + g²); write it as 1 / (1 + (g/f)²) so huge pdfs do not overflow, and 0 when f = 0",
             ],
+            symptoms: &[],
             reference: || check_mis_weight(reference_weight),
         },
         Exercise {
@@ -57,6 +60,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "with next-event estimation, emission is counted only where the camera sees it directly: a bounce that happens to hit the light was already counted by the light sample. The throughput β is multiplied by f cos θ / pdf at each bounce; roulette survives with probability q and divides β by q.",
                 "L = hit.emitted; β = 1; loop { if let Some(ls) = sample_light: if cos > 0 && unoccluded { L += β (ρ/π) ls.le cos / ls.pdf }; (wi, pdf) = sample_cosine; β *= (ρ/π) cos / pdf; after 2 bounces q = min(max(β), 0.95): if rng() >= q break, β /= q; hit = next_hit(wi) else break }",
             ],
+            symptoms: &[],
             reference: || super::paths::check_path_radiance(super::paths::reference_path),
         },
     ]
@@ -169,6 +173,7 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         tolerance: 1e-3,
         detail,
         images: None,
+        symptom: None,
     }
 }
 
@@ -197,6 +202,7 @@ pub fn check_russian_roulette(f: RouletteFn) -> Check {
         tolerance: 2e-3,
         detail,
         images: None,
+        symptom: None,
     }
 }
 
@@ -245,5 +251,6 @@ pub fn check_mis_weight(f: WeightFn) -> Check {
         tolerance: 1e-6,
         detail,
         images: None,
+        symptom: None,
     }
 }

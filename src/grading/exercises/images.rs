@@ -71,6 +71,7 @@ pub fn compare(
         tolerance,
         detail,
         images: Some((student, reference)),
+        symptom: None,
     }
 }
 
@@ -175,5 +176,6 @@ pub fn z_test(student: Estimate, reference: Estimate, block: u32, z_max: f64, wh
         tolerance: z_max,
         detail: worst.1,
         images: Some((student.mean, reference.mean)),
+        symptom: None,
     }
 }
