@@ -55,6 +55,7 @@ impl Hit {
 /// `None` when the ray is parallel to the plane (Nᵀd = 0) or t is not finite.
 // ANCHOR: ray_plane
 pub fn ray_plane(o: Vec3, d: Vec3, n: Vec3, c: f32) -> Option<f32> {
+    crate::core::guard::reference("ch3/ray_plane"); // ANCHOR: guard (off the listing)
     let n_dot_d = n.dot(d);
     if n_dot_d == 0.0 {
         return None; // parallel: no point, or every point, of the plane

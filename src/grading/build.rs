@@ -15,6 +15,15 @@ pub fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
+/// The folder of chapter folders whose `exercises/` the grader builds:
+/// `$RAYSTEP_EXERCISES_DIR` when set (the tests point it at a fresh copy of
+/// the shipped stubs), else this repository's `chapters/`.
+pub fn exercises_dir() -> PathBuf {
+    std::env::var_os("RAYSTEP_EXERCISES_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| root().join("chapters"))
+}
+
 /// What building the exercises crate gave.
 #[derive(Debug)]
 pub struct Built {
@@ -102,7 +111,7 @@ pub fn build_exercises_in(
         if place.release {
             cmd.arg("--release");
         }
-        let (ok, stderr) = match run_limited(&mut cmd, None, cancel) {
+        let (ok, stderr) = match run_limited(&mut cmd, b"", None, cancel) {
             Ok(Ran::Exited { status, stderr, .. }) => (status.success(), stderr),
             Ok(_) => return Err("the build was cancelled".into()),
             Err(e) => return Err(format!("cannot run cargo: {e}")),

@@ -2,11 +2,13 @@
 //! `cargo build` for the exercises crate and every `grade-student`
 //! process. The caller never waits past the limit, and can cancel.
 
-use std::io::Read;
-use std::process::{Command, ExitStatus, Stdio};
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::io::{Read, Write};
+use std::process::{Child, Command, ExitStatus, Stdio};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{mpsc, Arc, Mutex};
 use std::time::{Duration, Instant};
 
+use crate::grading::sandbox::{kill_group, own_group, Limits};
 use crate::grading::PROGRESS;
 
 /// How a child process run by [`run_limited`] ended.
@@ -26,55 +28,137 @@ pub enum Ran {
         /// What it wrote to standard error before.
         stderr: String,
     },
+    /// It wrote more than [`OUTPUT_LIMIT`] bytes and was stopped.
+    TooMuchOutput,
     /// `cancel` was set, and it was stopped.
     Cancelled,
 }
 
-/// Runs `cmd` (standard input closed, both outputs captured) until it
-/// exits, stopping it after `timeout` or as soon as `cancel` is set; the
-/// caller never waits longer than that. Used for `cargo build` and for
-/// every `grade-student` process.
+/// The most a child may write to standard output and standard error
+/// together before it is stopped: 4 MiB (a check's own output is a few
+/// hundred bytes; a student's debugging prints rarely reach this).
+pub const OUTPUT_LIMIT: usize = 4 << 20;
+
+/// Both outputs of a child, read on two threads into one budget.
+struct Outputs {
+    stdout: Arc<Mutex<Vec<u8>>>,
+    stderr: Arc<Mutex<Vec<u8>>>,
+    total: Arc<AtomicUsize>,
+    done: mpsc::Receiver<()>,
+}
+
+impl Outputs {
+    fn start(child: &mut Child) -> Outputs {
+        let total = Arc::new(AtomicUsize::new(0));
+        let (tx, done) = mpsc::channel();
+        let read = |mut r: Box<dyn Read + Send>| {
+            let buf = Arc::new(Mutex::new(Vec::new()));
+            let (into, total, tx) = (Arc::clone(&buf), Arc::clone(&total), tx.clone());
+            std::thread::spawn(move || {
+                let mut chunk = [0u8; 8192];
+                while let Ok(n) = r.read(&mut chunk) {
+                    if n == 0 {
+                        break;
+                    }
+                    // Past the limit, keep draining (so the writer is not
+                    // blocked before it is stopped) but store nothing.
+                    if total.fetch_add(n, Ordering::Relaxed) + n <= OUTPUT_LIMIT {
+                        lock(&into).extend_from_slice(&chunk[..n]);
+                    }
+                }
+                let _ = tx.send(());
+            });
+            buf
+        };
+        let stdout = read(Box::new(child.stdout.take().expect("piped")));
+        let stderr = read(Box::new(child.stderr.take().expect("piped")));
+        Outputs {
+            stdout,
+            stderr,
+            total,
+            done,
+        }
+    }
+
+    fn too_much(&self) -> bool {
+        self.total.load(Ordering::Relaxed) > OUTPUT_LIMIT
+    }
+
+    /// What was read so far, after waiting up to `wait` for both pipes to
+    /// close (a grandchild that left the process group may hold them open
+    /// for ever: we do not wait for it).
+    fn collect(&self, wait: Duration) -> (String, String) {
+        let until = Instant::now() + wait;
+        for _ in 0..2 {
+            let left = until.saturating_duration_since(Instant::now());
+            if self.done.recv_timeout(left).is_err() {
+                break;
+            }
+        }
+        let text = |b: &Arc<Mutex<Vec<u8>>>| String::from_utf8_lossy(&lock(b)).into_owned();
+        (text(&self.stdout), text(&self.stderr))
+    }
+}
+
+fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Runs `cmd` in a process group of its own, with `input` on its standard
+/// input (then closed) and both outputs captured, until it exits; stops
+/// the whole group after `timeout`, as soon as `cancel` is set, or when it
+/// writes more than [`OUTPUT_LIMIT`]. The caller never waits longer than
+/// that, nor for pipes that something the child started keeps open. Used
+/// for `cargo build` and for every `grade-student` process.
 pub fn run_limited(
     cmd: &mut Command,
+    input: &[u8],
     timeout: Option<Duration>,
     cancel: Option<&AtomicBool>,
 ) -> std::io::Result<Ran> {
+    own_group(cmd);
     let mut child = cmd
-        .stdin(Stdio::null())
+        .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()?;
-    let read = |mut r: Box<dyn Read + Send>| {
-        std::thread::spawn(move || {
-            let mut buf = Vec::new();
-            let _ = r.read_to_end(&mut buf);
-            String::from_utf8_lossy(&buf).into_owned()
-        })
-    };
-    let stdout = read(Box::new(child.stdout.take().expect("piped")));
-    let stderr = read(Box::new(child.stderr.take().expect("piped")));
+    if let Some(mut stdin) = child.stdin.take() {
+        // A child that exits without reading its input is not an error.
+        let _ = stdin.write_all(input);
+    }
+    let outputs = Outputs::start(&mut child);
     let start = Instant::now();
+    let stop = |child: &mut Child| {
+        kill_group(child.id());
+        let _ = child.kill();
+        let _ = child.wait();
+    };
     loop {
         if let Some(status) = child.try_wait()? {
+            // Whatever the child started and left in its group goes too.
+            kill_group(child.id());
+            let (stdout, stderr) = outputs.collect(Duration::from_millis(500));
+            if outputs.too_much() {
+                return Ok(Ran::TooMuchOutput);
+            }
             return Ok(Ran::Exited {
                 status,
-                stdout: stdout.join().unwrap_or_default(),
-                stderr: stderr.join().unwrap_or_default(),
+                stdout,
+                stderr,
             });
         }
         if cancel.is_some_and(|c| c.load(Ordering::Relaxed)) {
-            let _ = child.kill();
-            let _ = child.wait();
-            // The readers are left to finish by themselves: a grandchild
-            // (cargo's rustc) may hold the pipes open a while longer.
+            stop(&mut child);
             return Ok(Ran::Cancelled);
         }
+        if outputs.too_much() {
+            stop(&mut child);
+            return Ok(Ran::TooMuchOutput);
+        }
         if timeout.is_some_and(|t| start.elapsed() >= t) {
-            let _ = child.kill();
-            let _ = child.wait();
-            return Ok(Ran::TimedOut {
-                stderr: stderr.join().unwrap_or_default(),
-            });
+            stop(&mut child);
+            let (_, stderr) = outputs.collect(Duration::from_millis(200));
+            return Ok(Ran::TimedOut { stderr });
         }
         std::thread::sleep(Duration::from_millis(5));
     }
@@ -94,13 +178,27 @@ pub fn last_progress(stderr: &str) -> String {
 /// status, what it was doing, and the last lines of its standard error.
 pub fn crash_message(status: &ExitStatus, stderr: &str) -> String {
     let doing = last_progress(stderr);
+    // A backtrace (RUST_BACKTRACE) is the grader's, not the student's story.
     let tail: Vec<&str> = stderr
         .lines()
-        .filter(|l| !l.starts_with(PROGRESS))
+        .take_while(|l| !l.starts_with("stack backtrace:"))
+        .filter(|l| !l.starts_with(PROGRESS) && !l.starts_with("note: "))
         .collect();
     let tail = tail[tail.len().saturating_sub(3)..].join(" / ");
+    let what = if stderr.contains("memory allocation of") {
+        format!(
+            "ran out of memory and was stopped (a check may use {} GiB)",
+            Limits::for_timeout(1.0).memory >> 30
+        )
+    } else if status.success() {
+        "the check's process exited before the check gave its verdict (does your code \
+         call process::exit?)"
+            .to_string()
+    } else {
+        format!("the check's process crashed ({status})")
+    };
     format!(
-        "the check's process crashed ({status}){}{}",
+        "{what}{}{}",
         if doing.is_empty() {
             String::new()
         } else {

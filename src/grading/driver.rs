@@ -10,11 +10,15 @@ use std::time::Duration;
 
 use clap::Parser;
 
+use crate::core::film::write_atomically;
 use crate::core::format::format_count;
-use crate::grading::build::{build_exercises, root};
+use crate::core::text::escape_keep_newlines;
+use crate::grading::build::{build_exercises, exercises_dir};
 use crate::grading::exercise::{Check, Exercise, Outcome};
 use crate::grading::process::{reference, run_student};
+use crate::grading::sandbox::{become_subreaper, kill_orphans};
 use crate::grading::{all, hints};
+use crate::grading::{remove_failure_images, shipped};
 
 /// Grade your solutions to the exercises against raystep's reference.
 #[derive(Parser, Debug)]
@@ -30,9 +34,14 @@ struct GradeCli {
     /// again for the next tier. Grades nothing.
     #[arg(long, value_name = "EXERCISE")]
     hint: Option<String>,
-    /// Also write Gradescope's results.json (to FILE, or `results.json`).
-    #[arg(long, value_name = "FILE", num_args = 0..=1, default_missing_value = "results.json")]
-    json: Option<PathBuf>,
+    /// Also write Gradescope's results.json (to FILE, or `results.json` in
+    /// the output folder).
+    #[arg(long, value_name = "FILE", num_args = 0..=1)]
+    json: Option<Option<PathBuf>>,
+    /// Put one exercise's file back as shipped (`ch3/bvh_traversal`); your
+    /// version is kept beside it as `<name>.rs.orig`. Grades nothing.
+    #[arg(long, value_name = "EXERCISE")]
+    restore: Option<String>,
     /// The time limit of one exercise, in seconds.
     #[arg(long, value_name = "SECONDS", default_value_t = 5.0)]
     timeout: f64,
@@ -69,6 +78,9 @@ pub fn grade_main() -> ExitCode {
             }
         };
     }
+    if let Some(id) = &cli.restore {
+        return restore(id, &cli.exercises.clone().unwrap_or_else(exercises_dir));
+    }
     let exercises = match select(&catalog, &cli.chapters) {
         Ok(e) => e,
         Err(e) => {
@@ -101,10 +113,7 @@ pub fn grade_main() -> ExitCode {
             &mut stdout,
             "building your exercises (the raystep-exercises crate)...\n",
         );
-        let dir = cli
-            .exercises
-            .clone()
-            .unwrap_or_else(|| root().join("chapters"));
+        let dir = cli.exercises.clone().unwrap_or_else(exercises_dir);
         let built = match build_exercises(&dir) {
             Ok(b) => b,
             Err(e) => {
@@ -119,17 +128,30 @@ pub fn grade_main() -> ExitCode {
                 format_count(exercises.len(), "exercise")
             ),
         );
-        let timeout = Duration::from_secs_f64(cli.timeout.max(0.1));
+        let timeout = Duration::from_secs_f64(cli.timeout.clamp(0.1, 3600.0));
+        // What a student's code starts and detaches comes back to us when
+        // its parent dies, and is stopped after each exercise.
+        become_subreaper();
         grade_stream(
             &exercises,
-            &mut |ex| match built.broken.get(&ex.id()) {
-                Some(message) => (Outcome::DoesNotCompile(message.clone()), Vec::new()),
-                None => run_student(&built.runner, ex, &cli.out, timeout),
+            &mut |ex| {
+                let graded = match built.broken.get(&ex.id()) {
+                    Some(message) => (Outcome::DoesNotCompile(message.clone()), Vec::new()),
+                    None => run_student(&built.runner, ex, &cli.out, timeout),
+                };
+                kill_orphans();
+                graded
             },
             &mut stdout,
             live,
         )
     };
+    // An old failure's images must not be shown as the newest.
+    for (ex, outcome, _) in &results {
+        if !matches!(outcome, Outcome::Failed(_)) {
+            remove_failure_images(ex, &cli.out);
+        }
+    }
     let passed = results.iter().filter(|r| r.1.is_pass()).count();
     let mut end = format!("{passed} of {} passed\n", results.len());
     if results.iter().any(|r| r.2.contains("images: ")) {
@@ -138,7 +160,8 @@ pub fn grade_main() -> ExitCode {
     }
     say(&mut stdout, &end);
     if let Some(path) = &cli.json {
-        if let Err(e) = std::fs::write(path, results_json(&results)) {
+        let path = path.clone().unwrap_or_else(|| cli.out.join("results.json"));
+        if let Err(e) = write_results(&path, &results_json(&results)) {
             eprintln!("error: cannot write {}: {e}", path.display());
             return ExitCode::from(2);
         }
@@ -147,6 +170,59 @@ pub fn grade_main() -> ExitCode {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
+    }
+}
+
+/// Writes `text` to `path` through a temporary file renamed into place,
+/// refusing a `path` that exists and is not a regular file (a FIFO would
+/// block the write for ever, a link could point anywhere).
+pub fn write_results(path: &std::path::Path, text: &str) -> Result<(), String> {
+    if let Ok(meta) = std::fs::symlink_metadata(path) {
+        if !meta.file_type().is_file() {
+            return Err("it exists and is not a regular file".into());
+        }
+    }
+    write_atomically(path, |tmp| {
+        std::fs::write(tmp, text).map_err(|e| e.to_string())
+    })
+    .map_err(|e| e.to_string())
+}
+
+/// `grade --restore chN/name`: the shipped file back in place, the
+/// student's kept as `<name>.rs.orig`.
+fn restore(id: &str, chapters: &std::path::Path) -> ExitCode {
+    let Some(stub) = shipped::find(id) else {
+        eprintln!("error: no exercise `{id}`; expected e.g. `ch3/moller_trumbore`");
+        return ExitCode::from(2);
+    };
+    let path = stub.path_in(chapters);
+    let result = (|| -> std::io::Result<String> {
+        match std::fs::read_to_string(&path) {
+            Ok(mine) if mine == stub.text => Ok("is already as shipped".into()),
+            Ok(mine) => {
+                let kept = path.with_extension("rs.orig");
+                std::fs::write(&kept, mine)?;
+                std::fs::write(&path, stub.text)?;
+                Ok(format!(
+                    "is as shipped again; yours is in {}",
+                    kept.display()
+                ))
+            }
+            Err(_) => {
+                std::fs::write(&path, stub.text)?;
+                Ok("is as shipped again".into())
+            }
+        }
+    })();
+    match result {
+        Ok(what) => {
+            println!("{} {what}", path.display());
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: cannot restore {}: {e}", path.display());
+            ExitCode::from(2)
+        }
     }
 }
 
@@ -227,8 +303,10 @@ pub fn describe(ex: &Exercise, outcome: &Outcome, width: usize, images: &[PathBu
         }
         Outcome::Failed(c) => {
             let mut s = format!(
-                "  {id}  FAIL  error {:.3e} exceeds {:.0e}: {}\n",
-                c.error, c.tolerance, c.detail
+                "  {id}  FAIL  error {} exceeds {:.0e}: {}\n",
+                number(c.error),
+                c.tolerance,
+                escape_keep_newlines(&c.detail)
             );
             let files: Vec<String> = images.iter().map(|f| f.display().to_string()).collect();
             if !files.is_empty() {
@@ -236,19 +314,19 @@ pub fn describe(ex: &Exercise, outcome: &Outcome, width: usize, images: &[PathBu
             }
             s
         }
-        Outcome::Panicked(m) => format!("  {id}  FAIL  panicked: {m}\n"),
+        Outcome::Panicked(m) => format!("  {id}  FAIL  panicked: {}\n", escape_keep_newlines(m)),
         Outcome::TimedOut { seconds, doing } => format!(
             "  {id}  FAIL  timed out after {seconds} s and was stopped, while {}: does a loop never end?\n",
             if doing.is_empty() {
                 format!("running your {} ({})", ex.name, ex.file)
             } else {
-                doing.clone()
+                escape_keep_newlines(doing).into_owned()
             }
         ),
         Outcome::DoesNotCompile(m) => {
             let mut s = format!("  {id}  FAIL  does not compile ({}):\n", ex.file);
             for line in m.lines().take(24) {
-                s += &format!("{pad}| {line}\n");
+                s += &format!("{pad}| {}\n", escape_keep_newlines(line));
             }
             // Fix the compiler's complaint first: no hint yet.
             return s;
@@ -264,9 +342,18 @@ pub fn describe(ex: &Exercise, outcome: &Outcome, width: usize, images: &[PathBu
         }
         _ => s += &format!("{pad}hint: {}\n", ex.hints[0]),
     }
-    s += &format!("{pad}more: grade --hint {}\n", ex.id());
+    s += &format!("{pad}more: cargo grade --hint {}\n", ex.id());
     s
 }
+/// An error as printed: `inf` and `NaN` as such, else 3 digits.
+fn number(x: f64) -> String {
+    if x.is_finite() {
+        format!("{x:.3e}")
+    } else {
+        format!("{x}")
+    }
+}
+
 /// Gradescope's `results.json`: one test per exercise (name, score,
 /// max_score, status, output) and the total score.
 pub fn results_json(results: &[(Exercise, Outcome, String)]) -> String {

@@ -84,7 +84,7 @@ pub struct Exercise {
     /// The file a student edits, relative to the repository root.
     pub file: &'static str,
     /// Hints in tiers: a nudge (which slide, which idea) shown with a
-    /// failure, the idea worked out (`grade --hint`), the formula last.
+    /// failure, the idea worked out (`cargo grade --hint`), the formula last.
     pub hints: [&'static str; 3],
     /// The failures its check recognises, each with its own hint (shown
     /// instead of the first tier when the check names it).

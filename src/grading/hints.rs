@@ -1,5 +1,5 @@
 //! Hints in tiers, as rustlings gives them: a failure shows the first
-//! nudge (which slide, which idea); `grade --hint chN/name` shows the next
+//! nudge (which slide, which idea); `cargo grade --hint chN/name` shows the next
 //! tier each time it is asked, and the formula only at the last. Which
 //! tier a student has seen is remembered in `<out>/hints-seen.txt`, one
 //! `chN/name tier` per line.
@@ -40,7 +40,7 @@ pub fn next_hint(ex: &Exercise, out: &Path) -> std::io::Result<String> {
     if tier == last {
         s += "that was the last hint: the formula itself. Try writing it without looking again.\n";
     } else {
-        s += &format!("for the next: grade --hint {}\n", ex.id());
+        s += &format!("for the next: cargo grade --hint {}\n", ex.id());
     }
     Ok(s)
 }

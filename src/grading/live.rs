@@ -18,7 +18,8 @@ use crate::core::film::Film;
 use crate::grading::build::{build_exercises_in, Place};
 use crate::grading::child::{crash_message, last_progress, run_limited, Ran};
 use crate::grading::exercise::Exercise;
-use crate::grading::runner::{parse_verdict, CAPSTONES};
+use crate::grading::process::too_much_output;
+use crate::grading::runner::{Handshake, CAPSTONES};
 use crate::grading::PROGRESS_ENV;
 
 /// The student's capstone image beside the reference.
@@ -185,7 +186,7 @@ impl LiveOptions {
     /// images in `<out>/student`, and 20 s for the render.
     pub fn for_out_dir(out: &Path) -> Result<LiveOptions, String> {
         Ok(LiveOptions {
-            exercises: crate::grading::build::root().join("chapters"),
+            exercises: crate::grading::build::exercises_dir(),
             place: Place::current()?,
             out: out.join("student"),
             timeout: Duration::from_secs(20),
@@ -209,6 +210,17 @@ pub fn live_student(
     opts: &LiveOptions,
     cancel: Option<&AtomicBool>,
 ) -> Result<StudentRender, LiveError> {
+    live_student_with(chapter, opts, cancel, &|| {})
+}
+
+/// [`live_student`], calling `rendering` once the build is done and the
+/// student's code starts rendering.
+pub fn live_student_with(
+    chapter: u32,
+    opts: &LiveOptions,
+    cancel: Option<&AtomicBool>,
+    rendering: &dyn Fn(),
+) -> Result<StudentRender, LiveError> {
     let ex = capstone(chapter).ok_or(LiveError::NoCapstone(chapter))?;
     let id = ex.id();
     let built =
@@ -219,6 +231,7 @@ pub fn live_student(
     }
     std::fs::create_dir_all(&opts.out)
         .map_err(|e| LiveError::Build(format!("cannot create {}: {e}", opts.out.display())))?;
+    rendering();
     let mut cmd = Command::new(&built.runner);
     cmd.args(["render", &format!("ch{chapter}")])
         .arg(&opts.out)
@@ -227,12 +240,15 @@ pub fn live_student(
         id: id.clone(),
         message,
     };
-    let (status, stdout, stderr) = match run_limited(&mut cmd, Some(opts.timeout), cancel) {
+    let handshake = Handshake::new(opts.timeout);
+    let ran = run_limited(&mut cmd, &handshake.line(), Some(opts.timeout), cancel);
+    let (status, stdout, stderr) = match ran {
         Err(e) => {
             let m = format!("cannot start {}: {e}", built.runner.display());
             return Err(LiveError::Build(m));
         }
         Ok(Ran::Cancelled) => return Err(LiveError::Build("cancelled".into())),
+        Ok(Ran::TooMuchOutput) => return Err(panicked(too_much_output())),
         Ok(Ran::TimedOut { stderr }) => {
             let (seconds, doing) = (opts.timeout.as_secs_f64(), last_progress(&stderr));
             return Err(LiveError::TimedOut { id, seconds, doing });
@@ -243,7 +259,7 @@ pub fn live_student(
             stderr,
         }) => (status, stdout, stderr),
     };
-    let Some(verdict) = parse_verdict(&stdout) else {
+    let Some(verdict) = handshake.verdict_in(&stdout) else {
         return Err(panicked(crash_message(&status, &stderr)));
     };
     match verdict.outcome.as_str() {

@@ -25,6 +25,8 @@ pub mod hints;
 pub mod live;
 pub mod process;
 pub mod runner;
+pub mod sandbox;
+pub mod shipped;
 
 pub use driver::grade_main;
 pub use exercise::{Check, Exercise, Outcome, Symptom};
@@ -33,8 +35,11 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
+use glam::Vec3;
+
 use crate::core::error::Result;
 use crate::core::film::Film;
+use crate::core::strip::write_captioned_strip;
 
 /// Every exercise of every chapter, in order.
 pub fn all() -> Vec<Exercise> {
@@ -50,11 +55,24 @@ pub fn run(ex: &Exercise) -> Outcome {
     run_check(ex.reference)
 }
 
-/// Runs a check, catching `todo!()` and any other panic.
+/// Where the first panic of a check happened (`file:line:column`).
+static PANIC_AT: Mutex<Option<String>> = Mutex::new(None);
+
+/// Runs a check, catching `todo!()` and any other panic; a panic's
+/// message names the file and line it happened at (the student's file,
+/// from its chapter folder, when it was there).
 pub fn run_check(check: fn() -> Check) -> Outcome {
     let _guard = HOOK.lock().unwrap_or_else(|e| e.into_inner());
+    *PANIC_AT.lock().unwrap_or_else(|e| e.into_inner()) = None;
     let previous = std::panic::take_hook();
-    std::panic::set_hook(Box::new(|_| {}));
+    std::panic::set_hook(Box::new(|info| {
+        if let Some(at) = info.location() {
+            let mut first = PANIC_AT.lock().unwrap_or_else(|e| e.into_inner());
+            first.get_or_insert_with(|| {
+                format!("{}:{}:{}", short_path(at.file()), at.line(), at.column())
+            });
+        }
+    }));
     let result = catch_unwind(AssertUnwindSafe(check));
     std::panic::set_hook(previous);
     // Calling raystep's own solution fails, even when the panic that
@@ -72,11 +90,25 @@ pub fn run_check(check: fn() -> Check) -> Outcome {
                 .or_else(|| payload.downcast_ref::<String>().cloned())
                 .unwrap_or_else(|| "panicked".into());
             if message.starts_with("not yet implemented") {
-                Outcome::NotImplemented
-            } else {
-                Outcome::Panicked(message)
+                return Outcome::NotImplemented;
+            }
+            match PANIC_AT.lock().unwrap_or_else(|e| e.into_inner()).take() {
+                Some(at) => Outcome::Panicked(format!("{message} (at {at})")),
+                None => Outcome::Panicked(message),
             }
         }
+    }
+}
+
+/// A source path from its chapter folder (`ch3-ray-triangle/exercises/…`)
+/// or from `src/`, whichever it is under; else as it is.
+fn short_path(file: &str) -> String {
+    let file = file.replace('\\', "/");
+    let parts: Vec<&str> = file.split('/').collect();
+    match parts.iter().rposition(|p| *p == "exercises" || *p == "src") {
+        Some(i) if parts[i] == "exercises" && i > 0 => parts[i - 1..].join("/"),
+        Some(i) => parts[i..].join("/"),
+        None => file.clone(),
     }
 }
 
@@ -94,8 +126,91 @@ pub fn write_failure_images(ex: &Exercise, check: &Check, dir: &Path) -> Result<
     ];
     candidate.write_png(&files[0])?;
     reference.write_png(&files[1])?;
-    candidate.difference(reference).write_png(&files[2])?;
+    let legend = format!("student - reference: blue -{DIFF_SCALE}, black 0, red +{DIFF_SCALE}");
+    write_captioned_strip(
+        &[(
+            &with_legend(&signed_difference(candidate, reference)),
+            &legend,
+        )],
+        &files[2],
+    )?;
     Ok(files)
+}
+
+/// The difference of a failure image at which its colour is full: a
+/// difference of 0.25 (linear, in the channel that differs most) is full red
+/// or blue. Fixed, so that images of two attempts compare.
+pub const DIFF_SCALE: f32 = 0.25;
+
+/// The signed difference of two images on the fixed scale [`DIFF_SCALE`]:
+/// red where the student's image is brighter, blue where it is darker (by
+/// the channel that differs most), black where they match, magenta where
+/// the student's value is not a number or infinite.
+pub fn signed_difference(candidate: &Film, reference: &Film) -> Film {
+    let mut d = Film::new(candidate.width, candidate.height);
+    for ((o, a), b) in d
+        .pixels
+        .iter_mut()
+        .zip(&candidate.pixels)
+        .zip(&reference.pixels)
+    {
+        let diff = *a - *b;
+        if !diff.is_finite() {
+            *o = Vec3::new(1.0, 0.0, 1.0);
+            continue;
+        }
+        let abs = diff.abs();
+        let most = if abs.x >= abs.y && abs.x >= abs.z {
+            diff.x
+        } else if abs.y >= abs.z {
+            diff.y
+        } else {
+            diff.z
+        };
+        let s = (most / DIFF_SCALE).clamp(-1.0, 1.0);
+        *o = if s >= 0.0 {
+            Vec3::new(s, 0.0, 0.0)
+        } else {
+            Vec3::new(0.0, 0.0, -s)
+        };
+    }
+    d
+}
+
+/// `diff` above a colour bar from -[`DIFF_SCALE`] (blue) through 0
+/// (black) to +[`DIFF_SCALE`] (red), at least 320 pixels wide so that its
+/// caption fits (a narrower image sits on grey at the left).
+fn with_legend(diff: &Film) -> Film {
+    let width = diff.width.max(320);
+    let bar = 10;
+    let mut out = Film::new(width, diff.height + 2 + bar);
+    out.pixels.iter_mut().for_each(|p| *p = Vec3::splat(0.2));
+    for y in 0..diff.height {
+        for x in 0..diff.width {
+            *out.get_mut(x, y) = diff.get(x, y);
+        }
+    }
+    for x in 0..width {
+        let s = 2.0 * (x as f32 + 0.5) / width as f32 - 1.0;
+        let c = if s >= 0.0 {
+            Vec3::new(s, 0.0, 0.0)
+        } else {
+            Vec3::new(0.0, 0.0, -s)
+        };
+        for y in diff.height + 2..out.height {
+            *out.get_mut(x, y) = c;
+        }
+    }
+    out
+}
+
+/// Removes the failure images of `ex` from `dir` (after it passes, so that
+/// an old failure is not shown as the newest).
+pub fn remove_failure_images(ex: &Exercise, dir: &Path) {
+    let stem = format!("ch{}-{}", ex.chapter, ex.name);
+    for kind in ["student", "reference", "diff"] {
+        let _ = std::fs::remove_file(dir.join(format!("{stem}-{kind}.png")));
+    }
 }
 
 /// A student's image and the reference from a failed image check, read back

@@ -7,10 +7,11 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::grading::build::{build_exercises, root};
-use crate::grading::child::{crash_message, last_progress, run_limited, Ran};
+use crate::grading::build::{build_exercises, exercises_dir};
+use crate::grading::child::{crash_message, last_progress, run_limited, Ran, OUTPUT_LIMIT};
 use crate::grading::exercise::{Exercise, Outcome};
-use crate::grading::runner::parse_verdict;
+use crate::grading::runner::Handshake;
+use crate::grading::sandbox::{kill_group, own_group};
 use crate::grading::{run, write_failure_images, PROGRESS_ENV};
 
 /// `chN --student`: builds the exercises, then renders chapter N's
@@ -25,7 +26,7 @@ pub fn student_main(chapter: u32) -> ExitCode {
         return ExitCode::from(2);
     };
     eprintln!("building your exercises (the raystep-exercises crate)...");
-    let built = match build_exercises(&root().join("chapters")) {
+    let built = match build_exercises(&exercises_dir()) {
         Ok(b) => b,
         Err(e) => {
             eprintln!("error: could not build the exercises: {e}");
@@ -38,12 +39,12 @@ pub fn student_main(chapter: u32) -> ExitCode {
         return ExitCode::from(1);
     }
     let out = PathBuf::from("out/student");
-    let mut child = match Command::new(&built.runner)
-        .args(["render", &format!("ch{chapter}")])
+    let mut cmd = Command::new(&built.runner);
+    cmd.args(["render", &format!("ch{chapter}")])
         .arg(&out)
-        .stdin(Stdio::null())
-        .spawn()
-    {
+        .stdin(Stdio::null());
+    own_group(&mut cmd);
+    let mut child = match cmd.spawn() {
         Ok(c) => c,
         Err(e) => {
             eprintln!("error: could not start {}: {e}", built.runner.display());
@@ -54,9 +55,11 @@ pub fn student_main(chapter: u32) -> ExitCode {
     loop {
         match child.try_wait() {
             Ok(Some(status)) => {
-                return ExitCode::from(u8::try_from(status.code().unwrap_or(1)).unwrap_or(1))
+                kill_group(child.id());
+                return ExitCode::from(u8::try_from(status.code().unwrap_or(1)).unwrap_or(1));
             }
             Ok(None) if start.elapsed() > Duration::from_secs(60) => {
+                kill_group(child.id());
                 let _ = child.kill();
                 let _ = child.wait();
                 eprintln!("your {id} ran for a minute and was stopped: does a loop never end?");
@@ -92,7 +95,8 @@ pub fn run_student(
 ) -> (Outcome, Vec<PathBuf>) {
     let mut cmd = Command::new(runner);
     cmd.arg(ex.id()).arg(out).env(PROGRESS_ENV, "1");
-    match run_limited(&mut cmd, Some(timeout), None) {
+    let handshake = Handshake::new(timeout);
+    match run_limited(&mut cmd, &handshake.line(), Some(timeout), None) {
         Err(e) => {
             let m = format!("could not start {}: {e}", runner.display());
             (Outcome::Panicked(m), Vec::new())
@@ -102,12 +106,13 @@ pub fn run_student(
             let doing = last_progress(&stderr);
             (Outcome::TimedOut { seconds, doing }, Vec::new())
         }
+        Ok(Ran::TooMuchOutput) => (Outcome::Panicked(too_much_output()), Vec::new()),
         Ok(Ran::Cancelled) => (Outcome::Panicked("cancelled".into()), Vec::new()),
         Ok(Ran::Exited {
             status,
             stdout,
             stderr,
-        }) => match parse_verdict(&stdout) {
+        }) => match handshake.verdict_in(&stdout) {
             Some(v) => (v.outcome(ex), v.images),
             None => (
                 Outcome::Panicked(crash_message(&status, &stderr)),
@@ -115,4 +120,12 @@ pub fn run_student(
             ),
         },
     }
+}
+
+/// Why a check that printed too much was stopped.
+pub fn too_much_output() -> String {
+    format!(
+        "printed more than {} MiB and was stopped: remove the prints in loops",
+        OUTPUT_LIMIT >> 20
+    )
 }

@@ -4,21 +4,100 @@
 //! runs it under a time limit. One process per exercise: a loop that never
 //! ends, a stack overflow or an abort stops that exercise, not the grader.
 
+use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::time::Duration;
 
 use serde::{Deserialize, Serialize};
 
 use crate::grading::exercise::{Check, Exercise, Outcome};
-use crate::grading::{run_check, write_failure_images, PROGRESS_ENV};
+use crate::grading::sandbox::Limits;
+use crate::grading::{run_check, write_failure_images};
 
 /// The student's checks, by exercise id (`chN/name`): what the exercises
 /// crate compiled (an exercise that does not compile is left out).
 pub type Registry = Vec<(&'static str, fn() -> Check)>;
 
-/// The line before the verdict on the child's standard output (anything a
-/// student prints comes before it and is ignored).
-pub const VERDICT: &str = "@@raystep-verdict@@";
+/// What the grader hands a `grade-student` process on its standard input,
+/// read before any student code runs: a secret that marks the verdict, and
+/// the time limit (for the process's CPU limit). The student's code cannot
+/// read it again (standard input is drained and closed), so a verdict it
+/// prints itself lacks the secret and is ignored.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Handshake {
+    /// 32 hex digits, new for every process.
+    pub secret: String,
+    /// The time limit, seconds.
+    pub timeout: f64,
+}
+
+impl Handshake {
+    /// A new secret for a process with time limit `timeout`.
+    pub fn new(timeout: Duration) -> Handshake {
+        use std::hash::{BuildHasher, Hasher};
+        let word = |salt: u64| {
+            let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+            h.write_u64(salt);
+            h.write_u128(
+                std::time::SystemTime::now()
+                    .duration_since(std::time::UNIX_EPOCH)
+                    .map_or(0, |d| d.as_nanos()),
+            );
+            h.write_u32(std::process::id());
+            h.finish()
+        };
+        Handshake {
+            secret: format!("{:016x}{:016x}", word(1), word(2)),
+            timeout: timeout.as_secs_f64(),
+        }
+    }
+
+    /// The line written to the child's standard input.
+    pub fn line(&self) -> Vec<u8> {
+        format!("{} {}\n", self.secret, self.timeout).into_bytes()
+    }
+
+    /// Reads the handshake from standard input: `None` when there is none
+    /// (the binary run by hand).
+    pub fn read() -> Option<Handshake> {
+        let mut text = String::new();
+        std::io::stdin().read_to_string(&mut text).ok()?;
+        let (secret, timeout) = text.trim().split_once(' ')?;
+        Some(Handshake {
+            secret: secret.to_string(),
+            timeout: timeout.parse().ok()?,
+        })
+    }
+
+    fn open(&self) -> String {
+        format!("@@raystep-verdict {}@@", self.secret)
+    }
+
+    fn close(&self) -> String {
+        format!("@@raystep-verdict-end {}@@", self.secret)
+    }
+
+    /// Prints `verdict` between the two marked lines.
+    pub fn print(&self, verdict: &Verdict) {
+        match toml::to_string(verdict) {
+            Ok(text) => {
+                let mut out = std::io::stdout().lock();
+                let _ = write!(out, "\n{}\n{text}\n{}\n", self.open(), self.close());
+                let _ = out.flush();
+            }
+            Err(e) => eprintln!("error: could not write the verdict: {e}"),
+        }
+    }
+
+    /// The verdict in a child's standard output: the text between the two
+    /// lines that carry this secret.
+    pub fn verdict_in(&self, stdout: &str) -> Option<Verdict> {
+        let (_, rest) = stdout.split_once(&self.open())?;
+        let (text, _) = rest.split_once(&self.close())?;
+        toml::from_str(text).ok()
+    }
+}
 
 /// One exercise's result, as the child prints it.
 #[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
@@ -123,9 +202,14 @@ pub const CAPSTONES: [(u32, &str); 6] = [
 /// `grade-student render <N> <out>`: renders chapter N's capstone scene
 /// with the student's code and with the reference, writes both and their
 /// difference to `out`, and says how they compare. When the grader runs it
-/// ([`PROGRESS_ENV`] set: the TUI's student mode), the verdict follows, as
+/// (with a [`Handshake`]: the TUI's student mode), the verdict follows, as
 /// for a check, with the three images' paths.
-fn render(registry: &Registry, chapter: &str, out: &Path) -> ExitCode {
+fn render(
+    registry: &Registry,
+    chapter: &str,
+    out: &Path,
+    handshake: Option<&Handshake>,
+) -> ExitCode {
     let n: u32 = chapter.trim_start_matches("ch").parse().unwrap_or(0);
     let Some((_, name)) = CAPSTONES.iter().find(|(c, _)| *c == n) else {
         eprintln!("chapter {chapter} has no capstone to render yet");
@@ -146,10 +230,8 @@ fn render(registry: &Registry, chapter: &str, out: &Path) -> ExitCode {
         return ExitCode::from(2);
     };
     let (code, verdict) = render_check(&ex, *check, out);
-    if std::env::var_os(PROGRESS_ENV).is_some() {
-        if let Ok(text) = toml::to_string(&verdict) {
-            println!("\n{VERDICT}\n{text}");
-        }
+    if let Some(handshake) = handshake {
+        handshake.print(&verdict);
     }
     code
 }
@@ -211,43 +293,42 @@ fn render_check(ex: &Exercise, check: fn() -> Check, out: &Path) -> (ExitCode, V
 }
 
 /// The whole `main` of `grade-student`: `grade-student <chN/name> <out>`
-/// prints the verdict of one exercise after [`VERDICT`];
-/// `grade-student render <chN> <out>` renders a chapter's capstone.
+/// prints the verdict of one exercise, marked with the secret of the
+/// [`Handshake`] on standard input; `grade-student render <chN> <out>`
+/// renders a chapter's capstone. Before any student code runs, the process
+/// limits itself ([`Limits`]) and may write only under `out`.
 pub fn runner_main(registry: Registry) -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    if let [cmd, chapter, out] = args.as_slice() {
-        if cmd == "render" {
-            let out = Path::new(out);
-            if let Err(e) = std::fs::create_dir_all(out) {
-                eprintln!("error: cannot create {}: {e}", out.display());
-                return ExitCode::from(2);
-            }
-            return render(&registry, chapter, out);
+    let handshake = Handshake::read();
+    let (render_chapter, id, out) = match args.as_slice() {
+        [cmd, chapter, out] if cmd == "render" => (Some(chapter.clone()), None, out),
+        [id, out] => (None, Some(id.clone()), out),
+        _ => {
+            eprintln!("usage: grade-student <chN/name> <out dir> (run by `grade`)");
+            return ExitCode::from(2);
         }
-    }
-    let [id, out] = args.as_slice() else {
-        eprintln!("usage: grade-student <chN/name> <out dir> (run by `grade`)");
-        return ExitCode::from(2);
     };
-    let Some(ex) = crate::grading::all().into_iter().find(|e| &e.id() == id) else {
+    let out = Path::new(out);
+    if let Err(e) = std::fs::create_dir_all(out) {
+        eprintln!("error: cannot create {}: {e}", out.display());
+        return ExitCode::from(2);
+    }
+    let timeout = handshake.as_ref().map_or(60.0, |h| h.timeout);
+    for missing in Limits::for_timeout(timeout).apply(out) {
+        eprintln!("note: the grader's sandbox could not set {missing}");
+    }
+    if let Some(chapter) = render_chapter {
+        return render(&registry, &chapter, out, handshake.as_ref());
+    }
+    let id = id.unwrap_or_default();
+    let Some(ex) = crate::grading::all().into_iter().find(|e| e.id() == id) else {
         eprintln!("error: no exercise `{id}`");
         return ExitCode::from(2);
     };
-    let v = verdict(&registry, &ex, Path::new(out));
-    match toml::to_string(&v) {
-        Ok(text) => {
-            println!("\n{VERDICT}\n{text}");
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("error: could not write the verdict: {e}");
-            ExitCode::from(2)
-        }
-    }
-}
-
-/// Reads the verdict from a child's standard output.
-pub fn parse_verdict(stdout: &str) -> Option<Verdict> {
-    let (_, text) = stdout.rsplit_once(VERDICT)?;
-    toml::from_str(text).ok()
+    let Some(handshake) = handshake else {
+        eprintln!("error: grade-student is run by `grade` (cargo grade), which hands it a secret");
+        return ExitCode::from(2);
+    };
+    handshake.print(&verdict(&registry, &ex, out));
+    ExitCode::SUCCESS
 }

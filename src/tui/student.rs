@@ -15,7 +15,9 @@ use std::sync::Arc;
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use crate::grading::live::{exercise_stamp, live_student, LiveError, LiveOptions, StudentRender};
+use crate::grading::live::{
+    exercise_stamp, live_student_with, LiveError, LiveOptions, StudentRender,
+};
 
 /// How often the watcher looks at the exercise files.
 pub const POLL: Duration = Duration::from_millis(500);
@@ -41,6 +43,8 @@ pub struct StudentMode {
 pub enum StudentEvent {
     /// A build and render has started (an edit, or the first time).
     Building,
+    /// The build is done; the student's code is rendering.
+    Rendering,
     /// It finished: the images, or why there are none.
     Done(Result<StudentRender, LiveError>),
 }
@@ -116,7 +120,10 @@ fn watch(chapter: u32, out_dir: &std::path::Path, stop: &AtomicBool, tx: &Sender
             }
             // A bug here must not leave "building…" up for ever.
             let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
-                live_student(chapter, &opts, Some(stop))
+                let rendering = || {
+                    let _ = tx.send(StudentEvent::Rendering);
+                };
+                live_student_with(chapter, &opts, Some(stop), &rendering)
             }))
             .unwrap_or_else(|_| Err(LiveError::Build("student mode failed".into())));
             if stop.load(Ordering::Relaxed) || tx.send(StudentEvent::Done(result)).is_err() {

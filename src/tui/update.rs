@@ -301,6 +301,7 @@ fn student_event(app: &mut App, chapter: u32, event: StudentEvent) {
     };
     match event {
         StudentEvent::Building => s.status = "building…".into(),
+        StudentEvent::Rendering => s.status = "rendering…".into(),
         StudentEvent::Done(Ok(render)) => {
             s.status = render.status();
             app.message = format!("{}: {}", render.id, render.detail);

@@ -248,7 +248,7 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
         }
     } else if let Some(s) = &app.student {
         let color = match s.status.as_str() {
-            "starting…" | "building…" => Color::Gray,
+            "starting…" | "building…" | "rendering…" => Color::Gray,
             _ => Color::Red,
         };
         let text = format!("{}\n\n{}", s.status, s.details);

@@ -35,21 +35,11 @@ fn grade(args: &[&str], out: &Path) -> (Output, String, Duration) {
     (output, text, start.elapsed())
 }
 
-/// A copy of every chapter's exercise folder under `dir`, as shipped.
+/// A fresh copy of every chapter's exercise folder under `dir`, as
+/// shipped (from the stubs embedded in the library, never from the files a
+/// student edits under `chapters/`).
 pub(crate) fn copy_exercises(dir: &Path) -> PathBuf {
-    let src = common::root().join("chapters");
-    for chapter in std::fs::read_dir(&src).unwrap().flatten() {
-        let ex = chapter.path().join("exercises");
-        if !ex.is_dir() {
-            continue;
-        }
-        let to = dir.join(chapter.file_name()).join("exercises");
-        std::fs::create_dir_all(&to).unwrap();
-        for f in std::fs::read_dir(&ex).unwrap().flatten() {
-            std::fs::copy(f.path(), to.join(f.file_name())).unwrap();
-        }
-    }
-    dir.to_path_buf()
+    raystep::grading::shipped::write_all(dir).unwrap()
 }
 
 #[test]
@@ -345,26 +335,35 @@ fn hints_come_in_tiers_and_the_formula_last() {
 fn a_chapter_binary_renders_the_students_capstone() {
     let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
     let dir = common::temp_dir("student-render");
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_ch4"))
-        .arg("--student")
-        .current_dir(&dir)
-        .output()
-        .unwrap();
+    let exercises = copy_exercises(&common::temp_dir("student-render-src"));
+    let run = || {
+        std::process::Command::new(env!("CARGO_BIN_EXE_ch4"))
+            .arg("--student")
+            .env("RAYSTEP_EXERCISES_DIR", &exercises)
+            .current_dir(&dir)
+            .output()
+            .unwrap()
+    };
+    // The shipped stub: not started.
+    let out = run();
     let text = String::from_utf8_lossy(&out.stdout);
-    let stub = std::fs::read_to_string(
-        common::root().join("chapters/ch4-sphere-tracing/exercises/trace_scene.rs"),
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains("not started"), "{text}");
+    // A solution: the student's picture beside the reference.
+    let solution =
+        common::root().join("tests/project/solutions/ch4-sphere-tracing/exercises/trace_scene.rs");
+    std::fs::copy(
+        solution,
+        exercises.join("ch4-sphere-tracing/exercises/trace_scene.rs"),
     )
-    .unwrap()
-    .contains("todo!()");
-    if stub {
-        assert_eq!(out.status.code(), Some(1), "{text}");
-        assert!(text.contains("not started"), "{text}");
-    } else {
-        assert!(text.contains("wrote "), "{text}");
-        assert!(dir
-            .join("out/student/ch4-trace_scene-student.png")
-            .is_file());
-    }
+    .unwrap();
+    let out = run();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}");
+    assert!(text.contains("wrote "), "{text}");
+    assert!(dir
+        .join("out/student/ch4-trace_scene-student.png")
+        .is_file());
 }
 
 /// The reference pictures the capstones are graded against, summarised

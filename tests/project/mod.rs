@@ -5,6 +5,7 @@ mod figures;
 mod film_and_main;
 mod fuzz;
 mod glossary;
+mod grader_hostile;
 mod grading;
 mod hostile;
 mod hostile_bvh;
