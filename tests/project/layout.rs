@@ -18,6 +18,11 @@ fn sources() -> Vec<String> {
     fn walk(dir: &Path, base: &Path, out: &mut Vec<String>) {
         for e in std::fs::read_dir(dir).unwrap() {
             let p = e.unwrap().path();
+            // The shipped exercise stubs are data the grader embeds, not
+            // modules of the library.
+            if p.ends_with("grading/shipped") {
+                continue;
+            }
             if p.is_dir() {
                 walk(&p, base, out);
             } else if p.extension().is_some_and(|x| x == "rs") {
