@@ -10,7 +10,7 @@ use glam::Vec3;
 
 use crate::ch3_ray_triangle::bvh::Triangles;
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::spawn::offset_origin;
+use crate::ch3_ray_triangle::spawn::{offset_distance, offset_origin};
 use crate::ch3_ray_triangle::wide_bvh::WideBvh;
 use crate::ch4_implicit_surfaces::distance::{scene_distance, SdfObject};
 use crate::ch4_implicit_surfaces::hit::Surface;
@@ -146,21 +146,32 @@ impl World {
 
     /// Whether nothing blocks the segment from the surface point `p`
     /// (outward normal `n`) to the point `dist` away along the unit
-    /// direction `wi` (`dist` = ∞: to infinity). The far end is shortened by
-    /// a relative 1e-4 so the light's own surface does not block it.
+    /// direction `wi` (`dist` = ∞: to infinity). The ray starts at the
+    /// spawned origin and is aimed at the far point moved back towards `p`
+    /// by [`offset_distance`]: both ends sit off their surfaces by amounts
+    /// that scale with the coordinates, so neither surface blocks the
+    /// segment wherever the scene sits and whatever its size (aiming from
+    /// the moved origin along the old direction and length would meet the
+    /// light's own surface at grazing angles).
     pub fn unoccluded(&self, p: Vec3, n: Vec3, wi: Vec3, dist: f32) -> bool {
-        let Some(ray) = self.spawn(p, n, wi) else {
+        let Some(spawned) = self.spawn(p, n, wi) else {
             return false;
         };
-        let t_max = if dist.is_finite() {
-            // Less the offset's L1 length, which is at least its length.
-            (dist - (ray.origin - p).abs().element_sum()) * (1.0 - 1e-4)
+        let y = p + wi * dist;
+        let to = y - wi * offset_distance(y) - spawned.origin;
+        let t_max = to.length();
+        let (ray, t_max) = if !t_max.is_finite() {
+            // A light at infinity (or as good as).
+            (spawned, f32::INFINITY)
+        } else if t_max > 0.0 && to.dot(wi) > 0.0 {
+            match Ray::from_unit(spawned.origin, to / t_max) {
+                Some(ray) => (ray, t_max),
+                None => return true,
+            }
         } else {
-            f32::INFINITY
-        };
-        if t_max <= 0.0 {
+            // The two ends meet: nothing lies between them.
             return true;
-        }
+        };
         if let Some(bvh) = &self.wide {
             if bvh.occluded(&ray, t_max) {
                 return false;

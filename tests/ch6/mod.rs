@@ -4,6 +4,7 @@ mod exercises;
 mod global_illumination;
 mod ladder;
 mod path_record;
+mod placement;
 #[cfg(feature = "tui")]
 mod tui;
 mod unit;

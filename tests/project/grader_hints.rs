@@ -90,12 +90,16 @@ fn every_hint_cites_a_real_slide_or_book_section() {
         }
         for title in s {
             if !slides.contains(title) {
-                wrong.push(format!("{at}: slide \"{title}\" is not in lecture-slides.txt"));
+                wrong.push(format!(
+                    "{at}: slide \"{title}\" is not in lecture-slides.txt"
+                ));
             }
         }
         for heading in b {
             if !headings.contains(heading) {
-                wrong.push(format!("{at}: book \"{heading}\" is no heading of book/src"));
+                wrong.push(format!(
+                    "{at}: book \"{heading}\" is no heading of book/src"
+                ));
             }
         }
     }
