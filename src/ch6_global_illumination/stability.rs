@@ -1,14 +1,17 @@
 //! The stiff and extreme cases of chapter 6 (requirement 2): a furnace of
 //! albedo 0.999, a tiny very bright light, total internal reflection,
-//! index-matched glass, a camera inside glass.
+//! index-matched glass, a camera inside glass, and the Cornell box moved
+//! far from the origin or scaled.
 
 use crate::core::film::Film;
 use crate::core::format::{format_number, format_seconds};
 use crate::core::report::StabilityCase;
+use crate::scene::Scene;
+use glam::DVec3;
 
 use super::accumulate::Accumulator;
 use super::integrator::{Estimator, PathSettings};
-use super::reference::{film_mean, z_score};
+use super::reference::{film_mean, region_z_test, z_score, StoredReference};
 use super::sampler::SamplerKind;
 use super::scenes;
 
@@ -206,6 +209,83 @@ fn flat_case(
     (StabilityCase::new(name, expected, measured, ok), z)
 }
 
+/// Where the Cornell box is placed for [`placement`]: every offset of
+/// 1e1 to 1e4 on one axis (y, x, z in turn) and scales 1e-3 to 1e3, which
+/// must render like the box at the origin; then two placements past what
+/// f32 can resolve (1e6 from the origin, where neighbouring values are
+/// 0.06 apart; a box 2e-5 wide, below the fixed offset that spawned rays
+/// use near the origin), reported but not required.
+pub const PLACEMENTS: [(&str, [f64; 3], f64); 10] = [
+    ("+1e1 y", [0.0, 1e1, 0.0], 1.0),
+    ("+1e2 x", [1e2, 0.0, 0.0], 1.0),
+    ("-1e3 z", [0.0, 0.0, -1e3], 1.0),
+    ("+1e4 y", [0.0, 1e4, 0.0], 1.0),
+    ("x1e-3", [0.0; 3], 1e-3),
+    ("x1e-2", [0.0; 3], 1e-2),
+    ("x1e2", [0.0; 3], 1e2),
+    ("x1e3", [0.0; 3], 1e3),
+    ("+1e6 z", [0.0, 0.0, 1e6], 1.0),
+    ("x1e-5", [0.0; 3], 1e-5),
+];
+
+/// How many of [`PLACEMENTS`] are required to match (the rest are past
+/// f32's reach).
+pub const PLACEMENTS_REQUIRED: usize = 8;
+
+/// The Cornell box moved and scaled ([`PLACEMENTS`]), each against the
+/// stored reference of the box at the origin by the region z-test; the
+/// worst z and the largest deviation of the mean of the required ones, and
+/// what happens past f32's reach. Returns the case and the worst z.
+pub fn placement(size: u32, spp: u32) -> (StabilityCase, f64) {
+    let name = "the Cornell box moved 1e1 to 1e4 along an axis and scaled 1e-3 to 1e3";
+    let expected = "every placement matches the box at the origin's reference region by \
+                    region (|z| below the Bonferroni threshold)";
+    let Some(stored) = StoredReference::for_scene(&Scene::builtin()) else {
+        let measured = "no stored reference of the Cornell box: not run".to_string();
+        return (StabilityCase::new(name, expected, measured, true), 0.0);
+    };
+    let reference = stored.downsampled(stored.mean.width / size);
+    let path = PathSettings {
+        estimator: Estimator::Mis,
+        ..PathSettings::default()
+    };
+    // The mean over pixels and channels.
+    let level = |f: &Film| film_mean(f).element_sum() as f64 / 3.0;
+    let ref_mean = level(&reference.mean);
+    let (mut ok, mut worst_z, mut worst_dev) = (true, 0.0f64, (0.0f64, ""));
+    let mut beyond = Vec::new();
+    for (i, (label, offset, scale)) in PLACEMENTS.iter().enumerate() {
+        let scene = Scene::builtin()
+            .with_resolution(size, size)
+            .expect("a valid size")
+            .placed(DVec3::from_array(*offset), *scale);
+        let (acc, _) = render(&scene, &path, SamplerKind::Independent, spp, 11, false);
+        let t = region_z_test(&acc.mean(), &acc.variance_of_mean(), &reference, 4, 1e-3);
+        let dev = level(&acc.mean()) / ref_mean - 1.0;
+        if i < PLACEMENTS_REQUIRED {
+            ok &= t.passed() && acc.stats.nonfinite == 0;
+            worst_z = worst_z.max(t.worst_z);
+            if dev.abs() > worst_dev.0.abs() {
+                worst_dev = (dev, label);
+            }
+        } else {
+            beyond.push(format!(
+                "{label}: {:+.1} % (z = {:.0})",
+                100.0 * dev,
+                t.worst_z
+            ));
+        }
+    }
+    let measured = format!(
+        "worst |z| {worst_z:.1}; largest deviation of the mean {:+.2} % ({}); past f32's reach, \
+         not required: {}",
+        100.0 * worst_dev.0,
+        worst_dev.1,
+        beyond.join(", ")
+    );
+    (StabilityCase::new(name, expected, measured, ok), worst_z)
+}
+
 /// The middle `n` x `n` pixels of a film.
 pub fn centre_block(film: &Film, n: u32) -> Film {
     let (x0, y0) = ((film.width - n) / 2, (film.height - n) / 2);
@@ -227,6 +307,7 @@ pub fn stability_cases(quick: bool) -> Vec<StabilityCase> {
             total_internal_reflection(4, 8).0,
             index_matched_glass(32, 8).0,
             camera_inside_glass(8, 8).0,
+            placement(16, 16).0,
         ];
     }
     vec![
@@ -235,5 +316,6 @@ pub fn stability_cases(quick: bool) -> Vec<StabilityCase> {
         total_internal_reflection(8, 16).0,
         index_matched_glass(32, 16).0,
         camera_inside_glass(16, 16).0,
+        placement(16, 64).0,
     ]
 }

@@ -17,6 +17,7 @@ use raystep::ch5_reflection::world::World;
 use raystep::ch6_global_illumination::integrator::{Estimator, PathSettings};
 use raystep::ch6_global_illumination::reference::{region_z_test, StoredReference};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
+use raystep::ch6_global_illumination::stability;
 use raystep::ch6_global_illumination::studies::render;
 use raystep::scene::Scene;
 
@@ -92,5 +93,25 @@ fn the_moved_or_scaled_cornell_box_renders_the_same_in_chapter_5() {
         let floor = |s: &[Vec3]| total(&s[s.len() * 2 / 3..]);
         let rel = (floor(&moved) / floor(&at_origin) - 1.0).abs();
         assert!(rel < 0.01, "offset {offset}, scale {scale}: floor {rel:.4}");
+    }
+}
+
+#[test]
+fn the_report_says_where_f32_runs_out() {
+    let (case, worst_z) = stability::placement(16, 16);
+    assert!(case.ok, "{}", case.measured);
+    assert!(worst_z > 0.0 && worst_z < 5.0, "{worst_z}");
+    // The required placements and the two beyond f32's reach, named.
+    assert!(
+        case.measured.contains("largest deviation of the mean"),
+        "{}",
+        case.measured
+    );
+    for (label, _, _) in &stability::PLACEMENTS[stability::PLACEMENTS_REQUIRED..] {
+        assert!(
+            case.measured.contains(&format!("{label}: ")),
+            "{}",
+            case.measured
+        );
     }
 }
