@@ -94,18 +94,7 @@ impl Film {
 
     /// Writes an 8-bit sRGB PNG, atomically.
     pub fn write_png(&self, path: &Path) -> Result<()> {
-        let bytes = self.to_srgb8();
-        write_atomically(path, |tmp| {
-            image::save_buffer_with_format(
-                tmp,
-                &bytes,
-                self.width,
-                self.height,
-                image::ColorType::Rgb8,
-                image::ImageFormat::Png,
-            )
-            .map_err(|e| e.to_string())
-        })
+        write_rgb8_png(&self.to_srgb8(), self.width, self.height, path)
     }
 
     /// Writes a linear f32 OpenEXR file, atomically.
@@ -119,11 +108,13 @@ impl Film {
             // Compressed one block after another: the parallel writer stores
             // blocks in the order they finish, so the same image would not
             // always give the same bytes.
+            let mut bytes = std::io::Cursor::new(Vec::new());
             Image::from_channels((self.width as usize, self.height as usize), channels)
                 .write()
                 .non_parallel()
-                .to_file(tmp)
-                .map_err(|e| e.to_string())
+                .to_buffered(&mut bytes)
+                .map_err(|e| e.to_string())?;
+            write_all_synced(tmp, bytes.get_ref())
         })
     }
 
@@ -207,6 +198,32 @@ fn temporaries() -> MutexGuard<'static, Vec<PathBuf>> {
     TEMPORARIES
         .lock()
         .unwrap_or_else(|poisoned| poisoned.into_inner())
+}
+
+/// Writes 8-bit RGB `pixels` as a PNG at `path`, atomically: encoded in
+/// memory, then written whole and synced, so that a full disk is an error
+/// and never a short file renamed into place.
+pub fn write_rgb8_png(pixels: &[u8], width: u32, height: u32, path: &Path) -> Result<()> {
+    use image::ImageEncoder;
+    write_atomically(path, |tmp| {
+        let mut bytes = Vec::new();
+        image::codecs::png::PngEncoder::new(&mut bytes)
+            .write_image(pixels, width, height, image::ExtendedColorType::Rgb8)
+            .map_err(|e| e.to_string())?;
+        write_all_synced(tmp, &bytes)
+    })
+}
+
+/// Writes `bytes` to a new file at `path` and waits until the system has
+/// them: a short write, a failed flush or a failed sync (a full disk) is
+/// an error naming what failed.
+pub fn write_all_synced(path: &Path, bytes: &[u8]) -> std::result::Result<(), String> {
+    use std::io::Write;
+    let mut file = std::fs::File::create(path).map_err(|e| e.to_string())?;
+    file.write_all(bytes)
+        .and_then(|_| file.flush())
+        .and_then(|_| file.sync_all())
+        .map_err(|e| format!("writing {} bytes: {e}", bytes.len()))
 }
 
 /// Creates the directory of `path`, lets `write` fill a temporary file next

@@ -11,7 +11,6 @@ use plotters::style::{register_font, FontStyle};
 use plotters_backend::{BackendCoord, DrawingErrorKind};
 
 use crate::core::error::{Error, Result};
-use crate::core::film::write_atomically;
 
 /// DejaVu Sans, Bitstream Vera licence (`assets/fonts/DejaVu-LICENSE.txt`).
 pub(crate) static FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
@@ -156,15 +155,5 @@ impl<C, DB: DrawingBackend> Drawable<DB> for Mark<C> {
 
 /// 8-bit RGB pixels written as a PNG, atomically.
 pub(crate) fn write_rgb_png(pixels: &[u8], width: u32, height: u32, path: &Path) -> Result<()> {
-    write_atomically(path, |tmp| {
-        image::save_buffer_with_format(
-            tmp,
-            pixels,
-            width,
-            height,
-            image::ColorType::Rgb8,
-            image::ImageFormat::Png,
-        )
-        .map_err(|e| e.to_string())
-    })
+    crate::core::film::write_rgb8_png(pixels, width, height, path)
 }

@@ -3,6 +3,7 @@
 mod book;
 mod figures;
 mod film_and_main;
+mod full_disk;
 mod fuzz;
 mod glossary;
 mod grader_hints;
