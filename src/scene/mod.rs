@@ -135,6 +135,20 @@ pub fn read_limited(path: &Path, max: u64) -> Result<String> {
             max >> 20
         ))
     };
+    // Only regular files: opening a FIFO waits for a writer for ever, and
+    // a device may never end.
+    let meta = std::fs::metadata(path).map_err(|e| Error::io(path, e))?;
+    if !meta.is_file() {
+        return Err(Error::Usage(format!(
+            "{}: not a regular file ({}); expected a scene or OBJ file",
+            path.display(),
+            if meta.is_dir() {
+                "a folder"
+            } else {
+                "a FIFO, socket or device"
+            }
+        )));
+    }
     let file = std::fs::File::open(path).map_err(|e| Error::io(path, e))?;
     if file
         .metadata()
