@@ -67,8 +67,10 @@ struct Cli {
     /// Only the final image: no per-bounce layers, strip or layer EXRs.
     #[arg(long)]
     final_only: bool,
-    /// Also write the spp-doubling figure: 1, 2, 4, ... up to N spp.
-    #[arg(long, value_name = "N")]
+    /// Also write the spp-doubling figure: 1, 2, 4, ... up to N spp
+    /// (at most the sample limit, as --spp).
+    #[arg(long, value_name = "N",
+          value_parser = clap::value_parser!(u32).range(1..=raystep::core::run::MAX_SPP as i64))]
     spp_figure: Option<u32>,
     /// Run the benchmark (Cornell box 256x256, 64 spp, 16 bounces) instead.
     #[arg(long)]

@@ -34,7 +34,8 @@ struct Cli {
     /// render (default 1024), the clean chapter 6 render of the headless
     /// summary (default 64), or every sampling chapter with --report or
     /// --chapter.
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    #[arg(long, value_name = "N",
+          value_parser = clap::value_parser!(u32).range(1..=raystep::core::run::MAX_SPP as i64))]
     spp: Option<u32>,
     /// Never open the terminal UI: render and print a summary.
     #[arg(long)]

@@ -17,6 +17,7 @@ mod layout;
 mod live_student;
 mod non_square;
 mod reports;
+mod sample_limit;
 mod scene_docs;
 mod scene_errors;
 mod unit;
