@@ -20,9 +20,13 @@ pub fn parse_obj(text: &str, file: &str) -> Result<Mesh> {
 
 /// [`parse_obj`] with a limit on the number of triangles.
 pub fn parse_obj_limited(text: &str, file: &str, max_triangles: usize) -> Result<Mesh> {
+    // A UTF-8 byte order mark would glue itself to the first keyword (and
+    // the first vertex would vanish).
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let text = normalize_line_endings(text);
+    check_obj(text.as_ref(), file, max_triangles)?;
+    let text = surfaces_only(text.as_ref());
     let text = text.as_ref();
-    check_obj(text, file, max_triangles)?;
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: false,
@@ -61,6 +65,25 @@ pub fn parse_obj_limited(text: &str, file: &str, max_triangles: usize) -> Result
         });
     }
     Ok(mesh)
+}
+
+/// The text with every polyline (`l`) and point (`p`) line blanked, after
+/// [`check_obj`] has checked their indices: they are not surfaces, and
+/// tobj would otherwise fill some of them in as triangles. Blanked, not
+/// removed, so that line numbers stay.
+fn surfaces_only(text: &str) -> std::borrow::Cow<'_, str> {
+    let is_line = |l: &str| matches!(l.split_whitespace().next(), Some("l" | "p"));
+    if !text.lines().any(is_line) {
+        return text.into();
+    }
+    let mut out = String::with_capacity(text.len());
+    for l in text.lines() {
+        if !is_line(l) {
+            out.push_str(l);
+        }
+        out.push('\n');
+    }
+    out.into()
 }
 
 fn stem(file: &str) -> String {
@@ -108,6 +131,9 @@ fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
     };
     // Vertices, texture coordinates and normals defined so far.
     let mut counts = [0i64; 3];
+    // The vertices, to tell a convex polygon (split into a fan of
+    // triangles) from a concave one (which a fan would cover wrongly).
+    let mut positions: Vec<Vec3> = Vec::new();
     let mut first_colour: Option<(bool, usize)> = None;
     let mut faces = 0usize;
     let mut triangles = 0usize;
@@ -151,6 +177,8 @@ fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
                     Some(_) => {}
                 }
                 counts[0] += 1;
+                let w = if xyz.len() == 4 { xyz[3] } else { 1.0 };
+                positions.push(Vec3::new(xyz[0], xyz[1], xyz[2]) / w);
             }
             "vt" | "vn" => {
                 let need = if kind == "vt" { 2 } else { 3 };
@@ -173,6 +201,26 @@ fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
                 for c in &rest {
                     check_corner(c, &counts).map_err(|why| err(line, why))?;
                 }
+                if rest.len() > 3 {
+                    let corners: Vec<Vec3> = rest
+                        .iter()
+                        .map(|c| {
+                            let i: i64 = c.split('/').next().unwrap_or("").parse().unwrap_or(1);
+                            let i = if i < 0 { counts[0] + i } else { i - 1 };
+                            positions[i as usize]
+                        })
+                        .collect();
+                    if !is_convex(&corners) {
+                        return Err(err(
+                            line,
+                            format!(
+                                "a concave polygon of {} vertices: a fan of \
+                                 triangles would cover the wrong area; split it into triangles",
+                                rest.len()
+                            ),
+                        ));
+                    }
+                }
                 faces += 1;
                 triangles += rest.len() - 2;
                 if triangles > max_triangles {
@@ -180,6 +228,14 @@ fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
                         line,
                         format!("more than {max_triangles} triangles, the most this file may add (raise the limit with --max-triangles)"),
                     ));
+                }
+            }
+            "l" | "p" => {
+                // Polylines and points draw nothing, but their indices must
+                // exist like a face's.
+                for c in &rest {
+                    check_corner(c, &counts)
+                        .map_err(|why| err(line, format!("`{kind}` line: {why}")))?;
                 }
             }
             _ => {}
@@ -196,6 +252,29 @@ fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
         });
     }
     Ok(())
+}
+
+/// Whether a polygon's corners turn the same way all round (about its
+/// Newell normal): then the fan from its first corner covers it exactly.
+/// Collinear corners count as turning either way.
+fn is_convex(corners: &[Vec3]) -> bool {
+    let n = corners.len();
+    let normal = (0..n).fold(Vec3::ZERO, |acc, i| {
+        let (a, b) = (corners[i], corners[(i + 1) % n]);
+        acc + Vec3::new(
+            (a.y - b.y) * (a.z + b.z),
+            (a.z - b.z) * (a.x + b.x),
+            (a.x - b.x) * (a.y + b.y),
+        )
+    });
+    let scale = corners
+        .iter()
+        .map(|p| (*p - corners[0]).length_squared())
+        .fold(0.0f32, f32::max);
+    (0..n).all(|i| {
+        let (a, b, c) = (corners[i], corners[(i + 1) % n], corners[(i + 2) % n]);
+        (b - a).cross(c - b).dot(normal) >= -1e-6 * scale * normal.length()
+    })
 }
 
 /// One face corner `v`, `v/vt`, `v//vn` or `v/vt/vn`: every index given is

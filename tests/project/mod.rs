@@ -16,6 +16,7 @@ mod hostile_bvh;
 mod layout;
 mod live_student;
 mod non_square;
+mod obj_quirks;
 mod reports;
 mod sample_limit;
 mod scene_docs;
