@@ -198,12 +198,14 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     } else {
         (error, detail)
     };
+    // Off by (b − a): the constant 1 on [0, 2] comes out as 1, not 2.
+    let unit = f(&|_| 1.0, 0.0, 2.0, &[0.25, 0.75]);
     Check {
         error,
         tolerance: 1e-3,
         detail,
         images: None,
-        symptom: None,
+        symptom: (error > 1e-3 && (unit - 1.0).abs() < 1e-9).then_some(NO_INTERVAL),
     }
 }
 
@@ -211,12 +213,19 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
 /// actually ends paths: the fraction of zeros is 1 - q.
 pub fn check_russian_roulette(f: RouletteFn) -> Check {
     let n = 10_000;
+    let mut symptom = None;
     let (error, detail) = worst_of([(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0)].into_iter().map(
         |(value, q): (f64, f64)| {
             let outs: Vec<f64> = (0..n).map(|i| f(value, q, (i as f64 + 0.5) / n as f64)).collect();
             let mean = outs.iter().sum::<f64>() / n as f64;
             let killed = outs.iter().filter(|o| **o == 0.0).count() as f64 / n as f64;
-            let err = ((mean - value).abs() / value).max((killed - (1.0 - q)).abs());
+            let (bias, fraction) = ((mean - value).abs() / value, (killed - (1.0 - q)).abs());
+            if fraction > 2e-3 {
+                symptom = Some(ROULETTE_WRONG_FRACTION);
+            } else if bias > 2e-3 && symptom.is_none() {
+                symptom = Some(ROULETTE_BIASED);
+            }
+            let err = bias.max(fraction);
             (
                 err,
                 format!(
@@ -232,7 +241,7 @@ pub fn check_russian_roulette(f: RouletteFn) -> Check {
         tolerance: 2e-3,
         detail,
         images: None,
-        symptom: None,
+        symptom: if error > 2e-3 { symptom } else { None },
     }
 }
 
@@ -276,11 +285,20 @@ pub fn check_mis_weight(f: WeightFn) -> Check {
         error = 1.0;
         detail = format!("the MIS estimate of ∫₀¹ 3x² dx = 1 is biased (z = {z:.1})");
     }
+    let symptom = if error <= 1e-6 {
+        None
+    } else if (f(2.0, 1.0) - 2.0 / 3.0).abs() < 1e-9 {
+        Some(BALANCE_HEURISTIC)
+    } else if !(f(1e200, 1e199).is_finite() && f(0.0, 0.0).is_finite() && f(0.0, 5.0) == 0.0) {
+        Some(WEIGHT_NOT_FINITE)
+    } else {
+        None
+    };
     Check {
         error,
         tolerance: 1e-6,
         detail,
         images: None,
-        symptom: None,
+        symptom,
     }
 }

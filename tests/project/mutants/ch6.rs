@@ -327,3 +327,38 @@ fn the_scene_building_blocks_run_inside_a_students_call() {
         },
     );
 }
+
+// The smaller exercises' common mistakes.
+
+#[test]
+fn an_integral_without_the_interval_is_named() {
+    let check = ch6::check_mc_integral(|f, a, b, u| {
+        u.iter().map(|u| f(a + u * (b - a))).sum::<f64>() / u.len() as f64
+    });
+    fails_with(check, ch6::NO_INTERVAL);
+}
+
+#[test]
+fn roulette_mistakes_are_named() {
+    fails_with(
+        ch6::check_russian_roulette(|v, q, u| if u < q { v } else { 0.0 }),
+        ch6::ROULETTE_BIASED,
+    );
+    // Survives when u > q: the wrong fraction ends.
+    fails_with(
+        ch6::check_russian_roulette(|v, q, u| if u > q { v / q } else { 0.0 }),
+        ch6::ROULETTE_WRONG_FRACTION,
+    );
+}
+
+#[test]
+fn mis_weight_mistakes_are_named() {
+    fails_with(
+        ch6::check_mis_weight(|f, g| if f + g > 0.0 { f / (f + g) } else { 0.0 }),
+        ch6::BALANCE_HEURISTIC,
+    );
+    fails_with(
+        ch6::check_mis_weight(|f, g| f * f / (f * f + g * g)),
+        ch6::WEIGHT_NOT_FINITE,
+    );
+}

@@ -1,0 +1,349 @@
+//! Chapter 5's capstone, `direct_light`: one light-sampling estimate of
+//! the radiance reflected at p from a point y drawn uniformly by area on
+//! an area light. Its check, clause by clause of the stub's contract:
+//!
+//! 1. Hand-worked cases (exact: the function is deterministic), each
+//!    changing one factor of f · Le · cos θ · cos θl / d² · A at a time:
+//!    the BRDF ρ/π, cos θ at p, cos θl at the light, d², the area A; and
+//!    the cases that must give exactly 0: the light's back face (it emits
+//!    from its front face only), a light below p's surface, a light in
+//!    p's plane, and a blocked segment. The visibility callback answers
+//!    for the segment (p, y) and records any other endpoints it is asked
+//!    about. Relative tolerance 10⁻⁴: f32 rounding of these cases is below
+//!    10⁻⁶ (measured with the two correct alternatives of the mutant
+//!    tests: largest 2·10⁻⁷).
+//! 2. The Cornell box (`cornell-box.toml`, 48 × 48, 32 light samples per
+//!    pixel), the candidate and the reference fed the same points on the
+//!    light: each pixel's mean must agree within 10⁻³ of the brightest
+//!    pixel (formulations differ by f32 rounding, 10⁻⁶ relative, and by a
+//!    sign at grazing angles where both are ~10⁻⁷). Its images are the
+//!    check's images.
+
+use std::cell::RefCell;
+use std::f32::consts::{FRAC_1_PI, PI};
+
+use glam::{Vec2, Vec3};
+
+use super::super::images;
+use crate::ch1_projection::camera::Camera;
+use crate::core::sampling::random;
+use crate::grading::exercise::{Check, Symptom};
+
+/// The capstone's candidate: (p, n, ρ, y, n_light, A, Le, visible) to one
+/// sample of the reflected radiance.
+pub type DirectFn =
+    fn(Vec3, Vec3, Vec3, Vec3, Vec3, f32, Vec3, &dyn Fn(Vec3, Vec3) -> bool) -> Vec3;
+
+/// raystep's answer to the capstone.
+#[allow(clippy::too_many_arguments)]
+pub fn reference_direct(
+    p: Vec3,
+    n: Vec3,
+    rho: Vec3,
+    y: Vec3,
+    n_light: Vec3,
+    area: f32,
+    le: Vec3,
+    visible: &dyn Fn(Vec3, Vec3) -> bool,
+) -> Vec3 {
+    crate::core::guard::reference("ch5/direct_light");
+    let to = y - p;
+    let d2 = to.length_squared();
+    let wi = to / d2.sqrt();
+    let (cos, cos_l) = (n.dot(wi), n_light.dot(-wi));
+    if !(cos > 0.0 && cos_l > 0.0 && d2 > 0.0 && visible(p, y)) {
+        return Vec3::ZERO;
+    }
+    rho * FRAC_1_PI * le * cos * cos_l / d2 * area
+}
+
+/// ρ instead of ρ/π (or π twice).
+pub const BRDF_PI: Symptom = Symptom {
+    name: "off by π: the BRDF",
+    hint: "slide \"Bidirectional reflectance distribution function\": an ideal diffuse surface of albedo ρ has f = ρ/π, the constant whose integral ∫ f cos θ dω over the hemisphere is ρ.",
+};
+/// cos θ at the shading point missing or wrong.
+pub const COS_SURFACE: Symptom = Symptom {
+    name: "the cosine at the shading point",
+    hint: "slide \"Radiometry Lambert's law\": light arriving at angle θ to p's normal delivers cos θ = n · wi of its radiance per unit area, with wi the unit direction from p to y.",
+};
+/// The area-to-solid-angle Jacobian (d², cos θl) missing or wrong.
+pub const JACOBIAN: Symptom = Symptom {
+    name: "the area-to-solid-angle conversion",
+    hint: "slide \"Radiometry Solid angle\": a patch dA at distance d, tilted by θl from the direction to p, covers dω = cos θl dA / d². A point drawn with pdf_A = 1/A per area has pdf_ω = d² / (cos θl · A) per steradian.",
+};
+/// The area A used wrongly.
+pub const AREA: Symptom = Symptom {
+    name: "the light's area",
+    hint: "book \"The reflection equation\" (light sampling): a point uniform over area A has density pdf_A = 1/A, and the estimate divides by the density: it grows with A.",
+};
+/// Light from the back face of a one-sided light.
+pub const TWO_SIDED: Symptom = Symptom {
+    name: "light from the back of a one-sided light",
+    hint: "book \"Lights\": an area light emits from its front face only, the side n_light points to: nothing when cos θl = n_light · (−wi) ≤ 0 (not its absolute value).",
+};
+/// Light from below the surface.
+pub const BEHIND: Symptom = Symptom {
+    name: "light from below the surface",
+    hint: "slide \"Radiometry Lambert's law\": a light below p's surface (cos θ = n · wi ≤ 0) delivers nothing: clamp, do not let the cosine go negative or take its absolute value.",
+};
+/// Shadows ignored.
+pub const NO_SHADOW: Symptom = Symptom {
+    name: "no shadows",
+    hint: "book \"The reflection equation\": a light sample counts only if nothing blocks the segment from p to y: ask visible(p, y), and return 0 when it says no.",
+};
+/// The visibility callback asked about another segment.
+pub const WRONG_SEGMENT: Symptom = Symptom {
+    name: "the shadow test asks about the wrong segment",
+    hint: "book \"The reflection equation\": the shadow ray runs from the shading point to the light point: call visible(p, y) with exactly those two points, in that order.",
+};
+/// Off by a constant factor not explained above.
+pub const CONSTANT_FACTOR: Symptom = Symptom {
+    name: "off by a constant factor",
+    hint: "slide \"Reflection equation Multiple light sources\": one light sample is f · Le · cos θ / pdf_ω = (ρ/π) · Le · cos θ · cos θl / d² · A; compare each factor with yours.",
+};
+
+/// Every symptom [`check_direct_light`] can name.
+pub const SYMPTOMS: [Symptom; 9] = [
+    BRDF_PI,
+    COS_SURFACE,
+    JACOBIAN,
+    AREA,
+    TWO_SIDED,
+    BEHIND,
+    NO_SHADOW,
+    WRONG_SEGMENT,
+    CONSTANT_FACTOR,
+];
+
+/// One hand-worked case.
+struct Case {
+    what: &'static str,
+    n: Vec3,
+    y: Vec3,
+    n_light: Vec3,
+    area: f32,
+    blocked: bool,
+    /// The answer, from the closed form.
+    want: Vec3,
+}
+
+const RHO: Vec3 = Vec3::new(0.8, 0.5, 0.2);
+const LE: Vec3 = Vec3::new(4.0, 3.0, 2.0);
+
+fn cases() -> Vec<Case> {
+    let f = RHO / PI * LE;
+    let (s60, c60) = (60f32.to_radians().sin(), 0.5);
+    let case = |what, n, y, n_light, area, blocked, want| Case {
+        what,
+        n,
+        y,
+        n_light,
+        area,
+        blocked,
+        want,
+    };
+    let up = Vec3::new(0.0, 0.0, 2.0);
+    vec![
+        // cos θ = cos θl = 1, d² = 4, A = 0.5.
+        case("straight above", Vec3::Z, up, -Vec3::Z, 0.5, false, f * 0.5 / 4.0),
+        case("the surface tilted by 60°", Vec3::new(s60, 0.0, c60), up, -Vec3::Z, 0.5, false, f * 0.5 * 0.5 / 4.0),
+        case("the light tilted by 60°", Vec3::Z, up, -Vec3::new(s60, 0.0, c60), 0.5, false, f * 0.5 * 0.5 / 4.0),
+        case("twice as far", Vec3::Z, 2.0 * up, -Vec3::Z, 0.5, false, f * 0.5 / 16.0),
+        case("four times the area", Vec3::Z, up, -Vec3::Z, 2.0, false, f * 2.0 / 4.0),
+        // wi = (0.6, 0, 0.8): cos θ = cos θl = 0.8, d² = 25.
+        case("oblique, 5 m away", Vec3::Z, Vec3::new(3.0, 0.0, 4.0), -Vec3::Z, 1.0, false, f * 0.64 / 25.0),
+        case("the light's back face", Vec3::Z, up, Vec3::Z, 0.5, false, Vec3::ZERO),
+        case("a light below the surface", Vec3::Z, -up, Vec3::Z, 0.5, false, Vec3::ZERO),
+        case("a light in the surface's plane", Vec3::Z, Vec3::new(2.0, 0.0, 0.0), -Vec3::X, 0.5, false, Vec3::ZERO),
+        case("a blocked light", Vec3::Z, up, -Vec3::Z, 0.5, true, Vec3::ZERO),
+    ]
+}
+
+/// What the hand-worked cases found: (worst relative error, its detail,
+/// the symptom).
+fn hand_cases(f: DirectFn) -> (f64, String, Option<Symptom>) {
+    let p = Vec3::new(0.25, -0.5, 0.0);
+    let asked: RefCell<Vec<(Vec3, Vec3)>> = RefCell::new(Vec::new());
+    let mut ratios = Vec::new();
+    let mut worst = (0.0f64, String::from("every hand-worked case matches"), None);
+    for c in cases() {
+        let y = p + c.y;
+        let visible = |a: Vec3, b: Vec3| {
+            let same = (a - p).length() < 1e-5 && (b - y).length() < 1e-5;
+            if !same {
+                asked.borrow_mut().push((a, b));
+            }
+            // A blocker sits between p and y: a segment that reaches
+            // neither point's neighbourhood misses it.
+            !(c.blocked && same)
+        };
+        let got = f(p, c.n, RHO, y, c.n_light, c.area, LE, &visible);
+        let (err, symptom) = if c.want == Vec3::ZERO {
+            let s = match c.what {
+                "the light's back face" => TWO_SIDED,
+                "a light below the surface" => BEHIND,
+                "a blocked light" => NO_SHADOW,
+                _ => COS_SURFACE,
+            };
+            (got.abs().max_element() as f64 / 1e-3, s)
+        } else {
+            ratios.push((c.what, (got / c.want).element_sum() as f64 / 3.0));
+            (
+                ((got - c.want) / c.want).abs().max_element() as f64,
+                CONSTANT_FACTOR,
+            )
+        };
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        if err > worst.0 {
+            let detail = format!(
+                "{}: p {p}, n {:.3}, y {y}, n_light {:.3}, A {}, Le {LE}, ρ {RHO}{}: got {got}, expected {}",
+                c.what, c.n, c.n_light, c.area,
+                if c.blocked { ", blocked" } else { "" },
+                c.want
+            );
+            worst = (err, detail, Some(symptom));
+        }
+    }
+    let (error, mut detail, symptom) = worst;
+    if error <= 1e-4 {
+        return (error, detail, None);
+    }
+    if let Some((a, b)) = asked.borrow().first() {
+        detail = format!("visible was asked about the segment {a} → {b}, not p → y; {detail}");
+        return (error, detail, Some(WRONG_SEGMENT));
+    }
+    // Which factor: each case differs from "straight above" by one.
+    let base = ratios[0].1;
+    let differs = |what: &str| {
+        ratios
+            .iter()
+            .any(|(w, r)| *w == what && ((r - base) / base).abs() > 1e-4)
+    };
+    let symptom = if differs("the surface tilted by 60°") {
+        Some(COS_SURFACE)
+    } else if differs("the light tilted by 60°") || differs("twice as far") {
+        Some(JACOBIAN)
+    } else if differs("four times the area") {
+        Some(AREA)
+    } else if [PI as f64, 1.0 / PI as f64]
+        .iter()
+        .any(|k| ((base - k) / k).abs() < 1e-3)
+    {
+        Some(BRDF_PI)
+    } else if symptom == Some(CONSTANT_FACTOR) || !(base.is_finite()) {
+        Some(CONSTANT_FACTOR)
+    } else {
+        symptom
+    };
+    (error, detail, symptom)
+}
+
+/// The Cornell box lit directly by its ceiling light, `g` at the first
+/// surface of each pixel centre's ray, `spp` light points per pixel.
+fn cornell(g: DirectFn, spp: u32) -> images::Estimate {
+    use crate::ch5_reflection::light::Light;
+    use crate::ch5_reflection::warp::uniform_triangle;
+    use crate::ch5_reflection::world::World;
+    let scene = images::scene("cornell-box.toml");
+    let camera = Camera::of(&scene)
+        .with_resolution(48, 48)
+        .expect("a valid camera");
+    let world = World::new(&scene);
+    let light = world
+        .lights
+        .lights
+        .iter()
+        .find_map(|l| match l {
+            Light::Area(a) => Some(a),
+            _ => None,
+        })
+        .expect("the Cornell box has an area light");
+    let (w, h) = (camera.width, camera.height);
+    let sample = |x: u32, y: u32, s: u32| -> Vec3 {
+        let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
+        let Some(it) = world.intersect(&ray) else {
+            return Vec3::ZERO;
+        };
+        let m = &world.materials[it.material];
+        if m.is_emissive() {
+            return m.emission;
+        }
+        let n = if it.n.dot(ray.dir) > 0.0 { -it.n } else { it.n };
+        let pixel = (y * w + x) as u64;
+        let r = |d: u64| random(502, pixel, s as u64, d);
+        // A point uniform by area: a triangle by area, then a point in it.
+        let k = light
+            .cdf
+            .partition_point(|c| *c <= r(0) * light.area)
+            .min(light.cdf.len() - 1);
+        let [a, b, c] = light.triangles[k];
+        let bary = uniform_triangle(Vec2::new(r(2), r(1)));
+        let point = bary.x * a + bary.y * b + bary.z * c;
+        let visible = |p: Vec3, q: Vec3| {
+            let to = q - p;
+            let d = to.length();
+            d > 0.0 && world.unoccluded(p, n, to / d, d)
+        };
+        if x == 0 && s == 0 {
+            crate::grading::progress(format_args!(
+                "calling direct_light for row {y} of {h}: p = {:.3}, n = {:.3}, light point {point:.3}",
+                it.p, n
+            ));
+        }
+        g(
+            it.p,
+            n,
+            m.reflectance,
+            point,
+            light.normals[k],
+            light.area,
+            light.le,
+            &visible,
+        )
+    };
+    images::Estimate::gather(w, h, spp, &sample)
+}
+
+/// The capstone (see the module's doc): the hand-worked cases, then the
+/// Cornell box with the same light points as the reference.
+pub fn check_direct_light(f: DirectFn) -> Check {
+    let (error, detail, symptom) = hand_cases(f);
+    let student = cornell(f, 32);
+    let reference = cornell(reference_direct, 32);
+    let brightest = reference
+        .mean
+        .pixels
+        .iter()
+        .map(|p| p.max_element())
+        .fold(0.0f32, f32::max);
+    let picture = images::compare(
+        student.mean,
+        reference.mean,
+        1e-3 * brightest,
+        0.0,
+        "reflected radiance",
+        &|_, _| String::from("the same light points as the reference"),
+    );
+    if error > 1e-4 {
+        return Check {
+            error,
+            tolerance: 1e-4,
+            detail,
+            images: picture.images,
+            symptom,
+        };
+    }
+    Check {
+        // A picture that differs fails even when every hand case matched.
+        error: if picture.passed() { error } else { 1.0 },
+        tolerance: 1e-4,
+        detail: if picture.passed() {
+            format!("{detail}; Cornell box: {}", picture.detail)
+        } else {
+            format!("every hand-worked case matches, but in the Cornell box {}", picture.detail)
+        },
+        images: picture.images,
+        symptom: None,
+    }
+}
