@@ -36,6 +36,7 @@ pub const UNIFORM_SPHERE_PDF: f32 = 0.25 * FRAC_1_PI;
 
 /// A point uniformly distributed on the unit disk, by Shirley and Chiu's
 /// concentric map (it keeps neighbouring samples neighbours).
+// ANCHOR: concentric_disk
 pub fn concentric_disk(u: Vec2) -> Vec2 {
     let o = 2.0 * u - Vec2::ONE;
     if o == Vec2::ZERO {
@@ -48,6 +49,7 @@ pub fn concentric_disk(u: Vec2) -> Vec2 {
     };
     r * Vec2::new(theta.cos(), theta.sin())
 }
+// ANCHOR_END: concentric_disk
 
 /// A cosine-weighted direction on the hemisphere z ≥ 0 (Malley's method:
 /// a uniform point on the disk, lifted to the hemisphere).

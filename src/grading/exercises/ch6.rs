@@ -67,7 +67,7 @@ pub fn exercises() -> Vec<Exercise> {
                 "survive when u < q and return value / q; otherwise return 0",
             ],
             symptoms: &[ROULETTE_BIASED, ROULETTE_WRONG_FRACTION],
-            reference: || check_russian_roulette(|v, q, u| if u < q { v / q } else { 0.0 }),
+            reference: || check_russian_roulette(reference_roulette),
         },
         Exercise {
             chapter: 6,
@@ -108,10 +108,25 @@ fn reference_weight(f: f64, g: f64) -> f64 {
     1.0 / (1.0 + r * r)
 }
 
+/// Exercise 6.1's answer: x = a + u (b − a) is uniform on [a, b], with
+/// density 1/(b − a), so f(x)/p(x) = (b − a) f(x).
+// ANCHOR: mc_integral
 fn reference_integral(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64 {
     let sum: f64 = u.iter().map(|u| f(a + u * (b - a))).sum();
     (b - a) * sum / u.len().max(1) as f64
 }
+// ANCHOR_END: mc_integral
+
+/// Exercise 6.2's answer: survive with probability q, carry value / q.
+// ANCHOR: russian_roulette
+fn reference_roulette(value: f64, q: f64, u: f64) -> f64 {
+    if u < q {
+        value / q
+    } else {
+        0.0
+    }
+}
+// ANCHOR_END: russian_roulette
 
 /// Seeded uniform numbers.
 fn uniforms(seed: u64, n: usize) -> Vec<f64> {

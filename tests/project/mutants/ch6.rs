@@ -5,9 +5,9 @@
 use std::f32::consts::FRAC_1_PI;
 
 use glam::{Vec2, Vec3};
+use raystep::grading::exercise::{Check, Symptom};
 use raystep::grading::exercises::ch6;
 use raystep::grading::exercises::paths::{self, check_path_radiance, PathScene};
-use raystep::grading::exercise::{Check, Symptom};
 
 /// What a mutant of the path loop gets wrong (`None`: nothing).
 #[derive(Clone, Copy, PartialEq)]
@@ -69,7 +69,11 @@ fn path(
                 let cos = hit.n.dot(ls.wi);
                 let visible = bug == Bug::NoShadowRay || scene.unoccluded(&hit, ls.wi, ls.dist);
                 if cos > 0.0 && visible {
-                    let c = if bug == Bug::LightWithoutCos { 1.0 } else { cos };
+                    let c = if bug == Bug::LightWithoutCos {
+                        1.0
+                    } else {
+                        cos
+                    };
                     l += beta * f * ls.le * c / ls.pdf;
                 }
             }
@@ -162,7 +166,11 @@ fn roulette_without_dividing_by_q_is_too_dark() {
 fn a_fixed_depth_is_a_bias_in_a_closed_room() {
     let check = mutant!(Bug::FixedDepth);
     fails_with(check.clone(), paths::DEPTH_CAP);
-    assert!(check.detail.contains("at exactly 7 bounces"), "{}", check.detail);
+    assert!(
+        check.detail.contains("at exactly 7 bounces"),
+        "{}",
+        check.detail
+    );
     fails_with(mutant!(Bug::RouletteAndCap), paths::DEPTH_CAP);
 }
 
@@ -232,10 +240,9 @@ fn recursive(scene: &PathScene, origin: Vec3, dir: Vec3, rng: &mut dyn FnMut() -
     }
 }
 
-/// A correct alternative: roulette at every surface before its light
-/// sample (a survivor of probability q carries 1/q of everything after),
-/// a constant q = 0.8 (above ρ² = 0.72 of the furnace, so the variance
-/// stays finite), in f64.
+/// A correct alternative: roulette at every surface but the first,
+/// before its light sample (a survivor of probability q carries 1/q of
+/// everything after), q the mean of β's channels (at most 1), in f64.
 fn roulette_first(
     scene: &PathScene,
     origin: Vec3,
@@ -250,7 +257,7 @@ fn roulette_first(
     let mut first = true;
     loop {
         if !first {
-            let q = 0.8;
+            let q = (beta.element_sum() / 3.0).min(1.0);
             if (rng() as f64) >= q {
                 break;
             }

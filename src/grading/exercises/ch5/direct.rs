@@ -146,17 +146,97 @@ fn cases() -> Vec<Case> {
     let up = Vec3::new(0.0, 0.0, 2.0);
     vec![
         // cos θ = cos θl = 1, d² = 4, A = 0.5.
-        case("straight above", Vec3::Z, up, -Vec3::Z, 0.5, false, f * 0.5 / 4.0),
-        case("the surface tilted by 60°", Vec3::new(s60, 0.0, c60), up, -Vec3::Z, 0.5, false, f * 0.5 * 0.5 / 4.0),
-        case("the light tilted by 60°", Vec3::Z, up, -Vec3::new(s60, 0.0, c60), 0.5, false, f * 0.5 * 0.5 / 4.0),
-        case("twice as far", Vec3::Z, 2.0 * up, -Vec3::Z, 0.5, false, f * 0.5 / 16.0),
-        case("four times the area", Vec3::Z, up, -Vec3::Z, 2.0, false, f * 2.0 / 4.0),
+        case(
+            "straight above",
+            Vec3::Z,
+            up,
+            -Vec3::Z,
+            0.5,
+            false,
+            f * 0.5 / 4.0,
+        ),
+        case(
+            "the surface tilted by 60°",
+            Vec3::new(s60, 0.0, c60),
+            up,
+            -Vec3::Z,
+            0.5,
+            false,
+            f * 0.5 * 0.5 / 4.0,
+        ),
+        case(
+            "the light tilted by 60°",
+            Vec3::Z,
+            up,
+            -Vec3::new(s60, 0.0, c60),
+            0.5,
+            false,
+            f * 0.5 * 0.5 / 4.0,
+        ),
+        case(
+            "twice as far",
+            Vec3::Z,
+            2.0 * up,
+            -Vec3::Z,
+            0.5,
+            false,
+            f * 0.5 / 16.0,
+        ),
+        case(
+            "four times the area",
+            Vec3::Z,
+            up,
+            -Vec3::Z,
+            2.0,
+            false,
+            f * 2.0 / 4.0,
+        ),
         // wi = (0.6, 0, 0.8): cos θ = cos θl = 0.8, d² = 25.
-        case("oblique, 5 m away", Vec3::Z, Vec3::new(3.0, 0.0, 4.0), -Vec3::Z, 1.0, false, f * 0.64 / 25.0),
-        case("the light's back face", Vec3::Z, up, Vec3::Z, 0.5, false, Vec3::ZERO),
-        case("a light below the surface", Vec3::Z, -up, Vec3::Z, 0.5, false, Vec3::ZERO),
-        case("a light in the surface's plane", Vec3::Z, Vec3::new(2.0, 0.0, 0.0), -Vec3::X, 0.5, false, Vec3::ZERO),
-        case("a blocked light", Vec3::Z, up, -Vec3::Z, 0.5, true, Vec3::ZERO),
+        case(
+            "oblique, 5 m away",
+            Vec3::Z,
+            Vec3::new(3.0, 0.0, 4.0),
+            -Vec3::Z,
+            1.0,
+            false,
+            f * 0.64 / 25.0,
+        ),
+        case(
+            "the light's back face",
+            Vec3::Z,
+            up,
+            Vec3::Z,
+            0.5,
+            false,
+            Vec3::ZERO,
+        ),
+        case(
+            "a light below the surface",
+            Vec3::Z,
+            -up,
+            Vec3::Z,
+            0.5,
+            false,
+            Vec3::ZERO,
+        ),
+        case(
+            "a light in the surface's plane",
+            Vec3::Z,
+            Vec3::new(2.0, 0.0, 0.0),
+            -Vec3::X,
+            0.5,
+            false,
+            Vec3::ZERO,
+        ),
+        case(
+            "a blocked light",
+            Vec3::Z,
+            up,
+            -Vec3::Z,
+            0.5,
+            true,
+            Vec3::ZERO,
+        ),
     ]
 }
 
@@ -341,7 +421,10 @@ pub fn check_direct_light(f: DirectFn) -> Check {
         detail: if picture.passed() {
             format!("{detail}; Cornell box: {}", picture.detail)
         } else {
-            format!("every hand-worked case matches, but in the Cornell box {}", picture.detail)
+            format!(
+                "every hand-worked case matches, but in the Cornell box {}",
+                picture.detail
+            )
         },
         images: picture.images,
         symptom: None,

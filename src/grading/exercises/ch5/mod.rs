@@ -101,7 +101,7 @@ pub fn exercises() -> Vec<Exercise> {
             name: "point_light",
             file: "chapters/ch5-reflection/exercises/point_light.rs",
             hints: [
-                "slides \"Radiometry Types of light Isotropic point source\" and \"Radiometry Lambert's law\": intensity spreads over the sphere of radius r, and a tilted surface catches less.",
+                "slide \"Radiometry Types of light Isotropic point source\" and slide \"Radiometry Lambert's law\": intensity spreads over the sphere of radius r, and a tilted surface catches less.",
                 "1. the vector from p to the light, its length r and unit direction; 2. cos θ between n and that direction, clamped at zero (light behind the surface does nothing); 3. the inverse-square law divides I by r², Lambert's law multiplies by cos θ.",
                 "to = light - p; r² = to.length_squared(); cos = max(0, n · to/|to|); I cos / r²",
             ],
@@ -135,7 +135,7 @@ pub fn exercises() -> Vec<Exercise> {
             name: "direct_light",
             file: "chapters/ch5-reflection/exercises/direct_light.rs",
             hints: [
-                "slides \"Reflection equation Multiple light sources\" and \"Radiometry Solid angle\": one light sample is f · Le · cos θ / pdf_ω, and a point drawn uniformly on the light has pdf_A = 1/A per area, not per solid angle.",
+                "slide \"Reflection equation Multiple light sources\" and slide \"Radiometry Solid angle\": one light sample is f · Le · cos θ / pdf_ω, and a point drawn uniformly on the light has pdf_A = 1/A per area, not per solid angle.",
                 "1. wi = (y − p)/d and d; 2. cos θ = n · wi at p and cos θl = n_light · (−wi) at the light: nothing if either is ≤ 0 (p faces away, or y shows its back face); 3. nothing if !visible(p, y); 4. f = ρ/π; 5. pdf_ω = pdf_A · d² / cos θl with pdf_A = 1/A; 6. f · Le · cos θ / pdf_ω.",
                 "wi = (y - p) / d; cos = n·wi; cos_l = n_light·(-wi); if cos <= 0 || cos_l <= 0 || !visible(p, y) { 0 } else { rho / π · le · cos · cos_l / d² · area }",
             ],

@@ -272,7 +272,8 @@ pub fn judge_furnace(f: PathFn, r: &FurnaceRun, n: u64) -> (f64, String, Option<
     }
     // Which hypothesis fits the mean (within 5 standard errors or 1%).
     let fits = |h: DVec3| {
-        (((mean - h).abs() / se).max_element() <= 5.0) || ((mean - h) / h).abs().max_element() < 0.01
+        (((mean - h).abs() / se).max_element() <= 5.0)
+            || ((mean - h) / h).abs().max_element() < 0.01
     };
     let symptom = if fits(want - le) {
         Some(NO_FIRST_EMISSION)
@@ -373,7 +374,10 @@ pub fn check_path_radiance(f: PathFn) -> Check {
             Some(CORNELL_DIFFERS),
         )
     } else {
-        (format!("{fdetail}; Cornell box: {}", box_check.detail), None)
+        (
+            format!("{fdetail}; Cornell box: {}", box_check.detail),
+            None,
+        )
     };
     Check {
         error,
