@@ -361,7 +361,7 @@ fn area_pdf_symptom(f: AreaPdfFn) -> Option<Symptom> {
     let y = Vec3::new(0.0, 0.0, 2.0);
     let front = f(0.5, Vec3::ZERO, y, -Vec3::Z);
     let back = f(0.5, Vec3::ZERO, y, Vec3::Z);
-    if !(back > 0.0) && front > 0.0 {
+    if back.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) && front > 0.0 {
         Some(PDF_SIGN)
     } else if ((front - 2.0) / 2.0).abs() > 1e-4 || ((back - 2.0) / 2.0).abs() > 1e-4 {
         Some(PDF_JACOBIAN)

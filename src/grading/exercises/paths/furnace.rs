@@ -70,13 +70,13 @@ impl Furnace {
         let y = Vec3::new(r * phi.cos(), r * phi.sin(), z);
         let to = y - at.p;
         let dist = to.length();
-        if !(dist > 1e-6) {
+        if dist.is_nan() || dist <= 1e-6 {
             return None;
         }
         let wi = to / dist;
         // The light's normal at y points inwards, −y.
         let cos_l = y.dot(wi);
-        if !(cos_l > 0.0) {
+        if cos_l.is_nan() || cos_l <= 0.0 {
             return None;
         }
         let pdf = dist * dist / (cos_l * 4.0 * std::f32::consts::PI);

@@ -192,7 +192,8 @@ impl PathScene {
         let mut over = false;
         count(|t| {
             t.bounces += 1;
-            t.below += u32::from(!(wi.dot(at.n) > 0.0));
+            let c = wi.dot(at.n);
+            t.below += u32::from(c.is_nan() || c <= 0.0);
             over = t.bounces > BOUNCE_BUDGET;
             t.over_budget |= over;
         });
