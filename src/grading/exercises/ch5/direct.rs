@@ -249,6 +249,7 @@ fn hand_cases(f: DirectFn) -> (f64, String, Option<Symptom>) {
     let asked: RefCell<Vec<(Vec3, Vec3)>> = RefCell::new(Vec::new());
     let mut ratios = Vec::new();
     let mut worst = (0.0f64, String::from("every hand-worked case matches"), None);
+    let facing = (RHO / PI * LE * 0.5 / 4.0).max_element() as f64;
     for c in cases() {
         let y = p + c.y;
         let visible = |a: Vec3, b: Vec3| {
@@ -268,7 +269,8 @@ fn hand_cases(f: DirectFn) -> (f64, String, Option<Symptom>) {
                 "a blocked light" => NO_SHADOW,
                 _ => COS_SURFACE,
             };
-            (got.abs().max_element() as f64 / 1e-3, s)
+            // Relative to what the same light would bring facing p.
+            (got.abs().max_element() as f64 / facing, s)
         } else {
             ratios.push((c.what, (got / c.want).element_sum() as f64 / 3.0));
             (
