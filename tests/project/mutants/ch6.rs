@@ -33,6 +33,9 @@ enum Bug {
     Backwards,
     /// No shadow ray for the light sample.
     NoShadowRay,
+    /// Casts the shadow ray but ignores its answer (light leaks through
+    /// the Cornell box's boxes; the furnace has nothing to block).
+    ShadowIgnored,
     /// The light sample without its cos θ at the hit.
     LightWithoutCos,
     /// No light sample at all (and no emission on bounces: only Le).
@@ -67,7 +70,14 @@ fn path(
         if bug != Bug::NoLightSample {
             if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
                 let cos = hit.n.dot(ls.wi);
-                let visible = bug == Bug::NoShadowRay || scene.unoccluded(&hit, ls.wi, ls.dist);
+                let visible = match bug {
+                    Bug::NoShadowRay => true,
+                    Bug::ShadowIgnored => {
+                        let _asked = scene.unoccluded(&hit, ls.wi, ls.dist);
+                        true
+                    }
+                    _ => scene.unoccluded(&hit, ls.wi, ls.dist),
+                };
                 if cos > 0.0 && visible {
                     let c = if bug == Bug::LightWithoutCos {
                         1.0
@@ -196,6 +206,11 @@ fn bouncing_below_the_surface_is_named() {
 fn light_samples_need_their_shadow_rays_and_surfaces_their_light_samples() {
     fails_with(mutant!(Bug::NoShadowRay), paths::NO_SHADOW_RAY);
     fails_with(mutant!(Bug::NoLightSample), paths::NO_NEE);
+}
+
+#[test]
+fn what_the_furnace_cannot_see_the_cornell_box_does() {
+    fails_with(mutant!(Bug::ShadowIgnored), paths::CORNELL_DIFFERS);
 }
 
 #[test]
