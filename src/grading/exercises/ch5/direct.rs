@@ -26,6 +26,7 @@ use std::f32::consts::{FRAC_1_PI, PI};
 use glam::{Vec2, Vec3};
 
 use super::super::images;
+use super::symptoms::*;
 use crate::ch1_projection::camera::Camera;
 use crate::core::film::Film;
 use crate::core::sampling::random;
@@ -58,65 +59,6 @@ pub fn reference_direct(
     }
     rho * FRAC_1_PI * le * cos * cos_l / d2 * area
 }
-
-/// ρ instead of ρ/π (or π twice).
-pub const BRDF_PI: Symptom = Symptom {
-    name: "off by π: the BRDF",
-    hint: "slide \"Bidirectional reflectance distribution function\": an ideal diffuse surface of albedo ρ has f = ρ/π, the constant whose integral ∫ f cos θ dω over the hemisphere is ρ.",
-};
-/// cos θ at the shading point missing or wrong.
-pub const COS_SURFACE: Symptom = Symptom {
-    name: "the cosine at the shading point",
-    hint: "slide \"Radiometry Lambert's law\": light arriving at angle θ to p's normal delivers cos θ = n · wi of its radiance per unit area, with wi the unit direction from p to y.",
-};
-/// The area-to-solid-angle Jacobian (d², cos θl) missing or wrong.
-pub const JACOBIAN: Symptom = Symptom {
-    name: "the area-to-solid-angle conversion",
-    hint: "slide \"Radiometry Solid angle\": a patch dA at distance d, tilted by θl from the direction to p, covers dω = cos θl dA / d². A point drawn with pdf_A = 1/A per area has pdf_ω = d² / (cos θl · A) per steradian.",
-};
-/// The area A used wrongly.
-pub const AREA: Symptom = Symptom {
-    name: "the light's area",
-    hint: "book \"The reflection equation\" (light sampling): a point uniform over area A has density pdf_A = 1/A, and the estimate divides by the density: it grows with A.",
-};
-/// Light from the back face of a one-sided light.
-pub const TWO_SIDED: Symptom = Symptom {
-    name: "light from the back of a one-sided light",
-    hint: "book \"Lights\": an area light emits from its front face only, the side n_light points to: nothing when cos θl = n_light · (−wi) ≤ 0 (not its absolute value).",
-};
-/// Light from below the surface.
-pub const BEHIND: Symptom = Symptom {
-    name: "light from below the surface",
-    hint: "slide \"Radiometry Lambert's law\": a light below p's surface (cos θ = n · wi ≤ 0) delivers nothing: clamp, do not let the cosine go negative or take its absolute value.",
-};
-/// Shadows ignored.
-pub const NO_SHADOW: Symptom = Symptom {
-    name: "no shadows",
-    hint: "book \"The reflection equation\": a light sample counts only if nothing blocks the segment from p to y: ask visible(p, y), and return 0 when it says no.",
-};
-/// The visibility callback asked about another segment.
-pub const WRONG_SEGMENT: Symptom = Symptom {
-    name: "the shadow test asks about the wrong segment",
-    hint: "book \"The reflection equation\": the shadow ray runs from the shading point to the light point: call visible(p, y) with exactly those two points, in that order.",
-};
-/// Off by a constant factor not explained above.
-pub const CONSTANT_FACTOR: Symptom = Symptom {
-    name: "off by a constant factor",
-    hint: "slide \"Reflection equation Multiple light sources\": one light sample is f · Le · cos θ / pdf_ω = (ρ/π) · Le · cos θ · cos θl / d² · A; compare each factor with yours.",
-};
-
-/// Every symptom [`check_direct_light`] can name.
-pub const SYMPTOMS: [Symptom; 9] = [
-    BRDF_PI,
-    COS_SURFACE,
-    JACOBIAN,
-    AREA,
-    TWO_SIDED,
-    BEHIND,
-    NO_SHADOW,
-    WRONG_SEGMENT,
-    CONSTANT_FACTOR,
-];
 
 /// One hand-worked case.
 struct Case {

@@ -2,7 +2,9 @@
 //! in [`direct`]).
 
 mod direct;
+mod symptoms;
 pub use direct::*;
+pub use symptoms::*;
 
 use std::f32::consts::FRAC_1_PI;
 
@@ -19,52 +21,6 @@ type BrdfFn = fn(Vec3, Vec3, Vec3) -> Vec3;
 type CosineFn = fn(Vec2) -> (Vec3, f32);
 type PointFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
 type AreaPdfFn = fn(f32, Vec3, Vec3, Vec3) -> f32;
-
-/// The Lambertian BRDF without its 1/π (or with it twice).
-pub const LAMBERT_PI: Symptom = Symptom {
-    name: "off by π",
-    hint: "slide \"Bidirectional reflectance distribution function\" and book \"BRDFs\": the constant f with ∫ f cos θ dω = ρ over the hemisphere is ρ/π, because ∫ cos θ dω = π.",
-};
-/// The BRDF reflects only above z = 0 (not two-sided).
-pub const LAMBERT_ONE_SIDED: Symptom = Symptom {
-    name: "nothing below the surface",
-    hint: "book \"BRDFs\": every raystep BRDF is two-sided: it reflects on whichever side the viewer is. Test that ωo and ωi are on the same side (z of the same sign), not that both are above.",
-};
-/// Directions that are not unit vectors on the upper hemisphere.
-pub const NOT_ON_HEMISPHERE: Symptom = Symptom {
-    name: "not a unit direction on the hemisphere",
-    hint: "book \"Cosine-weighted directions\": a point (x, y) of the unit disk lifts to z = √(1 − x² − y²), so the direction has length 1 and z ≥ 0.",
-};
-/// A pdf that is not cos θ / π.
-pub const COSINE_PDF: Symptom = Symptom {
-    name: "the pdf is not cos θ / π",
-    hint: "book \"Cosine-weighted directions\": Malley's method gives the density cos θ / π per steradian; the π makes it integrate to 1 over the hemisphere.",
-};
-/// Directions not distributed as cos θ / π.
-pub const NOT_COSINE: Symptom = Symptom {
-    name: "directions not distributed as cos θ",
-    hint: "book \"Cosine-weighted directions\": the disk point must be uniform by area: the area inside radius r grows as r², so r = √u, not u.",
-};
-/// The inverse-square law missed.
-pub const INVERSE_SQUARE: Symptom = Symptom {
-    name: "the inverse-square law",
-    hint: "slide \"Radiometry Types of light Isotropic point source\" and book \"Lights\": intensity I spreads over a sphere of area 4π r², so E falls as 1/r² (r², not r).",
-};
-/// Light from behind the surface.
-pub const POINT_BEHIND: Symptom = Symptom {
-    name: "light from behind the surface",
-    hint: "slide \"Radiometry Lambert's law\": cos θ < 0 means the light is behind the surface: it delivers nothing, so clamp cos θ at 0.",
-};
-/// The Jacobian of exercise 5.4 wrong.
-pub const PDF_JACOBIAN: Symptom = Symptom {
-    name: "the area-to-solid-angle Jacobian",
-    hint: "slide \"Radiometry Solid angle\": dω = |cos θl| dA / d², so a density per area becomes one per steradian by multiplying by dA/dω = d² / |cos θl|.",
-};
-/// A negative density, or none, when the light is seen from behind.
-pub const PDF_SIGN: Symptom = Symptom {
-    name: "a density that is negative or missing",
-    hint: "book \"The reflection equation\": a density is never negative: the light's cos θl enters as |cos θl| (which face is lit is the light's business, not the pdf's), and 0 only edge-on.",
-};
 
 /// Chapter 5's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {
