@@ -103,7 +103,7 @@ fn the_path_capstone_passes_from_the_lecture_and_catches_mistakes() {
     let check = check_path_radiance(|s, o, d, r| lecture_path(s, o, d, r, true, false));
     assert!(!check.passed(), "{}", check.detail);
     assert!(
-        check.detail.contains("z = ") && check.detail.contains("block"),
+        check.detail.contains("z = ") && check.detail.contains("closed furnace"),
         "{}",
         check.detail
     );

@@ -6,11 +6,41 @@
 
 use super::worst_of;
 use crate::core::sampling::random;
-use crate::grading::exercise::{Check, Exercise};
+use crate::grading::exercise::{Check, Exercise, Symptom};
 
 type IntegralFn = fn(&dyn Fn(f64) -> f64, f64, f64, &[f64]) -> f64;
 type RouletteFn = fn(f64, f64, f64) -> f64;
 type WeightFn = fn(f64, f64) -> f64;
+
+/// The integral of [`check_mc_integral`] is off by the factor (b − a).
+pub const NO_INTERVAL: Symptom = Symptom {
+    name: "off by the length of the interval",
+    hint: "slide \"Monte-Carlo rendering Integration\": the slide's average estimates ∫₀¹; on [a, b] a uniform x has density 1/(b − a), and the estimator averages f(x)/p(x).",
+};
+
+/// Roulette that keeps the mean of [`check_russian_roulette`] wrong.
+pub const ROULETTE_BIASED: Symptom = Symptom {
+    name: "roulette changes the mean",
+    hint: "book \"Russian roulette\": a path survives with probability q, so its expected contribution is q times what a survivor carries; a survivor must carry value / q.",
+};
+
+/// Roulette that ends the wrong fraction of paths.
+pub const ROULETTE_WRONG_FRACTION: Symptom = Symptom {
+    name: "the wrong fraction of paths ends",
+    hint: "book \"Russian roulette\": q is the probability of surviving: with u uniform in [0, 1), u < q happens with probability q.",
+};
+
+/// The balance heuristic instead of the power heuristic.
+pub const BALANCE_HEURISTIC: Symptom = Symptom {
+    name: "the balance heuristic, not the power heuristic",
+    hint: "book \"Direct and indirect light, and two ways of sampling\": the power heuristic squares both densities, w_f = p_f² / (p_f² + p_g²).",
+};
+
+/// A weight that overflows or divides 0 by 0.
+pub const WEIGHT_NOT_FINITE: Symptom = Symptom {
+    name: "huge or zero densities break the weight",
+    hint: "book \"Direct and indirect light, and two ways of sampling\": p_f² overflows for densities above 10¹⁵⁴ and 0/0 is NaN; divide through by p_f: 1 / (1 + (p_g/p_f)²), and 0 when p_f = 0.",
+};
 
 /// Chapter 6's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {
@@ -20,11 +50,11 @@ pub fn exercises() -> Vec<Exercise> {
             name: "mc_integral",
             file: "chapters/ch6-global-illumination/exercises/mc_integral.rs",
             hints: [
-                "slide \"Monte Carlo integration\": the estimator is the average of f(x)/p(x) over samples x drawn with density p.",
-                "map u to x = a + u(b - a); a uniform x on [a, b] has the constant density 1/(b - a).",
+                "slide \"Monte-Carlo rendering Integration\" and book \"Why Monte Carlo\": the estimator averages f(x)/p(x) over samples x drawn with density p.",
+                "map each u to a point x of [a, b] so that x is uniform there; work out its density p(x) (it integrates to 1 over [a, b]); average f(x)/p(x) over all the numbers.",
                 "x = a + u (b - a) has density 1/(b - a): the estimate is (b - a) · mean of f(x)",
             ],
-            symptoms: &[],
+            symptoms: &[NO_INTERVAL],
             reference: || check_mc_integral(reference_integral),
         },
         Exercise {
@@ -32,23 +62,23 @@ pub fn exercises() -> Vec<Exercise> {
             name: "russian_roulette",
             file: "chapters/ch6-global-illumination/exercises/russian_roulette.rs",
             hints: [
-                "slide \"Russian roulette\": ending paths at random adds noise but must not change the expected value.",
-                "a survivor must carry more to make up for the paths that die: E = q · (what it carries) + (1 - q) · 0.",
+                "book \"Russian roulette\": ending paths at random adds noise but must not change the expected value.",
+                "decide survival with u so that it happens with probability q; write the expected result as q · (what a survivor carries) + (1 − q) · 0 and solve for what a survivor carries.",
                 "survive when u < q and return value / q; otherwise return 0",
             ],
-            symptoms: &[],
-            reference: || check_russian_roulette(|v, q, u| if u < q { v / q } else { 0.0 }),
+            symptoms: &[ROULETTE_BIASED, ROULETTE_WRONG_FRACTION],
+            reference: || check_russian_roulette(reference_roulette),
         },
         Exercise {
             chapter: 6,
             name: "mis_weight",
             file: "chapters/ch6-global-illumination/exercises/mis_weight.rs",
             hints: [
-                "slide \"multiple importance sampling\": a sample is weighted by how likely its own strategy was compared with the other's.",
-                "the power heuristic squares each density; mind 0/0 when both are 0 and overflow for huge densities (divide through by pdf_f).",
+                "book \"Direct and indirect light, and two ways of sampling\" and slide \"Monte-Carlo path tracing\" (importance sampling by BRDF and light): a sample is weighted by how likely its own strategy was compared with the other's.",
+                "square each density and divide; then handle the edges: p_f = 0 (the weight is 0, not 0/0) and densities so large that their squares overflow (divide numerator and denominator by p_f²).",
                 "f² / (f² + g²); write it as 1 / (1 + (g/f)²) so huge pdfs do not overflow, and 0 when f = 0",
             ],
-            symptoms: &[],
+            symptoms: &[BALANCE_HEURISTIC, WEIGHT_NOT_FINITE],
             reference: || check_mis_weight(reference_weight),
         },
         Exercise {
@@ -56,11 +86,11 @@ pub fn exercises() -> Vec<Exercise> {
             name: "path_radiance",
             file: "chapters/ch6-global-illumination/exercises/path_radiance.rs",
             hints: [
-                "slides \"the rendering equation, one light path per sample\" and \"Russian roulette\": at every hit add a light sample (next-event estimation), then bounce; a path ends by roulette, and a survivor carries more.",
-                "with next-event estimation, emission is counted only where the camera sees it directly: a bounce that happens to hit the light was already counted by the light sample. The throughput β is multiplied by f cos θ / pdf at each bounce; roulette survives with probability q and divides β by q.",
+                "slide \"Monte-Carlo path tracing\" and book \"Russian roulette\": one path per sample, a light sample at every surface (direct light) and one sampled direction (indirect light); only roulette ends a path in a closed room, and a survivor carries more.",
+                "1. the first hit (none: black) and the emission seen there, L = hit.emitted; throughput β = 1. 2. loop: (a) a light sample: if cos θ = n·wi > 0 and the shadow ray is clear, L += β · f · Le · cos θ / pdf, with f = ρ/π; (b) a cosine direction: β *= f · cos θ / pdf; (c) after a bounce or two, roulette: q = min(1, max β) (or capped at 0.95), end the path when rng() ≥ q, else β /= q; (d) the next hit (none: stop). Never add the emission a bounce finds: the light sample counted it.",
                 "L = hit.emitted; β = 1; loop { if let Some(ls) = sample_light: if cos > 0 && unoccluded { L += β (ρ/π) ls.le cos / ls.pdf }; (wi, pdf) = sample_cosine; β *= (ρ/π) cos / pdf; after 2 bounces q = min(max(β), 0.95): if rng() >= q break, β /= q; hit = next_hit(wi) else break }",
             ],
-            symptoms: &[],
+            symptoms: &super::paths::SYMPTOMS,
             reference: || super::paths::check_path_radiance(super::paths::reference_path),
         },
     ]
@@ -78,10 +108,25 @@ fn reference_weight(f: f64, g: f64) -> f64 {
     1.0 / (1.0 + r * r)
 }
 
+/// Exercise 6.1's answer: x = a + u (b − a) is uniform on [a, b], with
+/// density 1/(b − a), so f(x)/p(x) = (b − a) f(x).
+// ANCHOR: mc_integral
 fn reference_integral(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64 {
     let sum: f64 = u.iter().map(|u| f(a + u * (b - a))).sum();
     (b - a) * sum / u.len().max(1) as f64
 }
+// ANCHOR_END: mc_integral
+
+/// Exercise 6.2's answer: survive with probability q, carry value / q.
+// ANCHOR: russian_roulette
+fn reference_roulette(value: f64, q: f64, u: f64) -> f64 {
+    if u < q {
+        value / q
+    } else {
+        0.0
+    }
+}
+// ANCHOR_END: russian_roulette
 
 /// Seeded uniform numbers.
 fn uniforms(seed: u64, n: usize) -> Vec<f64> {
@@ -168,12 +213,14 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     } else {
         (error, detail)
     };
+    // Off by (b − a): the constant 1 on [0, 2] comes out as 1, not 2.
+    let unit = f(&|_| 1.0, 0.0, 2.0, &[0.25, 0.75]);
     Check {
         error,
         tolerance: 1e-3,
         detail,
         images: None,
-        symptom: None,
+        symptom: (error > 1e-3 && (unit - 1.0).abs() < 1e-9).then_some(NO_INTERVAL),
     }
 }
 
@@ -181,12 +228,19 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
 /// actually ends paths: the fraction of zeros is 1 - q.
 pub fn check_russian_roulette(f: RouletteFn) -> Check {
     let n = 10_000;
+    let mut symptom = None;
     let (error, detail) = worst_of([(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0)].into_iter().map(
         |(value, q): (f64, f64)| {
             let outs: Vec<f64> = (0..n).map(|i| f(value, q, (i as f64 + 0.5) / n as f64)).collect();
             let mean = outs.iter().sum::<f64>() / n as f64;
             let killed = outs.iter().filter(|o| **o == 0.0).count() as f64 / n as f64;
-            let err = ((mean - value).abs() / value).max((killed - (1.0 - q)).abs());
+            let (bias, fraction) = ((mean - value).abs() / value, (killed - (1.0 - q)).abs());
+            if fraction > 2e-3 {
+                symptom = Some(ROULETTE_WRONG_FRACTION);
+            } else if bias > 2e-3 && symptom.is_none() {
+                symptom = Some(ROULETTE_BIASED);
+            }
+            let err = bias.max(fraction);
             (
                 err,
                 format!(
@@ -202,7 +256,7 @@ pub fn check_russian_roulette(f: RouletteFn) -> Check {
         tolerance: 2e-3,
         detail,
         images: None,
-        symptom: None,
+        symptom: if error > 2e-3 { symptom } else { None },
     }
 }
 
@@ -246,11 +300,20 @@ pub fn check_mis_weight(f: WeightFn) -> Check {
         error = 1.0;
         detail = format!("the MIS estimate of ∫₀¹ 3x² dx = 1 is biased (z = {z:.1})");
     }
+    let symptom = if error <= 1e-6 {
+        None
+    } else if (f(2.0, 1.0) - 2.0 / 3.0).abs() < 1e-9 {
+        Some(BALANCE_HEURISTIC)
+    } else if !(f(1e200, 1e199).is_finite() && f(0.0, 0.0).is_finite() && f(0.0, 5.0) == 0.0) {
+        Some(WEIGHT_NOT_FINITE)
+    } else {
+        None
+    };
     Check {
         error,
         tolerance: 1e-6,
         detail,
         images: None,
-        symptom: None,
+        symptom,
     }
 }

@@ -1,16 +1,21 @@
-//! Chapter 5's exercises and how each is graded.
+//! Chapter 5's exercises and how each is graded (the capstone's check is
+//! in [`direct`]).
+
+mod direct;
+mod symptoms;
+pub use direct::*;
+pub use symptoms::*;
 
 use std::f32::consts::FRAC_1_PI;
 
 use glam::{Vec2, Vec3};
 
-use super::{images, worst_of};
-use crate::ch1_projection::camera::Camera;
+use super::worst_of;
 use crate::ch5_reflection::light::area::solid_angle_pdf;
 use crate::ch5_reflection::material::lambert::Lambertian;
 use crate::ch5_reflection::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
 use crate::core::sampling::random;
-use crate::grading::exercise::{Check, Exercise};
+use crate::grading::exercise::{Check, Exercise, Symptom};
 
 type BrdfFn = fn(Vec3, Vec3, Vec3) -> Vec3;
 type CosineFn = fn(Vec2) -> (Vec3, f32);
@@ -25,11 +30,11 @@ pub fn exercises() -> Vec<Exercise> {
             name: "lambert_brdf",
             file: "chapters/ch5-reflection/exercises/lambert_brdf.rs",
             hints: [
-                "slide \"the BRDF: ideal diffuse\": a Lambertian surface reflects the same radiance in every direction; energy conservation fixes the constant.",
-                "∫ f cos θ dω over the hemisphere must equal the albedo ρ; ∫ cos θ dω = π. Directions on opposite sides of the surface reflect nothing.",
+                "slide \"Bidirectional reflectance distribution function\" (ideal diffuse) and book \"BRDFs\": a Lambertian surface reflects the same radiance in every direction; energy conservation fixes the constant.",
+                "decide first whether ωo and ωi are on the same side of the surface (their z components have the same sign); if not, nothing. If so, f is the constant whose integral ∫ f cos θ dω over the hemisphere is the albedo ρ: work out ∫ cos θ dω.",
                 "same side when wo.z * wi.z > 0; then rho / PI, else Vec3::ZERO",
             ],
-            symptoms: &[],
+            symptoms: &[LAMBERT_PI, LAMBERT_ONE_SIDED],
             reference: || check_lambert_brdf(|rho, wo, wi| Lambertian { rho }.f(wo, wi)),
         },
         Exercise {
@@ -37,11 +42,11 @@ pub fn exercises() -> Vec<Exercise> {
             name: "cosine_hemisphere",
             file: "chapters/ch5-reflection/exercises/cosine_hemisphere.rs",
             hints: [
-                "slide \"turning uniform numbers into directions\": sample a disk uniformly, then lift the point onto the hemisphere (Malley's method).",
-                "a uniform disk needs r = sqrt(u) (area grows with r²); lift with z = sqrt(1 - r²). The density of the direction is proportional to cos θ.",
+                "book \"Cosine-weighted directions\": sample a disk uniformly, then lift the point onto the hemisphere (Malley's method).",
+                "1. a uniform point of the unit disk: radius r = √u.x (the area inside r grows as r²) and angle φ = 2π u.y; 2. lift it: z = √(1 − r²); 3. the density of the direction is cos θ / π = z / π.",
                 "r = sqrt(u.x), phi = 2π u.y, (x, y) = r (cos phi, sin phi), z = sqrt(1 - r²), pdf = z / π",
             ],
-            symptoms: &[],
+            symptoms: &[NOT_ON_HEMISPHERE, COSINE_PDF, NOT_COSINE],
             reference: || check_cosine_hemisphere(|u| {
                         let w = warp_cosine(u);
                         (w, cosine_hemisphere_pdf(w.z))
@@ -52,11 +57,11 @@ pub fn exercises() -> Vec<Exercise> {
             name: "point_light",
             file: "chapters/ch5-reflection/exercises/point_light.rs",
             hints: [
-                "slide \"radiometry: irradiance, Lambert's law\": intensity spreads over the sphere of radius r, and a tilted surface catches less.",
-                "the inverse-square law divides by r², Lambert's law multiplies by cos θ (clamped at zero: light behind the surface does nothing).",
+                "slide \"Radiometry Types of light Isotropic point source\" and slide \"Radiometry Lambert's law\": intensity spreads over the sphere of radius r, and a tilted surface catches less.",
+                "1. the vector from p to the light, its length r and unit direction; 2. cos θ between n and that direction, clamped at zero (light behind the surface does nothing); 3. the inverse-square law divides I by r², Lambert's law multiplies by cos θ.",
                 "to = light - p; r² = to.length_squared(); cos = max(0, n · to/|to|); I cos / r²",
             ],
-            symptoms: &[],
+            symptoms: &[INVERSE_SQUARE, POINT_BEHIND],
             reference: || check_point_light(|i, light, p, n| {
                         let to = light - p;
                         i * crate::ch5_reflection::radiometry::point_irradiance(
@@ -71,11 +76,11 @@ pub fn exercises() -> Vec<Exercise> {
             name: "area_pdf",
             file: "chapters/ch5-reflection/exercises/area_pdf.rs",
             hints: [
-                "slide \"solid angle\": a small patch dA at distance d, seen at angle θ, subtends dω = dA cos θ / d².",
-                "a density per area becomes a density per solid angle by the Jacobian dA/dω = d² / |cos θ_light|; edge-on (cos = 0) the light covers no solid angle.",
+                "slide \"Radiometry Solid angle\": a small patch dA at distance d, seen at angle θ, subtends dω = dA cos θ / d².",
+                "1. d² and the unit direction between x and y; 2. |cos θl| between the light's normal and that direction (edge-on, 0: the light covers no solid angle, return 0); 3. a density per area becomes one per solid angle by the Jacobian dA/dω = d² / |cos θl|.",
                 "d² = (y - x).length_squared(); cos = |n_light · (x - y)/d|; 0 if cos == 0, else pdf_area d² / cos",
             ],
-            symptoms: &[],
+            symptoms: &[PDF_JACOBIAN, PDF_SIGN],
             reference: || check_area_pdf(|pdf, x, y, n| {
                         let to = y - x;
                         solid_angle_pdf(pdf, to.length(), n.dot(to.normalize()))
@@ -86,118 +91,14 @@ pub fn exercises() -> Vec<Exercise> {
             name: "direct_light",
             file: "chapters/ch5-reflection/exercises/direct_light.rs",
             hints: [
-                "slides \"the reflection equation, estimated at one point\" (light sampling) and \"solid angle\": L = f · Le · cos θ / pdf_ω, and a point drawn uniformly on the light has pdf_A = 1/A per area, not per solid angle.",
-                "turn pdf_A into pdf_ω with dω = dA cos θl / d²: the estimate becomes f · Le · cos θ · cos θl / d² · A. Both cosines must be positive (the light faces p, p faces the light) and the segment p→y unblocked.",
+                "slide \"Reflection equation Multiple light sources\" and slide \"Radiometry Solid angle\": one light sample is f · Le · cos θ / pdf_ω, and a point drawn uniformly on the light has pdf_A = 1/A per area, not per solid angle.",
+                "1. wi = (y − p)/d and d; 2. cos θ = n · wi at p and cos θl = n_light · (−wi) at the light: nothing if either is ≤ 0 (p faces away, or y shows its back face); 3. nothing if !visible(p, y); 4. f = ρ/π; 5. pdf_ω = pdf_A · d² / cos θl with pdf_A = 1/A; 6. f · Le · cos θ / pdf_ω.",
                 "wi = (y - p) / d; cos = n·wi; cos_l = n_light·(-wi); if cos <= 0 || cos_l <= 0 || !visible(p, y) { 0 } else { rho / π · le · cos · cos_l / d² · area }",
             ],
-            symptoms: &[],
+            symptoms: &SYMPTOMS,
             reference: || check_direct_light(reference_direct),
         },
     ]
-}
-
-/// The capstone's candidate: (p, n, ρ, y, n_light, A, Le, visible) to one
-/// sample of the reflected radiance.
-pub type DirectFn =
-    fn(Vec3, Vec3, Vec3, Vec3, Vec3, f32, Vec3, &dyn Fn(Vec3, Vec3) -> bool) -> Vec3;
-
-/// raystep's answer to the capstone.
-#[allow(clippy::too_many_arguments)]
-pub fn reference_direct(
-    p: Vec3,
-    n: Vec3,
-    rho: Vec3,
-    y: Vec3,
-    n_light: Vec3,
-    area: f32,
-    le: Vec3,
-    visible: &dyn Fn(Vec3, Vec3) -> bool,
-) -> Vec3 {
-    let to = y - p;
-    let d2 = to.length_squared();
-    let wi = to / d2.sqrt();
-    let (cos, cos_l) = (n.dot(wi), n_light.dot(-wi));
-    if !(cos > 0.0 && cos_l > 0.0 && d2 > 0.0 && visible(p, y)) {
-        return Vec3::ZERO;
-    }
-    rho * FRAC_1_PI * le * cos * cos_l / d2 * area
-}
-
-/// The capstone: the Cornell box (`cornell-box.toml`, 48 × 48, one ray
-/// through each pixel centre) lit only directly by its ceiling light,
-/// 32 light samples per pixel with the candidate and, with other random
-/// numbers, with the reference; 8 × 8-pixel blocks must agree within 5
-/// standard errors (a z-test: Monte Carlo answers are never exact).
-pub fn check_direct_light(f: DirectFn) -> Check {
-    use crate::ch5_reflection::light::Light;
-    use crate::ch5_reflection::warp::uniform_triangle;
-    use crate::ch5_reflection::world::World;
-    let scene = images::scene("cornell-box.toml");
-    let camera = Camera::of(&scene)
-        .with_resolution(48, 48)
-        .expect("a valid camera");
-    let world = World::new(&scene);
-    let light = world
-        .lights
-        .lights
-        .iter()
-        .find_map(|l| match l {
-            Light::Area(a) => Some(a),
-            _ => None,
-        })
-        .expect("the Cornell box has an area light");
-    let (w, h) = (camera.width, camera.height);
-    let (world, camera) = (&world, &camera);
-    let shade = |g: DirectFn, seed: u64| {
-        move |x: u32, y: u32, s: u32| -> Vec3 {
-            let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
-            let Some(it) = world.intersect(&ray) else {
-                return Vec3::ZERO;
-            };
-            let m = &world.materials[it.material];
-            if m.is_emissive() {
-                return m.emission;
-            }
-            let n = if it.n.dot(ray.dir) > 0.0 { -it.n } else { it.n };
-            let pixel = (y * w + x) as u64;
-            let u = Vec2::new(
-                random(seed, pixel, s as u64, 0),
-                random(seed, pixel, s as u64, 1),
-            );
-            // A point uniform by area: a triangle by area, then a point in it.
-            let k = light
-                .cdf
-                .partition_point(|c| *c <= u.x * light.area)
-                .min(light.cdf.len() - 1);
-            let [a, b, c] = light.triangles[k];
-            let bary = uniform_triangle(Vec2::new(random(seed, pixel, s as u64, 2), u.y));
-            let point = bary.x * a + bary.y * b + bary.z * c;
-            let visible = |p: Vec3, q: Vec3| {
-                let to = q - p;
-                let d = to.length();
-                d > 0.0 && world.unoccluded(p, n, to / d, d)
-            };
-            if x == 0 && s == 0 {
-                crate::grading::progress(format_args!(
-                    "calling direct_light for row {y} of {h}: p = {:.3}, n = {:.3}, light point {point:.3}",
-                    it.p, n
-                ));
-            }
-            g(
-                it.p,
-                n,
-                m.reflectance,
-                point,
-                light.normals[k],
-                light.area,
-                light.le,
-                &visible,
-            )
-        }
-    };
-    let student = images::Estimate::gather(w, h, 32, &shade(f, 501));
-    let reference = images::Estimate::gather(w, h, 32, &shade(reference_direct, 502));
-    images::z_test(student, reference, 8, 5.0, "reflected radiance")
 }
 
 fn rel(got: Vec3, want: Vec3) -> f64 {
@@ -233,7 +134,7 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
         tolerance: 1e-5,
         detail,
         images: None,
-        symptom: None,
+        symptom: (error > 1e-5).then(|| lambert_symptom(f)).flatten(),
     }
 }
 
@@ -254,7 +155,7 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
                 tolerance: 5.0,
                 detail: format!("u = {u}: {w} is not a unit direction with z ≥ 0"),
                 images: None,
-                symptom: None,
+                symptom: Some(NOT_ON_HEMISPHERE),
             };
         }
         let want = w.z.max(0.0) * FRAC_1_PI;
@@ -264,7 +165,7 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
                 tolerance: 5.0,
                 detail: format!("u = {u}: direction {w} has pdf {pdf}, expected z/π = {want}"),
                 images: None,
-                symptom: None,
+                symptom: Some(COSINE_PDF),
             };
         }
         sx += w.x as f64;
@@ -293,7 +194,7 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
         tolerance: 5.0,
         detail,
         images: None,
-        symptom: None,
+        symptom: (error > 5.0).then_some(NOT_COSINE),
     }
 }
 
@@ -337,7 +238,7 @@ pub fn check_point_light(f: PointFn) -> Check {
         tolerance: 1e-4,
         detail,
         images: None,
-        symptom: None,
+        symptom: (error > 1e-4).then(|| point_symptom(f)).flatten(),
     }
 }
 
@@ -376,6 +277,51 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
         tolerance: 1e-4,
         detail,
         images: None,
-        symptom: None,
+        symptom: (error > 1e-4).then(|| area_pdf_symptom(f)).flatten(),
+    }
+}
+
+/// What a failing Lambertian BRDF got wrong, from two probes.
+fn lambert_symptom(f: BrdfFn) -> Option<Symptom> {
+    let rho = Vec3::new(0.9, 0.5, 0.1);
+    let up = f(rho, Vec3::Z, Vec3::new(0.6, 0.0, 0.8));
+    let below = f(rho, -Vec3::Z, Vec3::new(0.0, 0.6, -0.8));
+    let want = rho * FRAC_1_PI;
+    if rel(up, rho) < 1e-3 || rel(up, want * FRAC_1_PI) < 1e-3 {
+        Some(LAMBERT_PI)
+    } else if rel(up, want) < 1e-4 && below.abs().max_element() < 1e-6 {
+        Some(LAMBERT_ONE_SIDED)
+    } else {
+        None
+    }
+}
+
+/// What a failing point light got wrong: the light straight above at
+/// 2 m (I/4 expected), or one behind the surface (0 expected).
+fn point_symptom(f: PointFn) -> Option<Symptom> {
+    let i = Vec3::ONE;
+    let above = f(i, Vec3::new(0.0, 0.0, 2.0), Vec3::ZERO, Vec3::Z);
+    let behind = f(i, Vec3::new(0.0, 0.0, -2.0), Vec3::ZERO, Vec3::Z);
+    if behind.abs().max_element() > 1e-6 {
+        Some(POINT_BEHIND)
+    } else if rel(above, i / 4.0) > 1e-4 {
+        Some(INVERSE_SQUARE)
+    } else {
+        None
+    }
+}
+
+/// What a failing area-to-solid-angle conversion got wrong: a light seen
+/// from behind (the same density expected), or straight above.
+fn area_pdf_symptom(f: AreaPdfFn) -> Option<Symptom> {
+    let y = Vec3::new(0.0, 0.0, 2.0);
+    let front = f(0.5, Vec3::ZERO, y, -Vec3::Z);
+    let back = f(0.5, Vec3::ZERO, y, Vec3::Z);
+    if back.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) && front > 0.0 {
+        Some(PDF_SIGN)
+    } else if ((front - 2.0) / 2.0).abs() > 1e-4 || ((back - 2.0) / 2.0).abs() > 1e-4 {
+        Some(PDF_JACOBIAN)
+    } else {
+        None
     }
 }

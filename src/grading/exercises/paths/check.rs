@@ -1,0 +1,389 @@
+//! How the path capstone is graded, clause by clause of its contract
+//! (the stub's doc), and the symptoms the check recognises.
+//!
+//! 1. The closed furnace ([`PathScene::furnace`], albedo 0.85): every ray
+//!    sees Le / (1 − ρ), nothing escapes, and the only noise is the
+//!    roulette's. 200,000 paths; the mean must be within 5 standard
+//!    errors of the answer per channel (the standard error measured from
+//!    the candidate's own samples). Measured: the book's loop has a
+//!    standard deviation of about 0.8 × the mean per path, so the standard
+//!    error is 0.18% of the mean, and a 2% bias has z ≈ 11 (the mutant
+//!    tests check that ±2% fails with z > 7). A mean more than 10% off fails whatever its
+//!    z (an estimator with infinite variance, whose measured variance
+//!    means nothing). Besides the mean, the scene's [`Tally`] checks that
+//!    every path ends (a path over [`BOUNCE_BUDGET`] bounces: no
+//!    roulette), that bounces leave on the lit side, that each surface
+//!    gets a light sample and each light sample its shadow ray.
+//! 2. The Cornell box (`cornell-box.toml`, 32 × 32, 64 paths per pixel)
+//!    against the reference with other random numbers, 8 × 8-pixel blocks
+//!    within 5 standard errors (shadows and the light's cosines, which
+//!    the furnace cannot see). Its images are the check's images.
+
+use glam::{DVec3, Vec2, Vec3};
+
+use super::super::images;
+use super::{reference_path, reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
+use crate::ch1_projection::camera::Camera;
+use crate::core::sampling::random;
+use crate::grading::exercise::{Check, Symptom};
+
+/// A path was still going after [`BOUNCE_BUDGET`] bounces in the closed
+/// furnace.
+pub const NO_ROULETTE: Symptom = Symptom {
+    name: "a path never ends",
+    hint: "book \"Russian roulette\": in a closed room nothing escapes, so only roulette ends a path: from a bounce or two on, survive with a probability q taken from the throughput (at most 1), and divide the survivor's throughput by q. If you have roulette, your throughput grows instead of shrinking: each bounce should multiply it by about the albedo (f · cos θ / pdf = ρ for a cosine direction).",
+};
+
+/// Many furnace paths end at exactly the same bounce, and the furnace is
+/// too dark.
+pub const DEPTH_CAP: Symptom = Symptom {
+    name: "a fixed maximum depth (too dark in a closed room)",
+    hint: "book \"Russian roulette\": stopping every path at a fixed depth cuts off the light of all longer paths, a bias that a closed room shows. Let roulette end paths instead; a safety cap must be far beyond where roulette ends them (hundreds of bounces).",
+};
+
+/// The furnace lacks exactly the emission the camera sees.
+pub const NO_FIRST_EMISSION: Symptom = Symptom {
+    name: "the emission the camera sees is missing",
+    hint: "slide \"Rendering equation (global illumination)\": L = Le + ∫ f Li cos θ dω. The first surface's own emission (hit.emitted) belongs to the answer before any bounce.",
+};
+
+/// The furnace has the emission of every surface twice.
+pub const DOUBLE_EMISSION: Symptom = Symptom {
+    name: "emission counted twice",
+    hint: "book \"Direct and indirect light, and two ways of sampling\": with a light sample at every surface, the light a bounce happens to hit has already been counted by that sample. Add hit.emitted only for the surface the camera sees.",
+};
+
+/// The light samples alone bring twice what they should in the furnace.
+pub const LIGHT_SAMPLE_WRONG: Symptom = Symptom {
+    name: "the light sample's value is off",
+    hint: "slide \"Radiometry Solid angle\": a light sample adds f · Le · cos θ / pdf, with cos θ = n · wi at the hit and the pdf per steradian that sample_light returns (it already holds the light's cos θl and d²). Leaving out cos θ doubles the light in a closed sphere.",
+};
+
+/// The furnace is too dark by a factor.
+pub const TOO_DARK: Symptom = Symptom {
+    name: "too dark by a factor",
+    hint: "slide \"Monte-Carlo rendering Integration\": every sampled factor is divided by its density. Too dark usually means a 1/pdf missing in the throughput (β *= f cos θ / pdf) or a roulette survivor not divided by its survival probability q.",
+};
+
+/// The furnace is too bright by a factor.
+pub const TOO_BRIGHT: Symptom = Symptom {
+    name: "too bright by a factor",
+    hint: "slide \"Monte-Carlo path tracing\": the throughput of a bounce is f · cos θ / pdf, and a light sample adds f · Le · cos θ / pdf. Too bright usually means a cos θ left out (the cosine pdf then divides by it) or the BRDF without its 1/π.",
+};
+
+/// Bounces leave the surface on the wrong side.
+pub const BELOW_SURFACE: Symptom = Symptom {
+    name: "bounces below the surface",
+    hint: "book \"A path tracer\": the next ray leaves the hit along the sampled direction wi itself, which points away from the surface (wi · n > 0), not along −wi.",
+};
+
+/// Surfaces without a light sample.
+pub const NO_NEE: Symptom = Symptom {
+    name: "no light sample at each surface",
+    hint: "book \"Direct and indirect light, and two ways of sampling\": next-event estimation asks scene.sample_light at every surface the path reaches, the first one included.",
+};
+
+/// Light samples without a shadow ray.
+pub const NO_SHADOW_RAY: Symptom = Symptom {
+    name: "light samples without a shadow ray",
+    hint: "slide \"Reflection equation Multiple light sources\": a light sample counts only if nothing blocks it; ask scene.unoccluded(&hit, ls.wi, ls.dist) for every sample you add.",
+};
+
+/// The furnace is right, the Cornell box is not.
+pub const CORNELL_DIFFERS: Symptom = Symptom {
+    name: "right in the furnace, wrong in the Cornell box",
+    hint: "book \"Direct and indirect light, and two ways of sampling\": what the furnace cannot see is occlusion and direction: the light sample's cos θ at the hit (zero or negative: nothing), the shadow ray, and the bounce direction taken from sample_cosine.",
+};
+
+/// Every symptom [`check_path_radiance`] can name.
+pub const SYMPTOMS: [Symptom; 11] = [
+    NO_ROULETTE,
+    DEPTH_CAP,
+    NO_FIRST_EMISSION,
+    DOUBLE_EMISSION,
+    TOO_DARK,
+    TOO_BRIGHT,
+    BELOW_SURFACE,
+    NO_NEE,
+    NO_SHADOW_RAY,
+    CORNELL_DIFFERS,
+    LIGHT_SAMPLE_WRONG,
+];
+
+/// The furnace's albedo (grey).
+pub const FURNACE_ALBEDO: f32 = 0.85;
+/// The furnace's emitted radiance.
+pub const FURNACE_LE: Vec3 = Vec3::new(1.0, 0.75, 0.5);
+/// Paths traced in the furnace.
+pub const FURNACE_PATHS: u64 = 200_000;
+/// Where the furnace's camera rays start (any point inside sees the same).
+const FURNACE_ORIGIN: Vec3 = Vec3::new(0.3, -0.2, 0.1);
+
+/// What the candidate did in the furnace.
+#[derive(Clone, Debug, Default)]
+pub struct FurnaceRun {
+    /// Sum and sum of squares of the returned radiance.
+    pub sum: DVec3,
+    /// Sum of squares, per channel.
+    pub sum_sq: DVec3,
+    /// Paths whose radiance was not finite.
+    pub non_finite: u64,
+    /// The sum of every path's tally (`over_budget`: any path's).
+    pub tally: Tally,
+    /// How many paths made each number of bounces (the last entry: more).
+    pub lengths: Vec<u64>,
+}
+
+impl FurnaceRun {
+    fn merge(mut self, o: FurnaceRun) -> FurnaceRun {
+        self.sum += o.sum;
+        self.sum_sq += o.sum_sq;
+        self.non_finite += o.non_finite;
+        let (a, b) = (&mut self.tally, o.tally);
+        a.bounces += b.bounces;
+        a.vertices += b.vertices;
+        a.light_samples += b.light_samples;
+        a.lights_found += b.lights_found;
+        a.shadow_rays += b.shadow_rays;
+        a.below += b.below;
+        a.over_budget |= b.over_budget;
+        if self.lengths.is_empty() {
+            self.lengths = o.lengths;
+        } else {
+            for (x, y) in self.lengths.iter_mut().zip(o.lengths) {
+                *x += y;
+            }
+        }
+        self
+    }
+}
+
+/// Traces `n` paths of `scene` (a furnace) with `f`, in parallel, each with its own
+/// random numbers from (seed, path).
+pub fn trace_furnace(f: PathFn, scene: &PathScene, n: u64, seed: u64) -> FurnaceRun {
+    use rayon::prelude::*;
+    let chunk = 2_000u64;
+    (0..n.div_ceil(chunk))
+        .into_par_iter()
+        .map(|c| {
+            let mut acc = FurnaceRun {
+                lengths: vec![0; BOUNCE_BUDGET as usize + 2],
+                ..FurnaceRun::default()
+            };
+            for i in c * chunk..((c + 1) * chunk).min(n) {
+                let (u, v) = (random(seed, i, 0, 0), random(seed, i, 0, 1));
+                let z = 1.0 - 2.0 * u;
+                let r = (1.0 - z * z).max(0.0).sqrt();
+                let phi = std::f32::consts::TAU * v;
+                let dir = Vec3::new(r * phi.cos(), r * phi.sin(), z);
+                let mut dim = 1u64;
+                let mut rng = || {
+                    dim += 1;
+                    random(seed, i, 0, dim).min(1.0 - f32::EPSILON)
+                };
+                if i % 50_000 == 0 {
+                    crate::grading::progress(format_args!(
+                        "calling path_radiance in the closed furnace, path {i} of {n}"
+                    ));
+                }
+                reset_tally();
+                let l = f(scene, FURNACE_ORIGIN, dir, &mut rng);
+                let t = tally();
+                let one = FurnaceRun {
+                    tally: t,
+                    ..FurnaceRun::default()
+                };
+                acc = acc.merge(one);
+                let k = (t.bounces as usize).min(acc.lengths.len() - 1);
+                acc.lengths[k] += 1;
+                if l.is_finite() {
+                    let l = l.as_dvec3();
+                    acc.sum += l;
+                    acc.sum_sq += l * l;
+                } else {
+                    acc.non_finite += 1;
+                }
+            }
+            acc
+        })
+        .reduce(FurnaceRun::default, FurnaceRun::merge)
+}
+
+/// The furnace run `r` of `f`: (error against a tolerance of 5, what was seen,
+/// the symptom).
+pub fn judge_furnace(f: PathFn, r: &FurnaceRun, n: u64) -> (f64, String, Option<Symptom>) {
+    let t = r.tally;
+    let bad = 1e9;
+    if t.over_budget {
+        let detail = format!(
+            "closed furnace: a path was still going after {BOUNCE_BUDGET} bounces (nothing \
+             escapes a closed room, so only Russian roulette can end it)"
+        );
+        return (bad, detail, Some(NO_ROULETTE));
+    }
+    if t.below as u64 * 1000 > t.bounces as u64 {
+        let detail = format!(
+            "closed furnace: {} of {} bounces left their surface on the wrong side (wi · n ≤ 0)",
+            t.below, t.bounces
+        );
+        return (bad, detail, Some(BELOW_SURFACE));
+    }
+    if t.light_samples * 2 < t.vertices {
+        let detail = format!(
+            "closed furnace: {} light samples for {} surfaces reached (one per surface expected)",
+            t.light_samples, t.vertices
+        );
+        return (bad, detail, Some(NO_NEE));
+    }
+    if t.shadow_rays * 2 < t.lights_found {
+        let detail = format!(
+            "closed furnace: {} shadow rays for {} light samples (one per sample expected)",
+            t.shadow_rays, t.lights_found
+        );
+        return (bad, detail, Some(NO_SHADOW_RAY));
+    }
+    if r.non_finite > 0 {
+        let detail = format!(
+            "closed furnace: {} of {n} paths returned a radiance that is not finite (inf or NaN)",
+            r.non_finite
+        );
+        return (f64::INFINITY, detail, Some(TOO_BRIGHT));
+    }
+    let m = n as f64;
+    let mean = r.sum / m;
+    let var = ((r.sum_sq / m - mean * mean) * (m / (m - 1.0))).max(DVec3::ZERO);
+    let rho = FURNACE_ALBEDO as f64;
+    let le = FURNACE_LE.as_dvec3();
+    let want = le / (1.0 - rho);
+    let se = (var / m).max(DVec3::splat(1e-12)).powf(0.5);
+    let z = ((mean - want).abs() / se).max_element();
+    let rel = ((mean - want) / want).abs().max_element();
+    let ratio = (mean / want).element_sum() / 3.0;
+    let mut detail = format!(
+        "closed furnace (albedo {rho:.2}, Le {le:.2}: every ray sees Le/(1 − ρ) = {want:.3}): \
+         the mean of your {n} paths is {mean:.3} ({:+.1}%, z = {z:.1})",
+        100.0 * (ratio - 1.0)
+    );
+    // A mean more than 10% off fails whatever its z: an estimator with
+    // infinite variance has a measured variance that means nothing.
+    let error = if rel > 0.1 { z.max(1e3) } else { z };
+    if error <= 5.0 {
+        return (error, detail, None);
+    }
+    // Which hypothesis fits the mean (within 5 standard errors or 1%).
+    let fits = |h: DVec3| {
+        (((mean - h).abs() / se).max_element() <= 5.0)
+            || ((mean - h) / h).abs().max_element() < 0.01
+    };
+    let symptom = if fits(want - le) {
+        Some(NO_FIRST_EMISSION)
+    } else if fits(le + 2.0 * rho * want) {
+        // Emission counted twice, or each light sample doubled: the
+        // furnace without emission at bounced hits tells them apart.
+        let scene = PathScene::furnace_without_bounce_emission(FURNACE_ALBEDO, FURNACE_LE);
+        let again = trace_furnace(f, &scene, n / 4, 612);
+        let mean = again.sum / (n / 4) as f64;
+        if ((mean - want) / want).abs().max_element() < 0.05 {
+            Some(DOUBLE_EMISSION)
+        } else {
+            Some(LIGHT_SAMPLE_WRONG)
+        }
+    } else if ratio < 1.0 && cap_spike(&r.lengths).is_some() {
+        let (k, count) = cap_spike(&r.lengths).unwrap_or_default();
+        detail += &format!("; {count} paths end at exactly {k} bounces");
+        Some(DEPTH_CAP)
+    } else if ratio < 1.0 {
+        Some(TOO_DARK)
+    } else {
+        Some(TOO_BRIGHT)
+    };
+    (error, detail, symptom)
+}
+
+/// A fixed maximum depth shows as a spike in the path lengths: many
+/// paths (≥ 20, ≥ 0.1%) at the longest length, more than twice as many
+/// as one bounce shorter (under roulette the longest lengths are a thin
+/// geometric tail: one or two paths).
+fn cap_spike(lengths: &[u64]) -> Option<(usize, u64)> {
+    let k = lengths.iter().rposition(|c| *c > 0)?;
+    let total: u64 = lengths.iter().sum();
+    let at = lengths[k];
+    let before = if k > 0 { lengths[k - 1] } else { 0 };
+    (at >= 20 && at * 1000 >= total && at > 2 * before).then_some((k, at))
+}
+
+/// One sample of pixel (x, y) of the Cornell box with `g`.
+fn cornell_sample<'a>(
+    g: PathFn,
+    paths: &'a PathScene,
+    camera: &'a Camera,
+    seed: u64,
+) -> impl Fn(u32, u32, u32) -> Vec3 + Sync + 'a {
+    move |x: u32, y: u32, s: u32| -> Vec3 {
+        let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
+        let pixel = (y * camera.width + x) as u64;
+        let mut dim = 0u64;
+        let mut rng = || {
+            dim += 1;
+            random(seed, pixel, s as u64, dim).min(1.0 - f32::EPSILON)
+        };
+        if x == 0 && s == 0 {
+            crate::grading::progress(format_args!(
+                "calling path_radiance for the Cornell box's camera rays, row {y} of {}",
+                camera.height
+            ));
+        }
+        reset_tally();
+        g(paths, ray.origin, ray.dir, &mut rng)
+    }
+}
+
+/// The Cornell box with `f` and with the reference: the z-test's check.
+fn cornell(f: PathFn) -> Check {
+    let scene = images::scene("cornell-box.toml");
+    let camera = Camera::of(&scene)
+        .with_resolution(32, 32)
+        .expect("a valid camera");
+    // One scene each: a candidate whose paths never end leaves its scene
+    // finding nothing (see `PathScene::ran_away`).
+    let (mine, theirs) = (PathScene::new(&scene), PathScene::new(&scene));
+    let (w, h) = (camera.width, camera.height);
+    let student = images::Estimate::gather(w, h, 64, &cornell_sample(f, &mine, &camera, 601));
+    let reference = images::Estimate::gather(
+        w,
+        h,
+        64,
+        &cornell_sample(reference_path, &theirs, &camera, 602),
+    );
+    images::z_test(student, reference, 8, 5.0, "radiance")
+}
+
+/// The capstone: the closed furnace, then the Cornell box (see the
+/// module's doc). The error is the larger z of the two (5 passes).
+pub fn check_path_radiance(f: PathFn) -> Check {
+    let scene = PathScene::furnace(FURNACE_ALBEDO, FURNACE_LE);
+    let furnace = trace_furnace(f, &scene, FURNACE_PATHS, 611);
+    let (fz, fdetail, fsymptom) = judge_furnace(f, &furnace, FURNACE_PATHS);
+    let box_check = cornell(f);
+    let error = fz.max(box_check.error);
+    let (detail, symptom) = if fz > 5.0 {
+        (fdetail, fsymptom)
+    } else if !box_check.passed() {
+        (
+            format!("{fdetail}; but in the Cornell box, {}", box_check.detail),
+            Some(CORNELL_DIFFERS),
+        )
+    } else {
+        (
+            format!("{fdetail}; Cornell box: {}", box_check.detail),
+            None,
+        )
+    };
+    Check {
+        error,
+        tolerance: 5.0,
+        detail,
+        images: box_check.images,
+        symptom,
+    }
+}

@@ -1,0 +1,303 @@
+//! Chapter 6's capstone: the path loop with next-event estimation and
+//! Russian roulette, written by the student against a small scene
+//! interface ([`PathScene`]: hits, light samples, shadow rays, cosine
+//! directions) and graded ([`check_path_radiance`]) in a closed furnace
+//! with a known answer (nothing escapes there, so only roulette ends a
+//! path) and in the Cornell box against the reference.
+//!
+//! The scene counts what a path asks of it ([`Tally`], per thread, reset
+//! by the check before each call): the check reads from it whether the
+//! loop samples a light at every surface, casts its shadow rays, bounces
+//! above the surface, and ends at all.
+
+use std::cell::Cell;
+use std::f32::consts::FRAC_1_PI;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use glam::{Vec2, Vec3};
+
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch5_reflection::material::Frame;
+use crate::ch5_reflection::warp::malley;
+use crate::ch5_reflection::world::World;
+
+mod check;
+mod furnace;
+
+pub use check::*;
+use furnace::Furnace;
+
+/// Where a path meets a surface (every surface of the capstone's scenes is
+/// Lambertian).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    /// The point.
+    pub p: Vec3,
+    /// The unit normal, turned to face where the path came from.
+    pub n: Vec3,
+    /// The albedo ρ (the BRDF is ρ/π).
+    pub albedo: Vec3,
+    /// The radiance the surface emits back along the path (W/(m²·sr)).
+    pub emitted: Vec3,
+}
+
+/// A point drawn on a light, seen from a hit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightSample {
+    /// Unit direction from the hit towards the light point.
+    pub wi: Vec3,
+    /// Distance to the light point.
+    pub dist: f32,
+    /// Radiance arriving along `wi` if nothing blocks it.
+    pub le: Vec3,
+    /// Density of `wi` per steradian.
+    pub pdf: f32,
+}
+
+/// A path may go this many bounces (calls of [`PathScene::next_hit`]);
+/// the next call ends it and marks the loop as never ending. With Russian
+/// roulette that survives with probability at most 0.95 per bounce, a path
+/// this long has probability 0.95¹⁰⁰⁰ ≈ 5·10⁻²³.
+pub const BOUNCE_BUDGET: u32 = 1000;
+
+/// What the paths of one call asked of the scene.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Tally {
+    /// Calls of `next_hit`.
+    pub bounces: u32,
+    /// Surfaces reached (`first_hit` and `next_hit` returning one).
+    pub vertices: u32,
+    /// Calls of `sample_light`.
+    pub light_samples: u32,
+    /// Light samples returned (the light could be seen from that side).
+    pub lights_found: u32,
+    /// Calls of `unoccluded`.
+    pub shadow_rays: u32,
+    /// Bounces along a direction on the far side of the surface.
+    pub below: u32,
+    /// Whether a path ran into [`BOUNCE_BUDGET`].
+    pub over_budget: bool,
+}
+
+thread_local! {
+    static TALLY: Cell<Tally> = const { Cell::new(Tally {
+        bounces: 0, vertices: 0, light_samples: 0, lights_found: 0,
+        shadow_rays: 0, below: 0, over_budget: false,
+    }) };
+}
+
+/// Starts a fresh [`Tally`] on this thread.
+pub fn reset_tally() {
+    TALLY.with(|t| t.set(Tally::default()));
+}
+
+/// This thread's [`Tally`] since the last [`reset_tally`].
+pub fn tally() -> Tally {
+    TALLY.with(|t| t.get())
+}
+
+fn count(f: impl FnOnce(&mut Tally)) {
+    TALLY.with(|t| {
+        let mut v = t.get();
+        f(&mut v);
+        t.set(v);
+    });
+}
+
+enum Inner {
+    World(Box<World>),
+    Furnace(Furnace),
+}
+
+/// What a path may ask of the scene.
+pub struct PathScene {
+    inner: Inner,
+    /// Set once a path ran into [`BOUNCE_BUDGET`]: every later path then
+    /// finds nothing, so that a loop without an end fails fast.
+    ran_away: AtomicBool,
+}
+
+impl PathScene {
+    /// The scene of `scene` (its first light is the one sampled).
+    pub fn new(scene: &crate::scene::Scene) -> PathScene {
+        PathScene::of(Inner::World(Box::new(World::new(scene))))
+    }
+
+    /// The closed furnace: the inside of a sphere of radius 1 about the
+    /// origin, every point of it Lambertian with albedo `albedo` and
+    /// emitting `le`, all of it one light. Every ray from inside sees
+    /// le / (1 − albedo) per channel.
+    pub fn furnace(albedo: f32, le: Vec3) -> PathScene {
+        PathScene::of(Inner::Furnace(Furnace {
+            albedo: Vec3::splat(albedo),
+            le,
+            hide_bounce_emission: false,
+        }))
+    }
+
+    /// The furnace as a diagnostic: surfaces reached by a bounce report
+    /// no emission (a loop that counts emission only where the camera sees
+    /// it gives the same answer as in [`PathScene::furnace`]).
+    pub fn furnace_without_bounce_emission(albedo: f32, le: Vec3) -> PathScene {
+        PathScene::of(Inner::Furnace(Furnace {
+            albedo: Vec3::splat(albedo),
+            le,
+            hide_bounce_emission: true,
+        }))
+    }
+
+    fn of(inner: Inner) -> PathScene {
+        PathScene {
+            inner,
+            ran_away: AtomicBool::new(false),
+        }
+    }
+
+    /// Whether a path ran into [`BOUNCE_BUDGET`] in this scene.
+    pub fn ran_away(&self) -> bool {
+        self.ran_away.load(Ordering::Relaxed)
+    }
+
+    fn world_hit(world: &World, ray: &Ray) -> Option<Hit> {
+        let it = world.intersect(ray)?;
+        let n = if it.n.dot(ray.dir) > 0.0 { -it.n } else { it.n };
+        Some(Hit {
+            p: it.p,
+            n,
+            albedo: world.materials[it.material].reflectance,
+            emitted: world.emitted(&it, -ray.dir),
+        })
+    }
+
+    fn found(hit: Option<Hit>) -> Option<Hit> {
+        if hit.is_some() {
+            count(|t| t.vertices += 1);
+        }
+        hit
+    }
+
+    /// The first surface along a camera ray.
+    pub fn first_hit(&self, origin: Vec3, dir: Vec3) -> Option<Hit> {
+        if self.ran_away() {
+            return None;
+        }
+        Self::found(match &self.inner {
+            Inner::World(w) => Self::world_hit(w, &Ray::new(origin, dir).ok()?),
+            Inner::Furnace(f) => f.hit(origin, dir.try_normalize()?),
+        })
+    }
+
+    /// The next surface when the path leaves `at` along the unit `wi`.
+    pub fn next_hit(&self, at: &Hit, wi: Vec3) -> Option<Hit> {
+        let mut over = false;
+        count(|t| {
+            t.bounces += 1;
+            let c = wi.dot(at.n);
+            t.below += u32::from(c.is_nan() || c <= 0.0);
+            over = t.bounces > BOUNCE_BUDGET;
+            t.over_budget |= over;
+        });
+        if over || self.ran_away() {
+            self.ran_away.fetch_or(over, Ordering::Relaxed);
+            return None;
+        }
+        Self::found(match &self.inner {
+            Inner::World(w) => Self::world_hit(w, &w.spawn(at.p, at.n, wi)?),
+            Inner::Furnace(f) => f.next(at, wi),
+        })
+    }
+
+    /// A point on the light drawn from the two numbers `u` (in [0, 1)),
+    /// as a direction from `at` with its solid-angle density; `None` when
+    /// the light cannot be seen from that side.
+    pub fn sample_light(&self, at: &Hit, u: Vec2) -> Option<LightSample> {
+        count(|t| t.light_samples += 1);
+        let s = match &self.inner {
+            Inner::World(w) => {
+                let s = w.lights.lights.first()?.sample_li(at.p, at.n, u)?;
+                Some(LightSample {
+                    wi: s.wi,
+                    dist: s.dist,
+                    le: s.li,
+                    pdf: s.pdf,
+                })
+            }
+            Inner::Furnace(f) => f.sample_light(at, u),
+        };
+        if s.is_some() {
+            count(|t| t.lights_found += 1);
+        }
+        s
+    }
+
+    /// Whether a shadow ray from `at` along `wi` reaches `dist` unblocked.
+    pub fn unoccluded(&self, at: &Hit, wi: Vec3, dist: f32) -> bool {
+        count(|t| t.shadow_rays += 1);
+        match &self.inner {
+            Inner::World(w) => w.unoccluded(at.p, at.n, wi, dist),
+            // Nothing inside the sphere: every point of it sees every other.
+            Inner::Furnace(_) => true,
+        }
+    }
+
+    /// A direction about `at.n` with density cos θ / π, from `u`: the
+    /// direction and its density.
+    pub fn sample_cosine(&self, at: &Hit, u: Vec2) -> (Vec3, f32) {
+        let local = malley(u);
+        (
+            Frame::from_normal(at.n).to_world(local),
+            local.z * FRAC_1_PI,
+        )
+    }
+}
+
+/// The capstone's candidate: a camera ray to the radiance along it.
+pub type PathFn = fn(&PathScene, Vec3, Vec3, &mut dyn FnMut() -> f32) -> Vec3;
+
+/// raystep's answer: emission seen by the camera, then at every hit one
+/// light sample (NEE) and one cosine-sampled bounce, Russian roulette from
+/// the second bounce on with q = min(max throughput, 0.95).
+pub fn reference_path(
+    scene: &PathScene,
+    origin: Vec3,
+    dir: Vec3,
+    rng: &mut dyn FnMut() -> f32,
+) -> Vec3 {
+    crate::core::guard::reference("ch6/path_radiance");
+    let Some(mut hit) = scene.first_hit(origin, dir) else {
+        return Vec3::ZERO;
+    };
+    let mut radiance = hit.emitted;
+    let mut beta = Vec3::ONE;
+    let mut bounce = 0;
+    loop {
+        let f = hit.albedo * FRAC_1_PI;
+        let u = Vec2::new(rng(), rng());
+        if let Some(ls) = scene.sample_light(&hit, u) {
+            let cos = hit.n.dot(ls.wi);
+            if cos > 0.0 && ls.pdf > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
+                radiance += beta * f * ls.le * cos / ls.pdf;
+            }
+        }
+        let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
+        if pdf <= 0.0 {
+            break;
+        }
+        beta *= f * hit.n.dot(wi) / pdf;
+        bounce += 1;
+        if bounce >= 2 {
+            let q = beta.max_element().min(0.95);
+            if rng() >= q {
+                break;
+            }
+            beta /= q;
+        }
+        match scene.next_hit(&hit, wi) {
+            // Emission found by the bounce is not added: the light sample
+            // has counted it.
+            Some(next) => hit = next,
+            None => break,
+        }
+    }
+    radiance
+}
