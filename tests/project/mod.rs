@@ -15,6 +15,7 @@ mod hostile;
 mod hostile_bvh;
 mod layout;
 mod live_student;
+mod mutants;
 mod non_square;
 mod obj_quirks;
 mod reports;

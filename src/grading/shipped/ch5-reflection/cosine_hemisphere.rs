@@ -1,20 +1,27 @@
 //! Exercise 5.2: cosine-weighted hemisphere sampling and its pdf.
 //!
-//! Turn two uniform numbers u = (u.x, u.y) in [0, 1)² into a direction on
-//! the hemisphere z ≥ 0 whose density in solid angle is cos θ / π, and
-//! return that density with it. Malley's method: pick a uniform point on
-//! the unit disk (r = √u.x, φ = 2π u.y), then lift it onto the hemisphere
-//! (z = √(1 − x² − y²)).
+//! The reflection equation weighs incoming light by cos θ; drawing
+//! directions with a density proportional to cos θ cancels that factor
+//! and lowers the noise. The idea (Malley's method): points spread
+//! uniformly over the unit disk, lifted straight up onto the hemisphere,
+//! are distributed as cos θ.
 //!
+//! Contract (what the grader checks):
+//! * from two uniform numbers u = (u.x, u.y) in [0, 1)², return a unit
+//!   direction (length 1 to 10⁻⁴) on the hemisphere z ≥ 0 about +z;
+//! * with it, its density per steradian, which must be cos θ / π (z / π,
+//!   to 10⁻⁴ relative) for every sample;
+//! * the directions must really have that density: over 40,000 samples,
+//!   E[x] = E[y] = 0, E[z] = 2/3 and P(z < 1/2) = 1/4, each within 5
+//!   standard errors.
+//!
+//! Hints: `cargo run --release --bin grade -- --hint ch5/cosine_hemisphere`.
 //! Grade it with: `cargo run --release --bin grade -- ch5`
-//! (the grader checks the pdf and the statistics of many samples).
 
 use glam::{Vec2, Vec3};
 
 /// A cosine-distributed direction about +z and its solid-angle pdf.
 pub fn cosine_hemisphere(u: Vec2) -> (Vec3, f32) {
-    // TODO: a uniform point (x, y) on the unit disk from u.
-    // TODO: lift it: z = sqrt(1 - x² - y²).
-    // TODO: the pdf is cos θ / π = z / π.
+    // TODO: a uniform point of the unit disk, lifted onto the hemisphere.
     todo!()
 }

@@ -1,23 +1,32 @@
 //! Capstone 5: direct lighting from an area light, by sampling the light.
 //!
-//! The grader renders the Cornell box (`scenes/cornell-box.toml`) lit
-//! only directly by its ceiling light: at the first surface each camera
-//! ray meets, it draws points on the light and calls this function once
-//! per point; the pixel is the average. Your answer is checked
-//! statistically against the reference (Monte Carlo is never exact).
+//! One sample of the reflection equation at p: the light arriving from a
+//! point y drawn on the light, weighed by the BRDF and the cosine at p,
+//! divided by the density of that sample, which was drawn per area of the
+//! light while the equation integrates over directions at p.
 //!
+//! The inputs:
 //! * `p`: the shading point; `n`: its unit normal (facing the camera);
-//!   `rho`: its Lambertian albedo.
+//!   `rho`: its Lambertian albedo;
 //! * `y`: a point on the light, drawn uniformly by area over the light's
-//!   total area `area`, so its density is 1/area per square metre;
-//!   `n_light`: the light's unit normal there. The light emits radiance
-//!   `le` from its front face only (the side `n_light` points to).
+//!   total area `area` (its density is 1/area per square metre);
+//!   `n_light`: the light's unit normal at y;
+//! * `le`: the radiance the light emits from its front face, the side
+//!   `n_light` points to; its back face emits nothing;
 //! * `visible(p, y)`: whether nothing blocks the segment from p to y.
 //!
-//! Return the one-sample estimate of the reflected radiance at p
-//! (W/(m²·sr) per channel): the lecture's f · Le · cos θ / pdf, with the
-//! density turned from per area into per solid angle.
+//! Contract (what the grader checks, clause by clause, to 10⁻⁴ relative
+//! on hand-worked cases that change one factor at a time, then on the
+//! Cornell box with the same light points as the reference):
+//! * return the one-sample estimate of the radiance reflected at p
+//!   (W/(m²·sr) per channel): the Lambertian BRDF times Le times cos θ at
+//!   p, divided by the density of the sample per steradian at p;
+//! * exactly 0 when y shows p its back face, when y is below or in the
+//!   plane of p's surface, and when `visible(p, y)` is false;
+//! * ask `visible` about exactly the segment (p, y), in that order;
+//! * finite for every sample (no inf, no NaN).
 //!
+//! Hints: `cargo run --release --bin grade -- --hint ch5/direct_light`.
 //! Grade it with: `cargo run --release --bin grade -- ch5`, and see it
 //! render with `cargo run --release --bin ch5 -- --student`.
 
@@ -35,12 +44,6 @@ pub fn direct_light(
     le: Vec3,
     visible: &dyn Fn(Vec3, Vec3) -> bool,
 ) -> Vec3 {
-    // TODO: the direction wi from p to y and the distance d.
-    // TODO: the two cosines: at p (with n) and at the light (with
-    //       n_light, looking back along -wi); nothing if either is not
-    //       positive, or if y is not visible from p.
-    // TODO: the Lambertian BRDF.
-    // TODO: the density of y per solid angle seen from p, and the
-    //       estimate f · Le · cos θ / pdf.
+    // TODO: f · Le · cos θ / pdf, with the pdf per steradian at p.
     todo!()
 }

@@ -1,10 +1,12 @@
 //! Capstone 6: the path loop, with next-event estimation and Russian
 //! roulette.
 //!
-//! The grader renders the Cornell box (`scenes/cornell-box.toml`) with one
-//! call per camera sample and checks the image statistically against the
-//! reference (Monte Carlo is never exact; a bias shows as a z-score).
-//! Every surface is Lambertian, with BRDF ρ/π. The scene offers:
+//! The rendering equation, estimated with one random path per call: from
+//! the camera ray's first surface, the path carries a throughput β (the
+//! product of f · cos θ / pdf of its bounces so far) and adds, at every
+//! surface it reaches, a light sample weighted by β (direct light); then
+//! it continues along one sampled direction (indirect light). Every
+//! surface is Lambertian, with BRDF ρ/π. The scene offers:
 //!
 //! * `scene.first_hit(origin, dir)`: the first surface along the camera
 //!   ray, with its point, normal (facing the path), albedo ρ and the
@@ -12,19 +14,33 @@
 //! * `scene.next_hit(&hit, wi)`: the next surface leaving `hit` along `wi`;
 //! * `scene.sample_light(&hit, u)`: a direction to a point on the light,
 //!   its distance, the radiance Le arriving along it and its density per
-//!   steradian;
+//!   steradian (`None`: the light cannot be seen from that side);
 //! * `scene.unoccluded(&hit, wi, dist)`: the shadow ray;
 //! * `scene.sample_cosine(&hit, u)`: a direction about the normal with
 //!   density cos θ / π.
 //!
-//! `rng()` gives a fresh uniform number in [0, 1) at each call.
+//! `rng()` gives a fresh uniform number in [0, 1) at each call; use as
+//! many as you like, in any order.
 //!
-//! Build the path bounce by bounce in a loop: count the emission the
-//! camera sees, then at every surface add one light sample (next-event
-//! estimation) and continue along one sampled direction. There is no
-//! fixed maximum depth: Russian roulette ends paths, and must not change
-//! the expected value. Do not count emission twice.
+//! Contract (what the grader checks):
+//! * unbiased: in a closed furnace (the inside of a sphere, albedo 0.85,
+//!   emitting Le everywhere: every ray sees Le / (1 − ρ)) the mean of
+//!   200,000 paths is within 5 standard errors (about 1%) of the answer,
+//!   and in the Cornell box each 8 × 8 block agrees with the reference
+//!   within 5 standard errors;
+//! * the emission of the surface the camera sees, counted once; emission
+//!   that a bounce finds is not added (the light sample counted it);
+//! * a light sample (`sample_light`) at every surface the path reaches,
+//!   each with its shadow ray (`unoccluded`) before it counts;
+//! * every bounce leaves on the side of the surface the path came from;
+//! * nothing escapes a closed room: Russian roulette ends paths, with a
+//!   survival probability taken from the throughput (so a survivor's
+//!   throughput stays bounded) and survivors divided by it. No fixed
+//!   maximum depth that cuts off light (a path over 1,000 bounces fails:
+//!   the loop does not end);
+//! * finite radiance (no inf, no NaN).
 //!
+//! Hints: `cargo run --release --bin grade -- --hint ch6/path_radiance`.
 //! Grade it with: `cargo run --release --bin grade -- ch6`, and see it
 //! render with `cargo run --release --bin ch6 -- --student`.
 
@@ -38,13 +54,6 @@ pub fn path_radiance(
     dir: Vec3,
     rng: &mut dyn FnMut() -> f32,
 ) -> Vec3 {
-    // TODO: the first hit (none: black), and the emission seen there.
-    // TODO: loop over bounces with a throughput β, starting at 1:
-    //       - next-event estimation: a light sample, its cos θ at the
-    //         hit, the shadow ray; add β · f · Le · cos θ / pdf;
-    //       - a cosine-sampled direction; update β by f · cos θ / pdf;
-    //       - Russian roulette on β (after a bounce or two): survive with
-    //         probability q, and keep the estimate unbiased;
-    //       - move to the next hit (none: the path leaves the box).
+    // TODO: the path loop.
     todo!()
 }

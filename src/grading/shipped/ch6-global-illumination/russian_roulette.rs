@@ -1,15 +1,20 @@
 //! Exercise 6.2: Russian roulette that stays unbiased.
 //!
-//! A path with contribution `value` survives with probability `q`
-//! (0 < q ≤ 1), decided by the uniform number `u` in [0, 1). A path that
-//! dies contributes 0. Make the expected result equal `value`, so that
-//! ending paths early adds noise but no bias.
+//! A path tracer cannot follow every path forever. Russian roulette ends a
+//! path at random, and lets the paths that survive carry more, so that on
+//! average nothing is lost: ending paths adds noise, not bias.
 //!
+//! Contract (what the grader checks, on 10,000 evenly spaced u per case):
+//! * the path survives with probability `q` (0 < q ≤ 1), decided by the
+//!   uniform number `u` in [0, 1); a path that dies returns exactly 0;
+//! * the fraction of paths that die is 1 − q (within 0.2%);
+//! * the mean of the results is `value` (within 0.2%).
+//!
+//! Hints: `cargo run --release --bin grade -- --hint ch6/russian_roulette`.
 //! Grade it with: `cargo run --release --bin grade -- ch6`
 
 /// The contribution after the roulette.
 pub fn russian_roulette(value: f64, q: f64, u: f64) -> f64 {
-    // TODO: when does the path survive?
-    // TODO: what must a survivor carry so that the mean is `value`?
+    // TODO: survive with probability q, and keep the mean.
     todo!()
 }
