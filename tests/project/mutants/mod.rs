@@ -1,0 +1,2 @@
+pub mod ch1;
+pub mod ch2;
