@@ -52,9 +52,8 @@ pub fn rasterize_triangle(
         for x in x0..x1 {
             let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
             let w = edges.map(|(s, t)| edge_function(s, t, p));
-            let inside = (0..3).all(|k| {
-                w[k] > 0.0 || (w[k] == 0.0 && top_left(edges[k].0, edges[k].1))
-            });
+            let inside =
+                (0..3).all(|k| w[k] > 0.0 || (w[k] == 0.0 && top_left(edges[k].0, edges[k].1)));
             if !inside {
                 continue;
             }

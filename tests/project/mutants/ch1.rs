@@ -73,7 +73,15 @@ fn alternative_parametric(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Optio
     if t0 > t1 {
         return None;
     }
-    let at = |t: f32| if t == 0.0 { a } else if t == 1.0 { b } else { a + d * t };
+    let at = |t: f32| {
+        if t == 0.0 {
+            a
+        } else if t == 1.0 {
+            b
+        } else {
+            a + d * t
+        }
+    };
     Some((raster(camera, at(t0)), raster(camera, at(t1))))
 }
 
@@ -92,7 +100,11 @@ fn swapped(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(Vec2, Vec2)>
 fn cut_first(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(Vec2, Vec2)> {
     let (ca, cb) = (camera.to_camera(a), camera.to_camera(b));
     let r = book(camera, a, b, near)?;
-    Some(if cb.z > -near && ca.z <= -near { (r.1, r.0) } else { r })
+    Some(if cb.z > -near && ca.z <= -near {
+        (r.1, r.0)
+    } else {
+        r
+    })
 }
 
 /// No clipping: both ends projected, also one behind the camera (an edge
@@ -164,9 +176,17 @@ fn edge_mutants_fail_with_their_symptom() {
         (unclipped, ch1::NOT_CLIPPED, "no clipping"),
         (dropped, ch1::DROPPED, "crossing edges dropped"),
         (constant_near, ch1::WRONG_CUT, "NEAR instead of near"),
-        (wrong_parameter, ch1::WRONG_CUT, "the parameter from the wrong end"),
+        (
+            wrong_parameter,
+            ch1::WRONG_CUT,
+            "the parameter from the wrong end",
+        ),
         (pinhole_plane, ch1::WRONG_CUT, "the pinhole's plane"),
-        (strict_plane, ch1::ON_PLANE, "the near plane counted as behind"),
+        (
+            strict_plane,
+            ch1::ON_PLANE,
+            "the near plane counted as behind",
+        ),
         (|_, _, _, _| None, ch1::DROPPED, "nothing drawn"),
     ];
     for (f, symptom, what) in cases {
@@ -178,7 +198,10 @@ fn edge_mutants_fail_with_their_symptom() {
 fn edge_alternatives_pass() {
     for (f, what) in [
         (book as ch1::EdgeFn, "the book's recipe"),
-        (alternative_from_behind, "the cut from the end behind, x / near"),
+        (
+            alternative_from_behind,
+            "the cut from the end behind, x / near",
+        ),
         (alternative_parametric, "the parametric clip"),
         (ch1::reference_edge, "the reference"),
     ] {
@@ -193,7 +216,8 @@ fn projection_and_look_at_mutants_name_their_mistake() {
     let check = ch1::check_project_point(|p| (p.z < 0.0).then(|| Vec2::new(p.x / p.z, p.y / p.z)));
     expect(check, ch1::MIRRORED, "u = x / z");
     // Points behind the camera projected too.
-    let check = ch1::check_project_point(|p| (p.z != 0.0).then(|| Vec2::new(p.x / -p.z, p.y / -p.z)));
+    let check =
+        ch1::check_project_point(|p| (p.z != 0.0).then(|| Vec2::new(p.x / -p.z, p.y / -p.z)));
     expect(check, ch1::NO_IMAGE, "points behind");
     let look = |e: Vec3, t: Vec3, u: Vec3| camera_from_world_look_at(e, t, u).unwrap();
     // world_from_camera returned.
@@ -203,21 +227,39 @@ fn projection_and_look_at_mutants_name_their_mistake() {
     let check = ch1::check_look_at(|e, t, u| {
         let back = (t - e).normalize();
         let right = u.cross(back).normalize();
-        Mat4::from_cols(right.extend(0.0), back.cross(right).extend(0.0), back.extend(0.0), e.extend(1.0)).inverse()
+        Mat4::from_cols(
+            right.extend(0.0),
+            back.cross(right).extend(0.0),
+            back.extend(0.0),
+            e.extend(1.0),
+        )
+        .inverse()
     });
     expect(check, ch1::AXIS_SIGN, "looking backwards");
     // right = back × up: the x axis flipped.
     let check = ch1::check_look_at(|e, t, u| {
         let back = (e - t).normalize();
         let right = back.cross(u).normalize();
-        Mat4::from_cols(right.extend(0.0), back.cross(right).extend(0.0), back.extend(0.0), e.extend(1.0)).inverse()
+        Mat4::from_cols(
+            right.extend(0.0),
+            back.cross(right).extend(0.0),
+            back.extend(0.0),
+            e.extend(1.0),
+        )
+        .inverse()
     });
     expect(check, ch1::AXIS_SIGN, "x flipped");
     // Axes not normalised.
     let check = ch1::check_look_at(|e, t, u| {
         let back = e - t;
         let right = u.cross(back);
-        Mat4::from_cols(right.extend(0.0), back.cross(right).extend(0.0), back.extend(0.0), e.extend(1.0)).inverse()
+        Mat4::from_cols(
+            right.extend(0.0),
+            back.cross(right).extend(0.0),
+            back.extend(0.0),
+            e.extend(1.0),
+        )
+        .inverse()
     });
     expect(check, ch1::NOT_UNIT, "not unit");
     assert!(ch1::check_look_at(look).passed());
@@ -255,14 +297,24 @@ fn refused_in_a_child(test: &str, calls: &[(&str, &dyn Fn())]) {
         }
         return;
     }
-    let path = module_path!().split_once("::").map_or(module_path!(), |p| p.1);
+    let path = module_path!()
+        .split_once("::")
+        .map_or(module_path!(), |p| p.1);
     let out = std::process::Command::new(std::env::current_exe().unwrap())
-        .args([&format!("{path}::{test}"), "--exact", "--nocapture", "--test-threads=1"])
+        .args([
+            &format!("{path}::{test}"),
+            "--exact",
+            "--nocapture",
+            "--test-threads=1",
+        ])
         .env(CHILD, "1")
         .output()
         .unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
     for (id, _) in calls {
-        assert!(text.contains(&format!("refused: {}", guard::message(id))), "{id}: {text}");
+        assert!(
+            text.contains(&format!("refused: {}", guard::message(id))),
+            "{id}: {text}"
+        );
     }
 }

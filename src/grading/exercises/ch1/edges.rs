@@ -97,7 +97,9 @@ fn clauses(f: EdgeFn) -> Check {
         (Kind::OnPlane, v(-0.5, 0.25, -0.25), v(0.5, -0.5, -0.25), 0.25, "both ends on the near plane"),
     ];
     for (k, &(kind, a, b, near, what)) in cases.iter().enumerate() {
-        crate::grading::progress(format_args!("calling draw_edges on clause case {k}: {a} to {b}, near {near}"));
+        crate::grading::progress(format_args!(
+            "calling draw_edges on clause case {k}: {a} to {b}, near {near}"
+        ));
         let got = f(&camera, a, b, near);
         let want = reference_edge(&camera, a, b, near);
         let err = match (got, want) {
@@ -115,7 +117,11 @@ fn clauses(f: EdgeFn) -> Check {
             show(want)
         );
         let (why, symptom) = diagnose(&camera, kind, a, b, near, got, want);
-        let detail = if why.is_empty() { detail } else { format!("{why}: {detail}") };
+        let detail = if why.is_empty() {
+            detail
+        } else {
+            format!("{why}: {detail}")
+        };
         return Check {
             error: err,
             tolerance: 1e-5,
@@ -255,7 +261,9 @@ fn railroad(f: EdgeFn) -> Check {
     let draw = |g: EdgeFn| {
         let mut film = Film::new(camera.width, camera.height);
         for (k, (a, b)) in edges.iter().enumerate() {
-            crate::grading::progress(format_args!("calling draw_edges on railroad edge {k}, {a} to {b}"));
+            crate::grading::progress(format_args!(
+                "calling draw_edges on railroad edge {k}, {a} to {b}"
+            ));
             if let Some((ra, rb)) = g(&camera, *a, *b, NEAR) {
                 draw::line(&mut film, ra, rb, Vec3::ONE, Vec3::ONE);
             }
@@ -294,7 +302,14 @@ fn railroad(f: EdgeFn) -> Check {
         }
     }
     let explain = |_: u32, _: u32| worst.1.clone();
-    let check = images::compare(draw(f), draw(reference_edge), 0.05, 2e-3, "wireframe", &explain);
+    let check = images::compare(
+        draw(f),
+        draw(reference_edge),
+        0.05,
+        2e-3,
+        "wireframe",
+        &explain,
+    );
     if check.passed() && worst.0 > 1.0 {
         return Check {
             error: 1.0 + check.tolerance,

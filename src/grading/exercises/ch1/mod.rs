@@ -155,7 +155,10 @@ pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
         // A NaN (from a NaN answer) counts as infinitely wrong.
         let err = if err.is_nan() { f64::INFINITY } else { err };
         if err > worst.0 {
-            worst = (err, format!("p = {p}: got {}, expected {}", show(got), show(want)));
+            worst = (
+                err,
+                format!("p = {p}: got {}, expected {}", show(got), show(want)),
+            );
         }
     }
     let check = Check {
@@ -251,7 +254,10 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
 
 /// The mistake a look-at matrix makes on every camera, if one: the
 /// inverse returned, an axis flipped, axes not unit length.
-fn look_at_mistake(f: fn(Vec3, Vec3, Vec3) -> Mat4, cameras: &[(Vec3, Vec3, Vec3)]) -> Option<Symptom> {
+fn look_at_mistake(
+    f: fn(Vec3, Vec3, Vec3) -> Mat4,
+    cameras: &[(Vec3, Vec3, Vec3)],
+) -> Option<Symptom> {
     let close = |a: Mat4, b: Mat4| (a - b).to_cols_array().iter().all(|d| d.abs() <= 1e-3);
     let all = |test: &dyn Fn(Mat4, Mat4) -> bool| {
         cameras.iter().all(|&(eye, target, up)| {
@@ -269,7 +275,9 @@ fn look_at_mistake(f: fn(Vec3, Vec3, Vec3) -> Mat4, cameras: &[(Vec3, Vec3, Vec3
     };
     let not_unit = |got: Mat4, _: Mat4| {
         let r = glam::Mat3::from_mat4(got).transpose();
-        [r.x_axis, r.y_axis, r.z_axis].iter().any(|c| (c.length() - 1.0).abs() > 1e-3)
+        [r.x_axis, r.y_axis, r.z_axis]
+            .iter()
+            .any(|c| (c.length() - 1.0).abs() > 1e-3)
     };
     if all(&|got, want| close(got, want.inverse())) {
         Some(INVERSE)

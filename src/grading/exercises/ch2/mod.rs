@@ -1,13 +1,15 @@
 //! Chapter 2's exercises and how each is graded. The capstone's check is
-//! in [`raster`], the mistakes it can name in [`model`].
+//! in [`raster`] and [`shading`], the mistakes it can name in [`model`].
 
 use glam::{Vec2, Vec3, Vec3Swizzles};
 
 use crate::ch2_rasterization::{depth, edge, triangle};
 use crate::grading::exercise::{Check, Exercise, Symptom};
 
+mod common;
 pub mod model;
 pub mod raster;
+pub mod shading;
 
 pub use raster::{check_rasterize_triangle, fill_rule_triangles, RasterFn};
 

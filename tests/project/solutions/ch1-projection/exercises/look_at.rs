@@ -10,6 +10,12 @@ pub fn look_at(eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {
     let y = z.cross(x);
     // The inverse of a rotation is its transpose: the axes as rows, then
     // the eye moved to the origin.
-    let rotation = Mat4::from_cols(x.extend(0.0), y.extend(0.0), z.extend(0.0), Vec3::ZERO.extend(1.0)).transpose();
+    let rotation = Mat4::from_cols(
+        x.extend(0.0),
+        y.extend(0.0),
+        z.extend(0.0),
+        Vec3::ZERO.extend(1.0),
+    )
+    .transpose();
     rotation * Mat4::from_translation(-eye)
 }
