@@ -36,7 +36,7 @@ fn the_edge_capstone_passes_from_the_lecture_and_catches_mistakes() {
     });
     assert!(!check.passed(), "{}", check.detail);
     assert!(check.detail.contains("the edge from"), "{}", check.detail);
-    assert_eq!(check.symptom, Some(ch1::NOT_CLIPPED));
+    assert!(check.images.is_some());
     // Dropping every edge that crosses the near plane loses the rails.
     let check = ch1::check_draw_edges(|camera, a, b, near| {
         let (ca, cb) = (camera.to_camera(a), camera.to_camera(b));

@@ -28,11 +28,16 @@ pub fn reference_edge(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(V
 
 /// The capstone: the clauses on a camera at the origin (camera space is
 /// world space, so ends on the near plane are exactly on it), then the
-/// railroad.
+/// railroad (whose images a failed clause shows too).
 pub fn check_draw_edges(f: EdgeFn) -> Check {
     let clauses = clauses(f);
     if !clauses.passed() {
-        return clauses;
+        // The railroad drawn both ways, to look at (the live view and the
+        // failure images show it).
+        return Check {
+            images: railroad(f).images,
+            ..clauses
+        };
     }
     railroad(f)
 }
