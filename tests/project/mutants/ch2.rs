@@ -30,6 +30,7 @@ struct Knobs {
     store_depth: bool,
     colour_before_test: bool,
     clip_x: bool,
+    guard_index: bool,
 }
 
 const RIGHT: Knobs = Knobs {
@@ -43,6 +44,7 @@ const RIGHT: Knobs = Knobs {
     store_depth: true,
     colour_before_test: false,
     clip_x: true,
+    guard_index: true,
 };
 
 /// The capstone as a student writes it from the book, with knobs.
@@ -96,7 +98,7 @@ fn student(
             };
             let colour = c[0] * wt.x + c[1] * wt.y + c[2] * wt.z;
             let i = (y * w + x) as usize;
-            if i >= image.len() {
+            if k.guard_index && i >= image.len() {
                 continue; // (a guard against the panic, not against the wrap-around)
             }
             if k.colour_before_test {
@@ -177,6 +179,12 @@ mutant!(
 mutant!(
     /// Writes the colour before the depth test decides.
     colour_first, colour_before_test: true
+);
+mutant!(
+    /// No clip at the right border and no guard either: a pixel past the
+    /// image's end is an index out of bounds (the grader reports the panic
+    /// with its file and line).
+    writes_past_the_end, clip_x: false, guard_index: false
 );
 mutant!(
     /// The bounding box not clipped at the right border: a column x >= width
@@ -351,6 +359,17 @@ fn alternative_incremental(
 fn expect(check: Check, symptom: Symptom, what: &str) {
     assert!(!check.passed(), "{what} passed: {}", check.detail);
     assert_eq!(check.symptom, Some(symptom), "{what}: {}", check.detail);
+}
+
+#[test]
+fn a_rasterizer_writing_past_the_image_panics_in_the_check() {
+    let r = catch_unwind(|| ch2::check_rasterize_triangle(writes_past_the_end));
+    let message = r.map(|c| c.detail).unwrap_err();
+    let message = message
+        .downcast_ref::<String>()
+        .cloned()
+        .unwrap_or_default();
+    assert!(message.contains("out of bounds"), "{message}");
 }
 
 #[test]
