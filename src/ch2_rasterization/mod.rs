@@ -14,6 +14,7 @@
 //! | texture coordinates on a checkered floor, both ways and ray cast | [`checker`] |
 //! | the views | [`views`] |
 //! | exact coverage, the anti-aliasing reference | [`exact`] |
+//! | one triangle start to finish, readable (exercise 2.4) | [`triangle`] |
 //! | the chapter boundary and report | [`stage`] |
 //! | the report's studies | [`studies`] |
 //! | the speed benchmark (`ch2 --bench`) | [`bench`](mod@bench) |
@@ -33,4 +34,5 @@ pub mod setup;
 pub mod stability;
 pub mod stage;
 pub mod studies;
+pub mod triangle;
 pub mod views;

@@ -1,22 +1,32 @@
 //! Capstone 2: rasterize a triangle.
 //!
-//! The grader draws chapter 2's interpenetrating shapes
-//! (`scenes/interpenetrating.toml`) and a fan and a grid of triangles
-//! whose edges run exactly through sample points, one call per triangle.
+//! Which samples does a triangle cover, which of them does it win against
+//! what is already drawn, and what colour does it leave there? The idea:
+//! edge functions tell inside from outside, the depth buffer keeps the
+//! nearest surface, and barycentric coordinates interpolate, corrected for
+//! perspective because the triangle is seen slanted.
 //!
-//! * Each vertex is (x, y, z): raster pixels (x right, y down) and depth
-//!   (distance in front of the camera, smaller is nearer). Triangles come
-//!   in either winding.
-//! * Pixel (x, y) has one sample, at its centre (x + 0.5, y + 0.5), and
-//!   index y·width + x in `depth` and `image`.
-//! * Test only the samples in the triangle's bounding box, clipped to the
-//!   image (vertices may lie far off screen).
-//! * A sample is inside when all three edge functions say so. One that
-//!   lies exactly on an edge (edge function 0) belongs to the triangle
-//!   only for a top or a left edge (the top-left rule), so that a sample
-//!   on an edge shared by two triangles is drawn exactly once.
-//! * Interpolate z and the colour with the barycentric coordinates; draw
-//!   only where z is nearer than the depth stored (then store it).
+//! The contract (the grader checks each clause on its own, then draws
+//! chapter 2's `scenes/interpenetrating.toml`):
+//! * Input: each vertex is (x, y, z): raster pixels (x right, y down) and
+//!   the depth z > 0, the distance in front of the camera (smaller is
+//!   nearer). Colours are per vertex. `depth` and `image` are `width` ×
+//!   `height`, index y·width + x.
+//! * Samples: pixel (x, y) has one sample, at its centre (x + 0.5, y + 0.5).
+//! * Coverage is exact: a sample strictly inside is drawn; one exactly on
+//!   an edge belongs to the triangle only for a top or a left edge (the
+//!   top-left rule), so that a sample on an edge shared by two triangles is
+//!   drawn exactly once. Either winding (clockwise or not) is drawn.
+//! * The image border: vertices may lie far outside the image (10⁵ pixels);
+//!   nothing outside it is written, and the work stays within the image.
+//! * A triangle without area, or with a corner that is not finite, draws
+//!   nothing.
+//! * Depth: the depth at a sample is the true distance there, which is not
+//!   the barycentric mix of the corners' depths on the screen (1/z is);
+//!   it is drawn only if strictly smaller than `depth[i]` (a tie keeps what
+//!   was drawn first), and then stored there.
+//! * Colour: perspective-correct, the colour of the triangle's point seen
+//!   at the sample (within 1e-4).
 //!
 //! Grade it with: `cargo run --release --bin grade -- ch2`, and see it
 //! render with `cargo run --release --bin ch2 -- --student`.
@@ -33,13 +43,6 @@ pub fn rasterize_triangle(
     depth: &mut [f32],
     image: &mut [Vec3],
 ) {
-    // TODO: the doubled area from the edge function; nothing to draw when
-    //       it is 0; swap two vertices (and colours) when it is negative so
-    //       the edge functions are positive inside.
-    // TODO: the bounding box of the three vertices, clipped to the image.
-    // TODO: for every sample in it: the three edge functions; inside with
-    //       the top-left rule for samples exactly on an edge.
-    // TODO: barycentrics = edge functions / area; interpolate z; the
-    //       depth test; interpolate the colour and write it.
+    // TODO: coverage, depth, colour (the grader's second hint has the steps).
     todo!()
 }

@@ -1,0 +1,291 @@
+//! Chapter 1's exercises and how each is graded. The capstone's check is
+//! in [`edges`].
+
+use glam::{Mat4, Vec2, Vec3};
+
+use crate::ch1_projection::camera::{
+    camera_from_world_look_at, project_pinhole, Camera, CameraDesc,
+};
+use crate::ch1_projection::wireframe::draw_scene;
+use crate::grading::exercise::{Check, Exercise, Symptom};
+use crate::scene::Material;
+
+pub mod edges;
+
+pub use edges::{check_draw_edges, reference_edge, EdgeFn};
+
+/// The image turned upside down: the sign of the projection.
+pub const MIRRORED: Symptom = Symptom {
+    name: "mirrored image",
+    hint: "slide \"Perspective projection Pinhole camera model\" writes u = x/z, v = y/z: that is the upside-down image on the back wall of a real pinhole box. raystep's camera looks down -z with the image plane z = -1 in FRONT of the pinhole, where z < 0, so u = x / (-z), v = y / (-z) (book \"The pinhole\").",
+};
+/// A point with no image given one.
+pub const NO_IMAGE: Symptom = Symptom {
+    name: "a point with no image got one",
+    hint: "book \"The pinhole\": a point on the camera plane (z = 0) or behind it (z > 0) never reaches the image plane; return None for it instead of dividing.",
+};
+/// world_from_camera returned instead of camera_from_world.
+pub const INVERSE: Symptom = Symptom {
+    name: "the inverse matrix",
+    hint: "book \"A camera you can place\": the axes and the eye as columns make world_from_camera (camera space to the world); the exercise asks for the other way, its inverse.",
+};
+/// An axis of the camera's frame with the wrong sign.
+pub const AXIS_SIGN: Symptom = Symptom {
+    name: "an axis points the wrong way",
+    hint: "book \"A camera you can place\": +z points from the target BACK to the eye (the camera looks down -z), +x = up × z (in that order: the cross product changes sign when swapped), +y = z × x.",
+};
+/// Axes that are not unit length.
+pub const NOT_UNIT: Symptom = Symptom {
+    name: "axes not unit length",
+    hint: "book \"A camera you can place\": the three axes must be unit vectors, or the matrix scales the world; normalise eye - target and the cross product (the third axis is then unit already).",
+};
+/// Capstone: the ends in the other order.
+pub const ORDER: Symptom = Symptom {
+    name: "the ends in the other order",
+    hint: "book \"Exercise 1.3's contract\": the first raster point belongs to a (or to the cut that replaces it), the second to b; when you cut an end, put the cut point in that end's place.",
+};
+/// Capstone: an edge behind the near plane drawn.
+pub const BEHIND_DRAWN: Symptom = Symptom {
+    name: "an edge behind the near plane drawn",
+    hint: "book \"Edges that pass behind the camera\": an edge with both ends behind the near plane z = -near (z > -near, which includes points just in front of the pinhole) has nothing to draw: None.",
+};
+/// Capstone: a partly visible edge dropped.
+pub const DROPPED: Symptom = Symptom {
+    name: "a visible edge dropped",
+    hint: "book \"Edges that pass behind the camera\": an edge with an end in front of the near plane has a visible part, even when its other end is behind: cut it where it crosses z = -near and draw what is in front.",
+};
+/// Capstone: the hidden end projected without a cut.
+pub const NOT_CLIPPED: Symptom = Symptom {
+    name: "the hidden end projected",
+    hint: "book \"Edges that pass behind the camera\": an end behind the camera projects through the pinhole to the mirrored side of the image; replace it by the point where the edge crosses the near plane before projecting.",
+};
+/// Capstone: the cut not on the near plane.
+pub const WRONG_CUT: Symptom = Symptom {
+    name: "the cut is not on the near plane",
+    hint: "book \"Edges that pass behind the camera\": with d = z + near for each end (d <= 0 in front), the edge a→b crosses z = -near at a + d_a / (d_a - d_b) · (b - a); use the near given, not 0 or a constant.",
+};
+/// Capstone: an end on the near plane treated as behind it.
+pub const ON_PLANE: Symptom = Symptom {
+    name: "an end on the near plane",
+    hint: "book \"Exercise 1.3's contract\": the near plane itself counts as in front (z <= -near); an end exactly on it is kept as it is, and an edge that only touches it from behind is that one point, twice.",
+};
+
+/// Chapter 1's exercises, in order.
+pub fn exercises() -> Vec<Exercise> {
+    vec![
+        Exercise {
+            chapter: 1,
+            name: "project_point",
+            file: "chapters/ch1-projection/exercises/project_point.rs",
+            hints: [
+                "slide \"Perspective projection Pinhole camera model\" (similar triangles), but mind its sign: the slide's u = x/z is the upside-down image behind a real pinhole, while raystep's camera looks down -z with its image plane z = -1 in front (book \"The pinhole\").",
+                "the ray from the pinhole through p is t·p; it meets the plane z = -1 where t·z = -1, so t = 1 / (-z). Points with z >= 0 are beside or behind the pinhole: they have no image.",
+                "None when z >= 0; otherwise (u, v) = (x / -z, y / -z)",
+            ],
+            symptoms: &[MIRRORED, NO_IMAGE],
+            reference: || check_project_point(project_pinhole),
+        },
+        Exercise {
+            chapter: 1,
+            name: "look_at",
+            file: "chapters/ch1-projection/exercises/look_at.rs",
+            hints: [
+                "book \"A camera you can place\" (after slide \"Perspective projection Pinhole camera model\", whose pinhole sits at the origin): build the camera's own axes first, then the matrix that maps camera space to the world; you need its inverse.",
+                "1. +z is the unit vector from the target back to the eye. 2. +x is perpendicular to up and +z: a cross product, normalised. 3. +y = z × x. 4. The columns of world_from_camera are x, y, z (w = 0) and the eye (w = 1). 5. Return its inverse.",
+                "back = normalize(eye - target), right = normalize(up x back), up' = back x right; \
+                   world_from_camera has columns right, up', back, eye: invert it",
+            ],
+            symptoms: &[INVERSE, AXIS_SIGN, NOT_UNIT],
+            reference: || check_look_at(|e, t, u| camera_from_world_look_at(e, t, u).unwrap_or(Mat4::NAN)),
+        },
+        Exercise {
+            chapter: 1,
+            name: "draw_edges",
+            file: "chapters/ch1-projection/exercises/draw_edges.rs",
+            hints: [
+                "book \"Edges that pass behind the camera\" (and slide \"Perspective projection Pinhole camera model\" for the projection): an edge with one end behind the pinhole has no image as a whole, but its front part does. Cut it at the near plane before projecting; book \"Exercise 1.3's contract\" lists what is checked.",
+                "1. both ends to camera space (camera.to_camera). 2. d = z + near for each end: d <= 0 is in front of the near plane z = -near (the plane itself included). 3. both d > 0: None. 4. one d > 0: replace that end, in its own place, by the point where the edge crosses the plane. 5. project both ends, u = x / -z, v = y / -z, then camera.raster_from_image_plane.",
+                "da = a.z + near, db = b.z + near; both > 0: None; da > 0: a = a.lerp(b, da / (da - db)) with a.z = -near (the same for b); raster = camera.raster_from_image_plane(Vec2::new(x / -z, y / -z)) for a, then b",
+            ],
+            symptoms: &[ORDER, BEHIND_DRAWN, DROPPED, NOT_CLIPPED, WRONG_CUT, ON_PLANE, MIRRORED],
+            reference: || check_draw_edges(reference_edge),
+        },
+    ]
+}
+
+/// Compares a pinhole projection with values worked out by hand.
+pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
+    // (point, expected image): in front of the camera, worked out by hand...
+    let mut cases: Vec<(Vec3, Option<Vec2>)> = vec![
+        (Vec3::new(1.0, 2.0, -2.0), Some(Vec2::new(0.5, 1.0))),
+        (Vec3::new(-3.0, 0.0, -1.0), Some(Vec2::new(-3.0, 0.0))),
+        (Vec3::new(0.2, -0.4, -4.0), Some(Vec2::new(0.05, -0.1))),
+        (Vec3::new(0.0, 0.0, -1e6), Some(Vec2::ZERO)),
+        // ... and points with no image.
+        (Vec3::new(0.0, 0.0, 1.0), None),
+        (Vec3::new(1.0, 1.0, 0.0), None),
+    ];
+    // A grid of points at several depths: x/(-z), y/(-z).
+    for k in 1..=4 {
+        let z = -(k as f32) * 1.5;
+        for x in [-2.0f32, 0.5, 3.0] {
+            cases.push((
+                Vec3::new(x, 1.0 - x, z),
+                Some(Vec2::new(x / -z, (1.0 - x) / -z)),
+            ));
+        }
+    }
+    let mut worst = (0.0f64, String::from("all cases match"));
+    // The mistakes it can name: every image the negative of the right one
+    // (the slide's sign), or an image for a point that has none.
+    let (mut mirrored, mut no_image) = (true, false);
+    for (p, want) in cases {
+        let got = f(p);
+        match (got, want) {
+            (Some(g), Some(w)) => mirrored &= (g + w).length() <= 1e-5 * w.length().max(1.0),
+            (Some(_), None) => no_image = true,
+            (None, None) => {}
+            (None, Some(_)) => mirrored = false,
+        }
+        let err = match (got, want) {
+            (Some(g), Some(w)) => ((g - w).length() / w.length().max(1.0)) as f64,
+            (None, None) => 0.0,
+            _ => f64::INFINITY,
+        };
+        // A NaN (from a NaN answer) counts as infinitely wrong.
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        if err > worst.0 {
+            worst = (
+                err,
+                format!("p = {p}: got {}, expected {}", show(got), show(want)),
+            );
+        }
+    }
+    let check = Check {
+        error: worst.0,
+        tolerance: 1e-5,
+        detail: worst.1,
+        images: None,
+        symptom: None,
+    };
+    if check.passed() {
+        check
+    } else if mirrored {
+        check.with_symptom(MIRRORED)
+    } else if no_image {
+        check.with_symptom(NO_IMAGE)
+    } else {
+        check
+    }
+}
+
+/// An image point, with non-finite coordinates as `inf` or `NaN`.
+fn show(p: Option<Vec2>) -> String {
+    p.map_or("None".into(), |p| format!("Some(({}, {}))", p.x, p.y))
+}
+
+/// Compares a look-at matrix with the reference on several cameras, then
+/// renders the lecture's tetrahedron through it.
+pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
+    let cameras = [
+        (Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, Vec3::Y),
+        (Vec3::new(3.0, 2.0, 4.0), Vec3::new(0.0, 0.5, 0.0), Vec3::Y),
+        (
+            Vec3::new(-2.0, 5.0, 1.0),
+            Vec3::new(1.0, 0.0, -1.0),
+            Vec3::new(0.0, 0.0, -1.0),
+        ),
+        (
+            Vec3::new(10.0, -3.0, 0.5),
+            Vec3::new(0.0, 0.0, 0.0),
+            Vec3::new(0.3, 1.0, 0.1),
+        ),
+    ];
+    let mut worst = (0.0f64, String::from("all matrices match"));
+    for (eye, target, up) in cameras {
+        let want = camera_from_world_look_at(eye, target, up).expect("proper frames");
+        let got = f(eye, target, up);
+        // The camera must send the eye to the origin and the target onto -z.
+        let err = (got - want)
+            .to_cols_array()
+            .iter()
+            .map(|d| d.abs() as f64)
+            .fold(0.0, f64::max);
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        if err > worst.0 {
+            worst = (
+                err,
+                format!(
+                    "eye {eye}, target {target}, up {up}: eye maps to {}, target to {}",
+                    got.transform_point3(eye),
+                    got.transform_point3(target)
+                ),
+            );
+        }
+    }
+    // The picture: the tetrahedron through the candidate and the reference.
+    let desc = CameraDesc {
+        eye: glam::DVec3::new(3.0, 2.0, 4.0),
+        target: glam::DVec3::ZERO,
+        up: glam::DVec3::Y,
+        fov_degrees: 45.0,
+        width: 160,
+        height: 120,
+    };
+    let reference = Camera::new(desc).expect("valid camera");
+    let mut candidate = reference.clone();
+    candidate.camera_from_world = f(desc.eye.as_vec3(), desc.target.as_vec3(), desc.up.as_vec3());
+    let mesh = [crate::scene::mesh::Mesh::tetrahedron()];
+    let materials = [Material::default_grey()];
+    let (ref_films, _) = draw_scene(&reference, &mesh, &materials);
+    let (cand_films, _) = draw_scene(&candidate, &mesh, &materials);
+    let check = Check {
+        error: worst.0,
+        tolerance: 1e-4,
+        detail: worst.1,
+        images: Some((cand_films[0].clone(), ref_films[0].clone())),
+        symptom: None,
+    };
+    match look_at_mistake(f, &cameras) {
+        Some(symptom) if !check.passed() => check.with_symptom(symptom),
+        _ => check,
+    }
+}
+
+/// The mistake a look-at matrix makes on every camera, if one: the
+/// inverse returned, an axis flipped, axes not unit length.
+fn look_at_mistake(
+    f: fn(Vec3, Vec3, Vec3) -> Mat4,
+    cameras: &[(Vec3, Vec3, Vec3)],
+) -> Option<Symptom> {
+    let close = |a: Mat4, b: Mat4| (a - b).to_cols_array().iter().all(|d| d.abs() <= 1e-3);
+    let all = |test: &dyn Fn(Mat4, Mat4) -> bool| {
+        cameras.iter().all(|&(eye, target, up)| {
+            let want = camera_from_world_look_at(eye, target, up).expect("proper frames");
+            test(f(eye, target, up), want)
+        })
+    };
+    // got = S · want for a sign matrix S: an axis (or two) flipped.
+    let flipped = |got: Mat4, want: Mat4| {
+        let s = got * want.inverse();
+        let diag = Vec3::new(s.x_axis.x, s.y_axis.y, s.z_axis.z);
+        diag.abs().cmpge(Vec3::splat(0.999)).all()
+            && diag.cmplt(Vec3::ZERO).any()
+            && close(s, Mat4::from_scale(diag.signum()))
+    };
+    let not_unit = |got: Mat4, _: Mat4| {
+        let r = glam::Mat3::from_mat4(got).transpose();
+        [r.x_axis, r.y_axis, r.z_axis]
+            .iter()
+            .any(|c| (c.length() - 1.0).abs() > 1e-3)
+    };
+    if all(&|got, want| close(got, want.inverse())) {
+        Some(INVERSE)
+    } else if all(&flipped) {
+        Some(AXIS_SIGN)
+    } else if all(&not_unit) {
+        Some(NOT_UNIT)
+    } else {
+        None
+    }
+}
