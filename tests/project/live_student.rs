@@ -1,7 +1,7 @@
 //! The TUI's student mode without a terminal: the library function it
 //! calls builds the exercises crate as the grader does and renders a
 //! chapter's capstone with the student's code. The shipped stub is "not
-//! started"; the reference solution, written into the exercise file,
+//! started"; a correct solution, written into the exercise file,
 //! matches the reference image; a file that does not compile gives the
 //! compiler's file:line. (The builds share the grader tests' lock and
 //! their build folder: each is one small rebuild of the exercises crate.)
@@ -33,19 +33,19 @@ fn live_student_is_not_started_for_the_stub_and_matches_with_the_reference() {
     assert!(matches!(err, LiveError::NotStarted { .. }), "{err:?}");
     assert_eq!(err.status(), "ch1/draw_edges: not started (todo!)");
 
-    // The reference solution in the student's file: the two images match.
-    std::fs::write(
+    // A correct solution in the student's file: the two images match.
+    std::fs::copy(
+        common::root().join("tests/project/solutions/ch1-projection/exercises/draw_edges.rs"),
         &file,
-        "use glam::{Vec2, Vec3};\nuse raystep::ch1_projection::camera::Camera;\n\
-         pub fn draw_edges(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(Vec2, Vec2)> {\n    \
-         raystep::grading::exercises::ch1::reference_edge(camera, a, b, near)\n}\n",
     )
     .unwrap();
     let render = live_student(1, &opts, None).unwrap();
     assert!(render.matches, "{}", render.detail);
     assert_eq!(render.id, "ch1/draw_edges");
     assert_eq!(render.status(), "student matches reference");
-    assert_eq!(render.differing_pixels(), 0);
+    // Another correct formulation may round one or two anti-aliased pixels
+    // differently (the check's tolerance allows it).
+    assert!(render.differing_pixels() <= 2, "{}", render.differing_pixels());
     assert_eq!(
         (render.student.width, render.student.height),
         (160, 120),
