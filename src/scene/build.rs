@@ -183,6 +183,19 @@ pub(super) fn build(
         if let Some(n) = &o.name {
             mesh.name = n.clone();
         }
+        // An area light needs an area: the lights would sample a density
+        // of 1/0, and the reports would count a light that gives none.
+        let area = emitting_area(&mesh);
+        if materials[mesh.material].is_emissive() && (area.is_nan() || area <= 0.0) {
+            return Err(scene_err(
+                at,
+                format!(
+                    "`{}` emits light but its triangles have no area (every one is degenerate in f32); \
+                     give it area or a material that does not emit",
+                    mesh.name
+                ),
+            ));
+        }
         meshes.push(mesh);
     }
 
@@ -217,6 +230,17 @@ pub(super) fn build(
         lights: file.lights,
         sdfs,
     })
+}
+
+/// The total area of a mesh's triangles, as the renderer computes it (f32).
+fn emitting_area(mesh: &crate::scene::mesh::Mesh) -> f32 {
+    mesh.triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
+            0.5 * (b - a).cross(c - a).length()
+        })
+        .sum()
 }
 
 /// The `[[sdfs]]` entries: each parsed into an SDF tree, named, and bound

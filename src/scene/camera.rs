@@ -32,6 +32,12 @@ pub struct CameraDesc {
 /// Largest width or height raystep renders; larger requests are refused.
 pub const MAX_RESOLUTION: u32 = 16384;
 
+/// The narrowest field of view, in degrees: at 0.01° the rays of
+/// neighbouring pixels of a 256-pixel-tall image are 7e-7 radians apart, a
+/// few f32 ulps; much narrower, f32 cannot tell them apart (a field of
+/// view of 1e-300 was accepted and gave a degenerate camera).
+pub const MIN_FOV_DEGREES: f64 = 0.01;
+
 impl CameraDesc {
     /// Whether chapter 1 can build a camera from this description: finite
     /// positions, a field of view strictly between 0° and 180°, a size
@@ -44,9 +50,9 @@ impl CameraDesc {
             crate::scene::validate::position(&v.to_array())
                 .map_err(|why| bad(format!("`{name}` {why}")))?;
         }
-        if !(self.fov_degrees > 0.0 && self.fov_degrees < 180.0) {
+        if !(self.fov_degrees >= MIN_FOV_DEGREES && self.fov_degrees < 180.0) {
             return Err(bad(format!(
-                "`fov` must be a vertical field of view in degrees strictly between 0 and 180, got {}",
+                "`fov` must be a vertical field of view in degrees from {MIN_FOV_DEGREES} to below 180, got {}",
                 self.fov_degrees
             )));
         }

@@ -45,7 +45,11 @@ fn live_student_is_not_started_for_the_stub_and_matches_with_the_reference() {
     assert_eq!(render.status(), "student matches reference");
     // Another correct formulation may round one or two anti-aliased pixels
     // differently (the check's tolerance allows it).
-    assert!(render.differing_pixels() <= 2, "{}", render.differing_pixels());
+    assert!(
+        render.differing_pixels() <= 2,
+        "{}",
+        render.differing_pixels()
+    );
     assert_eq!(
         (render.student.width, render.student.height),
         (160, 120),

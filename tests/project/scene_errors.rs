@@ -155,14 +155,14 @@ fn zero_and_absurd_resolutions_are_refused() {
 }
 
 #[test]
-fn field_of_view_must_lie_strictly_between_0_and_180() {
-    for fov in ["0", "180", "-5", "360", "nan"] {
+fn field_of_view_must_lie_between_0_01_and_180() {
+    for fov in ["0", "180", "-5", "360", "nan", "1e-300"] {
         let m = load_error(
             &format!("fov{fov}"),
             &format!("[camera]\nfov = {fov}\n"),
             &[],
         );
-        assert_mentions(&m, &["scene.toml", "`fov`", "strictly between 0 and 180"]);
+        assert_mentions(&m, &["scene.toml", "`fov`", "from 0.01 to below 180"]);
     }
 }
 
