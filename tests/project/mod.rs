@@ -10,6 +10,7 @@ mod hostile;
 mod hostile_bvh;
 mod layout;
 mod live_student;
+mod mutants;
 mod non_square;
 mod reports;
 mod scene_docs;

@@ -1,16 +1,12 @@
 //! Chapter 3's exercises and how each is graded.
 
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
-use crate::ch1_projection::camera::Camera;
-use crate::ch3_ray_triangle::geometry::Geometry;
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::readable_bvh::{self, ReadableBvh};
-use crate::ch3_ray_triangle::render::{films_from_sums, render_sum};
-use crate::ch3_ray_triangle::triangle::{self, intersect_f64, Hit};
+use crate::ch3_ray_triangle::readable_bvh;
+use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
 use crate::core::sampling::random;
 use crate::grading::exercise::{Check, Exercise};
-use crate::scene::Scene;
 
 /// Barycentric (u, v).
 pub type Uv = (f32, f32);
@@ -282,150 +278,5 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
     )
 }
 
-/// A BVH traversal as the exercise asks for it.
-pub type TraversalFn = fn(&ReadableBvh, &Ray, f32) -> Option<Hit>;
-
-/// Whether two closest hits agree: both miss, or both hit the same
-/// triangle at the same t (to 1e-5 relative). Two different triangles count
-/// as the same hit only at the same t (a ray through a shared edge may
-/// take either).
-pub fn same_closest_hit(a: Option<Hit>, b: Option<Hit>) -> bool {
-    match (a, b) {
-        (None, None) => true,
-        (Some(a), Some(b)) => {
-            let same_t = (a.t - b.t).abs() <= 1e-5 * a.t.abs().max(1e-3);
-            same_t && (a.triangle == b.triangle || (a.t - b.t).abs() <= 1e-6 * a.t.abs())
-        }
-        _ => false,
-    }
-}
-
-/// Hand-built cases (an empty tree, a stack of triangles seen front to
-/// back, back to front and cut short by t_max), then chapter 3's Cornell
-/// box at 32x32, one ray per pixel centre, and 2,000 rays from random
-/// points inside the box in random directions, each against the reference
-/// traversal. The error is the fraction of rays whose hit differs.
-pub fn check_bvh_traversal(f: TraversalFn) -> Check {
-    let reference = readable_bvh::closest_hit;
-    let mut cases: Vec<(ReadableBvh, Ray, f32, String)> = Vec::new();
-    let down = |x: f32, y: f32| Ray::new(Vec3::new(x, y, 1.0), -Vec3::Z).expect("a ray");
-    cases.push((
-        ReadableBvh::build(&[]),
-        down(0.0, 0.0),
-        f32::INFINITY,
-        "an empty tree".into(),
-    ));
-    // Sixteen small triangles stacked along z at z = -1 .. -16, shuffled so
-    // that the list order is not the depth order.
-    let stack: Vec<[Vec3; 3]> = (0..16)
-        .map(|i| {
-            let z = -1.0 - ((i * 7) % 16) as f32;
-            let o = Vec3::new(0.1 * i as f32, 0.0, z);
-            [
-                o + Vec3::new(-2.0, -1.0, 0.0),
-                o + Vec3::new(2.0, -1.0, 0.0),
-                o + Vec3::new(0.0, 2.0, 0.0),
-            ]
-        })
-        .collect();
-    let bvh = ReadableBvh::build(&stack);
-    let up = Ray::new(Vec3::new(0.5, 0.0, -30.0), Vec3::Z).expect("a ray");
-    for (ray, t_max, what) in [
-        (
-            down(0.5, 0.0),
-            f32::INFINITY,
-            "straight down a stack of 16 triangles",
-        ),
-        (up, f32::INFINITY, "straight up the same stack from below"),
-        (
-            down(0.5, 0.0),
-            1.5,
-            "down the stack, t_max before the first hit",
-        ),
-        (
-            down(0.5, 0.0),
-            2.5,
-            "down the stack, t_max just past the first hit",
-        ),
-        (down(50.0, 0.0), f32::INFINITY, "beside the stack: a miss"),
-        (
-            Ray::new(Vec3::new(0.5, 0.0, 1.0), Vec3::new(0.05, 0.02, -1.0)).expect("a ray"),
-            f32::INFINITY,
-            "slanted through the stack",
-        ),
-    ] {
-        cases.push((bvh.clone(), ray, t_max, what.into()));
-    }
-    let mut rays_checked = 0usize;
-    let mut wrong = 0usize;
-    let mut first_wrong = String::new();
-    let mut compare = |bvh: &ReadableBvh, ray: &Ray, t_max: f32, what: &dyn Fn() -> String| {
-        let (got, want) = (f(bvh, ray, t_max), reference(bvh, ray, t_max));
-        rays_checked += 1;
-        if !same_closest_hit(got, want) {
-            wrong += 1;
-            if first_wrong.is_empty() {
-                first_wrong = format!("{}: got {got:?}, expected {want:?}", what());
-            }
-        }
-    };
-    for (bvh, ray, t_max, what) in &cases {
-        compare(bvh, ray, *t_max, &|| what.clone());
-    }
-    // The Cornell box, primary rays and rays from inside it.
-    let scene = Scene::builtin()
-        .with_resolution(32, 32)
-        .expect("a valid resolution");
-    let camera = Camera::of(&scene);
-    let geometry = Geometry::new(&scene);
-    let bvh = ReadableBvh::build(&geometry.triangles.tris);
-    for y in 0..camera.height {
-        for x in 0..camera.width {
-            let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
-            compare(&bvh, &ray, f32::INFINITY, &|| {
-                format!("the Cornell box, pixel ({x}, {y})")
-            });
-        }
-    }
-    let (lo, hi) = geometry
-        .triangles
-        .tris
-        .iter()
-        .flatten()
-        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| {
-            (lo.min(*p), hi.max(*p))
-        });
-    for i in 0..2000u64 {
-        let r = |d| random(34, i, 0, d);
-        let origin = lo + (hi - lo) * Vec3::new(r(0), r(1), r(2));
-        let Ok(ray) = Ray::new(origin, Vec3::new(r(3), r(4), r(5)) * 2.0 - 1.0) else {
-            continue;
-        };
-        compare(&bvh, &ray, f32::INFINITY, &|| {
-            format!(
-                "a ray inside the Cornell box from {origin} along {}",
-                ray.dir
-            )
-        });
-    }
-    // The depth views of both, for the images of a failed check.
-    let film = |t: TraversalFn| {
-        let (sums, _) = render_sum(&camera, &geometry, 0..1, 1, 0, &|r| {
-            t(&bvh, r, f32::INFINITY)
-        });
-        films_from_sums(&camera, &sums, 1).swap_remove(0)
-    };
-    // Always: `ch3 --student` shows them whether or not they match.
-    let images = Some((film(f), film(reference)));
-    Check {
-        error: wrong as f64 / rays_checked as f64,
-        tolerance: 0.0,
-        detail: if wrong == 0 {
-            format!("all {rays_checked} rays match")
-        } else {
-            format!("{wrong} of {rays_checked} rays differ; first: {first_wrong}")
-        },
-        images,
-        symptom: None,
-    }
-}
+mod bvh;
+pub use bvh::*;
