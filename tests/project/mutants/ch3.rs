@@ -416,3 +416,85 @@ fn calling_a_reference_solution_fails() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+// Exercises 3.1 to 3.3: their common mistakes, named.
+
+#[test]
+fn a_ray_plane_t_with_the_wrong_sign_fails() {
+    let check = ch3::check_ray_plane(|o, d, n, c| {
+        let nd = n.dot(d);
+        (nd != 0.0).then(|| (n.dot(o) - c) / nd)
+    });
+    assert!(!check.passed());
+    assert_eq!(check.symptom, Some(ch3::PLANE_SIGN), "{}", check.detail);
+}
+
+#[test]
+fn a_ray_plane_without_the_parallel_case_fails() {
+    // Divides by Nᵀd = 0: ∞ or NaN, returned as a hit.
+    let check = ch3::check_ray_plane(|o, d, n, c| Some((c - n.dot(o)) / n.dot(d)));
+    assert!(!check.passed());
+    assert_eq!(check.symptom, Some(ch3::PARALLEL), "{}", check.detail);
+}
+
+/// The book's inside test, with u and v swapped or strict inequalities.
+fn inside(p: Vec3, [p0, p1, p2]: [Vec3; 3], swap: bool, strict: bool) -> Option<(f32, f32)> {
+    let (e1, e2, q) = (p1 - p0, p2 - p0, p - p0);
+    let n = e1.cross(e2);
+    let nn = n.length_squared();
+    if nn == 0.0 {
+        return None;
+    }
+    let (mut u, mut v) = (n.dot(q.cross(e2)) / nn, n.dot(e1.cross(q)) / nn);
+    if swap {
+        std::mem::swap(&mut u, &mut v);
+    }
+    let ok = if strict {
+        u > 0.0 && v > 0.0 && u + v < 1.0
+    } else {
+        u >= 0.0 && v >= 0.0 && u + v <= 1.0
+    };
+    ok.then_some((u, v))
+}
+
+#[test]
+fn swapped_barycentrics_fail() {
+    let check = ch3::check_barycentric_inside(|p, t| inside(p, t, true, false));
+    assert!(!check.passed());
+    assert_eq!(check.symptom, Some(ch3::SWAPPED_UV), "{}", check.detail);
+}
+
+#[test]
+fn an_inside_test_without_its_edges_fails() {
+    let check = ch3::check_barycentric_inside(|p, t| inside(p, t, false, true));
+    assert!(!check.passed());
+    assert_eq!(check.symptom, Some(ch3::EDGES_OUTSIDE), "{}", check.detail);
+}
+
+/// Möller–Trumbore, optionally for a normalised d or keeping t ≤ 0.
+fn mt(o: Vec3, d: Vec3, [p0, p1, p2]: [Vec3; 3], unit: bool, behind: bool) -> Option<(f32, f32, f32)> {
+    let d = if unit { d.normalize() } else { d };
+    let (e1, e2, s) = (p1 - p0, p2 - p0, o - p0);
+    let p = d.cross(e2);
+    let det = e1.dot(p);
+    if det == 0.0 {
+        return None;
+    }
+    let q = s.cross(e1);
+    let (u, v, t) = (s.dot(p) / det, d.dot(q) / det, e2.dot(q) / det);
+    (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && (behind || t > 0.0)).then_some((t, u, v))
+}
+
+#[test]
+fn moller_trumbore_for_a_unit_direction_fails() {
+    let check = ch3::check_moller_trumbore(|o, d, t| mt(o, d, t, true, false));
+    assert!(!check.passed());
+    assert_eq!(check.symptom, Some(ch3::UNIT_T), "{}", check.detail);
+}
+
+#[test]
+fn moller_trumbore_hitting_behind_the_origin_fails() {
+    let check = ch3::check_moller_trumbore(|o, d, t| mt(o, d, t, false, true));
+    assert!(!check.passed());
+    assert_eq!(check.symptom, Some(ch3::BEHIND), "{}", check.detail);
+}
