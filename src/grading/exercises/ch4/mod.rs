@@ -1,21 +1,27 @@
 //! Chapter 4's exercises and how each is graded.
 
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 use super::images;
 use super::worst_of;
-use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch4_implicit_surfaces::distance::scene_distance;
 use crate::ch4_implicit_surfaces::march::{self, March};
-use crate::ch4_implicit_surfaces::normal::{gradient_central, normal, NormalScheme};
+use crate::ch4_implicit_surfaces::normal::gradient_central;
 use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere, sd_torus};
-use crate::core::film::Film;
 use crate::grading::exercise::{Check, Exercise};
+
+mod contract;
+mod scene;
+pub use contract::{
+    Case, Clause, Probe, BUDGET_OFF_BY_ONE, FIXED_EPSILON, IGNORES_MAX_DISTANCE, NOT_FACING,
+    NOT_UNIT, NO_BUDGET, ZERO_GRADIENT,
+};
+pub use scene::{check_trace_scene, contract_failure, reference_trace_ray, TraceRayFn};
 
 /// The candidate types.
 type SdfFn = fn(Vec3, Vec3, f32) -> f32;
-type TraceFn = fn(&dyn Fn(Vec3) -> f32, Vec3, Vec3, f32, u32, f32) -> Option<f32>;
+/// A sphere-tracing loop as exercise 4.2 asks for it.
+pub type TraceFn = fn(&dyn Fn(Vec3) -> f32, Vec3, Vec3, f32, u32, f32) -> Option<f32>;
 type NormalFn = fn(&dyn Fn(Vec3) -> f32, Vec3, f32) -> Vec3;
 /// A distance function borrowed for a check.
 type Dist<'a> = &'a dyn Fn(Vec3) -> f32;
@@ -28,9 +34,12 @@ pub fn exercises() -> Vec<Exercise> {
             name: "sphere_sdf",
             file: "chapters/ch4-sphere-tracing/exercises/sphere_sdf.rs",
             hints: [
-                "slide \"signed distance functions\": how far is a point from a sphere's surface, and what sign inside?",
-                "the distance to the centre tells you almost everything; the surface is where it equals the radius.",
-                "the distance to the centre, |p - center|, minus the radius",
+                "slide \"Signed distance function (SDF)\": how far is a point from a \
+                 sphere's surface, and which sign does it get inside?",
+                "every point of the surface is exactly `radius` from the centre, so \
+                 the distance to the centre tells you almost everything: subtract what \
+                 lies inside the surface.",
+                "|p - center| - radius",
             ],
             symptoms: &[],
             reference: || check_sphere_sdf(|p, c, r| sd_sphere(p - c, r)),
@@ -40,11 +49,17 @@ pub fn exercises() -> Vec<Exercise> {
             name: "sphere_trace",
             file: "chapters/ch4-sphere-tracing/exercises/sphere_trace.rs",
             hints: [
-                "slide \"sphere tracing\": no surface is closer than the distance function says, so that distance is a safe step.",
-                "count your steps: stop with a hit when the distance is below epsilon, and give up when the budget of steps or the maximum distance is used up.",
-                "loop: d = sdf(o + t d); if d < ε return Some(t); t += d; if t > max_distance return None",
+                "book \"Sphere tracing: why the distance makes the step safe\": no \
+                 surface is closer than the distance function says, so that distance \
+                 is a safe step.",
+                "start at t = 0. Evaluate f at o + t d and count the evaluation; if \
+                 |f| < ε, that t is the hit. Otherwise, if t is beyond max_distance or \
+                 max_steps evaluations are used up, it is a miss; else step t += f and \
+                 evaluate again.",
+                "t = 0; for _ in 0..max_steps { f = sdf(o + t d); if |f| < ε return \
+                 Some(t); if t > max_distance return None; t += f }; None",
             ],
-            symptoms: &[],
+            symptoms: &[NO_BUDGET, BUDGET_OFF_BY_ONE, IGNORES_MAX_DISTANCE],
             reference: || check_sphere_trace(reference_trace),
         },
         Exercise {
@@ -52,8 +67,12 @@ pub fn exercises() -> Vec<Exercise> {
             name: "gradient_normal",
             file: "chapters/ch4-sphere-tracing/exercises/gradient_normal.rs",
             hints: [
-                "slide \"the normal is the gradient of f\": estimate each partial derivative numerically.",
-                "central differences: sample f a little ahead and a little behind along each axis, divide the difference by 2h, and normalise the vector.",
+                "book \"Normals from the gradient\": the normal is the direction in \
+                 which f grows fastest; estimate each partial derivative from f \
+                 itself.",
+                "central differences: for each axis, sample f a distance h ahead and \
+                 h behind along that axis, divide the difference by 2h; the three \
+                 values are the gradient. Normalise it.",
                 "(f(p + h e_i) - f(p - h e_i)) / 2h per axis i, then normalize",
             ],
             symptoms: &[],
@@ -64,123 +83,33 @@ pub fn exercises() -> Vec<Exercise> {
             name: "trace_scene",
             file: "chapters/ch4-sphere-tracing/exercises/trace_scene.rs",
             hints: [
-                "slides \"sphere tracing\" and \"the normal is the gradient of f\": march with the distance as the step, count your evaluations, then differentiate f where you stopped.",
-                "stop with a hit when |f(p)| < march.epsilon_at(p); give up when t > march.max_distance or after march.max_steps evaluations. The normal: central differences with h = max(ε, 1e-4), normalised (fall back to -dir), turned to face the viewer.",
-                "t = 0; f0 = sdf(o); repeat at most max_steps times: p = o + t d, if |f| < eps_at(p) hit; if t > max_distance miss; t += f; f = sdf(o + t d). n = normalize(f(p+h x̂)-f(p-h x̂), …); if n·d > 0 { n = -n }",
+                "book \"Sphere tracing: why the distance makes the step safe\" and book \
+                 \"Normals from the gradient\": march with the distance as the step, \
+                 count every evaluation against the budget, then differentiate f where \
+                 you stopped.",
+                "t = 0, f = sdf(origin), one evaluation. Loop: at p = origin + t dir, a \
+                 hit when |f| < march.epsilon_at(p); a miss when t > march.max_distance \
+                 or when march.max_steps evaluations are used up; else t += f and \
+                 evaluate again. At the hit: central differences with h = \
+                 max(march.epsilon_at(p), 1e-4), normalised (-dir where the gradient is \
+                 zero), turned round if it points along dir.",
+                "t = 0; f = sdf(o); n = 1; loop { p = o + t d; if |f| < eps_at(p) break; \
+                 if t > max_distance || n >= max_steps return None; t += f; f = sdf(o + \
+                 t d); n += 1 } g = (f(p+h x̂)-f(p-h x̂), …) / 2h; n = g.try_normalize() \
+                 or -d; if n·d > 0 { n = -n }",
             ],
-            symptoms: &[],
+            symptoms: &[
+                NO_BUDGET,
+                BUDGET_OFF_BY_ONE,
+                IGNORES_MAX_DISTANCE,
+                FIXED_EPSILON,
+                NOT_UNIT,
+                NOT_FACING,
+                ZERO_GRADIENT,
+            ],
             reference: || check_trace_scene(reference_trace_ray),
         },
     ]
-}
-
-/// The capstone's candidate: a camera ray to (t, unit normal facing the
-/// viewer), or `None` for a miss.
-pub type TraceRayFn = fn(&dyn Fn(Vec3) -> f32, Vec3, Vec3, &March) -> Option<(f32, Vec3)>;
-
-/// raystep's answer to the capstone: chapter 4's sphere tracer and the
-/// central-difference gradient.
-pub fn reference_trace_ray(
-    f: &dyn Fn(Vec3) -> f32,
-    o: Vec3,
-    d: Vec3,
-    m: &March,
-) -> Option<(f32, Vec3)> {
-    crate::core::guard::reference("ch4/trace_scene");
-    let ray = Ray::new(o, d).ok()?;
-    let t = march::sphere_trace(f, &ray, m).hit()?;
-    let p = ray.at(t);
-    let h = m.epsilon_at(p).max(1e-4);
-    let n = normal(f, p, h, NormalScheme::Central, -d);
-    Some((t, if n.dot(d) > 0.0 { -n } else { n }))
-}
-
-/// The capstone: chapter 4's scene of every shape (`sdf-shapes.toml`, at
-/// 128 × 96) traced with the candidate, one ray per pixel, compared with
-/// the reference in the normal view (n/2 + 1/2) and the depth. Exact but
-/// for a few silhouette pixels where rounding decides (0.3 % may differ).
-pub fn check_trace_scene(f: TraceRayFn) -> Check {
-    use rayon::prelude::*;
-    let scene = images::scene("sdf-shapes.toml");
-    let camera = Camera::of(&scene)
-        .with_resolution(128, 96)
-        .expect("a valid camera");
-    let objects = &scene.sdfs;
-    let sdf = |p: Vec3| scene_distance(objects, p).0;
-    let m = March::default();
-    let (w, h) = (camera.width, camera.height);
-    let ray_at = |x: u32, y: u32| camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
-    let render = |g: TraceRayFn| {
-        let mut film = Film::new(w, h);
-        film.pixels = (0..w * h)
-            .into_par_iter()
-            .map(|i| {
-                let ray = ray_at(i % w, i / w);
-                if i % w == 0 {
-                    crate::grading::progress(format_args!(
-                        "calling trace_scene on the camera rays of row {} of {h}",
-                        i / w
-                    ));
-                }
-                match g(&sdf, ray.origin, ray.dir, &m) {
-                    Some((_, n)) => n * 0.5 + Vec3::splat(0.5),
-                    None => Vec3::ZERO,
-                }
-            })
-            .collect();
-        film
-    };
-    let explain = |x: u32, y: u32| {
-        let ray = ray_at(x, y);
-        let show = |r: Option<(f32, Vec3)>| match r {
-            Some((t, n)) => format!("a hit at t = {t:.4} m, normal {n:.3}"),
-            None => "a miss".to_string(),
-        };
-        format!(
-            "the ray from {:.2} along {:.3}: yours found {}, the reference {}",
-            ray.origin,
-            ray.dir,
-            show(f(&sdf, ray.origin, ray.dir, &m)),
-            show(reference_trace_ray(&sdf, ray.origin, ray.dir, &m))
-        )
-    };
-    let check = images::compare(
-        render(f),
-        render(reference_trace_ray),
-        0.02,
-        3e-3,
-        "normal",
-        &explain,
-    );
-    if !check.passed() {
-        return check;
-    }
-    // The depths too: a hit in the right place, not only the right normal.
-    let worst = (0..w * h)
-        .map(|i| {
-            let ray = ray_at(i % w, i / w);
-            let a = f(&sdf, ray.origin, ray.dir, &m).map(|r| r.0);
-            let b = reference_trace_ray(&sdf, ray.origin, ray.dir, &m).map(|r| r.0);
-            match (a, b) {
-                (Some(a), Some(b)) => ((a - b).abs() / b.max(1.0)) as f64,
-                (None, None) => 0.0,
-                _ => 0.0, // counted by the image comparison above
-            }
-        })
-        .fold(
-            0.0f64,
-            |a, b| if b.is_nan() { f64::INFINITY } else { a.max(b) },
-        );
-    if worst > 1e-3 {
-        return Check {
-            error: 1.0,
-            detail: format!(
-                "the normals match but a hit distance is off by {worst:.2e} (relative)"
-            ),
-            ..check
-        };
-    }
-    check
 }
 
 fn reference_trace(
@@ -275,20 +204,51 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         3,
         100.0,
     );
-    let (error, detail) = if budget.is_some() {
-        (
-            f64::INFINITY,
-            format!("3 steps were enough to find a grazing hit 40 away: {budget:?}"),
-        )
-    } else {
-        (error, detail)
-    };
-    Check {
-        error,
-        tolerance: 1e-5,
-        detail,
-        images: None,
-        symptom: None,
+    if budget.is_some() {
+        return Check {
+            error: f64::INFINITY,
+            tolerance: 1e-5,
+            detail: format!("3 steps were enough to find a grazing hit 40 away: {budget:?}"),
+            images: None,
+            symptom: Some(NO_BUDGET),
+        };
+    }
+    // The budget to the evaluation, and the maximum distance: counted.
+    let clause = contract::cases().into_iter().find_map(|case| {
+        if !matches!(case.clause, Clause::Budget | Clause::MaxDistance) {
+            return None;
+        }
+        crate::grading::progress(format_args!("calling sphere_trace on {}", case.what));
+        let m = case.march;
+        let answer = |g: TraceFn| {
+            let probe = Probe::new(case.sdf);
+            let hit = g(&|p| probe.eval(p), case.origin, case.dir, m.epsilon, m.max_steps, m.max_distance);
+            (hit.map(|t| (t, Vec3::Z)), probe.calls.get())
+        };
+        contract::judge(&case, answer(f), answer(reference_trace), 0)
+    });
+    match clause {
+        Some((_, symptom)) if error > 1e-5 => Check {
+            error,
+            tolerance: 1e-5,
+            detail,
+            images: None,
+            symptom,
+        },
+        Some((detail, symptom)) => Check {
+            error: f64::INFINITY,
+            tolerance: 1e-5,
+            detail,
+            images: None,
+            symptom,
+        },
+        None => Check {
+            error,
+            tolerance: 1e-5,
+            detail,
+            images: None,
+            symptom: None,
+        },
     }
 }
 
