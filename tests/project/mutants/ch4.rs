@@ -320,3 +320,29 @@ fn the_loop_exercise_names_its_budget_and_distance_mistakes() {
         assert_eq!(check.symptom, Some(symptom), "{name}: {}", check.detail);
     }
 }
+
+// Exercises 4.1 and 4.3: their common mistakes, named.
+
+#[test]
+fn an_unsigned_sphere_distance_fails() {
+    let check = ch4::check_sphere_sdf(|p, c, r| ((p - c).length() - r).abs());
+    assert!(!check.passed());
+    assert_eq!(check.symptom, Some(ch4::UNSIGNED), "{}", check.detail);
+}
+
+#[test]
+fn a_sphere_at_the_origin_fails() {
+    let check = ch4::check_sphere_sdf(|p, _, r| p.length() - r);
+    assert!(!check.passed());
+    assert_eq!(check.symptom, Some(ch4::CENTRE_IGNORED), "{}", check.detail);
+}
+
+#[test]
+fn an_unnormalised_gradient_fails() {
+    let check = ch4::check_gradient_normal(|f, p, h| {
+        let axis = |e: Vec3| (f(p + e * h) - f(p - e * h)) / h;
+        Vec3::new(axis(Vec3::X), axis(Vec3::Y), axis(Vec3::Z))
+    });
+    assert!(!check.passed());
+    assert_eq!(check.symptom, Some(ch4::NOT_UNIT), "{}", check.detail);
+}

@@ -8,7 +8,7 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch4_implicit_surfaces::march::{self, March};
 use crate::ch4_implicit_surfaces::normal::gradient_central;
 use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere, sd_torus};
-use crate::grading::exercise::{Check, Exercise};
+use crate::grading::exercise::{Check, Exercise, Symptom};
 
 mod contract;
 mod scene;
@@ -41,7 +41,7 @@ pub fn exercises() -> Vec<Exercise> {
                  lies inside the surface.",
                 "|p - center| - radius",
             ],
-            symptoms: &[],
+            symptoms: &[UNSIGNED, CENTRE_IGNORED],
             reference: || check_sphere_sdf(|p, c, r| sd_sphere(p - c, r)),
         },
         Exercise {
@@ -75,7 +75,7 @@ pub fn exercises() -> Vec<Exercise> {
                  values are the gradient. Normalise it.",
                 "(f(p + h e_i) - f(p - h e_i)) / 2h per axis i, then normalize",
             ],
-            symptoms: &[],
+            symptoms: &[NOT_UNIT],
             reference: || check_gradient_normal(|f, p, h| gradient_central(f, p, h).normalize()),
         },
         Exercise {
@@ -149,14 +149,40 @@ pub fn check_sphere_sdf(f: SdfFn) -> Check {
             format!("p {p}, centre {c}, radius {r}: got {got}, expected {want}"),
         )
     }));
+    // 1.5 inside a sphere of radius 2; 5 from its centre, 3 outside.
+    let inside = f(Vec3::new(1.5, 2.0, 3.0), c, 2.0);
+    let outside = f(Vec3::new(4.0, 6.0, 3.0), c, 2.0);
+    let symptom = if error <= 1e-5 {
+        None
+    } else if (inside - 1.5).abs() < 1e-4 {
+        Some(UNSIGNED)
+    } else if (outside - (Vec3::new(4.0, 6.0, 3.0).length() - 2.0)).abs() < 1e-4 {
+        Some(CENTRE_IGNORED)
+    } else {
+        None
+    };
     Check {
         error,
         tolerance: 1e-5,
         detail,
         images: None,
-        symptom: None,
+        symptom,
     }
 }
+
+/// |p - c| - r made positive inside.
+pub const UNSIGNED: Symptom = Symptom {
+    name: "unsigned distance",
+    hint: "slide \"Signed distance function (SDF)\": inside the sphere the \
+           distance is negative (minus the way out), which is how one \
+           evaluation tells inside from outside; do not take its absolute value.",
+};
+/// The distance from the origin, not from the centre.
+pub const CENTRE_IGNORED: Symptom = Symptom {
+    name: "centre ignored",
+    hint: "slide \"Signed distance function (SDF)\": your sphere sits at the \
+           origin; measure from the centre, p - center, not from p itself.",
+};
 
 /// The sphere-tracing loop on a sphere, a box and a torus, against hits
 /// worked out by hand and raystep's tracer; and rays that miss.
@@ -278,11 +304,13 @@ pub fn check_gradient_normal(f: NormalFn) -> Check {
             format!("at {p}: got {got}, expected {want}"),
         )
     }));
+    let length = f(&sphere, Vec3::new(3.0, 0.0, 0.0), 1e-3).length();
+    let symptom = (error > 1e-3 && !((length - 1.0).abs() <= 1e-2)).then_some(NOT_UNIT);
     Check {
         error,
         tolerance: 1e-3,
         detail,
         images: None,
-        symptom: None,
+        symptom,
     }
 }
