@@ -179,7 +179,12 @@ fn a_quarter_million_coincident_centroids_build_in_n_log_n() {
     assert_eq!(bvh.depth(), 18);
     let ray = Ray::new(Vec3::new(0.0, 0.0, 10.0), -Vec3::Z).unwrap();
     let naive = closest_naive(&tris, &ray, f32::INFINITY, Intersector::Watertight);
-    assert!(same_closest_hit(bvh.closest(&ray, f32::INFINITY), naive, &tris, &ray));
+    assert!(same_closest_hit(
+        bvh.closest(&ray, f32::INFINITY),
+        naive,
+        &tris,
+        &ray
+    ));
     assert!(naive.is_some());
 }
 

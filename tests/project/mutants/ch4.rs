@@ -7,9 +7,12 @@ use raystep::ch4_implicit_surfaces::march::{self, March};
 use raystep::ch4_implicit_surfaces::normal::gradient_central;
 use raystep::grading::exercises::ch4;
 
+/// A call of a reference solution.
+pub type Call = Box<dyn Fn()>;
+
 /// Calls of chapter 4's reference solutions, by exercise, for the guard
 /// test (`super::ch3::calling_a_reference_solution_fails`).
-pub fn reference_calls() -> Vec<(&'static str, Box<dyn Fn()>)> {
+pub fn reference_calls() -> Vec<(&'static str, Call)> {
     let sphere = |p: Vec3| p.length() - 1.0;
     let ray = Ray::new(Vec3::Z * 3.0, -Vec3::Z).unwrap();
     vec![
@@ -62,7 +65,13 @@ struct Variant {
 
 /// The lecture's sphere tracer and gradient normal, with the mistakes (or
 /// other choices) of `v`.
-fn trace(v: Variant, sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
+fn trace(
+    v: Variant,
+    sdf: &dyn Fn(Vec3) -> f32,
+    o: Vec3,
+    d: Vec3,
+    m: &March,
+) -> Option<(f32, Vec3)> {
     let (t, p) = march(v, sdf, o, d, m)?;
     let h = m.epsilon_at(p).max(1e-4);
     let g = Vec3::new(
@@ -81,7 +90,13 @@ fn trace(v: Variant, sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> 
 }
 
 /// The lecture's loop: the hit's t and point.
-fn march(v: Variant, sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
+fn march(
+    v: Variant,
+    sdf: &dyn Fn(Vec3) -> f32,
+    o: Vec3,
+    d: Vec3,
+    m: &March,
+) -> Option<(f32, Vec3)> {
     let (mut t, mut p) = (0.0f32, o);
     let mut f = sdf(o);
     let mut steps = 1;
@@ -89,7 +104,11 @@ fn march(v: Variant, sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> 
         if !v.walk_p {
             p = o + t * d;
         }
-        let eps = if v.fixed_epsilon { m.epsilon } else { m.epsilon_at(p) };
+        let eps = if v.fixed_epsilon {
+            m.epsilon
+        } else {
+            m.epsilon_at(p)
+        };
         if f.abs() < eps {
             break;
         }
@@ -140,7 +159,14 @@ variant!(walk_p, walk_p);
 /// A recursive tracer with its own evaluation count, and the normal by
 /// the same central differences: another right one.
 fn recursive(sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
-    fn go(sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March, t: f32, used: u32) -> Option<f32> {
+    fn go(
+        sdf: &dyn Fn(Vec3) -> f32,
+        o: Vec3,
+        d: Vec3,
+        m: &March,
+        t: f32,
+        used: u32,
+    ) -> Option<f32> {
         let f = sdf(o + t * d);
         if f.abs() < m.epsilon_at(o + t * d) {
             Some(t)
@@ -179,13 +205,21 @@ fn the_contract_cases_alone_judge_each_tracer() {
         ("one short", one_short, ch4::BUDGET_OFF_BY_ONE),
         ("twice per step", twice_per_step, ch4::NO_BUDGET),
         ("fixed ε", fixed_epsilon, ch4::FIXED_EPSILON),
-        ("no max distance", no_max_distance, ch4::IGNORES_MAX_DISTANCE),
+        (
+            "no max distance",
+            no_max_distance,
+            ch4::IGNORES_MAX_DISTANCE,
+        ),
         ("no flip", no_flip, ch4::NOT_FACING),
         ("unnormalised", unnormalised, ch4::NOT_UNIT),
         ("no fallback", no_fallback, ch4::ZERO_GRADIENT),
     ] {
         let got = ch4::contract_failure(f);
-        assert_eq!(got.as_ref().and_then(|g| g.1), Some(symptom), "{name}: {got:?}");
+        assert_eq!(
+            got.as_ref().and_then(|g| g.1),
+            Some(symptom),
+            "{name}: {got:?}"
+        );
     }
 }
 
@@ -200,7 +234,10 @@ fn a_tracer_without_a_step_budget_fails() {
 #[test]
 fn a_budget_of_one_evaluation_more_fails() {
     let detail = fails_with(one_over, ch4::BUDGET_OFF_BY_ONE);
-    assert!(detail.contains("max_steps = 5") && detail.contains("a miss after 6"), "{detail}");
+    assert!(
+        detail.contains("max_steps = 5") && detail.contains("a miss after 6"),
+        "{detail}"
+    );
 }
 
 #[test]
@@ -310,9 +347,17 @@ fn the_loop_exercise_names_its_budget_and_distance_mistakes() {
     });
     assert!(check.passed(), "{}", check.detail);
     for (name, f, symptom) in [
-        ("one over", loop_one_over as ch4::TraceFn, ch4::BUDGET_OFF_BY_ONE),
+        (
+            "one over",
+            loop_one_over as ch4::TraceFn,
+            ch4::BUDGET_OFF_BY_ONE,
+        ),
         ("one short", loop_one_short, ch4::BUDGET_OFF_BY_ONE),
-        ("no max distance", loop_no_max_distance, ch4::IGNORES_MAX_DISTANCE),
+        (
+            "no max distance",
+            loop_no_max_distance,
+            ch4::IGNORES_MAX_DISTANCE,
+        ),
         ("twice per step", loop_twice_per_step, ch4::NO_BUDGET),
     ] {
         let check = ch4::check_sphere_trace(f);

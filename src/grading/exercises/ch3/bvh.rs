@@ -140,8 +140,16 @@ fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
     let cases = vec![
         (down(0.5, 0.0), inf, "straight down a stack of 16 triangles"),
         (up, inf, "straight up the same stack from below"),
-        (down(0.5, 0.0), 1.5, "down the stack, t_max before the first hit"),
-        (down(0.5, 0.0), 2.5, "down the stack, t_max just past the first hit"),
+        (
+            down(0.5, 0.0),
+            1.5,
+            "down the stack, t_max before the first hit",
+        ),
+        (
+            down(0.5, 0.0),
+            2.5,
+            "down the stack, t_max just past the first hit",
+        ),
         (up, 20.0, "up the stack, t_max = 20 past several hits"),
         (down(50.0, 0.0), inf, "beside the stack: a miss"),
         (slant, inf, "slanted through the stack"),
@@ -172,7 +180,11 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
     match catch_unwind(AssertUnwindSafe(|| f(&empty, &down, f32::INFINITY))) {
         Ok(None) => {}
         Ok(Some(hit)) => {
-            return fail(1.0, format!("an empty tree: got {hit:?}, expected None"), None)
+            return fail(
+                1.0,
+                format!("an empty tree: got {hit:?}, expected None"),
+                None,
+            )
         }
         Err(payload) => {
             if crate::core::guard::reference_called().is_some() {
@@ -259,7 +271,10 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
             continue;
         };
         compare(&bvh, &ray, f32::INFINITY, &|| {
-            format!("a ray inside the Cornell box from {origin} along {}", ray.dir)
+            format!(
+                "a ray inside the Cornell box from {origin} along {}",
+                ray.dir
+            )
         });
     }
     // The sheets: the same answers, and the work.
@@ -275,7 +290,10 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
             sum.shrinks += w.shrinks;
         }
         compare(&sheets, ray, f32::INFINITY, &|| {
-            format!("ray {i} through eight sheets of triangles, from {:.2}", ray.origin)
+            format!(
+                "ray {i} through eight sheets of triangles, from {:.2}",
+                ray.origin
+            )
         });
     }
     // The depth views of both, for the images of a failed check.
@@ -377,7 +395,11 @@ pub fn work_verdict(
     let worst = tri.max(boxes);
     if worst > limit {
         let shrinks = ratio(mine.shrinks, reference.shrinks);
-        let symptom = if shrinks > SHRINK_LIMIT { FAR_FIRST } else { NO_PRUNING };
+        let symptom = if shrinks > SHRINK_LIMIT {
+            FAR_FIRST
+        } else {
+            NO_PRUNING
+        };
         return (
             worst,
             limit,

@@ -113,4 +113,3 @@ pub const SYMPTOMS: &[Symptom] = &[
     FAR_FIRST,
     BYPASSES_BLOCKS,
 ];
-

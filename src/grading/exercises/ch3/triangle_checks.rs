@@ -15,7 +15,11 @@ pub type Uv = (f32, f32);
 pub type Tuv = (f32, f32, f32);
 
 /// raystep's Möller–Trumbore in the exercise's signature.
-pub(super) fn reference_moller_trumbore(o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)> {
+pub(super) fn reference_moller_trumbore(
+    o: Vec3,
+    d: Vec3,
+    tri: [Vec3; 3],
+) -> Option<(f32, f32, f32)> {
     let ray = Ray::new(o, d).ok()?;
     // Our Ray normalises d: scale t back to the caller's d.
     let h = triangle::intersect_moller_trumbore(&ray, tri, 0.0, f32::INFINITY)?;

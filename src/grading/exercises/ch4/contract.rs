@@ -285,7 +285,9 @@ pub fn judge(
         }
         (None, Some(_)) if case.clause == Clause::ScaledEpsilon => say(Some(FIXED_EPSILON)),
         (Some((t, n)), Some((w, wn))) => {
-            if !((t - w).abs() <= 1e-5 * w.abs().max(1.0)) {
+            // Written so that a NaN t is not the same t.
+            let same_t = (t - w).abs() <= 1e-5 * w.abs().max(1.0);
+            if !same_t {
                 return say(None);
             }
             if !n.is_finite() {

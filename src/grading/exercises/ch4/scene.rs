@@ -152,4 +152,3 @@ pub fn contract_failure(f: TraceRayFn) -> Option<(String, Option<crate::grading:
         contract::judge(&case, answer(f), answer(reference_trace_ray), 6)
     })
 }
-
