@@ -13,17 +13,20 @@
 
 use std::cell::Cell;
 
-/// Calls counted since the last [`Work::take`] on this thread.
+/// Calls counted on this thread: [`Work::now`] is the count so far, and
+/// `Work::now().since(before)` the calls made since `before`. The counts
+/// only grow (nothing resets them), so no code can hide work it did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Work {
     /// Slab tests: calls of `Aabb::enter`.
     pub box_tests: u64,
     /// Triangle tests: calls of `intersect_watertight`.
     pub triangle_tests: u64,
-    /// How often the `t_max` of a triangle test differed from the one
-    /// before: each change is a traversal shrinking its interval to a
-    /// closer hit. Front to back finds the closest hit early and shrinks
-    /// rarely; back to front shrinks at every nearer triangle.
+    /// How often the `t_max` of a triangle test was below the one before:
+    /// each time, a traversal shrank its interval to a closer hit. Front to
+    /// back finds the closest hit early and shrinks rarely; back to front
+    /// shrinks at every nearer triangle. (The next ray starts at a larger
+    /// t_max again, which is not counted.)
     pub shrinks: u64,
     /// The `t_max` of the last triangle test.
     last_t_max: f32,
@@ -35,21 +38,25 @@ thread_local! {
             box_tests: 0,
             triangle_tests: 0,
             shrinks: 0,
-            last_t_max: f32::NAN,
+            last_t_max: f32::INFINITY,
         })
     };
 }
 
 impl Work {
-    /// The counts since the last call on this thread, which start again
-    /// from zero.
-    pub fn take() -> Work {
-        WORK.with(|w| {
-            w.replace(Work {
-                last_t_max: f32::NAN,
-                ..Work::default()
-            })
-        })
+    /// The calls counted on this thread so far.
+    pub fn now() -> Work {
+        WORK.with(|w| w.get())
+    }
+
+    /// The calls counted between `before` and `self`.
+    pub fn since(self, before: Work) -> Work {
+        Work {
+            box_tests: self.box_tests - before.box_tests,
+            triangle_tests: self.triangle_tests - before.triangle_tests,
+            shrinks: self.shrinks - before.shrinks,
+            last_t_max: self.last_t_max,
+        }
     }
 }
 
@@ -69,7 +76,7 @@ pub(crate) fn triangle_test(t_max: f32) {
     WORK.with(|w| {
         let mut work = w.get();
         work.triangle_tests += 1;
-        if work.triangle_tests > 1 && t_max != work.last_t_max {
+        if t_max < work.last_t_max {
             work.shrinks += 1;
         }
         work.last_t_max = t_max;

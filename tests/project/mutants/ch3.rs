@@ -250,9 +250,9 @@ fn work(f: TraversalFn) -> Work {
     let bvh = ReadableBvh::build(&ch3::sheets());
     let mut sum = Work::default();
     for ray in ch3::sheet_rays(200) {
-        Work::take();
+        let before = Work::now();
         f(&bvh, &ray, f32::INFINITY);
-        let w = Work::take();
+        let w = Work::now().since(before);
         sum.box_tests += w.box_tests;
         sum.triangle_tests += w.triangle_tests;
         sum.shrinks += w.shrinks;
@@ -553,4 +553,16 @@ fn moller_trumbore_hitting_behind_the_origin_fails() {
     let check = ch3::check_moller_trumbore(|o, d, t| mt(o, d, t, false, true));
     assert!(!check.passed());
     assert_eq!(check.symptom, Some(ch3::BEHIND), "{}", check.detail);
+}
+
+/// Hostile: raystep's own traversal, run on a thread of its own (where
+/// neither the guard nor the counters of the grader's thread see it).
+fn reference_on_another_thread(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
+    std::thread::scope(|s| s.spawn(|| closest_hit(bvh, ray, t_max)).join().unwrap())
+}
+
+#[test]
+fn work_hidden_on_another_thread_fails() {
+    let detail = fails_with(reference_on_another_thread, ch3::BYPASSES_BLOCKS);
+    assert!(detail.contains("never through"), "{detail}");
 }

@@ -76,9 +76,9 @@ pub fn same_closest_hit(a: Option<Hit>, b: Option<Hit>, tris: &[[Vec3; 3]], ray:
 
 /// `f(bvh, ray, t_max)` and the work it did.
 fn counted(f: TraversalFn, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> (Option<Hit>, Work) {
-    Work::take();
+    let before = Work::now();
     let hit = f(bvh, ray, t_max);
-    (hit, Work::take())
+    (hit, Work::now().since(before))
 }
 
 /// Eight wavy sheets of 8 x 8 unit squares (two triangles each), one
