@@ -158,7 +158,7 @@ fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
 }
 
 /// The grader of exercise 3.4. In order, each failing with its symptom:
-/// an empty tree (`None`, no panic); the stack of [`stack_cases`]; the
+/// an empty tree (`None`, no panic); the stack of `stack_cases`; the
 /// Cornell box at 32 x 32, one ray per pixel centre, and 2,000 rays from
 /// random points inside it in random directions; then [`sheet_rays`]
 /// through [`sheets`], answers and work. Every answer must be the

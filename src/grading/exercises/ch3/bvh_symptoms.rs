@@ -101,7 +101,7 @@ pub const BYPASSES_BLOCKS: Symptom = Symptom {
     ),
 };
 
-/// Every symptom [`check_bvh_traversal`] names.
+/// Every symptom [`check_bvh_traversal`](super::check_bvh_traversal) names.
 pub const SYMPTOMS: &[Symptom] = &[
     EMPTY_TREE,
     IGNORES_T_MAX,

@@ -139,7 +139,7 @@ pub fn check_trace_scene(f: TraceRayFn) -> Check {
     }
 }
 
-/// The first of [`contract::cases`] where `f` breaks the contract: what
+/// The first of `contract::cases` where `f` breaks the contract: what
 /// happened, and the symptom if it is recognised.
 pub fn contract_failure(f: TraceRayFn) -> Option<(String, Option<crate::grading::Symptom>)> {
     contract::cases().into_iter().find_map(|case| {
