@@ -22,9 +22,9 @@ use crate::ch3_ray_triangle::triangle::{intersect_watertight, Hit};
 use crate::ch3_ray_triangle::work::Work;
 use crate::core::sampling::random;
 use crate::grading::exercise::{Check, Symptom};
+use crate::scene::Scene;
 
 pub use super::bvh_symptoms::*;
-use crate::scene::Scene;
 
 /// A BVH traversal as the exercise asks for it.
 pub type TraversalFn = fn(&ReadableBvh, &Ray, f32) -> Option<Hit>;

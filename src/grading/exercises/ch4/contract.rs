@@ -239,7 +239,10 @@ pub type Answer = (Option<(f32, Vec3)>, u32);
 /// trace_scene, 0 for sphere_trace). t must agree to
 /// 1e-5 relative (the walls make every right tracer's steps exact, so
 /// this only allows another order of the same arithmetic; the nearest
-/// wrong answer, one step more or less, is 6e-5 away), the normal to 1e-3.
+/// wrong answer, one step more or less, is 6e-5 away), the normal to 1e-3
+/// (every wall's gradient points exactly along z, so a right normal is
+/// exactly ±z; the nearest wrong one, unnormalised or turned, is 0.5 or 2
+/// away).
 pub fn judge(
     case: &Case,
     got: Answer,
