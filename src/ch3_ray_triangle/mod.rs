@@ -10,6 +10,7 @@
 //! | ray-mesh intersection: the naive loop over every triangle, and the bounding volume hierarchy | [`bvh`] |
 //! | the hierarchical approach, written to be read: a median-split BVH and its front-to-back traversal | [`readable_bvh`] |
 //! | building the BVH without going quadratic on coincident or tiny triangles | [`bvh_robust`] |
+//! | how much a traversal did: boxes and triangles tested, counted for the grader | [`work`] |
 //! | the BVH in the four-wide layout the shading chapters trace | [`wide_bvh`] |
 //! | what is traced and what a first hit shows (depth, normal, barycentrics) | [`geometry`], [`render`] |
 //! | leaving a surface without hitting it again | [`spawn`] |
@@ -38,3 +39,4 @@ pub mod studies;
 pub mod triangle;
 pub mod watertight_fast;
 pub mod wide_bvh;
+pub mod work;

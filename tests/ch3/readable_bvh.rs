@@ -103,7 +103,7 @@ fn the_readable_bvh_gives_the_naive_loops_and_obvhs_hits() {
                 .and_then(|b| b.closest(ray, *t_max, Intersector::Watertight));
             for (other, what) in [(naive, "naive loop"), (fast, "obvhs")] {
                 assert!(
-                    same_closest_hit(ours, other),
+                    same_closest_hit(ours, other, &tris, ray),
                     "{name}: readable {ours:?} vs {what} {other:?} on {ray:?} to {t_max}"
                 );
             }
@@ -179,7 +179,12 @@ fn a_quarter_million_coincident_centroids_build_in_n_log_n() {
     assert_eq!(bvh.depth(), 18);
     let ray = Ray::new(Vec3::new(0.0, 0.0, 10.0), -Vec3::Z).unwrap();
     let naive = closest_naive(&tris, &ray, f32::INFINITY, Intersector::Watertight);
-    assert!(same_closest_hit(bvh.closest(&ray, f32::INFINITY), naive));
+    assert!(same_closest_hit(
+        bvh.closest(&ray, f32::INFINITY),
+        naive,
+        &tris,
+        &ray
+    ));
     assert!(naive.is_some());
 }
 

@@ -1,9 +1,13 @@
 //! Exercise 4.3: the normal of an implicit surface from its gradient.
 //!
-//! The normal at a surface point p is ∇f / ‖∇f‖. Estimate each partial
-//! derivative by central differences with step `h`:
-//! ∂f/∂x ≈ (f(p + h x̂) − f(p − h x̂)) / 2h, and likewise for y and z.
-//! Return the normalised gradient.
+//! Contract (what the grader checks, to 1e-3, on a sphere, a box and a
+//! torus):
+//! * Return the unit normal ∇f / ‖∇f‖ of `sdf` at `p`, each partial
+//!   derivative estimated by central differences with step `h`.
+//!
+//! The idea: the normal is the direction in which f grows fastest, and a
+//! derivative can be estimated from f itself, a little ahead and a little
+//! behind.
 //!
 //! Grade it with: `cargo run --release --bin grade -- ch4`
 
@@ -11,7 +15,6 @@ use glam::Vec3;
 
 /// The unit normal ∇f/‖∇f‖ of `sdf` at `p`.
 pub fn gradient_normal(sdf: &dyn Fn(Vec3) -> f32, p: Vec3, h: f32) -> Vec3 {
-    // TODO: three central differences, one per axis.
-    // TODO: normalise the gradient.
+    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch4/gradient_normal`).
     todo!()
 }

@@ -4,6 +4,8 @@
 
 pub mod ch1;
 pub mod ch2;
+pub mod ch3;
+pub mod ch4;
 pub mod ch5;
 pub mod ch6;
 

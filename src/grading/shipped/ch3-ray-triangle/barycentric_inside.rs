@@ -1,9 +1,16 @@
 //! Exercise 3.2: the barycentric inside test.
 //!
 //! A point p in the plane of the triangle (p0, p1, p2) can be written as
-//! p = p0 + u (p1 - p0) + v (p2 - p0). Return (u, v) when p is inside the
-//! triangle or on its edges (u ≥ 0, v ≥ 0, u + v ≤ 1), else `None`. A
-//! triangle with zero area has no inside.
+//! p = p0 + u (p1 - p0) + v (p2 - p0).
+//!
+//! Contract (what the grader checks, to 1e-4):
+//! * Return `Some((u, v))` when p is inside the triangle, its edges and
+//!   vertices included: u ≥ 0, v ≥ 0 and u + v ≤ 1.
+//! * Return `None` for a point outside, and for a triangle with no area
+//!   (its vertices on one line), which has no inside.
+//!
+//! The idea: p - p0 = u e1 + v e2 has two unknowns in a plane; a cross
+//! product with one of the edges removes one of them.
 //!
 //! Grade it with: `cargo run --release --bin grade -- ch3`
 
@@ -11,8 +18,6 @@ use glam::Vec3;
 
 /// The barycentric (u, v) of `p` if it lies inside the triangle.
 pub fn barycentric_inside(p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)> {
-    // TODO: with e1 = p1 - p0, e2 = p2 - p0, q = p - p0 and N = e1 x e2,
-    //       crossing q = u e1 + v e2 with e2 (or e1) isolates u (or v).
-    // TODO: return None for a zero-area triangle or a point outside.
+    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch3/barycentric_inside`).
     todo!()
 }

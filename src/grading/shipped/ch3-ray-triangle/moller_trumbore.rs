@@ -7,9 +7,16 @@
 //! [e1, e2, -d] (u, v, t)ᵀ = o - p0
 //! ```
 //!
-//! Solve it with Cramer's rule and return (t, u, v) for a hit with u ≥ 0,
-//! v ≥ 0, u + v ≤ 1 and t > 0; `None` otherwise (also when the determinant
-//! is zero: the ray is parallel to the triangle, or it has no area).
+//! Contract (what the grader checks: t to 1e-4 relative, u and v to 1e-4):
+//! * Return `Some((t, u, v))` when the ray hits the triangle: u ≥ 0,
+//!   v ≥ 0, u + v ≤ 1 and t > 0. t is in units of the `d` given (do not
+//!   normalise it: with d twice as long, t halves).
+//! * Return `None` otherwise: outside the triangle, behind the origin,
+//!   and when the system's determinant is zero (the ray runs parallel to
+//!   the triangle, or the triangle has no area).
+//!
+//! The idea: solve the 3x3 system with Cramer's rule, each unknown a
+//! ratio of two determinants.
 //!
 //! Grade it with: `cargo run --release --bin grade -- ch3`
 
@@ -17,8 +24,6 @@ use glam::Vec3;
 
 /// (t, u, v) of the ray o + t d hitting the triangle, if it does.
 pub fn moller_trumbore(o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)> {
-    // TODO: det[a, b, c] = a · (b x c). Compute det[e1, e2, -d].
-    // TODO: replace one column at a time by s = o - p0 to get u, v and t.
-    // TODO: reject hits outside the triangle or behind the origin.
+    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch3/moller_trumbore`).
     todo!()
 }

@@ -1,8 +1,15 @@
 //! Exercise 3.1: intersect a ray with a plane.
 //!
 //! The ray is r(t) = o + t d; the plane is every point x with Nᵀx = c.
-//! Return the t where the ray meets the plane, or `None` when the ray is
-//! parallel to it (Nᵀd = 0). Do not worry about the sign of t here.
+//!
+//! Contract (what the grader checks, to 1e-4 relative):
+//! * Return the t at which o + t d lies on the plane. Neither N nor d needs
+//!   to be unit length, and t may be negative (a plane behind the origin):
+//!   its sign is the caller's business.
+//! * Return `None` when the ray runs parallel to the plane (Nᵀd = 0).
+//!
+//! The idea: a point of the ray is on the plane when it satisfies the
+//! plane's equation, and that equation is linear in t.
 //!
 //! Grade it with: `cargo run --release --bin grade -- ch3`
 
@@ -10,7 +17,6 @@ use glam::Vec3;
 
 /// The ray parameter t where o + t d lies on the plane Nᵀx = c.
 pub fn ray_plane(o: Vec3, d: Vec3, n: Vec3, c: f32) -> Option<f32> {
-    // TODO: substitute r(t) into the plane equation: Nᵀ(o + t d) = c.
-    // TODO: solve for t; return None when Nᵀd is zero.
+    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch3/ray_plane`).
     todo!()
 }

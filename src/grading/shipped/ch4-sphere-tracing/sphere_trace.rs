@@ -1,10 +1,18 @@
 //! Exercise 4.2: the sphere-tracing loop.
 //!
 //! March along the ray o + t·d (d is unit length) through the distance
-//! function `sdf`, starting at t = 0. Return `Some(t)` as soon as
-//! |sdf(o + t d)| < `epsilon`; return `None` when t passes
-//! `max_distance` or after `max_steps` evaluations of `sdf` without a hit.
-//! The origin is outside (sdf(o) > 0).
+//! function `sdf`, starting at t = 0. The origin is outside (sdf(o) > 0).
+//!
+//! Contract (what the grader checks; it counts every call of `sdf`):
+//! * `Some(t)` for the first t the march reaches where
+//!   |sdf(o + t d)| < `epsilon` (hits to within ε of the true distance).
+//! * `None` when t is beyond `max_distance` before a hit.
+//! * The step budget: at most `max_steps` evaluations of `sdf`, the one
+//!   at t = 0 included, every one of them tested for a hit; `None` when
+//!   they are used up.
+//!
+//! The idea: no surface is closer to a point than the distance function
+//! says there, so that distance is a step that cannot cross a surface.
 //!
 //! Grade it with: `cargo run --release --bin grade -- ch4`
 
@@ -19,9 +27,6 @@ pub fn sphere_trace(
     max_steps: u32,
     max_distance: f32,
 ) -> Option<f32> {
-    // TODO: start at t = 0 and loop at most max_steps times.
-    // TODO: evaluate d = sdf(origin + t * dir); if d < epsilon, you hit.
-    // TODO: otherwise no surface is closer than d: step t += d, and stop
-    //       once t > max_distance.
+    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch4/sphere_trace`).
     todo!()
 }

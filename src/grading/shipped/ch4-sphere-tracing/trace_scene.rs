@@ -1,19 +1,32 @@
 //! Capstone 4: sphere trace the chapter's scene.
 //!
 //! The grader shoots one camera ray per pixel through chapter 4's scene of
-//! every shape (`scenes/sdf-shapes.toml`) and calls this function for each.
+//! every shape (`scenes/sdf-shapes.toml`) and calls this function for each,
+//! then a few rays at walls whose distance functions count every call.
 //! Find where the ray r(t) = origin + t·dir (dir is unit length) first
 //! meets the surface f = 0 of the distance function `sdf`, and the unit
-//! normal there. The camera is outside every shape (f(origin) > 0).
+//! normal there. The origin is outside every shape (f(origin) > 0).
 //!
-//! * March: step by the distance f itself, as the lecture's sphere
-//!   tracing does. Every evaluation of `sdf` counts against the step
-//!   budget `march.max_steps` (the first one, at t = 0, included).
-//! * A hit is |f(p)| < `march.epsilon_at(p)`; a miss is t beyond
-//!   `march.max_distance`, or the budget used up first.
-//! * The normal is the gradient of f by central differences with
-//!   h = max(`march.epsilon_at(p)`, 1e-4), normalised (where the gradient
-//!   is zero, use -dir), and turned to face the viewer (n · dir < 0).
+//! Contract (what the grader checks):
+//! * March from t = 0, stepping by the value of f itself.
+//! * A hit is the first point p the march reaches with
+//!   |f(p)| < `march.epsilon_at(p)`: the ε scaled to p's distance from the
+//!   world's origin (far away, a point cannot come closer to a surface
+//!   than the rounding of its coordinates). Return its t.
+//! * A miss (`None`): t beyond `march.max_distance` before a hit, or the
+//!   step budget used up: at most `march.max_steps` evaluations of `sdf`
+//!   while marching, the one at t = 0 included, every one tested for a hit.
+//! * The normal at a hit: the gradient of f by central differences with
+//!   h = max(`march.epsilon_at(p)`, 1e-4), normalised; -dir where the
+//!   gradient is zero; turned round where it points along dir, so that it
+//!   faces the viewer (n · dir ≤ 0). Its six evaluations do not count
+//!   against the budget.
+//! * Depths to 1e-3 relative and normals to 0.02 in the scene; exactly the
+//!   reference's steps on the walls.
+//!
+//! The idea: the distance function promises that no surface is closer
+//! than its value, so that value is a safe step; near a surface the steps
+//! shrink and the march stops within ε of it.
 //!
 //! Grade it with: `cargo run --release --bin grade -- ch4`, and see it
 //! render with `cargo run --release --bin ch4 -- --student`.
@@ -28,12 +41,6 @@ pub fn trace_scene(
     dir: Vec3,
     march: &March,
 ) -> Option<(f32, Vec3)> {
-    // TODO: start at t = 0 with one evaluation of sdf at the origin.
-    // TODO: loop: at p = origin + t·dir, a hit when |f| is below
-    //       march.epsilon_at(p); a miss past march.max_distance; a miss
-    //       when the budget of march.max_steps evaluations is used up.
-    // TODO: otherwise step t += f and evaluate again.
-    // TODO: at the hit, the gradient by central differences (three axes),
-    //       normalised, facing the viewer.
+    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch4/trace_scene`).
     todo!()
 }

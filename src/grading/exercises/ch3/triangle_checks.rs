@@ -1,0 +1,309 @@
+//! Exercises 3.1 to 3.3: a ray and a plane, the barycentric inside test,
+//! Möller–Trumbore. Each against hand-worked cases and random ones, with
+//! the common mistakes named.
+
+use glam::Vec3;
+
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
+use crate::core::sampling::random;
+use crate::grading::exercise::{Check, Symptom};
+
+/// Barycentric (u, v).
+pub type Uv = (f32, f32);
+/// A hit as (t, u, v).
+pub type Tuv = (f32, f32, f32);
+
+/// raystep's Möller–Trumbore in the exercise's signature.
+pub(super) fn reference_moller_trumbore(
+    o: Vec3,
+    d: Vec3,
+    tri: [Vec3; 3],
+) -> Option<(f32, f32, f32)> {
+    let ray = Ray::new(o, d).ok()?;
+    // Our Ray normalises d: scale t back to the caller's d.
+    let h = triangle::intersect_moller_trumbore(&ray, tri, 0.0, f32::INFINITY)?;
+    Some((h.t / d.length(), h.u, h.v))
+}
+
+/// Relative error of `got` against `want`, infinite when one is missing.
+fn rel(got: Option<f32>, want: Option<f32>) -> f64 {
+    match (got, want) {
+        (Some(g), Some(w)) => ((g - w).abs() / w.abs().max(1.0)) as f64,
+        (None, None) => 0.0,
+        _ => f64::INFINITY,
+    }
+}
+
+/// The worst of `(error, which case, what went wrong)`, a NaN counting as
+/// infinite.
+fn check(cases: impl Iterator<Item = (f64, String, Option<Symptom>)>, tolerance: f64) -> Check {
+    let mut worst = (0.0f64, String::from("all cases match"), None);
+    for (err, what, symptom) in cases {
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        if err > worst.0 {
+            worst = (err, what, symptom);
+        }
+    }
+    Check {
+        error: worst.0,
+        tolerance,
+        detail: worst.1,
+        images: None,
+        symptom: worst.2,
+    }
+}
+
+/// t = (Nᵀo - c) / Nᵀd: the right size, the wrong sign.
+pub const PLANE_SIGN: Symptom = Symptom {
+    name: "t with the wrong sign",
+    hint: "slide \"Geometry Ray-plane intersection\": your t has the right size and \
+           the wrong sign; from Nᵀ(o + t d) = c, t = (c - Nᵀo) / (Nᵀd): c minus \
+           Nᵀo, not the other way round.",
+};
+/// A hit reported for a ray parallel to the plane or triangle.
+pub const PARALLEL: Symptom = Symptom {
+    name: "parallel ray",
+    hint: "slide \"Geometry Ray-plane intersection\": when Nᵀd = 0 (for a \
+           triangle: the determinant is 0) the ray runs parallel to the plane \
+           and the division gives ∞ or NaN; return None before dividing.",
+};
+/// (v, u) for (u, v).
+pub const SWAPPED_UV: Symptom = Symptom {
+    name: "u and v swapped",
+    hint: "slide \"Geometry Ray-triangle intersection\": u is the weight of \
+           p1 = p0 + e1 and v that of p2 = p0 + e2; crossing with e2 removes the \
+           e2 part and leaves u, crossing with e1 leaves v.",
+};
+/// A point on an edge or a vertex counted as outside.
+pub const EDGES_OUTSIDE: Symptom = Symptom {
+    name: "edges left out",
+    hint: "slide \"Geometry Ray-triangle intersection\": the triangle holds its \
+           edges and vertices: u, v, 1 - u - v ≥ 0, with ≥, not >.",
+};
+/// Something returned for a triangle with no area.
+pub const DEGENERATE: Symptom = Symptom {
+    name: "degenerate triangle",
+    hint: "slide \"Geometry Ray-triangle intersection\": a triangle whose \
+           vertices lie on one line has N = e1 × e2 = 0 and no inside; return \
+           None before dividing by |N|² (or by the determinant).",
+};
+/// A hit at t ≤ 0.
+pub const BEHIND: Symptom = Symptom {
+    name: "hit behind the origin",
+    hint: "slide \"Geometry Ray-triangle intersection\": the system has a \
+           solution for the whole line o + t d; the ray is only its t > 0 half, \
+           so reject t ≤ 0.",
+};
+/// t for the unit direction, not for the d given.
+pub const UNIT_T: Symptom = Symptom {
+    name: "t for a unit direction",
+    hint: "slide \"Geometry Ray-triangle intersection\": t is in units of the d \
+           you were given (o + t d is the hit); with d twice as long t halves. \
+           Do not normalise d.",
+};
+
+/// Whether `g` is `w` to 1e-4, relative to `w` (at least 1).
+fn near(g: f32, w: f32) -> bool {
+    (g - w).abs() <= 1e-4 * w.abs().max(1.0)
+}
+
+/// Hand-worked planes, a parallel ray, then random cases against the
+/// reference.
+pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
+    let mut cases: Vec<(Vec3, Vec3, Vec3, f32, Option<f32>)> = vec![
+        // The plane z = -2, a ray down -z from the origin: t = 2.
+        (Vec3::ZERO, -Vec3::Z, Vec3::Z, -2.0, Some(2.0)),
+        // The plane x + y = 4 (N = (1, 1, 0), c = 4), ray along +x from (1, 1, 0): t = 2.
+        (
+            Vec3::new(1.0, 1.0, 0.0),
+            Vec3::X,
+            Vec3::new(1.0, 1.0, 0.0),
+            4.0,
+            Some(2.0),
+        ),
+        // Behind the origin: t = -3 (the sign is the caller's business).
+        (Vec3::new(0.0, 3.0, 0.0), Vec3::Y, Vec3::Y, 0.0, Some(-3.0)),
+        // Parallel: no t.
+        (Vec3::ZERO, Vec3::X, Vec3::Y, 1.0, None),
+    ];
+    for i in 0..200u64 {
+        let r = |d| random(31, i, 0, d) * 2.0 - 1.0;
+        let (o, d, n) = (
+            Vec3::new(r(0), r(1), r(2)) * 3.0,
+            Vec3::new(r(3), r(4), r(5)),
+            Vec3::new(r(6), r(7), r(8)),
+        );
+        if n.dot(d).abs() > 0.1 {
+            let c = r(9);
+            cases.push((o, d, n, c, triangle::ray_plane(o, d, n, c)));
+        }
+    }
+    check(
+        cases.into_iter().map(|(o, d, n, c, want)| {
+            let got = f(o, d, n, c);
+            let symptom = match (got, want) {
+                (Some(g), Some(w)) if w != 0.0 && !near(g, w) && near(-g, w) => Some(PLANE_SIGN),
+                (Some(_), None) => Some(PARALLEL),
+                _ => None,
+            };
+            (
+                rel(got, want),
+                format!("o {o}, d {d}, N {n}, c {c}: got {got:?}, expected {want:?}"),
+                symptom,
+            )
+        }),
+        1e-4,
+    )
+}
+
+/// Hand-worked points of one triangle, a degenerate triangle, and random
+/// points against the reference.
+pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Check {
+    let tri = [
+        Vec3::ZERO,
+        Vec3::new(2.0, 0.0, 0.0),
+        Vec3::new(0.0, 2.0, 0.0),
+    ];
+    let mut cases: Vec<(Vec3, [Vec3; 3], Option<Uv>)> = vec![
+        (Vec3::new(1.0, 0.5, 0.0), tri, Some((0.5, 0.25))),
+        (Vec3::ZERO, tri, Some((0.0, 0.0))),
+        (Vec3::new(1.0, 1.0, 0.0), tri, Some((0.5, 0.5))),
+        (Vec3::new(1.5, 1.5, 0.0), tri, None),
+        (Vec3::new(-0.1, 0.5, 0.0), tri, None),
+        (
+            Vec3::new(0.5, 0.5, 0.0),
+            [Vec3::ZERO, Vec3::X, Vec3::X * 2.0],
+            None,
+        ),
+    ];
+    for i in 0..300u64 {
+        let r = |d| random(32, i, 0, d) * 2.0 - 1.0;
+        let t = [
+            Vec3::new(r(0), r(1), r(2)),
+            Vec3::new(r(3), r(4), r(5)),
+            Vec3::new(r(6), r(7), r(8)),
+        ];
+        let (u, v) = (r(9) * 0.8 + 0.3, r(10) * 0.8 + 0.3);
+        let p = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
+        // Skip points right on an edge, where rounding decides.
+        if u.abs().min(v.abs()).min((1.0 - u - v).abs()) > 1e-3 {
+            cases.push((p, t, triangle::barycentric_inside(p, t)));
+        }
+    }
+    check(
+        cases.into_iter().map(|(p, t, want)| {
+            let got = f(p, t);
+            let err = match (got, want) {
+                (Some(g), Some(w)) => ((g.0 - w.0).abs().max((g.1 - w.1).abs())) as f64,
+                (None, None) => 0.0,
+                _ => f64::INFINITY,
+            };
+            let area = (t[1] - t[0]).cross(t[2] - t[0]).length_squared();
+            let symptom = match (got, want) {
+                (Some(_), None) if area == 0.0 => Some(DEGENERATE),
+                (Some(g), Some(w)) if near(g.0, w.1) && near(g.1, w.0) => Some(SWAPPED_UV),
+                (None, Some(w)) if w.0 == 0.0 || w.1 == 0.0 || w.0 + w.1 == 1.0 => {
+                    Some(EDGES_OUTSIDE)
+                }
+                _ => None,
+            };
+            (
+                err,
+                format!("p {p} in {t:?}: got {got:?}, expected {want:?}"),
+                symptom,
+            )
+        }),
+        1e-4,
+    )
+}
+
+/// Hand-worked rays, parallel and degenerate cases, and random rays against
+/// an f64 solution of the same 3x3 system.
+pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check {
+    let tri = [
+        Vec3::new(0.0, 0.0, -2.0),
+        Vec3::new(2.0, 0.0, -2.0),
+        Vec3::new(0.0, 2.0, -2.0),
+    ];
+    let mut cases: Vec<(Vec3, Vec3, [Vec3; 3], Option<Tuv>)> = vec![
+        // Straight down -z onto (1, 0.5, -2): t = 2, u = 0.5, v = 0.25.
+        (
+            Vec3::new(1.0, 0.5, 0.0),
+            -Vec3::Z,
+            tri,
+            Some((2.0, 0.5, 0.25)),
+        ),
+        // The same with an unnormalised direction: t halves.
+        (
+            Vec3::new(1.0, 0.5, 0.0),
+            -Vec3::Z * 2.0,
+            tri,
+            Some((1.0, 0.5, 0.25)),
+        ),
+        // Behind the origin, outside, parallel, degenerate: no hit.
+        (Vec3::new(1.0, 0.5, 0.0), Vec3::Z, tri, None),
+        (Vec3::new(3.0, 3.0, 0.0), -Vec3::Z, tri, None),
+        (Vec3::new(0.0, 0.0, -2.0), Vec3::X, tri, None),
+        (
+            Vec3::ZERO,
+            -Vec3::Z,
+            [Vec3::ZERO, Vec3::X, Vec3::X * 2.0],
+            None,
+        ),
+    ];
+    for i in 0..300u64 {
+        let r = |d| random(33, i, 0, d) * 2.0 - 1.0;
+        let t = [
+            Vec3::new(r(0), r(1), r(2) - 3.0),
+            Vec3::new(r(3), r(4), r(5) - 3.0),
+            Vec3::new(r(6), r(7), r(8) - 3.0),
+        ];
+        let (o, d) = (
+            Vec3::new(r(9), r(10), r(11)) * 0.5,
+            Vec3::new(r(12), r(13), -2.0),
+        );
+        let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
+        let n = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero();
+        let clear = match want {
+            Some((_, u, v)) => u.min(v).min(1.0 - u - v) > 1e-3,
+            None => true,
+        };
+        if clear && n.dot(d.normalize()).abs() > 0.05 {
+            cases.push((
+                o,
+                d,
+                t,
+                want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
+            ));
+        }
+    }
+    check(
+        cases.into_iter().map(|(o, d, t, want)| {
+            let got = f(o, d, t);
+            let err = match (got, want) {
+                (Some(g), Some(w)) => ((g.0 - w.0).abs() / w.0.abs().max(1.0))
+                    .max((g.1 - w.1).abs())
+                    .max((g.2 - w.2).abs()) as f64,
+                (None, None) => 0.0,
+                _ => f64::INFINITY,
+            };
+            let normal = (t[1] - t[0]).cross(t[2] - t[0]);
+            let symptom = match (got, want) {
+                (Some(g), Some(w)) if !near(g.0, w.0) && near(g.0, w.0 * d.length()) => {
+                    Some(UNIT_T)
+                }
+                (Some(_), None) if normal.length_squared() == 0.0 => Some(DEGENERATE),
+                (Some(_), None) if normal.dot(d) == 0.0 => Some(PARALLEL),
+                (Some(g), None) if g.0 <= 0.0 => Some(BEHIND),
+                _ => None,
+            };
+            (
+                err,
+                format!("o {o}, d {d}, {t:?}: got {got:?}, expected {want:?}"),
+                symptom,
+            )
+        }),
+        1e-4,
+    )
+}

@@ -1,0 +1,314 @@
+//! The clauses of chapter 4's sphere-tracing contract that a picture
+//! cannot show: the step budget, the maximum distance, the
+//! distance-scaled ε and the normal's three rules. Each is a ray against
+//! a plain wall whose distance function the grader wraps to count every
+//! evaluation ([`Probe`]), with the number of steps known exactly: the
+//! walls' distance functions are exact dyadic numbers along the rays, so
+//! every right tracer takes the same steps, bit for bit.
+
+use std::cell::Cell;
+
+use glam::Vec3;
+
+use crate::ch4_implicit_surfaces::march::March;
+use crate::grading::exercise::Symptom;
+
+/// The book's section on the loop.
+macro_rules! tracing_book {
+    () => {
+        "book \"Sphere tracing: why the distance makes the step safe\""
+    };
+}
+
+/// Evaluates the distance function past the budget.
+pub const NO_BUDGET: Symptom = Symptom {
+    name: "no step budget",
+    hint: concat!(
+        tracing_book!(),
+        ": every evaluation of sdf counts against the budget, the one at \
+         t = 0 included; after max_steps evaluations without a hit, stop \
+         and report a miss, even if the next step would have hit."
+    ),
+};
+/// One evaluation too many or too few.
+pub const BUDGET_OFF_BY_ONE: Symptom = Symptom {
+    name: "budget off by one",
+    hint: concat!(
+        tracing_book!(),
+        ": the budget is max_steps evaluations of sdf, the one at t = 0 \
+         included: with max_steps = 1 you may only look at the origin. \
+         Count evaluations, not steps, and test for a hit after every one \
+         of them, the last included."
+    ),
+};
+/// Marches on past max_distance.
+pub const IGNORES_MAX_DISTANCE: Symptom = Symptom {
+    name: "ignores max_distance",
+    hint: concat!(
+        tracing_book!(),
+        ": once t is beyond max_distance without a hit, the ray has missed, \
+         even if a surface lies further on."
+    ),
+};
+/// Compares |f| with march.epsilon, not with march.epsilon_at(p).
+pub const FIXED_EPSILON: Symptom = Symptom {
+    name: "fixed ε",
+    hint: concat!(
+        tracing_book!(),
+        ": far from the world's origin a point cannot come closer to the \
+         surface than the rounding of its own coordinates, so the hit test \
+         is |f(p)| < march.epsilon_at(p), not march.epsilon."
+    ),
+};
+/// A normal that is not unit length.
+pub const NOT_UNIT: Symptom = Symptom {
+    name: "normal not unit length",
+    hint: "book \"Normals from the gradient\": the gradient is only as long as \
+           f is steep (half as long for a distance halved); divide it by its \
+           length.",
+};
+/// A normal pointing away from the viewer.
+pub const NOT_FACING: Symptom = Symptom {
+    name: "normal faces away",
+    hint: "book \"Normals from the gradient\": where a step lands just behind \
+           the surface the gradient points away from the viewer; turn such a \
+           normal round, so that n · dir < 0.",
+};
+/// NaN where the gradient is zero.
+pub const ZERO_GRADIENT: Symptom = Symptom {
+    name: "zero gradient",
+    hint: "book \"Normals from the gradient\": where f is flat the gradient is \
+           zero and has no direction; normalising it gives NaN. Use -dir \
+           there (glam's try_normalize says when).",
+};
+
+/// A distance function that counts its evaluations.
+pub struct Probe {
+    /// The function.
+    pub f: fn(Vec3) -> f32,
+    /// Evaluations so far.
+    pub calls: Cell<u32>,
+}
+
+impl Probe {
+    /// A probe of `f`, no evaluations yet.
+    pub fn new(f: fn(Vec3) -> f32) -> Probe {
+        Probe {
+            f,
+            calls: Cell::new(0),
+        }
+    }
+
+    /// `f(p)`, counted.
+    pub fn eval(&self, p: Vec3) -> f32 {
+        self.calls.set(self.calls.get() + 1);
+        (self.f)(p)
+    }
+}
+
+/// Which clause a case tests.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Clause {
+    /// The step budget.
+    Budget,
+    /// The maximum distance.
+    MaxDistance,
+    /// The distance-scaled ε.
+    ScaledEpsilon,
+    /// The normal (unit length, facing the viewer, -dir where flat).
+    Normal,
+}
+
+/// One ray against one wall.
+#[derive(Clone, Copy, Debug)]
+pub struct Case {
+    /// What it is, for the message.
+    pub what: &'static str,
+    /// The clause it tests.
+    pub clause: Clause,
+    /// The distance function.
+    pub sdf: fn(Vec3) -> f32,
+    /// The ray.
+    pub origin: Vec3,
+    /// Its unit direction.
+    pub dir: Vec3,
+    /// The limits.
+    pub march: March,
+}
+
+/// A wall at z = 0 whose function is half its distance: from z = 1 each
+/// step goes half the remaining way, f = 2^-(k+1) after k steps, exact in
+/// f32. Below ε = 1e-4 first at k = 13: the 14th evaluation hits.
+fn half_wall(p: Vec3) -> f32 {
+    0.5 * p.z
+}
+
+/// The same wall 6,000 m up, where ε is scaled to 8 f32 spacings of the
+/// coordinates (5.7e-3): the 8th evaluation (f = 2^-8) hits; with a fixed
+/// ε = 1e-4 the march goes on.
+fn far_half_wall(p: Vec3) -> f32 {
+    0.5 * (p.z - 6000.0)
+}
+
+/// A wall at z = 0 whose function overstates the distance by a hair: the
+/// first step from z = 1 lands 2^-16 behind it, within ε, where the
+/// gradient points away from a viewer above.
+fn eager_wall(p: Vec3) -> f32 {
+    p.z.abs() * (1.0 + 2f32.powi(-16))
+}
+
+/// Flat (zero) below z = 0.5, twice the distance above: the first step
+/// from z = 1 lands at z = 0, where the gradient is zero.
+fn flat_floor(p: Vec3) -> f32 {
+    2.0 * (p.z - 0.5).max(0.0)
+}
+
+/// The contract's cases, in the order they are checked.
+pub fn cases() -> Vec<Case> {
+    let m = March::default();
+    let down = |z: f32| (Vec3::new(0.0, 0.0, z), -Vec3::Z);
+    let case = |what, clause, sdf, (origin, dir): (Vec3, Vec3), march| Case {
+        what,
+        clause,
+        sdf,
+        origin,
+        dir,
+        march,
+    };
+    let budget = |n| March { max_steps: n, ..m };
+    vec![
+        case(
+            "a wall 1 m below whose distance function is half the true distance (14 evaluations reach ε)",
+            Clause::Budget,
+            half_wall,
+            down(1.0),
+            budget(5),
+        ),
+        case(
+            "the same wall, a budget of one evaluation too few",
+            Clause::Budget,
+            half_wall,
+            down(1.0),
+            budget(13),
+        ),
+        case(
+            "the same wall, a budget of exactly the 14 evaluations needed",
+            Clause::Budget,
+            half_wall,
+            down(1.0),
+            budget(14),
+        ),
+        case(
+            "the same wall 150 m below, max_distance = 100",
+            Clause::MaxDistance,
+            half_wall,
+            down(150.0),
+            m,
+        ),
+        case(
+            "the same wall 6,000 m from the world's origin, 1 m below the ray's origin",
+            Clause::ScaledEpsilon,
+            far_half_wall,
+            down(6001.0),
+            m,
+        ),
+        case(
+            "a wall whose distance overstates by 2^-16: the first step lands just behind it",
+            Clause::Normal,
+            eager_wall,
+            down(1.0),
+            m,
+        ),
+        case(
+            "a floor whose distance function is 0 below z = 0.5: the first step lands where it is flat",
+            Clause::Normal,
+            flat_floor,
+            down(1.0),
+            m,
+        ),
+    ]
+}
+
+/// A tracer's answer: the hit (t, normal) or a miss, and the evaluations
+/// it made.
+pub type Answer = (Option<(f32, Vec3)>, u32);
+
+/// How `got` differs from `want` on `case`: `None` when it agrees, else
+/// what is wrong and the symptom, if one is recognised. A hit may make
+/// `normal_calls` evaluations beyond the budget (6 for the normal of
+/// trace_scene, 0 for sphere_trace). t must agree to
+/// 1e-5 relative (the walls make every right tracer's steps exact, so
+/// this only allows another order of the same arithmetic; the nearest
+/// wrong answer, one step more or less, is 6e-5 away), the normal to 1e-3
+/// (every wall's gradient points exactly along z, so a right normal is
+/// exactly ±z; the nearest wrong one, unnormalised or turned, is 0.5 or 2
+/// away).
+pub fn judge(
+    case: &Case,
+    got: Answer,
+    want: Answer,
+    normal_calls: u32,
+) -> Option<(String, Option<Symptom>)> {
+    let m = case.march;
+    let show = |(hit, calls): Answer| match hit {
+        Some((t, n)) if normal_calls > 0 => {
+            format!("a hit at t = {t} with normal {n} after {calls} evaluations")
+        }
+        Some((t, _)) => format!("a hit at t = {t} after {calls} evaluations"),
+        None => format!("a miss after {calls} evaluations"),
+    };
+    let say = |symptom| {
+        Some((
+            format!(
+                "{} (max_steps = {}, max_distance = {}, ε = {}): yours found {}, the reference {}",
+                case.what,
+                m.max_steps,
+                m.max_distance,
+                m.epsilon,
+                show(got),
+                show(want)
+            ),
+            symptom,
+        ))
+    };
+    // Evaluations beyond the budget: a hit may add a few for its normal.
+    let over = |calls: u32, extra: u32| calls > m.max_steps + extra;
+    match (got.0, want.0) {
+        (Some(_), None) if case.clause == Clause::MaxDistance => say(Some(IGNORES_MAX_DISTANCE)),
+        (Some(_), None) if case.clause == Clause::Budget => {
+            let by_one = !over(got.1, 1 + normal_calls);
+            say(Some(if by_one { BUDGET_OFF_BY_ONE } else { NO_BUDGET }))
+        }
+        (None, Some(_)) if case.clause == Clause::Budget => say(Some(BUDGET_OFF_BY_ONE)),
+        (None, None) if over(got.1, 1) => say(Some(NO_BUDGET)),
+        (None, None) if over(got.1, 0) => say(Some(BUDGET_OFF_BY_ONE)),
+        (None, None) => None,
+        (Some((t, _)), Some((w, _))) if case.clause == Clause::ScaledEpsilon && t > w => {
+            say(Some(FIXED_EPSILON))
+        }
+        (None, Some(_)) if case.clause == Clause::ScaledEpsilon => say(Some(FIXED_EPSILON)),
+        (Some((t, n)), Some((w, wn))) => {
+            // Written so that a NaN t is not the same t.
+            let same_t = (t - w).abs() <= 1e-5 * w.abs().max(1.0);
+            if !same_t {
+                return say(None);
+            }
+            if !n.is_finite() {
+                return say(Some(ZERO_GRADIENT));
+            }
+            if (n - wn).length() <= 1e-3 {
+                return over(got.1, normal_calls)
+                    .then(|| say(Some(NO_BUDGET)))
+                    .flatten();
+            }
+            if (n.length() - 1.0).abs() > 1e-3 {
+                say(Some(NOT_UNIT))
+            } else if (n + wn).length() <= 1e-3 {
+                say(Some(NOT_FACING))
+            } else {
+                say(None)
+            }
+        }
+        _ => say(None),
+    }
+}

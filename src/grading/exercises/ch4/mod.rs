@@ -1,0 +1,325 @@
+//! Chapter 4's exercises and how each is graded.
+
+use glam::Vec3;
+
+use super::images;
+use super::worst_of;
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch4_implicit_surfaces::march::{self, March};
+use crate::ch4_implicit_surfaces::normal::gradient_central;
+use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere, sd_torus};
+use crate::grading::exercise::{Check, Exercise, Symptom};
+
+mod contract;
+mod scene;
+pub use contract::{
+    Case, Clause, Probe, BUDGET_OFF_BY_ONE, FIXED_EPSILON, IGNORES_MAX_DISTANCE, NOT_FACING,
+    NOT_UNIT, NO_BUDGET, ZERO_GRADIENT,
+};
+pub use scene::{check_trace_scene, contract_failure, reference_trace_ray, TraceRayFn};
+
+/// The candidate types.
+type SdfFn = fn(Vec3, Vec3, f32) -> f32;
+/// A sphere-tracing loop as exercise 4.2 asks for it.
+pub type TraceFn = fn(&dyn Fn(Vec3) -> f32, Vec3, Vec3, f32, u32, f32) -> Option<f32>;
+type NormalFn = fn(&dyn Fn(Vec3) -> f32, Vec3, f32) -> Vec3;
+/// A distance function borrowed for a check.
+type Dist<'a> = &'a dyn Fn(Vec3) -> f32;
+
+/// Chapter 4's exercises, in order.
+pub fn exercises() -> Vec<Exercise> {
+    vec![
+        Exercise {
+            chapter: 4,
+            name: "sphere_sdf",
+            file: "chapters/ch4-sphere-tracing/exercises/sphere_sdf.rs",
+            hints: [
+                "slide \"Signed distance function (SDF)\": how far is a point from a \
+                 sphere's surface, and which sign does it get inside?",
+                "every point of the surface is exactly `radius` from the centre, so \
+                 the distance to the centre tells you almost everything: subtract what \
+                 lies inside the surface.",
+                "|p - center| - radius",
+            ],
+            symptoms: &[UNSIGNED, CENTRE_IGNORED],
+            reference: || check_sphere_sdf(|p, c, r| sd_sphere(p - c, r)),
+        },
+        Exercise {
+            chapter: 4,
+            name: "sphere_trace",
+            file: "chapters/ch4-sphere-tracing/exercises/sphere_trace.rs",
+            hints: [
+                "book \"Sphere tracing: why the distance makes the step safe\": no \
+                 surface is closer than the distance function says, so that distance \
+                 is a safe step.",
+                "start at t = 0. Evaluate f at o + t d and count the evaluation; if \
+                 |f| < ε, that t is the hit. Otherwise, if t is beyond max_distance or \
+                 max_steps evaluations are used up, it is a miss; else step t += f and \
+                 evaluate again.",
+                "t = 0; for _ in 0..max_steps { f = sdf(o + t d); if |f| < ε return \
+                 Some(t); if t > max_distance return None; t += f }; None",
+            ],
+            symptoms: &[NO_BUDGET, BUDGET_OFF_BY_ONE, IGNORES_MAX_DISTANCE],
+            reference: || check_sphere_trace(reference_trace),
+        },
+        Exercise {
+            chapter: 4,
+            name: "gradient_normal",
+            file: "chapters/ch4-sphere-tracing/exercises/gradient_normal.rs",
+            hints: [
+                "book \"Normals from the gradient\": the normal is the direction in \
+                 which f grows fastest; estimate each partial derivative from f \
+                 itself.",
+                "central differences: for each axis, sample f a distance h ahead and \
+                 h behind along that axis, divide the difference by 2h; the three \
+                 values are the gradient. Normalise it.",
+                "(f(p + h e_i) - f(p - h e_i)) / 2h per axis i, then normalize",
+            ],
+            symptoms: &[NOT_UNIT],
+            reference: || check_gradient_normal(|f, p, h| gradient_central(f, p, h).normalize()),
+        },
+        Exercise {
+            chapter: 4,
+            name: "trace_scene",
+            file: "chapters/ch4-sphere-tracing/exercises/trace_scene.rs",
+            hints: [
+                "book \"Sphere tracing: why the distance makes the step safe\" and book \
+                 \"Normals from the gradient\": march with the distance as the step, \
+                 count every evaluation against the budget, then differentiate f where \
+                 you stopped.",
+                "t = 0, f = sdf(origin), one evaluation. Loop: at p = origin + t dir, a \
+                 hit when |f| < march.epsilon_at(p); a miss when t > march.max_distance \
+                 or when march.max_steps evaluations are used up; else t += f and \
+                 evaluate again. At the hit: central differences with h = \
+                 max(march.epsilon_at(p), 1e-4), normalised (-dir where the gradient is \
+                 zero), turned round if it points along dir.",
+                "t = 0; f = sdf(o); n = 1; loop { p = o + t d; if |f| < eps_at(p) break; \
+                 if t > max_distance || n >= max_steps return None; t += f; f = sdf(o + \
+                 t d); n += 1 } g = (f(p+h x̂)-f(p-h x̂), …) / 2h; n = g.try_normalize() \
+                 or -d; if n·d > 0 { n = -n }",
+            ],
+            symptoms: &[
+                NO_BUDGET,
+                BUDGET_OFF_BY_ONE,
+                IGNORES_MAX_DISTANCE,
+                FIXED_EPSILON,
+                NOT_UNIT,
+                NOT_FACING,
+                ZERO_GRADIENT,
+            ],
+            reference: || check_trace_scene(reference_trace_ray),
+        },
+    ]
+}
+
+fn reference_trace(
+    f: &dyn Fn(Vec3) -> f32,
+    o: Vec3,
+    d: Vec3,
+    epsilon: f32,
+    max_steps: u32,
+    max_distance: f32,
+) -> Option<f32> {
+    let ray = Ray::new(o, d).ok()?;
+    let m = March {
+        epsilon,
+        max_steps,
+        max_distance,
+        step_factor: 1.0,
+    };
+    march::sphere_trace(f, &ray, &m).hit()
+}
+
+/// The sphere's SDF against values worked out by hand.
+pub fn check_sphere_sdf(f: SdfFn) -> Check {
+    let c = Vec3::new(1.0, 2.0, 3.0);
+    let cases = [
+        // Outside, on, and inside; the centre is -radius.
+        (Vec3::new(4.0, 6.0, 3.0), c, 2.0, 3.0), // |(3, 4, 0)| = 5
+        (Vec3::new(1.0, 2.0, 5.0), c, 2.0, 0.0),
+        (Vec3::new(1.5, 2.0, 3.0), c, 2.0, -1.5),
+        (c, c, 0.75, -0.75),
+        (Vec3::new(0.0, 0.0, -10.0), Vec3::ZERO, 1.0, 9.0),
+        (Vec3::new(2.0, 3.0, 6.0), Vec3::new(0.0, 0.0, 0.0), 1.0, 6.0), // |(2, 3, 6)| = 7
+    ];
+    let (error, detail) = worst_of(cases.into_iter().map(|(p, c, r, want)| {
+        let got = f(p, c, r);
+        (
+            (got - want).abs() as f64,
+            format!("p {p}, centre {c}, radius {r}: got {got}, expected {want}"),
+        )
+    }));
+    // 1.5 inside a sphere of radius 2; 5 from its centre, 3 outside.
+    let inside = f(Vec3::new(1.5, 2.0, 3.0), c, 2.0);
+    let outside = f(Vec3::new(4.0, 6.0, 3.0), c, 2.0);
+    let symptom = if error <= 1e-5 {
+        None
+    } else if (inside - 1.5).abs() < 1e-4 {
+        Some(UNSIGNED)
+    } else if (outside - (Vec3::new(4.0, 6.0, 3.0).length() - 2.0)).abs() < 1e-4 {
+        Some(CENTRE_IGNORED)
+    } else {
+        None
+    };
+    Check {
+        error,
+        tolerance: 1e-5,
+        detail,
+        images: None,
+        symptom,
+    }
+}
+
+/// |p - c| - r made positive inside.
+pub const UNSIGNED: Symptom = Symptom {
+    name: "unsigned distance",
+    hint: "slide \"Signed distance function (SDF)\": inside the sphere the \
+           distance is negative (minus the way out), which is how one \
+           evaluation tells inside from outside; do not take its absolute value.",
+};
+/// The distance from the origin, not from the centre.
+pub const CENTRE_IGNORED: Symptom = Symptom {
+    name: "centre ignored",
+    hint: "slide \"Signed distance function (SDF)\": your sphere sits at the \
+           origin; measure from the centre, p - center, not from p itself.",
+};
+
+/// The sphere-tracing loop on a sphere, a box and a torus, against hits
+/// worked out by hand and raystep's tracer; and rays that miss.
+pub fn check_sphere_trace(f: TraceFn) -> Check {
+    let sphere = |p: Vec3| sd_sphere(p, 1.0);
+    let boxed = |p: Vec3| sd_box(p - Vec3::new(0.0, 0.0, -3.0), Vec3::splat(0.5));
+    let torus = |p: Vec3| sd_torus(p, 2.0, 0.5);
+    let eps = 1e-4;
+    // (sdf, origin, direction, expected t or None)
+    let cases: Vec<(Dist, Vec3, Vec3, Option<f32>)> = vec![
+        (&sphere, Vec3::new(0.0, 0.0, 5.0), -Vec3::Z, Some(4.0)),
+        (&sphere, Vec3::new(-4.0, 0.6, 0.0), Vec3::X, Some(4.0 - 0.8)),
+        (&sphere, Vec3::new(0.0, 2.0, 5.0), -Vec3::Z, None),
+        (&boxed, Vec3::ZERO, -Vec3::Z, Some(2.5)),
+        (&boxed, Vec3::ZERO, Vec3::Z, None),
+        // Down the torus's axis: through the hole, no hit.
+        (&torus, Vec3::new(0.0, 5.0, 0.0), -Vec3::Y, None),
+        // Along x through the tube: hits its outer side at x = 2.5.
+        (&torus, Vec3::new(6.0, 0.0, 0.0), -Vec3::X, Some(3.5)),
+    ];
+    let (error, detail) = worst_of(cases.into_iter().map(|(sdf, o, d, want)| {
+        crate::grading::progress(format_args!(
+            "calling sphere_trace on the ray from {o} along {d} (ε = {eps}, 512 steps, max distance 50)"
+        ));
+        let got = f(sdf, o, d, eps, 512, 50.0);
+        let err = match (got, want) {
+            (Some(g), Some(w)) => ((g - w).abs() as f64 - eps as f64).max(0.0),
+            (None, None) => 0.0,
+            _ => f64::INFINITY,
+        };
+        (
+            err,
+            format!("ray from {o} along {d}: got {got:?}, expected {want:?}"),
+        )
+    }));
+    // The step budget is respected: a ray passing 5e-5 above the sphere
+    // counts as a hit with ε = 1e-4, but not within 3 steps from 40 away
+    // (it creeps along the silhouette).
+    crate::grading::progress("calling sphere_trace on a grazing ray with a budget of 3 steps");
+    let budget = f(
+        &sphere,
+        Vec3::new(-40.0, 1.00005, 0.0),
+        Vec3::X,
+        eps,
+        3,
+        100.0,
+    );
+    if budget.is_some() {
+        return Check {
+            error: f64::INFINITY,
+            tolerance: 1e-5,
+            detail: format!("3 steps were enough to find a grazing hit 40 away: {budget:?}"),
+            images: None,
+            symptom: Some(NO_BUDGET),
+        };
+    }
+    // The budget to the evaluation, and the maximum distance: counted.
+    let clause = contract::cases().into_iter().find_map(|case| {
+        if !matches!(case.clause, Clause::Budget | Clause::MaxDistance) {
+            return None;
+        }
+        crate::grading::progress(format_args!("calling sphere_trace on {}", case.what));
+        let m = case.march;
+        let answer = |g: TraceFn| {
+            let probe = Probe::new(case.sdf);
+            let hit = g(
+                &|p| probe.eval(p),
+                case.origin,
+                case.dir,
+                m.epsilon,
+                m.max_steps,
+                m.max_distance,
+            );
+            (hit.map(|t| (t, Vec3::Z)), probe.calls.get())
+        };
+        contract::judge(&case, answer(f), answer(reference_trace), 0)
+    });
+    match clause {
+        Some((_, symptom)) if error > 1e-5 => Check {
+            error,
+            tolerance: 1e-5,
+            detail,
+            images: None,
+            symptom,
+        },
+        Some((detail, symptom)) => Check {
+            error: f64::INFINITY,
+            tolerance: 1e-5,
+            detail,
+            images: None,
+            symptom,
+        },
+        None => Check {
+            error,
+            tolerance: 1e-5,
+            detail,
+            images: None,
+            symptom: None,
+        },
+    }
+}
+
+/// Gradient normals of a sphere, a box face and a torus against their
+/// exact normals.
+pub fn check_gradient_normal(f: NormalFn) -> Check {
+    let sphere = |p: Vec3| sd_sphere(p - Vec3::new(1.0, 0.0, 0.0), 2.0);
+    let boxed = |p: Vec3| sd_box(p, Vec3::new(1.0, 2.0, 3.0));
+    let torus = |p: Vec3| sd_torus(p, 2.0, 0.5);
+    let s = 1.0 / 3f32.sqrt();
+    let cases: Vec<(Dist, Vec3, Vec3)> = vec![
+        (&sphere, Vec3::new(3.0, 0.0, 0.0), Vec3::X),
+        (
+            &sphere,
+            Vec3::new(1.0, 0.0, 0.0) + Vec3::splat(2.0 * s),
+            Vec3::splat(s),
+        ),
+        (&boxed, Vec3::new(0.2, 2.0, 0.5), Vec3::Y),
+        (&boxed, Vec3::new(-1.0, 0.3, -0.4), -Vec3::X),
+        (&torus, Vec3::new(0.0, 0.5, 2.0), Vec3::Y),
+        (&torus, Vec3::new(-2.5, 0.0, 0.0), -Vec3::X),
+    ];
+    let (error, detail) = worst_of(cases.into_iter().map(|(sdf, p, want)| {
+        let got = f(sdf, p, 1e-3);
+        (
+            (got - want).length() as f64,
+            format!("at {p}: got {got}, expected {want}"),
+        )
+    }));
+    let length = f(&sphere, Vec3::new(3.0, 0.0, 0.0), 1e-3).length();
+    // A NaN length is not unit length either.
+    let unit = (length - 1.0).abs() <= 1e-2;
+    let symptom = (error > 1e-3 && !unit).then_some(NOT_UNIT);
+    Check {
+        error,
+        tolerance: 1e-3,
+        detail,
+        images: None,
+        symptom,
+    }
+}
