@@ -76,7 +76,7 @@ impl Aabb {
     /// somewhere in [0, t_max]. `inv_dir` is 1 / ray.dir, per axis.
     // ANCHOR: slab_test
     pub fn enter(&self, ray: &Ray, inv_dir: Vec3, t_max: f32) -> Option<f32> {
-        work::box_test(); // counted for the grader of exercise 3.4
+        work::box_test(); // ANCHOR: counted (off the listing) for the grader of exercise 3.4
         let mut t_near = 0.0f32;
         let mut t_far = t_max;
         for axis in 0..3 {
@@ -252,7 +252,7 @@ pub const STACK_SIZE: usize = 64;
 /// when it is tested and when it comes off the stack.
 // ANCHOR: closest_hit
 pub fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
-    crate::core::guard::reference("ch3/bvh_traversal");
+    crate::core::guard::reference("ch3/bvh_traversal"); // ANCHOR: guard (off the listing)
     let Some(root) = bvh.nodes.first() else {
         return None; // no triangles, nothing to hit
     };

@@ -55,7 +55,7 @@ pub fn concentric_disk(u: Vec2) -> Vec2 {
 /// a uniform point on the disk, lifted to the hemisphere).
 // ANCHOR: cosine_hemisphere
 pub fn cosine_hemisphere(u: Vec2) -> Vec3 {
-    crate::core::guard::reference("ch5/cosine_hemisphere");
+    crate::core::guard::reference("ch5/cosine_hemisphere"); // ANCHOR: guard (off the listing)
     malley(u)
 }
 

@@ -263,7 +263,7 @@ pub fn reference_path(
     dir: Vec3,
     rng: &mut dyn FnMut() -> f32,
 ) -> Vec3 {
-    crate::core::guard::reference("ch6/path_radiance");
+    crate::core::guard::reference("ch6/path_radiance"); // ANCHOR: guard (off the listing)
     let Some(mut hit) = scene.first_hit(origin, dir) else {
         return Vec3::ZERO;
     };
