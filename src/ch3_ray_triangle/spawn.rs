@@ -45,7 +45,7 @@ pub fn offset_origin(p: Vec3, n: Vec3) -> Vec3 {
 // ANCHOR_END: offset_origin
 
 /// The largest distance [`offset_origin`] moves a point near `p`: the
-/// fixed offset near the origin, else [`INT_SCALE`] ulps of `p`'s largest
+/// fixed offset near the origin, else `INT_SCALE` ulps of `p`'s largest
 /// coordinate. A shadow ray stops this far short of the light's point,
 /// so that its far end, like its origin, scales with where the scene sits.
 pub fn offset_distance(p: Vec3) -> f32 {

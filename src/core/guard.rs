@@ -1,11 +1,11 @@
 //! An exercise may use the building blocks its stub imports, not raystep's
 //! own solution of that exercise. The exercises crate calls each student
 //! function through [`student`]; each reference solution starts with
-//! [`reference`], which refuses to run inside a student's call. The check
+//! [`reference()`], which refuses to run inside a student's call. The check
 //! then fails, naming the exercise whose solution was called.
 //!
 //! Cost outside grading: one relaxed atomic load per call of a reference
-//! function (only `grade-student` ever sets [`ARMED`]).
+//! function (only `grade-student` ever sets `ARMED`).
 
 use std::cell::Cell;
 use std::sync::atomic::{AtomicBool, Ordering};

@@ -1,7 +1,7 @@
 //! Student mode (`x`): the current chapter's capstone rendered with the
 //! student's own code, live. A [`Watcher`] thread polls the chapter's
 //! exercise files every [`POLL`]; after an edit (and once at the start) it
-//! runs [`live_student`] (the grader's build of the exercises crate, then
+//! runs [`live_student_with`] (the grader's build of the exercises crate, then
 //! the capstone's render in a process of its own, under a time limit) and
 //! sends what it found. The UI thread never waits for it. The state it
 //! updates ([`StudentMode`]) and the messages ([`StudentEvent`]) are plain

@@ -14,7 +14,7 @@
 //! * `up` (not parallel to the view direction here) points up on the
 //!   picture. The inputs always define a frame (eye != target).
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch1`
+//! Grade it with: `cargo grade ch1`
 
 use glam::{Mat4, Vec3};
 

@@ -12,7 +12,7 @@
 //! * a tie fails: what was drawn first stays;
 //! * a NaN depth never passes, and infinity never passes an empty sample.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch2`
+//! Grade it with: `cargo grade ch2`
 
 /// Tests `z` against `depth[index]`; stores it and returns `true` if nearer.
 pub fn depth_test(depth: &mut [f32], index: usize, z: f32) -> bool {

@@ -10,7 +10,7 @@
 //!   a = (0, 0), b = (1, 0) the point (0, 1) gives +1 and (0, -1) gives -1;
 //! * a point on the line gives exactly 0.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch2`
+//! Grade it with: `cargo grade ch2`
 
 use glam::Vec2;
 

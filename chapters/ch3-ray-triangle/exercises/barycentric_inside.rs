@@ -12,12 +12,12 @@
 //! The idea: p - p0 = u e1 + v e2 has two unknowns in a plane; a cross
 //! product with one of the edges removes one of them.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch3`
+//! Grade it with: `cargo grade ch3`
 
 use glam::Vec3;
 
 /// The barycentric (u, v) of `p` if it lies inside the triangle.
 pub fn barycentric_inside(p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)> {
-    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch3/barycentric_inside`).
+    // TODO: your code here (steps: `cargo grade --hint ch3/barycentric_inside`).
     todo!()
 }

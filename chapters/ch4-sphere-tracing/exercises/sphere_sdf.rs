@@ -9,12 +9,12 @@
 //! The idea: every point of the surface is the same distance from the
 //! centre.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch4`
+//! Grade it with: `cargo grade ch4`
 
 use glam::Vec3;
 
 /// Signed distance from `p` to the sphere (`center`, `radius`).
 pub fn sphere_sdf(p: Vec3, center: Vec3, radius: f32) -> f32 {
-    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch4/sphere_sdf`).
+    // TODO: your code here (steps: `cargo grade --hint ch4/sphere_sdf`).
     todo!()
 }

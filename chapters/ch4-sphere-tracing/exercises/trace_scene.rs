@@ -28,7 +28,7 @@
 //! than its value, so that value is a safe step; near a surface the steps
 //! shrink and the march stops within ε of it.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch4`, and see it
+//! Grade it with: `cargo grade ch4`, and see it
 //! render with `cargo run --release --bin ch4 -- --student`.
 
 use glam::Vec3;
@@ -41,6 +41,6 @@ pub fn trace_scene(
     dir: Vec3,
     march: &March,
 ) -> Option<(f32, Vec3)> {
-    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch4/trace_scene`).
+    // TODO: your code here (steps: `cargo grade --hint ch4/trace_scene`).
     todo!()
 }

@@ -15,8 +15,8 @@
 //!   E[x] = E[y] = 0, E[z] = 2/3 and P(z < 1/2) = 1/4, each within 5
 //!   standard errors.
 //!
-//! Hints: `cargo run --release --bin grade -- --hint ch5/cosine_hemisphere`.
-//! Grade it with: `cargo run --release --bin grade -- ch5`
+//! Hints: `cargo grade --hint ch5/cosine_hemisphere`.
+//! Grade it with: `cargo grade ch5`
 
 use glam::{Vec2, Vec3};
 

@@ -26,8 +26,8 @@
 //! * ask `visible` about exactly the segment (p, y), in that order;
 //! * finite for every sample (no inf, no NaN).
 //!
-//! Hints: `cargo run --release --bin grade -- --hint ch5/direct_light`.
-//! Grade it with: `cargo run --release --bin grade -- ch5`, and see it
+//! Hints: `cargo grade --hint ch5/direct_light`.
+//! Grade it with: `cargo grade ch5`, and see it
 //! render with `cargo run --release --bin ch5 -- --student`.
 
 use glam::Vec3;

@@ -12,8 +12,8 @@
 //! * a light behind the surface (the angle between n and the direction to
 //!   the light above 90°) delivers exactly 0.
 //!
-//! Hints: `cargo run --release --bin grade -- --hint ch5/point_light`.
-//! Grade it with: `cargo run --release --bin grade -- ch5`
+//! Hints: `cargo grade --hint ch5/point_light`.
+//! Grade it with: `cargo grade ch5`
 
 use glam::Vec3;
 

@@ -14,8 +14,8 @@
 //!   σ/√N);
 //! * a constant integrates exactly (∫₋₁³ 2.5 dx = 10 from any numbers).
 //!
-//! Hints: `cargo run --release --bin grade -- --hint ch6/mc_integral`.
-//! Grade it with: `cargo run --release --bin grade -- ch6`
+//! Hints: `cargo grade --hint ch6/mc_integral`.
+//! Grade it with: `cargo grade ch6`
 
 /// The Monte Carlo estimate of ∫ₐᵇ f(x) dx from the numbers `u`.
 pub fn mc_integral(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64 {

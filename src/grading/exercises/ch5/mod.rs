@@ -1,5 +1,5 @@
 //! Chapter 5's exercises and how each is graded (the capstone's check is
-//! in [`direct`]).
+//! in `direct.rs`).
 
 mod direct;
 mod symptoms;

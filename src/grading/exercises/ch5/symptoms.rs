@@ -97,7 +97,7 @@ pub const CONSTANT_FACTOR: Symptom = Symptom {
     hint: "slide \"Reflection equation Multiple light sources\": one light sample is f · Le · cos θ / pdf_ω = (ρ/π) · Le · cos θ · cos θl / d² · A; compare each factor with yours.",
 };
 
-/// Every symptom [`check_direct_light`] can name.
+/// Every symptom [`check_direct_light`](super::check_direct_light) can name.
 pub const SYMPTOMS: [Symptom; 9] = [
     BRDF_PI,
     COS_SURFACE,

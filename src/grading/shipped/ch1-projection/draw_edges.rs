@@ -26,7 +26,7 @@
 //! Checked within 1e-5 relative on hand-made edges, then by drawing
 //! chapter 1's railroad (`scenes/railroad.toml`) from between the rails.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch1`, and see it
+//! Grade it with: `cargo grade ch1`, and see it
 //! render with `cargo run --release --bin ch1 -- --student`.
 
 use glam::{Vec2, Vec3};

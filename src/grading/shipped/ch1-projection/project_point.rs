@@ -12,7 +12,7 @@
 //! * a point on the camera's own plane (z = 0) or behind it (z > 0) has no
 //!   image: `None`.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch1`
+//! Grade it with: `cargo grade ch1`
 
 use glam::{Vec2, Vec3};
 

@@ -12,7 +12,7 @@
 //!   corners, each φ staying with its own corner;
 //! * `None` when the triangle has no area.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch2`
+//! Grade it with: `cargo grade ch2`
 
 use glam::{Vec2, Vec3};
 

@@ -28,7 +28,7 @@
 //! * Colour: perspective-correct, the colour of the triangle's point seen
 //!   at the sample (within 1e-4).
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch2`, and see it
+//! Grade it with: `cargo grade ch2`, and see it
 //! render with `cargo run --release --bin ch2 -- --student`.
 
 use glam::{Vec2, Vec3};

@@ -23,7 +23,7 @@
 //! Visiting the nearer of two children first finds close hits early, so
 //! that most of the tree is skipped.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch3`
+//! Grade it with: `cargo grade ch3`
 
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch3_ray_triangle::readable_bvh::ReadableBvh;
@@ -34,6 +34,6 @@ use raystep::ch3_ray_triangle::{readable_bvh::NodeKind, triangle::intersect_wate
 
 /// The closest hit along `ray` before `t_max`, through `bvh`.
 pub fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
-    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch3/bvh_traversal`).
+    // TODO: your code here (steps: `cargo grade --hint ch3/bvh_traversal`).
     todo!()
 }

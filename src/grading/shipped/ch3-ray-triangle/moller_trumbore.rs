@@ -18,12 +18,12 @@
 //! The idea: solve the 3x3 system with Cramer's rule, each unknown a
 //! ratio of two determinants.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch3`
+//! Grade it with: `cargo grade ch3`
 
 use glam::Vec3;
 
 /// (t, u, v) of the ray o + t d hitting the triangle, if it does.
 pub fn moller_trumbore(o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)> {
-    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch3/moller_trumbore`).
+    // TODO: your code here (steps: `cargo grade --hint ch3/moller_trumbore`).
     todo!()
 }

@@ -11,12 +11,12 @@
 //! The idea: a point of the ray is on the plane when it satisfies the
 //! plane's equation, and that equation is linear in t.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch3`
+//! Grade it with: `cargo grade ch3`
 
 use glam::Vec3;
 
 /// The ray parameter t where o + t d lies on the plane Nᵀx = c.
 pub fn ray_plane(o: Vec3, d: Vec3, n: Vec3, c: f32) -> Option<f32> {
-    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch3/ray_plane`).
+    // TODO: your code here (steps: `cargo grade --hint ch3/ray_plane`).
     todo!()
 }

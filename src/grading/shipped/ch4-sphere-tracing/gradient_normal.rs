@@ -9,12 +9,12 @@
 //! derivative can be estimated from f itself, a little ahead and a little
 //! behind.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch4`
+//! Grade it with: `cargo grade ch4`
 
 use glam::Vec3;
 
 /// The unit normal ∇f/‖∇f‖ of `sdf` at `p`.
 pub fn gradient_normal(sdf: &dyn Fn(Vec3) -> f32, p: Vec3, h: f32) -> Vec3 {
-    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch4/gradient_normal`).
+    // TODO: your code here (steps: `cargo grade --hint ch4/gradient_normal`).
     todo!()
 }

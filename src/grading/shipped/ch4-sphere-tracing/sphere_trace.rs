@@ -14,7 +14,7 @@
 //! The idea: no surface is closer to a point than the distance function
 //! says there, so that distance is a step that cannot cross a surface.
 //!
-//! Grade it with: `cargo run --release --bin grade -- ch4`
+//! Grade it with: `cargo grade ch4`
 
 use glam::Vec3;
 
@@ -27,6 +27,6 @@ pub fn sphere_trace(
     max_steps: u32,
     max_distance: f32,
 ) -> Option<f32> {
-    // TODO: your code here (steps: `cargo run --release --bin grade -- --hint ch4/sphere_trace`).
+    // TODO: your code here (steps: `cargo grade --hint ch4/sphere_trace`).
     todo!()
 }

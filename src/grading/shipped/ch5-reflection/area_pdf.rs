@@ -13,8 +13,8 @@
 //!   never negative): a light seen from behind has the same density;
 //! * a light seen exactly edge-on shows no area: return 0 (not inf or NaN).
 //!
-//! Hints: `cargo run --release --bin grade -- --hint ch5/area_pdf`.
-//! Grade it with: `cargo run --release --bin grade -- ch5`
+//! Hints: `cargo grade --hint ch5/area_pdf`.
+//! Grade it with: `cargo grade ch5`
 
 use glam::Vec3;
 

@@ -12,8 +12,8 @@
 //!   integral ∫ f cos θ dω over the hemisphere is ρ, per channel;
 //! * on opposite sides, f = 0.
 //!
-//! Hints: `cargo run --release --bin grade -- --hint ch5/lambert_brdf`.
-//! Grade it with: `cargo run --release --bin grade -- ch5`
+//! Hints: `cargo grade --hint ch5/lambert_brdf`.
+//! Grade it with: `cargo grade ch5`
 
 use glam::Vec3;
 

@@ -15,8 +15,8 @@
 //! * 0 when `pdf_f` is 0 (also when both are 0);
 //! * finite and right for densities as large as 10²⁰⁰ or as small as 10⁻²⁰⁰.
 //!
-//! Hints: `cargo run --release --bin grade -- --hint ch6/mis_weight`.
-//! Grade it with: `cargo run --release --bin grade -- ch6`
+//! Hints: `cargo grade --hint ch6/mis_weight`.
+//! Grade it with: `cargo grade ch6`
 
 /// The power-heuristic weight of strategy f.
 pub fn mis_weight(pdf_f: f64, pdf_g: f64) -> f64 {

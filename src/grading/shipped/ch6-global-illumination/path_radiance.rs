@@ -40,8 +40,8 @@
 //!   the loop does not end);
 //! * finite radiance (no inf, no NaN).
 //!
-//! Hints: `cargo run --release --bin grade -- --hint ch6/path_radiance`.
-//! Grade it with: `cargo run --release --bin grade -- ch6`, and see it
+//! Hints: `cargo grade --hint ch6/path_radiance`.
+//! Grade it with: `cargo grade ch6`, and see it
 //! render with `cargo run --release --bin ch6 -- --student`.
 
 use glam::{Vec2, Vec3};

@@ -10,8 +10,8 @@
 //! * the fraction of paths that die is 1 − q (within 0.2%);
 //! * the mean of the results is `value` (within 0.2%).
 //!
-//! Hints: `cargo run --release --bin grade -- --hint ch6/russian_roulette`.
-//! Grade it with: `cargo run --release --bin grade -- ch6`
+//! Hints: `cargo grade --hint ch6/russian_roulette`.
+//! Grade it with: `cargo grade ch6`
 
 /// The contribution after the roulette.
 pub fn russian_roulette(value: f64, q: f64, u: f64) -> f64 {
