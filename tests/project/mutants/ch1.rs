@@ -1,12 +1,9 @@
 //! Chapter 1's graders against plausible wrong solutions (each must fail
 //! and name its mistake) and correct alternatives (each must pass).
 
-use std::panic::{catch_unwind, AssertUnwindSafe};
-
 use glam::{Mat4, Vec2, Vec3};
 use raystep::ch1_projection::camera::{camera_from_world_look_at, project_pinhole, Camera};
 use raystep::ch1_projection::wireframe::clip_to_near;
-use raystep::core::guard;
 use raystep::grading::exercise::{Check, Symptom};
 use raystep::grading::exercises::ch1;
 
@@ -267,8 +264,8 @@ fn projection_and_look_at_mutants_name_their_mistake() {
 
 #[test]
 fn calling_the_references_is_refused() {
-    refused_in_a_child(
-        "calling_the_references_is_refused",
+    super::refused_in_a_child(
+        concat!(module_path!(), "::calling_the_references_is_refused"),
         &[
             ("ch1/project_point", &|| {
                 let _ = project_pinhole(Vec3::NEG_Z);
@@ -281,40 +278,4 @@ fn calling_the_references_is_refused() {
             }),
         ],
     );
-}
-
-/// Runs `calls` (each a reference called inside a student's function) in
-/// a child process of this test binary, since a refused call is
-/// remembered for the whole process: the child prints each refusal's
-/// message, and the messages must name the references.
-fn refused_in_a_child(test: &str, calls: &[(&str, &dyn Fn())]) {
-    const CHILD: &str = "RAYSTEP_MUTANTS_GUARD_CHILD";
-    if std::env::var_os(CHILD).is_some() {
-        for (_, call) in calls {
-            let r = catch_unwind(AssertUnwindSafe(|| guard::student(call)));
-            let message = r.err().and_then(|p| p.downcast::<String>().ok());
-            println!("refused: {}", message.map_or("nothing".into(), |m| *m));
-        }
-        return;
-    }
-    let path = module_path!()
-        .split_once("::")
-        .map_or(module_path!(), |p| p.1);
-    let out = std::process::Command::new(std::env::current_exe().unwrap())
-        .args([
-            &format!("{path}::{test}"),
-            "--exact",
-            "--nocapture",
-            "--test-threads=1",
-        ])
-        .env(CHILD, "1")
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&out.stdout);
-    for (id, _) in calls {
-        assert!(
-            text.contains(&format!("refused: {}", guard::message(id))),
-            "{id}: {text}"
-        );
-    }
 }

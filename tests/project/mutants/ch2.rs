@@ -1,11 +1,10 @@
 //! Chapter 2's graders against plausible wrong solutions (each must fail
 //! and name its mistake) and correct alternatives (each must pass).
 
-use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::panic::catch_unwind;
 
 use glam::{Vec2, Vec3};
 use raystep::ch2_rasterization::triangle::rasterize_triangle;
-use raystep::core::guard;
 use raystep::grading::exercise::{Check, Symptom};
 use raystep::grading::exercises::ch2::{self, model::Model};
 
@@ -468,8 +467,8 @@ fn calling_the_references_is_refused() {
         ];
         rasterize_triangle(v, [Vec3::ONE; 3], 2, 2, &mut d, &mut i)
     };
-    refused_in_a_child(
-        "calling_the_references_is_refused",
+    super::refused_in_a_child(
+        concat!(module_path!(), "::calling_the_references_is_refused"),
         &[
             ("ch2/rasterize_triangle", &draw),
             ("ch2/edge_function", &|| {
@@ -518,40 +517,4 @@ fn small_exercise_mutants_name_their_mistake() {
     expect(check, ch2::NOT_STORED, "depth not stored");
     // The library's functions pass (they are the references).
     assert!(ch2::check_edge_function(edge::edge_function).passed());
-}
-
-/// Runs `calls` (each a reference called inside a student's function) in
-/// a child process of this test binary, since a refused call is
-/// remembered for the whole process: the child prints each refusal's
-/// message, and the messages must name the references.
-fn refused_in_a_child(test: &str, calls: &[(&str, &dyn Fn())]) {
-    const CHILD: &str = "RAYSTEP_MUTANTS_GUARD_CHILD";
-    if std::env::var_os(CHILD).is_some() {
-        for (_, call) in calls {
-            let r = catch_unwind(AssertUnwindSafe(|| guard::student(call)));
-            let message = r.err().and_then(|p| p.downcast::<String>().ok());
-            println!("refused: {}", message.map_or("nothing".into(), |m| *m));
-        }
-        return;
-    }
-    let path = module_path!()
-        .split_once("::")
-        .map_or(module_path!(), |p| p.1);
-    let out = std::process::Command::new(std::env::current_exe().unwrap())
-        .args([
-            &format!("{path}::{test}"),
-            "--exact",
-            "--nocapture",
-            "--test-threads=1",
-        ])
-        .env(CHILD, "1")
-        .output()
-        .unwrap();
-    let text = String::from_utf8_lossy(&out.stdout);
-    for (id, _) in calls {
-        assert!(
-            text.contains(&format!("refused: {}", guard::message(id))),
-            "{id}: {text}"
-        );
-    }
 }

@@ -16,6 +16,11 @@ pub mod ch6;
 /// when it fails.
 pub fn in_child(name: &str, f: impl FnOnce()) -> String {
     const CHILD: &str = "RAYSTEP_MUTANTS_CHILD";
+    // A test's name as the harness knows it (`module_path!()` starts with
+    // the test crate's name).
+    let name = name
+        .strip_prefix(concat!(env!("CARGO_CRATE_NAME"), "::"))
+        .unwrap_or(name);
     if std::env::var_os(CHILD).is_some() {
         f();
         return String::new();
@@ -33,4 +38,23 @@ pub fn in_child(name: &str, f: impl FnOnce()) -> String {
     assert!(out.status.success(), "the child failed:\n{text}");
     assert!(text.contains("1 passed"), "the child ran no test:\n{text}");
     text
+}
+
+/// Each of `calls` calls raystep's own solution of the exercise it names
+/// as if from inside a student's function; in a child process (see
+/// [`in_child`], which runs the test `test` again) every one must be
+/// refused with the guard's message naming that exercise.
+pub fn refused_in_a_child(test: &str, calls: &[(&str, &dyn Fn())]) {
+    use raystep::core::guard;
+    use std::panic::{catch_unwind, AssertUnwindSafe};
+    in_child(test, || {
+        for (id, call) in calls {
+            let got = catch_unwind(AssertUnwindSafe(|| guard::student(call)));
+            let message = got
+                .err()
+                .and_then(|p| p.downcast::<String>().ok())
+                .map_or_else(|| "nothing".to_string(), |m| *m);
+            assert_eq!(message, guard::message(id), "{id}");
+        }
+    });
 }
