@@ -71,7 +71,12 @@ impl Sky {
         let y = if u.x < p_up {
             // Reuse u.x: rescaled, it is uniform in [0, 1) again.
             let v = (u.x / p_up).min(1.0);
+            // The answer depends only on the ratio of h to z: scaled to
+            // the larger, the squares below cannot overflow (a sky of 1e20
+            // squared is past f32's 3.4e38).
             let (h, z) = (mean(self.horizon), mean(self.zenith));
+            let s = h.max(z);
+            let (h, z) = if s > 0.0 { (h / s, z / s) } else { (h, z) };
             // Solve (z − h)/2 y² + h y = v (h + z)/2 in the stable form
             // y = v (h + z) / (h + √(h² + v (z² − h²))).
             let den = h + (h * h + v * (z * z - h * h)).max(0.0).sqrt();
