@@ -5,7 +5,7 @@ use glam::Vec3;
 
 use crate::ch3_ray_triangle::bvh::{Bvh, Triangles};
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::triangle::{Hit, Intersector};
+use crate::ch3_ray_triangle::triangle::{unit_normal, Hit, Intersector};
 use crate::core::sampling::mix64;
 use crate::scene::Scene;
 
@@ -63,8 +63,7 @@ pub fn shade(geometry: &Geometry, hit: Option<Hit>) -> [Vec3; 4] {
     let Some(hit) = hit else {
         return [Vec3::ZERO; 4];
     };
-    let [p0, p1, p2] = geometry.triangles.tris[hit.triangle as usize];
-    let n = (p1 - p0).cross(p2 - p0).normalize_or_zero();
+    let n = unit_normal(geometry.triangles.tris[hit.triangle as usize]).unwrap_or(Vec3::ZERO);
     let (near, far) = geometry.depth_range;
     // Depth shaded by 1/t (as in chapter 1): 1 at the nearest vertex,
     // 0.15 at the farthest.

@@ -52,6 +52,21 @@ impl Hit {
     }
 }
 
+/// The unit normal of triangle `[p0, p1, p2]` (its front is the side from
+/// which the corners run counter-clockwise), at any size: the cross product
+/// is scaled to its largest component before it is normalised, because
+/// its squared length overflows f32 once edges pass about 1e9 (and
+/// underflows below about 1e-10). `None` for a triangle with no area.
+pub fn unit_normal([p0, p1, p2]: [Vec3; 3]) -> Option<Vec3> {
+    let n = (p1 - p0).cross(p2 - p0);
+    let largest = n.abs().max_element();
+    if largest > 0.0 && largest.is_finite() {
+        (n / largest).try_normalize()
+    } else {
+        None
+    }
+}
+
 /// Ray-plane intersection for the plane Nᵀx = c: t = (c - Nᵀo)/(Nᵀd).
 /// `None` when the ray is parallel to the plane (Nᵀd = 0) or t is not finite.
 // ANCHOR: ray_plane

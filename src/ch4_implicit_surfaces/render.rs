@@ -10,6 +10,7 @@ use rayon::prelude::*;
 use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::geometry::Geometry;
 use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::triangle::unit_normal;
 use crate::ch4_implicit_surfaces::distance::{scene_distance, SdfObject};
 use crate::ch4_implicit_surfaces::hit::{nearest_hit, Surface, SurfaceHit};
 use crate::ch4_implicit_surfaces::march::{
@@ -35,8 +36,8 @@ impl MeshTracer<'_> {
     pub fn hit(&self, ray: &Ray) -> Option<SurfaceHit> {
         let hit = self.geometry.closest(ray)?;
         let mesh = self.geometry.triangles.mesh[hit.triangle as usize] as usize;
-        let [p0, p1, p2] = self.geometry.triangles.tris[hit.triangle as usize];
-        let n = (p1 - p0).cross(p2 - p0).normalize_or_zero();
+        let n =
+            unit_normal(self.geometry.triangles.tris[hit.triangle as usize]).unwrap_or(Vec3::ZERO);
         Some(SurfaceHit {
             t: hit.t,
             // Face the viewer, as SDF normals do.

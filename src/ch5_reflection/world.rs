@@ -11,6 +11,7 @@ use glam::Vec3;
 use crate::ch3_ray_triangle::bvh::Triangles;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::spawn::{offset_distance, offset_origin};
+use crate::ch3_ray_triangle::triangle::unit_normal;
 use crate::ch3_ray_triangle::wide_bvh::WideBvh;
 use crate::ch4_implicit_surfaces::distance::{scene_distance, SdfObject};
 use crate::ch4_implicit_surfaces::hit::Surface;
@@ -67,7 +68,7 @@ impl World {
         let normals = triangles
             .tris
             .iter()
-            .map(|[p0, p1, p2]| (*p1 - *p0).cross(*p2 - *p0).normalize_or(Vec3::Z))
+            .map(|tri| unit_normal(*tri).unwrap_or(Vec3::Z))
             .collect();
         let march = March {
             max_distance: scene_extent(scene),

@@ -128,7 +128,7 @@ pub(super) fn build_object(
         return Err(err(
             "",
             format!(
-                "vertex {i} lies at {} after the transform, outside ±{MAX_COORDINATE:e} (the renderer squares distances in f32)",
+                "vertex {i} lies at {} after the transform, outside ±{MAX_COORDINATE:e} (the triangle test multiplies three coordinates in f32)",
                 mesh.positions[i]
             ),
         ));

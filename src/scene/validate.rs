@@ -8,9 +8,11 @@ use glam::DVec3;
 
 use super::file::LightSection;
 
-/// The largest coordinate (or length) a scene may use: distances are
-/// squared in f32, and 1e18² = 1e36 is still below f32's 3.4e38.
-pub const MAX_COORDINATE: f64 = 1e18;
+/// The largest coordinate (or length) a scene may use: the watertight
+/// triangle test multiplies three coordinate differences in f32, and with
+/// differences up to 2e12 its sums stay below 1e38, under f32's 3.4e38
+/// (at 1e13 they overflowed, and chapter 4 drew hits at t = ∞ as NaN).
+pub const MAX_COORDINATE: f64 = 1e12;
 /// The largest light value (emission, radiance, intensity, irradiance):
 /// leaves f32 headroom for the products and divisions of shading.
 pub const MAX_LIGHT: f64 = 1e20;
