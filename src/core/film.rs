@@ -226,6 +226,24 @@ pub fn write_all_synced(path: &Path, bytes: &[u8]) -> std::result::Result<(), St
         .map_err(|e| format!("writing {} bytes: {e}", bytes.len()))
 }
 
+/// Creates the folder `dir` (and its parents) for outputs; a path on the
+/// way that is a file is named as such (`--out` pointing at a file used to
+/// say only "File exists").
+pub fn create_folder(dir: &Path) -> Result<()> {
+    std::fs::create_dir_all(dir).map_err(|e| {
+        let file = dir
+            .ancestors()
+            .find(|a| std::fs::metadata(a).is_ok_and(|m| !m.is_dir()));
+        match file {
+            Some(file) => Error::Usage(format!(
+                "{}: is a file, not a folder: outputs need a folder there (choose another --out)",
+                file.display()
+            )),
+            None => Error::io(dir, e),
+        }
+    })
+}
+
 /// Creates the directory of `path`, lets `write` fill a temporary file next
 /// to it, and renames that into place. On failure the temporary is removed
 /// and `path` is untouched. Inside an [`OutputSet`] the rename waits for
@@ -235,7 +253,7 @@ pub fn write_atomically(
     write: impl FnOnce(&Path) -> std::result::Result<(), String>,
 ) -> Result<()> {
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+        create_folder(dir)?;
     }
     let file_name = path
         .file_name()

@@ -41,3 +41,25 @@ fn a_write_that_runs_out_of_room_fails_and_leaves_nothing() {
         "left behind: {left:?}"
     );
 }
+
+/// `--out` naming a file (or a path through one) says so, instead of the
+/// system's bare "File exists".
+#[test]
+fn an_output_folder_that_is_a_file_is_named() {
+    let dir = common::temp_dir("out-is-a-file");
+    let file = dir.join("taken");
+    std::fs::write(&file, "x").unwrap();
+    for out in [file.clone(), file.join("below")] {
+        let run = Command::new(env!("CARGO_BIN_EXE_ch1"))
+            .args(["--width", "16", "--height", "16", "--out"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(2), "{err}");
+        assert!(
+            err.contains("taken") && err.contains("is a file, not a folder"),
+            "{err}"
+        );
+    }
+}
