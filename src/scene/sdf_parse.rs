@@ -11,6 +11,7 @@ use glam::{Quat, Vec3};
 use toml::{Table, Value};
 
 use super::sdf::{ScaleBound, Sdf};
+use super::validate::{MAX_COORDINATE, MIN_LENGTH};
 
 /// An error: (key path, message).
 pub type ParseError = (String, String);
@@ -224,12 +225,7 @@ fn transform(t: &Table, at: &str, shape: Sdf) -> Result<Sdf, ParseError> {
         None => {}
         Some(Value::Array(_)) => {
             let factors = vec3(t, "scale", Vec3::ONE).map_err(|m| err("scale", m))?;
-            if factors.min_element() <= 0.0 {
-                return Err(err(
-                    "scale",
-                    format!("factors must be positive, got {factors}"),
-                ));
-            }
+            check_scale(factors).map_err(|m| err("scale", m))?;
             s = Sdf::ScaleAxes {
                 factors,
                 bound: bound.unwrap_or(ScaleBound::Min),
@@ -244,9 +240,7 @@ fn transform(t: &Table, at: &str, shape: Sdf) -> Result<Sdf, ParseError> {
                 ));
             }
             let factor = number(t, "scale", 1.0).map_err(|m| err("scale", m))?;
-            if factor <= 0.0 {
-                return Err(err("scale", format!("must be positive, got {factor}")));
-            }
+            check_scale(Vec3::splat(factor)).map_err(|m| err("scale", m))?;
             s = Sdf::Scale {
                 factor,
                 of: Box::new(s),
@@ -286,20 +280,46 @@ fn transform(t: &Table, at: &str, shape: Sdf) -> Result<Sdf, ParseError> {
     Ok(s)
 }
 
+/// A number of an SDF as the renderer computes it, bounded like a mesh's:
+/// within ±[`MAX_COORDINATE`], and zero or at least [`MIN_LENGTH`] in size
+/// (a subnormal scale made a plane vanish).
 fn as_f32(v: &Value) -> Option<f32> {
     let x = match v {
         Value::Float(f) => *f,
         Value::Integer(i) => *i as f64,
         _ => return None,
     };
-    let y = x as f32;
-    y.is_finite().then_some(y)
+    let bounded = x.is_finite() && x.abs() <= MAX_COORDINATE && (x == 0.0 || x.abs() >= MIN_LENGTH);
+    bounded.then_some(x as f32)
+}
+
+/// What [`as_f32`] accepts, for messages.
+fn bounds() -> String {
+    format!("within ±{MAX_COORDINATE:e}, and 0 or at least {MIN_LENGTH:e} in size")
+}
+
+/// The range of a scale factor: past it, a point's distance to the scaled
+/// shape overflows or underflows f32 somewhere in a scene of sensible size.
+const SCALE_RANGE: std::ops::RangeInclusive<f32> = 1e-6..=1e6;
+
+fn check_scale(factors: Vec3) -> Result<(), String> {
+    if factors.to_array().iter().all(|f| SCALE_RANGE.contains(f)) {
+        Ok(())
+    } else {
+        Err(format!(
+            "factors must lie in [{:e}, {:e}] (f32 distances overflow or vanish past them), got {factors}",
+            SCALE_RANGE.start(),
+            SCALE_RANGE.end()
+        ))
+    }
 }
 
 fn number(t: &Table, key: &str, default: f32) -> Result<f32, String> {
     match t.get(key) {
         None => Ok(default),
-        Some(v) => as_f32(v).ok_or_else(|| format!("expected a finite number, got {v}")),
+        Some(v) => {
+            as_f32(v).ok_or_else(|| format!("expected a finite number {}, got {v}", bounds()))
+        }
     }
 }
 
@@ -309,7 +329,11 @@ fn vec3(t: &Table, key: &str, default: Vec3) -> Result<Vec3, String> {
         Some(Value::Array(a)) if a.len() == 3 => {
             let xs: Option<Vec<f32>> = a.iter().map(as_f32).collect();
             xs.map(|x| Vec3::new(x[0], x[1], x[2])).ok_or_else(|| {
-                format!("expected 3 finite numbers, got {}", Value::Array(a.clone()))
+                format!(
+                    "expected 3 finite numbers {}, got {}",
+                    bounds(),
+                    Value::Array(a.clone())
+                )
             })
         }
         Some(v) => Err(format!("expected [x, y, z], got {v}")),

@@ -78,3 +78,26 @@ fn triangles_at_the_coordinate_bound_are_hit_at_a_finite_distance() {
     let m = load(&far).unwrap_err();
     assert!(m.contains("eye") && m.contains("1e12"), "{m}");
 }
+
+/// SDF numbers are bounded like a mesh's: a subnormal scale (it made a
+/// plane vanish), a scale past 1e6, a radius past the coordinate bound
+/// (its Eikonal check printed NaN beside "≈ 1") are refused naming the key.
+#[test]
+fn sdf_numbers_are_bounded_like_mesh_values() {
+    for (body, key) in [
+        ("type = \"plane\"\nscale = 1e-40\n", "sdfs[0].scale"),
+        ("type = \"sphere\"\nscale = 1e7\n", "sdfs[0].scale"),
+        ("type = \"sphere\"\nscale = [1, 1e-9, 1]\n", "sdfs[0].scale"),
+        ("type = \"sphere\"\nradius = 1e30\n", "sdfs[0].radius"),
+        (
+            "type = \"sphere\"\ntranslate = [0, 1e13, 0]\n",
+            "sdfs[0].translate",
+        ),
+    ] {
+        let text = format!("{LAMP}\n[[sdfs]]\n{body}material = \"lamp\"\n");
+        let m = load(&text).unwrap_err();
+        assert!(m.contains(key), "{key}: {m}");
+    }
+    let fine = format!("{LAMP}\n[[sdfs]]\ntype = \"sphere\"\nscale = 1e-3\nmaterial = \"lamp\"\n");
+    assert!(load(&fine).is_ok(), "{:?}", load(&fine).err());
+}
