@@ -436,7 +436,7 @@ fn bad_sdf_entries_get_errors_naming_the_key() {
         ),
         ("[[sdfs]]\ntype = \"sphere\"\nmaterial = \"gold\"\n", "sdfs[0].material", "no material named `gold`"),
         ("[[sdfs]]\ntype = \"sphere\"\nscale_bound = \"max\"\n", "sdfs[0].scale_bound", "per-axis"),
-        ("[[sdfs]]\ntype = \"sphere\"\nscale = [1, -1, 1]\n", "sdfs[0].scale", "positive"),
+        ("[[sdfs]]\ntype = \"sphere\"\nscale = [1, -1, 1]\n", "sdfs[0].scale", "factors must lie in"),
         ("[[sdfs]]\ntype = \"plane\"\nnormal = [0, 0, 0]\n", "sdfs[0].normal", "zero vector"),
         (
             "[[sdfs]]\ntype = \"sphere\"\nrotate = { axis = [0, 0, 0], degrees = 3 }\n",
