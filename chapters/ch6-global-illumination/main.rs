@@ -11,7 +11,9 @@ use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
 use raystep::ch6_global_illumination::bench;
-use raystep::ch6_global_illumination::integrator::Estimator;
+use raystep::ch6_global_illumination::integrator::{
+    roulette_cannot_end, Estimator, SAFETY_SCATTERINGS,
+};
 use raystep::ch6_global_illumination::reference::make_reference;
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::stage::{GlobalIllumination, DEFAULT};
@@ -129,6 +131,19 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
             .map(|f| format!("    {}\n", f.display()))
             .collect();
         return print(&format!("{meta}wrote:\n{list}"));
+    }
+    if stage.path.max_bounces.is_none() {
+        // Said before the render, which may take hours.
+        let scene = common.load_sized_scene()?;
+        if roulette_cannot_end(&scene) {
+            eprintln!(
+                "warning: every surface of {} reflects all the light it receives \
+                 (reflectance 1 or glass): Russian roulette cannot end these paths, only \
+                 leaving the scene can; in a closed scene each runs to the safety limit \
+                 of {SAFETY_SCATTERINGS} bounces. Lower a reflectance or drop --unlimited.",
+                scene.name
+            );
+        }
     }
     let summary = run_with(stage, common)?;
     if !summary.stable {

@@ -55,6 +55,20 @@ pub fn slot_of(scatterings: u32) -> usize {
 /// reaching it is about e^-65.
 pub const SAFETY_SCATTERINGS: u32 = 1 << 16;
 
+/// Whether Russian roulette can never end a path in `scene`: every
+/// material keeps all the light it reflects in every channel (reflectance
+/// 1, or glass), so the survival probability, the throughput's largest
+/// channel, never drops below 1. Paths then end only by leaving the scene;
+/// in a closed one, each runs to [`SAFETY_SCATTERINGS`].
+pub fn roulette_cannot_end(scene: &crate::scene::Scene) -> bool {
+    use crate::scene::file::MaterialKind;
+    !scene.materials.is_empty()
+        && scene
+            .materials
+            .iter()
+            .all(|m| m.kind == MaterialKind::Glass || m.reflectance.min_element() >= 1.0)
+}
+
 /// The lecture's ladder of estimators, from the plainest to the best.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Estimator {

@@ -83,9 +83,14 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
     ];
     report.facts = facts.into_iter().map(|(k, v)| (k.to_string(), v)).collect();
     if st.cut > 0 {
+        let why = if super::integrator::roulette_cannot_end(r.scene) {
+            " (every surface reflects all the light it receives: roulette cannot end these paths)"
+        } else {
+            ""
+        };
         report.facts.push((
             "paths cut at the safety limit".into(),
-            format!("{} of {}", st.cut, st.paths),
+            format!("{} of {}{why}", st.cut, st.paths),
         ));
     }
     if let Some((e, w, h)) = r.reference_rmse {

@@ -1,4 +1,5 @@
-//! Where the scene sits and how big it is must not change the picture: the
+//! Where the scene sits and how big it is must not change the picture (and
+//! a scene that reflects everything is said to defeat roulette): the
 //! Cornell box moved far from the origin or scaled down renders like the
 //! box at the origin. Chapter 6 against the stored reference of the box
 //! (region z-test, as the box at the origin is tested), chapter 5 against
@@ -114,4 +115,40 @@ fn the_report_says_where_f32_runs_out() {
             case.measured
         );
     }
+}
+
+/// A scene that reflects everything is named as such before chapter 6
+/// spends the safety limit on every path (it used to run at about 20
+/// paths/s without a word).
+#[test]
+fn a_scene_that_reflects_everything_is_said_to_defeat_roulette() {
+    use raystep::ch6_global_illumination::integrator::roulette_cannot_end;
+    use raystep::ch6_global_illumination::scenes;
+    assert!(roulette_cannot_end(&scenes::closed_furnace(1.0, 0.5, 4)));
+    assert!(!roulette_cannot_end(&scenes::closed_furnace(0.99, 0.5, 4)));
+    assert!(!roulette_cannot_end(&Scene::builtin()));
+    let dir = crate::common::temp_dir("lossless");
+    let file = dir.join("white.toml");
+    std::fs::write(
+        &file,
+        "[[materials]]\nname = \"white\"\nreflectance = [1, 1, 1]\n\n[[objects]]\nshape = \"box\"\nmaterial = \"white\"\n",
+    )
+    .unwrap();
+    let run = std::process::Command::new(env!("CARGO_BIN_EXE_ch6"))
+        .args([
+            "--unlimited",
+            "--width",
+            "4",
+            "--height",
+            "4",
+            "--final-only",
+            "--scene",
+        ])
+        .arg(&file)
+        .arg("--out")
+        .arg(dir.join("out"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&run.stderr);
+    assert!(err.contains("roulette cannot end these paths"), "{err}");
 }
