@@ -120,6 +120,9 @@ fn main() -> ExitCode {
 }
 
 fn headless(cli: &Cli) -> Result<()> {
+    // An interrupted run leaves no temporaries and no half set of outputs,
+    // as the chapter binaries do.
+    raystep::core::run::clean_up_on_signals();
     let scene = match &cli.scene {
         Some(path) => Scene::load(path)?,
         None => Scene::builtin(),
