@@ -3,10 +3,9 @@
 //! interrupted headless run leaves no temporaries.
 //!
 //! The full disk: the chapter binary runs with a file-size limit (the
-//! shell's `ulimit -f`,
-//! with SIGXFSZ ignored so the write fails with EFBIG as on a full disk),
-//! must exit non-zero naming the file, and leave no image, whole or cut,
-//! and no temporary behind. (PNGs used to go through a buffered writer
+//! shell's `ulimit -f`, with SIGXFSZ ignored so the write fails with EFBIG
+//! as on a full disk), must exit non-zero naming the file, and leave no
+//! image, whole or cut, and no temporary behind. (PNGs used to go through a buffered writer
 //! whose failed flush on drop was ignored: a 2 KiB limit gave an empty
 //! PNG and exit status 0.)
 
