@@ -94,7 +94,11 @@ fn stem(file: &str) -> String {
 }
 
 /// The largest number of triangles one OBJ file may hold (after polygons
-/// are split into triangles); raise it with `--max-triangles`.
+/// are split into triangles); raise it with `--max-triangles`. Peak memory
+/// per triangle, measured on a 1,000,000-triangle grid (64x64 image,
+/// `/usr/bin/time -f %M`): chapter 2 about 0.66 KB (its screen triangles;
+/// 1.5 KB before their lists were joined per worker), chapters 3 to 6
+/// about 0.38 KB, chapter 1 0.2 KB; so 20 million fit in 13 GB.
 pub const DEFAULT_MAX_TRIANGLES: usize = 20_000_000;
 
 /// Line endings made `\n`: tobj splits lines at `\n` only, so a file with
