@@ -98,7 +98,8 @@ fn stem(file: &str) -> String {
 /// per triangle, measured on a 1,000,000-triangle grid (64x64 image,
 /// `/usr/bin/time -f %M`): chapter 2 about 0.66 KB (its screen triangles;
 /// 1.5 KB before their lists were joined per worker), chapters 3 to 6
-/// about 0.38 KB, chapter 1 0.2 KB; so 20 million fit in 13 GB.
+/// about 0.38 KB, chapter 1 0.2 KB; at 20 million that is about 13 GB
+/// (extrapolated, not run here).
 pub const DEFAULT_MAX_TRIANGLES: usize = 20_000_000;
 
 /// Line endings made `\n`: tobj splits lines at `\n` only, so a file with
