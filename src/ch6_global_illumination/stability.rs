@@ -6,6 +6,7 @@
 use crate::core::film::Film;
 use crate::core::format::{format_number, format_seconds};
 use crate::core::report::StabilityCase;
+use crate::scene::place::{PLACEMENTS, PLACEMENTS_REQUIRED};
 use crate::scene::Scene;
 use glam::DVec3;
 
@@ -208,29 +209,6 @@ fn flat_case(
     let measured = format!("{} (z = {z:.2})", format_number(mean));
     (StabilityCase::new(name, expected, measured, ok), z)
 }
-
-/// Where the Cornell box is placed for [`placement`]: every offset of
-/// 1e1 to 1e4 on one axis (y, x, z in turn) and scales 1e-3 to 1e3, which
-/// must render like the box at the origin; then two placements past what
-/// f32 can resolve (1e6 from the origin, where neighbouring values are
-/// 0.06 apart; a box 2e-5 wide, below the fixed offset that spawned rays
-/// use near the origin), reported but not required.
-pub const PLACEMENTS: [(&str, [f64; 3], f64); 10] = [
-    ("+1e1 y", [0.0, 1e1, 0.0], 1.0),
-    ("+1e2 x", [1e2, 0.0, 0.0], 1.0),
-    ("-1e3 z", [0.0, 0.0, -1e3], 1.0),
-    ("+1e4 y", [0.0, 1e4, 0.0], 1.0),
-    ("x1e-3", [0.0; 3], 1e-3),
-    ("x1e-2", [0.0; 3], 1e-2),
-    ("x1e2", [0.0; 3], 1e2),
-    ("x1e3", [0.0; 3], 1e3),
-    ("+1e6 z", [0.0, 0.0, 1e6], 1.0),
-    ("x1e-5", [0.0; 3], 1e-5),
-];
-
-/// How many of [`PLACEMENTS`] are required to match (the rest are past
-/// f32's reach).
-pub const PLACEMENTS_REQUIRED: usize = 8;
 
 /// The Cornell box moved and scaled ([`PLACEMENTS`]), each against the
 /// stored reference of the box at the origin by the region z-test; the

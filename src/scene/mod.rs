@@ -11,7 +11,7 @@ pub mod file;
 pub mod mesh;
 pub mod obj;
 mod object;
-mod place;
+pub mod place;
 pub mod sdf;
 pub mod sdf_parse;
 pub mod validate;

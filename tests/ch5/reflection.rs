@@ -81,7 +81,7 @@ fn the_scene_decides_what_is_built() {
 #[test]
 fn every_stiff_case_comes_out_as_expected_with_no_nan() {
     let cases = stability_cases();
-    assert_eq!(cases.len(), 7);
+    assert_eq!(cases.len(), 8);
     for c in &cases {
         assert!(c.case.ok, "{:?}", c.case);
     }

@@ -20,6 +20,7 @@ use raystep::ch6_global_illumination::reference::{region_z_test, StoredReference
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::stability;
 use raystep::ch6_global_illumination::studies::render;
+use raystep::scene::place::{PLACEMENTS, PLACEMENTS_REQUIRED};
 use raystep::scene::Scene;
 
 /// Placements of the box: (offset, scale), the stiff ones of the issue
@@ -108,7 +109,7 @@ fn the_report_says_where_f32_runs_out() {
         "{}",
         case.measured
     );
-    for (label, _, _) in &stability::PLACEMENTS[stability::PLACEMENTS_REQUIRED..] {
+    for (label, _, _) in &PLACEMENTS[PLACEMENTS_REQUIRED..] {
         assert!(
             case.measured.contains(&format!("{label}: ")),
             "{}",
@@ -151,4 +152,22 @@ fn a_scene_that_reflects_everything_is_said_to_defeat_roulette() {
         .unwrap();
     let err = String::from_utf8_lossy(&run.stderr);
     assert!(err.contains("roulette cannot end these paths"), "{err}");
+}
+
+#[test]
+fn chapter_5s_report_prints_the_worst_placement() {
+    let case = raystep::ch5_reflection::stability::placement().case;
+    assert!(case.ok, "{}", case.measured);
+    assert!(
+        case.measured.contains("largest region deviation"),
+        "{}",
+        case.measured
+    );
+    for (label, _, _) in &PLACEMENTS[PLACEMENTS_REQUIRED..] {
+        assert!(
+            case.measured.contains(&format!("{label}: ")),
+            "{}",
+            case.measured
+        );
+    }
 }
