@@ -230,7 +230,7 @@ pub fn placement(size: u32, spp: u32) -> (StabilityCase, f64) {
     // The mean over pixels and channels.
     let level = |f: &Film| film_mean(f).element_sum() as f64 / 3.0;
     let ref_mean = level(&reference.mean);
-    let (mut ok, mut worst_z, mut worst_dev) = (true, 0.0f64, (0.0f64, ""));
+    let (mut ok, mut worst_z, mut worst_dev) = (true, 0.0f64, (0.0f64, "", 0.0f64));
     let mut beyond = Vec::new();
     for (i, (label, offset, scale)) in PLACEMENTS.iter().enumerate() {
         let scene = Scene::builtin()
@@ -240,11 +240,15 @@ pub fn placement(size: u32, spp: u32) -> (StabilityCase, f64) {
         let (acc, _) = render(&scene, &path, SamplerKind::Independent, spp, 11, false);
         let t = region_z_test(&acc.mean(), &acc.variance_of_mean(), &reference, 4, 1e-3);
         let dev = level(&acc.mean()) / ref_mean - 1.0;
+        // The noise of that mean: its standard error, relative.
+        let var = acc.variance_of_mean();
+        let n = var.pixels.len() as f64;
+        let se = (level(&var) * n).sqrt() / n / ref_mean;
         if i < PLACEMENTS_REQUIRED {
             ok &= t.passed() && acc.stats.nonfinite == 0;
             worst_z = worst_z.max(t.worst_z);
             if dev.abs() > worst_dev.0.abs() {
-                worst_dev = (dev, label);
+                worst_dev = (dev, label, se);
             }
         } else {
             beyond.push(format!(
@@ -255,10 +259,11 @@ pub fn placement(size: u32, spp: u32) -> (StabilityCase, f64) {
         }
     }
     let measured = format!(
-        "worst |z| {worst_z:.1}; largest deviation of the mean {:+.2} % ({}); past f32's reach, \
-         not required: {}",
+        "worst |z| {worst_z:.1}; largest deviation of the mean {:+.2} % ({}, where its noise \
+         is ±{:.2} %); past f32's reach, not required: {}",
         100.0 * worst_dev.0,
         worst_dev.1,
+        100.0 * worst_dev.2,
         beyond.join(", ")
     );
     (StabilityCase::new(name, expected, measured, ok), worst_z)
