@@ -308,23 +308,96 @@ impl OutputSet {
     }
 
     /// Renames every staged file into place, under the lock a signal
-    /// handler waits for, so an interrupt sees all of them or none.
+    /// handler waits for, so an interrupt sees all of them or none; and
+    /// under a lock on each output folder (`.raystep.lock`), so that two
+    /// runs into one folder leave one run's set, not a mix. A rename that
+    /// fails part-way puts back what the set had replaced and removes what
+    /// it had added: the folder is as it was.
     pub fn commit(mut self) -> Result<()> {
         self.committed = true;
         let staged = STAGED.with(|s| s.borrow_mut().take()).unwrap_or_default();
         let mut temps = temporaries();
+        let _locks = lock_folders(staged.iter().map(|(_, path)| path.as_path()));
+        // Keep each file about to be replaced under a second name (a hard
+        // link: nothing is copied) until the whole set is in place.
+        let mut done: Vec<(&Path, Option<PathBuf>)> = Vec::new();
         let mut result = Ok(());
         for (tmp, path) in &staged {
             if result.is_ok() {
+                let backup = path.with_file_name(format!(
+                    ".{}.old{}-{}",
+                    std::process::id(),
+                    COUNTER.fetch_add(1, Ordering::Relaxed),
+                    path.file_name()
+                        .map(|n| n.to_string_lossy())
+                        .unwrap_or_default()
+                ));
+                let kept = std::fs::hard_link(path, &backup).is_ok().then_some(backup);
+                if let Some(b) = &kept {
+                    temps.push(b.clone());
+                }
                 result = std::fs::rename(tmp, path).map_err(|e| Error::io(path, e));
+                done.push((path, kept));
+                if result.is_err() {
+                    // This one was not replaced: drop its backup only.
+                    if let Some((_, Some(b))) = done.pop() {
+                        let _ = std::fs::remove_file(&b);
+                    }
+                }
             }
             if result.is_err() {
                 let _ = std::fs::remove_file(tmp);
             }
             temps.retain(|t| t != tmp);
         }
+        for (path, kept) in done {
+            match (&result, kept) {
+                (Ok(()), Some(b)) => {
+                    let _ = std::fs::remove_file(&b);
+                    temps.retain(|t| *t != b);
+                }
+                (Err(_), Some(b)) => {
+                    let _ = std::fs::rename(&b, path);
+                    temps.retain(|t| *t != b);
+                }
+                (Err(_), None) => {
+                    let _ = std::fs::remove_file(path);
+                }
+                (Ok(()), None) => {}
+            }
+        }
         result
     }
+}
+
+/// Exclusive locks on `.raystep.lock` in each folder of `paths`, taken in
+/// sorted order (so two runs cannot deadlock), released when dropped.
+/// Best effort: a folder where the lock file cannot be made is not locked.
+fn lock_folders<'a>(paths: impl Iterator<Item = &'a Path>) -> Vec<std::fs::File> {
+    let mut dirs: Vec<PathBuf> = paths
+        .filter_map(|p| p.parent())
+        .map(|d| {
+            if d.as_os_str().is_empty() {
+                PathBuf::from(".")
+            } else {
+                d.to_path_buf()
+            }
+        })
+        .collect();
+    dirs.sort();
+    dirs.dedup();
+    dirs.into_iter()
+        .filter_map(|d| {
+            let file = std::fs::OpenOptions::new()
+                .create(true)
+                .truncate(false)
+                .write(true)
+                .open(d.join(".raystep.lock"))
+                .ok()?;
+            file.lock().ok()?;
+            Some(file)
+        })
+        .collect()
 }
 
 impl Drop for OutputSet {
