@@ -490,3 +490,22 @@ fn src_root_stays_small() {
     let n = std::fs::read_dir(root().join("src")).unwrap().count();
     assert!(n <= 16, "src/ holds {n} entries");
 }
+
+/// `[lib] test = false`: a `#[test]` written beside the code would never
+/// run, so none may be there (the library's tests live in
+/// `tests/<chapter>/unit/`).
+#[test]
+fn no_test_hides_in_the_library() {
+    let hidden: Vec<String> = sources()
+        .into_iter()
+        .filter(|f| {
+            let text = std::fs::read_to_string(root().join("src").join(f)).unwrap();
+            text.lines()
+                .any(|l| l.trim_start().starts_with("#[test]") || l.contains("#[cfg(test)]"))
+        })
+        .collect();
+    assert!(
+        hidden.is_empty(),
+        "tests under src/ never run (lib test = false); move them to tests/<chapter>/unit/: {hidden:?}"
+    );
+}
