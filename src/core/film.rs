@@ -309,7 +309,7 @@ impl OutputSet {
 
     /// Renames every staged file into place, under the lock a signal
     /// handler waits for, so an interrupt sees all of them or none; and
-    /// under a lock on each output folder (`.raystep.lock`), so that two
+    /// under a lock on each output folder, so that two
     /// runs into one folder leave one run's set, not a mix. A rename that
     /// fails part-way puts back what the set had replaced and removes what
     /// it had added: the folder is as it was.
@@ -370,9 +370,10 @@ impl OutputSet {
     }
 }
 
-/// Exclusive locks on `.raystep.lock` in each folder of `paths`, taken in
-/// sorted order (so two runs cannot deadlock), released when dropped.
-/// Best effort: a folder where the lock file cannot be made is not locked.
+/// Exclusive locks on each folder of `paths` (the folder itself, opened
+/// read-only: no lock file is left behind), taken in sorted order so two
+/// runs cannot deadlock, released when dropped. Best effort: where a
+/// folder cannot be opened as a file (not on Unix), it is not locked.
 fn lock_folders<'a>(paths: impl Iterator<Item = &'a Path>) -> Vec<std::fs::File> {
     let mut dirs: Vec<PathBuf> = paths
         .filter_map(|p| p.parent())
@@ -388,14 +389,9 @@ fn lock_folders<'a>(paths: impl Iterator<Item = &'a Path>) -> Vec<std::fs::File>
     dirs.dedup();
     dirs.into_iter()
         .filter_map(|d| {
-            let file = std::fs::OpenOptions::new()
-                .create(true)
-                .truncate(false)
-                .write(true)
-                .open(d.join(".raystep.lock"))
-                .ok()?;
-            file.lock().ok()?;
-            Some(file)
+            let folder = std::fs::File::open(&d).ok()?;
+            folder.lock().ok()?;
+            Some(folder)
         })
         .collect()
 }

@@ -232,6 +232,26 @@ pub(super) fn build(
     })
 }
 
+/// The most SDF shapes and operations (CSG, transforms) a scene may hold:
+/// sphere tracing evaluates all of them at every step of every ray.
+pub const MAX_SDF_NODES: usize = 1024;
+
+/// The shapes and operations in one SDF tree.
+fn sdf_nodes(sdf: &crate::scene::sdf::Sdf) -> usize {
+    use crate::scene::sdf::Sdf;
+    1 + match sdf {
+        Sdf::Union(of) | Sdf::Intersection(of) | Sdf::SmoothUnion { of, .. } => {
+            of.iter().map(sdf_nodes).sum()
+        }
+        Sdf::Difference(a, b) => sdf_nodes(a) + sdf_nodes(b),
+        Sdf::Translate { of, .. }
+        | Sdf::Rotate { of, .. }
+        | Sdf::Scale { of, .. }
+        | Sdf::ScaleAxes { of, .. } => sdf_nodes(of),
+        _ => 0,
+    }
+}
+
 /// The total area of a mesh's triangles, as the renderer computes it (f32).
 fn emitting_area(mesh: &crate::scene::mesh::Mesh) -> f32 {
     mesh.triangles
@@ -256,7 +276,8 @@ fn build_sdfs(
         at,
         message,
     };
-    let mut out = Vec::with_capacity(tables.len());
+    let mut out = Vec::with_capacity(tables.len().min(MAX_SDF_NODES));
+    let mut nodes = 0usize;
     for (i, t) in tables.iter().enumerate() {
         let at = format!("sdfs[{i}]");
         let sdf =
@@ -283,6 +304,17 @@ fn build_sdfs(
         };
         let index =
             use_material(declared, materials, wanted, &at).map_err(|(a, m)| scene_err(a, m))?;
+        nodes += sdf_nodes(&sdf);
+        if nodes > MAX_SDF_NODES {
+            return Err(scene_err(
+                at,
+                format!(
+                    "more than {MAX_SDF_NODES} SDF shapes and operations in the scene: every step \
+                     of every ray evaluates them all (20,000 took minutes per image); build a \
+                     large shape from triangles instead"
+                ),
+            ));
+        }
         out.push(SdfObject {
             name,
             sdf,
