@@ -98,17 +98,11 @@ fn the_moved_or_scaled_cornell_box_renders_the_same_in_chapter_5() {
     }
 }
 
-#[test]
-fn the_report_says_where_f32_runs_out() {
-    let (case, worst_z) = stability::placement(16, 16);
+/// A placement row passed, says its worst deviation (`what`), and names
+/// the two placements past f32's reach.
+fn says_its_worst_and_where_f32_runs_out(case: &raystep::core::report::StabilityCase, what: &str) {
     assert!(case.ok, "{}", case.measured);
-    assert!(worst_z > 0.0 && worst_z < 5.0, "{worst_z}");
-    // The required placements and the two beyond f32's reach, named.
-    assert!(
-        case.measured.contains("largest deviation of the mean"),
-        "{}",
-        case.measured
-    );
+    assert!(case.measured.contains(what), "{}", case.measured);
     for (label, _, _) in &PLACEMENTS[PLACEMENTS_REQUIRED..] {
         assert!(
             case.measured.contains(&format!("{label}: ")),
@@ -116,6 +110,13 @@ fn the_report_says_where_f32_runs_out() {
             case.measured
         );
     }
+}
+
+#[test]
+fn the_report_says_where_f32_runs_out() {
+    let (case, worst_z) = stability::placement(16, 16);
+    assert!(worst_z > 0.0 && worst_z < 5.0, "{worst_z}");
+    says_its_worst_and_where_f32_runs_out(&case, "largest deviation of the mean");
 }
 
 /// A scene that reflects everything is named as such before chapter 6
@@ -157,17 +158,5 @@ fn a_scene_that_reflects_everything_is_said_to_defeat_roulette() {
 #[test]
 fn chapter_5s_report_prints_the_worst_placement() {
     let case = raystep::ch5_reflection::stability::placement().case;
-    assert!(case.ok, "{}", case.measured);
-    assert!(
-        case.measured.contains("largest region deviation"),
-        "{}",
-        case.measured
-    );
-    for (label, _, _) in &PLACEMENTS[PLACEMENTS_REQUIRED..] {
-        assert!(
-            case.measured.contains(&format!("{label}: ")),
-            "{}",
-            case.measured
-        );
-    }
+    says_its_worst_and_where_f32_runs_out(&case, "largest region deviation");
 }
