@@ -15,7 +15,7 @@ use crate::core::format::format_count;
 use crate::core::text::escape_keep_newlines;
 use crate::grading::build::{build_exercises, exercises_dir};
 use crate::grading::exercise::{Check, Exercise, Outcome};
-use crate::grading::process::{reference, run_student};
+use crate::grading::process::{reference, run_student, sandbox_gaps};
 use crate::grading::sandbox::{become_subreaper, kill_orphans};
 use crate::grading::{all, hints};
 use crate::grading::{remove_failure_images, shipped};
@@ -128,6 +128,17 @@ pub fn grade_main() -> ExitCode {
                 format_count(exercises.len(), "exercise")
             ),
         );
+        let gaps = sandbox_gaps(&built.runner, &cli.out);
+        if !gaps.is_empty() {
+            say(
+                &mut stdout,
+                &format!(
+                    "note: this system cannot give your code's process {}: it is graded \
+                     with the limits that hold\n",
+                    gaps.join(", ")
+                ),
+            );
+        }
         let timeout = Duration::from_secs_f64(cli.timeout.clamp(0.1, 3600.0));
         // What a student's code starts and detaches comes back to us when
         // its parent dies, and is stopped after each exercise.

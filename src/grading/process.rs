@@ -129,3 +129,16 @@ pub fn too_much_output() -> String {
         OUTPUT_LIMIT >> 20
     )
 }
+
+/// What the sandbox of `grade-student` (built at `runner`) cannot enforce
+/// on this system, one phrase each: empty where everything holds. Asked
+/// of a `grade-student` process of its own, since the limits, once set,
+/// stay with the process that set them.
+pub fn sandbox_gaps(runner: &Path, scratch: &Path) -> Vec<String> {
+    let mut cmd = Command::new(runner);
+    cmd.arg(crate::grading::runner::SANDBOX_CHECK).arg(scratch);
+    match run_limited(&mut cmd, b"", Some(Duration::from_secs(10)), None) {
+        Ok(Ran::Exited { stdout, .. }) => stdout.lines().map(str::to_string).collect(),
+        _ => vec!["its check did not run".into()],
+    }
+}

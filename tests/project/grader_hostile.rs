@@ -124,6 +124,9 @@ fn line<'a>(text: &'a str, id: &str) -> &'a str {
         .unwrap_or_else(|| panic!("{id} not graded:\n{text}"))
 }
 
+// Linux only: elsewhere the address-space limit may not hold, and the
+// 16 GiB file would really ask the system for 16 GiB.
+#[cfg(target_os = "linux")]
 #[test]
 fn hostile_exercises_fail_and_leave_nothing_behind() {
     let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
@@ -207,13 +210,24 @@ fn hostile_exercises_fail_and_leave_nothing_behind() {
     assert!(!out.join("late").exists());
     let json = std::fs::read_to_string(out.join("results.json")).unwrap();
     assert!(json.contains("\"score\": 0,"), "{json}");
-    assert!(
-        !outside.exists(),
-        "the student's code wrote {}",
-        outside.display()
-    );
+    // Writes are confined where the kernel has Landlock (CI's has); where
+    // it has not, the grader says so before grading.
+    if text.contains("cannot give your code's process the write rule") {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI confines writes: {text}"
+        );
+        eprintln!("not checked: this kernel cannot confine writes (no Landlock)");
+    } else {
+        assert!(
+            !outside.exists(),
+            "the student's code wrote {}",
+            outside.display()
+        );
+    }
 }
 
+#[cfg(unix)]
 #[test]
 fn results_json_goes_only_to_a_regular_file() {
     let dir = common::temp_dir("hostile-fifo");
