@@ -105,8 +105,16 @@ pub struct App {
 impl App {
     /// A UI on chapter 0 and scene 0, asking for its first render
     /// (generation 1).
-    pub fn new(chapters: Vec<&'static dyn Chapter>, scenes: Vec<SceneEntry>, color: bool) -> App {
+    pub fn new(
+        chapters: Vec<&'static dyn Chapter>,
+        mut scenes: Vec<SceneEntry>,
+        color: bool,
+    ) -> App {
         let variant = chapters.first().map_or(0, |c| c.default_variant());
+        // The first entry is shown at once: read it now.
+        if let Some(first) = scenes.first_mut() {
+            first.ensure_loaded();
+        }
         App {
             chapters,
             scenes,
@@ -168,7 +176,12 @@ impl App {
     /// Why `chapter` cannot render scene `index`, if it cannot (a load
     /// error, or [`Chapter::unsupported`]).
     pub fn scene_problem(&self, chapter: &dyn Chapter, index: usize) -> Option<String> {
-        match &self.scenes.get(index)?.scene {
+        let entry = self.scenes.get(index)?;
+        if entry.pending.is_some() {
+            // Not read yet: nothing known against it.
+            return None;
+        }
+        match &entry.scene {
             Err(e) => Some(e.clone()),
             Ok(scene) => chapter.unsupported(scene),
         }
@@ -398,6 +411,7 @@ impl App {
     pub(super) fn select_scene(&mut self, index: usize) {
         if index < self.scenes.len() && index != self.scene {
             self.scene = index;
+            self.scenes[index].ensure_loaded();
             self.restart();
         }
     }

@@ -1,9 +1,11 @@
 //! The scene list of the terminal UI: the built-in scene first, then every
 //! `*.toml` file of a folder (normally `scenes/`), sorted by name. A scene
 //! that fails to load stays in the list with its error, so the UI can show
-//! why instead of stopping.
+//! why instead of stopping. The list appears at once: a file is only read
+//! when its entry is first chosen (ten heavy scenes used to keep the screen
+//! blank for 19 s while every one loaded).
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use crate::scene::Scene;
@@ -15,8 +17,11 @@ pub struct SceneEntry {
     pub name: String,
     /// Where it came from: a path, or `<built-in>`.
     pub source: String,
-    /// The loaded scene, or the loading error as text.
+    /// The loaded scene, or the loading error as text (until the entry is
+    /// loaded, a placeholder error: see `pending`).
     pub scene: Result<Arc<Scene>, String>,
+    /// The file still to read, for an entry not chosen yet.
+    pub pending: Option<PathBuf>,
 }
 
 impl SceneEntry {
@@ -27,18 +32,35 @@ impl SceneEntry {
             name: format!("{} (built-in)", scene.name),
             source: scene.source.clone(),
             scene: Ok(Arc::new(scene)),
+            pending: None,
         }
     }
 
     /// Loads one scene file; a failure is kept as the entry's error.
     pub fn load(path: &Path) -> SceneEntry {
+        let mut entry = SceneEntry::listed(path);
+        entry.ensure_loaded();
+        entry
+    }
+
+    /// An entry for a scene file, read when first chosen
+    /// ([`SceneEntry::ensure_loaded`]).
+    pub fn listed(path: &Path) -> SceneEntry {
         SceneEntry {
             name: path
                 .file_stem()
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_default(),
             source: path.display().to_string(),
-            scene: Scene::load(path).map(Arc::new).map_err(|e| e.to_string()),
+            scene: Err("not loaded yet: it loads when chosen".into()),
+            pending: Some(path.to_path_buf()),
+        }
+    }
+
+    /// Reads the scene file if it has not been read yet.
+    pub fn ensure_loaded(&mut self) {
+        if let Some(path) = self.pending.take() {
+            self.scene = Scene::load(&path).map(Arc::new).map_err(|e| e.to_string());
         }
     }
 }
@@ -56,6 +78,6 @@ pub fn scene_list(dir: &Path) -> Vec<SceneEntry> {
         .unwrap_or_default();
     files.sort();
     std::iter::once(SceneEntry::builtin())
-        .chain(files.iter().map(|p| SceneEntry::load(p)))
+        .chain(files.iter().map(|p| SceneEntry::listed(p)))
         .collect()
 }

@@ -181,6 +181,7 @@ fn renamed(name: &str) -> SceneEntry {
         name: name.into(),
         source: format!("scenes/{name}.toml"),
         scene: Ok(Arc::new(scene)),
+        pending: None,
     }
 }
 
@@ -192,6 +193,7 @@ fn scenes() -> Vec<SceneEntry> {
             name: "broken".into(),
             source: "scenes/broken.toml".into(),
             scene: Err("scenes/broken.toml: line 3: unknown key `colour`".into()),
+            pending: None,
         },
     ]
 }
@@ -731,6 +733,10 @@ fn the_scene_list_has_the_builtin_scene_and_shows_load_errors() {
     let list = scene_list(&dir);
     let names: Vec<&str> = list.iter().map(|s| s.name.as_str()).collect();
     assert_eq!(names, ["cornell-box (built-in)", "a-tet", "b-broken"]);
+    // Listed at once, read when chosen.
+    assert!(list[1..].iter().all(|e| e.pending.is_some()), "{list:?}");
+    let mut list = list;
+    list.iter_mut().for_each(|e| e.ensure_loaded());
     assert!(list[1].scene.is_ok());
     let err = list[2].scene.as_ref().unwrap_err();
     assert!(err.contains("b-broken.toml"), "{err}");
