@@ -408,6 +408,23 @@ impl App {
         }
     }
 
+    /// Reads the current scene's file again if it was edited since it was
+    /// read, and renders it anew; whether it did.
+    pub fn reload_if_changed(&mut self) -> bool {
+        let Some(entry) = self.scenes.get_mut(self.scene) else {
+            return false;
+        };
+        if !entry.reload_if_changed() {
+            return false;
+        }
+        self.message = format!(
+            "reloaded {}: the file changed",
+            crate::core::text::escape(&entry.source)
+        );
+        self.restart();
+        true
+    }
+
     pub(super) fn select_scene(&mut self, index: usize) {
         if index < self.scenes.len() && index != self.scene {
             self.scene = index;

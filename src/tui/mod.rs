@@ -204,7 +204,13 @@ fn event_loop(
     // What inspect mode traces in, built once per scene.
     let (mut worlds, mut geometries) = (trace::Cache::default(), story::GeometryCache::default());
     let mut story_key = None;
+    // When the current scene's file was last looked at for edits.
+    let mut checked = Instant::now();
     loop {
+        if checked.elapsed() >= Duration::from_secs(1) {
+            checked = Instant::now();
+            dirty |= app.reload_if_changed();
+        }
         // Effects asked for by `update`: a new render, a save.
         if app.generation != sent {
             sent = app.generation;

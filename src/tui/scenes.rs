@@ -7,6 +7,7 @@
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
+use std::time::SystemTime;
 
 use crate::scene::Scene;
 
@@ -22,6 +23,10 @@ pub struct SceneEntry {
     pub scene: Result<Arc<Scene>, String>,
     /// The file still to read, for an entry not chosen yet.
     pub pending: Option<PathBuf>,
+    /// When the file read was last modified (`None` for the built-in
+    /// scene, or a file whose time cannot be read): a later time means the
+    /// file was edited, and [`SceneEntry::reload_if_changed`] reads it again.
+    pub modified: Option<SystemTime>,
 }
 
 impl SceneEntry {
@@ -33,6 +38,7 @@ impl SceneEntry {
             source: scene.source.clone(),
             scene: Ok(Arc::new(scene)),
             pending: None,
+            modified: None,
         }
     }
 
@@ -54,15 +60,38 @@ impl SceneEntry {
             source: path.display().to_string(),
             scene: Err("not loaded yet: it loads when chosen".into()),
             pending: Some(path.to_path_buf()),
+            modified: None,
         }
     }
 
     /// Reads the scene file if it has not been read yet.
     pub fn ensure_loaded(&mut self) {
         if let Some(path) = self.pending.take() {
+            self.modified = modified(&path);
             self.scene = Scene::load(&path).map(Arc::new).map_err(|e| e.to_string());
         }
     }
+
+    /// Reads the scene file again if it was edited (or deleted, or made)
+    /// since it was read; whether it did. The built-in scene and entries
+    /// not read yet never change here.
+    pub fn reload_if_changed(&mut self) -> bool {
+        if self.pending.is_some() || self.source.starts_with("<built-in>") {
+            return false;
+        }
+        let path = PathBuf::from(&self.source);
+        if modified(&path) == self.modified {
+            return false;
+        }
+        self.pending = Some(path);
+        self.ensure_loaded();
+        true
+    }
+}
+
+/// A file's modification time, if it can be read.
+fn modified(path: &Path) -> Option<SystemTime> {
+    std::fs::metadata(path).and_then(|m| m.modified()).ok()
 }
 
 /// The built-in scene, then every `*.toml` in `dir` (none if `dir` cannot

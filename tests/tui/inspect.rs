@@ -25,6 +25,7 @@ fn rendered() -> App {
         source: "<built-in>".into(),
         scene: Ok(Arc::new(scene)),
         pending: None,
+        modified: None,
     };
     let app = App::new(vec![ch6], vec![entry], false);
     // The render is the same every time (same scene, seed and samples):
@@ -271,6 +272,7 @@ fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
         source: "<built-in>".into(),
         scene: Ok(scene.clone()),
         pending: None,
+        modified: None,
     };
     let app = App::new(vec![ch3_stage], vec![entry], false);
     let job = app.job().unwrap();

@@ -182,6 +182,7 @@ fn renamed(name: &str) -> SceneEntry {
         source: format!("scenes/{name}.toml"),
         scene: Ok(Arc::new(scene)),
         pending: None,
+        modified: None,
     }
 }
 
@@ -194,6 +195,7 @@ fn scenes() -> Vec<SceneEntry> {
             source: "scenes/broken.toml".into(),
             scene: Err("scenes/broken.toml: line 3: unknown key `colour`".into()),
             pending: None,
+            modified: None,
         },
     ]
 }
@@ -1002,4 +1004,50 @@ fn x_shows_the_students_capstone_live_and_follows_the_chapter() {
     assert!(app.student.is_none());
     assert_eq!(app.compare, Compare::Render);
     assert_eq!(app.message, "back to the render");
+}
+
+/// A scene file edited while the UI runs is read again (the UI checks the
+/// current scene's file once a second): the render restarts on the new
+/// scene and the message says so. An unchanged file is left alone.
+#[test]
+fn an_edited_scene_file_is_reloaded() {
+    let dir = common::temp_dir("tui-reload");
+    let text = std::fs::read_to_string(common::root().join("scenes/tetrahedron.toml")).unwrap();
+    common::write_files(&dir, &[("tet.toml", &text)]);
+    let path = dir.join("tet.toml");
+    let mut app = App::new(raystep::chapters::all(), scene_list(&dir), false);
+    app = update(app, Msg::SwitchFocus);
+    app = update(app, Msg::Down);
+    let width = |app: &App| {
+        app.current_scene()
+            .unwrap()
+            .scene
+            .as_ref()
+            .unwrap()
+            .camera
+            .width
+    };
+    let before = width(&app);
+    assert!(!app.reload_if_changed(), "nothing changed yet");
+    // Edit the file (a later modification time, as an editor gives it).
+    let edited = text.replace(&format!("width = {before}"), "width = 77");
+    assert_ne!(edited, text, "the scene sets its width");
+    std::fs::write(&path, &edited).unwrap();
+    let later = std::time::SystemTime::now() + Duration::from_secs(2);
+    std::fs::File::options()
+        .write(true)
+        .open(&path)
+        .unwrap()
+        .set_modified(later)
+        .unwrap();
+    let generation = app.generation;
+    assert!(app.reload_if_changed());
+    assert_eq!(width(&app), 77);
+    assert!(app.generation > generation, "the render restarts");
+    assert!(
+        app.message.contains("reloaded") && app.message.contains("tet.toml"),
+        "{}",
+        app.message
+    );
+    assert!(!app.reload_if_changed());
 }
