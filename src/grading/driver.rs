@@ -314,8 +314,8 @@ pub fn describe(ex: &Exercise, outcome: &Outcome, width: usize, images: &[PathBu
         }
         Outcome::Failed(c) => {
             let mut s = format!(
-                "  {id}  FAIL  error {} exceeds {:.0e}: {}\n",
-                number(c.error),
+                "  {id}  FAIL  error {:.3e} exceeds {:.0e}: {}\n",
+                c.error,
                 c.tolerance,
                 escape_keep_newlines(&c.detail)
             );
@@ -356,15 +356,6 @@ pub fn describe(ex: &Exercise, outcome: &Outcome, width: usize, images: &[PathBu
     s += &format!("{pad}more: cargo grade --hint {}\n", ex.id());
     s
 }
-/// An error as printed: `inf` and `NaN` as such, else 3 digits.
-fn number(x: f64) -> String {
-    if x.is_finite() {
-        format!("{x:.3e}")
-    } else {
-        format!("{x}")
-    }
-}
-
 /// Gradescope's `results.json`: one test per exercise (name, score,
 /// max_score, status, output) and the total score.
 pub fn results_json(results: &[(Exercise, Outcome, String)]) -> String {
