@@ -17,18 +17,24 @@ pub mod ch6;
 pub mod images;
 pub mod paths;
 
-/// The worst error over `(error, which case)` pairs, a NaN counting as
-/// infinite; `(0, "all cases match")` when none is above 0. Shared by the
-/// graders of chapters 4 to 6.
-pub(crate) fn worst_of(cases: impl Iterator<Item = (f64, String)>) -> (f64, String) {
-    let mut worst = (0.0f64, String::from("all cases match"));
+/// The case with the largest error over `(error, what)` pairs, a NaN
+/// counting as infinite; `None` when no error is above 0. What a case
+/// carries is the check's own (its description, its symptom).
+pub(crate) fn worst<T>(cases: impl Iterator<Item = (f64, T)>) -> Option<(f64, T)> {
+    let mut worst: Option<(f64, T)> = None;
     for (err, what) in cases {
         let err = if err.is_nan() { f64::INFINITY } else { err };
-        if err > worst.0 {
-            worst = (err, what);
+        if err > worst.as_ref().map_or(0.0, |w| w.0) {
+            worst = Some((err, what));
         }
     }
     worst
+}
+
+/// [`worst`] over `(error, which case)` pairs, `(0, "all cases match")`
+/// when none is above 0. Shared by the graders of chapters 4 to 6.
+pub(crate) fn worst_of(cases: impl Iterator<Item = (f64, String)>) -> (f64, String) {
+    worst(cases).unwrap_or_else(|| (0.0, "all cases match".into()))
 }
 
 /// Every exercise, in chapter order.

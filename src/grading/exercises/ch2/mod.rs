@@ -158,18 +158,13 @@ pub fn exercises() -> Vec<Exercise> {
     ]
 }
 
+/// The worst case as a check, `ok` its detail when every case matches.
 fn worst_of(cases: impl Iterator<Item = (f64, String)>, tolerance: f64, ok: &str) -> Check {
-    let mut worst = (0.0f64, ok.to_string());
-    for (err, detail) in cases {
-        let err = if err.is_nan() { f64::INFINITY } else { err };
-        if err > worst.0 {
-            worst = (err, detail);
-        }
-    }
+    let (error, detail) = super::worst(cases).unwrap_or_else(|| (0.0, ok.to_string()));
     Check {
-        error: worst.0,
+        error,
         tolerance,
-        detail: worst.1,
+        detail,
         images: None,
         symptom: None,
     }

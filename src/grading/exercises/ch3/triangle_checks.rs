@@ -8,6 +8,7 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
 use crate::core::sampling::random;
 use crate::grading::exercise::{Check, Symptom};
+use crate::grading::exercises::worst;
 
 /// Barycentric (u, v).
 pub type Uv = (f32, f32);
@@ -38,19 +39,14 @@ fn rel(got: Option<f32>, want: Option<f32>) -> f64 {
 /// The worst of `(error, which case, what went wrong)`, a NaN counting as
 /// infinite.
 fn check(cases: impl Iterator<Item = (f64, String, Option<Symptom>)>, tolerance: f64) -> Check {
-    let mut worst = (0.0f64, String::from("all cases match"), None);
-    for (err, what, symptom) in cases {
-        let err = if err.is_nan() { f64::INFINITY } else { err };
-        if err > worst.0 {
-            worst = (err, what, symptom);
-        }
-    }
+    let (error, (detail, symptom)) = worst(cases.map(|(e, what, s)| (e, (what, s))))
+        .unwrap_or_else(|| (0.0, ("all cases match".into(), None)));
     Check {
-        error: worst.0,
+        error,
         tolerance,
-        detail: worst.1,
+        detail,
         images: None,
-        symptom: worst.2,
+        symptom,
     }
 }
 
