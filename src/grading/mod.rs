@@ -167,14 +167,20 @@ pub fn signed_difference(candidate: &Film, reference: &Film) -> Film {
         } else {
             diff.z
         };
-        let s = (most / DIFF_SCALE).clamp(-1.0, 1.0);
-        *o = if s >= 0.0 {
-            Vec3::new(s, 0.0, 0.0)
-        } else {
-            Vec3::new(0.0, 0.0, -s)
-        };
+        *o = signed_colour(most / DIFF_SCALE);
     }
     d
+}
+
+/// The colour of a signed difference `s` in units of [`DIFF_SCALE`]: red
+/// for positive, blue for negative, full at ±1, black at 0.
+fn signed_colour(s: f32) -> Vec3 {
+    let s = s.clamp(-1.0, 1.0);
+    if s >= 0.0 {
+        Vec3::new(s, 0.0, 0.0)
+    } else {
+        Vec3::new(0.0, 0.0, -s)
+    }
 }
 
 /// `diff` above a colour bar from -[`DIFF_SCALE`] (blue) through 0
@@ -191,12 +197,7 @@ fn with_legend(diff: &Film) -> Film {
         }
     }
     for x in 0..width {
-        let s = 2.0 * (x as f32 + 0.5) / width as f32 - 1.0;
-        let c = if s >= 0.0 {
-            Vec3::new(s, 0.0, 0.0)
-        } else {
-            Vec3::new(0.0, 0.0, -s)
-        };
+        let c = signed_colour(2.0 * (x as f32 + 0.5) / width as f32 - 1.0);
         for y in diff.height + 2..out.height {
             *out.get_mut(x, y) = c;
         }

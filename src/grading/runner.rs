@@ -118,6 +118,19 @@ pub struct Verdict {
 }
 
 impl Verdict {
+    /// The verdict `outcome` (`passed` or `failed`) for a check's result,
+    /// with the images it wrote.
+    fn of_check(outcome: &str, c: Check, images: Vec<PathBuf>) -> Verdict {
+        Verdict {
+            outcome: outcome.into(),
+            error: c.error,
+            tolerance: c.tolerance,
+            symptom: c.symptom.map(|s| s.name.to_string()).unwrap_or_default(),
+            detail: c.detail,
+            images,
+        }
+    }
+
     /// The outcome this verdict stands for, with its images' paths (the
     /// images themselves stay on disk).
     pub fn outcome(&self, ex: &Exercise) -> Outcome {
@@ -151,26 +164,15 @@ pub fn verdict(registry: &Registry, ex: &Exercise, out: &Path) -> Verdict {
         };
     };
     match run_check(*check) {
-        Outcome::Passed(c) => Verdict {
-            outcome: "passed".into(),
-            error: c.error,
-            tolerance: c.tolerance,
-            detail: c.detail,
-            ..Verdict::default()
-        },
+        Outcome::Passed(c) => Verdict::of_check("passed", c, Vec::new()),
         Outcome::Failed(c) => {
             let (images, note) = match write_failure_images(ex, &c, out) {
                 Ok(files) => (files, String::new()),
                 Err(e) => (Vec::new(), format!(" (could not write images: {e})")),
             };
-            Verdict {
-                outcome: "failed".into(),
-                error: c.error,
-                tolerance: c.tolerance,
-                symptom: c.symptom.map(|s| s.name.to_string()).unwrap_or_default(),
-                detail: c.detail + &note,
-                images,
-            }
+            let mut v = Verdict::of_check("failed", c, images);
+            v.detail += &note;
+            v
         }
         Outcome::NotImplemented => Verdict {
             outcome: "not_implemented".into(),
@@ -278,15 +280,8 @@ fn render_check(ex: &Exercise, check: fn() -> Check, out: &Path) -> (ExitCode, V
             for f in &files {
                 println!("wrote {}", f.display());
             }
-            let v = Verdict {
-                outcome: if passed { "passed" } else { "failed" }.into(),
-                error: c.error,
-                tolerance: c.tolerance,
-                symptom: c.symptom.map(|s| s.name.to_string()).unwrap_or_default(),
-                detail: c.detail,
-                images: files,
-            };
-            (ExitCode::SUCCESS, v)
+            let outcome = if passed { "passed" } else { "failed" };
+            (ExitCode::SUCCESS, Verdict::of_check(outcome, c, files))
         }
         Err(e) => {
             eprintln!("error: {e}");
