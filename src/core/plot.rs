@@ -15,9 +15,10 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use crate::core::error::{Error, Result};
+use crate::core::film::write_rgb8_png;
 use crate::core::report::ErrorTime;
 pub use crate::core::strip::{captioned_strip, write_captioned_strip};
-use crate::core::style::{font, write_rgb_png, Mark, FAMILY};
+use crate::core::style::{font, Mark, FAMILY};
 pub use crate::core::style::{Look, Marker, PALETTE};
 
 /// Pixels right of the axes kept for the legend.
@@ -78,7 +79,7 @@ impl LogLogPlot {
     /// Writes the plot as a PNG, atomically.
     pub fn write_png(&self, path: &Path, width: u32, height: u32) -> Result<()> {
         let pixels = self.draw(width, height)?;
-        write_rgb_png(&pixels, width, height, path)
+        write_rgb8_png(&pixels, width, height, path)
     }
 
     fn draw_on<DB: DrawingBackend>(

@@ -7,8 +7,9 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use crate::core::error::{Error, Result};
+use crate::core::film::write_rgb8_png;
 use crate::core::film::Film;
-use crate::core::style::{font, write_rgb_png, FAMILY};
+use crate::core::style::{font, FAMILY};
 
 /// Images side by side on white, 2 pixels apart, each with its caption
 /// centred under it: the book's strips (bounces, samples per pixel).
@@ -54,5 +55,5 @@ pub fn captioned_strip(images: &[(&Film, &str)]) -> Result<(Vec<u8>, u32, u32)> 
 /// [`captioned_strip`] written as a PNG, atomically.
 pub fn write_captioned_strip(images: &[(&Film, &str)], path: &Path) -> Result<()> {
     let (pixels, width, height) = captioned_strip(images)?;
-    write_rgb_png(&pixels, width, height, path)
+    write_rgb8_png(&pixels, width, height, path)
 }

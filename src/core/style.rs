@@ -2,7 +2,6 @@
 //! machine needs no system fonts), the colour-blind-safe palette, and the
 //! markers and line styles that tell a plot's series apart.
 
-use std::path::Path;
 use std::sync::OnceLock;
 
 use plotters::element::{Drawable, PointCollection};
@@ -151,9 +150,4 @@ impl<C, DB: DrawingBackend> Drawable<DB> for Mark<C> {
             }
         }
     }
-}
-
-/// 8-bit RGB pixels written as a PNG, atomically.
-pub(crate) fn write_rgb_png(pixels: &[u8], width: u32, height: u32, path: &Path) -> Result<()> {
-    crate::core::film::write_rgb8_png(pixels, width, height, path)
 }
