@@ -17,7 +17,7 @@ use raystep::ch6_global_illumination::integrator::{
 use raystep::ch6_global_illumination::reference::make_reference;
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::stage::{GlobalIllumination, DEFAULT};
-use raystep::core::run::{exit_code, init_threads, run_with, CommonArgs};
+use raystep::core::run::{exit_code, init_threads, run_on, CommonArgs};
 use raystep::{Error, Result};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -132,20 +132,19 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
             .collect();
         return print(&format!("{meta}wrote:\n{list}"));
     }
-    if stage.path.max_bounces.is_none() {
-        // Said before the render, which may take hours.
-        let scene = common.load_sized_scene()?;
-        if roulette_cannot_end(&scene) {
-            eprintln!(
-                "warning: every surface of {} reflects all the light it receives \
-                 (reflectance 1 or glass): Russian roulette cannot end these paths, only \
-                 leaving the scene can; in a closed scene each runs to the safety limit \
-                 of {SAFETY_SCATTERINGS} bounces. Lower a reflectance or drop --unlimited.",
-                scene.name
-            );
-        }
+    init_threads(common.threads)?;
+    let scene = common.load_scene()?;
+    // Said before the render, which may take hours.
+    if stage.path.max_bounces.is_none() && roulette_cannot_end(&scene) {
+        eprintln!(
+            "warning: every surface of {} reflects all the light it receives \
+             (reflectance 1 or glass): Russian roulette cannot end these paths, only \
+             leaving the scene can; in a closed scene each runs to the safety limit \
+             of {SAFETY_SCATTERINGS} bounces. Lower a reflectance or drop --unlimited.",
+            scene.name
+        );
     }
-    let summary = run_with(stage, common)?;
+    let summary = run_on(stage, scene, common)?;
     if !summary.stable {
         return Err(Error::Usage(
             "a stiff case did not come out as expected".into(),

@@ -306,7 +306,12 @@ pub fn chapter_main(chapter: &dyn Chapter) -> ExitCode {
 /// `main`, including those with flags of their own.
 pub fn run_with(chapter: &dyn Chapter, common: &CommonArgs) -> Result<RunSummary> {
     init_threads(common.threads)?;
-    let scene = common.load_scene()?;
+    run_on(chapter, common.load_scene()?, common)
+}
+
+/// [`run_with`] on a scene the chapter's `main` has loaded already (to look
+/// at it first); the threads are set up by then.
+pub fn run_on(chapter: &dyn Chapter, scene: Scene, common: &CommonArgs) -> Result<RunSummary> {
     let mut stdout = std::io::stdout().lock();
     run_headless(
         chapter,
