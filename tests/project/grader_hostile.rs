@@ -6,7 +6,7 @@
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-use super::grading::{copy_exercises, BUILD};
+use super::grading::{copy_exercises, grade, line};
 use crate::common;
 
 /// A marker in the command lines of the processes the hostile files start,
@@ -118,18 +118,11 @@ fn processes_with_marker() -> Vec<String> {
         .collect()
 }
 
-fn line<'a>(text: &'a str, id: &str) -> &'a str {
-    text.lines()
-        .find(|l| l.trim_start().starts_with(&format!("{id} ")))
-        .unwrap_or_else(|| panic!("{id} not graded:\n{text}"))
-}
-
 // Linux only: elsewhere the address-space limit may not hold, and the
 // 16 GiB file would really ask the system for 16 GiB.
 #[cfg(target_os = "linux")]
 #[test]
 fn hostile_exercises_fail_and_leave_nothing_behind() {
-    let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
     let exercises = copy_exercises(&common::temp_dir("hostile-src"));
     for (folder, name, text) in hostile_files() {
         std::fs::write(
@@ -144,23 +137,22 @@ fn hostile_exercises_fail_and_leave_nothing_behind() {
     let out = common::temp_dir("hostile-out");
     let outside = common::root().join("target/hostile-wrote-here");
     let _ = std::fs::remove_file(&outside);
-    let start = Instant::now();
-    let run = Command::new(env!("CARGO_BIN_EXE_grade"))
-        .args([
+    let (run, text, took) = grade(
+        &[
             "ch1",
             "ch2/edge_function",
             "ch2/barycentric",
             "ch2/depth_test",
-        ])
-        .args(["ch3/ray_plane", "ch3/barycentric_inside"])
-        .args(["--timeout", "3", "--json", "--exercises"])
-        .arg(&exercises)
-        .arg("--out")
-        .arg(&out)
-        .output()
-        .unwrap();
-    let took = start.elapsed();
-    let text = String::from_utf8_lossy(&run.stdout).into_owned();
+            "ch3/ray_plane",
+            "ch3/barycentric_inside",
+            "--timeout",
+            "3",
+            "--json",
+            "--exercises",
+            exercises.to_str().expect("a UTF-8 temp path"),
+        ],
+        &out,
+    );
     assert_eq!(run.status.code(), Some(1), "{text}");
     // Eight exercises of three seconds at most, one small build: nowhere
     // near the hour the grandchild would hold its pipe.

@@ -7,11 +7,10 @@
 //! also runs the whole `cargo test` with `chapters/` solved and broken.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use raystep::grading::{self, shipped};
 
-use super::grading::{copy_exercises, BUILD};
+use super::grading::{copy_exercises, line};
 use crate::common;
 
 /// The correct solutions, one per exercise, as a student would write them.
@@ -30,25 +29,14 @@ fn solved(name: &str) -> PathBuf {
     dir
 }
 
+/// Grades the exercises under `exercises`, 3 s each, into a fresh `out`.
 fn grade(exercises: &Path, out: &str) -> (Option<i32>, String) {
-    let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
-    let run = Command::new(env!("CARGO_BIN_EXE_grade"))
-        .args(["--timeout", "3", "--exercises"])
-        .arg(exercises)
-        .arg("--out")
-        .arg(common::temp_dir(out))
-        .output()
-        .unwrap();
-    (
-        run.status.code(),
-        String::from_utf8_lossy(&run.stdout).into_owned(),
-    )
-}
-
-fn line<'a>(text: &'a str, id: &str) -> &'a str {
-    text.lines()
-        .find(|l| l.trim_start().starts_with(&format!("{id} ")))
-        .unwrap_or_else(|| panic!("{id} not graded:\n{text}"))
+    let dir = exercises.to_str().expect("a UTF-8 temp path");
+    let (run, text, _) = super::grading::grade(
+        &["--timeout", "3", "--exercises", dir],
+        &common::temp_dir(out),
+    );
+    (run.status.code(), text)
 }
 
 #[test]

@@ -21,7 +21,7 @@ use raystep::grading::{self, write_failure_images, Outcome};
 pub(crate) static BUILD: Mutex<()> = Mutex::new(());
 
 /// Runs the `grade` command with `args`; images and hints go to `out`.
-fn grade(args: &[&str], out: &Path) -> (Output, String, Duration) {
+pub(crate) fn grade(args: &[&str], out: &Path) -> (Output, String, Duration) {
     let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
     let start = Instant::now();
     let output = std::process::Command::new(env!("CARGO_BIN_EXE_grade"))
@@ -40,6 +40,13 @@ fn grade(args: &[&str], out: &Path) -> (Output, String, Duration) {
 /// student edits under `chapters/`).
 pub(crate) fn copy_exercises(dir: &Path) -> PathBuf {
     raystep::grading::shipped::write_all(dir).unwrap()
+}
+
+/// The line `grade` printed for exercise `id` (`ch3/ray_plane`).
+pub(crate) fn line<'a>(text: &'a str, id: &str) -> &'a str {
+    text.lines()
+        .find(|l| l.trim_start().starts_with(&format!("{id} ")))
+        .unwrap_or_else(|| panic!("{id} not graded:\n{text}"))
 }
 
 #[test]
@@ -166,10 +173,7 @@ fn every_shipped_stub_is_not_started_and_gives_no_hint() {
     let (out, text, _) = grade(&["--exercises", exercises.to_str().unwrap()], &dir);
     assert_eq!(out.status.code(), Some(1), "{text}");
     for ex in grading::all() {
-        let line = text
-            .lines()
-            .find(|l| l.trim_start().starts_with(&format!("{} ", ex.id())))
-            .unwrap_or_else(|| panic!("{} not graded:\n{text}", ex.id()));
+        let line = line(&text, &ex.id());
         assert!(line.contains("not started"), "{line}");
     }
     assert!(!text.contains("hint:"), "{text}");
@@ -248,12 +252,7 @@ fn a_broken_exercise_is_isolated_and_a_loop_that_never_ends_is_stopped() {
         &dir,
     );
     assert_eq!(out.status.code(), Some(1), "{text}");
-    let line = |id: &str| {
-        text.lines()
-            .find(|l| l.trim_start().starts_with(&format!("{id} ")))
-            .unwrap_or_else(|| panic!("{id} not graded:\n{text}"))
-            .to_string()
-    };
+    let line = |id: &str| line(&text, id);
     assert!(line("ch1/project_point").contains("PASS"), "{text}");
     assert!(line("ch1/look_at").contains("does not compile"), "{text}");
     assert!(
