@@ -255,13 +255,7 @@ pub fn write_atomically(
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         create_folder(dir)?;
     }
-    let file_name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    // Keep the extension last so encoders that look at it still work.
-    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    let tmp = path.with_file_name(format!(".{}.tmp{n}-{file_name}", std::process::id()));
+    let tmp = sibling(path, "tmp");
     let mut temps = temporaries();
     if STOPPING.load(Ordering::SeqCst) {
         return Err(Error::Usage(
@@ -324,24 +318,19 @@ impl OutputSet {
         let mut result = Ok(());
         for (tmp, path) in &staged {
             if result.is_ok() {
-                let backup = path.with_file_name(format!(
-                    ".{}.old{}-{}",
-                    std::process::id(),
-                    COUNTER.fetch_add(1, Ordering::Relaxed),
-                    path.file_name()
-                        .map(|n| n.to_string_lossy())
-                        .unwrap_or_default()
-                ));
-                let kept = std::fs::hard_link(path, &backup).is_ok().then_some(backup);
-                if let Some(b) = &kept {
-                    temps.push(b.clone());
-                }
-                result = std::fs::rename(tmp, path).map_err(|e| Error::io(path, e));
-                done.push((path, kept));
-                if result.is_err() {
-                    // This one was not replaced: drop its backup only.
-                    if let Some((_, Some(b))) = done.pop() {
-                        let _ = std::fs::remove_file(&b);
+                let old = sibling(path, "old");
+                let kept = std::fs::hard_link(path, &old).is_ok().then_some(old);
+                match std::fs::rename(tmp, path) {
+                    Ok(()) => {
+                        temps.extend(kept.clone());
+                        done.push((path, kept));
+                    }
+                    Err(e) => {
+                        // This one was not replaced: its copy goes.
+                        if let Some(old) = kept {
+                            let _ = std::fs::remove_file(old);
+                        }
+                        result = Err(Error::io(path, e));
                     }
                 }
             }
@@ -368,6 +357,18 @@ impl OutputSet {
         }
         result
     }
+}
+
+/// A hidden name beside `path` for this process's `kind` of file
+/// (`.1234.tmp7-image.png`): a temporary, or the copy of a file a set is
+/// replacing. The extension stays last, for encoders that look at it.
+fn sibling(path: &Path, kind: &str) -> PathBuf {
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+    path.with_file_name(format!(".{}.{kind}{n}-{name}", std::process::id()))
 }
 
 /// Exclusive locks on each folder of `paths` (the folder itself, opened
