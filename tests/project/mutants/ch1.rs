@@ -8,8 +8,7 @@ use raystep::grading::exercise::{Check, Symptom};
 use raystep::grading::exercises::ch1;
 
 fn expect(check: Check, symptom: Symptom, what: &str) {
-    assert!(!check.passed(), "{what} passed: {}", check.detail);
-    assert_eq!(check.symptom, Some(symptom), "{what}: {}", check.detail);
+    super::fails_naming(check, symptom, &ch1::exercises(), what);
 }
 
 fn raster(camera: &Camera, p: Vec3) -> Vec2 {

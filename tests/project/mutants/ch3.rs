@@ -260,11 +260,8 @@ fn work(f: TraversalFn) -> Work {
 
 /// Fails with `symptom`, and says so in a way a student can read.
 fn fails_with(f: TraversalFn, symptom: Symptom) -> String {
-    let check = check_bvh_traversal(f);
-    assert!(!check.passed(), "passed: {}", check.detail);
-    assert_eq!(check.symptom, Some(symptom), "{}", check.detail);
     assert!(ch3::SYMPTOMS.contains(&symptom));
-    check.detail
+    super::fails_naming(check_bvh_traversal(f), symptom, &ch3::exercises(), "")
 }
 
 #[test]

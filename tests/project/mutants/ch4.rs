@@ -187,10 +187,7 @@ fn recursive(sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(
 }
 
 fn fails_with(f: ch4::TraceRayFn, symptom: raystep::grading::Symptom) -> String {
-    let check = ch4::check_trace_scene(f);
-    assert!(!check.passed(), "passed: {}", check.detail);
-    assert_eq!(check.symptom, Some(symptom), "{}", check.detail);
-    check.detail
+    super::fails_naming(ch4::check_trace_scene(f), symptom, &ch4::exercises(), "")
 }
 
 #[test]

@@ -2,6 +2,8 @@
 //! other exercises) that the grader must fail, naming the symptom, and
 //! correct alternatives it must pass.
 
+use raystep::grading::{Check, Exercise, Symptom};
+
 pub mod ch1;
 pub mod ch2;
 pub mod ch3;
@@ -57,4 +59,17 @@ pub fn refused_in_a_child(test: &str, calls: &[(&str, &dyn Fn())]) {
             assert_eq!(message, guard::message(id), "{id}");
         }
     });
+}
+
+/// `check` failed, naming `symptom`, which its chapter's `exercises` list;
+/// returns the check's detail. `what` names the mistake in a failure.
+pub fn fails_naming(check: Check, symptom: Symptom, exercises: &[Exercise], what: &str) -> String {
+    assert!(!check.passed(), "{what} passed: {}", check.detail);
+    assert_eq!(check.symptom, Some(symptom), "{what}: {}", check.detail);
+    assert!(
+        exercises.iter().any(|e| e.symptoms.contains(&symptom)),
+        "{what}: {} is not listed",
+        symptom.name
+    );
+    check.detail
 }
