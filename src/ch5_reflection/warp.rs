@@ -56,13 +56,6 @@ pub fn concentric_disk(u: Vec2) -> Vec2 {
 // ANCHOR: cosine_hemisphere
 pub fn cosine_hemisphere(u: Vec2) -> Vec3 {
     crate::core::guard::reference("ch5/cosine_hemisphere"); // ANCHOR: guard (off the listing)
-    malley(u)
-}
-
-/// [`cosine_hemisphere`] for the building blocks a graded exercise may
-/// call (chapter 6's `PathScene::sample_cosine`), which must not trip the
-/// guard on the reference of exercise 5.2.
-pub(crate) fn malley(u: Vec2) -> Vec3 {
     let d = concentric_disk(u);
     let z = (1.0 - d.length_squared()).max(0.0).sqrt();
     Vec3::new(d.x, d.y, z)

@@ -25,14 +25,28 @@ thread_local! {
 /// Calls a student's function `f`, marking this thread as running student
 /// code until it returns (or unwinds).
 pub fn student<R>(f: impl FnOnce() -> R) -> R {
+    ARMED.store(true, Ordering::Relaxed);
+    inside(true, f)
+}
+
+/// Calls the grader's own code `f` from inside a student's function: the
+/// building blocks a student's code is handed (chapter 6's scene, a check's
+/// distance function) may use raystep's solutions, which are not the
+/// student's calls.
+pub fn grader<R>(f: impl FnOnce() -> R) -> R {
+    inside(false, f)
+}
+
+/// Runs `f` with this thread marked as inside a student's function or
+/// not, restoring the mark when `f` returns (or unwinds).
+fn inside<R>(student: bool, f: impl FnOnce() -> R) -> R {
     struct Restore(bool);
     impl Drop for Restore {
         fn drop(&mut self) {
             INSIDE.with(|i| i.set(self.0));
         }
     }
-    ARMED.store(true, Ordering::Relaxed);
-    let _restore = Restore(INSIDE.with(|i| i.replace(true)));
+    let _restore = Restore(INSIDE.with(|i| i.replace(student)));
     f()
 }
 

@@ -40,13 +40,6 @@ pub struct AreaLight {
 // ANCHOR: solid_angle_pdf
 pub fn solid_angle_pdf(pdf_area: f32, dist: f32, cos_light: f32) -> f32 {
     crate::core::guard::reference("ch5/area_pdf"); // ANCHOR: guard (off the listing)
-    per_steradian(pdf_area, dist, cos_light)
-}
-
-/// [`solid_angle_pdf`] for the lights' own sampling, which a graded
-/// exercise may call (chapter 6's `PathScene::sample_light`) without
-/// tripping the guard on the reference of exercise 5.4.
-pub(crate) fn per_steradian(pdf_area: f32, dist: f32, cos_light: f32) -> f32 {
     let c = cos_light.abs();
     if c <= 0.0 {
         return 0.0;
@@ -134,7 +127,7 @@ impl AreaLight {
         }
         let wi = to / dist;
         let li = self.emitted(n_light, -wi);
-        let pdf = per_steradian(self.inv_area, dist, n_light.dot(wi));
+        let pdf = solid_angle_pdf(self.inv_area, dist, n_light.dot(wi));
         (pdf > 0.0 && li != Vec3::ZERO).then_some(LightSample {
             wi,
             li,
@@ -151,7 +144,7 @@ impl AreaLight {
         let to = y - p;
         let dist = to.length();
         match to.try_normalize() {
-            Some(wi) => per_steradian(self.inv_area, dist, n_light.dot(wi)),
+            Some(wi) => solid_angle_pdf(self.inv_area, dist, n_light.dot(wi)),
             None => 0.0,
         }
     }

@@ -17,7 +17,7 @@ pub mod spot;
 
 use glam::{Vec2, Vec3};
 
-use crate::ch5_reflection::warp::{cosine_hemisphere_pdf, malley};
+use crate::ch5_reflection::warp::{cosine_hemisphere, cosine_hemisphere_pdf};
 use crate::scene::file::LightSection;
 use crate::scene::mesh::Mesh;
 use crate::scene::Scene;
@@ -109,7 +109,7 @@ impl Light {
                 // Cosine-weighted about the normal: the density that
                 // matches the cos θ in the reflection equation.
                 let frame = Frame::from_normal(n);
-                let wi = frame.to_world(malley(u));
+                let wi = frame.to_world(cosine_hemisphere(u));
                 let pdf = cosine_hemisphere_pdf(wi.dot(n));
                 (pdf > 0.0).then_some(LightSample {
                     wi,

@@ -18,7 +18,8 @@ use glam::{Vec2, Vec3};
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch5_reflection::material::Frame;
-use crate::ch5_reflection::warp::malley;
+use crate::ch5_reflection::warp::cosine_hemisphere;
+use crate::core::guard;
 use crate::ch5_reflection::world::World;
 
 mod check;
@@ -117,6 +118,10 @@ pub struct PathScene {
     ran_away: AtomicBool,
 }
 
+/// The scene's building blocks run raystep's own code (lights, sampling,
+/// tracing) inside the student's `path_radiance`: each runs as the
+/// grader's ([`guard::grader`]), so only the student's own calls of a
+/// reference trip the guard.
 impl PathScene {
     /// The scene of `scene` (its first light is the one sampled).
     pub fn new(scene: &crate::scene::Scene) -> PathScene {
@@ -181,10 +186,10 @@ impl PathScene {
         if self.ran_away() {
             return None;
         }
-        Self::found(match &self.inner {
+        Self::found(guard::grader(|| match &self.inner {
             Inner::World(w) => Self::world_hit(w, &Ray::new(origin, dir).ok()?),
             Inner::Furnace(f) => f.hit(origin, dir.try_normalize()?),
-        })
+        }))
     }
 
     /// The next surface when the path leaves `at` along the unit `wi`.
@@ -201,10 +206,10 @@ impl PathScene {
             self.ran_away.fetch_or(over, Ordering::Relaxed);
             return None;
         }
-        Self::found(match &self.inner {
+        Self::found(guard::grader(|| match &self.inner {
             Inner::World(w) => Self::world_hit(w, &w.spawn(at.p, at.n, wi)?),
             Inner::Furnace(f) => f.next(at, wi),
-        })
+        }))
     }
 
     /// A point on the light drawn from the two numbers `u` (in [0, 1)),
@@ -212,7 +217,7 @@ impl PathScene {
     /// the light cannot be seen from that side.
     pub fn sample_light(&self, at: &Hit, u: Vec2) -> Option<LightSample> {
         count(|t| t.light_samples += 1);
-        let s = match &self.inner {
+        let s = guard::grader(|| match &self.inner {
             Inner::World(w) => {
                 let s = w.lights.lights.first()?.sample_li(at.p, at.n, u)?;
                 Some(LightSample {
@@ -223,7 +228,7 @@ impl PathScene {
                 })
             }
             Inner::Furnace(f) => f.sample_light(at, u),
-        };
+        });
         if s.is_some() {
             count(|t| t.lights_found += 1);
         }
@@ -233,17 +238,17 @@ impl PathScene {
     /// Whether a shadow ray from `at` along `wi` reaches `dist` unblocked.
     pub fn unoccluded(&self, at: &Hit, wi: Vec3, dist: f32) -> bool {
         count(|t| t.shadow_rays += 1);
-        match &self.inner {
+        guard::grader(|| match &self.inner {
             Inner::World(w) => w.unoccluded(at.p, at.n, wi, dist),
             // Nothing inside the sphere: every point of it sees every other.
             Inner::Furnace(_) => true,
-        }
+        })
     }
 
     /// A direction about `at.n` with density cos θ / π, from `u`: the
     /// direction and its density.
     pub fn sample_cosine(&self, at: &Hit, u: Vec2) -> (Vec3, f32) {
-        let local = malley(u);
+        let local = guard::grader(|| cosine_hemisphere(u));
         (
             Frame::from_normal(at.n).to_world(local),
             local.z * FRAC_1_PI,
