@@ -260,7 +260,7 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
             Vec3::new(r(12), r(13), -2.0),
         );
         let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
-        let n = (t[1] - t[0]).cross(t[2] - t[0]).normalize_or_zero();
+        let n = triangle::unit_normal(t).unwrap_or(Vec3::ZERO);
         let clear = match want {
             Some((_, u, v)) => u.min(v).min(1.0 - u - v) > 1e-3,
             None => true,
