@@ -43,7 +43,7 @@ struct GradeCli {
     #[arg(long, value_name = "EXERCISE")]
     restore: Option<String>,
     /// The time limit of one exercise, in seconds.
-    #[arg(long, value_name = "SECONDS", default_value_t = 5.0)]
+    #[arg(long, value_name = "SECONDS", default_value_t = 5.0, value_parser = parse_timeout)]
     timeout: f64,
     /// Where images of failed image checks (and the hints seen) go.
     #[arg(long, value_name = "DIR", default_value = "out/grade")]
@@ -53,6 +53,15 @@ struct GradeCli {
     /// omitted.
     #[arg(long, value_name = "DIR", hide = true)]
     exercises: Option<PathBuf>,
+}
+
+/// `--timeout`: seconds from 0.1 to 3600 (an hour), a clear error
+/// otherwise (a NaN used to panic).
+fn parse_timeout(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(s) if (0.1..=3600.0).contains(&s) => Ok(s),
+        _ => Err(format!("expected seconds from 0.1 to 3600, got `{text}`")),
+    }
 }
 
 /// The whole `main` of the `grade` binary.
@@ -139,7 +148,7 @@ pub fn grade_main() -> ExitCode {
                 ),
             );
         }
-        let timeout = Duration::from_secs_f64(cli.timeout.clamp(0.1, 3600.0));
+        let timeout = Duration::from_secs_f64(cli.timeout);
         // What a student's code starts and detaches comes back to us when
         // its parent dies, and is stopped after each exercise.
         become_subreaper();

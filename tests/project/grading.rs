@@ -164,6 +164,12 @@ fn the_grade_command_grades_references_and_rejects_bad_arguments() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("is not a chapter"));
     let (out, _, _) = grade(&["--hint", "ch9/nothing"], &dir);
     assert_eq!(out.status.code(), Some(2));
+    // A time limit that is not a number of seconds in range (a NaN panicked).
+    for t in ["nan", "-5", "1e9"] {
+        let (out, _, _) = grade(&["--reference", &format!("--timeout={t}")], &dir);
+        assert_eq!(out.status.code(), Some(2), "--timeout {t}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains("expected seconds"));
+    }
 }
 
 #[test]

@@ -19,8 +19,8 @@ use glam::{Vec2, Vec3};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch5_reflection::material::Frame;
 use crate::ch5_reflection::warp::cosine_hemisphere;
-use crate::core::guard;
 use crate::ch5_reflection::world::World;
+use crate::core::guard;
 
 mod check;
 mod furnace;
