@@ -85,9 +85,6 @@ pub fn summarise(
     for chapter in crate::chapters::all() {
         writeln!(w, "{}", chapter_line(chapter, scene, out)?).map_err(io)?;
     }
-    if CH6.unsupported(scene).is_some() {
-        return Ok(None);
-    }
     let clean = clean_render(scene, out, clean_spp, progress)?;
     let rmse = clean
         .rmse
@@ -127,10 +124,8 @@ pub fn summarise(
 /// "ch3 ray-triangle  depth + 3 views  34.1 ms  -  out/…png": name, views,
 /// time, RMSE against the stored reference (or "-" without one), image.
 fn chapter_line(chapter: &dyn Chapter, scene: &Scene, out: &Path) -> Result<String> {
-    let name = format!("ch{} {}", chapter.number(), chapter.slug());
-    if let Some(why) = chapter.unsupported(scene) {
-        return Ok(format!("{name}: skipped: {why}"));
-    }
+    let info = chapter.info();
+    let name = format!("ch{} {}", info.number, info.slug);
     let settings = Settings::default();
     let summary = run_headless(
         chapter,
@@ -140,7 +135,7 @@ fn chapter_line(chapter: &dyn Chapter, scene: &Scene, out: &Path) -> Result<Stri
         16,
         &mut std::io::sink(),
     )?;
-    let views = chapter.views();
+    let views = info.views;
     let what = match views.len() {
         0 | 1 => views.first().map_or("image", |v| v.name).to_string(),
         2 => format!("{} + 1 view", views[0].name),
@@ -150,7 +145,7 @@ fn chapter_line(chapter: &dyn Chapter, scene: &Scene, out: &Path) -> Result<Stri
         Some(e) => format!("RMSE {}", format_number(e)),
         None => "-".into(),
     };
-    let sampled = if chapter.progressive() {
+    let sampled = if info.progressive {
         format!(", {} spp", settings.spp)
     } else {
         String::new()
@@ -184,12 +179,17 @@ pub fn clean_render(
     let t = Instant::now();
     let mut render = stage.start(Arc::new(scene.clone()), &settings)?;
     progress.begin("ch6 clean render (spp)", settings.spp as u64);
-    while !render.pass() {
-        progress.advance(render.samples() as u64);
+    loop {
+        let pass = render.pass();
+        progress.advance(pass.samples as u64);
+        if pass.complete {
+            break;
+        }
     }
     progress.end();
     let seconds = t.elapsed().as_secs_f64();
-    let image = render.view(0);
+    let snapshot = render.snapshot();
+    let image = snapshot.views[0].clone();
     let stem = format!("ch6-{}-clean", scene.name);
     let files = vec![
         out.join(format!("{stem}.png")),
@@ -198,10 +198,10 @@ pub fn clean_render(
     image.write_png(&files[0])?;
     image.write_exr(&files[1])?;
     Ok(Clean {
-        spp: render.samples(),
+        spp: snapshot.pass.samples,
         seconds,
-        rmse: render.error_series().last().map(|p| p.1),
-        noise: render.noise(),
+        rmse: snapshot.error_series.last().map(|p| p.1),
+        noise: snapshot.pass.noise.map(|(n, _)| n),
         files,
         image,
     })

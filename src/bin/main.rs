@@ -135,11 +135,11 @@ fn headless(cli: &Cli) -> Result<()> {
             ..Settings::default()
         };
         for chapter in raystep::chapters::all() {
-            if cli.chapter.is_some_and(|n| n != chapter.number()) {
+            if cli.chapter.is_some_and(|n| n != chapter.info().number) {
                 continue;
             }
             run_headless(chapter, scene.clone(), &settings, &cli.out, 64, &mut stdout)
-                .map_err(|e| Error::Usage(format!("ch{}: {e}", chapter.number())))?;
+                .map_err(|e| Error::Usage(format!("ch{}: {e}", chapter.info().number)))?;
         }
         return Ok(());
     }

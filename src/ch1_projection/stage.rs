@@ -12,7 +12,9 @@ use super::wireframe::{draw_scene, DrawStats};
 use crate::core::error::Result;
 use crate::core::film::Film;
 use crate::core::report::Report;
-use crate::core::stage::{Chapter, Render, Settings, View};
+use crate::core::stage::{
+    fixed_pass, views_of, Chapter, ChapterInfo, Pass, Render, Settings, Snapshot, View,
+};
 use crate::scene::Scene;
 
 /// The three views of chapter 1.
@@ -35,17 +37,8 @@ pub const VIEWS: &[View] = &[
 pub struct Projection;
 
 impl Chapter for Projection {
-    fn number(&self) -> u32 {
-        1
-    }
-    fn slug(&self) -> &'static str {
-        "projection"
-    }
-    fn title(&self) -> &'static str {
-        "Projection: the pinhole camera"
-    }
-    fn views(&self) -> &'static [View] {
-        VIEWS
+    fn info(&self) -> ChapterInfo {
+        ChapterInfo::new(1, "projection", "Projection: the pinhole camera", VIEWS)
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         Ok(Box::new(ProjectionRender {
@@ -69,21 +62,21 @@ struct ProjectionRender {
 }
 
 impl Render for ProjectionRender {
-    fn pass(&mut self) -> bool {
+    fn pass(&mut self) -> Pass {
         let start = Instant::now();
         let (films, stats) = draw_scene(&self.camera, &self.scene.meshes, &self.scene.materials);
         self.seconds = start.elapsed().as_secs_f64();
         self.films = films;
         self.stats = stats;
-        true
+        fixed_pass(1, 1, 0)
     }
 
-    fn progress(&self) -> (u32, u32) {
-        (u32::from(!self.films.is_empty()), 1)
-    }
-
-    fn view(&self, index: usize) -> Film {
-        crate::core::stage::view_of(&self.films, index, &self.scene.camera)
+    fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            views: views_of(&self.films, VIEWS.len(), &self.scene.camera),
+            pass: fixed_pass(u32::from(!self.films.is_empty()), 1, 0),
+            ..Snapshot::default()
+        }
     }
 
     fn report(&self) -> Report {

@@ -1,7 +1,6 @@
 //! Chapter 2 as a stage: one deterministic pass rasterizes the scene at
 //! `--spp` samples per pixel and resolves the views.
 
-use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::checker::{checker_figures, CHECKER_SIZE, CHECKER_SPP};
@@ -10,9 +9,11 @@ use super::report::chapter_report;
 use super::views::VIEWS;
 use crate::ch1_projection::camera::Camera;
 use crate::core::error::{Error, Result};
-use crate::core::film::Film;
+use crate::core::figure::{Figure, FigureContent};
 use crate::core::report::Report;
-use crate::core::stage::{Chapter, Render, Settings, View};
+use crate::core::stage::{
+    fixed_pass, views_of, Chapter, ChapterInfo, Pass, Render, Settings, Snapshot,
+};
 use crate::scene::Scene;
 
 /// Chapter 2: rasterization.
@@ -28,17 +29,13 @@ pub static RASTERIZATION: Rasterization = Rasterization {
 };
 
 impl Chapter for Rasterization {
-    fn number(&self) -> u32 {
-        2
-    }
-    fn slug(&self) -> &'static str {
-        "rasterization"
-    }
-    fn title(&self) -> &'static str {
-        "Rasterization: coverage, barycentrics, depth buffer"
-    }
-    fn views(&self) -> &'static [View] {
-        VIEWS
+    fn info(&self) -> ChapterInfo {
+        ChapterInfo::new(
+            2,
+            "rasterization",
+            "Rasterization: coverage, barycentrics, depth buffer",
+            VIEWS,
+        )
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         let cam = &scene.camera;
@@ -71,7 +68,7 @@ struct RasterRender {
 }
 
 impl Render for RasterRender {
-    fn pass(&mut self) -> bool {
+    fn pass(&mut self) -> Pass {
         let s = &self.scene;
         // `start` checked the sample count, so this cannot fail.
         self.frame = render_frame(
@@ -83,45 +80,42 @@ impl Render for RasterRender {
             self.options.cull_back_faces,
         )
         .ok();
-        true
+        fixed_pass(1, 1, 0)
     }
 
-    fn progress(&self) -> (u32, u32) {
-        (u32::from(self.frame.is_some()), 1)
-    }
-
-    fn view(&self, index: usize) -> Film {
+    fn snapshot(&self) -> Snapshot {
         let films = self.frame.as_ref().map_or(&[][..], |f| &f.films[..]);
-        crate::core::stage::view_of(films, index, &self.scene.camera)
+        Snapshot {
+            views: views_of(films, VIEWS.len(), &self.scene.camera),
+            pass: fixed_pass(u32::from(self.frame.is_some()), 1, 0),
+            ..Snapshot::default()
+        }
     }
 
+    /// With `--report`, its figures are the checkered floor,
+    /// perspective-correct, affine and their difference (the same three
+    /// images whatever the scene).
     fn report(&self) -> Report {
-        chapter_report(
+        let mut report = chapter_report(
             &self.scene,
             &self.settings,
             self.options.cull_back_faces,
             self.frame.as_ref(),
-        )
-    }
-
-    /// With `--report`: the checkered floor, perspective-correct, affine and
-    /// their difference (the same three images whatever the scene).
-    fn extra_files(&self, _report: &Report, dir: &Path, _stem: &str) -> Result<Vec<PathBuf>> {
-        if !self.settings.studies {
-            return Ok(Vec::new());
+        );
+        if self.settings.studies {
+            let (w, h) = CHECKER_SIZE;
+            let figures = checker_figures(w, h, CHECKER_SPP, self.settings.seed);
+            for (name, film) in [
+                ("ch2-checker-floor", figures.perspective),
+                ("ch2-checker-floor-affine", figures.affine),
+                ("ch2-checker-floor-difference", figures.difference),
+            ] {
+                report.figures.push(Figure {
+                    file: format!("{name}.png"),
+                    content: FigureContent::Png(film),
+                });
+            }
         }
-        let (w, h) = CHECKER_SIZE;
-        let figures = checker_figures(w, h, CHECKER_SPP, self.settings.seed);
-        let mut files = Vec::new();
-        for (name, film) in [
-            ("ch2-checker-floor", &figures.perspective),
-            ("ch2-checker-floor-affine", &figures.affine),
-            ("ch2-checker-floor-difference", &figures.difference),
-        ] {
-            let path = dir.join(format!("{name}.png"));
-            film.write_png(&path)?;
-            files.push(path);
-        }
-        Ok(files)
+        report
     }
 }

@@ -8,14 +8,16 @@ use std::time::Instant;
 use glam::Vec3;
 
 use super::geometry::Geometry;
-use super::render::{films_from_sums, render_sum, TraceStats};
+use super::render::{films_from_sums, pixel_hit, render_sum, TraceStats};
 use super::report::{add_studies, chapter_report};
 use super::studies::StudySize;
 use crate::ch1_projection::camera::Camera;
 use crate::core::error::Result;
-use crate::core::film::Film;
+use crate::core::format::num;
 use crate::core::report::Report;
-use crate::core::stage::{Chapter, Render, Settings, View};
+use crate::core::stage::{
+    fixed_pass, views_of, Chapter, ChapterInfo, Inspection, Pass, Render, Settings, Snapshot, View,
+};
 use crate::scene::Scene;
 
 /// The four views of chapter 3.
@@ -39,29 +41,19 @@ pub const VIEWS: &[View] = &[
 ];
 
 /// Chapter 3 as a stage.
-pub struct RayTriangle {
-    /// How big the report's studies are: [`StudySize::full`] for the
-    /// report, smaller in tests of the report's layout.
-    pub study_size: fn() -> StudySize,
-}
+pub struct RayTriangle;
 
-/// Chapter 3 with the report's full studies.
-pub const DEFAULT: RayTriangle = RayTriangle {
-    study_size: StudySize::full,
-};
+/// Chapter 3 (its report runs the full studies).
+pub const DEFAULT: RayTriangle = RayTriangle;
 
 impl Chapter for RayTriangle {
-    fn number(&self) -> u32 {
-        3
-    }
-    fn slug(&self) -> &'static str {
-        "ray-triangle"
-    }
-    fn title(&self) -> &'static str {
-        "Ray-triangle intersection and a BVH"
-    }
-    fn views(&self) -> &'static [View] {
-        VIEWS
+    fn info(&self) -> ChapterInfo {
+        ChapterInfo::new(
+            3,
+            "ray-triangle",
+            "Ray-triangle intersection and a BVH",
+            VIEWS,
+        )
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         let geometry = Geometry::new(&scene);
@@ -70,7 +62,6 @@ impl Chapter for RayTriangle {
             camera: Camera::new(scene.camera)?,
             scene,
             settings: settings.clone(),
-            study_size: self.study_size,
             geometry,
             sums: vec![[Vec3::ZERO; 4]; n],
             done: 0,
@@ -84,7 +75,6 @@ struct RayTriangleRender {
     scene: Arc<Scene>,
     camera: Camera,
     settings: Settings,
-    study_size: fn() -> StudySize,
     geometry: Geometry,
     sums: Vec<[Vec3; 4]>,
     done: u32,
@@ -100,7 +90,7 @@ impl RayTriangleRender {
 
 impl Render for RayTriangleRender {
     /// One pass traces one sample of every pixel.
-    fn pass(&mut self) -> bool {
+    fn pass(&mut self) -> Pass {
         if self.done < self.planned() {
             let start = Instant::now();
             let g = &self.geometry;
@@ -122,32 +112,54 @@ impl Render for RayTriangleRender {
             self.seconds += start.elapsed().as_secs_f64();
             self.done += 1;
         }
-        self.done >= self.planned()
+        fixed_pass(self.done, self.planned(), self.stats.rays)
     }
 
-    fn progress(&self) -> (u32, u32) {
-        (self.done, self.planned())
-    }
-
-    /// Primary rays: pixels × samples done.
-    fn rays(&self) -> u64 {
-        self.stats.rays
-    }
-
-    fn view(&self, index: usize) -> Film {
+    fn snapshot(&self) -> Snapshot {
         let films = films_from_sums(&self.camera, &self.sums, self.done);
-        let mut film = films
-            .into_iter()
-            .nth(index)
-            .unwrap_or_else(|| Film::new(self.scene.camera.width, self.scene.camera.height));
-        film.scrub_nonfinite();
-        film
+        Snapshot {
+            views: views_of(&films, VIEWS.len(), &self.scene.camera),
+            pass: fixed_pass(self.done, self.planned(), self.stats.rays),
+            ..Snapshot::default()
+        }
+    }
+
+    /// The primary ray of sample `sample` at `pixel`: the triangle it hits,
+    /// its distance and barycentric coordinates.
+    fn inspect(&self, pixel: (u32, u32), sample: u32) -> Option<Inspection> {
+        if pixel.0 >= self.camera.width || pixel.1 >= self.camera.height {
+            return None;
+        }
+        let spp = self.planned();
+        let h = pixel_hit(
+            &self.camera,
+            &self.geometry,
+            pixel,
+            spp,
+            self.settings.seed,
+            sample,
+        );
+        let lines = match h.hit {
+            None => vec!["primary ray: miss".into()],
+            Some(hit) => vec![
+                format!("primary ray hits triangle {}", hit.triangle),
+                format!(" of mesh {}", h.mesh.map_or("?".into(), |m| m.to_string())),
+                format!(" t = {}", num(hit.t)),
+                format!(" u = {}, v = {}", num(hit.u), num(hit.v)),
+                format!(" 1-u-v = {}", num(1.0 - hit.u - hit.v)),
+            ],
+        };
+        Some(Inspection {
+            pixel,
+            sample,
+            lines,
+        })
     }
 
     fn report(&self) -> Report {
         let nonfinite = films_from_sums(&self.camera, &self.sums, self.done)
             .iter_mut()
-            .map(Film::scrub_nonfinite)
+            .map(crate::core::film::Film::scrub_nonfinite)
             .sum();
         let mut report = chapter_report(
             &self.scene,
@@ -158,12 +170,7 @@ impl Render for RayTriangleRender {
         );
         report.nonfinite_caught = nonfinite;
         if self.settings.studies {
-            add_studies(
-                &mut report,
-                &self.scene,
-                &self.settings,
-                &(self.study_size)(),
-            );
+            add_studies(&mut report, &self.scene, &self.settings, &StudySize::full());
         }
         report
     }

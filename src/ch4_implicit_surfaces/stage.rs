@@ -11,7 +11,8 @@
 use std::sync::Arc;
 use std::time::Instant;
 
-use super::render::{trace_image, views, MeshTracer, Method, Pixel};
+use super::march::Ending;
+use super::render::{march_steps, pixel_ray, trace_image, views, MeshTracer, Method, Pixel};
 use super::report::{chapter_report, ReportInputs};
 use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::geometry::Geometry;
@@ -19,8 +20,11 @@ use crate::ch4_implicit_surfaces::march::March;
 use crate::ch4_implicit_surfaces::normal::NormalScheme;
 use crate::core::error::{Error, Result};
 use crate::core::film::Film;
+use crate::core::format::num;
 use crate::core::report::Report;
-use crate::core::stage::{Chapter, Render, Settings, View};
+use crate::core::stage::{
+    fixed_pass, views_of, Chapter, ChapterInfo, Inspection, Pass, Render, Settings, Snapshot, View,
+};
 use crate::scene::Scene;
 
 /// The views of chapter 4.
@@ -100,17 +104,13 @@ impl SphereTracing {
 }
 
 impl Chapter for SphereTracing {
-    fn number(&self) -> u32 {
-        4
-    }
-    fn slug(&self) -> &'static str {
-        "sphere-tracing"
-    }
-    fn title(&self) -> &'static str {
-        "Implicit surfaces: signed distance functions and sphere tracing"
-    }
-    fn views(&self) -> &'static [View] {
-        VIEWS
+    fn info(&self) -> ChapterInfo {
+        ChapterInfo::new(
+            4,
+            "sphere-tracing",
+            "Implicit surfaces: signed distance functions and sphere tracing",
+            VIEWS,
+        )
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         self.check()?;
@@ -141,7 +141,7 @@ struct SphereTracingRender {
 }
 
 impl Render for SphereTracingRender {
-    fn pass(&mut self) -> bool {
+    fn pass(&mut self) -> Pass {
         let start = Instant::now();
         if self.geometry.is_none() && !self.scene.meshes.is_empty() {
             self.geometry = Some((Geometry::new(&self.scene), start.elapsed().as_secs_f64()));
@@ -161,20 +161,71 @@ impl Render for SphereTracingRender {
             &s.march,
         );
         self.seconds = start.elapsed().as_secs_f64();
-        true
-    }
-
-    fn progress(&self) -> (u32, u32) {
-        (u32::from(!self.films.is_empty()), 1)
+        fixed_pass(1, 1, self.pixels.len() as u64)
     }
 
     /// One primary ray per traced pixel (the single pass).
-    fn rays(&self) -> u64 {
-        self.pixels.len() as u64
+    fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            views: views_of(&self.films, VIEWS.len(), &self.scene.camera),
+            pass: fixed_pass(
+                u32::from(!self.films.is_empty()),
+                1,
+                self.pixels.len() as u64,
+            ),
+            ..Snapshot::default()
+        }
     }
 
-    fn view(&self, index: usize) -> Film {
-        crate::core::stage::view_of(&self.films, index, &self.scene.camera)
+    /// The sphere-tracing steps of the pixel's ray (one ray per pixel, so
+    /// `sample` is ignored): t and f at each, how the march ended.
+    fn inspect(&self, pixel: (u32, u32), sample: u32) -> Option<Inspection> {
+        let outside = pixel.0 >= self.camera.width || pixel.1 >= self.camera.height;
+        if outside || self.films.is_empty() {
+            return None;
+        }
+        let stage = &self.stage;
+        let meshes = self.geometry.as_ref().map(|(geometry, _)| MeshTracer {
+            geometry,
+            meshes: &self.scene.meshes,
+        });
+        let ray = pixel_ray(&self.camera, pixel.0, pixel.1);
+        let sdfs = &self.scene.sdfs;
+        let m = march_steps(
+            &ray,
+            sdfs,
+            &stage.march,
+            stage.method,
+            stage.normals,
+            meshes,
+        );
+        let ending = match m.pixel.trace.ending {
+            Ending::Hit => "hit".to_string(),
+            Ending::Escaped => "escaped".to_string(),
+            Ending::Budget => format!("budget of {} steps exhausted", stage.march.max_steps),
+        };
+        let mut lines = if sdfs.is_empty() {
+            vec!["no SDF objects: nothing to march".to_string()]
+        } else {
+            vec![format!("sphere tracing: {} steps, {ending}", m.steps.len())]
+        };
+        let n = m.steps.len();
+        for (i, (t, d)) in m.steps.iter().enumerate() {
+            if i < 4 || i + 3 >= n {
+                lines.push(format!(" {i:>3}: t {} f {}", num(*t), num(*d)));
+            } else if i == 4 {
+                lines.push("  …".into());
+            }
+        }
+        lines.push(match m.pixel.hit {
+            Some(h) => format!("nearest hit t {} ({:?})", num(h.t), h.surface),
+            None => "nearest hit: none".into(),
+        });
+        Some(Inspection {
+            pixel,
+            sample,
+            lines,
+        })
     }
 
     fn report(&self) -> Report {

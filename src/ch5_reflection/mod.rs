@@ -23,6 +23,7 @@ pub mod light;
 pub mod light_terms;
 pub mod material;
 pub mod mis;
+pub mod names;
 pub mod radiometry;
 pub mod render;
 pub mod report;

@@ -13,14 +13,20 @@ use std::time::Instant;
 use glam::Vec3;
 
 use super::direct::{Counters, Estimator, Strategy};
+use super::light_terms::pixel_light;
+use super::names::light_name;
 use super::render::{render_pass, scene_cannot_shadow};
 use super::report::{chapter_report, ReportInputs};
 use crate::ch1_projection::camera::Camera;
 use crate::ch5_reflection::world::World;
 use crate::core::error::Result;
+use crate::core::figure::{Figure, FigureContent};
 use crate::core::film::Film;
+use crate::core::format::{num, rgb};
 use crate::core::report::Report;
-use crate::core::stage::{Chapter, Render, Settings, View};
+use crate::core::stage::{
+    fixed_pass, Chapter, ChapterInfo, Inspection, Pass, Render, Settings, Snapshot, Variant, View,
+};
 use crate::scene::Scene;
 
 /// The views of chapter 5.
@@ -29,21 +35,22 @@ pub const VIEWS: &[View] = &[View {
     about: "reflected radiance (direct light only), linear HDR; PNG tone-mapped by sRGB",
 }];
 
-/// The strategies, as the front ends' variants.
-pub const VARIANTS: &[View] = &[
-    View {
+/// The strategies, as the front ends' variants, in the order of
+/// [`Strategy::ALL`].
+pub const VARIANTS: &[Variant] = &[
+    Variant {
         name: "uniform",
         about: "uniform hemisphere directions: finds lights by chance",
     },
-    View {
+    Variant {
         name: "cosine",
         about: "BRDF sampling: cosine-weighted on Lambertian surfaces, the lobe on glossy ones",
     },
-    View {
+    Variant {
         name: "light",
         about: "a point on each light (area lights by area, the sky by brightness)",
     },
-    View {
+    Variant {
         name: "mis",
         about: "one light and one BRDF sample, power heuristic",
     },
@@ -64,48 +71,42 @@ pub const DEFAULT: Reflection = Reflection {
     max_mirror_bounces: 4,
 };
 
-impl Chapter for Reflection {
-    fn number(&self) -> u32 {
-        5
-    }
-    fn slug(&self) -> &'static str {
-        "reflection"
-    }
-    fn title(&self) -> &'static str {
-        "Radiometry, lights, BRDFs and the reflection equation"
-    }
-    fn views(&self) -> &'static [View] {
-        VIEWS
-    }
-    fn is_radiance(&self) -> bool {
-        true
-    }
-    fn variants(&self) -> &'static [View] {
-        VARIANTS
-    }
-    fn default_variant(&self) -> usize {
+impl Reflection {
+    /// The variant index of this stage's strategy (into [`VARIANTS`]).
+    pub fn variant(&self) -> usize {
         Strategy::ALL
             .iter()
             .position(|s| *s == self.strategy)
             .unwrap_or(0)
     }
-    fn progressive(&self) -> bool {
-        true
+
+    /// The same stage with variant `index` of [`VARIANTS`].
+    pub fn with_variant(&self, index: usize) -> Reflection {
+        Reflection {
+            strategy: Strategy::ALL[index.min(Strategy::ALL.len() - 1)],
+            ..*self
+        }
+    }
+}
+
+impl Chapter for Reflection {
+    fn info(&self) -> ChapterInfo {
+        ChapterInfo {
+            variants: VARIANTS,
+            default_variant: self.variant(),
+            progressive: true,
+            radiance: true,
+            ..ChapterInfo::new(
+                5,
+                "reflection",
+                "Radiometry, lights, BRDFs and the reflection equation",
+                VIEWS,
+            )
+        }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
-        Ok(Box::new(ReflectionRender::new(*self, scene, settings)?))
-    }
-    fn start_variant(
-        &self,
-        scene: Arc<Scene>,
-        settings: &Settings,
-        variant: usize,
-    ) -> Result<Box<dyn Render>> {
-        let stage = Reflection {
-            strategy: Strategy::ALL[variant.min(3)],
-            ..*self
-        };
-        stage.start(scene, settings)
+        let stage = self.with_variant(self.info().variant(settings)?);
+        Ok(Box::new(ReflectionRender::new(stage, scene, settings)?))
     }
 }
 
@@ -148,57 +149,55 @@ impl ReflectionRender {
     }
 }
 
-impl Render for ReflectionRender {
-    fn pass(&mut self) -> bool {
+impl ReflectionRender {
+    fn pass_info(&self) -> Pass {
+        // One camera ray per pixel and pass, plus the shadow, direction and
+        // mirror rays the estimator traced.
+        let cam = &self.scene.camera;
+        let c = &self.counters;
+        let rays = cam.width as u64 * cam.height as u64 * self.passes as u64
+            + c.shadow_rays
+            + c.direction_rays
+            + c.mirror_bounces;
         let spp = self.settings.spp.max(1);
-        if self.passes >= spp {
-            return true;
+        Pass {
+            samples: self.passes,
+            ..fixed_pass(self.passes, spp, rays)
         }
-        let start = Instant::now();
-        if self.world.is_none() {
-            self.world = Some(World::new(&self.scene));
-            self.build_seconds = start.elapsed().as_secs_f64();
+    }
+}
+
+impl Render for ReflectionRender {
+    fn pass(&mut self) -> Pass {
+        let spp = self.settings.spp.max(1);
+        if self.passes < spp {
+            let start = Instant::now();
+            if self.world.is_none() {
+                self.world = Some(World::new(&self.scene));
+                self.build_seconds = start.elapsed().as_secs_f64();
+            }
+            let estimator = self.estimator();
+            let world = self.world.as_ref().expect("built above");
+            let c = render_pass(
+                world,
+                &self.camera,
+                &estimator,
+                self.settings.seed,
+                self.passes,
+                &mut self.sums,
+            );
+            self.counters += c;
+            self.passes += 1;
+            self.seconds += start.elapsed().as_secs_f64();
         }
-        let estimator = self.estimator();
-        let world = self.world.as_ref().expect("built above");
-        let c = render_pass(
-            world,
-            &self.camera,
-            &estimator,
-            self.settings.seed,
-            self.passes,
-            &mut self.sums,
-        );
-        self.counters += c;
-        self.passes += 1;
-        self.seconds += start.elapsed().as_secs_f64();
-        self.passes >= spp
-    }
-
-    fn progress(&self) -> (u32, u32) {
-        (self.passes, self.settings.spp.max(1))
-    }
-
-    fn samples(&self) -> u32 {
-        self.passes
+        self.pass_info()
     }
 
     fn set_spp(&mut self, spp: u32) {
         self.settings.spp = spp.max(1);
     }
 
-    fn rays(&self) -> u64 {
-        // One camera ray per pixel and pass, plus the shadow, direction and
-        // mirror rays the estimator traced.
-        let cam = &self.scene.camera;
-        let c = &self.counters;
-        cam.width as u64 * cam.height as u64 * self.passes as u64
-            + c.shadow_rays
-            + c.direction_rays
-            + c.mirror_bounces
-    }
-
-    fn view(&self, _index: usize) -> Film {
+    fn snapshot(&self) -> Snapshot {
         let cam = &self.scene.camera;
         let mut film = Film::new(cam.width, cam.height);
         let k = self.passes.max(1) as f32;
@@ -206,11 +205,55 @@ impl Render for ReflectionRender {
             *p = *s / k;
         }
         film.scrub_nonfinite();
-        film
+        Snapshot {
+            views: vec![film],
+            pass: self.pass_info(),
+            ..Snapshot::default()
+        }
     }
 
+    /// Sample `sample` of `pixel` as this render's estimator traced it:
+    /// what the camera ray hit and each light's share, with its MIS weights.
+    fn inspect(&self, pixel: (u32, u32), sample: u32) -> Option<Inspection> {
+        let world = self.world.as_ref()?;
+        if pixel.0 >= self.camera.width || pixel.1 >= self.camera.height {
+            return None;
+        }
+        let est = self.estimator();
+        let p = pixel_light(world, &self.camera, &est, self.settings.seed, pixel, sample);
+        let mut lines = vec![format!("sample {sample}: L = {}", rgb(p.total))];
+        if !p.hit {
+            lines.push(" miss: the sky".into());
+        } else if p.delta {
+            lines.push(" mirror/glass: what its ray sees".into());
+        }
+        lines.push(format!(" emitted {}", rgb(p.emitted)));
+        for t in &p.lights {
+            lines.push(format!("light {}", light_name(&self.scene, world, t.light)));
+            let shadow = if t.shadowed { " (shadow)" } else { "" };
+            lines.push(format!(
+                "  light smp {} w {}{shadow}",
+                rgb(t.sampled),
+                num(t.weight)
+            ));
+            if t.found_weight > 0.0 {
+                lines.push(format!(
+                    "  brdf smp {} w {}",
+                    rgb(t.found),
+                    num(t.found_weight)
+                ));
+            }
+        }
+        Some(Inspection {
+            pixel,
+            sample,
+            lines,
+        })
+    }
+
+    /// With `--report`, its figures are the study's plots, one per problem.
     fn report(&self) -> Report {
-        chapter_report(&ReportInputs {
+        let mut report = chapter_report(&ReportInputs {
             scene: &self.scene,
             settings: &self.settings,
             estimator: self.estimator(),
@@ -219,22 +262,18 @@ impl Render for ReflectionRender {
             passes: self.passes,
             counters: &self.counters,
             seconds: self.seconds,
-        })
-    }
-
-    /// With `--report`: the study's plots, one per problem.
-    fn extra_files(
-        &self,
-        report: &Report,
-        dir: &std::path::Path,
-        _stem: &str,
-    ) -> Result<Vec<std::path::PathBuf>> {
-        let mut files = Vec::new();
-        for (name, plot) in report.error_vs_time.iter().flat_map(super::studies::plots) {
-            let path = dir.join(name);
-            plot.write_png(&path, 760, 420)?;
-            files.push(path);
+        });
+        let plots: Vec<_> = report
+            .error_vs_time
+            .iter()
+            .flat_map(super::studies::plots)
+            .collect();
+        for (file, plot) in plots {
+            report.figures.push(Figure {
+                file,
+                content: FigureContent::Plot(plot, 760, 420),
+            });
         }
-        Ok(files)
+        report
     }
 }

@@ -231,7 +231,7 @@ pub fn plots(et: &ErrorTime) -> Vec<(String, LogLogPlot)> {
     ]
     .into_iter()
     .map(|(group, title)| {
-        let mut plot = LogLogPlot::error_time(et, group, title, look);
+        let mut plot = et.plot(group, title, look);
         plot.y_label = "RMSE of the reflected radiance".into();
         (format!("ch5-error-time-{group}.png"), plot)
     })

@@ -2,11 +2,9 @@
 //! direct, 1, 2, 4, 8, 16 bounce sequence), every layer as EXR, the
 //! spp-doubling strip, and the strategy plot.
 
-use std::path::{Path, PathBuf};
-
-use crate::core::error::Result;
+use crate::core::figure::{Figure, FigureContent};
 use crate::core::film::Film;
-use crate::core::plot::{write_captioned_strip, LogLogPlot, Look};
+use crate::core::plot::{LogLogPlot, Look};
 use crate::core::report::ErrorTime;
 
 use super::accumulate::Accumulator;
@@ -14,7 +12,6 @@ use super::integrator::{PathSettings, LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
 use super::sampler::SamplerKind;
 use crate::ch1_projection::camera::Camera;
 use crate::ch5_reflection::world::World;
-use crate::scene::Scene;
 
 /// The "up to k bounces" images of the lecture's sequence.
 pub const STRIP_BOUNCES: [u32; 6] = [0, 1, 2, 4, 8, 16];
@@ -47,22 +44,23 @@ pub fn side_by_side(films: &[Film]) -> Film {
     out
 }
 
-/// Writes the bounce strip (PNG, "up to k" = layer E plus layers 0..=k)
-/// and every layer on its own as EXR. Nothing without layers.
-pub fn write_layers(acc: &Accumulator, out: &Path, stem: &str) -> Result<Vec<PathBuf>> {
-    let mut files = Vec::new();
+/// The bounce strip (PNG, "up to k" = layer E plus layers 0..=k) and
+/// every layer on its own as EXR, as figures named after `stem`. None
+/// without layers.
+pub fn layer_figures(acc: &Accumulator, stem: &str) -> Vec<Figure> {
+    let mut figures = Vec::new();
     if acc.layers.is_none() {
-        return Ok(files);
+        return figures;
     }
-    let strip: Vec<(Film, &str)> = STRIP_BOUNCES
+    let strip: Vec<(Film, String)> = STRIP_BOUNCES
         .iter()
         .zip(STRIP_LABELS)
-        .filter_map(|(k, label)| Some((acc.prefix(*k as usize + 1)?, label)))
+        .filter_map(|(k, label)| Some((acc.prefix(*k as usize + 1)?, label.to_string())))
         .collect();
-    let path = out.join(format!("{stem}-bounces.png"));
-    let captioned: Vec<(&Film, &str)> = strip.iter().map(|(f, l)| (f, *l)).collect();
-    write_captioned_strip(&captioned, &path)?;
-    files.push(path);
+    figures.push(Figure {
+        file: format!("{stem}-bounces.png"),
+        content: FigureContent::Strip(strip),
+    });
     for slot in 0..LAYER_SLOTS {
         let name = match slot {
             0 => "E".to_string(),
@@ -71,42 +69,40 @@ pub fn write_layers(acc: &Accumulator, out: &Path, stem: &str) -> Result<Vec<Pat
         };
         let mut f = acc.layer(slot).expect("layers kept");
         f.scrub_nonfinite();
-        let path = out.join(format!("{stem}-layer-{name}.exr"));
-        f.write_exr(&path)?;
-        files.push(path);
+        figures.push(Figure {
+            file: format!("{stem}-layer-{name}.exr"),
+            content: FigureContent::Exr(f),
+        });
     }
     debug_assert_eq!(SLOT_BEYOND, LAYERS_SHOWN as usize + 2);
-    Ok(files)
+    figures
 }
 
 /// The spp-doubling figure: one render, its image after 1, 2, 4, … `max`
-/// samples per pixel side by side, written to `dir/stem-spp.png`.
-pub fn spp_strip(
+/// samples per pixel side by side, as `stem-spp.png`.
+pub fn spp_figure(
     path: &PathSettings,
     sampler: SamplerKind,
-    scene: &Scene,
+    (world, camera): (&World, &Camera),
     seed: u64,
     max: u32,
-    dir: &Path,
     stem: &str,
-) -> Result<PathBuf> {
-    let camera = Camera::new(scene.camera)?;
-    let world = World::new(scene);
+) -> Figure {
     let mut acc = Accumulator::new(camera.width, camera.height, false);
     let mut films = Vec::new();
     let mut spp = 1;
     while spp <= max.max(1) {
         let count = spp - acc.samples;
-        acc.add_samples(&world, &camera, path, sampler, seed, count);
+        acc.add_samples(world, camera, path, sampler, seed, count);
         let mut f = acc.mean();
         f.scrub_nonfinite();
         films.push((f, format!("{spp} spp")));
         spp *= 2;
     }
-    let out = dir.join(format!("{stem}-spp.png"));
-    let captioned: Vec<(&Film, &str)> = films.iter().map(|(f, l)| (f, l.as_str())).collect();
-    write_captioned_strip(&captioned, &out)?;
-    Ok(out)
+    Figure {
+        file: format!("{stem}-spp.png"),
+        content: FigureContent::Strip(films),
+    }
 }
 
 /// How a series of the strategy plot looks: colour and marker by
@@ -131,7 +127,7 @@ pub fn strategy_plot(et: &ErrorTime, scene: &str) -> LogLogPlot {
         "furnace" => "White furnace: error against time",
         other => other,
     };
-    let mut plot = LogLogPlot::error_time(et, scene, title, series_look);
+    let mut plot = et.plot(scene, title, series_look);
     plot.y_label = "RMSE of the pixel radiance".into();
     plot
 }

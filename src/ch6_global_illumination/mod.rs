@@ -20,6 +20,7 @@
 pub mod accumulate;
 pub mod bench;
 pub mod figures;
+pub mod inspect;
 pub mod integrator;
 pub mod path_events;
 pub mod path_record;

@@ -11,14 +11,13 @@ use glam::Vec3;
 
 use crate::ch1_projection::camera::Camera;
 use crate::ch4_implicit_surfaces::hit::Surface;
-use crate::ch5_reflection::light::Light;
 use crate::ch5_reflection::world::World;
-use crate::scene::Scene;
 
 use super::accumulate::camera_sample;
 use super::integrator::{trace_path, Contributions, PathSettings, PathStats, LAYER_SLOTS};
 pub use super::path_events::{Emission, LightSample, PathEvent, Scatter};
 use super::sampler::SamplerKind;
+pub use crate::ch5_reflection::names::{light_name, surface_name};
 
 /// One surface the path reached.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -195,35 +194,3 @@ pub fn record_path(
     record
 }
 // ANCHOR_END: record_path
-
-/// A surface's name for a table: "mesh 3 \"short box\"".
-pub fn surface_name(scene: &Scene, surface: Surface) -> String {
-    match surface {
-        Surface::Mesh(i) => match scene.meshes.get(i) {
-            Some(m) if !m.name.is_empty() => format!("mesh {i} \"{}\"", m.name),
-            _ => format!("mesh {i}"),
-        },
-        Surface::Sdf(i) => match scene.sdfs.get(i) {
-            Some(o) if !o.name.is_empty() => format!("sdf {i} \"{}\"", o.name),
-            _ => format!("sdf {i}"),
-        },
-    }
-}
-
-/// A light's name for a table: its kind, and for an area light its mesh.
-pub fn light_name(scene: &Scene, world: &World, index: usize) -> String {
-    match world.lights.lights.get(index) {
-        Some(Light::Area(a)) => {
-            format!(
-                "{index} area, {}",
-                surface_name(scene, Surface::Mesh(a.mesh))
-            )
-        }
-        Some(Light::Point { .. }) => format!("{index} point"),
-        Some(Light::Directional { .. }) => format!("{index} directional"),
-        Some(Light::Environment { .. }) => format!("{index} environment"),
-        Some(Light::Spot(_)) => format!("{index} spot"),
-        Some(Light::Sky(_)) => format!("{index} sky"),
-        None => format!("{index}"),
-    }
-}

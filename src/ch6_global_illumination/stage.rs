@@ -10,24 +10,30 @@
 //! ends read the image, the per-bounce layers and, for the Cornell box, the
 //! error against the stored reference ([`reference`](mod@super::reference)) after every pass.
 
-use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::time::Instant;
 
 use glam::Vec3;
 
 use super::accumulate::{downsample, Accumulator};
-use super::figures::{spp_strip, strategy_plot, write_layers};
+use super::figures::{layer_figures, spp_figure, strategy_plot};
+use super::inspect::table_lines;
 use super::integrator::{Estimator, PathSettings, LAYER_SLOTS};
+use super::path_record::record_path;
 use super::reference::{upsample, StoredReference};
 use super::report::{chapter_report, ReportInputs};
 use super::sampler::SamplerKind;
 use crate::ch1_projection::camera::Camera;
 use crate::ch5_reflection::world::World;
 use crate::core::error::{Error, Result};
+use crate::core::figure::{Figure, FigureContent};
+use crate::core::film::film_mean;
 use crate::core::film::Film;
 use crate::core::report::Report;
-use crate::core::stage::{Chapter, Render, Settings, View};
+use crate::core::run::output_stem;
+use crate::core::stage::{
+    Chapter, ChapterInfo, Inspection, Pass, Render, Settings, Snapshot, Variant, View,
+};
 use crate::scene::Scene;
 
 /// The views of chapter 6.
@@ -46,36 +52,36 @@ pub const VIEWS: &[View] = &[
 /// the lecture's ladder, from "average (uniform sampling)" to
 /// "importance-sampling, according to BRDF and light sources", each with
 /// independent random numbers and with a low-discrepancy sequence.
-pub const VARIANTS: &[View] = &[
-    View {
+pub const VARIANTS: &[Variant] = &[
+    Variant {
         name: "uniform-independent",
         about: "uniform sampling (average of random directions), random numbers",
     },
-    View {
+    Variant {
         name: "uniform-sobol",
         about: "uniform sampling (average of random directions), low-discrepancy numbers",
     },
-    View {
+    Variant {
         name: "bsdf-independent",
         about: "importance sampling according to the BRDF, random numbers",
     },
-    View {
+    Variant {
         name: "bsdf-sobol",
         about: "importance sampling according to the BRDF, low-discrepancy numbers",
     },
-    View {
+    Variant {
         name: "light-independent",
         about: "importance sampling according to the light sources (direct + indirect), random numbers",
     },
-    View {
+    Variant {
         name: "light-sobol",
         about: "importance sampling according to the light sources (direct + indirect), low-discrepancy numbers",
     },
-    View {
+    Variant {
         name: "mis-independent",
         about: "importance sampling according to BRDF and light sources, combined (MIS), random numbers",
     },
-    View {
+    Variant {
         name: "mis-sobol",
         about: "importance sampling according to BRDF and light sources, combined (MIS), low-discrepancy numbers",
     },
@@ -144,44 +150,25 @@ impl GlobalIllumination {
 }
 
 impl Chapter for GlobalIllumination {
-    fn number(&self) -> u32 {
-        6
-    }
-    fn slug(&self) -> &'static str {
-        "global-illumination"
-    }
-    fn title(&self) -> &'static str {
-        "Global illumination: Monte Carlo path tracing, bounce by bounce"
-    }
-    fn views(&self) -> &'static [View] {
-        VIEWS
-    }
-    fn has_bounces(&self) -> bool {
-        self.layers
-    }
-    fn is_radiance(&self) -> bool {
-        true
-    }
-    fn variants(&self) -> &'static [View] {
-        VARIANTS
-    }
-    fn default_variant(&self) -> usize {
-        self.variant()
-    }
-    fn progressive(&self) -> bool {
-        true
+    fn info(&self) -> ChapterInfo {
+        ChapterInfo {
+            variants: VARIANTS,
+            default_variant: self.variant(),
+            progressive: true,
+            radiance: true,
+            bounces: self.layers,
+            ..ChapterInfo::new(
+                6,
+                "global-illumination",
+                "Global illumination: Monte Carlo path tracing, bounce by bounce",
+                VIEWS,
+            )
+        }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
-        self.check()?;
-        Ok(Box::new(PathTracingRender::new(*self, scene, settings)?))
-    }
-    fn start_variant(
-        &self,
-        scene: Arc<Scene>,
-        settings: &Settings,
-        variant: usize,
-    ) -> Result<Box<dyn Render>> {
-        self.with_variant(variant).start(scene, settings)
+        let stage = self.with_variant(self.info().variant(settings)?);
+        stage.check()?;
+        Ok(Box::new(PathTracingRender::new(stage, scene, settings)?))
     }
 }
 
@@ -253,10 +240,97 @@ impl PathTracingRender {
     pub fn seconds(&self) -> f64 {
         self.seconds
     }
+
+    /// The world the passes trace in, once the first pass has built it.
+    pub fn world(&self) -> Option<&World> {
+        self.world.as_ref().map(|(w, _)| w)
+    }
+
+    /// The camera.
+    pub fn camera(&self) -> &Camera {
+        &self.camera
+    }
+
+    /// The scene.
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// The stage settings this render runs with (its variant applied).
+    pub fn stage(&self) -> &GlobalIllumination {
+        &self.stage
+    }
+
+    /// The seed of every random number.
+    pub fn seed(&self) -> u64 {
+        self.settings.seed
+    }
+
+    /// Where the render is (the cheap facts a driver reads every pass).
+    fn pass_info(&self) -> Pass {
+        let done = self.passes_between(0, self.acc.samples);
+        Pass {
+            done,
+            planned: done.max(self.planned()),
+            samples: self.acc.samples,
+            // Path segments and shadow rays, as the integrator counted them.
+            rays: self.acc.stats.rays,
+            noise: self.noise().map(|n| (n, film_mean(&self.acc.mean()))),
+            complete: self.acc.samples >= self.settings.spp.max(1),
+        }
+    }
+
+    /// The noise of view 0 (see [`Pass::noise`]), at the reference's
+    /// resolution when there is one.
+    fn noise(&self) -> Option<f64> {
+        if self.acc.samples < 2 {
+            return None;
+        }
+        // A block mean of f² independent pixels has Σ var / f⁴.
+        let var = self.acc.variance_of_mean();
+        let var = match &self.reference {
+            Some((_, f)) if *f > 1 => {
+                let mut v = downsample(&var, *f);
+                let k = 1.0 / (f * f) as f32;
+                v.pixels.iter_mut().for_each(|p| *p *= k);
+                v
+            }
+            _ => var,
+        };
+        let n = var.pixels.len().max(1) as f64 * 3.0;
+        let sum: f64 = var.pixels.iter().map(|p| p.as_dvec3().element_sum()).sum();
+        Some((sum / n).sqrt())
+    }
+
+    /// Per-bounce layers as [`Snapshot::layers`] defines them.
+    fn layers(&self) -> Option<Vec<Film>> {
+        // layers[0] is direct illumination with the emitters seen directly
+        // included, layers[k] bounce k; the last holds everything beyond.
+        // One sweep over the sums (they are stored per pixel, all slots
+        // together), as `acc.layer(slot)` for every slot would read them
+        // all once per slot.
+        let sums = self.acc.layers.as_ref()?;
+        let inv = 1.0 / self.acc.samples.max(1) as f32;
+        let (w, h) = (self.acc.width, self.acc.height);
+        let mut out: Vec<Film> = (1..LAYER_SLOTS).map(|_| Film::new(w, h)).collect();
+        for (i, l) in sums.iter().enumerate() {
+            for slot in 1..LAYER_SLOTS {
+                let mut v = l[slot] * inv;
+                if slot == 1 {
+                    v += l[0] * inv;
+                }
+                out[slot - 1].pixels[i] = v;
+            }
+        }
+        for f in &mut out {
+            f.scrub_nonfinite();
+        }
+        Some(out)
+    }
 }
 
 impl Render for PathTracingRender {
-    fn pass(&mut self) -> bool {
+    fn pass(&mut self) -> Pass {
         let started = *self.started.get_or_insert_with(Instant::now);
         if self.world.is_none() {
             let t = Instant::now();
@@ -281,102 +355,57 @@ impl Render for PathTracingRender {
                 self.errors.push((started.elapsed().as_secs_f64(), e));
             }
         }
-        self.acc.samples >= spp
-    }
-
-    fn progress(&self) -> (u32, u32) {
-        let done = self.passes_between(0, self.acc.samples);
-        (done, done.max(self.planned()))
-    }
-
-    fn samples(&self) -> u32 {
-        self.acc.samples
+        self.pass_info()
     }
 
     fn set_spp(&mut self, spp: u32) {
         self.settings.spp = spp.max(1);
     }
 
-    fn noise(&self) -> Option<f64> {
-        if self.acc.samples < 2 {
-            return None;
-        }
-        // At the reference's resolution when there is one: a block mean of
-        // f² independent pixels has Σ var / f⁴.
-        let var = self.acc.variance_of_mean();
-        let var = match &self.reference {
-            Some((_, f)) if *f > 1 => {
-                let mut v = downsample(&var, *f);
-                let k = 1.0 / (f * f) as f32;
-                v.pixels.iter_mut().for_each(|p| *p *= k);
-                v
-            }
-            _ => var,
-        };
-        let n = var.pixels.len().max(1) as f64 * 3.0;
-        let sum: f64 = var.pixels.iter().map(|p| p.as_dvec3().element_sum()).sum();
-        Some((sum / n).sqrt())
-    }
-
-    fn rays(&self) -> u64 {
-        // Path segments and shadow rays, as the integrator counted them.
-        self.acc.stats.rays
-    }
-
-    fn view(&self, index: usize) -> Film {
-        let mut film = match index {
-            1 => {
-                let mut v = self.acc.variance_of_mean();
-                v.pixels
-                    .iter_mut()
-                    .for_each(|p| *p = p.max(Vec3::ZERO).powf(0.5));
-                v
-            }
-            _ => self.acc.mean(),
-        };
-        film.scrub_nonfinite();
-        film
-    }
-
-    fn layers(&self) -> Option<Vec<Film>> {
-        // The trait's convention: layers[0] is direct illumination with
-        // the emitters seen directly included, layers[k] bounce k; the
-        // last holds everything beyond. One sweep over the sums (they are
-        // stored per pixel, all slots together), as `acc.layer(slot)`
-        // for every slot would read them all once per slot.
-        let sums = self.acc.layers.as_ref()?;
-        let inv = 1.0 / self.acc.samples.max(1) as f32;
-        let (w, h) = (self.acc.width, self.acc.height);
-        let mut out: Vec<Film> = (1..LAYER_SLOTS).map(|_| Film::new(w, h)).collect();
-        for (i, l) in sums.iter().enumerate() {
-            for slot in 1..LAYER_SLOTS {
-                let mut v = l[slot] * inv;
-                if slot == 1 {
-                    v += l[0] * inv;
-                }
-                out[slot - 1].pixels[i] = v;
-            }
-        }
-        for f in &mut out {
-            f.scrub_nonfinite();
-        }
-        Some(out)
-    }
-
-    fn reference(&self) -> Option<Film> {
-        let (r, factor) = self.reference.as_ref()?;
-        Some(match factor {
+    fn snapshot(&self) -> Snapshot {
+        let mut image = self.acc.mean();
+        image.scrub_nonfinite();
+        let mut stderr = self.acc.variance_of_mean();
+        stderr
+            .pixels
+            .iter_mut()
+            .for_each(|p| *p = p.max(Vec3::ZERO).powf(0.5));
+        stderr.scrub_nonfinite();
+        let reference = self.reference.as_ref().map(|(r, factor)| match factor {
             1 => r.mean.clone(),
             f => upsample(&r.mean, *f),
+        });
+        Snapshot {
+            views: vec![image, stderr],
+            layers: self.layers(),
+            reference,
+            error_series: self.errors.clone(),
+            pass: self.pass_info(),
+        }
+    }
+
+    /// Sample `sample` of `pixel` as this render traced it, as a table;
+    /// `None` before the first pass (the world is built there).
+    fn inspect(&self, pixel: (u32, u32), sample: u32) -> Option<Inspection> {
+        let world = self.world()?;
+        if pixel.0 >= self.camera.width || pixel.1 >= self.camera.height {
+            return None;
+        }
+        let (path, sampler, seed) = (&self.stage.path, self.stage.sampler, self.settings.seed);
+        let record = record_path(world, &self.camera, path, sampler, seed, pixel, sample);
+        let nee = path.estimator.samples_lights() && !world.lights.lights.is_empty();
+        Some(Inspection {
+            pixel,
+            sample,
+            lines: table_lines(&self.scene, world, &record, nee),
         })
     }
 
-    fn error_series(&self) -> Vec<(f64, f64)> {
-        self.errors.clone()
-    }
-
+    /// Its figures: the bounce strip and every layer as EXR (when the stage
+    /// keeps layers), the spp-doubling strip (with `--spp-figure`) and,
+    /// with the studies, the strategy plots.
     fn report(&self) -> Report {
-        chapter_report(&ReportInputs {
+        let mut report = chapter_report(&ReportInputs {
             scene: &self.scene,
             settings: &self.settings,
             path: self.stage.path,
@@ -389,29 +418,28 @@ impl Render for PathTracingRender {
                 let (r, _) = self.reference.as_ref().expect("an RMSE needs a reference");
                 (e, r.mean.width, r.mean.height)
             }),
-        })
-    }
-
-    fn extra_files(&self, report: &Report, dir: &Path, stem: &str) -> Result<Vec<PathBuf>> {
-        let mut files = write_layers(&self.acc, dir, stem)?;
-        if let Some(max) = self.stage.spp_figure {
-            files.push(spp_strip(
+        });
+        let stem = output_stem(6, &self.scene.name);
+        let mut figures = layer_figures(&self.acc, &stem);
+        if let (Some(max), Some(world)) = (self.stage.spp_figure, self.world()) {
+            figures.push(spp_figure(
                 &self.stage.path,
                 self.stage.sampler,
-                &self.scene,
+                (world, &self.camera),
                 self.settings.seed,
                 max,
-                dir,
-                stem,
-            )?);
+                &stem,
+            ));
         }
         if let Some(et) = &report.error_vs_time {
             for name in ["cornell", "furnace"] {
-                let path = dir.join(format!("{stem}-strategies-{name}.png"));
-                strategy_plot(et, name).write_png(&path, 760, 440)?;
-                files.push(path);
+                figures.push(Figure {
+                    file: format!("{stem}-strategies-{name}.png"),
+                    content: FigureContent::Plot(strategy_plot(et, name), 760, 440),
+                });
             }
         }
-        Ok(files)
+        report.figures = figures;
+        report
     }
 }

@@ -427,3 +427,13 @@ pub fn remove_temporaries_and_exit(code: i32) -> ! {
 pub fn temporaries_on_disk() -> usize {
     temporaries().iter().filter(|t| t.exists()).count()
 }
+
+/// The mean value of a film over pixels and channels.
+pub fn film_mean(film: &Film) -> f64 {
+    let n = film.pixels.len().max(1) as f64 * 3.0;
+    film.pixels
+        .iter()
+        .map(|p| p.as_dvec3().element_sum())
+        .sum::<f64>()
+        / n
+}

@@ -58,3 +58,27 @@ pub fn format_count(n: usize, noun: &str) -> String {
         format!("{n} {noun}s")
     }
 }
+
+/// A number with three significant digits (an inspect panel's numbers).
+pub fn num(x: f32) -> String {
+    let x = x as f64;
+    if x == 0.0 || !x.is_finite() || !(1e-3..1e5).contains(&x.abs()) {
+        return format_number(x);
+    }
+    let digits = (2 - x.abs().log10().floor() as i32).clamp(0, 8) as usize;
+    format!("{x:.digits$}")
+}
+
+/// An RGB value: one number when grey, else three.
+pub fn rgb(v: glam::Vec3) -> String {
+    if v.x == v.y && v.y == v.z {
+        num(v.x)
+    } else {
+        format!("{} {} {}", num(v.x), num(v.y), num(v.z))
+    }
+}
+
+/// A direction with two decimals.
+pub fn direction(v: glam::Vec3) -> String {
+    format!("({:.2}, {:.2}, {:.2})", v.x, v.y, v.z)
+}

@@ -5,6 +5,7 @@
 
 pub mod draw;
 pub mod error;
+pub mod figure;
 pub mod film;
 pub mod format;
 pub mod guard;

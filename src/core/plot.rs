@@ -16,7 +16,6 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use crate::core::error::{Error, Result};
 use crate::core::film::write_rgb8_png;
-use crate::core::report::ErrorTime;
 pub use crate::core::strip::{captioned_strip, write_captioned_strip};
 use crate::core::style::{font, Mark, FAMILY};
 pub use crate::core::style::{Look, Marker, PALETTE};
@@ -160,44 +159,6 @@ impl LogLogPlot {
     }
 }
 // ANCHOR_END: log_log
-
-impl LogLogPlot {
-    /// The error-against-time plot of the series of `et` whose names start
-    /// with `prefix` (the prefix is left out of the legend), each looked up
-    /// in `look`; with the −1/2 guide when `et` shows slopes.
-    pub fn error_time(
-        et: &ErrorTime,
-        prefix: &str,
-        title: &str,
-        look: impl Fn(&str) -> Look,
-    ) -> LogLogPlot {
-        let series = et
-            .series()
-            .into_iter()
-            .filter(|s| s.starts_with(prefix))
-            .map(|s| Series {
-                label: s[prefix.len()..].trim_matches([' ', ':', '/']).to_string(),
-                look: look(&s),
-                points: et
-                    .rows
-                    .iter()
-                    .filter(|r| r.series == s)
-                    .map(|r| (r.seconds, r.error))
-                    .collect(),
-            })
-            .collect();
-        LogLogPlot {
-            title: title.into(),
-            x_label: "run time (s)".into(),
-            y_label: et.error_name.clone(),
-            series,
-            guide: et.show_slopes.then(|| Guide {
-                slope: -0.5,
-                label: "slope −1/2".into(),
-            }),
-        }
-    }
-}
 
 fn loggable((x, y): (f64, f64)) -> bool {
     x > 0.0 && y > 0.0 && x.is_finite() && y.is_finite()

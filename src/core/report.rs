@@ -12,8 +12,10 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::core::error::Result;
+use crate::core::figure::Figure;
 use crate::core::film::write_atomically;
 use crate::core::format::{format_number, format_seconds};
+use crate::core::plot::{Guide, LogLogPlot, Look, Series};
 pub use crate::core::table::{wrap, Table, COLUMNS};
 
 /// One measured run of one variant.
@@ -238,6 +240,9 @@ pub struct Report {
     pub left_out: Vec<String>,
     /// NaN or Inf values caught before they reached an image.
     pub nonfinite_caught: u64,
+    /// Pictures that come with the report (plots of its studies, strips,
+    /// per-bounce layers); the runner writes them beside the images.
+    pub figures: Vec<Figure>,
 }
 
 /// Whether printed reports show wall-clock times (snapshots hide them).
@@ -377,4 +382,38 @@ fn list(name: &str, items: &[String]) -> String {
         s += &wrap(item, "    - ", "      ", COLUMNS);
     }
     s
+}
+
+impl ErrorTime {
+    /// The error-against-time plot of the series whose names start
+    /// with `prefix` (the prefix is left out of the legend), each looked up
+    /// in `look`; with the −1/2 guide when `et` shows slopes.
+    pub fn plot(&self, prefix: &str, title: &str, look: impl Fn(&str) -> Look) -> LogLogPlot {
+        let et = self;
+        let series = et
+            .series()
+            .into_iter()
+            .filter(|s| s.starts_with(prefix))
+            .map(|s| Series {
+                label: s[prefix.len()..].trim_matches([' ', ':', '/']).to_string(),
+                look: look(&s),
+                points: et
+                    .rows
+                    .iter()
+                    .filter(|r| r.series == s)
+                    .map(|r| (r.seconds, r.error))
+                    .collect(),
+            })
+            .collect();
+        LogLogPlot {
+            title: title.into(),
+            x_label: "run time (s)".into(),
+            y_label: et.error_name.clone(),
+            series,
+            guide: et.show_slopes.then(|| Guide {
+                slope: -0.5,
+                label: "slope −1/2".into(),
+            }),
+        }
+    }
 }

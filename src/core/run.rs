@@ -14,8 +14,8 @@ use clap::Parser;
 use crate::core::error::{Error, Result};
 use crate::core::film::OutputSet;
 use crate::core::preview::{preview, PreviewStyle};
-use crate::core::report::Times;
-use crate::core::stage::{Chapter, Settings};
+use crate::core::report::{Report, Times};
+use crate::core::stage::{Chapter, ChapterInfo, Settings, Snapshot};
 use crate::core::text::{escape, escape_keep_newlines};
 use crate::scene::camera::MAX_RESOLUTION;
 use crate::scene::obj::DEFAULT_MAX_TRIANGLES;
@@ -96,6 +96,7 @@ impl CommonArgs {
             spp: self.spp,
             seed: self.seed,
             studies: self.report,
+            variant: None,
         }
     }
 
@@ -173,29 +174,21 @@ pub fn run_headless(
     preview_width: u32,
     w: &mut dyn Write,
 ) -> Result<RunSummary> {
-    if let Some(why) = chapter.unsupported(&scene) {
-        return Err(Error::Usage(format!(
-            "ch{} cannot render scene `{}`: {why}",
-            chapter.number(),
-            scene.source
-        )));
-    }
+    let info = chapter.info();
     let scene = sized(scene, settings.width, settings.height)?;
-    check_samples(&scene, settings.spp, chapter.is_radiance())?;
-    let stem = format!("ch{}-{}", chapter.number(), scene.name);
+    check_samples(&scene, settings.spp, info.radiance)?;
+    let stem = output_stem(info.number, &scene.name);
     let start = Instant::now();
     let mut render = chapter.start(Arc::new(scene), settings)?;
-    // Progress on a terminal's stderr, only for renders that take a while.
     let show_progress = std::io::stderr().is_terminal();
     let mut shown = false;
     loop {
-        let done = render.pass();
+        let pass = render.pass();
         if show_progress && start.elapsed().as_secs_f64() > 1.0 {
-            let (d, t) = render.progress();
-            eprint!("\r{}: pass {d}/{t}  ", escape(&stem));
+            eprint!("\r{}: pass {}/{}  ", escape(&stem), pass.done, pass.planned);
             shown = true;
         }
-        if done {
+        if pass.complete {
             break;
         }
     }
@@ -205,40 +198,21 @@ pub fn run_headless(
     let seconds = start.elapsed().as_secs_f64();
 
     // Every output of the run appears together or not at all.
-    let set = OutputSet::begin();
-    let mut files = Vec::new();
-    for (i, view) in chapter.views().iter().enumerate() {
-        let film = render.view(i);
-        let name = if i == 0 {
-            stem.clone()
-        } else {
-            format!("{stem}-{}", view.name)
-        };
-        let png = out.join(format!("{name}.png"));
-        film.write_png(&png)?;
-        files.push(png);
-        if i == 0 && chapter.is_radiance() {
-            let exr = out.join(format!("{name}.exr"));
-            film.write_exr(&exr)?;
-            files.push(exr);
-        }
-    }
+    let snapshot = render.snapshot();
     let report = render.report();
-    files.extend(render.extra_files(&report, out, &stem)?);
-    report.write_csv(out, &stem)?;
-    if report.error_vs_time.is_some() {
-        files.push(out.join(format!("{stem}.csv")));
-    }
-    if !report.stability.is_empty() {
-        files.push(out.join(format!("{stem}-stability.csv")));
-    }
+    let set = OutputSet::begin();
+    let files = write_outputs(&info, &snapshot, &report, out, &stem)?;
     set.commit()?;
 
     let io = |e: std::io::Error| Error::io(Path::new("<stdout>"), e);
     write!(
         w,
         "{}",
-        preview(&render.view(0), preview_width, PreviewStyle::for_stdout())
+        preview(
+            &snapshot.views[0],
+            preview_width,
+            PreviewStyle::for_stdout()
+        )
     )
     .map_err(io)?;
     // Names in the report come from the scene file: no raw control codes.
@@ -248,17 +222,58 @@ pub fn run_headless(
         writeln!(w, "    {}", escape(&f.display().to_string())).map_err(io)?;
     }
     writeln!(w).map_err(io)?;
-    let rmse = render.error_series().last().map(|p| p.1).or_else(|| {
-        let (image, reference) = (render.view(0), render.reference()?);
-        ((image.width, image.height) == (reference.width, reference.height))
-            .then(|| image.rmse(&reference))
-    });
+    let rmse = snapshot.rmse();
     Ok(RunSummary {
         files,
         seconds,
         stable: report.all_stable(),
         rmse,
     })
+}
+
+/// The stem of a run's file names: `ch<N>-<scene>`.
+pub fn output_stem(chapter: u32, scene: &str) -> String {
+    format!("ch{chapter}-{scene}")
+}
+
+/// Writes what a finished run shows into `out`: every view of the
+/// snapshot as a PNG (`<stem>.png`, `<stem>-<view>.png`; the main image
+/// also as EXR when it holds radiance), the report's CSV tables and its
+/// figures. Returns the paths written, in that order.
+pub fn write_outputs(
+    info: &ChapterInfo,
+    snapshot: &Snapshot,
+    report: &Report,
+    out: &Path,
+    stem: &str,
+) -> Result<Vec<PathBuf>> {
+    let mut files = Vec::new();
+    for (i, (view, film)) in info.views.iter().zip(&snapshot.views).enumerate() {
+        let name = if i == 0 {
+            stem.to_string()
+        } else {
+            format!("{stem}-{}", view.name)
+        };
+        let png = out.join(format!("{name}.png"));
+        film.write_png(&png)?;
+        files.push(png);
+        if i == 0 && info.radiance {
+            let exr = out.join(format!("{name}.exr"));
+            film.write_exr(&exr)?;
+            files.push(exr);
+        }
+    }
+    for figure in &report.figures {
+        files.push(figure.write(out)?);
+    }
+    report.write_csv(out, stem)?;
+    if report.error_vs_time.is_some() {
+        files.push(out.join(format!("{stem}.csv")));
+    }
+    if !report.stability.is_empty() {
+        files.push(out.join(format!("{stem}-stability.csv")));
+    }
+    Ok(files)
 }
 
 /// Refuses more than [`MAX_SAMPLES`] samples, and warns (on stderr, with a

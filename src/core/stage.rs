@@ -1,7 +1,31 @@
 //! The boundary between a chapter's stage and whatever drives it: the
 //! headless runner, the terminal UI, the tests and the book's figures all
 //! use these two traits and nothing else. A stage knows nothing about
-//! terminals; a front end knows nothing about rendering.
+//! terminals or files; a front end knows nothing about rendering.
+//!
+//! The shape, and why:
+//!
+//! ```text
+//! trait Chapter { info() -> ChapterInfo;  start(scene, settings) -> Render }
+//! trait Render  { pass() -> Pass;  snapshot() -> Snapshot;  report() -> Report;
+//!                 inspect(pixel, sample) -> Option<Inspection>;  set_spp(spp) }
+//! ```
+//!
+//! - A [`Chapter`] is a description ([`ChapterInfo`]: number, title, views,
+//!   variants, whether it samples radiance) and a way to start. Everything
+//!   that chooses *how* to render (the variant, the samples, the seed) is in
+//!   [`Settings`], so there is one `start`, not one per option.
+//! - A [`Render`] is driven by [`Render::pass`], which returns the cheap
+//!   facts a driver needs between passes ([`Pass`]: progress, samples, the
+//!   noise estimate). Everything shown or written is read at once with
+//!   [`Render::snapshot`]; the runner writes files from the snapshot and the
+//!   report ([`Report::figures`](crate::core::report::Report::figures)), so no
+//!   stage writes files for a front end.
+//! - [`Render::inspect`] answers "what happened at this pixel" with the
+//!   render's own world and settings: the terminal UI's inspect mode asks
+//!   the running render and imports no chapter code.
+//! - A stage that cannot render a scene says so from [`Chapter::start`];
+//!   there is no separate question to forget to ask.
 
 use std::sync::Arc;
 
@@ -23,6 +47,9 @@ pub struct Settings {
     pub seed: u64,
     /// Run the error-against-time and stability studies for the report.
     pub studies: bool,
+    /// Index into [`ChapterInfo::variants`]; `None`: the stage's own
+    /// default ([`ChapterInfo::default_variant`]).
+    pub variant: Option<usize>,
 }
 
 impl Default for Settings {
@@ -33,6 +60,7 @@ impl Default for Settings {
             spp: 1,
             seed: 0,
             studies: false,
+            variant: None,
         }
     }
 }
@@ -46,146 +74,213 @@ pub struct View {
     pub about: &'static str,
 }
 
-/// View `index` of a render's films, or a black film of the camera's size
-/// before the first pass; any NaN or Inf scrubbed out. The common body of
-/// [`Render::view`] for stages that keep one film per view.
-pub fn view_of(films: &[Film], index: usize, camera: &crate::scene::camera::CameraDesc) -> Film {
-    let mut film = films
-        .get(index)
-        .cloned()
-        .unwrap_or_else(|| Film::new(camera.width, camera.height));
-    film.scrub_nonfinite();
-    film
+/// One way of rendering a stage offers (an estimator, a sampler): the
+/// front ends switch between them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Variant {
+    /// Short name, e.g. `mis-sobol`.
+    pub name: &'static str,
+    /// One line for help texts.
+    pub about: &'static str,
+}
+
+/// A render's films as its snapshot's views: `count` of them, each a black
+/// film of the camera's size before the first pass, NaN or Inf scrubbed
+/// out. The common body of [`Render::snapshot`] for stages that keep one
+/// film per view.
+pub fn views_of(
+    films: &[Film],
+    count: usize,
+    camera: &crate::scene::camera::CameraDesc,
+) -> Vec<Film> {
+    (0..count)
+        .map(|i| {
+            let mut film = films
+                .get(i)
+                .cloned()
+                .unwrap_or_else(|| Film::new(camera.width, camera.height));
+            film.scrub_nonfinite();
+            film
+        })
+        .collect()
+}
+
+/// The [`Pass`] of a stage that renders in a fixed number of passes and
+/// samples nothing progressively.
+pub fn fixed_pass(done: u32, planned: u32, rays: u64) -> Pass {
+    Pass {
+        done,
+        planned: planned.max(done),
+        rays,
+        complete: done >= planned,
+        ..Pass::default()
+    }
+}
+
+/// What a chapter is, for menus, reports and the runner.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ChapterInfo {
+    /// 1 to 6.
+    pub number: u32,
+    /// The folder and binary slug, e.g. `projection`.
+    pub slug: &'static str,
+    /// A title for menus and reports.
+    pub title: &'static str,
+    /// The views this stage can show; the first is the main image.
+    pub views: &'static [View],
+    /// The estimators or samplers a front end may switch between; empty
+    /// when the stage has only one way of rendering.
+    pub variants: &'static [Variant],
+    /// The variant used when [`Settings::variant`] is `None`: the best the
+    /// stage has, while the others stay one key away.
+    pub default_variant: usize,
+    /// Whether the image keeps improving with more samples per pixel, so a
+    /// front end may go on until a noise target or a sample budget
+    /// ([`Render::set_spp`], [`Pass::noise`]).
+    pub progressive: bool,
+    /// Whether the main image holds radiance sampled `spp` times per pixel
+    /// (then it is also written as EXR).
+    pub radiance: bool,
+    /// Whether snapshots carry per-bounce layers ([`Snapshot::layers`]).
+    pub bounces: bool,
+}
+
+impl ChapterInfo {
+    /// A chapter with one view set and no variants, not progressive, not
+    /// radiance, without bounces: fill in what differs.
+    pub const fn new(
+        number: u32,
+        slug: &'static str,
+        title: &'static str,
+        views: &'static [View],
+    ) -> ChapterInfo {
+        ChapterInfo {
+            number,
+            slug,
+            title,
+            views,
+            variants: &[],
+            default_variant: 0,
+            progressive: false,
+            radiance: false,
+            bounces: false,
+        }
+    }
+
+    /// The variant `settings` asks for, checked against [`Self::variants`]
+    /// (the default when it asks for none).
+    pub fn variant(&self, settings: &Settings) -> Result<usize> {
+        match settings.variant {
+            None => Ok(self.default_variant),
+            Some(v) if v < self.variants.len().max(1) => Ok(v),
+            Some(v) => Err(crate::core::error::Error::Usage(format!(
+                "ch{} has {} variants; variant {v} does not exist",
+                self.number,
+                self.variants.len()
+            ))),
+        }
+    }
 }
 
 /// A chapter of the lecture, as a renderer stage.
 pub trait Chapter: Sync {
-    /// 1 to 6.
-    fn number(&self) -> u32;
-    /// The folder and binary slug, e.g. `projection`.
-    fn slug(&self) -> &'static str;
-    /// A title for menus and reports.
-    fn title(&self) -> &'static str;
-    /// The views this stage can show; the first is the main image.
-    fn views(&self) -> &'static [View];
-    /// Whether results carry per-bounce layers (chapter 6).
-    fn has_bounces(&self) -> bool {
-        false
-    }
-    /// Whether the main image holds radiance (then it is also written as EXR).
-    fn is_radiance(&self) -> bool {
-        false
-    }
-    /// Why this stage cannot render `scene`, if it cannot.
-    fn unsupported(&self, _scene: &Scene) -> Option<String> {
-        None
-    }
-    /// Prepares a render of `scene`. Cheap: the work happens in passes.
+    /// What the chapter is.
+    fn info(&self) -> ChapterInfo;
+    /// Prepares a render of `scene`, or says why this stage cannot render
+    /// it. Cheap: the work happens in passes.
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>>;
-    /// The estimators or samplers a front end may switch between (e.g.
-    /// "BRDF sampling", "light sampling", "MIS"); empty when the stage has
-    /// only one way of rendering. [`Chapter::start_variant`] takes an index
-    /// into this list.
-    fn variants(&self) -> &'static [View] {
-        &[]
+}
+
+/// What a driver needs between passes.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Pass {
+    /// Passes done.
+    pub done: u32,
+    /// Passes planned (at least `done`).
+    pub planned: u32,
+    /// Samples per pixel taken so far, for progressive stages; 0 for the
+    /// others.
+    pub samples: u32,
+    /// Rays traced so far; 0 when the stage does not count.
+    pub rays: u64,
+    /// The render's own estimate of the RMSE of view 0 against the
+    /// converged image, from its sample variance, with the mean value of
+    /// view 0 it is relative to: `(noise, mean)`. `None` when the stage
+    /// keeps no variance or has too few samples.
+    pub noise: Option<(f64, f64)>,
+    /// Whether the render is complete.
+    pub complete: bool,
+}
+
+/// Everything a front end shows, or the runner writes, of a render.
+#[derive(Clone, Debug, Default)]
+pub struct Snapshot {
+    /// Every view, in the order of [`ChapterInfo::views`], NaN/Inf removed.
+    pub views: Vec<Film>,
+    /// Per-bounce layers of the main image, for stages with bounces:
+    /// `layers[k]` holds the light that reached the camera after exactly
+    /// `k` bounces (`k = 0` is direct illumination, emitters seen directly
+    /// included), the last everything beyond; so the sum of
+    /// `layers[0..=k]` is the image "up to k bounces".
+    pub layers: Option<Vec<Film>>,
+    /// A reference for the main image (analytic, or a stored high-sample
+    /// render), the same size as view 0.
+    pub reference: Option<Film>,
+    /// The error of the main image against the reference as the render
+    /// went on: (seconds since the start, error) per pass, oldest first.
+    pub error_series: Vec<(f64, f64)>,
+    /// Where the render is.
+    pub pass: Pass,
+}
+
+impl Snapshot {
+    /// The RMSE of view 0 against the reference: the last point of the
+    /// error series where the stage keeps one (at the reference's own
+    /// resolution), else pixel by pixel when the sizes agree.
+    pub fn rmse(&self) -> Option<f64> {
+        self.error_series.last().map(|p| p.1).or_else(|| {
+            let (image, reference) = (self.views.first()?, self.reference.as_ref()?);
+            ((image.width, image.height) == (reference.width, reference.height))
+                .then(|| image.rmse(reference))
+        })
     }
-    /// The variant a front end opens with (index into
-    /// [`Chapter::variants`]): the best the stage has, while the others
-    /// stay one key away. 0 by default.
-    fn default_variant(&self) -> usize {
-        0
-    }
-    /// Whether the image keeps improving with more samples per pixel, so a
-    /// front end may go on rendering until a noise target or a sample
-    /// budget ([`Render::set_spp`], [`Render::noise`]). `false` by default.
-    fn progressive(&self) -> bool {
-        false
-    }
-    /// Like [`Chapter::start`], with the estimator or sampler
-    /// `variants()[variant]`. The default ignores `variant`, which is right
-    /// for stages without variants.
-    fn start_variant(
-        &self,
-        scene: Arc<Scene>,
-        settings: &Settings,
-        variant: usize,
-    ) -> Result<Box<dyn Render>> {
-        let _ = variant;
-        self.start(scene, settings)
-    }
+}
+
+/// What a render says about one pixel: lines of text, computed by the
+/// chapter's own code with the render's own world and settings.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Inspection {
+    /// The pixel.
+    pub pixel: (u32, u32),
+    /// The sample of that pixel the lines describe.
+    pub sample: u32,
+    /// The lines, for a panel.
+    pub lines: Vec<String>,
 }
 
 /// A render in progress.
 pub trait Render: Send {
-    /// Renders one more pass; returns `true` when the render is complete.
-    fn pass(&mut self) -> bool;
-    /// (passes done, passes planned).
-    fn progress(&self) -> (u32, u32);
-    /// The current image of a view (index into [`Chapter::views`]), with any
-    /// NaN or Inf already removed and counted.
-    fn view(&self, index: usize) -> Film;
+    /// Renders one more pass and says where the render is.
+    fn pass(&mut self) -> Pass;
+    /// Everything to show or write, as of now.
+    fn snapshot(&self) -> Snapshot;
     /// The report; with `settings.studies` it includes the error-against-time
     /// and stability studies, which may take a while.
     fn report(&self) -> Report;
-    /// Per-bounce layers of the main image, for stages with bounces
-    /// ([`Chapter::has_bounces`]): `layers[k]` holds the light that reached
-    /// the camera after exactly `k` bounces (`k = 0` is direct illumination,
-    /// emitters seen directly included), so the sum of `layers[0..=k]` is the
-    /// image "up to k bounces". Same size as view 0, NaN/Inf removed.
-    /// `None` (the default) for stages without bounces.
-    fn layers(&self) -> Option<Vec<Film>> {
-        None
-    }
-    /// A reference for the main image (analytic, or a stored high-sample
-    /// render), the same size as view 0, for compare and difference views
-    /// and the error shown while rendering. `None` (the default) when the
-    /// stage knows none.
-    fn reference(&self) -> Option<Film> {
-        None
-    }
-    /// The error of the main image against [`Render::reference`] as the
-    /// render went on: (seconds since the start, error) per pass so far,
-    /// oldest first. Empty (the default) when there is no reference.
-    fn error_series(&self) -> Vec<(f64, f64)> {
-        Vec::new()
-    }
-    /// Rays traced so far, for the status line; 0 when the stage does not
-    /// count. Stages count cheaply (e.g. per pass: pixels × samples done).
-    fn rays(&self) -> u64 {
-        0
-    }
-    /// Samples per pixel taken so far, for progressive stages
-    /// ([`Chapter::progressive`]); 0 (the default) for the others.
-    fn samples(&self) -> u32 {
-        0
-    }
-    /// The render's own estimate of the RMSE of view 0 against the
-    /// converged image, from its sample variance: √(mean over pixels and
-    /// channels of the variance of each pixel's mean), at the resolution
-    /// [`Render::error_series`] measures at. `None` (the default) when the
-    /// stage keeps no variance.
-    fn noise(&self) -> Option<f64> {
+    /// The story of sample `sample` of `pixel`, as this render traced it:
+    /// chapter 3 the primary ray's hit, chapter 4 the sphere-tracing steps,
+    /// chapter 5 each light's share, chapter 6 the path vertex by vertex.
+    /// `None` (the default) for stages without one, for a pixel outside the
+    /// image, or before the render has what it needs (its first pass).
+    fn inspect(&self, pixel: (u32, u32), sample: u32) -> Option<Inspection> {
+        let _ = (pixel, sample);
         None
     }
     /// Changes the sample target of a progressive render without starting
     /// over: [`Render::pass`] keeps going until `spp` samples per pixel (or
-    /// reports done at once when there are already that many). Ignored by
-    /// default.
+    /// reports it complete at once when there are already that many).
+    /// Ignored by default.
     fn set_spp(&mut self, spp: u32) {
         let _ = spp;
-    }
-
-    /// Files a headless run writes besides the views (and the EXR of a
-    /// radiance image): chapter 6's bounce strip and layers, say. `report`
-    /// is the report the run is about to print, so figures of its studies
-    /// need not run them again. Returns the paths written; none by default.
-    fn extra_files(
-        &self,
-        report: &Report,
-        dir: &std::path::Path,
-        stem: &str,
-    ) -> Result<Vec<std::path::PathBuf>> {
-        let _ = (report, dir, stem);
-        Ok(Vec::new())
     }
 }

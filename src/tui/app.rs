@@ -9,9 +9,9 @@ use std::path::PathBuf;
 pub use super::layers::{bounce_name, combine_layers, expose, BounceMode, Compare};
 pub use super::msg::Msg;
 use super::scenes::SceneEntry;
-use super::worker::{Job, Snapshot, Target};
+use super::worker::{Job, RenderState, Target};
 use crate::core::film::Film;
-use crate::core::stage::{Chapter, Settings};
+use crate::core::stage::{Chapter, Inspection, Settings};
 use crate::grading::FailureImages;
 
 /// The highest bounce count the bounce control steps to.
@@ -38,7 +38,7 @@ pub struct App {
     pub scene: usize,
     /// Which list the arrow keys move in.
     pub focus: Focus,
-    /// Selected view (index into [`Chapter::views`]).
+    /// Selected view (index into [`ChapterInfo::views`](crate::core::stage::ChapterInfo::views)).
     pub view: usize,
     /// Exposure in stops: the preview is scaled by 2^exposure.
     pub exposure: i32,
@@ -48,7 +48,7 @@ pub struct App {
     pub bounce_mode: BounceMode,
     /// Render, reference or difference.
     pub compare: Compare,
-    /// Selected estimator or sampler (index into [`Chapter::variants`]).
+    /// Selected estimator or sampler (index into [`ChapterInfo::variants`](crate::core::stage::ChapterInfo::variants)).
     pub variant: usize,
     /// Settings of the next render.
     pub settings: Settings,
@@ -59,7 +59,7 @@ pub struct App {
     /// Bumped whenever the render must restart.
     pub generation: u64,
     /// The newest pass of the current render.
-    pub snapshot: Option<Snapshot>,
+    pub snapshot: Option<RenderState>,
     /// Why the current render failed, if it did.
     pub failure: Option<String>,
     /// One line of feedback (e.g. what was saved).
@@ -91,7 +91,7 @@ pub struct App {
     pub picker: Option<ratatui_image::picker::Picker>,
     /// The path traced from the inspected pixel (`t`), as the panel shows
     /// it; cleared when the cursor moves or the render restarts.
-    pub trace: Option<Box<super::trace::PathTable>>,
+    pub trace: Option<Box<Inspection>>,
     /// Asks the event loop to trace sample `.2` of pixel (`.0`, `.1`).
     pub trace_requested: Option<(u32, u32, u32)>,
     /// How many paths `t` has traced at this pixel (the next one traces
@@ -110,7 +110,7 @@ impl App {
         mut scenes: Vec<SceneEntry>,
         color: bool,
     ) -> App {
-        let variant = chapters.first().map_or(0, |c| c.default_variant());
+        let variant = chapters.first().map_or(0, |c| c.info().default_variant);
         // The first entry is shown at once: read it now.
         if let Some(first) = scenes.first_mut() {
             first.ensure_loaded();
@@ -173,9 +173,9 @@ impl App {
         self.scenes.get(self.scene)
     }
 
-    /// Why `chapter` cannot render scene `index`, if it cannot (a load
-    /// error, or [`Chapter::unsupported`]).
-    pub fn scene_problem(&self, chapter: &dyn Chapter, index: usize) -> Option<String> {
+    /// Why scene `index` cannot be rendered, if it cannot (its load error;
+    /// a stage that refuses a scene says so when it starts).
+    pub fn scene_problem(&self, index: usize) -> Option<String> {
         let entry = self.scenes.get(index)?;
         if entry.pending.is_some() {
             // Not read yet: nothing known against it.
@@ -183,16 +183,16 @@ impl App {
         }
         match &entry.scene {
             Err(e) => Some(e.clone()),
-            Ok(scene) => chapter.unsupported(scene),
+            Ok(_) => None,
         }
     }
 
     /// Why the current selection cannot render, if it cannot.
     pub fn problem(&self) -> Option<String> {
-        let Some(chapter) = self.current_chapter() else {
+        if self.current_chapter().is_none() {
             return Some("no chapters".into());
-        };
-        self.scene_problem(chapter, self.scene)
+        }
+        self.scene_problem(self.scene)
     }
 
     /// The render job for the current selection, or `None` when it cannot
@@ -215,23 +215,23 @@ impl App {
 
     /// Whether `t` traces paths here: chapter 6 (the path tracer).
     pub fn traces_paths(&self) -> bool {
-        self.current_chapter().is_some_and(|c| c.number() == 6) && self.grading.is_none()
+        self.current_chapter().is_some_and(|c| c.info().number == 6) && self.grading.is_none()
     }
 
     /// Whether the selected chapter renders progressively to a target.
     pub fn progressive(&self) -> bool {
-        self.current_chapter().is_some_and(|c| c.progressive())
+        self.current_chapter().is_some_and(|c| c.info().progressive)
     }
 
     /// The selected estimator or sampler's step on the ladder, in the
     /// lecture's words: "step 8/8: importance sampling according to …".
     pub fn variant_label(&self) -> Option<String> {
         let c = self.current_chapter()?;
-        let v = c.variants().get(self.variant)?;
+        let v = c.info().variants.get(self.variant)?;
         Some(format!(
             "step {}/{}: {}",
             self.variant + 1,
-            c.variants().len(),
+            c.info().variants.len(),
             v.about
         ))
     }
@@ -256,7 +256,7 @@ impl App {
     /// Whether the bounce control is shown: the chapter has bounces and the
     /// render delivered layers.
     pub fn shows_bounces(&self) -> bool {
-        self.current_chapter().is_some_and(|c| c.has_bounces())
+        self.current_chapter().is_some_and(|c| c.info().bounces)
             && self.snapshot.as_ref().is_some_and(|s| s.layers.is_some())
     }
 
@@ -284,7 +284,7 @@ impl App {
     /// The name of the selected view.
     pub fn view_name(&self) -> &'static str {
         self.current_chapter()
-            .and_then(|c| c.views().get(self.view))
+            .and_then(|c| c.info().views.get(self.view))
             .map(|v| v.name)
             .unwrap_or("-")
     }
@@ -352,7 +352,7 @@ impl App {
             let id = r.id.replace('/', "-");
             return format!("tui-student-{id}-{}", self.compare_name());
         }
-        let chapter = self.current_chapter().map(|c| c.number()).unwrap_or(0);
+        let chapter = self.current_chapter().map(|c| c.info().number).unwrap_or(0);
         let scene = self
             .current_scene()
             .and_then(|s| s.scene.as_ref().ok())
@@ -386,7 +386,7 @@ impl App {
         self.story = None;
         let (views, variants) = self
             .current_chapter()
-            .map(|c| (c.views().len(), c.variants().len()))
+            .map(|c| (c.info().views.len(), c.info().variants.len()))
             .unwrap_or((1, 0));
         if self.view >= views {
             self.view = 0;
@@ -402,7 +402,7 @@ impl App {
             // Views and estimators differ between chapters: start at the
             // first view and the chapter's best estimator.
             self.view = 0;
-            self.variant = self.chapters[index].default_variant();
+            self.variant = self.chapters[index].info().default_variant;
             self.compare = Compare::Render;
             self.restart();
         }

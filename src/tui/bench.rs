@@ -51,7 +51,7 @@ pub fn run(
     let mut rows = Vec::new();
     for (index, chapter) in chapters.iter().enumerate() {
         let t0 = if index == 0 { started } else { Instant::now() };
-        app = update(app, Msg::ChapterNumber(chapter.number()));
+        app = update(app, Msg::ChapterNumber(chapter.info().number));
         let Some(job) = app.job() else { continue };
         worker.start(job);
         // Wait for the first pass of this generation, then draw once.
@@ -85,8 +85,8 @@ pub fn run(
             .map_or("-".to_string(), |f| format!("{}x{}", f.width, f.height));
         rows.push(format!(
             "| ch{} {} | {size} | {:.1} | {mean:.2} | {median:.2} | {p95:.2} | {max:.2} |",
-            chapter.number(),
-            chapter.slug(),
+            chapter.info().number,
+            chapter.info().slug,
             first.as_secs_f64() * 1e3,
         ));
     }

@@ -36,7 +36,7 @@ pub fn inspect_lines(app: &App) -> Vec<String> {
         return Vec::new();
     };
     let mut lines = vec![format!("pixel ({x}, {y})")];
-    for (view, film) in chapter.views().iter().zip(&snap.views) {
+    for (view, film) in chapter.info().views.iter().zip(&snap.views) {
         if let Some(v) = rgb(film, x, y) {
             let name = match view.name {
                 "stderr" => "± std error",
@@ -153,7 +153,7 @@ pub fn draw_table(app: &App, frame: &mut Frame, area: Rect) {
     let Some(t) = &app.trace else { return };
     let title = format!(
         "path: sample {} of pixel ({}, {}) (t: next)",
-        t.record.sample, t.record.pixel.0, t.record.pixel.1
+        t.sample, t.pixel.0, t.pixel.1
     );
     let lines: Vec<Line> = t.lines.iter().map(|l| Line::from(l.as_str())).collect();
     frame.render_widget(

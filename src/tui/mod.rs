@@ -26,10 +26,8 @@ pub mod msg;
 pub mod picture;
 pub mod scenes;
 pub mod screen;
-pub mod story;
 pub mod student;
 pub mod target;
-pub mod trace;
 pub mod update;
 pub mod view;
 pub mod worker;
@@ -52,7 +50,7 @@ use ratatui::Terminal;
 
 use app::{App, Msg};
 use update::{save, update};
-use worker::Worker;
+use worker::{Purpose, Worker};
 
 /// Shortest time between two redraws (about 30 per second).
 pub const FRAME: Duration = Duration::from_millis(33);
@@ -201,9 +199,10 @@ fn event_loop(
     let mut sent_paused = false;
     let mut dirty = true;
     let mut last_draw: Option<Instant> = None;
-    // What inspect mode traces in, built once per scene.
-    let (mut worlds, mut geometries) = (trace::Cache::default(), story::GeometryCache::default());
+    // The inspections last asked of the render (it answers through the
+    // worker: the UI never traces a ray itself).
     let mut story_key = None;
+    let mut sent_trace = None;
     // When the current scene's file was last looked at for edits.
     let mut checked = Instant::now();
     loop {
@@ -251,23 +250,11 @@ fn event_loop(
                 dirty = true;
             }
         }
-        if let Some((x, y, sample)) = app.trace_requested {
-            let result = match app.current_scene().map(|s| s.scene.clone()) {
-                Some(Ok(scene)) => {
-                    let world = worlds.world(&scene);
-                    trace::trace_table(
-                        &scene,
-                        world,
-                        app.variant,
-                        app.settings.seed,
-                        (x, y),
-                        sample,
-                    )
-                }
-                _ => Err("no scene".into()),
-            };
-            app = update(app, Msg::Traced(result.map(Box::new)));
-            dirty = true;
+        if app.trace_requested != sent_trace {
+            sent_trace = app.trace_requested;
+            if let Some((x, y, sample)) = app.trace_requested {
+                worker.inspect(sent, (x, y), sample, Purpose::Trace);
+            }
         }
         let key = (
             app.inspect,
@@ -278,24 +265,8 @@ fn event_loop(
         );
         if app.inspect.is_some() && app.snapshot.is_some() && story_key != Some(key) {
             story_key = Some(key);
-            if let (Some(c), Some(Ok(scene)), Some(p)) = (
-                app.current_chapter(),
-                app.current_scene().map(|s| s.scene.clone()),
-                app.inspect,
-            ) {
-                let lines = story::story_lines(
-                    c.number(),
-                    &scene,
-                    &app.settings,
-                    app.variant,
-                    p,
-                    &mut worlds,
-                    &mut geometries,
-                );
-                if let Some(lines) = lines {
-                    app = update(app, Msg::Story(p.0, p.1, lines));
-                    dirty = true;
-                }
+            if let (Some(p), false) = (app.inspect, app.traces_paths()) {
+                worker.inspect(sent, p, 0, Purpose::Story);
             }
         }
         if app.quit {

@@ -52,7 +52,7 @@ pub enum Msg {
     /// Trace one path from the inspected pixel (the next sample each time).
     TracePath,
     /// The traced path, or why there is none.
-    Traced(Result<Box<super::trace::PathTable>, String>),
+    Traced(Result<Box<crate::core::stage::Inspection>, String>),
     /// The story of the inspected pixel (chapters 3 to 5): pixel, lines.
     Story(u32, u32, Vec<String>),
     /// A mouse click at terminal cell (`column`, `row`) of a terminal of

@@ -11,7 +11,7 @@ use std::path::PathBuf;
 
 use super::app::*;
 use super::student::{StudentEvent, StudentMode};
-use super::worker::Progress;
+use super::worker::{Progress, Purpose};
 use crate::grading::live::{capstone, LiveError};
 
 /// The next state of the UI after `msg`.
@@ -47,12 +47,14 @@ pub fn update(mut app: App, msg: Msg) -> App {
             }
         }
         Msg::ChapterNumber(n) => {
-            if let Some(i) = app.chapters.iter().position(|c| c.number() == n) {
+            if let Some(i) = app.chapters.iter().position(|c| c.info().number == n) {
                 app.select_chapter(i);
             }
         }
         Msg::NextView | Msg::PrevView => {
-            let n = app.current_chapter().map_or(1, |c| c.views().len().max(1));
+            let n = app
+                .current_chapter()
+                .map_or(1, |c| c.info().views.len().max(1));
             app.view = match msg {
                 Msg::NextView => (app.view + 1) % n,
                 _ => (app.view + n - 1) % n,
@@ -92,7 +94,7 @@ pub fn update(mut app: App, msg: Msg) -> App {
             }
         }
         Msg::NextVariant | Msg::PrevVariant => {
-            let n = app.current_chapter().map_or(0, |c| c.variants().len());
+            let n = app.current_chapter().map_or(0, |c| c.info().variants.len());
             if n > 1 {
                 app.variant = match msg {
                     Msg::NextVariant => (app.variant + 1) % n,
@@ -172,10 +174,10 @@ pub fn update(mut app: App, msg: Msg) -> App {
         Msg::Traced(result) => {
             app.trace_requested = None;
             match result {
-                Ok(t) if Some(t.record.pixel) == app.inspect => {
+                Ok(t) if Some(t.pixel) == app.inspect => {
                     app.message = format!(
                         "traced sample {} of pixel ({}, {}) (t: the next sample)",
-                        t.record.sample, t.record.pixel.0, t.record.pixel.1
+                        t.sample, t.pixel.0, t.pixel.1
                     );
                     app.trace = Some(t);
                 }
@@ -248,8 +250,22 @@ pub fn update(mut app: App, msg: Msg) -> App {
         Msg::ToggleHelp => app.help = !app.help,
         Msg::Quit => app.quit = true,
         Msg::Progress(p) if p.generation() == app.generation => match p {
-            Progress::Snapshot(s) => app.snapshot = Some(*s),
+            Progress::State(s) => app.snapshot = Some(*s),
             Progress::Failed { message, .. } => app.failure = Some(message),
+            Progress::Inspected {
+                purpose: Purpose::Trace,
+                result,
+                ..
+            } => return update(app, Msg::Traced(result.map(Box::new))),
+            Progress::Inspected {
+                purpose: Purpose::Story,
+                result,
+                ..
+            } => {
+                if let Ok(i) = result {
+                    app.story = Some((i.pixel.0, i.pixel.1, i.lines));
+                }
+            }
         },
         // A pass of a render that has been replaced: dropped.
         Msg::Progress(_) => {}
@@ -271,7 +287,7 @@ fn toggle_student(app: &mut App) {
 
 /// Student mode for the current chapter, or a message why there is none.
 fn start_student(app: &mut App) {
-    let n = app.current_chapter().map_or(0, |c| c.number());
+    let n = app.current_chapter().map_or(0, |c| c.info().number);
     let Some(ex) = capstone(n) else {
         app.student = None;
         app.message = format!("chapter {n} has no capstone for student mode");
@@ -328,7 +344,7 @@ fn student_event(app: &mut App, chapter: u32, event: StudentEvent) {
 
 /// Student mode follows the selected chapter.
 fn student_follows_chapter(app: &mut App) {
-    let n = app.current_chapter().map_or(0, |c| c.number());
+    let n = app.current_chapter().map_or(0, |c| c.info().number);
     if app.student.as_ref().is_some_and(|s| s.chapter != n) {
         start_student(app);
     }

@@ -87,7 +87,7 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         .scenes
         .iter()
         .enumerate()
-        .map(|(i, _)| 1 + u16::from(chapter.is_some_and(|c| app.scene_problem(c, i).is_some())))
+        .map(|(i, _)| 1 + u16::from(chapter.is_some() && app.scene_problem(i).is_some()))
         .sum();
     let [chapters, scenes, ctrl, rest] = Layout::vertical([
         Constraint::Length(app.chapters.len() as u16 + 2),
@@ -100,7 +100,7 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
     let items: Vec<ListItem> = app
         .chapters
         .iter()
-        .map(|c| ListItem::new(format!("{} {}", c.number(), c.title())))
+        .map(|c| ListItem::new(format!("{} {}", c.info().number, c.info().title)))
         .collect();
     let highlight = Style::default().add_modifier(Modifier::BOLD);
     let list = List::new(items)
@@ -114,16 +114,14 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         .scenes
         .iter()
         .enumerate()
-        .map(
-            |(i, s)| match chapter.and_then(|c| app.scene_problem(c, i)) {
-                None => ListItem::new(escape(&s.name).into_owned()),
-                Some(why) => ListItem::new(vec![
-                    Line::from(format!("✗ {}", escape(&s.name))),
-                    Line::from(format!("  {}", escape(&why.to_string()))),
-                ])
-                .style(fg(app, Color::DarkGray)),
-            },
-        )
+        .map(|(i, s)| match chapter.and_then(|_| app.scene_problem(i)) {
+            None => ListItem::new(escape(&s.name).into_owned()),
+            Some(why) => ListItem::new(vec![
+                Line::from(format!("✗ {}", escape(&s.name))),
+                Line::from(format!("  {}", escape(&why.to_string()))),
+            ])
+            .style(fg(app, Color::DarkGray)),
+        })
         .collect();
     let list = List::new(items)
         .block(block(app, "scenes", app.focus == Focus::Scenes))
@@ -150,7 +148,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
         lines.push(Line::from(format!(
             "view {}/{}: {}",
             app.view + 1,
-            c.views().len(),
+            c.info().views.len(),
             app.view_name()
         )));
     }
@@ -177,11 +175,11 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
         lines.push(Line::from(format!("compare: {}", app.compare_name())));
     }
     if let Some(c) = app.current_chapter() {
-        if let Some(v) = c.variants().get(app.variant) {
+        if let Some(v) = c.info().variants.get(app.variant) {
             lines.push(Line::from(format!(
                 "estimator {}/{}: {}",
                 app.variant + 1,
-                c.variants().len(),
+                c.info().variants.len(),
                 v.name
             )));
         }
@@ -219,7 +217,12 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
         (Some(g), _) => format!("grade · {} · {}", g.stem, app.compare_name()),
         (None, _) if app.student.is_some() => student_title(app),
         (None, Some(c)) => {
-            let mut t = format!("ch{} {} · {}", c.number(), c.slug(), app.view_name());
+            let mut t = format!(
+                "ch{} {} · {}",
+                c.info().number,
+                c.info().slug,
+                app.view_name()
+            );
             if app.picker.is_some() {
                 t += &format!(" · {}", app.graphics.name());
             }
@@ -347,7 +350,7 @@ pub fn format_rate(rate: f64) -> String {
 pub fn status_line(app: &App) -> Line<'static> {
     let mut parts: Vec<String> = Vec::new();
     if let Some(c) = app.current_chapter() {
-        parts.push(format!("ch{} {}", c.number(), c.slug()));
+        parts.push(format!("ch{} {}", c.info().number, c.info().slug));
     }
     if let Some(s) = app.current_scene() {
         // The scene's own name ("(built-in)" is in the scene list).

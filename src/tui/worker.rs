@@ -1,5 +1,5 @@
 //! The render worker: one thread that owns the current [`Render`] and runs
-//! its passes, sending a [`Snapshot`] after each one (at most every
+//! its passes, sending a [`RenderState`] after each one (at most every
 //! [`SNAPSHOT_EVERY`], and always after the first and the last). The UI
 //! thread never waits for it; it only reads the channel.
 //!
@@ -8,7 +8,7 @@
 //! its result is not sent), and the UI ignores any snapshot whose
 //! generation is not its own, so a stale pass never reaches the screen.
 //!
-//! A progressive stage ([`Chapter::progressive`]) renders to a [`Target`]:
+//! A progressive stage ([`ChapterInfo::progressive`](crate::core::stage::ChapterInfo::progressive)) renders to a [`Target`]:
 //! until its own noise estimate is below the target's level, or the sample
 //! budget is spent, whichever comes first ([`finished`]). The UI can pause
 //! and resume it and move the target without starting over
@@ -22,7 +22,7 @@ use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use crate::core::film::Film;
-use crate::core::stage::{Chapter, Render, Settings};
+use crate::core::stage::{Chapter, Inspection, Render, Settings};
 use crate::scene::Scene;
 
 pub use super::target::{finished, Finish, Target, MIN_SPP_FOR_NOISE};
@@ -42,7 +42,7 @@ pub struct Job {
     pub scene: Arc<Scene>,
     /// The settings.
     pub settings: Settings,
-    /// Index into [`Chapter::variants`] (0 when there are none).
+    /// Index into [`ChapterInfo::variants`](crate::core::stage::ChapterInfo::variants) (0 when there are none).
     pub variant: usize,
     /// For a progressive stage, how far to go (the settings' `spp` is then
     /// ignored); `None`: the stage's own plan.
@@ -51,16 +51,16 @@ pub struct Job {
 
 /// Everything the UI shows of a render after one pass.
 #[derive(Clone, Debug)]
-pub struct Snapshot {
+pub struct RenderState {
     /// The generation of the job this comes from.
     pub generation: u64,
-    /// Every view of the chapter, in the order of [`Chapter::views`].
+    /// Every view of the chapter, in the order of [`ChapterInfo::views`](crate::core::stage::ChapterInfo::views).
     pub views: Vec<Film>,
-    /// Per-bounce layers ([`Render::layers`]).
+    /// Per-bounce layers ([`Snapshot::layers`](crate::core::stage::Snapshot::layers)).
     pub layers: Option<Vec<Film>>,
-    /// The reference ([`Render::reference`]).
+    /// The reference ([`Snapshot::reference`](crate::core::stage::Snapshot::reference)).
     pub reference: Option<Film>,
-    /// Error against time ([`Render::error_series`]).
+    /// Error against time ([`Snapshot::error_series`](crate::core::stage::Snapshot::error_series)).
     pub error_series: Vec<(f64, f64)>,
     /// RMSE of view 0 against the reference, when there is one: the last
     /// point of the error series where the stage keeps one (at the
@@ -68,9 +68,9 @@ pub struct Snapshot {
     pub rmse: Option<f64>,
     /// (passes done, passes planned).
     pub progress: (u32, u32),
-    /// Samples per pixel so far ([`Render::samples`]).
+    /// Samples per pixel so far ([`Pass::samples`](crate::core::stage::Pass::samples)).
     pub samples: u32,
-    /// The render's own noise estimate ([`Render::noise`]).
+    /// The render's own noise estimate ([`Pass::noise`](crate::core::stage::Pass::noise)).
     pub noise: Option<f64>,
     /// The mean value of view 0 over pixels and channels.
     pub mean: f64,
@@ -78,7 +78,7 @@ pub struct Snapshot {
     pub target: Option<Target>,
     /// Time spent rendering (pauses not counted).
     pub elapsed: Duration,
-    /// Rays traced so far ([`Render::rays`]; 0 when the stage does not count).
+    /// Rays traced so far ([`Pass::rays`](crate::core::stage::Pass::rays); 0 when the stage does not count).
     pub rays: u64,
     /// Whether the render is complete.
     pub done: bool,
@@ -86,40 +86,31 @@ pub struct Snapshot {
     pub finish: Option<Finish>,
 }
 
-impl Snapshot {
+impl RenderState {
     /// Reads everything the UI needs from `render`.
     pub fn capture(
-        chapter: &dyn Chapter,
         render: &dyn Render,
         generation: u64,
         elapsed: Duration,
         done: bool,
-    ) -> Snapshot {
-        let views: Vec<Film> = (0..chapter.views().len().max(1))
-            .map(|i| render.view(i))
-            .collect();
-        let reference = render.reference();
-        let error_series = render.error_series();
-        let rmse = error_series.last().map(|p| p.1).or_else(|| {
-            reference
-                .as_ref()
-                .filter(|r| (r.width, r.height) == (views[0].width, views[0].height))
-                .map(|r| views[0].rmse(r))
-        });
-        let mean = film_mean(&views[0]);
-        Snapshot {
+    ) -> RenderState {
+        let snap = render.snapshot();
+        let rmse = snap.rmse();
+        let mean = snap.views.first().map_or(0.0, film_mean);
+        let pass = snap.pass;
+        RenderState {
             generation,
-            layers: render.layers(),
-            error_series,
-            reference,
+            layers: snap.layers,
+            error_series: snap.error_series,
+            reference: snap.reference,
             rmse,
-            views,
-            progress: render.progress(),
-            samples: render.samples(),
-            noise: render.noise(),
+            views: snap.views,
+            progress: (pass.done, pass.planned),
+            samples: pass.samples,
+            noise: pass.noise.map(|(n, _)| n),
             mean,
             target: None,
-            rays: render.rays(),
+            rays: pass.rays,
             elapsed,
             done,
             finish: done.then_some(Finish::Complete),
@@ -134,20 +125,12 @@ impl Snapshot {
     }
 }
 
-/// The mean over pixels and channels.
-pub fn film_mean(film: &Film) -> f64 {
-    let n = film.pixels.len().max(1) as f64 * 3.0;
-    film.pixels
-        .iter()
-        .map(|p| p.as_dvec3().element_sum())
-        .sum::<f64>()
-        / n
-}
+pub use crate::core::film::film_mean;
 
 /// Name of the worker thread (the panic hook uses it).
 pub const THREAD_NAME: &str = "raystep-render";
 
-impl Snapshot {
+impl RenderState {
     /// Rays per second since the render started, when the stage counts
     /// rays and some time has passed.
     pub fn rays_per_second(&self) -> Option<f64> {
@@ -160,7 +143,16 @@ impl Snapshot {
 #[derive(Clone, Debug)]
 pub enum Progress {
     /// A pass finished.
-    Snapshot(Box<Snapshot>),
+    State(Box<RenderState>),
+    /// The answer to [`Worker::inspect`].
+    Inspected {
+        /// The generation of the job.
+        generation: u64,
+        /// What the inspection is for.
+        purpose: Purpose,
+        /// The render's answer, or why there is none.
+        result: Result<Inspection, String>,
+    },
     /// The render could not start, or a pass panicked.
     Failed {
         /// The generation of the job.
@@ -174,17 +166,41 @@ impl Progress {
     /// The generation this report belongs to.
     pub fn generation(&self) -> u64 {
         match self {
-            Progress::Snapshot(s) => s.generation,
-            Progress::Failed { generation, .. } => *generation,
+            Progress::State(s) => s.generation,
+            Progress::Inspected { generation, .. } | Progress::Failed { generation, .. } => {
+                *generation
+            }
         }
     }
+}
+
+/// What an inspection is for: the story shown beside the inspected pixel,
+/// or the path table (`t`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Purpose {
+    /// The inspect panel's story lines.
+    Story,
+    /// The traced path's table.
+    Trace,
 }
 
 /// What the UI tells the worker.
 enum Command {
     Start(Job),
-    Retarget { generation: u64, target: Target },
-    Pause { generation: u64, paused: bool },
+    Inspect {
+        generation: u64,
+        pixel: (u32, u32),
+        sample: u32,
+        purpose: Purpose,
+    },
+    Retarget {
+        generation: u64,
+        target: Target,
+    },
+    Pause {
+        generation: u64,
+        paused: bool,
+    },
 }
 
 /// The worker thread and its two channels.
@@ -228,6 +244,18 @@ impl Worker {
         self.send(Command::Retarget { generation, target });
     }
 
+    /// Asks render `generation` what happened at sample `sample` of `pixel`
+    /// ([`Render::inspect`]); the answer comes back as
+    /// [`Progress::Inspected`] after the pass under way.
+    pub fn inspect(&self, generation: u64, pixel: (u32, u32), sample: u32, purpose: Purpose) {
+        self.send(Command::Inspect {
+            generation,
+            pixel,
+            sample,
+            purpose,
+        });
+    }
+
     /// Pauses or resumes render `generation` (ignored for another).
     pub fn pause(&self, generation: u64, paused: bool) {
         self.send(Command::Pause { generation, paused });
@@ -264,14 +292,9 @@ struct Current {
 }
 
 impl Current {
-    fn snapshot(&self) -> Snapshot {
-        let mut snap = Snapshot::capture(
-            self.job.chapter,
-            &*self.render,
-            self.job.generation,
-            self.active,
-            self.done,
-        );
+    fn snapshot(&self) -> RenderState {
+        let mut snap =
+            RenderState::capture(&*self.render, self.job.generation, self.active, self.done);
         snap.target = self.job.target;
         if let (true, Some(t)) = (self.done, &self.job.target) {
             snap.finish = finished(t, snap.samples, snap.noise, snap.mean).or(snap.finish);
@@ -286,12 +309,12 @@ fn start(job: Job, results: &Sender<Progress>) -> Option<Current> {
         message,
     };
     let mut settings = job.settings.clone();
+    settings.variant = Some(job.variant);
     if let Some(t) = &job.target {
         settings.spp = t.spp.max(1);
     }
     let render = catch_unwind(AssertUnwindSafe(|| {
-        job.chapter
-            .start_variant(job.scene.clone(), &settings, job.variant)
+        job.chapter.start(job.scene.clone(), &settings)
     }));
     match render {
         Ok(Ok(render)) => Some(Current {
@@ -353,11 +376,33 @@ fn work(commands: Receiver<Command>, results: Sender<Progress>) {
                     // Go on (or stop at once, if already past it).
                     cur.done = false;
                 }
+                Command::Inspect {
+                    generation,
+                    pixel,
+                    sample,
+                    purpose,
+                } if generation == cur.job.generation => {
+                    let answer =
+                        catch_unwind(AssertUnwindSafe(|| cur.render.inspect(pixel, sample)));
+                    let result = match answer {
+                        Ok(Some(i)) => Ok(i),
+                        Ok(None) => Err("nothing to inspect here yet".to_string()),
+                        Err(p) => Err(format!("the stage panicked: {}", panic_message(&*p))),
+                    };
+                    let inspected = Progress::Inspected {
+                        generation,
+                        purpose,
+                        result,
+                    };
+                    if results.send(inspected).is_err() {
+                        return;
+                    }
+                }
                 Command::Pause { generation, paused } if generation == cur.job.generation => {
                     cur.paused = paused;
                     if paused
                         && results
-                            .send(Progress::Snapshot(Box::new(cur.snapshot())))
+                            .send(Progress::State(Box::new(cur.snapshot())))
                             .is_err()
                     {
                         return;
@@ -374,15 +419,11 @@ fn work(commands: Receiver<Command>, results: Sender<Progress>) {
         }
         let t = Instant::now();
         let pass = catch_unwind(AssertUnwindSafe(|| {
-            let mut done = cur.render.pass();
+            let pass = cur.render.pass();
+            let mut done = pass.complete;
             if let (false, Some(target)) = (done, &cur.job.target) {
-                // The noise costs a pass over the image: only once trusted.
-                let samples = cur.render.samples();
-                let noise = (samples >= MIN_SPP_FOR_NOISE && target.noise.is_some())
-                    .then(|| cur.render.noise())
-                    .flatten();
-                let mean = noise.map_or(0.0, |_| film_mean(&cur.render.view(0)));
-                done = finished(target, samples, noise, mean).is_some();
+                let (noise, mean) = pass.noise.map_or((None, 0.0), |(n, m)| (Some(n), m));
+                done = finished(target, pass.samples, noise, mean).is_some();
             }
             done
         }));
@@ -401,7 +442,7 @@ fn work(commands: Receiver<Command>, results: Sender<Progress>) {
                         current = None;
                         continue;
                     };
-                    if results.send(Progress::Snapshot(Box::new(snap))).is_err() {
+                    if results.send(Progress::State(Box::new(snap))).is_err() {
                         return;
                     }
                     cur.sent = Some(Instant::now());

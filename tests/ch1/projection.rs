@@ -26,8 +26,8 @@ fn render_report(scene: Scene, studies: bool) -> (Report, Vec<raystep::core::fil
         ..Settings::default()
     };
     let mut r = Projection.start(Arc::new(scene), &settings).unwrap();
-    assert!(r.pass(), "chapter 1 renders in one pass");
-    let films = (0..Projection.views().len()).map(|i| r.view(i)).collect();
+    assert!(r.pass().complete, "chapter 1 renders in one pass");
+    let films = r.snapshot().views;
     (r.report(), films)
 }
 

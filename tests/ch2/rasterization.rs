@@ -271,7 +271,7 @@ fn report_lists_mesh_checks_and_what_was_built() {
         ..Settings::default()
     };
     let mut r = Rasterization::default().start(s, &settings).unwrap();
-    while !r.pass() {}
+    while !r.pass().complete {}
     let report = r.report();
     assert!(report.built.iter().any(|b| b.contains("vertex-colour")));
     assert!(report
@@ -313,7 +313,7 @@ fn report_lists_mesh_checks_and_what_was_built() {
         cull_back_faces: true,
     };
     let mut r = chapter.start(Arc::new(s2), &Settings::default()).unwrap();
-    while !r.pass() {}
+    while !r.pass().complete {}
     let report = r.report();
     assert!(
         report

@@ -228,8 +228,8 @@ fn a_scene_without_meshes_builds_no_bvh() {
         let mut r = RayTriangle
             .start(Arc::new(scene), &Settings::default())
             .unwrap();
-        while !r.pass() {}
-        (r.report(), r.view(0))
+        while !r.pass().complete {}
+        (r.report(), r.snapshot().views[0].clone())
     };
     let (r, film) = report(empty);
     assert!(r.left_out.iter().any(|s| s.starts_with("BVH")), "{r:?}");

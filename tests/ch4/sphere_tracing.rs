@@ -39,8 +39,8 @@ fn render(stage: &SphereTracing, scene: Scene, studies: bool) -> (Report, Vec<Fi
         ..Settings::default()
     };
     let mut r = stage.start(Arc::new(scene), &settings).unwrap();
-    assert!(r.pass());
-    let films = (0..stage.views().len()).map(|i| r.view(i)).collect();
+    assert!(r.pass().complete);
+    let films = r.snapshot().views;
     (r.report(), films)
 }
 

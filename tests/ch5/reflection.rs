@@ -23,8 +23,8 @@ fn render(stage: &Reflection, scene: Scene, spp: u32) -> (Film, Report) {
         ..Settings::default()
     };
     let mut r = stage.start(Arc::new(scene), &settings).unwrap();
-    while !r.pass() {}
-    (r.view(0), r.report())
+    while !r.pass().complete {}
+    (r.snapshot().views[0].clone(), r.report())
 }
 
 /// Block means of the image, 2 significant decimals, as text.

@@ -304,7 +304,7 @@ fn the_stage_reports_what_it_built_and_left_out() {
     };
     let cornell = Arc::new(Scene::builtin().with_resolution(16, 16).unwrap());
     let mut r = DEFAULT.start(cornell, &settings).unwrap();
-    while !r.pass() {}
+    while !r.pass().complete {}
     let rep = r.report();
     let built = rep.built.join("\n");
     let left = rep.left_out.join("\n");
@@ -322,8 +322,8 @@ fn the_stage_reports_what_it_built_and_left_out() {
     let mut r = stage
         .start(Arc::new(scenes::open_furnace(0.5, 8, Some(1.5))), &settings)
         .unwrap();
-    while !r.pass() {}
-    assert!(r.layers().is_none());
+    while !r.pass().complete {}
+    assert!(r.snapshot().layers.is_none());
     let rep = r.report();
     assert!(rep.left_out.join("\n").contains("only the final image"));
     assert!(rep
@@ -337,7 +337,7 @@ fn the_stage_reports_what_it_built_and_left_out() {
         .with_variant(0)
         .start(Arc::new(scenes::open_furnace(0.5, 8, None)), &settings)
         .unwrap();
-    while !r.pass() {}
+    while !r.pass().complete {}
     assert!(r
         .report()
         .left_out
@@ -349,10 +349,10 @@ fn the_stage_reports_what_it_built_and_left_out() {
 fn the_stage_boundary_gives_layers_that_sum_to_the_image_and_an_error_series() {
     let ch = raystep::chapters::all()
         .into_iter()
-        .find(|c| c.number() == 6)
+        .find(|c| c.info().number == 6)
         .expect("chapter 6 is registered");
-    assert!(ch.has_bounces() && ch.is_radiance());
-    assert_eq!(ch.variants().len(), 8);
+    assert!(ch.info().bounces && ch.info().radiance);
+    assert_eq!(ch.info().variants.len(), 8);
     let r = cornell_reference();
     let scene = Arc::new(
         Scene::builtin()
@@ -361,26 +361,28 @@ fn the_stage_boundary_gives_layers_that_sum_to_the_image_and_an_error_series() {
     );
     let settings = Settings {
         spp: 2,
+        variant: Some(7),
         ..Settings::default()
     };
-    let mut render = ch.start_variant(scene, &settings, 7).unwrap();
+    let mut render = ch.start(scene, &settings).unwrap();
     let mut passes = 0;
-    while !render.pass() {
+    while !render.pass().complete {
         passes += 1;
     }
     assert_eq!(passes, 1, "2 spp: the first passes take 1 and 1 spp");
-    assert_eq!(render.samples(), 2);
-    assert_eq!(render.progress(), (2, 2));
-    let layers = render.layers().unwrap();
+    let snap = render.snapshot();
+    assert_eq!(snap.pass.samples, 2);
+    assert_eq!((snap.pass.done, snap.pass.planned), (2, 2));
+    let layers = snap.layers.clone().unwrap();
     assert_eq!(layers.len(), LAYER_SLOTS - 1);
-    let image = render.view(0);
+    let image = snap.views[0].clone();
     let i = image.pixels.len() / 2 + 7;
     let sum: Vec3 = layers.iter().map(|l| l.pixels[i]).sum();
     assert!((sum - image.pixels[i]).abs().max_element() < 1e-4);
-    let series = render.error_series();
+    let series = snap.error_series.clone();
     assert_eq!(series.len(), 2, "one point per pass");
     assert!(series[0].1 > 0.0 && series[0].1 < 1.0, "{series:?}");
-    assert_eq!(render.reference().unwrap().width, image.width);
+    assert_eq!(snap.reference.unwrap().width, image.width);
     // Downsampling keeps the mean.
     let d = downsample(&image, 2);
     let m = |f: &raystep::core::film::Film| f.pixels.iter().sum::<Vec3>() / f.pixels.len() as f32;
@@ -398,9 +400,9 @@ fn the_image_does_not_depend_on_how_samples_are_split_into_passes() {
         let mut stage = DEFAULT;
         stage.spp_per_pass = per_pass;
         let mut r = stage.start(scene.clone(), &settings).unwrap();
-        while !r.pass() {}
-        assert_eq!(r.samples(), 8);
-        r.view(0)
+        while !r.pass().complete {}
+        assert_eq!(r.snapshot().pass.samples, 8);
+        r.snapshot().views[0].clone()
     };
     let (a, b) = (image(4), image(1));
     assert_eq!(

@@ -14,7 +14,7 @@ use raystep::tui::worker::{Job, Progress, Worker};
 fn the_worker_renders_chapter_6_with_layers_reference_and_error_series() {
     let chapter = raystep::chapters::all()
         .into_iter()
-        .find(|c| c.number() == 6)
+        .find(|c| c.info().number == 6)
         .expect("chapter 6 is registered");
     let worker = Worker::spawn();
     // The reference's resolution, so the error series has a reference.
@@ -38,13 +38,13 @@ fn the_worker_renders_chapter_6_with_layers_reference_and_error_series() {
                 .recv_timeout(Duration::from_secs(60))
                 .unwrap()
             {
-                Progress::Snapshot(s) if s.generation == variant as u64 + 1 => {
+                Progress::State(s) if s.generation == variant as u64 + 1 => {
                     snapshots += 1;
                     if s.done {
                         break s;
                     }
                 }
-                Progress::Snapshot(_) => {}
+                Progress::State(_) | Progress::Inspected { .. } => {}
                 Progress::Failed { message, .. } => panic!("{message}"),
             }
         };

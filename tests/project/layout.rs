@@ -255,13 +255,18 @@ enum Place {
     Lesson(u32),
     /// Chapter N's stage, report, studies, stability or bench.
     Harness(u32),
-    /// The front ends and the crate root: may use anything.
+    /// The terminal UI (`tui/`): drives the chapters through the stage
+    /// boundary only (`core::stage`), so it may use core/, scene/, the
+    /// chapter list and the grader's student mode, and no chapter's files.
+    Ui,
+    /// The other front ends and the crate root: may use anything.
     Top,
 }
 
 /// The file names that play the same role in every chapter.
-const HARNESS: [&str; 5] = [
+const HARNESS: [&str; 6] = [
     "stage.rs",
+    "inspect.rs",
     "report.rs",
     "studies.rs",
     "stability.rs",
@@ -275,6 +280,9 @@ fn place(file: &str) -> Place {
     }
     if first == "scene" {
         return Place::Scene;
+    }
+    if first == "tui" {
+        return Place::Ui;
     }
     if let Some(n) = first
         .strip_prefix("ch")
@@ -297,7 +305,9 @@ fn allowed(from: Place, to: Place) -> bool {
     use Place::*;
     match (from, to) {
         (Top, _) => true,
-        (_, Top) => false,
+        (Ui, Core | Scene | Ui | Top) => true,
+        (Ui, Lesson(_) | Harness(_)) => false,
+        (_, Top | Ui) => false,
         // The foundation is core/ and scene/: the stage boundary and the
         // headless runner take a Scene, and the scene reports core errors.
         (Core | Scene, Core | Scene) => true,
@@ -508,4 +518,20 @@ fn no_test_hides_in_the_library() {
         hidden.is_empty(),
         "tests under src/ never run (lib test = false); move them to tests/<chapter>/unit/: {hidden:?}"
     );
+}
+
+#[test]
+fn the_terminal_ui_is_checked_and_uses_no_chapter_files() {
+    let g = graph();
+    let ui: Vec<_> = g.keys().filter(|f| f.starts_with("tui/")).collect();
+    assert!(ui.len() >= 10, "the tui/ files are in the graph: {ui:?}");
+    assert!(ui.iter().all(|f| place(f) == Place::Ui));
+    assert!(
+        g["tui/worker.rs"].contains("core/stage.rs"),
+        "the worker drives renders through the boundary"
+    );
+    // The rule itself: a chapter's lesson or harness file is out of reach.
+    assert!(!allowed(Place::Ui, Place::Lesson(6)));
+    assert!(!allowed(Place::Ui, Place::Harness(3)));
+    assert!(allowed(Place::Ui, Place::Core));
 }

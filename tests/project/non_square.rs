@@ -18,35 +18,35 @@ fn every_chapter_renders_wide_and_tall_cornell_boxes() {
     let settings = Settings::default();
     for chapter in raystep::chapters::all() {
         for (w, h) in SIZES {
-            let dir = common::temp_dir(&format!("non-square-ch{}-{w}x{h}", chapter.number()));
+            let dir = common::temp_dir(&format!("non-square-ch{}-{w}x{h}", chapter.info().number));
             let scene = Scene::builtin().with_resolution(w, h).unwrap();
             let mut printed = Vec::new();
             let summary = run_headless(chapter, scene.clone(), &settings, &dir, 16, &mut printed)
-                .unwrap_or_else(|e| panic!("ch{} at {w}x{h}: {e}", chapter.number()));
+                .unwrap_or_else(|e| panic!("ch{} at {w}x{h}: {e}", chapter.info().number));
             let png = &summary.files[0];
             let film = raystep::core::film::Film::read_png(png).unwrap();
             assert_eq!(
                 (film.width, film.height),
                 (w, h),
                 "ch{} wrote {}",
-                chapter.number(),
+                chapter.info().number,
                 png.display()
             );
             // The stage's own reference, where it has one, is the image's
             // size; a reference of another shape is never offered.
             let mut render = chapter.start(Arc::new(scene), &settings).unwrap();
-            while !render.pass() {}
-            for i in 0..chapter.views().len() {
-                let v = render.view(i);
+            while !render.pass().complete {}
+            for i in 0..chapter.info().views.len() {
+                let v = render.snapshot().views[i].clone();
                 assert_eq!(
                     (v.width, v.height),
                     (w, h),
                     "ch{} view {i}",
-                    chapter.number()
+                    chapter.info().number
                 );
             }
-            if let Some(r) = render.reference() {
-                assert_eq!((r.width, r.height), (w, h), "ch{}", chapter.number());
+            if let Some(r) = render.snapshot().reference {
+                assert_eq!((r.width, r.height), (w, h), "ch{}", chapter.info().number);
             }
             let _ = std::fs::remove_dir_all(&dir);
         }

@@ -12,14 +12,14 @@ use glam::Vec3;
 use raystep::core::error::Result;
 use raystep::core::film::Film;
 use raystep::core::report::Report;
-use raystep::core::stage::{Chapter, Render, Settings, View};
+use raystep::core::stage::{Chapter, ChapterInfo, Pass, Render, Settings, Variant, View};
 use raystep::scene::Scene;
 use raystep::tui::app::{App, Msg};
 use raystep::tui::keys::msg_for_key;
 use raystep::tui::scenes::SceneEntry;
 use raystep::tui::update::update;
 use raystep::tui::worker::{
-    finished, Finish, Job, Progress, Snapshot, Target, Worker, MIN_SPP_FOR_NOISE,
+    finished, Finish, Job, Progress, RenderState, Target, Worker, MIN_SPP_FOR_NOISE,
 };
 
 /// A progressive stage whose noise is exactly 1/√spp of a flat image of
@@ -28,41 +28,33 @@ struct Noisy;
 
 static NOISY: Noisy = Noisy;
 
-const VARIANTS: &[View] = &[
-    View {
+const VARIANTS: &[Variant] = &[
+    Variant {
         name: "uniform",
         about: "uniform sampling",
     },
-    View {
+    Variant {
         name: "best",
         about: "the best",
     },
 ];
 
 impl Chapter for Noisy {
-    fn number(&self) -> u32 {
-        6
-    }
-    fn slug(&self) -> &'static str {
-        "noisy"
-    }
-    fn title(&self) -> &'static str {
-        "A progressive fake"
-    }
-    fn views(&self) -> &'static [View] {
-        &[View {
-            name: "image",
-            about: "",
-        }]
-    }
-    fn variants(&self) -> &'static [View] {
-        VARIANTS
-    }
-    fn default_variant(&self) -> usize {
-        1
-    }
-    fn progressive(&self) -> bool {
-        true
+    fn info(&self) -> ChapterInfo {
+        ChapterInfo {
+            variants: VARIANTS,
+            default_variant: 1,
+            progressive: true,
+            ..ChapterInfo::new(
+                6,
+                "noisy",
+                "A progressive fake",
+                &[View {
+                    name: "image",
+                    about: "",
+                }],
+            )
+        }
     }
     fn start(&self, _: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         Ok(Box::new(NoisyRender {
@@ -79,31 +71,39 @@ struct NoisyRender {
     passes: u32,
 }
 
+impl NoisyRender {
+    fn pass_info(&self) -> Pass {
+        Pass {
+            done: self.passes,
+            planned: self.spp.max(self.passes),
+            samples: self.samples,
+            rays: 0,
+            noise: (self.samples >= 2).then(|| (1.0 / (self.samples as f64).sqrt(), 1.0)),
+            complete: self.samples >= self.spp,
+        }
+    }
+}
+
 impl Render for NoisyRender {
-    fn pass(&mut self) -> bool {
+    fn pass(&mut self) -> Pass {
         if self.samples < self.spp {
             std::thread::sleep(Duration::from_millis(10));
             self.samples += 1.min(self.spp - self.samples);
             self.passes += 1;
         }
-        self.samples >= self.spp
+        self.pass_info()
     }
-    fn progress(&self) -> (u32, u32) {
-        (self.passes, self.spp)
-    }
-    fn view(&self, _: usize) -> Film {
+    fn snapshot(&self) -> raystep::core::stage::Snapshot {
         let mut f = Film::new(4, 2);
         f.pixels.iter_mut().for_each(|p| *p = Vec3::ONE);
-        f
+        raystep::core::stage::Snapshot {
+            views: vec![f],
+            pass: self.pass_info(),
+            ..Default::default()
+        }
     }
     fn report(&self) -> Report {
         Report::default()
-    }
-    fn samples(&self) -> u32 {
-        self.samples
-    }
-    fn noise(&self) -> Option<f64> {
-        (self.samples >= 2).then(|| 1.0 / (self.samples as f64).sqrt())
     }
     fn set_spp(&mut self, spp: u32) {
         self.spp = spp;
@@ -122,18 +122,18 @@ fn job(generation: u64, target: Target) -> Job {
 }
 
 /// Every snapshot of `generation` until one is done.
-fn until_done(worker: &Worker, generation: u64) -> Vec<Snapshot> {
+fn until_done(worker: &Worker, generation: u64) -> Vec<RenderState> {
     let mut seen = Vec::new();
     loop {
         match worker.results.recv_timeout(Duration::from_secs(30)) {
-            Ok(Progress::Snapshot(s)) if s.generation == generation => {
+            Ok(Progress::State(s)) if s.generation == generation => {
                 let done = s.done;
                 seen.push(*s);
                 if done {
                     return seen;
                 }
             }
-            Ok(Progress::Snapshot(_)) => {}
+            Ok(Progress::State(_) | Progress::Inspected { .. }) => {}
             Ok(Progress::Failed { message, .. }) => panic!("{message}"),
             Err(e) => panic!("no snapshot: {e}"),
         }
@@ -256,7 +256,7 @@ fn a_paused_render_sends_nothing_until_resumed() {
     worker.pause(3, true);
     // Drain what was under way; the pause snapshot comes last.
     let mut at_pause = 0;
-    while let Ok(Progress::Snapshot(s)) = worker.results.recv_timeout(Duration::from_millis(300)) {
+    while let Ok(Progress::State(s)) = worker.results.recv_timeout(Duration::from_millis(300)) {
         at_pause = s.samples;
     }
     assert!(at_pause < 100, "paused before the end");
@@ -290,9 +290,9 @@ fn snapshot(app: &App, samples: u32, done: bool) -> Msg {
         spp: app.target.spp,
         passes: samples,
     };
-    let mut snap = Snapshot::capture(&NOISY, &render, app.generation, Duration::ZERO, done);
+    let mut snap = RenderState::capture(&render, app.generation, Duration::ZERO, done);
     snap.target = Some(app.target);
-    Msg::Progress(Progress::Snapshot(Box::new(snap)))
+    Msg::Progress(Progress::State(Box::new(snap)))
 }
 
 #[test]
@@ -394,10 +394,10 @@ fn the_flags_choose_the_chapter_the_scene_and_the_budget() {
     };
     let app = launch_app(&launch, false);
     let chapter = app.current_chapter().unwrap();
-    assert_eq!(chapter.number(), 6);
-    assert_eq!(app.variant, chapter.default_variant());
+    assert_eq!(chapter.info().number, 6);
+    assert_eq!(app.variant, chapter.info().default_variant);
     assert_eq!(
-        chapter.variants()[app.variant].name,
+        chapter.info().variants[app.variant].name,
         "mis-sobol",
         "chapter 6 opens on its best estimator"
     );

@@ -162,24 +162,24 @@ fn the_real_binary_in_a_terminal() {
     let chapters = raystep::chapters::all();
     let chapter = *chapters.get(1).unwrap_or(&chapters[0]);
     tmux.key("Down");
-    let tag = format!("ch{} {} │", chapter.number(), chapter.slug());
+    let tag = format!("ch{} {} │", chapter.info().number, chapter.info().slug);
     tmux.wait(&tag, 60, |_, s| {
         s.lines()
             .any(|l| l.starts_with(&tag) && l.contains("│ pass "))
     });
 
     // Step bounces where the chapter has them, else step views.
-    if chapter.has_bounces() {
+    if chapter.info().bounces {
         tmux.wait("the bounce control", 60, |_, s| s.contains("bounces all"));
         tmux.keys("]");
         tmux.wait("bounce 0", 10, |_, s| s.contains("up to 0: direct"));
         tmux.keys("m");
         tmux.wait("exactly 0", 10, |_, s| s.contains("exactly 0: direct"));
-    } else if chapter.views().len() > 1 {
-        let name = chapter.views()[1].name;
+    } else if chapter.info().views.len() > 1 {
+        let name = chapter.info().views[1].name;
         tmux.keys("v");
         tmux.wait("the second view", 10, |_, s| {
-            s.contains(&format!("view 2/{}: {name}", chapter.views().len()))
+            s.contains(&format!("view 2/{}: {name}", chapter.info().views.len()))
         });
     }
 
@@ -190,7 +190,7 @@ fn the_real_binary_in_a_terminal() {
     assert_eq!(saved.len(), 1, "{saved:?}");
     let name = saved[0].file_name().unwrap().to_string_lossy().into_owned();
     assert!(
-        name.starts_with(&format!("tui-ch{}-cornell-box-", chapter.number())),
+        name.starts_with(&format!("tui-ch{}-cornell-box-", chapter.info().number)),
         "{name}"
     );
     let film = raystep::core::film::Film::read_png(&saved[0]).unwrap();

@@ -78,15 +78,15 @@ fn with_a_picker_the_preview_is_sent_as_a_kitty_image() {
     use raystep::tui::app::{App, Msg};
     use raystep::tui::scenes::SceneEntry;
     use raystep::tui::update::update;
-    use raystep::tui::worker::{Progress, Snapshot};
+    use raystep::tui::worker::{Progress, RenderState};
 
     let ch1 = raystep::chapters::all()[0];
     let app = App::new(vec![ch1], vec![SceneEntry::builtin()], true);
     let job = app.job().unwrap();
     let mut render = ch1.start(job.scene, &job.settings).unwrap();
-    while !render.pass() {}
-    let snap = Snapshot::capture(ch1, &*render, job.generation, Default::default(), true);
-    let mut app = update(app, Msg::Progress(Progress::Snapshot(Box::new(snap))));
+    while !render.pass().complete {}
+    let snap = RenderState::capture(&*render, job.generation, Default::default(), true);
+    let mut app = update(app, Msg::Progress(Progress::State(Box::new(snap))));
     let cells = |app: &App| {
         let mut t = Terminal::new(TestBackend::new(100, 40)).unwrap();
         t.draw(|f| raystep::tui::view::view(app, f)).unwrap();

@@ -7,14 +7,14 @@ use std::time::Duration;
 
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
-use raystep::core::stage::Settings;
+use raystep::core::stage::{Inspection, Settings};
 use raystep::scene::Scene;
 use raystep::tui::app::{App, Msg};
 use raystep::tui::inspect::inspect_lines;
 use raystep::tui::keys::msg_for_key;
 use raystep::tui::scenes::SceneEntry;
 use raystep::tui::update::update;
-use raystep::tui::worker::{Progress, Snapshot};
+use raystep::tui::worker::{Progress, RenderState};
 
 /// Chapter 6 on the 64x64 Cornell box (the stored reference's size), 2 spp.
 fn rendered() -> App {
@@ -31,23 +31,19 @@ fn rendered() -> App {
     // The render is the same every time (same scene, seed and samples):
     // made once per test binary, the many clicks of the click test cost a
     // UI update each, not a render each.
-    static SNAPSHOT: std::sync::OnceLock<Snapshot> = std::sync::OnceLock::new();
+    static SNAPSHOT: std::sync::OnceLock<RenderState> = std::sync::OnceLock::new();
     let snap = SNAPSHOT.get_or_init(|| {
         let job = app.job().unwrap();
         let settings = Settings {
             spp: 2,
+            variant: Some(job.variant),
             ..Settings::default()
         };
-        let mut render = ch6
-            .start_variant(job.scene, &settings, job.variant)
-            .unwrap();
-        while !render.pass() {}
-        Snapshot::capture(ch6, &*render, job.generation, Duration::ZERO, true)
+        let mut render = ch6.start(job.scene, &settings).unwrap();
+        while !render.pass().complete {}
+        RenderState::capture(&*render, job.generation, Duration::ZERO, true)
     });
-    update(
-        app,
-        Msg::Progress(Progress::Snapshot(Box::new(snap.clone()))),
-    )
+    update(app, Msg::Progress(Progress::State(Box::new(snap.clone()))))
 }
 
 #[test]
@@ -223,11 +219,10 @@ fn t_traces_a_path_and_the_panel_shows_its_table() {
     let app = update(app, msg);
     let (x, y, sample) = app.trace_requested.unwrap();
     assert_eq!((x, y, sample), (32, 50, 0));
-    // What the event loop does: trace in the scene's world.
-    let scene = app.current_scene().unwrap().scene.clone().unwrap();
-    let world = raystep::ch5_reflection::world::World::new(&scene);
-    let table = raystep::tui::trace::trace_table(&scene, &world, app.variant, 0, (x, y), sample);
-    let app = update(app, Msg::Traced(table.map(Box::new)));
+    // What the event loop does: ask the running render (through the
+    // worker, here directly) for sample `sample` of the pixel.
+    let table = inspected(&app, (x, y), sample);
+    let app = update(app, Msg::Traced(Ok(Box::new(table))));
     let t = app.trace.as_ref().unwrap();
     assert!(t.lines[1].starts_with("#1 "), "{:?}", t.lines);
     assert!(t.lines.iter().any(|l| l.contains("NEE")), "{:?}", t.lines);
@@ -244,25 +239,56 @@ fn t_traces_a_path_and_the_panel_shows_its_table() {
     insta::assert_snapshot!("inspect_trace_160x50", text);
 }
 
+/// What the current job's render answers for sample `sample` of `pixel`
+/// after its first pass.
+fn inspected(app: &App, pixel: (u32, u32), sample: u32) -> Inspection {
+    let job = app.job().unwrap();
+    let settings = Settings {
+        variant: Some(job.variant),
+        ..job.settings.clone()
+    };
+    let mut render = job.chapter.start(job.scene, &settings).unwrap();
+    assert!(
+        render.inspect(pixel, sample).is_none(),
+        "nothing to inspect before the first pass"
+    );
+    render.pass();
+    render.inspect(pixel, sample).unwrap()
+}
+
+/// Chapter `n`'s story of sample 0 of `pixel` in `scene`, from its render.
+fn story(n: usize, scene: &Arc<Scene>, pixel: (u32, u32)) -> Vec<String> {
+    let chapter = raystep::chapters::all()[n - 1];
+    let settings = Settings {
+        variant: Some(3.min(chapter.info().variants.len().saturating_sub(1))),
+        ..Settings::default()
+    };
+    let mut render = chapter.start(scene.clone(), &settings).unwrap();
+    while !render.pass().complete {}
+    assert!(
+        render.inspect((scene.camera.width, 0), 0).is_none(),
+        "outside"
+    );
+    let i = render.inspect(pixel, 0).unwrap();
+    assert_eq!((i.pixel, i.sample), (pixel, 0));
+    i.lines
+}
+
 #[test]
 fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
-    use raystep::tui::story::{story_lines, GeometryCache};
     let scene = Arc::new(Scene::builtin().with_resolution(32, 32).unwrap());
     let settings = Settings::default();
-    let (mut w, mut g) = (Default::default(), GeometryCache::default());
-    let mut story = |ch| story_lines(ch, &scene, &settings, 3, (16, 20), &mut w, &mut g).unwrap();
-    let ch3 = story(3);
+    let ch3 = story(3, &scene, (16, 20));
     assert!(ch3[0].starts_with("primary ray hits triangle"), "{ch3:?}");
     assert!(ch3.iter().any(|l| l.contains("u = ")));
-    let ch4 = story(4);
+    let ch4 = story(4, &scene, (16, 20));
     assert!(ch4[0].starts_with("no SDF objects"), "{ch4:?}");
     assert!(ch4[1].starts_with("nearest hit t "), "{ch4:?}");
-    let ch5 = story(5);
+    let ch5 = story(5, &scene, (16, 20));
     assert!(ch5[0].starts_with("sample 0: L = "), "{ch5:?}");
     assert!(ch5.iter().any(|l| l.starts_with("light 0 area")), "{ch5:?}");
     let sdf = Arc::new(crate::common::shipped_scene("sdf-shapes", 32, 24));
-    let (mut w2, mut g2) = (Default::default(), GeometryCache::default());
-    let ch4 = story_lines(4, &sdf, &settings, 0, (16, 12), &mut w2, &mut g2).unwrap();
+    let ch4 = story(4, &sdf, (16, 12));
     assert!(ch4[0].starts_with("sphere tracing: "), "{ch4:?}");
     assert!(ch4.iter().any(|l| l.starts_with("   0: t 0 f ")), "{ch4:?}");
     // The panel shows the story of the pixel under the cursor.
@@ -277,9 +303,9 @@ fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
     let app = App::new(vec![ch3_stage], vec![entry], false);
     let job = app.job().unwrap();
     let mut render = ch3_stage.start(job.scene, &settings).unwrap();
-    while !render.pass() {}
-    let snap = Snapshot::capture(ch3_stage, &*render, job.generation, Duration::ZERO, true);
-    let app = update(app, Msg::Progress(Progress::Snapshot(Box::new(snap))));
+    while !render.pass().complete {}
+    let snap = RenderState::capture(&*render, job.generation, Duration::ZERO, true);
+    let app = update(app, Msg::Progress(Progress::State(Box::new(snap))));
     let app = update(app, Msg::ToggleInspect);
     let app = update(app, Msg::CursorMove(0, 4));
     let app = update(app, Msg::Story(16, 20, ch3.clone()));

@@ -19,7 +19,7 @@ use ratatui::Terminal;
 use raystep::core::error::Result;
 use raystep::core::film::{encode_srgb, Film};
 use raystep::core::report::Report;
-use raystep::core::stage::{Chapter, Render, Settings, View};
+use raystep::core::stage::{Chapter, ChapterInfo, Pass, Render, Settings, Snapshot, Variant, View};
 use raystep::scene::Scene;
 use raystep::tui::app::{combine_layers, App, BounceMode, Compare, Focus, Msg};
 use raystep::tui::keys::msg_for_key;
@@ -27,7 +27,7 @@ use raystep::tui::picture::{fit, Picture};
 use raystep::tui::scenes::{scene_list, SceneEntry};
 use raystep::tui::update::{save, update};
 use raystep::tui::view::{control_lines, view};
-use raystep::tui::worker::{Job, Progress, Snapshot, Worker};
+use raystep::tui::worker::{Job, Progress, RenderState, Worker};
 
 /// A stage with everything the UI can show: bounce layers, a reference, an
 /// error series, two views and two variants. Layer k is a flat colour.
@@ -55,59 +55,47 @@ fn flat(c: Vec3) -> Film {
     f
 }
 
+const FAKE_VIEWS: &[View] = &[
+    View {
+        name: "image",
+        about: "the image",
+    },
+    View {
+        name: "depth",
+        about: "a ramp",
+    },
+];
+
+const FAKE_VARIANTS: &[Variant] = &[
+    Variant {
+        name: "brdf",
+        about: "BRDF sampling",
+    },
+    Variant {
+        name: "mis",
+        about: "MIS",
+    },
+];
+
 impl Chapter for Fake {
-    fn number(&self) -> u32 {
-        if self.bounces {
-            6
+    fn info(&self) -> ChapterInfo {
+        let (number, slug) = if self.bounces {
+            (6, "fake-gi")
         } else {
-            2
+            (2, "fake")
+        };
+        ChapterInfo {
+            bounces: self.bounces,
+            variants: if self.bounces { FAKE_VARIANTS } else { &[] },
+            ..ChapterInfo::new(number, slug, "A fake stage", FAKE_VIEWS)
         }
     }
-    fn slug(&self) -> &'static str {
-        if self.bounces {
-            "fake-gi"
-        } else {
-            "fake"
+    fn start(&self, scene: Arc<Scene>, _settings: &Settings) -> Result<Box<dyn Render>> {
+        if scene.name == "no-go" {
+            return Err(raystep::Error::Usage(
+                "this stage needs a scene with spheres".into(),
+            ));
         }
-    }
-    fn title(&self) -> &'static str {
-        "A fake stage"
-    }
-    fn views(&self) -> &'static [View] {
-        &[
-            View {
-                name: "image",
-                about: "the image",
-            },
-            View {
-                name: "depth",
-                about: "a ramp",
-            },
-        ]
-    }
-    fn has_bounces(&self) -> bool {
-        self.bounces
-    }
-    fn unsupported(&self, scene: &Scene) -> Option<String> {
-        (scene.name == "no-go").then(|| "this stage needs a scene with spheres".into())
-    }
-    fn variants(&self) -> &'static [View] {
-        if self.bounces {
-            &[
-                View {
-                    name: "brdf",
-                    about: "BRDF sampling",
-                },
-                View {
-                    name: "mis",
-                    about: "MIS",
-                },
-            ]
-        } else {
-            &[]
-        }
-    }
-    fn start(&self, _scene: Arc<Scene>, _settings: &Settings) -> Result<Box<dyn Render>> {
         Ok(Box::new(FakeRender {
             bounces: self.bounces,
             passes: 0,
@@ -124,15 +112,7 @@ struct FakeRender {
     sleep: Duration,
 }
 
-impl Render for FakeRender {
-    fn pass(&mut self) -> bool {
-        std::thread::sleep(self.sleep);
-        self.passes += 1;
-        self.passes >= self.planned
-    }
-    fn progress(&self) -> (u32, u32) {
-        (self.passes, self.planned)
-    }
+impl FakeRender {
     fn view(&self, index: usize) -> Film {
         if index == 0 {
             flat(layer_color(0) + layer_color(1) + layer_color(2))
@@ -146,31 +126,49 @@ impl Render for FakeRender {
             f
         }
     }
-    fn report(&self) -> Report {
-        Report::default()
-    }
-    fn layers(&self) -> Option<Vec<Film>> {
-        self.bounces
-            .then(|| (0..3).map(|k| flat(layer_color(k))).collect())
-    }
-    fn reference(&self) -> Option<Film> {
-        self.bounces.then(|| flat(Vec3::new(0.5, 0.25, 0.25)))
-    }
-    fn error_series(&self) -> Vec<(f64, f64)> {
-        if self.bounces {
-            vec![(0.01, 0.3), (0.02, 0.2), (0.04, 0.14), (0.08, 0.1)]
-        } else {
-            Vec::new()
-        }
-    }
+
     /// The stage with bounces counts one ray per pixel and pass; the plain
-    /// one does not count (the default, 0).
-    fn rays(&self) -> u64 {
-        if self.bounces {
+    /// one does not count (0).
+    fn pass_info(&self) -> Pass {
+        let rays = if self.bounces {
             (W * H * self.passes) as u64
         } else {
             0
+        };
+        Pass {
+            done: self.passes,
+            planned: self.planned.max(self.passes),
+            rays,
+            complete: self.passes >= self.planned,
+            ..Pass::default()
         }
+    }
+}
+
+impl Render for FakeRender {
+    fn pass(&mut self) -> Pass {
+        std::thread::sleep(self.sleep);
+        self.passes += 1;
+        self.pass_info()
+    }
+    fn snapshot(&self) -> Snapshot {
+        let error_series = if self.bounces {
+            vec![(0.01, 0.3), (0.02, 0.2), (0.04, 0.14), (0.08, 0.1)]
+        } else {
+            Vec::new()
+        };
+        Snapshot {
+            views: vec![self.view(0), self.view(1)],
+            layers: self
+                .bounces
+                .then(|| (0..3).map(|k| flat(layer_color(k))).collect()),
+            reference: self.bounces.then(|| flat(Vec3::new(0.5, 0.25, 0.25))),
+            error_series,
+            pass: self.pass_info(),
+        }
+    }
+    fn report(&self) -> Report {
+        Report::default()
     }
 }
 
@@ -212,19 +210,14 @@ fn app() -> App {
 /// snapshot to the UI.
 fn rendered(app: App) -> App {
     let job = app.job().expect("the selection renders");
-    let mut render = job
-        .chapter
-        .start_variant(job.scene, &job.settings, job.variant)
-        .unwrap();
-    while !render.pass() {}
-    let snap = Snapshot::capture(
-        job.chapter,
-        &*render,
-        job.generation,
-        Duration::from_millis(12),
-        true,
-    );
-    update(app, Msg::Progress(Progress::Snapshot(Box::new(snap))))
+    let settings = Settings {
+        variant: Some(job.variant),
+        ..job.settings.clone()
+    };
+    let mut render = job.chapter.start(job.scene, &settings).unwrap();
+    while !render.pass().complete {}
+    let snap = RenderState::capture(&*render, job.generation, Duration::from_millis(12), true);
+    update(app, Msg::Progress(Progress::State(Box::new(snap))))
 }
 
 fn send(app: App, msgs: &[Msg]) -> App {
@@ -336,7 +329,7 @@ fn chapters_without_bounces_or_reference_hide_those_controls() {
 
     // The real chapter 1 has no bounces either.
     let ch1 = raystep::chapters::all()[0];
-    assert!(!ch1.has_bounces());
+    assert!(!ch1.info().bounces);
 }
 
 #[test]
@@ -380,9 +373,13 @@ fn lists_views_exposure_and_variants() {
     let app = update(app, Msg::Down);
     assert_eq!(app.scene, 1);
     assert_eq!(app.generation, g + 1);
-    let why = app.problem().expect("no-go is unsupported");
+    // A stage refuses a scene it cannot render when it starts; the worker
+    // shows that error (see `a_failed_start_is_shown`).
+    assert!(app.problem().is_none());
+    let job = app.job().expect("a loaded scene gets a job");
+    let why = job.chapter.start(job.scene.clone(), &job.settings).err();
+    let why = why.expect("the fake refuses no-go").to_string();
     assert!(why.contains("spheres"), "{why}");
-    assert!(app.job().is_none());
     let app = update(app, Msg::Down);
     assert!(app.problem().unwrap().contains("unknown key `colour`"));
     assert!(app.job().is_none());
@@ -420,7 +417,7 @@ fn stale_passes_are_dropped() {
     let old = app.snapshot.clone().unwrap();
     let app = update(app, Msg::ChapterNumber(2));
     assert!(app.snapshot.is_none());
-    let app = update(app, Msg::Progress(Progress::Snapshot(Box::new(old))));
+    let app = update(app, Msg::Progress(Progress::State(Box::new(old))));
     assert!(
         app.snapshot.is_none(),
         "a pass of the old render must not show"
@@ -624,20 +621,16 @@ fn the_worker_discards_stale_passes() {
     struct Slow;
     static SLOW: Slow = Slow;
     impl Chapter for Slow {
-        fn number(&self) -> u32 {
-            7
-        }
-        fn slug(&self) -> &'static str {
-            "slow"
-        }
-        fn title(&self) -> &'static str {
-            "slow"
-        }
-        fn views(&self) -> &'static [View] {
-            &[View {
-                name: "image",
-                about: "",
-            }]
+        fn info(&self) -> ChapterInfo {
+            ChapterInfo::new(
+                7,
+                "slow",
+                "slow",
+                &[View {
+                    name: "image",
+                    about: "",
+                }],
+            )
         }
         fn start(&self, _: Arc<Scene>, _: &Settings) -> Result<Box<dyn Render>> {
             Ok(Box::new(FakeRender {
@@ -672,7 +665,7 @@ fn the_worker_discards_stale_passes() {
             .recv_timeout(Duration::from_secs(10))
             .unwrap();
         seen.push(p.generation());
-        if let Progress::Snapshot(s) = &p {
+        if let Progress::State(s) = &p {
             if s.generation == 2 && s.done {
                 assert_eq!(s.progress, (4, 4));
                 break;
@@ -790,16 +783,16 @@ fn the_real_chapters_3_to_6_count_their_rays() {
     for (n, camera_rays_only) in [(3, true), (4, true), (5, false), (6, false)] {
         let chapter = raystep::chapters::all()
             .into_iter()
-            .find(|c| c.number() == n)
+            .find(|c| c.info().number == n)
             .unwrap();
         let settings = Settings {
             spp: 2,
             ..Settings::default()
         };
         let mut render = chapter.start(scene.clone(), &settings).unwrap();
-        assert_eq!(render.rays(), 0, "ch{n} before a pass");
+        assert_eq!(render.snapshot().pass.rays, 0, "ch{n} before a pass");
         render.pass();
-        let rays = render.rays();
+        let rays = render.snapshot().pass.rays;
         if camera_rays_only {
             assert_eq!(rays, pixels, "ch{n} after one pass");
         } else {
