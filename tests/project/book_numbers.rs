@@ -34,8 +34,8 @@ fn says(page_name: &str, phrase: &str) {
     let text = page(page_name);
     assert!(
         text.contains(phrase),
-        "{page_name} should say `{phrase}` (the number comes from book/src/figures; \
-         after `bash book/figures.sh`, write what the new run measured)"
+        "{page_name} should say `{phrase}` (the number is measured: from a file in \
+         book/src/figures, or by the test itself; write what the new run measured)"
     );
 }
 
@@ -724,5 +724,35 @@ fn the_appendix_statements_match_the_benchmarks() {
     says(
         "making-it-fast.md",
         "is lower for the default with both samplers",
+    );
+}
+
+/// Chapter 6 and the grading page quote the furnace's noise: how close
+/// the grader's 200,000 paths of the reference loop come, and how many
+/// standard errors a 2% bias is.
+#[test]
+fn the_furnace_noise_the_book_quotes_is_measured() {
+    use raystep::grading::exercises::paths::{
+        reference_path, trace_furnace, PathScene, FURNACE_ALBEDO, FURNACE_LE, FURNACE_PATHS,
+    };
+    let scene = PathScene::furnace(FURNACE_ALBEDO, FURNACE_LE);
+    let run = trace_furnace(reference_path, &scene, FURNACE_PATHS, 611);
+    let n = FURNACE_PATHS as f64;
+    let mean = run.sum.x / n;
+    let variance = run.sum_sq.x / n - mean * mean;
+    let relative = (variance / n).sqrt() / mean;
+    let paths = thousands(FURNACE_PATHS);
+    let z = (0.02 / relative).round();
+    says(
+        "ch6-global-illumination.md",
+        &format!(
+            "{paths} paths estimate the answer to {:.2}%, and a 2% bias is {z} standard errors",
+            100.0 * relative
+        ),
+    );
+    says("grading.md", &format!("{paths} paths must agree with it"));
+    says(
+        "grading.md",
+        &format!("which a 2 % bias misses by about {z} ("),
     );
 }
