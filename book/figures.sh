@@ -9,6 +9,46 @@ out=book/src/figures
 cargo build --release --bins
 bin=$(cd "${CARGO_TARGET_DIR:-target}/release" && pwd)
 
+# section REPORT PREFIX OUT: copies the part of a report the book discusses
+# into its own file, which a page includes, so that no measured number is
+# retyped. The part starts at the first line that begins with PREFIX and
+# runs up to a blank line, a line indented no deeper than the first one, or
+# the report's "wrote N files" list. tests/project/book_numbers.rs checks
+# that every such file is a verbatim part of its report.
+section() {
+  awk -v t="$2" '
+    !on && index($0, t) == 1 { on = 1; match($0, /^ */); ind = RLENGTH; print; next }
+    on { match($0, /^ */); if ($0 == "" || RLENGTH <= ind || $0 ~ /^  wrote [0-9]+ files?:/) exit; print }
+  ' "$1" > "$3"
+  if [ ! -s "$3" ]; then
+    echo "figures.sh: no part starting with '$2' in $1" >&2
+    exit 1
+  fi
+}
+
+# blocks_to_table IN OUT: a report table printed one block per row (too
+# wide for one line, "  - first: value" then "      column: value" lines)
+# as a Markdown table, for a page to include outside a code block.
+blocks_to_table() {
+  awk '
+    function flush() { if (n) { line = "|"; for (i = 1; i <= n; i++) line = line " " val[i] " |"; rows[++r] = line } n = 0 }
+    /^  - / { flush(); started = 1; sub(/^  - /, "") }
+    /^      [^ ]/ { sub(/^ +/, "") }
+    started && /^[^ ]/ && /: / {
+      k = substr($0, 1, index($0, ": ") - 1); v = substr($0, index($0, ": ") + 2)
+      n++; val[n] = v
+      if (!r) { head[n] = k; cols = n }
+    }
+    END {
+      flush()
+      line = "|"; sep = "|"
+      for (i = 1; i <= cols; i++) { line = line " " head[i] " |"; sep = sep "---|" }
+      print line; print sep
+      for (j = 1; j <= r; j++) print rows[j]
+    }
+  ' "$1" > "$2"
+}
+
 # Chapter 1: wireframes, depth and points of every shipped scene; the
 # precision study and stiff cases of the tetrahedron (CSV and report).
 for scene in tetrahedron railroad bunny cornell-box; do
@@ -24,15 +64,27 @@ for scene in tetrahedron interpenetrating cornell-box; do
   "$bin/ch2" --scene "scenes/$scene.toml" --spp 16 --out "$out" > /dev/null
 done
 "$bin/ch2" --scene scenes/tetrahedron.toml --spp 16 --report --out "$out" > "$out/ch2-tetrahedron-report.txt"
+section "$out/ch2-tetrahedron-report.txt" "  checker floor:" "$out/ch2-checker.txt"
+section "$out/ch2-tetrahedron-report.txt" "Error against run time" "$out/ch2-error-time.txt"
 
 # Chapter 3: every view of the bunny at 16 samples per pixel, with the
 # report (naive loop against BVH, leaks, the three tests, error against
 # time, stiff cases).
 "$bin/ch3" --scene scenes/bunny.toml --spp 16 --report --out "$out" > "$out/ch3-bunny-report.txt"
+section "$out/ch3-bunny-report.txt" "The three ray-triangle tests" "$out/ch3-three-tests.txt"
+section "$out/ch3-bunny-report.txt" "Leaks:" "$out/ch3-leaks.txt"
+section "$out/ch3-bunny-report.txt" "Naive loop against BVH" "$out/ch3-naive-bvh.txt"
+section "$out/ch3-bunny-report.txt" "Relative error of t" "$out/ch3-t-error.txt"
+# The appendix's benchmark (Mrays/s of the stage, its variants and obvhs
+# alone; about a minute), as printed and as a table.
+"$bin/ch3" --bench > "$out/ch3-bench.txt"
+blocks_to_table "$out/ch3-bench.txt" "$out/ch3-bench.md"
 
 # Chapter 4: every view of the SDF shapes with the report (error against
 # time, stiff cases); the Lipschitz scene with holes, then fixed.
 "$bin/ch4" --scene scenes/sdf-shapes.toml --report --out "$out" > "$out/ch4-sdf-shapes-report.txt"
+section "$out/ch4-sdf-shapes-report.txt" "Error against run time" "$out/ch4-error-time.txt"
+section "$out/ch4-sdf-shapes-report.txt" "Stiff and extreme cases" "$out/ch4-stiff.txt"
 "$bin/ch4" --scene scenes/sdf-lipschitz.toml --out "$out" > /dev/null
 "$bin/ch4" --scene scenes/sdf-lipschitz.toml --step-factor 0.1 --max-steps 2048 --max-distance 20 --out "$out/ch4-lipschitz-fixed" > /dev/null
 
@@ -48,6 +100,12 @@ done
 # Chapter 6: the Cornell box at 128 spp (final image, noise image, bounce
 # strip), the spp strip, and the strategy study (table and plots).
 "$bin/ch6" --scene scenes/cornell-box.toml --spp 128 --spp-figure 128 --report --threads 2 --out "$out" > "$out/ch6-cornell-box-report.txt"
+section "$out/ch6-cornell-box-report.txt" "Strategies:" "$out/ch6-strategies.txt"
+section "$out/ch6-cornell-box-report.txt" "Stiff and extreme cases" "$out/ch6-stiff.txt"
+# The appendix's benchmark: the path tracer's speed and error at 256x256,
+# 64 spp (the default roulette, and roulette from the third scattering).
+"$bin/ch6" --bench --threads 2 > "$out/ch6-bench.txt"
+"$bin/ch6" --bench --threads 2 --rr-after 3 > "$out/ch6-bench-rr-after-3.txt"
 
 # The main program's headless summary (running.md), run where its images
 # land in a scratch folder so the listing shows the plain `out/` paths.

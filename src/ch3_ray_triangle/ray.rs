@@ -1,7 +1,9 @@
 //! Rays: the lecture's r(t) = o + t d.
 //!
-//! A ray is built through [`Ray::new`], which refuses a direction that is
-//! zero, NaN or infinite, so no later stage has to wonder.
+//! [`Ray::new`] refuses a direction that is zero, NaN or infinite, so no
+//! later stage has to wonder; [`Ray::from_unit`] is its shortcut for
+//! directions already of unit length. The camera builds its primary rays
+//! directly ([`Camera::ray`]): their direction is never zero.
 
 use glam::{Vec2, Vec3};
 

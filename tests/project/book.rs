@@ -167,3 +167,95 @@ fn include_checker_rejects_what_it_should() {
     )
     .is_err());
 }
+
+/// Paragraphs and the blocks between them: (kind, first line, text), kind
+/// "code" for a fenced block and "text" for a run of non-blank lines.
+fn blocks(text: &str) -> Vec<(&'static str, usize, String)> {
+    let lines: Vec<&str> = text.lines().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < lines.len() {
+        let l = lines[i].trim_start();
+        if l.starts_with("```") {
+            let mut j = i + 1;
+            while j < lines.len() && !lines[j].trim_start().starts_with("```") {
+                j += 1;
+            }
+            out.push(("code", i + 1, String::new()));
+            i = j + 1;
+        } else if l.is_empty() {
+            i += 1;
+        } else {
+            let mut j = i;
+            while j < lines.len()
+                && !lines[j].trim().is_empty()
+                && !lines[j].trim_start().starts_with("```")
+            {
+                j += 1;
+            }
+            out.push(("text", i + 1, lines[i..j].join("\n")));
+            i = j;
+        }
+    }
+    out
+}
+
+/// A paragraph that ends in ":" announces what follows it: a listing, an
+/// include, a list, a table, a figure or a displayed formula (one line
+/// with an `=`). When a listing moves (to "Check your solution", say), the
+/// sentence left behind must change too.
+fn colon_problems(page: &str, text: &str) -> Vec<String> {
+    let blocks = blocks(text);
+    let mut problems = Vec::new();
+    for (k, (kind, line, body)) in blocks.iter().enumerate() {
+        if *kind != "text" || !body.trim_end().ends_with(':') {
+            continue;
+        }
+        let announced = match blocks.get(k + 1) {
+            Some(("code", _, _)) => true,
+            Some((_, _, next)) => {
+                let t = next.trim_start();
+                t.starts_with("- ")
+                    || t.starts_with("* ")
+                    || t.starts_with('|')
+                    || t.starts_with("{{#include")
+                    || t.starts_with("![")
+                    || t.split_once(". ")
+                        .is_some_and(|(n, _)| n.chars().all(|c| c.is_ascii_digit()))
+                    || (!next.contains('\n') && t.contains(" = "))
+            }
+            None => false,
+        };
+        if !announced {
+            let end = line + body.lines().count() - 1;
+            problems.push(format!(
+                "{page}:{end}: ends in \":\" but no listing, list or table follows"
+            ));
+        }
+    }
+    problems
+}
+
+#[test]
+fn a_paragraph_ending_in_a_colon_is_followed_by_what_it_announces() {
+    let mut problems = Vec::new();
+    for page in pages() {
+        let text = std::fs::read_to_string(&page).unwrap();
+        problems.extend(colon_problems(&page.display().to_string(), &text));
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+#[test]
+fn the_colon_check_catches_a_listing_that_moved() {
+    let moved = "The sphere is this:\n\n*(Exercise 4.1: the code is under Check your solution.)*\n";
+    assert_eq!(colon_problems("p", moved).len(), 1);
+    let listing = "The sphere is this:\n\n```rust\n{{#include x.rs:a}}\n```\n";
+    assert!(colon_problems("p", listing).is_empty());
+    let list = "Three things:\n\n- one\n- two\n";
+    assert!(colon_problems("p", list).is_empty());
+    let formula = "Similar triangles give:\n\n  u = x / (-z).\n";
+    assert!(colon_problems("p", formula).is_empty());
+    let at_the_end = "And then:\n";
+    assert_eq!(colon_problems("p", at_the_end).len(), 1);
+}

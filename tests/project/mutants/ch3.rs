@@ -534,3 +534,50 @@ fn work_hidden_on_another_thread_fails() {
     let detail = fails_with(reference_on_another_thread, ch3::BYPASSES_BLOCKS);
     assert!(detail.contains("never through"), "{detail}");
 }
+
+/// Chapter 3's exercise section quotes this work; the book must say what
+/// the traversals measure.
+#[test]
+fn the_book_quotes_the_measured_work() {
+    let n = |x: u64| {
+        let s = x.to_string();
+        let mut out = String::new();
+        for (i, c) in s.chars().enumerate() {
+            if i > 0 && (s.len() - i).is_multiple_of(3) {
+                out.push(',');
+            }
+            out.push(c);
+        }
+        out
+    };
+    let [reference, unpruned, far, left, naive] = [
+        closest_hit as TraversalFn,
+        no_pruning,
+        far_first,
+        left_first,
+        plain_loop,
+    ]
+    .map(work);
+    assert_eq!(
+        (far.box_tests, far.triangle_tests),
+        (unpruned.box_tests, unpruned.triangle_tests)
+    );
+    let expected = format!(
+        "the reference makes {} slab tests and {} triangle tests; without pruning a traversal \
+         makes {} and {}, visiting the farther child first the same, always the left child \
+         first {} and {}, and the naive loop {} triangle tests",
+        n(reference.box_tests),
+        n(reference.triangle_tests),
+        n(unpruned.box_tests),
+        n(unpruned.triangle_tests),
+        n(left.box_tests),
+        n(left.triangle_tests),
+        n(naive.triangle_tests),
+    );
+    let page = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("book/src/ch3-ray-triangle.md"),
+    )
+    .unwrap();
+    let page = page.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(page.contains(&expected), "the book should say: {expected}");
+}

@@ -7,7 +7,7 @@
 //!    errors of the answer per channel (the standard error measured from
 //!    the candidate's own samples). Measured: the book's loop has a
 //!    standard deviation of about 0.8 × the mean per path, so the standard
-//!    error is 0.18% of the mean, and a 2% bias has z ≈ 11 (the mutant
+//!    error is 0.17% of the mean, and a 2% bias has z ≈ 12 (the mutant
 //!    tests check that ±2% fails with z > 7). A mean more than 10% off fails whatever its
 //!    z (an estimator with infinite variance, whose measured variance
 //!    means nothing). Besides the mean, the scene's [`Tally`] checks that
