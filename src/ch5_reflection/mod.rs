@@ -31,4 +31,5 @@ pub mod stability;
 pub mod stage;
 pub mod studies;
 pub mod warp;
+pub mod warp_test;
 pub mod world;

@@ -6,3 +6,4 @@ mod ladder;
 mod radiometry;
 mod reflection;
 mod unit;
+mod warp_test;
