@@ -13,7 +13,7 @@ use crate::ch4_implicit_surfaces::march::Ending;
 use crate::ch4_implicit_surfaces::render::{march_steps, pixel_ray, MeshTracer};
 use crate::ch5_reflection::direct::{Estimator, Strategy};
 use crate::ch5_reflection::light_terms::pixel_light;
-use crate::ch5_reflection::render::scene_cannot_shadow;
+use crate::ch5_reflection::shadowing::scene_cannot_shadow;
 use crate::ch6_global_illumination::path_record::light_name;
 use crate::core::stage::Settings;
 use crate::scene::Scene;
@@ -112,7 +112,7 @@ pub fn story_lines(
             let est = Estimator {
                 strategy: Strategy::ALL[variant.min(3)],
                 max_mirror_bounces: crate::ch5_reflection::stage::DEFAULT.max_mirror_bounces,
-                shadow_rays: !scene_cannot_shadow(scene),
+                trace_light_rays: !scene_cannot_shadow(scene),
             };
             let p = pixel_light(world, &camera, &est, settings.seed, pixel, 0);
             let mut out = vec![format!("sample 0: L = {}", rgb(p.total))];

@@ -93,7 +93,7 @@ pub fn trace_table(
         pixel,
         sample,
     );
-    let nee = stage.path.estimator.samples_lights() && !world.lights.lights.is_empty();
+    let nee = stage.path.strategy.samples_lights() && !world.lights.lights.is_empty();
     let lines = table_lines(scene, world, &record, nee);
     Ok(PathTable { record, lines })
 }
