@@ -3,7 +3,7 @@
 //! gets). At each surface the path
 //!
 //! 1. adds what it sees emitted (weighted so no light is counted twice),
-//! 2. samples a light ([`direct_light`]: next-event estimation, the
+//! 2. samples a light (`direct_light`: next-event estimation, the
 //!    "direct" partition of the lecture's path-tracing slide),
 //! 3. samples the BSDF for the next direction (the "indirect" partition),
 //! 4. and plays Russian roulette on its throughput.
@@ -21,7 +21,7 @@
 //! E). Every limit and counter here is such a k (`max_bounces`,
 //! `rr_min_bounce`, [`SAFETY_BOUNCES`], [`random_walk`](super::random_walk::random_walk)'s `max_bounces`);
 //! the only k + 1 is the index of k's layer slot
-//! ([`slot_of`](super::layers::slot_of), after the slot of layer E).
+//! ([`slot_of`], after the slot of layer E).
 
 use glam::{Vec2, Vec3};
 

@@ -58,7 +58,7 @@ pub struct Emission {
 }
 
 /// Next-event estimation at a vertex: the direct light one light sample
-/// brings ([`direct_light`](super::integrator)).
+/// brings (`direct_light` in [`super::integrator`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DirectLight {
     /// Index into the world's lights.
