@@ -18,7 +18,9 @@ use raystep::core::run::{exit_code, run_with, CommonArgs};
 enum StrategyArg {
     /// Uniform hemisphere directions.
     Uniform,
-    /// BRDF sampling (cosine-weighted on Lambertian surfaces).
+    /// BRDF sampling (cosine-weighted on Lambertian surfaces); also
+    /// `bsdf`, chapter 6's name for the same rung.
+    #[value(alias = "bsdf")]
     Cosine,
     /// Light sampling with shadow rays.
     Light,
@@ -48,7 +50,7 @@ fn main() -> ExitCode {
     let stage = Reflection {
         strategy: match cli.strategy {
             StrategyArg::Uniform => Strategy::Uniform,
-            StrategyArg::Cosine => Strategy::Cosine,
+            StrategyArg::Cosine => Strategy::Bsdf,
             StrategyArg::Light => Strategy::Light,
             StrategyArg::Mis => Strategy::Mis,
         },

@@ -11,9 +11,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
 use raystep::ch6_global_illumination::bench;
-use raystep::ch6_global_illumination::integrator::{
-    roulette_cannot_end, Estimator, SAFETY_SCATTERINGS,
-};
+use raystep::ch6_global_illumination::integrator::{roulette_cannot_end, Strategy, SAFETY_BOUNCES};
 use raystep::ch6_global_illumination::reference::make_reference;
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::stage::{GlobalIllumination, DEFAULT};
@@ -60,7 +58,8 @@ struct Cli {
     /// No bounce limit: Russian roulette alone ends paths.
     #[arg(long)]
     unlimited: bool,
-    /// Russian roulette starts after this many scatterings.
+    /// Russian roulette starts after this many scatterings: it may end a
+    /// path before it gathers light of this bounce count k or more.
     #[arg(long, default_value_t = 1)]
     rr_after: u32,
     /// Samples per pixel in one progressive pass.
@@ -90,18 +89,18 @@ fn main() -> ExitCode {
     }
     let cli = Cli::parse();
     let mut stage = DEFAULT;
-    stage.path.estimator = match cli.estimator {
-        EstimatorArg::Uniform => Estimator::UniformWalk,
-        EstimatorArg::Bsdf => Estimator::BsdfSampling,
-        EstimatorArg::Light => Estimator::LightSampling,
-        EstimatorArg::Mis => Estimator::Mis,
+    stage.path.strategy = match cli.estimator {
+        EstimatorArg::Uniform => Strategy::Uniform,
+        EstimatorArg::Bsdf => Strategy::Bsdf,
+        EstimatorArg::Light => Strategy::Light,
+        EstimatorArg::Mis => Strategy::Mis,
     };
     stage.sampler = match cli.sampler {
         SamplerArg::Independent => SamplerKind::Independent,
         SamplerArg::Sobol => SamplerKind::Sobol,
     };
     stage.path.max_bounces = (!cli.unlimited).then_some(cli.max_bounces);
-    stage.path.rr_min_scatterings = cli.rr_after;
+    stage.path.rr_min_bounce = cli.rr_after;
     stage.spp_per_pass = cli.spp_per_pass;
     stage.layers = !cli.final_only;
     stage.spp_figure = cli.spp_figure;
@@ -140,7 +139,7 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
             "warning: every surface of {} reflects all the light it receives \
              (reflectance 1 or glass): Russian roulette cannot end these paths, only \
              leaving the scene can; in a closed scene each runs to the safety limit \
-             of {SAFETY_SCATTERINGS} bounces. Lower a reflectance or drop --unlimited.",
+             of {SAFETY_BOUNCES} bounces. Lower a reflectance or drop --unlimited.",
             scene.name
         );
     }

@@ -11,8 +11,8 @@ use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 
 use crate::ch1_projection::camera::{Camera, CameraDesc};
-use crate::ch3_ray_triangle::bvh::{Bvh, ObvhsAlone, Triangles};
 use crate::ch3_ray_triangle::leaks::bunny;
+use crate::ch3_ray_triangle::obvhs_bvh::{Bvh, ObvhsAlone, Triangles};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::readable_bvh::ReadableBvh;
 use crate::ch3_ray_triangle::studies::procedural_mesh;

@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use crate::ch3_ray_triangle::bvh::{Bvh, Triangles};
+use crate::ch3_ray_triangle::obvhs_bvh::{Bvh, Triangles};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{unit_normal, Hit, Intersector};
 use crate::core::sampling::mix64;

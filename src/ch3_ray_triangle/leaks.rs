@@ -7,7 +7,7 @@ use std::collections::HashMap;
 
 use glam::{DVec3, Mat4, Vec3};
 
-use crate::ch3_ray_triangle::bvh::{Bvh, Triangles};
+use crate::ch3_ray_triangle::obvhs_bvh::{Bvh, Triangles};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::spawn::spawn_ray;
 use crate::ch3_ray_triangle::triangle::{intersect_f64, Intersector};

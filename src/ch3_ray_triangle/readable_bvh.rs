@@ -2,7 +2,7 @@
 //! to be read: a binary bounding volume hierarchy built by splitting at the
 //! median, and its front-to-back closest-hit traversal.
 //!
-//! The naive loop ([`closest_naive`](super::bvh::closest_naive)) tests every
+//! The naive loop ([`closest_naive`](super::obvhs_bvh::closest_naive)) tests every
 //! triangle. A BVH puts the triangles in a tree of boxes: every node's box
 //! holds all the triangles below it, so a ray that misses a box skips its
 //! whole subtree, and a ray that already found a hit at distance t skips
@@ -11,13 +11,13 @@
 //!
 //! This version is for reading and for the exercise; it gives the same
 //! hits as the naive loop and as obvhs (tests check it ray for ray). The
-//! renderer uses obvhs' builder ([`super::bvh::Bvh`], a better tree from
+//! renderer uses obvhs' builder ([`super::obvhs_bvh::Bvh`], a better tree from
 //! the surface area heuristic) and the four-wide traversal
 //! ([`super::wide_bvh::WideBvh`]).
 
 use glam::Vec3;
 
-use super::bvh::BOX_PADDING;
+use super::obvhs_bvh::BOX_PADDING;
 use super::ray::Ray;
 use super::triangle::{gamma, intersect_watertight, Hit};
 use super::work;
@@ -238,11 +238,6 @@ fn subdivide(
 }
 // ANCHOR_END: subdivide
 
-/// Subtrees waiting on the traversal's stack at most. The median split
-/// keeps the tree below 33 levels for any triangle count that fits in a
-/// `u32`, and the stack holds at most one node per level plus one.
-pub const STACK_SIZE: usize = 64;
-
 /// The closest hit along `ray` in (0, t_max) through `bvh`, with the
 /// watertight triangle test. `Hit::triangle` indexes `bvh.tris`.
 ///
@@ -260,15 +255,11 @@ pub fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
     let mut best: Option<Hit> = None;
     let mut t_best = t_max;
     // Subtrees still to visit, with where the ray enters their box.
-    let mut stack = [(0u32, 0.0f32); STACK_SIZE];
-    let mut len = 0;
+    let mut stack: Vec<(u32, f32)> = Vec::new();
     if let Some(t_enter) = root.bounds.enter(ray, inv_dir, t_best) {
-        stack[0] = (0, t_enter);
-        len = 1;
+        stack.push((0, t_enter));
     }
-    while len > 0 {
-        len -= 1;
-        let (index, t_enter) = stack[len];
+    while let Some((index, t_enter)) = stack.pop() {
         // A hit found since this subtree was stacked may lie in front of it.
         if t_enter > t_best {
             continue;
@@ -289,27 +280,13 @@ pub fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
             NodeKind::Inner { left, right } => {
                 let enter =
                     |child: u32| bvh.nodes[child as usize].bounds.enter(ray, inv_dir, t_best);
+                // Push the farther child first, so the nearer one comes
+                // off the stack next.
                 match (enter(left), enter(right)) {
-                    (Some(tl), Some(tr)) => {
-                        // Push the farther child first, so the nearer one
-                        // comes off the stack next.
-                        let (near, far) = if tl <= tr {
-                            ((left, tl), (right, tr))
-                        } else {
-                            ((right, tr), (left, tl))
-                        };
-                        stack[len] = far;
-                        stack[len + 1] = near;
-                        len += 2;
-                    }
-                    (Some(tl), None) => {
-                        stack[len] = (left, tl);
-                        len += 1;
-                    }
-                    (None, Some(tr)) => {
-                        stack[len] = (right, tr);
-                        len += 1;
-                    }
+                    (Some(tl), Some(tr)) if tl <= tr => stack.extend([(right, tr), (left, tl)]),
+                    (Some(tl), Some(tr)) => stack.extend([(left, tl), (right, tr)]),
+                    (Some(tl), None) => stack.push((left, tl)),
+                    (None, Some(tr)) => stack.push((right, tr)),
                     (None, None) => {}
                 }
             }

@@ -8,8 +8,8 @@
 use glam::{Vec2, Vec3};
 use rayon::prelude::*;
 
-use super::bvh::closest_naive;
 use super::geometry::{shade, Geometry};
+use super::obvhs_bvh::closest_naive;
 use super::ray::Ray;
 use super::triangle::{Hit, Intersector};
 use crate::ch1_projection::camera::Camera;

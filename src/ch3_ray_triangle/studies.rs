@@ -8,8 +8,8 @@ use std::time::Instant;
 use glam::{DVec3, Vec3};
 
 use crate::ch1_projection::camera::Camera;
-use crate::ch3_ray_triangle::bvh::closest_naive;
 use crate::ch3_ray_triangle::geometry::Geometry;
+use crate::ch3_ray_triangle::obvhs_bvh::closest_naive;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::render::{render_views, render_views_naive};
 use crate::ch3_ray_triangle::triangle::{intersect_f64, Intersector};

@@ -239,16 +239,7 @@ pub fn intersect_watertight(ray: &Ray, tri: [Vec3; 3], t_min: f32, t_max: f32) -
     let inv_det = 1.0 / det;
     let t = t_scaled * inv_det;
     // Is t certainly > 0, given the rounding error of everything above?
-    let max_zt = a.z.abs().max(b.z.abs()).max(c.z.abs());
-    let max_xt = a.x.abs().max(b.x.abs()).max(c.x.abs());
-    let max_yt = a.y.abs().max(b.y.abs()).max(c.y.abs());
-    let delta_z = gamma(3) * max_zt;
-    let delta_x = gamma(5) * (max_xt + max_zt);
-    let delta_y = gamma(5) * (max_yt + max_zt);
-    let delta_e = 2.0 * (gamma(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
-    let max_e = e0.abs().max(e1.abs()).max(e2.abs());
-    let delta_t =
-        3.0 * (gamma(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs();
+    let delta_t = t_rounding_bound([a, b, c], [e0, e1, e2], inv_det);
     // pbrt-v4 rejects the hit here. Its bound is very loose for triangles
     // tiny compared with their distance (an edge of 1e-6 seen from 1 unit
     // is rejected), so where it cannot decide, decide in f64 instead.
@@ -263,6 +254,24 @@ pub fn intersect_watertight(ray: &Ray, tri: [Vec3; 3], t_min: f32, t_max: f32) -
     })
 }
 // ANCHOR_END: watertight
+
+/// pbrt-v4's bound on the rounding error of the watertight test's t
+/// (`IntersectTriangle`, from the γ bounds of every operation that led to
+/// it): the sheared vertices `abc`, the edge functions `e` and 1/det. A t
+/// at or below it cannot be told from 0.
+fn t_rounding_bound(abc: [Vec3; 3], e: [f32; 3], inv_det: f32) -> f32 {
+    let [a, b, c] = abc;
+    let [e0, e1, e2] = e;
+    let max_zt = a.z.abs().max(b.z.abs()).max(c.z.abs());
+    let max_xt = a.x.abs().max(b.x.abs()).max(c.x.abs());
+    let max_yt = a.y.abs().max(b.y.abs()).max(c.y.abs());
+    let delta_z = gamma(3) * max_zt;
+    let delta_x = gamma(5) * (max_xt + max_zt);
+    let delta_y = gamma(5) * (max_yt + max_zt);
+    let delta_e = 2.0 * (gamma(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+    let max_e = e0.abs().max(e1.abs()).max(e2.abs());
+    3.0 * (gamma(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs()
+}
 
 /// Whether the plane of `tri` lies ahead of the ray's origin (t > t_min),
 /// computed in f64 from the f32 inputs: the tie-breaker of

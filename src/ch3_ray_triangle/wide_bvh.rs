@@ -6,7 +6,7 @@
 //! ([`WatertightRay::intersect4`]) checks all of them. The tree is half as
 //! deep as the binary one and a query takes few branches.
 //!
-//! Chapter 3 teaches the binary tree ([`crate::ch3_ray_triangle::bvh`]); a path tracer casts
+//! Chapter 3 builds the binary tree with obvhs ([`crate::ch3_ray_triangle::obvhs_bvh`]); a path tracer casts
 //! tens of millions of rays, so it takes this one. Both answer the same
 //! questions with the same watertight arithmetic, and a test checks that
 //! they agree ray for ray.
@@ -15,8 +15,8 @@ use glam::{Vec3, Vec3A, Vec4};
 use obvhs::bvh2::Bvh2;
 use obvhs::BvhBuildParams;
 
-use crate::ch3_ray_triangle::bvh::padded_boxes;
 use crate::ch3_ray_triangle::bvh_robust::build_guarded;
+use crate::ch3_ray_triangle::obvhs_bvh::padded_boxes;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{gamma, Hit};
 use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, Tri4, WatertightRay};

@@ -7,7 +7,7 @@
 //! per ray; one that does not tests nearly all of them, and gives the same
 //! answers. Only the counts tell them apart, so the grader of exercise 3.4
 //! reads them (and `tests/ch3` shows what the reference costs). The
-//! renderer's traversals ([`super::wide_bvh`], [`super::bvh::Bvh`]) use
+//! renderer's traversals ([`super::wide_bvh`], [`super::obvhs_bvh::Bvh`]) use
 //! neither function, so counting costs them nothing; the readable ones pay
 //! a thread-local add per call.
 

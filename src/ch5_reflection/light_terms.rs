@@ -1,17 +1,17 @@
 //! One pixel's reflection equation, light by light: for the camera ray of
 //! one sample, what each light adds at the point it hits, split into the
 //! light-sampling term and the BRDF-sampling term (each with its MIS
-//! weight). It draws the same random numbers in the same order as
-//! [`Estimator::radiance`], so the terms add up to the render's value for
-//! that sample (a test checks it).
+//! weight). Nothing here estimates anything: the render's own estimator
+//! ([`Estimator::radiance`]) runs on the sample, and a listener
+//! ([`Tally::note`]) writes down the terms it adds, as chapter 6's
+//! `PathRecord` does for a path. The terms therefore add up to the render's
+//! value for that sample (a test checks it).
 
 use glam::{Vec2, Vec3};
 
 use crate::ch1_projection::camera::Camera;
-use crate::ch5_reflection::direct::{Counters, Estimator, Strategy};
-use crate::ch5_reflection::material::Frame;
-use crate::ch5_reflection::mis::power_heuristic;
-use crate::ch5_reflection::warp::{uniform_hemisphere, UNIFORM_HEMISPHERE_PDF};
+use crate::ch5_reflection::direct::Estimator;
+use crate::ch5_reflection::shading_events::{Counters, ShadingEvent, Tally};
 use crate::ch5_reflection::world::World;
 use crate::core::sampling::Sampler;
 
@@ -64,111 +64,81 @@ pub fn pixel_light(
     let pixel = y as u64 * camera.width as u64 + x as u64;
     let mut s = Sampler::new(seed, pixel, sample as u64);
     let ray = camera.ray(Vec2::new(x as f32, y as f32) + s.next2());
-    let mut c = Counters::default();
-    let total = est.radiance(world, &ray, &mut s.clone(), &mut c);
-    let mut out = PixelLight {
+    let mut listener = Listener {
+        counters: Counters::default(),
+        lights: world.lights.lights.len(),
+        story: None,
+    };
+    let total = est.radiance(world, &ray, &mut s, &mut listener);
+    PixelLight {
         total,
-        ..PixelLight::default()
-    };
-    let Some(it) = world.intersect(&ray) else {
-        out.emitted = world.lights.environment_radiance(ray.dir);
-        return out;
-    };
-    out.hit = true;
-    let wo = -ray.dir;
-    let bsdf = &world.bsdfs[it.material];
-    out.emitted = world.emitted(&it, wo);
-    if bsdf.is_delta() {
-        out.delta = true;
-        return out;
+        ..listener.story.unwrap_or_default()
     }
-    let frame = Frame::from_normal(it.n);
-    let wo_local = frame.to_local(wo);
-    let n = if wo.dot(it.n) < 0.0 { -it.n } else { it.n };
-    let samples_lights = est.strategy.samples_lights();
-    let mut extended = false;
-    for (i, light) in world.lights.lights.iter().enumerate() {
-        let mut term = LightTerm {
-            light: i,
-            ..LightTerm::default()
-        };
-        let delta = light.is_delta();
-        extended |= !delta;
-        if delta || samples_lights {
-            if let Some(ls) = light.sample_li(it.p, n, s.next2()) {
-                let cos = ls.wi.dot(n);
-                let wi_local = frame.to_local(ls.wi);
-                let f = bsdf.f(wo_local, wi_local);
-                if cos > 0.0 && f != Vec3::ZERO {
-                    let visible = !est.shadow_rays || world.unoccluded(it.p, it.n, ls.wi, ls.dist);
-                    term.shadowed = !visible;
-                    if visible {
-                        term.weight = if delta || est.strategy == Strategy::Light {
-                            1.0
-                        } else {
-                            power_heuristic(ls.pdf, bsdf.pdf(wo_local, wi_local))
-                        };
-                        let v = f * ls.li * cos * (term.weight / ls.pdf);
-                        term.sampled = if v.is_finite() { v } else { Vec3::ZERO };
-                    }
-                }
-            }
-        }
-        out.lights.push(term);
+}
+
+/// Hears the estimator's steps for the camera ray and writes them down.
+struct Listener {
+    counters: Counters,
+    /// How many lights the world has.
+    lights: usize,
+    /// Filled in from the first event on (the camera ray's hit or escape).
+    story: Option<PixelLight>,
+}
+
+impl Tally for Listener {
+    fn counters(&mut self) -> &mut Counters {
+        &mut self.counters
     }
-    if extended && est.strategy != Strategy::Light {
-        // One direction from the hemisphere or the BRDF: whatever light it
-        // finds gets the term.
-        let (u, u_lobe) = (s.next2(), s.next());
-        let sampled = if est.strategy == Strategy::Uniform {
-            let mut w = uniform_hemisphere(u);
-            if wo_local.z < 0.0 {
-                w.z = -w.z;
-            }
-            Some((w, bsdf.f(wo_local, w), UNIFORM_HEMISPHERE_PDF))
-        } else {
-            bsdf.sample(wo_local, u, u_lobe).map(|b| (b.wi, b.f, b.pdf))
-        };
-        if let Some((wi_local, f, pdf)) = sampled.filter(|(_, f, p)| *f != Vec3::ZERO && *p > 0.0) {
-            let wi = frame.to_world(wi_local);
-            let cos = wi.dot(n);
-            let next = world.spawn(it.p, it.n, wi);
-            let hit = match (est.shadow_rays, next) {
-                (true, Some(r)) => world.intersect(&r),
-                _ => None,
-            };
-            // (light index if it is one, Le, light sampling's pdf)
-            let found = match hit {
-                None => (
-                    world.lights.environment,
-                    world.lights.environment_radiance(wi),
-                    world.lights.environment_pdf(n, wi),
-                ),
-                Some(h) => match world.area_light(&h) {
-                    Some((i, a)) => (Some(i), world.emitted(&h, -wi), a.pdf_li(it.p, h.p, h.n)),
-                    None => (None, world.emitted(&h, -wi), 0.0),
+
+    fn note(&mut self, event: ShadingEvent) {
+        let Some(story) = &mut self.story else {
+            // The camera ray's own hit or escape.
+            self.story = Some(match event {
+                ShadingEvent::Escaped { sky } => PixelLight {
+                    emitted: sky,
+                    ..PixelLight::default()
                 },
-            };
-            let (i, le, pdf_light) = found;
-            if cos > 0.0 && le != Vec3::ZERO {
-                let w = if est.strategy == Strategy::Mis {
-                    power_heuristic(pdf, pdf_light)
-                } else {
-                    1.0
-                };
-                let v = f * le * cos * (w / pdf);
-                let v = if v.is_finite() { v } else { Vec3::ZERO };
-                match i.and_then(|i| out.lights.get_mut(i)) {
-                    Some(t) => {
-                        t.found = v;
-                        t.found_weight = w;
-                    }
-                    None => out.other = v,
+                ShadingEvent::Hit { emitted, delta } => PixelLight {
+                    hit: true,
+                    delta,
+                    emitted,
+                    lights: (0..self.lights)
+                        .map(|light| LightTerm {
+                            light,
+                            ..LightTerm::default()
+                        })
+                        .collect(),
+                    ..PixelLight::default()
+                },
+                _ => PixelLight::default(),
+            });
+            return;
+        };
+        if story.delta {
+            return; // what a mirror sees is not split light by light
+        }
+        match event {
+            ShadingEvent::Light {
+                light,
+                term,
+                weight,
+                shadowed,
+            } => {
+                if let Some(t) = story.lights.get_mut(light) {
+                    (t.sampled, t.weight, t.shadowed) = (term, weight, shadowed);
                 }
             }
+            ShadingEvent::Found {
+                light,
+                term,
+                weight,
+            } => match light.and_then(|i| story.lights.get_mut(i)) {
+                Some(t) => (t.found, t.found_weight) = (term, weight),
+                None => story.other = term,
+            },
+            ShadingEvent::Escaped { .. } | ShadingEvent::Hit { .. } => {}
         }
     }
-    out
 }
 
 impl PixelLight {

@@ -8,11 +8,13 @@
 //! | types of light: directional, point, spot, area | [`light`] |
 //! | the BRDF: ideal diffuse, glossy, perfect mirror | [`material`] |
 //! | turning uniform numbers into directions, with their densities | [`warp`] |
-//! | the reflection equation, estimated at one point (uniform, cosine, BRDF and light sampling) | [`direct`] |
+//! | the reflection equation, estimated at one point (uniform, BSDF and light sampling, MIS) | [`direct`] |
+//! | what the estimator tells a listener: its counts and each term it adds | [`shading_events`] |
 //! | several strategies at once: multiple importance sampling | [`mis`] |
 //! | the scene the shading chapters see: one intersect, one shadow ray | [`world`] |
 //! | one image: camera rays, each shaded by the reflection equation | [`render`] |
-//! | one pixel's sample, light by light (the inspect mode's story) | [`light_terms`] |
+//! | what the scene decides first: can anything cast a shadow? | [`shadowing`] |
+//! | one pixel's sample, light by light, heard through the estimator's notes (the inspect mode's story) | [`light_terms`] |
 //! | the chapter as a stage | [`stage`] |
 //! | what the chapter prints | [`report`] |
 //! | error against run time for the four strategies | [`studies`], drawn by [`crate::core::plot`] |
@@ -27,6 +29,8 @@ pub mod names;
 pub mod radiometry;
 pub mod render;
 pub mod report;
+pub mod shading_events;
+pub mod shadowing;
 pub mod stability;
 pub mod stage;
 pub mod studies;

@@ -3,9 +3,10 @@
 
 use glam::Vec3;
 
-use super::direct::{Counters, Estimator};
+use super::direct::Estimator;
 use super::light::Light;
 use super::material::Bsdf;
+use super::shading_events::Counters;
 use super::world::World;
 use crate::core::format::{format_count, format_number, format_seconds};
 use crate::core::report::{Report, Table};
@@ -203,11 +204,14 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
             .left_out
             .push("environment: rays that escape see black".into());
     }
-    if est.shadow_rays {
-        report.built.push("shadow rays".into());
+    if est.trace_light_rays {
+        report
+            .built
+            .push("shadow rays and sampled-direction rays".into());
     } else {
         report.left_out.push(
-            "shadow rays: one flat or convex mesh and nothing else, so no surface can shadow another"
+            "shadow rays and sampled-direction rays: one flat or convex mesh and nothing else, \
+             so no surface can shadow another"
                 .into(),
         );
     }

@@ -4,7 +4,8 @@
 
 use glam::{DVec3, Vec2, Vec3};
 
-use super::direct::{Counters, Estimator, Strategy};
+use super::direct::{Estimator, Strategy};
+use super::shading_events::Counters;
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::light::sky::Sky;
 use crate::ch5_reflection::material::glossy::Glossy;
@@ -68,7 +69,7 @@ fn shade(world: &World, strategy: Strategy, wo: Vec3, n: u32) -> (Vec3, Counters
     let est = Estimator {
         strategy,
         max_mirror_bounces: 2,
-        shadow_rays: true,
+        trace_light_rays: true,
     };
     let it = floor_point(world);
     let mut c = Counters::default();
@@ -386,7 +387,7 @@ pub fn placement() -> CaseResult {
         let est = Estimator {
             strategy: Strategy::Mis,
             max_mirror_bounces: 4,
-            shadow_rays: true,
+            trace_light_rays: true,
         };
         let mut sums = vec![Vec3::ZERO; 24 * 24];
         for sample in 0..8 {

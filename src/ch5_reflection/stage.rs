@@ -5,18 +5,20 @@
 //! from every light, plus what an ideal mirror sees.
 //!
 //! The variants are the four strategies for lights with extent (uniform,
-//! cosine, light, MIS); delta lights are the same in all four.
+//! BSDF, light, MIS); delta lights are the same in all four.
 
 use std::sync::Arc;
 use std::time::Instant;
 
 use glam::Vec3;
 
-use super::direct::{Counters, Estimator, Strategy};
+use super::direct::{Estimator, Strategy};
 use super::light_terms::pixel_light;
 use super::names::light_name;
-use super::render::{render_pass, scene_cannot_shadow};
+use super::render::render_pass;
 use super::report::{chapter_report, ReportInputs};
+use super::shading_events::Counters;
+use super::shadowing::scene_cannot_shadow;
 use crate::ch1_projection::camera::Camera;
 use crate::ch5_reflection::world::World;
 use crate::core::error::Result;
@@ -43,7 +45,7 @@ pub const VARIANTS: &[Variant] = &[
         about: "uniform hemisphere directions: finds lights by chance",
     },
     Variant {
-        name: "cosine",
+        name: "bsdf",
         about: "BRDF sampling: cosine-weighted on Lambertian surfaces, the lobe on glossy ones",
     },
     Variant {
@@ -144,7 +146,7 @@ impl ReflectionRender {
         Estimator {
             strategy: self.stage.strategy,
             max_mirror_bounces: self.stage.max_mirror_bounces,
-            shadow_rays: !scene_cannot_shadow(&self.scene),
+            trace_light_rays: !scene_cannot_shadow(&self.scene),
         }
     }
 }

@@ -16,7 +16,8 @@ use std::time::Instant;
 
 use glam::{DVec3, Vec3};
 
-use super::direct::{Counters, Estimator, Strategy};
+use super::direct::{Estimator, Strategy};
+use super::shading_events::Counters;
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::radiometry::polygon_irradiance;
 use crate::ch5_reflection::world::{Interaction, World};
@@ -95,8 +96,9 @@ pub struct Problem {
     pub it: Interaction,
     /// The exact reflected radiance towards the normal.
     pub truth: Vec3,
-    /// Whether shadow rays are needed.
-    pub shadow_rays: bool,
+    /// Whether the estimator traces shadow and sampled-direction rays
+    /// ([`Estimator::trace_light_rays`](super::direct::Estimator::trace_light_rays)).
+    pub trace_light_rays: bool,
 }
 
 fn world_of(text: &str) -> (Scene, World) {
@@ -120,7 +122,7 @@ pub fn area_problem() -> Problem {
         it: floor_point(&world, Vec3::Z),
         world,
         truth,
-        shadow_rays: !super::render::scene_cannot_shadow(&scene),
+        trace_light_rays: !super::shadowing::scene_cannot_shadow(&scene),
     }
 }
 
@@ -136,7 +138,7 @@ pub fn sky_problem() -> Problem {
         it: floor_point(&world, Vec3::Y),
         world,
         truth,
-        shadow_rays: !super::render::scene_cannot_shadow(&scene),
+        trace_light_rays: !super::shadowing::scene_cannot_shadow(&scene),
     }
 }
 
@@ -156,7 +158,7 @@ impl Problem {
         let est = Estimator {
             strategy,
             max_mirror_bounces: 0,
-            shadow_rays: self.shadow_rays,
+            trace_light_rays: self.trace_light_rays,
         };
         let mut c = Counters::default();
         let mut sum = Vec3::ZERO;

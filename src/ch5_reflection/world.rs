@@ -8,7 +8,7 @@
 
 use glam::Vec3;
 
-use crate::ch3_ray_triangle::bvh::Triangles;
+use crate::ch3_ray_triangle::obvhs_bvh::Triangles;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::spawn::{offset_distance, offset_origin};
 use crate::ch3_ray_triangle::triangle::unit_normal;

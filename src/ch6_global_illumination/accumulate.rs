@@ -11,7 +11,8 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch5_reflection::world::World;
 use crate::core::film::Film;
 
-use super::integrator::{trace_path, PathSettings, PathStats, LAYER_SLOTS};
+use super::integrator::{trace_path, PathSettings, PathStats};
+use super::layers::LAYER_SLOTS;
 use super::sampler::{PathSampler, SamplerKind};
 
 /// The random numbers and the camera ray of sample `sample` of pixel

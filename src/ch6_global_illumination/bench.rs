@@ -19,7 +19,7 @@ use std::time::Instant;
 use glam::Vec2;
 
 use crate::ch1_projection::camera::Camera;
-use crate::ch3_ray_triangle::bvh::Bvh;
+use crate::ch3_ray_triangle::obvhs_bvh::Bvh;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Intersector;
 use crate::ch5_reflection::material::Frame;
@@ -48,8 +48,8 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
              {threads} threads (targets: > 3.5M paths/s; RMSE²·s < 3e-4)",
             path.max_bounces
                 .map_or("unlimited bounces".into(), |k| format!("up to {k} bounces")),
-            path.estimator.name(),
-            path.rr_min_scatterings,
+            path.strategy.name(),
+            path.rr_min_bounce,
         ),
         &[
             "sampler",

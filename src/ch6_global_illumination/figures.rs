@@ -8,7 +8,8 @@ use crate::core::plot::{LogLogPlot, Look};
 use crate::core::report::ErrorTime;
 
 use super::accumulate::Accumulator;
-use super::integrator::{PathSettings, LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
+use super::integrator::PathSettings;
+use super::layers::{LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
 use super::sampler::SamplerKind;
 use crate::ch1_projection::camera::Camera;
 use crate::ch5_reflection::world::World;

@@ -6,6 +6,9 @@
 //! | slide | file |
 //! |---|---|
 //! | the rendering equation, one light path per sample, bounce by bounce | [`integrator`] |
+//! | the simplest path tracer on its own: a uniform random walk | [`random_walk`](mod@random_walk) |
+//! | where a path's light goes: one layer per bounce count | [`layers`] |
+//! | one vertex of a path and the direction it goes on in | [`vertex`] |
 //! | where a path's random numbers come from (independent, Sobol) | [`sampler`] |
 //! | one path written down vertex by vertex, for a pixel one asks about | [`path_events`], [`path_record`] |
 //! | direct, one-bounce, two-bounce … global illumination: the layers | [`accumulate`], [`figures`] |
@@ -22,8 +25,10 @@ pub mod bench;
 pub mod figures;
 pub mod inspect;
 pub mod integrator;
+pub mod layers;
 pub mod path_events;
 pub mod path_record;
+pub mod random_walk;
 pub mod reference;
 pub mod report;
 pub mod sampler;
@@ -31,3 +36,4 @@ pub mod scenes;
 pub mod stability;
 pub mod stage;
 pub mod studies;
+pub mod vertex;

@@ -1,7 +1,7 @@
 //! What the path tracer's loop says about each step it takes, for anyone
 //! who wants to watch one path: the surface it reached, the light found
 //! there, the direction it went on in. The render ignores these events
-//! (the default [`Contributions::note`](super::integrator::Contributions::note)
+//! (the default [`Contributions::note`](super::layers::Contributions::note)
 //! does nothing and compiles away); [`super::path_record`] writes them
 //! down as a table, the lecture's path-tracing slide for one sample.
 
@@ -32,7 +32,7 @@ pub enum PathEvent<'a> {
     /// The surface just hit emits towards the path.
     Emission(Emission),
     /// Next-event estimation: a light was sampled.
-    Light(LightSample),
+    Light(DirectLight),
     /// The next direction was sampled.
     Scatter(Scatter),
     /// Russian roulette was played with survival probability `q`.
@@ -57,9 +57,10 @@ pub struct Emission {
     pub contribution: Vec3,
 }
 
-/// Next-event estimation at a vertex.
+/// Next-event estimation at a vertex: the direct light one light sample
+/// brings (`direct_light` in [`super::integrator`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LightSample {
+pub struct DirectLight {
     /// Index into the world's lights.
     pub light: usize,
     /// World direction towards the light sample.

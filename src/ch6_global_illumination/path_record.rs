@@ -14,8 +14,9 @@ use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::world::World;
 
 use super::accumulate::camera_sample;
-use super::integrator::{trace_path, Contributions, PathSettings, PathStats, LAYER_SLOTS};
-pub use super::path_events::{Emission, LightSample, PathEvent, Scatter};
+use super::integrator::{trace_path, PathSettings, PathStats};
+use super::layers::{Contributions, LAYER_SLOTS};
+pub use super::path_events::{DirectLight, Emission, PathEvent, Scatter};
 use super::sampler::SamplerKind;
 pub use crate::ch5_reflection::names::{light_name, surface_name};
 
@@ -35,7 +36,7 @@ pub struct Vertex {
     /// Emission found here by the ray that arrived.
     pub emission: Option<Emission>,
     /// Light sampling here (none after a delta surface or without lights).
-    pub light: Option<LightSample>,
+    pub light: Option<DirectLight>,
     /// The direction the path went on in.
     pub scatter: Option<Scatter>,
     /// Russian roulette: (survival probability, survived).

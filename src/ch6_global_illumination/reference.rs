@@ -339,20 +339,20 @@ pub fn make_reference(
         acc.width,
         acc.height,
         seed,
-        path.estimator.name(),
+        path.strategy.name(),
         sampler.name(),
         path.max_bounces.map_or("unlimited".into(), |k| k.to_string()),
-        path.rr_min_scatterings,
+        path.rr_min_bounce,
         acc.stats.paths,
         rayon::current_num_threads(),
         acc.width,
         acc.height,
         seed,
-        path.estimator.name(),
+        path.strategy.name(),
         sampler.name(),
         path.max_bounces
             .map_or("--unlimited".into(), |k| format!("--max-bounces {k}")),
-        path.rr_min_scatterings,
+        path.rr_min_bounce,
     );
     let name = stem(&scene.name, acc.width, acc.height);
     let files = StoredReference::save(&acc, &reference_dir(), &name, &meta)?;

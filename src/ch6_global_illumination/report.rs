@@ -6,7 +6,8 @@
 use glam::Vec3;
 
 use super::accumulate::Accumulator;
-use super::integrator::{Estimator, PathSettings, LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
+use super::integrator::{PathSettings, Strategy};
+use super::layers::{LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
 use super::sampler::SamplerKind;
 use super::stability::stability_cases;
 use super::studies::{error_against_time, strategy_table};
@@ -23,7 +24,7 @@ pub struct ReportInputs<'a> {
     pub scene: &'a Scene,
     /// The command's settings.
     pub settings: &'a Settings,
-    /// Estimator, bounce limit, roulette.
+    /// Strategy, bounce limit, roulette.
     pub path: PathSettings,
     /// Where the random numbers came from.
     pub sampler: SamplerKind,
@@ -55,7 +56,7 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
         ("samples per pixel", acc.samples.to_string()),
         (
             "estimator",
-            format!("{} ({} numbers)", r.path.estimator.name(), r.sampler.name()),
+            format!("{} ({} numbers)", r.path.strategy.name(), r.sampler.name()),
         ),
         (
             "max bounces",
@@ -67,7 +68,7 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
         ),
         (
             "Russian roulette",
-            format!("after {} scatterings", r.path.rr_min_scatterings),
+            format!("after {} scatterings", r.path.rr_min_bounce),
         ),
         ("paths", st.paths.to_string()),
         ("rays (segments and shadow rays)", st.rays.to_string()),
@@ -161,7 +162,7 @@ fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
     }
     let lights = world.map(|(w, _)| &w.lights);
     let n_lights = lights.map_or(0, |l| l.lights.len());
-    let samples_lights = matches!(r.path.estimator, Estimator::LightSampling | Estimator::Mis);
+    let samples_lights = matches!(r.path.strategy, Strategy::Light | Strategy::Mis);
     if n_lights == 0 {
         l.push("light sampling: the scene has no lights or emitters (paths find light only by hitting it)".into());
     } else if samples_lights {
@@ -178,7 +179,7 @@ fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
     } else {
         l.push(format!(
             "light sampling: the {} estimator does not sample lights",
-            r.path.estimator.name()
+            r.path.strategy.name()
         ));
     }
     if r.layers {

@@ -11,7 +11,7 @@ use crate::scene::Scene;
 use glam::DVec3;
 
 use super::accumulate::Accumulator;
-use super::integrator::{Estimator, PathSettings};
+use super::integrator::{PathSettings, Strategy};
 use super::reference::{film_mean, region_z_test, z_score, StoredReference};
 use super::sampler::SamplerKind;
 use super::scenes;
@@ -75,9 +75,9 @@ pub fn tiny_light(size: u32, spp: u32) -> (StabilityCase, f64) {
     let mut measured = Vec::new();
     let mut ok = true;
     let mut z_mis = f64::INFINITY;
-    for e in [Estimator::Mis, Estimator::BsdfSampling] {
+    for e in [Strategy::Mis, Strategy::Bsdf] {
         let path = PathSettings {
-            estimator: e,
+            strategy: e,
             ..PathSettings::default()
         };
         let (acc, _) = render(&scene, &path, SamplerKind::Independent, spp, 5, false);
@@ -98,7 +98,7 @@ pub fn tiny_light(size: u32, spp: u32) -> (StabilityCase, f64) {
             .map(|p| p.max_element())
             .fold(0.0f32, f32::max);
         ok &= acc.stats.nonfinite == 0 && mean.pixels.iter().all(|p| p.is_finite());
-        if e == Estimator::Mis {
+        if e == Strategy::Mis {
             ok &= z.abs() < 4.0;
             z_mis = z;
         }
@@ -224,7 +224,7 @@ pub fn placement(size: u32, spp: u32) -> (StabilityCase, f64) {
     };
     let reference = stored.downsampled(stored.mean.width / size);
     let path = PathSettings {
-        estimator: Estimator::Mis,
+        strategy: Strategy::Mis,
         ..PathSettings::default()
     };
     // The mean over pixels and channels.

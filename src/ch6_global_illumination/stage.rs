@@ -18,7 +18,8 @@ use glam::Vec3;
 use super::accumulate::{downsample, Accumulator};
 use super::figures::{layer_figures, spp_figure, strategy_plot};
 use super::inspect::table_lines;
-use super::integrator::{Estimator, PathSettings, LAYER_SLOTS};
+use super::integrator::{PathSettings, Strategy};
+use super::layers::{LAYER_SLOTS, RENDER_LAYERS};
 use super::path_record::record_path;
 use super::reference::{upsample, StoredReference};
 use super::report::{chapter_report, ReportInputs};
@@ -90,7 +91,7 @@ pub const VARIANTS: &[Variant] = &[
 /// Chapter 6 with its settings.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct GlobalIllumination {
-    /// Estimator, bounce limit, roulette.
+    /// Strategy, bounce limit, roulette.
     pub path: PathSettings,
     /// Independent or Sobol numbers.
     pub sampler: SamplerKind,
@@ -108,9 +109,9 @@ pub struct GlobalIllumination {
 /// bounces, 4 spp per pass, with layers.
 pub const DEFAULT: GlobalIllumination = GlobalIllumination {
     path: PathSettings {
-        estimator: Estimator::Mis,
+        strategy: Strategy::Mis,
         max_bounces: Some(16),
-        rr_min_scatterings: 1,
+        rr_min_bounce: 1,
     },
     sampler: SamplerKind::Sobol,
     spp_per_pass: 4,
@@ -121,9 +122,9 @@ pub const DEFAULT: GlobalIllumination = GlobalIllumination {
 impl GlobalIllumination {
     /// The variant index of this estimator and sampler (into [`VARIANTS`]).
     pub fn variant(&self) -> usize {
-        let e = Estimator::ALL
+        let e = Strategy::ALL
             .iter()
-            .position(|e| *e == self.path.estimator)
+            .position(|e| *e == self.path.strategy)
             .unwrap_or(3);
         2 * e + usize::from(self.sampler == SamplerKind::Sobol)
     }
@@ -131,7 +132,7 @@ impl GlobalIllumination {
     /// The same stage with variant `index` of [`VARIANTS`].
     pub fn with_variant(&self, index: usize) -> GlobalIllumination {
         let mut s = *self;
-        s.path.estimator = Estimator::ALL[(index / 2).min(3)];
+        s.path.strategy = Strategy::ALL[(index / 2).min(3)];
         s.sampler = if index % 2 == 1 {
             SamplerKind::Sobol
         } else {
@@ -305,14 +306,15 @@ impl PathTracingRender {
     /// Per-bounce layers as [`Snapshot::layers`] defines them.
     fn layers(&self) -> Option<Vec<Film>> {
         // layers[0] is direct illumination with the emitters seen directly
-        // included, layers[k] bounce k; the last holds everything beyond.
+        // included, layers[k] bounce k; the last holds everything beyond:
+        // RENDER_LAYERS, one fewer than the slots.
         // One sweep over the sums (they are stored per pixel, all slots
         // together), as `acc.layer(slot)` for every slot would read them
         // all once per slot.
         let sums = self.acc.layers.as_ref()?;
         let inv = 1.0 / self.acc.samples.max(1) as f32;
         let (w, h) = (self.acc.width, self.acc.height);
-        let mut out: Vec<Film> = (1..LAYER_SLOTS).map(|_| Film::new(w, h)).collect();
+        let mut out: Vec<Film> = (0..RENDER_LAYERS).map(|_| Film::new(w, h)).collect();
         for (i, l) in sums.iter().enumerate() {
             for slot in 1..LAYER_SLOTS {
                 let mut v = l[slot] * inv;
@@ -393,7 +395,7 @@ impl Render for PathTracingRender {
         }
         let (path, sampler, seed) = (&self.stage.path, self.stage.sampler, self.settings.seed);
         let record = record_path(world, &self.camera, path, sampler, seed, pixel, sample);
-        let nee = path.estimator.samples_lights() && !world.lights.lights.is_empty();
+        let nee = path.strategy.samples_lights() && !world.lights.lights.is_empty();
         Some(Inspection {
             pixel,
             sample,

@@ -14,7 +14,7 @@ use crate::core::report::{ErrorTime, Measurement, Table};
 use crate::scene::Scene;
 
 use super::accumulate::Accumulator;
-use super::integrator::{Estimator, PathSettings};
+use super::integrator::{PathSettings, Strategy};
 use super::reference::StoredReference;
 use super::sampler::SamplerKind;
 use super::scenes;
@@ -68,8 +68,8 @@ fn series(
 }
 
 /// Which estimators and samplers the study runs (all of them).
-pub fn all_variants() -> Vec<(Estimator, SamplerKind)> {
-    Estimator::ALL
+pub fn all_variants() -> Vec<(Strategy, SamplerKind)> {
+    Strategy::ALL
         .into_iter()
         .flat_map(|e| [(e, SamplerKind::Independent), (e, SamplerKind::Sobol)])
         .collect()
@@ -94,7 +94,7 @@ pub fn error_against_time(max_spp: u32) -> ErrorTime {
         let path = PathSettings::default();
         for (e, s) in all_variants() {
             let p = PathSettings {
-                estimator: e,
+                strategy: e,
                 ..path
             };
             let name = format!("cornell {} {}", e.name(), s.name());
@@ -110,7 +110,7 @@ pub fn error_against_time(max_spp: u32) -> ErrorTime {
     };
     for (e, s) in all_variants() {
         let p = PathSettings {
-            estimator: e,
+            strategy: e,
             max_bounces: None,
             ..PathSettings::default()
         };

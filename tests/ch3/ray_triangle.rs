@@ -4,9 +4,9 @@ use std::sync::Arc;
 
 use glam::{DVec3, Vec2, Vec3};
 use raystep::ch1_projection::camera::Camera;
-use raystep::ch3_ray_triangle::bvh::{closest_naive, occluded_naive, Bvh, Triangles};
 use raystep::ch3_ray_triangle::geometry::Geometry;
 use raystep::ch3_ray_triangle::leaks::{bunny, leak_test, self_intersections};
+use raystep::ch3_ray_triangle::obvhs_bvh::{closest_naive, occluded_naive, Bvh, Triangles};
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch3_ray_triangle::render::{render_views, sample_position};
 use raystep::ch3_ray_triangle::stability::stability_cases;

@@ -2,7 +2,7 @@
 //! against obvhs on several meshes, and its exercise's grader.
 
 use glam::Vec3;
-use raystep::ch3_ray_triangle::bvh::{closest_naive, Bvh, Triangles};
+use raystep::ch3_ray_triangle::obvhs_bvh::{closest_naive, Bvh, Triangles};
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch3_ray_triangle::readable_bvh::{closest_hit, NodeKind, ReadableBvh, MAX_LEAF};
 use raystep::ch3_ray_triangle::triangle::{Hit, Intersector};

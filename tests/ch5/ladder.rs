@@ -5,7 +5,8 @@
 
 use glam::Vec2;
 use raystep::ch1_projection::camera::Camera;
-use raystep::ch5_reflection::direct::{direct_lighting, Counters, Estimator, Strategy};
+use raystep::ch5_reflection::direct::{direct_lighting, Estimator, Strategy};
+use raystep::ch5_reflection::shading_events::Counters;
 use raystep::ch5_reflection::world::World;
 use raystep::ch6_global_illumination::reference::{region_z_test, StoredReference};
 use raystep::core::sampling::Sampler;
@@ -19,7 +20,7 @@ fn estimator(strategy: Strategy) -> Estimator {
     Estimator {
         strategy,
         max_mirror_bounces: 4,
-        shadow_rays: true,
+        trace_light_rays: true,
     }
 }
 

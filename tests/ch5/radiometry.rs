@@ -5,11 +5,12 @@ use std::f64::consts::PI;
 
 use glam::{DVec3, Vec3};
 use raystep::ch4_implicit_surfaces::hit::Surface;
-use raystep::ch5_reflection::direct::{Counters, Estimator, Strategy};
+use raystep::ch5_reflection::direct::{Estimator, Strategy};
 use raystep::ch5_reflection::radiometry::{
     cap_solid_angle, directional_irradiance, point_irradiance, polygon_irradiance,
     sphere_solid_angle, triangle_solid_angle,
 };
+use raystep::ch5_reflection::shading_events::Counters;
 use raystep::ch5_reflection::studies::{area_problem, sky_problem};
 use raystep::ch5_reflection::world::{Interaction, World};
 use raystep::core::sampling::Sampler;
@@ -35,7 +36,7 @@ fn shade(w: &World, strategy: Strategy, wo: Vec3, n: u32) -> Vec3 {
     let est = Estimator {
         strategy,
         max_mirror_bounces: 0,
-        shadow_rays: true,
+        trace_light_rays: true,
     };
     let mut c = Counters::default();
     let it = at_origin(w);
@@ -147,7 +148,7 @@ fn a_lambertian_plane_under_a_constant_environment_reflects_rho_l_exactly() {
         "{FLOOR}[[lights]]\ntype = \"environment\"\nradiance = [2, 3, 4]\n"
     ));
     let want = Vec3::new(0.5 * 2.0, 0.25 * 3.0, 1.0 * 4.0);
-    for s in [Strategy::Cosine, Strategy::Light, Strategy::Mis] {
+    for s in [Strategy::Bsdf, Strategy::Light, Strategy::Mis] {
         for wo in [Vec3::Z, Vec3::new(0.6, 0.0, 0.8)] {
             let l = shade(&w, s, wo, 8);
             assert!((l - want).abs().max_element() < 1e-5, "{s:?}: {l}");

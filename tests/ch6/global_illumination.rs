@@ -8,9 +8,8 @@ use std::sync::Arc;
 
 use glam::Vec3;
 use raystep::ch6_global_illumination::accumulate::{downsample, Accumulator};
-use raystep::ch6_global_illumination::integrator::{
-    Estimator, PathSettings, LAYER_SLOTS, SLOT_BEYOND,
-};
+use raystep::ch6_global_illumination::integrator::{PathSettings, Strategy};
+use raystep::ch6_global_illumination::layers::{LAYER_SLOTS, RENDER_LAYERS, SLOT_BEYOND};
 use raystep::ch6_global_illumination::reference::{region_z_test, StoredReference};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::scenes;
@@ -22,9 +21,9 @@ use raystep::scene::Scene;
 
 const Z: f64 = 4.0;
 
-fn unlimited(estimator: Estimator) -> PathSettings {
+fn unlimited(strategy: Strategy) -> PathSettings {
     PathSettings {
-        estimator,
+        strategy,
         max_bounces: None,
         ..PathSettings::default()
     }
@@ -35,7 +34,7 @@ fn closed_furnace_layers(rho: f64) {
     let scene = scenes::closed_furnace(rho, le, 8);
     let (acc, _) = render(
         &scene,
-        &unlimited(Estimator::Mis),
+        &unlimited(Strategy::Mis),
         SamplerKind::Independent,
         32,
         1,
@@ -98,7 +97,7 @@ fn a_bounce_limit_leaves_the_beyond_layer_empty_and_cuts_exactly_there() {
     // Unlimited: light beyond 16 bounces lands in the last layer.
     let (acc, _) = render(
         &scene,
-        &unlimited(Estimator::Mis),
+        &unlimited(Strategy::Mis),
         SamplerKind::Independent,
         16,
         1,
@@ -114,13 +113,13 @@ fn open_furnace_sphere_pixels_are_rho_for_any_bounce_limit() {
     let rho = 0.7;
     let scene = scenes::open_furnace(rho, 32, None);
     for (max, estimator) in [
-        (Some(0), Estimator::Mis),
-        (Some(1), Estimator::LightSampling),
-        (Some(16), Estimator::BsdfSampling),
-        (None, Estimator::Mis),
+        (Some(0), Strategy::Mis),
+        (Some(1), Strategy::Light),
+        (Some(16), Strategy::Bsdf),
+        (None, Strategy::Mis),
     ] {
         let path = PathSettings {
-            estimator,
+            strategy: estimator,
             max_bounces: max,
             ..PathSettings::default()
         };
@@ -157,15 +156,15 @@ fn the_cornell_box_matches_its_reference_region_by_region_for_every_estimator() 
     // samples per region, or the sample variance (a heavy tail of rare
     // hits) is underestimated.
     for (e, size, block, spp) in [
-        (Estimator::Mis, 16, 4, 64),
-        (Estimator::LightSampling, 16, 4, 64),
-        (Estimator::BsdfSampling, 8, 2, 2048),
-        (Estimator::UniformWalk, 8, 2, 2048),
+        (Strategy::Mis, 16, 4, 64),
+        (Strategy::Light, 16, 4, 64),
+        (Strategy::Bsdf, 8, 2, 2048),
+        (Strategy::Uniform, 8, 2, 2048),
     ] {
         let reference = r.downsampled(r.mean.width / size);
         let scene = Scene::builtin().with_resolution(size, size).unwrap();
         let path = PathSettings {
-            estimator: e,
+            strategy: e,
             ..PathSettings::default()
         };
         let (acc, _) = render(&scene, &path, SamplerKind::Independent, spp, 11, false);
@@ -374,7 +373,7 @@ fn the_stage_boundary_gives_layers_that_sum_to_the_image_and_an_error_series() {
     assert_eq!(snap.pass.samples, 2);
     assert_eq!((snap.pass.done, snap.pass.planned), (2, 2));
     let layers = snap.layers.clone().unwrap();
-    assert_eq!(layers.len(), LAYER_SLOTS - 1);
+    assert_eq!(layers.len(), RENDER_LAYERS);
     let image = snap.views[0].clone();
     let i = image.pixels.len() / 2 + 7;
     let sum: Vec3 = layers.iter().map(|l| l.pixels[i]).sum();

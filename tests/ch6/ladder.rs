@@ -2,7 +2,8 @@
 //! random walk, readable on its own), converges to the image of the full
 //! MIS path loop: region z-tests with both sample variances.
 
-use raystep::ch6_global_illumination::integrator::{random_walk, PathSettings};
+use raystep::ch6_global_illumination::integrator::PathSettings;
+use raystep::ch6_global_illumination::random_walk::random_walk;
 use raystep::ch6_global_illumination::reference::{region_z_test, RegionTest, StoredReference};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::scenes;
@@ -26,7 +27,7 @@ fn walk_against_mis(
     let path = PathSettings::default();
     assert_eq!(path.max_bounces, Some(16));
     let (walk, walk_var) =
-        mean_and_variance(scene, walk_spp, 17, &|w, r, s| random_walk(w, r, 16 + 1, s));
+        mean_and_variance(scene, walk_spp, 17, &|w, r, s| random_walk(w, r, 16, s));
     let (acc, _) = render(scene, &path, SamplerKind::Independent, mis_spp, 11, false);
     let reference = StoredReference {
         mean: acc.mean(),

@@ -8,7 +8,7 @@ use glam::Vec3;
 use raystep::ch1_projection::camera::Camera;
 use raystep::ch5_reflection::world::World;
 use raystep::ch6_global_illumination::accumulate::Accumulator;
-use raystep::ch6_global_illumination::integrator::{Estimator, PathSettings};
+use raystep::ch6_global_illumination::integrator::{PathSettings, Strategy};
 use raystep::ch6_global_illumination::path_record::{record_path, PathEnd, PathRecord};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::scene::Scene;
@@ -53,7 +53,7 @@ fn check_scene(scene: &Scene, path: PathSettings, kind: SamplerKind) -> Vec<Path
                     close(sum, rendered, 1e-5),
                     "{} {:?} {kind:?} pixel ({x}, {y}) sample {sample}: table {sum} vs render {rendered}\n{r:#?}",
                     scene.name,
-                    path.estimator
+                    path.strategy
                 );
                 assert_eq!(r.layers, layers[i], "layers of ({x}, {y}) sample {sample}");
                 check_rows(&r);
@@ -141,7 +141,7 @@ fn the_table_adds_up_on_the_glass_scene() {
 #[test]
 fn the_table_adds_up_for_the_uniform_walk_with_independent_numbers() {
     let path = PathSettings {
-        estimator: Estimator::UniformWalk,
+        strategy: Strategy::Uniform,
         ..PathSettings::default()
     };
     let records = check_scene(&cornell(), path, SamplerKind::Independent);

@@ -12,10 +12,10 @@
 
 use glam::{DVec3, Vec3};
 use raystep::ch1_projection::camera::Camera;
-use raystep::ch5_reflection::direct::{Estimator as DirectEstimator, Strategy};
+use raystep::ch5_reflection::direct::{Estimator, Strategy};
 use raystep::ch5_reflection::render::render_pass;
 use raystep::ch5_reflection::world::World;
-use raystep::ch6_global_illumination::integrator::{Estimator, PathSettings};
+use raystep::ch6_global_illumination::integrator::PathSettings;
 use raystep::ch6_global_illumination::reference::{region_z_test, StoredReference};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::stability;
@@ -41,7 +41,7 @@ fn the_moved_or_scaled_cornell_box_matches_the_reference_in_chapter_6() {
     let stored = StoredReference::for_scene(&Scene::builtin()).expect("the Cornell reference");
     let reference = stored.downsampled(stored.mean.width / 16);
     let path = PathSettings {
-        estimator: Estimator::Mis,
+        strategy: Strategy::Mis,
         ..PathSettings::default()
     };
     for (offset, scale) in placements() {
@@ -66,10 +66,10 @@ fn the_moved_or_scaled_cornell_box_renders_the_same_in_chapter_5() {
     let render5 = |scene: &Scene| {
         let world = World::new(scene);
         let camera = Camera::of(scene);
-        let est = DirectEstimator {
+        let est = Estimator {
             strategy: Strategy::Mis,
             max_mirror_bounces: 4,
-            shadow_rays: true,
+            trace_light_rays: true,
         };
         let mut sums = vec![Vec3::ZERO; (camera.width * camera.height) as usize];
         for sample in 0..16 {

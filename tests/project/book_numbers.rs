@@ -504,7 +504,7 @@ fn chapter_5_numbers_match_its_report() {
     ] {
         let rmse = |s: &str| num(&get(s, n)["RMSE"]);
         let eff = |s: &str| num(&get(s, n)["1/(MSE·time)"]);
-        for blind in ["area: uniform", "area: cosine"] {
+        for blind in ["area: uniform", "area: bsdf"] {
             for aimed in ["area: light", "area: mis"] {
                 let r = rmse(blind) / rmse(aimed);
                 assert!((5.0..10.0).contains(&r), "{n}: {blind} / {aimed} = {r}");
@@ -517,17 +517,17 @@ fn chapter_5_numbers_match_its_report() {
                 "{n}: efficiency {aimed} / uniform = {r}"
             );
         }
-        let best = ["uniform", "cosine", "light", "mis"]
+        let best = ["uniform", "bsdf", "light", "mis"]
             .into_iter()
             .min_by(|a, b| {
                 rmse(&format!("environment: {a}")).total_cmp(&rmse(&format!("environment: {b}")))
             })
             .unwrap();
-        assert_eq!(best, "cosine", "{n}");
+        assert_eq!(best, "bsdf", "{n}");
     }
     says(
         "ch5-reflection.md",
-        "Light sampling and MIS sit five to ten times below uniform and cosine sampling",
+        "Light sampling and MIS sit five to ten times below uniform and BSDF sampling",
     );
     says(
         "ch5-reflection.md",

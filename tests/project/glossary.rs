@@ -83,7 +83,6 @@ const TERMS_IN_VALUES: &[(&str, &str)] = &[
     ("independent numbers", "independent"),
     ("MIS", "mis"),
     ("uniform", "uniform"),
-    ("cosine", "cosine"),
     ("bsdf", "bsdf"),
     ("z", "(z = "),
     ("sample variance", "sample variance"),

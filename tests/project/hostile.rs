@@ -457,7 +457,7 @@ fn too_many_samples_are_refused_before_anything_renders() {
 /// fixed amount of work it now answers "maybe" (and traces shadow rays).
 #[test]
 fn the_shadow_question_stays_cheap_on_a_fine_sphere() {
-    use raystep::ch5_reflection::render::scene_cannot_shadow;
+    use raystep::ch5_reflection::shadowing::scene_cannot_shadow;
     let fine = parse("[[objects]]\nshape = \"sphere\"\nsubdivisions = 6\n").unwrap();
     let start = std::time::Instant::now();
     assert!(!scene_cannot_shadow(&fine));

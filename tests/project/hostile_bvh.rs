@@ -4,7 +4,7 @@
 use std::time::Instant;
 
 use glam::Vec3;
-use raystep::ch3_ray_triangle::bvh::{closest_naive, Bvh, Triangles};
+use raystep::ch3_ray_triangle::obvhs_bvh::{closest_naive, Bvh, Triangles};
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch3_ray_triangle::triangle::Intersector;
 use raystep::ch3_ray_triangle::wide_bvh::WideBvh;

@@ -42,8 +42,8 @@ fn sources() -> Vec<String> {
     out
 }
 
-/// The module path of a source file (`ch3_ray_triangle/bvh.rs` →
-/// `["ch3_ray_triangle", "bvh"]`, `core/mod.rs` → `["core"]`).
+/// The module path of a source file (`ch3_ray_triangle/obvhs_bvh.rs` →
+/// `["ch3_ray_triangle", "obvhs_bvh"]`, `core/mod.rs` → `["core"]`).
 fn module_of(file: &str) -> Vec<String> {
     let mut parts: Vec<String> = file
         .trim_end_matches(".rs")

@@ -1,7 +1,7 @@
 //! Unit tests of `src/ch3_ray_triangle/wide_bvh.rs`.
 
 use glam::Vec3;
-use raystep::ch3_ray_triangle::bvh::Bvh;
+use raystep::ch3_ray_triangle::obvhs_bvh::Bvh;
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch3_ray_triangle::triangle::Intersector;
 use raystep::ch3_ray_triangle::wide_bvh::*;

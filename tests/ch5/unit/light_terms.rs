@@ -14,7 +14,7 @@ fn check(scene: &Scene, strategy: Strategy) -> usize {
     let est = Estimator {
         strategy,
         max_mirror_bounces: 4,
-        shadow_rays: true,
+        trace_light_rays: true,
     };
     let mut split = 0;
     for sample in [0, 3] {
@@ -48,7 +48,7 @@ fn the_lights_terms_add_up_to_the_renders_sample() {
     let gallery = crate::common::shipped_scene("lights-gallery", 20, 15);
     for s in Strategy::ALL {
         let split = check(&gallery, s);
-        if s != Strategy::Uniform && s != Strategy::Cosine {
+        if s != Strategy::Uniform && s != Strategy::Bsdf {
             assert!(
                 split > 10,
                 "{s:?}: pixels lit by two lights or more: {split}"

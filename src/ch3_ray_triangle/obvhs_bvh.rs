@@ -1,5 +1,6 @@
 //! Ray-mesh intersection: the lecture's naive loop over every triangle, and
-//! a bounding volume hierarchy (BVH) built with the `obvhs` crate.
+//! a bounding volume hierarchy (BVH) built with the `obvhs` crate (the BVH
+//! written to be read is [`super::readable_bvh`]).
 //!
 //! The naive loop costs O(N) per ray; the BVH skips every box the ray misses
 //! and so costs about O(log N). Both answer the same two questions:
