@@ -54,6 +54,8 @@ pub struct App {
     pub settings: Settings,
     /// Whether the help overlay is shown.
     pub help: bool,
+    /// The warp test view (`w`), when open.
+    pub warp: Option<Box<super::warp::WarpView>>,
     /// Set by [`Msg::Quit`].
     pub quit: bool,
     /// Bumped whenever the render must restart.
@@ -129,6 +131,7 @@ impl App {
             variant,
             settings: Settings::default(),
             help: false,
+            warp: None,
             quit: false,
             generation: 1,
             snapshot: None,

@@ -42,6 +42,10 @@ pub const KEYS: &[(&str, &str)] = &[
         "inspecting ch6: trace one path from the pixel (again: next)",
     ),
     ("s", "save the view as PNG and its film as EXR in out/"),
+    (
+        "w",
+        "warp test: ch5's sampling routines against their pdf (χ²)",
+    ),
     ("?", "show / hide this help"),
     ("q  Esc  Ctrl-C", "quit (Esc first closes the help)"),
 ];
@@ -53,6 +57,16 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
     }
     if key.modifiers.contains(KeyModifiers::CONTROL) {
         return matches!(key.code, KeyCode::Char('c')).then_some(Msg::Quit);
+    }
+    if app.warp.is_some() {
+        return match key.code {
+            KeyCode::Esc | KeyCode::Char('w') => Some(Msg::ToggleWarp),
+            KeyCode::Right | KeyCode::Char('l') | KeyCode::Tab => Some(Msg::WarpStep(1)),
+            KeyCode::Left | KeyCode::Char('h') | KeyCode::BackTab => Some(Msg::WarpStep(-1)),
+            KeyCode::Char('n') => Some(Msg::WarpReseed),
+            KeyCode::Char('q') => Some(Msg::Quit),
+            _ => None,
+        };
     }
     if app.inspect.is_some() {
         let shift = key.modifiers.contains(KeyModifiers::SHIFT);
@@ -107,6 +121,7 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         KeyCode::Char('g') => Msg::ToggleGrading,
         KeyCode::Char('x') => Msg::ToggleStudent,
         KeyCode::Char('s') => Msg::Save,
+        KeyCode::Char('w') => Msg::ToggleWarp,
         KeyCode::Char('?') => Msg::ToggleHelp,
         _ => return None,
     })

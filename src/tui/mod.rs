@@ -30,6 +30,7 @@ pub mod student;
 pub mod target;
 pub mod update;
 pub mod view;
+pub mod warp;
 pub mod worker;
 
 use std::io::{IsTerminal, Stdout};

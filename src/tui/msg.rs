@@ -82,6 +82,12 @@ pub enum Msg {
     Saved(Result<Vec<PathBuf>, String>),
     /// Show or hide the help overlay.
     ToggleHelp,
+    /// Open or close the warp test view.
+    ToggleWarp,
+    /// The warp view's next (+1) or previous (−1) routine.
+    WarpStep(i64),
+    /// The warp view's routine again with new random numbers.
+    WarpReseed,
     /// Quit.
     Quit,
     /// A report from the render worker.

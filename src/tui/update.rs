@@ -248,6 +248,22 @@ pub fn update(mut app: App, msg: Msg) -> App {
             };
         }
         Msg::ToggleHelp => app.help = !app.help,
+        Msg::ToggleWarp => {
+            app.warp = match app.warp {
+                Some(_) => None,
+                None => Some(Box::new(super::warp::WarpView::new(0, 1))),
+            }
+        }
+        Msg::WarpStep(step) => {
+            if let Some(w) = &app.warp {
+                app.warp = Some(Box::new(w.step(step)));
+            }
+        }
+        Msg::WarpReseed => {
+            if let Some(w) = &app.warp {
+                app.warp = Some(Box::new(w.reseeded()));
+            }
+        }
         Msg::Quit => app.quit = true,
         Msg::Progress(p) if p.generation() == app.generation => match p {
             Progress::State(s) => app.snapshot = Some(*s),

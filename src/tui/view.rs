@@ -71,6 +71,9 @@ pub fn view(app: &App, frame: &mut Frame) {
         escape(&app.message).into_owned()
     };
     frame.render_widget(Paragraph::new(text).style(fg(app, Color::Gray)), message);
+    if let Some(w) = &app.warp {
+        super::warp::draw(w, app.color, frame, area);
+    }
     if app.help {
         draw_help(app, frame, area);
     }

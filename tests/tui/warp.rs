@@ -1,0 +1,87 @@
+//! The warp view (`w`): chapter 5's sampling routines tested in the
+//! terminal at every size, its keys, and Esc closing it without quitting.
+
+use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::backend::TestBackend;
+use ratatui::Terminal;
+use raystep::tui::app::{App, Msg};
+use raystep::tui::keys::msg_for_key;
+use raystep::tui::scenes::SceneEntry;
+use raystep::tui::update::update;
+use raystep::tui::view::view;
+
+fn key(app: App, code: KeyCode) -> App {
+    let msg = msg_for_key(&app, KeyEvent::new(code, KeyModifiers::NONE));
+    match msg {
+        Some(m) => update(app, m),
+        None => app,
+    }
+}
+
+fn draw(app: &App, w: u16, h: u16) -> String {
+    let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
+    terminal.draw(|f| view(app, f)).unwrap();
+    let buffer = terminal.backend().buffer();
+    let mut out = String::new();
+    for y in 0..buffer.area.height {
+        for x in 0..buffer.area.width {
+            out.push_str(buffer[(x, y)].symbol());
+        }
+        out.push('\n');
+    }
+    out
+}
+
+#[test]
+fn the_warp_view_tests_each_routine_at_every_size() {
+    let app = App::new(raystep::chapters::all(), vec![SceneEntry::builtin()], false);
+    let app = key(app, KeyCode::Char('w'));
+    let w = app.warp.as_ref().expect("w opens the warp view");
+    assert_eq!(w.test.name, "uniform hemisphere");
+    assert!(w.test.passes(), "{}", w.test.verdict());
+    for (width, height) in [(80, 24), (100, 30), (160, 48)] {
+        let t = draw(&app, width, height);
+        assert!(t.contains("warp test 1/3: uniform hemisphere"), "{t}");
+        assert!(t.contains("accepted"), "{width}x{height}:\n{t}");
+        assert!(t.contains("←/→ routine · n new numbers · Esc close"), "{t}");
+        assert!(t.contains("drawn per cell"), "{width}x{height}:\n{t}");
+        assert!(t.contains("the pdf's prediction"), "{width}x{height}:\n{t}");
+        assert!(
+            t.contains("directions from above"),
+            "{width}x{height}:\n{t}"
+        );
+        // Braille points are drawn.
+        assert!(
+            t.chars().any(|c| ('\u{2801}'..='\u{28ff}').contains(&c)),
+            "{t}"
+        );
+    }
+    insta::assert_snapshot!("warp_80x24", draw(&app, 80, 24));
+
+    // → the next routine, ← back, n new numbers.
+    let app = key(app, KeyCode::Right);
+    assert_eq!(app.warp.as_ref().unwrap().test.name, "cosine hemisphere");
+    let app = key(app, KeyCode::Right);
+    let w = app.warp.as_ref().unwrap();
+    assert_eq!(w.test.name, "area light");
+    assert!(w.test.passes(), "{}", w.test.verdict());
+    assert!(draw(&app, 100, 30).contains("warp test 3/3: area light"));
+    let app = key(app, KeyCode::Right);
+    assert_eq!(app.warp.as_ref().unwrap().index, 0, "wraps around");
+    let app = key(app, KeyCode::Left);
+    assert_eq!(app.warp.as_ref().unwrap().index, 2);
+    let before = app.warp.as_ref().unwrap().test.observed.clone();
+    let app = key(app, KeyCode::Char('n'));
+    let w = app.warp.as_ref().unwrap();
+    assert_eq!(w.seed, 2);
+    assert_ne!(w.test.observed, before, "new numbers, new counts");
+    // Keys of the main view do nothing while it is open; Esc closes it
+    // and the app goes on.
+    let chapter = app.chapter;
+    let app = key(app, KeyCode::Char('3'));
+    assert_eq!(app.chapter, chapter);
+    let app = key(app, KeyCode::Esc);
+    assert!(app.warp.is_none());
+    assert!(!app.quit, "Esc closes the view, it does not quit");
+    assert!(!draw(&app, 80, 24).contains("warp test"));
+}
