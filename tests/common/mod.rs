@@ -34,6 +34,20 @@ pub fn shipped_scene(name: &str, w: u32, h: u32) -> raystep::scene::Scene {
 }
 pub mod chi2;
 
+/// The cell of `row` (an index into `table.rows`) under the column headed
+/// `header`: tests read report tables by what a column means, not by where
+/// it sits, so a column added or moved does not make them read the wrong
+/// one. Panics, naming the headers there are, when `header` is not one.
+pub fn cell<'a>(table: &'a raystep::core::table::Table, row: usize, header: &str) -> &'a str {
+    let Some(col) = table.columns.iter().position(|c| c == header) else {
+        panic!(
+            "table \"{}\" has no column \"{header}\"; its columns: {:?}",
+            table.title, table.columns
+        );
+    };
+    &table.rows[row][col]
+}
+
 /// Every exercise of `chapter` (there must be `count`): its file exists
 /// and its reference solution passes. (That every shipped stub fails
 /// cleanly is checked through the grader itself, which builds the
