@@ -51,7 +51,12 @@ impl Measured {
         let vals = film.pixels.iter().map(|p| p[channel] as f64);
         let (sum, sum_sq) = vals.fold((0.0, 0.0), |(s, q), v| (s + v, q + v * v));
         let bad = film.pixels.iter().filter(|p| !p.is_finite()).count() as u64;
-        Measured::of(sum, sum_sq, film.pixels.len() as f64, acc.stats.nonfinite + bad)
+        Measured::of(
+            sum,
+            sum_sq,
+            film.pixels.len() as f64,
+            acc.stats.nonfinite + bad,
+        )
     }
 }
 
@@ -141,8 +146,8 @@ pub fn tiny_light(size: u32, spp: u32) -> (StabilityCase, Measured) {
             .map(|p| p.max_element())
             .fold(0.0f32, f32::max);
         ok &= acc.stats.nonfinite == 0 && mean.pixels.iter().all(|p| p.is_finite());
-        nonfinite += acc.stats.nonfinite
-            + mean.pixels.iter().filter(|p| !p.is_finite()).count() as u64;
+        nonfinite +=
+            acc.stats.nonfinite + mean.pixels.iter().filter(|p| !p.is_finite()).count() as u64;
         if e == Estimator::Mis {
             ok &= z.abs() < 4.0;
             mis = Measured::of(s, q, n, 0);

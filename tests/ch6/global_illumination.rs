@@ -254,7 +254,11 @@ fn the_stiff_cases_come_out_as_expected() {
         })
         .sum();
     let (_, m) = stability::tiny_light(4, 32);
-    near(m, 0.5 / std::f64::consts::PI * irradiance, "tiny bright light, MIS");
+    near(
+        m,
+        0.5 / std::f64::consts::PI * irradiance,
+        "tiny bright light, MIS",
+    );
     // Glass of η = 1.5: along the cube's diagonal every internal ray is
     // totally reflected, nothing gets out; along an axis the radiance
     // inside is η² times the sky's 1.

@@ -558,7 +558,9 @@ fn test_attributes(text: &str) -> Vec<(usize, String)> {
             };
             k += 1;
         }
-        let attr: String = code[start..k.saturating_sub(1)].split_whitespace().collect();
+        let attr: String = code[start..k.saturating_sub(1)]
+            .split_whitespace()
+            .collect();
         let words: Vec<&str> = attr
             .split(|c: char| !(c.is_alphanumeric() || c == '_'))
             .filter(|w| !w.is_empty())
@@ -569,7 +571,10 @@ fn test_attributes(text: &str) -> Vec<(usize, String)> {
             || ((path == "cfg" || path == "cfg_attr") && words.contains(&"test"));
         if is_test {
             let line = code[..i].matches('\n').count() + 1;
-            out.push((line, text.lines().nth(line - 1).unwrap_or("").trim().to_string()));
+            out.push((
+                line,
+                text.lines().nth(line - 1).unwrap_or("").trim().to_string(),
+            ));
         }
         i = k;
     }
@@ -607,7 +612,9 @@ fn blank_comments_and_strings(text: &str) -> String {
             }
             let close = format!("\"{}", "#".repeat(hashes));
             let from = i + 2 + hashes;
-            let end = text[from..].find(&close).map_or(b.len(), |e| from + e + close.len());
+            let end = text[from..]
+                .find(&close)
+                .map_or(b.len(), |e| from + e + close.len());
             blank(&mut out, from, end);
             i = end;
         } else if b[i] == b'"' {
