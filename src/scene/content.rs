@@ -17,7 +17,10 @@
 //!
 //! Numbers are hashed as their IEEE bits (little-endian), integers as u64,
 //! with 64-bit FNV-1a: the same value on every platform and every run (no
-//! `std` hasher with a random state). Lights and SDF trees are hashed as
+//! `std` hasher with a random state); the positions hashed are those the
+//! scene builds, so an object placed with `rotate` goes through sin and
+//! cos, whose last bit the platform's maths library decides (the shipped
+//! Cornell box has no rotation). Lights and SDF trees are hashed as
 //! their `Debug` text, which Rust formats itself (floats as the shortest
 //! text that reads back to the same bits), the same on every platform; a
 //! change of those types' fields changes the hashes, and the stored
