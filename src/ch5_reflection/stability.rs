@@ -5,7 +5,7 @@
 use glam::{DVec3, Vec2, Vec3};
 
 use super::direct::{Counters, Estimator, Strategy};
-use crate::ch4_implicit_surfaces::hit::Surface;
+use super::stiff_scenes::{floor_point, lamp, point_light, world, FLOOR};
 use crate::ch5_reflection::light::sky::Sky;
 use crate::ch5_reflection::material::glossy::Glossy;
 use crate::ch5_reflection::material::lambert::Lambertian;
@@ -13,7 +13,7 @@ use crate::ch5_reflection::material::retro::Retro;
 use crate::ch5_reflection::material::semigloss::SemiGloss;
 use crate::ch5_reflection::material::Bsdf;
 use crate::ch5_reflection::warp;
-use crate::ch5_reflection::world::{Interaction, World};
+use crate::ch5_reflection::world::World;
 use crate::core::format::format_number;
 use crate::core::report::StabilityCase;
 use crate::core::sampling::{random, Sampler};
@@ -49,31 +49,6 @@ pub fn caught(cases: &[CaseResult]) -> u64 {
 
 /// The largest `u` in [0, 1) that [`random`] can return.
 pub const U_MAX: f32 = 1.0 - 1.0 / (1u32 << 24) as f32;
-
-fn world(text: &str) -> World {
-    let scene = Scene::from_text(text, "stiff").expect("stability scenes are valid (tested)");
-    World::new(&scene)
-}
-
-fn floor_point(world: &World) -> Interaction {
-    Interaction {
-        t: 1.0,
-        p: Vec3::ZERO,
-        n: Vec3::Z,
-        material: world.mesh_material[0],
-        surface: Surface::Mesh(0),
-    }
-}
-
-const FLOOR: &str = r#"
-[[materials]]
-name = "floor"
-reflectance = [0.5, 0.5, 0.5]
-[[objects]]
-shape = "rectangle"
-size = [4, 4]
-material = "floor"
-"#;
 
 /// Mean reflected radiance at the floor's centre, viewed from `wo`, over
 /// `n` samples; with the NaN/Inf count.
@@ -111,30 +86,9 @@ fn shade_each(
     (results, finite, caught)
 }
 
-/// A point light of intensity 1 at `position` (TOML, `[x, y, z]`).
-fn point_light(position: &str) -> String {
-    format!("\n[[lights]]\ntype = \"point\"\nposition = {position}\nintensity = [1, 1, 1]\n")
-}
-
-/// A black rectangle emitting `emission` (TOML), one-sided unless
-/// `two_sided`, of `size`, placed by the TOML lines `placement`.
-fn lamp(emission: &str, two_sided: bool, size: &str, placement: &str) -> String {
-    let sides = if two_sided { "two_sided = true\n" } else { "" };
-    format!(
-        "[[materials]]
-name = \"lamp\"
-reflectance = [0, 0, 0]
-emission = {emission}
-{sides}[[objects]]
-shape = \"rectangle\"
-size = {size}
-material = \"lamp\"
-{placement}"
-    )
-}
-
 fn row(
-    (name, expected): (&str, &str),
+    name: &str,
+    expected: &str,
     measured: String,
     ok: bool,
     caught: u64,
@@ -180,10 +134,8 @@ pub fn point_light_at_distance_zero() -> CaseResult {
     let exact = 0.5 / std::f32::consts::PI * 1e6;
     let close = ((values[0] - exact) / exact).abs() < 1e-2;
     row(
-        (
-            "point light at distance 1e-3 and 1e-30",
-            "ρI/(πd²) at 1e-3; no light (not Inf) at 1e-30",
-        ),
+        "point light at distance 1e-3 and 1e-30",
+        "ρI/(πd²) at 1e-3; no light (not Inf) at 1e-30",
         format!(
             "{} and {}",
             format_number(values[0] as f64),
@@ -218,10 +170,8 @@ pub fn grazing_light_and_view() -> CaseResult {
         bad += u32::from(!fine);
     }
     row(
-        (
-            "grazing light and view (cos θ = 1e-7)",
-            "≈ 0 reflected, every f and pdf finite",
-        ),
+        "grazing light and view (cos θ = 1e-7)",
+        "≈ 0 reflected, every f and pdf finite",
         format!("L = {}", format_number(l.x as f64)),
         ok && counters.nonfinite == 0,
         counters.nonfinite,
@@ -261,10 +211,8 @@ pub fn glossy_exponent_1e4() -> CaseResult {
         worst = worst.max(sum / n as f32);
     }
     row(
-        (
-            "glossy, retro and semi-gloss lobes with n = 1e4",
-            "finite samples; albedo ≤ 1",
-        ),
+        "glossy, retro and semi-gloss lobes with n = 1e4",
+        "finite samples; albedo ≤ 1",
         format!("largest albedo {}", format_number(worst as f64)),
         bad == 0 && worst <= 1.0 + 1e-3,
         0,
@@ -317,10 +265,8 @@ pub fn pdf_at_the_ends_of_u() -> CaseResult {
         }
     }
     row(
-        (
-            "u = 0 and u = 1 − 2⁻²⁴ in every warp and BRDF sampler",
-            "unit directions, finite weights (or no sample)",
-        ),
+        "u = 0 and u = 1 − 2⁻²⁴ in every warp and BRDF sampler",
+        "unit directions, finite weights (or no sample)",
         format!("{kept} samples kept, all finite: {ok}"),
         ok,
         0,
@@ -351,10 +297,8 @@ pub fn tiny_bright_area_light() -> CaseResult {
         ("all finite", f64::from(u8::from(finite))),
     ];
     row(
-        (
-            "tiny area light (A = 1e-8 m², Le = 1e8)",
-            "light and MIS ≈ ρLeA/(πd²); uniform finite (it misses)",
-        ),
+        "tiny area light (A = 1e-8 m², Le = 1e8)",
+        "light and MIS ≈ ρLeA/(πd²); uniform finite (it misses)",
         format!(
             "light {}, MIS {}, uniform {} (exact {})",
             format_number(light as f64),
@@ -386,10 +330,8 @@ pub fn light_in_the_surface_plane() -> CaseResult {
     let in_plane = world(&format!("{FLOOR}{point}"));
     let (l, _) = shade(&in_plane, Strategy::Mis, Vec3::Z, 1);
     row(
-        (
-            "lights in the surface's plane (point; standing rectangle)",
-            "point: exactly 0; all finite",
-        ),
+        "lights in the surface's plane (point; standing rectangle)",
+        "point: exactly 0; all finite",
         format!("point light gives {}", format_number(l.x as f64)),
         finite && l == Vec3::ZERO && caught == 0,
         caught,
@@ -414,10 +356,8 @@ pub fn back_facing_light() -> CaseResult {
         .map(|r| r.0.max_element())
         .fold(0.0f32, f32::max);
     row(
-        (
-            "back-facing lights (one-sided rectangle facing up, point light below)",
-            "0 with every strategy",
-        ),
+        "back-facing lights (one-sided rectangle facing up, point light below)",
+        "0 with every strategy",
         format!("largest {}", format_number(max as f64)),
         finite && max == 0.0 && caught == 0,
         caught,
@@ -494,10 +434,8 @@ pub fn placement() -> CaseResult {
         }
     }
     row(
-        (
-            "the Cornell box and a point- and spot-lit floor moved 1e1 to 1e4 and scaled 1e-3 to 1e3",
-            "every region within 2 % of the mean region of the same render at the origin",
-        ),
+        "the Cornell box and a point- and spot-lit floor moved 1e1 to 1e4 and scaled 1e-3 to 1e3",
+        "every region within 2 % of the mean region of the same render at the origin",
         format!(
             "largest region deviation {:.2} % ({}); past f32's reach, not required (the box): {}",
             100.0 * worst.0,
