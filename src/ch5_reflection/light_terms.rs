@@ -5,9 +5,10 @@
 //! [`Estimator::radiance`], so the terms add up to the render's value for
 //! that sample (a test checks it).
 
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 use crate::ch1_projection::camera::Camera;
+use crate::ch3_ray_triangle::render::camera_sample;
 use crate::ch5_reflection::direct::{Counters, Estimator, Strategy};
 use crate::ch5_reflection::material::Frame;
 use crate::ch5_reflection::mis::power_heuristic;
@@ -61,9 +62,9 @@ pub fn pixel_light(
     (x, y): (u32, u32),
     sample: u32,
 ) -> PixelLight {
-    let pixel = y as u64 * camera.width as u64 + x as u64;
-    let mut s = Sampler::new(seed, pixel, sample as u64);
-    let ray = camera.ray(Vec2::new(x as f32, y as f32) + s.next2());
+    let (mut s, ray) = camera_sample(camera, (x, y), |pixel| {
+        Sampler::new(seed, pixel, sample as u64)
+    });
     let mut c = Counters::default();
     let total = est.radiance(world, &ray, &mut s.clone(), &mut c);
     let mut out = PixelLight {

@@ -80,7 +80,8 @@ pub fn mean_and_variance(
         &mut raystep::core::sampling::Sampler,
     ) -> glam::Vec3,
 ) -> (raystep::core::film::Film, raystep::core::film::Film) {
-    use glam::{Vec2, Vec3};
+    use glam::Vec3;
+    use raystep::ch3_ray_triangle::render::camera_sample;
     use raystep::core::film::Film;
     let world = raystep::ch5_reflection::world::World::new(scene);
     let cam = raystep::ch1_projection::camera::Camera::of(scene);
@@ -93,9 +94,10 @@ pub fn mean_and_variance(
             let pixel = (y * cam.width + x) as u64;
             let (mut sum, mut sum_sq) = (Vec3::ZERO, Vec3::ZERO);
             for sample in 0..spp {
-                let mut s = raystep::core::sampling::Sampler::new(seed, pixel, sample as u64);
-                let raster = Vec2::new(x as f32, y as f32) + s.next2();
-                let l = radiance(&world, cam.ray(raster), &mut s);
+                let (mut s, ray) = camera_sample(&cam, (x, y), |p| {
+                    raystep::core::sampling::Sampler::new(seed, p, sample as u64)
+                });
+                let l = radiance(&world, ray, &mut s);
                 assert!(l.is_finite(), "pixel ({x}, {y}): {l}");
                 sum += l;
                 sum_sq += l * l;
