@@ -14,3 +14,8 @@ pub fn all() -> Vec<&'static dyn Chapter> {
         &crate::ch6_global_illumination::stage::DEFAULT,
     ]
 }
+
+/// The sampling routines the warp view tests (chapter 5's).
+pub fn warp_routines() -> &'static [crate::core::warp_test::WarpRoutine] {
+    &crate::ch5_reflection::warp_test::ROUTINES
+}

@@ -10,9 +10,10 @@
 use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
+use raystep::ch6_global_illumination::annotate::annotate_references;
 use raystep::ch6_global_illumination::bench;
 use raystep::ch6_global_illumination::integrator::{roulette_cannot_end, Strategy, SAFETY_BOUNCES};
-use raystep::ch6_global_illumination::reference::make_reference;
+use raystep::ch6_global_illumination::reference::{make_reference, reference_dir};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::stage::{GlobalIllumination, DEFAULT};
 use raystep::core::run::{exit_code, init_threads, run_on, CommonArgs};
@@ -80,6 +81,11 @@ struct Cli {
     /// (use with --width/--height/--spp/--seed).
     #[arg(long)]
     make_reference: bool,
+    /// Record the content hash of its scene (scenes/<scene>.toml) in every
+    /// stored reference's text file in scenes/references, after a change
+    /// of what the hash covers that left the pictures as they were.
+    #[arg(long)]
+    annotate_references: bool,
 }
 
 fn main() -> ExitCode {
@@ -119,6 +125,15 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
             bench::query_bench().to_text()
         );
         return print(&text);
+    }
+    if cli.annotate_references {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let done = annotate_references(&reference_dir(), &root.join("scenes"))?;
+        let list: String = done
+            .iter()
+            .map(|(f, hash)| format!("{}: content = {hash}\n", f.display()))
+            .collect();
+        return print(&list);
     }
     if cli.make_reference {
         init_threads(common.threads)?;

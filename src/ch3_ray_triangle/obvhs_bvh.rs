@@ -83,14 +83,22 @@ pub fn occluded_naive(tris: &[[Vec3; 3]], ray: &Ray, t_max: f32, x: Intersector)
 /// How much each triangle's box grows, relative to its coordinates (2⁻²⁰).
 pub const BOX_PADDING: f32 = 1.0 / 1_048_576.0;
 
-/// Each triangle's box, padded by [`BOX_PADDING`] of its coordinates.
+/// The corners (min, max) of a triangle's box, padded by [`BOX_PADDING`]
+/// of its coordinates: the one padding of every BVH's boxes (obvhs' here,
+/// the readable BVH's `Aabb::around`).
+pub fn padded_bounds(tri: &[Vec3; 3]) -> (Vec3, Vec3) {
+    let lo = tri[0].min(tri[1]).min(tri[2]);
+    let hi = tri[0].max(tri[1]).max(tri[2]);
+    let pad = lo.abs().max(hi.abs()) * BOX_PADDING + f32::MIN_POSITIVE;
+    (lo - pad, hi + pad)
+}
+
+/// Each triangle's box, padded ([`padded_bounds`]).
 pub(crate) fn padded_boxes(tris: &[[Vec3; 3]]) -> Vec<Aabb> {
     tris.iter()
         .map(|tri| {
-            let lo = tri[0].min(tri[1]).min(tri[2]);
-            let hi = tri[0].max(tri[1]).max(tri[2]);
-            let pad = lo.abs().max(hi.abs()) * BOX_PADDING + f32::MIN_POSITIVE;
-            Aabb::new(Vec3A::from(lo - pad), Vec3A::from(hi + pad))
+            let (lo, hi) = padded_bounds(tri);
+            Aabb::new(Vec3A::from(lo), Vec3A::from(hi))
         })
         .collect()
 }

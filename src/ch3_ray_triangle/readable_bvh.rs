@@ -17,7 +17,7 @@
 
 use glam::Vec3;
 
-use super::obvhs_bvh::BOX_PADDING;
+use super::obvhs_bvh::padded_bounds;
 use super::ray::Ray;
 use super::triangle::{gamma, intersect_watertight, Hit};
 use super::work;
@@ -42,18 +42,13 @@ impl Aabb {
         max: Vec3::NEG_INFINITY,
     };
 
-    /// The box around a triangle, padded by [`BOX_PADDING`] of its
-    /// coordinates (as obvhs' boxes are), so that a ray aimed exactly at a
-    /// vertex or an edge, which lie on the box's faces, is not culled by
-    /// rounding.
+    /// The box around a triangle, padded by [`BOX_PADDING`](super::obvhs_bvh::BOX_PADDING) of its
+    /// coordinates ([`padded_bounds`], as obvhs' boxes are), so that a ray
+    /// aimed exactly at a vertex or an edge, which lie on the box's faces,
+    /// is not culled by rounding.
     pub fn around(tri: &[Vec3; 3]) -> Aabb {
-        let min = tri[0].min(tri[1]).min(tri[2]);
-        let max = tri[0].max(tri[1]).max(tri[2]);
-        let pad = min.abs().max(max.abs()) * BOX_PADDING + f32::MIN_POSITIVE;
-        Aabb {
-            min: min - pad,
-            max: max + pad,
-        }
+        let (min, max) = padded_bounds(tri);
+        Aabb { min, max }
     }
 
     /// The smallest box holding both.

@@ -14,7 +14,7 @@ use super::ray::Ray;
 use super::triangle::{Hit, Intersector};
 use crate::ch1_projection::camera::Camera;
 use crate::core::film::Film;
-use crate::core::sampling::Sampler;
+use crate::core::sampling::{SampleNumbers, Sampler};
 
 /// Where sample `sample` of pixel (x, y) lies in raster coordinates: the
 /// pixel's centre with one sample per pixel, else a uniform random point.
@@ -24,7 +24,29 @@ pub fn sample_position(x: u32, y: u32, width: u32, spp: u32, seed: u64, sample: 
         return base + 0.5;
     }
     let pixel = y as u64 * width as u64 + x as u64;
-    base + Sampler::new(seed, pixel, sample as u64).next2()
+    jittered((x, y), &mut Sampler::new(seed, pixel, sample as u64))
+}
+
+/// Where in pixel (`x`, `y`) a sample lies: the pixel's corner moved by
+/// the sample's next two numbers.
+fn jittered((x, y): (u32, u32), sampler: &mut impl SampleNumbers) -> Vec2 {
+    Vec2::new(x as f32, y as f32) + sampler.next_pair()
+}
+
+/// The sampler and the camera ray of one sample of pixel (`x`, `y`): the
+/// sampler of that pixel (`sampler_of_pixel` is given the pixel's index,
+/// row by row), whose first two numbers place the ray inside the pixel;
+/// whoever traces the sample further goes on with the rest. The one
+/// camera-sample prologue of chapters 5 and 6 (chapter 3's
+/// [`sample_position`] jitters the same way).
+pub fn camera_sample<S: SampleNumbers>(
+    camera: &Camera,
+    (x, y): (u32, u32),
+    sampler_of_pixel: impl FnOnce(u64) -> S,
+) -> (S, Ray) {
+    let mut sampler = sampler_of_pixel(y as u64 * camera.width as u64 + x as u64);
+    let raster = jittered((x, y), &mut sampler);
+    (sampler, camera.ray(raster))
 }
 
 /// Counts from tracing.

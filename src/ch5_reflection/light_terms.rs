@@ -7,9 +7,10 @@
 //! `PathRecord` does for a path. The terms therefore add up to the render's
 //! value for that sample (a test checks it).
 
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 
 use crate::ch1_projection::camera::Camera;
+use crate::ch3_ray_triangle::render::camera_sample;
 use crate::ch5_reflection::direct::Estimator;
 use crate::ch5_reflection::shading_events::{Counters, ShadingEvent, Tally};
 use crate::ch5_reflection::world::World;
@@ -61,9 +62,9 @@ pub fn pixel_light(
     (x, y): (u32, u32),
     sample: u32,
 ) -> PixelLight {
-    let pixel = y as u64 * camera.width as u64 + x as u64;
-    let mut s = Sampler::new(seed, pixel, sample as u64);
-    let ray = camera.ray(Vec2::new(x as f32, y as f32) + s.next2());
+    let (mut s, ray) = camera_sample(camera, (x, y), |pixel| {
+        Sampler::new(seed, pixel, sample as u64)
+    });
     let mut listener = Listener {
         counters: Counters::default(),
         lights: world.lights.lights.len(),

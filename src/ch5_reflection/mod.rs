@@ -18,7 +18,7 @@
 //! | the chapter as a stage | [`stage`] |
 //! | what the chapter prints | [`report`] |
 //! | error against run time for the four strategies | [`studies`], drawn by [`crate::core::plot`] |
-//! | stiff cases: grazing light, tiny bright lights, mirror-like lobes | [`stability`] |
+//! | stiff cases: grazing light, tiny bright lights, mirror-like lobes | [`stability`], [`stiff_scenes`] |
 
 pub mod direct;
 pub mod light;
@@ -33,6 +33,7 @@ pub mod shading_events;
 pub mod shadowing;
 pub mod stability;
 pub mod stage;
+pub mod stiff_scenes;
 pub mod studies;
 pub mod warp;
 pub mod warp_test;

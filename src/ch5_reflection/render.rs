@@ -2,13 +2,14 @@
 //! jittered positions, each ray's radiance from the reflection equation
 //! ([`super::direct`]).
 
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 use rayon::prelude::*;
 
 use super::direct::Estimator;
 use super::shading_events::Counters;
 use super::world::World;
 use crate::ch1_projection::camera::Camera;
+use crate::ch3_ray_triangle::render::camera_sample;
 use crate::core::sampling::Sampler;
 
 /// Adds sample `sample` of every pixel to `sums`, rows in parallel; every
@@ -29,10 +30,10 @@ pub fn render_pass(
         .map(|(y, row)| {
             let mut c = Counters::default();
             for (x, px) in row.iter_mut().enumerate() {
-                let pixel = (y * w + x) as u64;
-                let mut s = Sampler::new(seed, pixel, sample as u64);
-                let raster = Vec2::new(x as f32, y as f32) + s.next2();
-                let l = estimator.radiance(world, &cam.ray(raster), &mut s, &mut c);
+                let (mut s, ray) = camera_sample(cam, (x as u32, y as u32), |pixel| {
+                    Sampler::new(seed, pixel, sample as u64)
+                });
+                let l = estimator.radiance(world, &ray, &mut s, &mut c);
                 if l.is_finite() {
                     *px += l;
                 } else {

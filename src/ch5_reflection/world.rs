@@ -17,6 +17,7 @@ use crate::ch4_implicit_surfaces::distance::{scene_distance, SdfObject};
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch4_implicit_surfaces::march::{sphere_trace, March};
 use crate::ch4_implicit_surfaces::normal::{normal, NormalScheme};
+use crate::ch5_reflection::light::area::emitted_towards;
 use crate::ch5_reflection::light::{Light, Lights};
 use crate::ch5_reflection::material::Bsdf;
 use crate::scene::{Material, Scene};
@@ -198,11 +199,7 @@ impl World {
         if !m.is_emissive() {
             return Vec3::ZERO;
         }
-        if m.two_sided || it.n.dot(wo) > 0.0 {
-            m.emission
-        } else {
-            Vec3::ZERO
-        }
+        emitted_towards(m.emission, m.two_sided, it.n, wo)
     }
 
     /// The area light of the surface `it` hit, if it is one that

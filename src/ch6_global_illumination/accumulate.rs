@@ -3,11 +3,12 @@
 //! error), and, when asked for, the sum per bounce layer. Each pass adds a
 //! few samples per pixel; the image can be read after any pass.
 
-use glam::{Vec2, Vec3};
+use glam::Vec3;
 use rayon::prelude::*;
 
 use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::render;
 use crate::ch5_reflection::world::World;
 use crate::core::film::Film;
 
@@ -27,10 +28,9 @@ pub fn camera_sample(
     y: usize,
     sample: u32,
 ) -> (PathSampler, Ray) {
-    let pixel = (y * camera.width as usize + x) as u64;
-    let mut sampler = PathSampler::new(kind, seed, pixel, sample as u64);
-    let raster = Vec2::new(x as f32, y as f32) + sampler.get2();
-    (sampler, camera.ray(raster))
+    render::camera_sample(camera, (x as u32, y as u32), |pixel| {
+        PathSampler::new(kind, seed, pixel, sample as u64)
+    })
 }
 
 /// Sums over the samples taken so far.

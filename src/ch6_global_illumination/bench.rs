@@ -16,18 +16,17 @@
 
 use std::time::Instant;
 
-use glam::Vec2;
-
 use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::obvhs_bvh::Bvh;
 use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::render::camera_sample;
 use crate::ch3_ray_triangle::triangle::Intersector;
 use crate::ch5_reflection::material::Frame;
 use crate::ch5_reflection::warp::cosine_hemisphere;
 use crate::ch5_reflection::world::World;
 use crate::core::format::format_number;
 use crate::core::report::Table;
-use crate::core::sampling::random;
+use crate::core::sampling::Sampler;
 use crate::scene::Scene;
 
 use super::accumulate::downsample;
@@ -109,12 +108,8 @@ fn vertex_rays(world: &World, scene: &Scene) -> (Vec<Ray>, Vec<(Ray, f32)>) {
     let (w, h) = (camera.width, camera.height);
     let (mut bounce, mut shadow) = (Vec::new(), Vec::new());
     for pixel in 0..(w * h) as u64 {
-        let u = |d| random(99, pixel, 0, d);
-        let raster = Vec2::new(
-            (pixel % w as u64) as f32 + u(0),
-            (pixel / w as u64) as f32 + u(1),
-        );
-        let camera_ray = camera.ray(raster);
+        let (x, y) = ((pixel % w as u64) as u32, (pixel / w as u64) as u32);
+        let (mut u, camera_ray) = camera_sample(&camera, (x, y), |p| Sampler::new(99, p, 0));
         let Some(it) = world.intersect(&camera_ray) else {
             continue;
         };
@@ -123,12 +118,12 @@ fn vertex_rays(world: &World, scene: &Scene) -> (Vec<Ray>, Vec<(Ray, f32)>) {
         } else {
             it.n
         };
-        let wi = Frame::from_normal(n).to_world(cosine_hemisphere(Vec2::new(u(2), u(3))));
+        let wi = Frame::from_normal(n).to_world(cosine_hemisphere(u.next2()));
         if let Some(r) = world.spawn(it.p, it.n, wi) {
             bounce.push(r);
         }
         if let Some(light) = world.lights.lights.first() {
-            if let Some(ls) = light.sample_li(it.p, n, Vec2::new(u(4), u(5))) {
+            if let Some(ls) = light.sample_li(it.p, n, u.next2()) {
                 if let Some(r) = world.spawn(it.p, it.n, ls.wi) {
                     shadow.push((r, ls.dist * (1.0 - 1e-4)));
                 }

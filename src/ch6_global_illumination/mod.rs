@@ -12,7 +12,7 @@
 //! | where a path's random numbers come from (independent, Sobol) | [`sampler`] |
 //! | one path written down vertex by vertex, for a pixel one asks about | [`path_events`], [`path_record`] |
 //! | direct, one-bounce, two-bounce … global illumination: the layers | [`accumulate`], [`figures`] |
-//! | the converged answer and the statistical image test | [`reference`](mod@reference) |
+//! | the converged answer and the statistical image test | [`reference`](mod@reference), [`annotate`] |
 //! | scenes whose answer is known (furnace, Cornell box) | [`scenes`] |
 //! | the chapter as a stage | [`stage`] |
 //! | what the chapter prints | [`report`] |
@@ -21,6 +21,7 @@
 //! | the speed benchmark (`ch6 --bench`) | [`bench`](mod@bench) |
 
 pub mod accumulate;
+pub mod annotate;
 pub mod bench;
 pub mod figures;
 pub mod inspect;

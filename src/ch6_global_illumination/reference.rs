@@ -5,7 +5,13 @@
 //! `<stem>-mean.exr` (the mean radiance), `<stem>-var.exr` (per pixel
 //! and channel the estimated variance of that mean, s²/n) and
 //! `<stem>.txt` (how it was made: resolution, samples, seed, estimator,
-//! bounce limit, time, and the command that regenerates it).
+//! bounce limit, time, and the command that regenerates it; and the
+//! scene's content hash, `content = …`).
+//!
+//! A reference is matched by name and size, then by content: the scene's
+//! hash ([`crate::scene::content`]) must be the one stored beside it, or
+//! there is none and the report says why ([`StoredReference::why_none`];
+//! [`annotate_references`](super::annotate::annotate_references) records the hashes).
 //!
 //! The image test compares *regions*: the mean of a block of pixels in a
 //! new render against the same block of the reference, as a z-score with
@@ -50,7 +56,7 @@ pub const REFERENCE_SIZE: u32 = 64;
 
 impl StoredReference {
     /// The stored [`REFERENCE_SIZE`]² reference of `scene`, if there is one
-    /// for a scene of that name with the same triangle count.
+    /// for a scene of that name and the same content.
     pub fn for_scene(scene: &Scene) -> Option<StoredReference> {
         StoredReference::for_scene_at(scene, REFERENCE_SIZE, REFERENCE_SIZE)
     }
@@ -65,26 +71,75 @@ impl StoredReference {
     /// by pixel), then one of [`REFERENCE_SIZE`] on the longer side (the
     /// render box-downsampled to it).
     pub fn for_render(scene: &Scene) -> Option<(StoredReference, u32)> {
+        StoredReference::for_render_or_why(scene).ok()
+    }
+
+    /// Why a render of `scene` has no stored reference while one of its
+    /// name is stored at a size [`StoredReference::for_render`] would use:
+    /// one line for the report ("this scene's content differs from
+    /// cornell-box's (hash …, stored …)"). `None` when it has one, or when none of
+    /// its name is stored.
+    pub fn why_none(scene: &Scene) -> Option<String> {
+        StoredReference::for_render_or_why(scene).err().flatten()
+    }
+
+    /// [`StoredReference::for_render`], or why not ([`Self::why_none`]).
+    fn for_render_or_why(
+        scene: &Scene,
+    ) -> std::result::Result<(StoredReference, u32), Option<String>> {
         let (w, h) = (scene.camera.width, scene.camera.height);
         let small = if w >= h {
             (REFERENCE_SIZE, REFERENCE_SIZE * h / w.max(1))
         } else {
             (REFERENCE_SIZE * w / h.max(1), REFERENCE_SIZE)
         };
-        [(w, h), small].into_iter().find_map(|(rw, rh)| {
-            let factor = scale_factor(w, h, rw, rh)?;
-            Some((StoredReference::for_scene_at(scene, rw, rh)?, factor))
-        })
+        let mut why = None;
+        for (rw, rh) in [(w, h), small] {
+            let Some(factor) = scale_factor(w, h, rw, rh) else {
+                continue;
+            };
+            match StoredReference::find(scene, rw, rh) {
+                Ok(r) => return Ok((r, factor)),
+                Err(reason) => why = why.or(reason),
+            }
+        }
+        Err(why)
     }
 
     /// The stored reference of `scene` at `width` x `height`, if there is
     /// one (`<name>-<width>x<height>` in [`reference_dir`]).
     pub fn for_scene_at(scene: &Scene, width: u32, height: u32) -> Option<StoredReference> {
-        let r = StoredReference::load(&reference_dir(), &stem(&scene.name, width, height)).ok()?;
-        let triangles = r.value("triangles")?.parse::<usize>().ok()?;
+        StoredReference::find(scene, width, height).ok()
+    }
+
+    /// The stored reference of `scene` at `width` x `height`; without one,
+    /// `Err(Some(why))` when one of the scene's name is stored there but
+    /// for other content (or without a recorded hash), `Err(None)` when
+    /// none is.
+    fn find(
+        scene: &Scene,
+        width: u32,
+        height: u32,
+    ) -> std::result::Result<StoredReference, Option<String>> {
+        let r = StoredReference::load(&reference_dir(), &stem(&scene.name, width, height))
+            .map_err(|_| None)?;
         let sized = (r.mean.width, r.mean.height) == (width, height)
             && (r.var_of_mean.width, r.var_of_mean.height) == (width, height);
-        (triangles == scene.triangle_count() && sized).then_some(r)
+        if !sized {
+            return Err(None);
+        }
+        let here = scene.content_hash();
+        match r.value("content") {
+            Some(stored) if stored == here => Ok(r),
+            Some(stored) => Err(Some(format!(
+                "this scene's content differs from {}'s (hash {here}, stored {stored})",
+                scene.name
+            ))),
+            None => Err(Some(format!(
+                "the one of {} records no content hash (ch6 --annotate-references)",
+                scene.name
+            ))),
+        }
     }
 
     /// Reads `<name>-mean.exr`, `<name>-var.exr` and `<name>.txt` from `dir`.
@@ -99,10 +154,7 @@ impl StoredReference {
 
     /// A `key = value` entry of the metadata.
     pub fn value(&self, key: &str) -> Option<&str> {
-        self.meta.lines().find_map(|l| {
-            let (k, v) = l.split_once('=')?;
-            (k.trim() == key).then(|| v.trim())
-        })
+        meta_value(&self.meta, key)
     }
 
     /// Writes the three files of a finished render into `dir`.
@@ -132,6 +184,14 @@ impl StoredReference {
             meta: self.meta.clone(),
         }
     }
+}
+
+/// A `key = value` entry of a reference's text.
+pub(super) fn meta_value<'a>(meta: &'a str, key: &str) -> Option<&'a str> {
+    meta.lines().find_map(|l| {
+        let (k, v) = l.split_once('=')?;
+        (k.trim() == key).then(|| v.trim())
+    })
 }
 
 /// The file stem of the reference of scene `name` at `width` x `height`.
@@ -330,11 +390,12 @@ pub fn make_reference(
     eprintln!();
     let secs = t.elapsed().as_secs_f64();
     let meta = format!(
-        "scene = {}\ntriangles = {}\nwidth = {}\nheight = {}\nspp = {spp}\nseed = {}\n\
+        "scene = {}\ncontent = {}\ntriangles = {}\nwidth = {}\nheight = {}\nspp = {spp}\nseed = {}\n\
          estimator = {}\nsampler = {}\nmax_bounces = {}\nrr_after = {}\npaths = {}\nseconds = {secs:.1}\n\
          threads = {}\ncommand = cargo run --release --bin ch6 -- --make-reference --width {} --height {} --spp {spp} --seed {} \
          --estimator {} --sampler {} {} --rr-after {}\n",
         scene.name,
+        scene.content_hash(),
         scene.triangle_count(),
         acc.width,
         acc.height,

@@ -38,6 +38,9 @@ pub struct ReportInputs<'a> {
     pub seconds: f64,
     /// RMSE against the stored reference and the reference's size.
     pub reference_rmse: Option<(f64, u32, u32)>,
+    /// Why there is no RMSE although a reference of the scene's name is
+    /// stored (its content differs): one line for the report.
+    pub no_reference: Option<String>,
 }
 
 /// The chapter's report.
@@ -106,6 +109,11 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
                 )
             },
         ));
+    }
+    if let Some(why) = &r.no_reference {
+        report
+            .facts
+            .push(("no stored reference".into(), why.clone()));
     }
     if acc.layers.is_some() {
         let mut t = Table::new(

@@ -5,7 +5,7 @@
 
 use glam::Vec2;
 
-use crate::core::sampling::mix64;
+use crate::core::sampling::{dimension_random, mix64, sample_hash};
 
 /// Which numbers drive the paths.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -53,18 +53,21 @@ pub struct PathSampler {
 /// The largest sample index the Sobol tables cover.
 const SOBOL_MAX_SAMPLES: u64 = 1 << 16;
 
+impl crate::core::sampling::SampleNumbers for PathSampler {
+    fn next_pair(&mut self) -> Vec2 {
+        self.get2()
+    }
+}
+
 impl PathSampler {
     /// The sampler of sample `sample` of pixel `pixel`.
     pub fn new(kind: SamplerKind, seed: u64, pixel: u64, sample: u64) -> PathSampler {
-        // The first three mixing steps of `random(seed, pixel, sample, d)`.
-        let mut h = mix64(seed ^ 0x9e37_79b9_7f4a_7c15);
-        h = mix64(h ^ pixel);
-        h = mix64(h ^ sample.wrapping_mul(0x2545_f491_4f6c_dd1d));
         PathSampler {
             kind,
             sample,
             dimension: 0,
-            prefix: h,
+            // What `random(seed, pixel, sample, d)` hashes before `d`.
+            prefix: sample_hash(seed, pixel, sample),
             pixel_scramble: mix64(seed ^ mix64(pixel)),
             group: u64::MAX,
             group_values: [0.0; 4],
@@ -92,8 +95,7 @@ impl PathSampler {
             }
             _ => {
                 // The last step of `random`: the same number, one mix.
-                let h = mix64(self.prefix ^ d.wrapping_mul(0xd6e8_feb8_6659_fd93));
-                (h >> 40) as f32 * (1.0 / (1u64 << 24) as f32)
+                dimension_random(self.prefix, d)
             }
         }
     }

@@ -18,6 +18,48 @@ use super::scenes;
 
 use super::studies::render;
 
+/// What a stiff case measured beside its report row: the numbers its
+/// verdict was made from, so that a test can judge them by thresholds of
+/// its own instead of trusting the row's `ok`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Measured {
+    /// The mean the case is about (over its pixels, or over its samples).
+    pub mean: f64,
+    /// The standard error of that mean, from the spread it was measured
+    /// with (not floored).
+    pub standard_error: f64,
+    /// NaN or infinite values met: samples the renderer caught, and
+    /// pixels of the result.
+    pub nonfinite: u64,
+}
+
+impl Measured {
+    /// From a sum, a sum of squares and a count of values, and the
+    /// non-finite count.
+    fn of(sum: f64, sum_sq: f64, n: f64, nonfinite: u64) -> Measured {
+        let var = ((sum_sq - sum * sum / n) / (n - 1.0)).max(0.0);
+        Measured {
+            mean: sum / n,
+            standard_error: (var / n).sqrt(),
+            nonfinite,
+        }
+    }
+
+    /// The pixel means of one channel of `film` (the furnaces, where every
+    /// pixel has the same expectation), with `acc`'s non-finite count.
+    fn flat(film: &Film, channel: usize, acc: &Accumulator) -> Measured {
+        let vals = film.pixels.iter().map(|p| p[channel] as f64);
+        let (sum, sum_sq) = vals.fold((0.0, 0.0), |(s, q), v| (s + v, q + v * v));
+        let bad = film.pixels.iter().filter(|p| !p.is_finite()).count() as u64;
+        Measured::of(
+            sum,
+            sum_sq,
+            film.pixels.len() as f64,
+            acc.stats.nonfinite + bad,
+        )
+    }
+}
+
 /// Every pixel's mean against one expected value: (z of the mean over
 /// pixels, using the spread of the pixel means, and the mean itself).
 /// Valid where every pixel has the same expectation (the furnaces).
@@ -31,8 +73,8 @@ pub fn flat_z(film: &Film, channel: usize, expected: f64) -> (f64, f64) {
 
 /// The closed furnace with ρ = 0.999, Le = 1e-3, unlimited bounces: the
 /// mean must be Le/(1 - ρ) = 1 (a thousand bounces matter). Returns the
-/// case, the measured mean, its z-score and seconds.
-pub fn furnace_0999(size: u32, spp: u32) -> (StabilityCase, f64, f64, f64) {
+/// case, what it measured, its z-score and seconds.
+pub fn furnace_0999(size: u32, spp: u32) -> (StabilityCase, Measured, f64, f64) {
     let scene = scenes::closed_furnace(0.999, 1e-3, size);
     let path = PathSettings {
         max_bounces: None,
@@ -56,7 +98,7 @@ pub fn furnace_0999(size: u32, spp: u32) -> (StabilityCase, f64, f64, f64) {
             ),
             ok,
         ),
-        mean,
+        Measured::flat(&acc.mean(), 0, &acc),
         z,
         secs,
     )
@@ -67,14 +109,20 @@ pub fn furnace_0999(size: u32, spp: u32) -> (StabilityCase, f64, f64, f64) {
 /// for contrast (it finds the light with probability ~3e-5 per sample, so
 /// its estimate is mostly 0 with rare huge values: unbiased, useless).
 /// Reports each one's mean, sample variance and largest pixel. No
-/// clamping. Returns the case and MIS's z.
-pub fn tiny_light(size: u32, spp: u32) -> (StabilityCase, f64) {
+/// clamping. Returns the case and what MIS measured (its mean over every
+/// sample; its non-finite count covers both estimators).
+pub fn tiny_light(size: u32, spp: u32) -> (StabilityCase, Measured) {
     let scene = scenes::tiny_light(0.01, 1e4, size);
     let side: f64 = 0.01;
     let expected = 0.5 / std::f64::consts::PI * 1e4 * side * side * (1.0 - side * side / 3.0);
     let mut measured = Vec::new();
     let mut ok = true;
-    let mut z_mis = f64::INFINITY;
+    let mut mis = Measured {
+        mean: f64::NAN,
+        standard_error: f64::NAN,
+        nonfinite: 0,
+    };
+    let mut nonfinite = 0;
     for e in [Strategy::Mis, Strategy::Bsdf] {
         let path = PathSettings {
             strategy: e,
@@ -98,9 +146,11 @@ pub fn tiny_light(size: u32, spp: u32) -> (StabilityCase, f64) {
             .map(|p| p.max_element())
             .fold(0.0f32, f32::max);
         ok &= acc.stats.nonfinite == 0 && mean.pixels.iter().all(|p| p.is_finite());
+        nonfinite +=
+            acc.stats.nonfinite + mean.pixels.iter().filter(|p| !p.is_finite()).count() as u64;
         if e == Strategy::Mis {
             ok &= z.abs() < 4.0;
-            z_mis = z;
+            mis = Measured::of(s, q, n, 0);
         }
         // With no sample reaching the light there is no variance to
         // scale by, so no z to print.
@@ -124,13 +174,15 @@ pub fn tiny_light(size: u32, spp: u32) -> (StabilityCase, f64) {
             measured.join("; "),
             ok,
         ),
-        z_mis,
+        Measured { nonfinite, ..mis },
     )
 }
 
 /// Total internal reflection inside a glass cube: along the diagonal
 /// everything is reflected forever (exactly 0); along an axis η² = 2.25.
-pub fn total_internal_reflection(size: u32, spp: u32) -> (StabilityCase, f64, f64) {
+/// Returns the case, the diagonal's largest mean channel (trapped) and
+/// what the axis measured.
+pub fn total_internal_reflection(size: u32, spp: u32) -> (StabilityCase, f64, Measured) {
     let path = PathSettings::default();
     let diag = scenes::glass_cube([1.0, 1.0, -1.0], size);
     let (acc, _) = render(&diag, &path, SamplerKind::Independent, spp, 9, false);
@@ -150,13 +202,14 @@ pub fn total_internal_reflection(size: u32, spp: u32) -> (StabilityCase, f64, f6
             ok,
         ),
         trapped,
-        z,
+        Measured::flat(&acc2.mean(), 0, &acc2),
     )
 }
 
 /// Glass of index 1 around the open furnace's sphere changes nothing: the
-/// sphere's pixels stay ρ.
-pub fn index_matched_glass(size: u32, spp: u32) -> (StabilityCase, f64) {
+/// sphere's pixels stay ρ. Returns the case and what the centre block of
+/// pixels measured.
+pub fn index_matched_glass(size: u32, spp: u32) -> (StabilityCase, Measured) {
     let rho = 0.6;
     let scene = scenes::open_furnace(rho, size, Some(1.0));
     let (acc, _) = render(
@@ -168,16 +221,18 @@ pub fn index_matched_glass(size: u32, spp: u32) -> (StabilityCase, f64) {
         false,
     );
     let centre = centre_block(&acc.mean(), size / 4);
-    flat_case(
+    let case = flat_case(
         "glass of index 1.0 around the open furnace",
         "invisible: the sphere's pixels stay ρ = 0.6 (|z| < 4)",
         &acc,
         flat_z(&centre, 0, rho),
-    )
+    );
+    (case, Measured::flat(&centre, 0, &acc))
 }
 
 /// A camera at the centre of a glass sphere under a sky of 1 sees η².
-pub fn camera_inside_glass(size: u32, spp: u32) -> (StabilityCase, f64) {
+/// Returns the case and what the pixels measured (green).
+pub fn camera_inside_glass(size: u32, spp: u32) -> (StabilityCase, Measured) {
     let scene = scenes::inside_glass(1.5, size);
     let (acc, _) = render(
         &scene,
@@ -188,26 +243,26 @@ pub fn camera_inside_glass(size: u32, spp: u32) -> (StabilityCase, f64) {
         false,
     );
     let expected = 2.25 * (1.0 - 0.04f64.powi(17));
-    flat_case(
+    let case = flat_case(
         "camera inside glass (centre of a sphere, η = 1.5)",
         "every pixel η² = 2.25 (|z| < 4)",
         &acc,
         flat_z(&acc.mean(), 1, expected),
-    )
+    );
+    (case, Measured::flat(&acc.mean(), 1, &acc))
 }
 
 /// A case whose pixels share one expected value, from [`flat_z`]'s
 /// (z, mean): it holds when |z| < 4 and no NaN or Inf was caught.
-/// Returns the case and z.
 fn flat_case(
     name: &str,
     expected: &str,
     acc: &Accumulator,
     (z, mean): (f64, f64),
-) -> (StabilityCase, f64) {
+) -> StabilityCase {
     let ok = z.abs() < 4.0 && acc.stats.nonfinite == 0;
     let measured = format!("{} (z = {z:.2})", format_number(mean));
-    (StabilityCase::new(name, expected, measured, ok), z)
+    StabilityCase::new(name, expected, measured, ok)
 }
 
 /// The Cornell box moved and scaled ([`PLACEMENTS`]), each against the

@@ -420,6 +420,11 @@ impl Render for PathTracingRender {
                 let (r, _) = self.reference.as_ref().expect("an RMSE needs a reference");
                 (e, r.mean.width, r.mean.height)
             }),
+            no_reference: self
+                .reference
+                .is_none()
+                .then(|| StoredReference::why_none(&self.scene))
+                .flatten(),
         });
         let stem = output_stem(6, &self.scene.name);
         let mut figures = layer_figures(&self.acc, &stem);

@@ -19,3 +19,4 @@ pub mod strip;
 pub mod style;
 pub mod table;
 pub mod text;
+pub mod warp_test;

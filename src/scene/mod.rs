@@ -8,6 +8,7 @@
 mod build;
 pub use build::MAX_SDF_NODES;
 pub mod camera;
+pub mod content;
 pub mod file;
 pub mod mesh;
 pub mod obj;
@@ -270,6 +271,13 @@ impl Scene {
     pub fn with_resolution(mut self, width: u32, height: u32) -> Result<Scene> {
         self.camera = self.camera.with_resolution(width, height)?;
         Ok(self)
+    }
+
+    /// The hash of everything in the scene that changes its picture, as
+    /// 16 hex digits ([`content::content_hash`]): stored references are
+    /// matched by it.
+    pub fn content_hash(&self) -> String {
+        content::content_hash(self)
     }
 
     /// Total triangles over all meshes.

@@ -12,15 +12,14 @@ use ratatui::widgets::canvas::{Canvas, Circle, Points};
 use ratatui::widgets::{Block, Clear, Paragraph};
 use ratatui::Frame;
 
-use crate::ch5_reflection::warp_test::{
-    run_built_in, WarpTest, BUILT_IN, COS_CELLS, DEFAULT_DRAWS, PHI_CELLS,
-};
+use crate::chapters::warp_routines;
+use crate::core::warp_test::{WarpTest, COS_CELLS, DEFAULT_DRAWS, PHI_CELLS};
 
 /// What the warp view shows: a routine, the seed of its numbers, and the
 /// test's outcome.
 #[derive(Clone, Debug)]
 pub struct WarpView {
-    /// Index into [`BUILT_IN`].
+    /// Index into [`warp_routines`].
     pub index: usize,
     /// The seed of the draws (`n` takes the next).
     pub seed: u64,
@@ -31,17 +30,18 @@ pub struct WarpView {
 impl WarpView {
     /// Runs routine `index` with `seed`.
     pub fn new(index: usize, seed: u64) -> WarpView {
-        let index = index % BUILT_IN.len();
+        let routines = warp_routines();
+        let index = index % routines.len();
         WarpView {
             index,
             seed,
-            test: run_built_in(index, DEFAULT_DRAWS, seed),
+            test: routines[index].run(DEFAULT_DRAWS, seed),
         }
     }
 
     /// The next (or, with `step` −1, previous) routine.
     pub fn step(&self, step: i64) -> WarpView {
-        let n = BUILT_IN.len() as i64;
+        let n = warp_routines().len() as i64;
         WarpView::new((self.index as i64 + step).rem_euclid(n) as usize, self.seed)
     }
 
@@ -58,7 +58,7 @@ pub fn summary(w: &WarpView) -> Vec<String> {
         format!(
             "warp test {}/{}: {} ({} draws, seed {})",
             w.index + 1,
-            BUILT_IN.len(),
+            warp_routines().len(),
             w.test.name,
             w.test.draws,
             w.seed

@@ -1,5 +1,6 @@
 //! Chapter 3: ray-triangle intersection, the BVH, and the stage.
 
+use crate::common;
 use std::sync::Arc;
 
 use glam::{DVec3, Vec2, Vec3};
@@ -249,7 +250,9 @@ fn a_scene_without_meshes_builds_no_bvh() {
 fn naive_and_bvh_images_are_identical() {
     let (table, rows) = naive_vs_bvh(&[10, 1000], 1e9);
     assert_eq!(table.rows.len(), 2);
-    assert!(table.rows.iter().all(|r| r[6] == "yes"), "{table:?}");
+    for row in 0..table.rows.len() {
+        assert_eq!(common::cell(&table, row, "same image"), "yes", "{table:?}");
+    }
     assert!(rows.iter().all(|m| m.error == 0.0));
 }
 
@@ -310,11 +313,12 @@ fn ch3_exercise_references_pass() {
 fn intersector_table_counts_agreement_with_f64() {
     let t = raystep::ch3_ray_triangle::studies::intersector_speed(5_000);
     assert_eq!(t.rows.len(), 3);
-    for row in &t.rows {
-        let hits: usize = row[2].parse().unwrap();
-        assert!(hits > 500, "{row:?}");
-        let agree: usize = row[3].split(' ').next().unwrap().parse().unwrap();
-        assert!(agree >= 4_990, "{row:?}");
+    for row in 0..t.rows.len() {
+        let hits: usize = common::cell(&t, row, "hits").parse().unwrap();
+        assert!(hits > 500, "{:?}", t.rows[row]);
+        let agree = common::cell(&t, row, "agree with f64 on hit/miss");
+        let agree: usize = agree.split(' ').next().unwrap().parse().unwrap();
+        assert!(agree >= 4_990, "{:?}", t.rows[row]);
     }
 }
 

@@ -3,9 +3,9 @@
 
 use glam::{Vec2, Vec3};
 use raystep::ch5_reflection::warp::{cosine_hemisphere, uniform_hemisphere};
-use raystep::ch5_reflection::warp_test::{
-    chi2_survival, ln_gamma, pearson, run, run_built_in, Warp, BUILT_IN, COS_CELLS, DEFAULT_DRAWS,
-    PHI_CELLS,
+use raystep::ch5_reflection::warp_test::ROUTINES;
+use raystep::core::warp_test::{
+    chi2_survival, ln_gamma, pearson, run, Warp, COS_CELLS, DEFAULT_DRAWS, PHI_CELLS,
 };
 
 #[test]
@@ -52,9 +52,9 @@ fn pearson_pools_small_cells_and_counts_degrees_of_freedom() {
 
 #[test]
 fn the_built_in_routines_are_accepted() {
-    for index in 0..BUILT_IN.len() {
+    for (index, routine) in ROUTINES.iter().enumerate() {
         for seed in [1, 2] {
-            let t = run_built_in(index, DEFAULT_DRAWS, seed);
+            let t = routine.run(DEFAULT_DRAWS, seed);
             assert!(t.passes(), "{}: {}", t.name, t.verdict());
             assert_eq!(t.observed.len(), COS_CELLS * PHI_CELLS);
             // A hemisphere covers half the cells; the light, seen from
@@ -66,7 +66,7 @@ fn the_built_in_routines_are_accepted() {
         }
     }
     // The area light misses no draw and expects none lost.
-    let t = run_built_in(2, 10_000, 3);
+    let t = ROUTINES[2].run(10_000, 3);
     assert_eq!(t.lost.0, 0.0);
     assert!(t.lost.1 < 1.0, "{:?}", t.lost);
 }

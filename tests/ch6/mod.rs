@@ -5,6 +5,7 @@ mod global_illumination;
 mod ladder;
 mod path_record;
 mod placement;
+mod reference_match;
 #[cfg(feature = "tui")]
 mod tui;
 mod unit;

@@ -98,10 +98,10 @@ fn the_moved_or_scaled_cornell_box_renders_the_same_in_chapter_5() {
     }
 }
 
-/// A placement row passed, says its worst deviation (`what`), and names
-/// the two placements past f32's reach.
+/// A placement row says its worst deviation (`what`) and names the two
+/// placements past f32's reach. (Whether it passed is judged by each
+/// caller on the number itself, not on the row's `ok`.)
 fn says_its_worst_and_where_f32_runs_out(case: &raystep::core::report::StabilityCase, what: &str) {
-    assert!(case.ok, "{}", case.measured);
     assert!(case.measured.contains(what), "{}", case.measured);
     for (label, _, _) in &PLACEMENTS[PLACEMENTS_REQUIRED..] {
         assert!(
@@ -157,6 +157,9 @@ fn a_scene_that_reflects_everything_is_said_to_defeat_roulette() {
 
 #[test]
 fn chapter_5s_report_prints_the_worst_placement() {
-    let case = raystep::ch5_reflection::stability::placement().case;
-    says_its_worst_and_where_f32_runs_out(&case, "largest region deviation");
+    let row = raystep::ch5_reflection::stability::placement();
+    // Every region within 2 % of the mean region of the render at the origin.
+    let dev = row.number("largest region deviation").expect("the number");
+    assert!(dev < 0.02, "{dev}");
+    says_its_worst_and_where_f32_runs_out(&row.case, "largest region deviation");
 }

@@ -34,6 +34,20 @@ pub fn shipped_scene(name: &str, w: u32, h: u32) -> raystep::scene::Scene {
 }
 pub mod chi2;
 
+/// The cell of `row` (an index into `table.rows`) under the column headed
+/// `header`: tests read report tables by what a column means, not by where
+/// it sits, so a column added or moved does not make them read the wrong
+/// one. Panics, naming the headers there are, when `header` is not one.
+pub fn cell<'a>(table: &'a raystep::core::table::Table, row: usize, header: &str) -> &'a str {
+    let Some(col) = table.columns.iter().position(|c| c == header) else {
+        panic!(
+            "table \"{}\" has no column \"{header}\"; its columns: {:?}",
+            table.title, table.columns
+        );
+    };
+    &table.rows[row][col]
+}
+
 /// Every exercise of `chapter` (there must be `count`): its file exists
 /// and its reference solution passes. (That every shipped stub fails
 /// cleanly is checked through the grader itself, which builds the
@@ -66,7 +80,8 @@ pub fn mean_and_variance(
         &mut raystep::core::sampling::Sampler,
     ) -> glam::Vec3,
 ) -> (raystep::core::film::Film, raystep::core::film::Film) {
-    use glam::{Vec2, Vec3};
+    use glam::Vec3;
+    use raystep::ch3_ray_triangle::render::camera_sample;
     use raystep::core::film::Film;
     let world = raystep::ch5_reflection::world::World::new(scene);
     let cam = raystep::ch1_projection::camera::Camera::of(scene);
@@ -79,9 +94,10 @@ pub fn mean_and_variance(
             let pixel = (y * cam.width + x) as u64;
             let (mut sum, mut sum_sq) = (Vec3::ZERO, Vec3::ZERO);
             for sample in 0..spp {
-                let mut s = raystep::core::sampling::Sampler::new(seed, pixel, sample as u64);
-                let raster = Vec2::new(x as f32, y as f32) + s.next2();
-                let l = radiance(&world, cam.ray(raster), &mut s);
+                let (mut s, ray) = camera_sample(&cam, (x, y), |p| {
+                    raystep::core::sampling::Sampler::new(seed, p, sample as u64)
+                });
+                let l = radiance(&world, ray, &mut s);
                 assert!(l.is_finite(), "pixel ({x}, {y}): {l}");
                 sum += l;
                 sum_sq += l * l;

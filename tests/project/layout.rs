@@ -503,20 +503,24 @@ fn src_root_stays_small() {
 
 /// `[lib] test = false`: a `#[test]` written beside the code would never
 /// run, so none may be there (the library's tests live in
-/// `tests/<chapter>/unit/`).
+/// `tests/<chapter>/unit/`). Every attribute in the code (outside comments
+/// and strings) is read: `#[test]`, any `#[…::test]`, and any `cfg` or
+/// `cfg_attr` that names `test` (`#[cfg(test)]`, `#![cfg(all(test, unix))]`)
+/// is reported by file and line.
 #[test]
 fn no_test_hides_in_the_library() {
-    let hidden: Vec<String> = sources()
-        .into_iter()
-        .filter(|f| {
-            let text = std::fs::read_to_string(root().join("src").join(f)).unwrap();
-            text.lines()
-                .any(|l| l.trim_start().starts_with("#[test]") || l.contains("#[cfg(test)]"))
-        })
-        .collect();
+    let mut hidden = Vec::new();
+    for f in sources() {
+        let text = std::fs::read_to_string(root().join("src").join(&f)).unwrap();
+        for (line, attr) in test_attributes(&text) {
+            hidden.push(format!("src/{f}:{line}: {attr}"));
+        }
+    }
     assert!(
         hidden.is_empty(),
-        "tests under src/ never run (lib test = false); move them to tests/<chapter>/unit/: {hidden:?}"
+        "tests under src/ never run ([lib] test = false in Cargo.toml); move them to \
+         tests/<chapter>/unit/:\n  {}",
+        hidden.join("\n  ")
     );
 }
 
@@ -534,4 +538,125 @@ fn the_terminal_ui_is_checked_and_uses_no_chapter_files() {
     assert!(!allowed(Place::Ui, Place::Lesson(6)));
     assert!(!allowed(Place::Ui, Place::Harness(3)));
     assert!(allowed(Place::Ui, Place::Core));
+}
+
+/// The reader behind [`no_test_hides_in_the_library`] finds what it must
+/// and nothing else.
+#[test]
+fn the_hidden_test_reader_sees_what_it_should() {
+    let text = "fn a() {}\n#[test]\nfn b() {}\n# [ test ]\nfn c() {}\n\
+                #[cfg(test)]\nmod t {}\n#![cfg(all(unix, test))]\n#[tokio::test]\n\
+                #[cfg_attr(test, derive(Debug))]\n\
+                // #[test] in a comment\n/* #[cfg(test)] */\n\
+                const S: &str = \"#[test]\";\n#[cfg(feature = \"test\")]\n\
+                #[derive(Debug)]\n#[cfg(testing)]\n#[allow(dead_code)]\n";
+    let found: Vec<usize> = test_attributes(text).into_iter().map(|(l, _)| l).collect();
+    assert_eq!(found, vec![2, 4, 6, 8, 9, 10]);
+}
+
+/// The line and text of every attribute in `text` that makes a test or
+/// compiles only under `cfg(test)`.
+fn test_attributes(text: &str) -> Vec<(usize, String)> {
+    let code = blank_comments_and_strings(text);
+    let b = code.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        if b[i] != b'#' {
+            i += 1;
+            continue;
+        }
+        let mut j = i + 1;
+        while j < b.len() && (b[j].is_ascii_whitespace() || b[j] == b'!') {
+            j += 1;
+        }
+        if j >= b.len() || b[j] != b'[' {
+            i += 1;
+            continue;
+        }
+        // The attribute up to its matching `]`.
+        let (start, mut depth, mut k) = (j + 1, 1, j + 1);
+        while k < b.len() && depth > 0 {
+            depth += match b[k] {
+                b'[' => 1,
+                b']' => -1,
+                _ => 0,
+            };
+            k += 1;
+        }
+        let attr: String = code[start..k.saturating_sub(1)]
+            .split_whitespace()
+            .collect();
+        let words: Vec<&str> = attr
+            .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .filter(|w| !w.is_empty())
+            .collect();
+        let path = attr.split('(').next().unwrap_or("");
+        let is_test = path == "test"
+            || path.ends_with("::test")
+            || ((path == "cfg" || path == "cfg_attr") && words.contains(&"test"));
+        if is_test {
+            let line = code[..i].matches('\n').count() + 1;
+            out.push((
+                line,
+                text.lines().nth(line - 1).unwrap_or("").trim().to_string(),
+            ));
+        }
+        i = k;
+    }
+    out
+}
+
+/// `text` with comments and the insides of string and char literals
+/// replaced by spaces (newlines kept, so lines still count).
+fn blank_comments_and_strings(text: &str) -> String {
+    let b = text.as_bytes();
+    let mut out = b.to_vec();
+    let blank = |out: &mut Vec<u8>, from: usize, to: usize| {
+        for c in &mut out[from..to.min(b.len())] {
+            if *c != b'\n' {
+                *c = b' ';
+            }
+        }
+    };
+    let mut i = 0;
+    while i < b.len() {
+        if b[i..].starts_with(b"//") {
+            let end = text[i..].find('\n').map_or(b.len(), |e| i + e);
+            blank(&mut out, i, end);
+            i = end;
+        } else if b[i..].starts_with(b"/*") {
+            let end = text[i + 2..].find("*/").map_or(b.len(), |e| i + 2 + e + 2);
+            blank(&mut out, i, end);
+            i = end;
+        } else if b[i] == b'r' && b.get(i + 1).is_some_and(|c| *c == b'"' || *c == b'#') {
+            // A raw string r"…" or r#"…"#.
+            let hashes = b[i + 1..].iter().take_while(|c| **c == b'#').count();
+            if b.get(i + 1 + hashes) != Some(&b'"') {
+                i += 1;
+                continue;
+            }
+            let close = format!("\"{}", "#".repeat(hashes));
+            let from = i + 2 + hashes;
+            let end = text[from..]
+                .find(&close)
+                .map_or(b.len(), |e| from + e + close.len());
+            blank(&mut out, from, end);
+            i = end;
+        } else if b[i] == b'"' {
+            let mut k = i + 1;
+            while k < b.len() && b[k] != b'"' {
+                k += if b[k] == b'\\' { 2 } else { 1 };
+            }
+            blank(&mut out, i + 1, k);
+            i = k + 1;
+        } else if b[i] == b'\'' && i + 2 < b.len() && (b[i + 2] == b'\'' || b[i + 1] == b'\\') {
+            let end = text[i + 1..].find('\'').map_or(b.len(), |e| i + 1 + e + 1);
+            blank(&mut out, i + 1, end - 1);
+            i = end;
+        } else {
+            i += 1;
+        }
+    }
+    String::from_utf8_lossy(&out).into_owned()
 }

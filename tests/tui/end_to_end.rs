@@ -4,8 +4,9 @@
 //! came back (the shell prints the exit status; no alternate screen; the
 //! cursor is visible).
 //!
-//! Without tmux the test is skipped with a message, except under `CI`,
-//! where a missing tmux is a failure (`.ci/run` installs it).
+//! Without tmux each test is skipped and says so on the terminal
+//! ("skipped: tmux not found"), except under `CI`, where a missing tmux
+//! is a failure (`.ci/run` installs it): one gate, [`shell`].
 
 use crate::common;
 use std::path::{Path, PathBuf};
@@ -85,17 +86,50 @@ fn pngs(dir: &Path) -> Vec<std::path::PathBuf> {
         .unwrap_or_default()
 }
 
+/// What a tmux test does, from whether tmux runs here and whether the
+/// `CI` variable is set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum TmuxPlan {
+    /// tmux is there: the test runs.
+    Run,
+    /// No tmux, not under CI: the test is skipped, and says so.
+    Skip,
+    /// No tmux under CI: the test fails (a CI that cannot run it must not
+    /// count it as passed).
+    Fail,
+}
+
+fn tmux_plan(available: bool, under_ci: bool) -> TmuxPlan {
+    match (available, under_ci) {
+        (true, _) => TmuxPlan::Run,
+        (false, false) => TmuxPlan::Skip,
+        (false, true) => TmuxPlan::Fail,
+    }
+}
+
+/// Says on the terminal that a test was skipped and why. Written to the
+/// process's stderr directly, not through `eprintln!`, which the test
+/// harness captures and shows only for failing tests: a skip printed that
+/// way would never be seen.
+fn say_skipped(reason: &str) {
+    use std::io::Write;
+    let thread = std::thread::current();
+    let test = thread.name().unwrap_or("a tmux test");
+    let _ = writeln!(std::io::stderr().lock(), "{test}: skipped: {reason}");
+}
+
 /// A private tmux session running a shell, in a fresh temporary folder
-/// named after `name`, once its prompt is up. `None` (the test is skipped
-/// with a message) without tmux, except under `CI`, where that fails.
+/// named after `name`, once its prompt is up. The one gate of every tmux
+/// test ([`tmux_plan`]): `None` without tmux (the test is skipped, and says
+/// so on the terminal), and a failure without tmux under `CI`.
 fn shell(name: &str) -> Option<(Tmux, PathBuf)> {
-    if !tmux_available() {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "tmux is missing under CI (.ci/run installs it)"
-        );
-        eprintln!("skipped: tmux is not installed (apt-get install tmux)");
-        return None;
+    match tmux_plan(tmux_available(), std::env::var_os("CI").is_some()) {
+        TmuxPlan::Run => {}
+        TmuxPlan::Skip => {
+            say_skipped("tmux not found (install tmux to run it; under CI this fails)");
+            return None;
+        }
+        TmuxPlan::Fail => panic!("tmux not found under CI (.ci/run installs it)"),
     }
     let dir = common::temp_dir(name);
     let tmux = Tmux {
@@ -136,6 +170,14 @@ fn run_failing(tmux: &Tmux, dir: &Path, hook: &str, code: u8) -> String {
     });
     assert_eq!(tmux.flag("cursor_flag"), "1");
     screen
+}
+
+#[test]
+fn a_missing_tmux_skips_here_and_fails_under_ci() {
+    assert_eq!(tmux_plan(true, false), TmuxPlan::Run);
+    assert_eq!(tmux_plan(true, true), TmuxPlan::Run);
+    assert_eq!(tmux_plan(false, false), TmuxPlan::Skip);
+    assert_eq!(tmux_plan(false, true), TmuxPlan::Fail);
 }
 
 #[test]

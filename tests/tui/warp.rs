@@ -4,7 +4,7 @@
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
-use raystep::tui::app::{App, Msg};
+use raystep::tui::app::App;
 use raystep::tui::keys::msg_for_key;
 use raystep::tui::scenes::SceneEntry;
 use raystep::tui::update::update;
@@ -84,4 +84,15 @@ fn the_warp_view_tests_each_routine_at_every_size() {
     assert!(app.warp.is_none());
     assert!(!app.quit, "Esc closes the view, it does not quit");
     assert!(!draw(&app, 80, 24).contains("warp test"));
+}
+
+#[test]
+fn the_book_states_the_warp_tests_constants() {
+    use raystep::core::warp_test::{COS_CELLS, DEFAULT_DRAWS, PHI_CELLS, SIGNIFICANCE};
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("book/src/running.md");
+    let book = std::fs::read_to_string(path).unwrap().replace('\n', " ");
+    assert_eq!(DEFAULT_DRAWS, 100_000);
+    assert!(book.contains("It draws 100,000 directions"));
+    assert!(book.contains(&format!("each of {COS_CELLS} × {PHI_CELLS} cells")));
+    assert!(book.contains(&format!("a p-value below {SIGNIFICANCE} rejects")));
 }

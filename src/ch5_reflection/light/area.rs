@@ -86,11 +86,7 @@ impl AreaLight {
     /// Radiance leaving the light at a point with unit outward normal
     /// `n_light` towards direction `w` (unit, away from the light).
     pub fn emitted(&self, n_light: Vec3, w: Vec3) -> Vec3 {
-        if self.two_sided || n_light.dot(w) > 0.0 {
-            self.le
-        } else {
-            Vec3::ZERO
-        }
+        emitted_towards(self.le, self.two_sided, n_light, w)
     }
 
     /// A point on the light seen from `p`, as a direction with a
@@ -147,5 +143,18 @@ impl AreaLight {
             Some(wi) => solid_angle_pdf(self.inv_area, dist, n_light.dot(wi)),
             None => 0.0,
         }
+    }
+}
+
+/// The one emission rule of every emitting surface (an area light, or an
+/// emissive surface a path hits): radiance `le` leaves the face its unit
+/// normal `n` points out of, towards the unit direction `w`; a two-sided
+/// emitter also lights the other side; else nothing.
+#[inline]
+pub fn emitted_towards(le: Vec3, two_sided: bool, n: Vec3, w: Vec3) -> Vec3 {
+    if two_sided || n.dot(w) > 0.0 {
+        le
+    } else {
+        Vec3::ZERO
     }
 }

@@ -27,6 +27,22 @@ pub(super) fn reference_moller_trumbore(
     Some((h.t / d.length(), h.u, h.v))
 }
 
+/// The barycentric (u, v) of `p` in `tri` by least squares in f64 (the
+/// normal equations of p - p0 = u e1 + v e2), when p is inside: the
+/// grader's own answer for its random cases.
+fn uv_f64(p: Vec3, tri: [Vec3; 3]) -> Option<Uv> {
+    let [p0, p1, p2] = tri.map(|q| q.as_dvec3());
+    let (e1, e2, w) = (p1 - p0, p2 - p0, p.as_dvec3() - p0);
+    let (d11, d12, d22) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
+    let det = d11 * d22 - d12 * d12;
+    if det == 0.0 {
+        return None;
+    }
+    let u = (d22 * w.dot(e1) - d12 * w.dot(e2)) / det;
+    let v = (d11 * w.dot(e2) - d12 * w.dot(e1)) / det;
+    (u >= 0.0 && v >= 0.0 && u + v <= 1.0).then_some((u as f32, v as f32))
+}
+
 /// Relative error of `got` against `want`, infinite when one is missing.
 fn rel(got: Option<f32>, want: Option<f32>) -> f64 {
     match (got, want) {
@@ -105,7 +121,8 @@ fn near(g: f32, w: f32) -> bool {
 }
 
 /// Hand-worked planes, a parallel ray, then random cases against the
-/// reference.
+/// closed form t = (c - N·o) / (N·d) worked in f64 here (not against
+/// raystep's `ray_plane`, which would check the reference against itself).
 pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
     let mut cases: Vec<(Vec3, Vec3, Vec3, f32, Option<f32>)> = vec![
         // The plane z = -2, a ray down -z from the origin: t = 2.
@@ -132,7 +149,9 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
         );
         if n.dot(d).abs() > 0.1 {
             let c = r(9);
-            cases.push((o, d, n, c, triangle::ray_plane(o, d, n, c)));
+            let f64s = |v: Vec3| v.as_dvec3();
+            let t = (c as f64 - f64s(n).dot(f64s(o))) / f64s(n).dot(f64s(d));
+            cases.push((o, d, n, c, Some(t as f32)));
         }
     }
     check(
@@ -154,7 +173,7 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
 }
 
 /// Hand-worked points of one triangle, a degenerate triangle, and random
-/// points against the reference.
+/// points against [`uv_f64`], an independent f64 solution worked here.
 pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Check {
     let tri = [
         Vec3::ZERO,
@@ -184,7 +203,7 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
         let p = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
         // Skip points right on an edge, where rounding decides.
         if u.abs().min(v.abs()).min((1.0 - u - v).abs()) > 1e-3 {
-            cases.push((p, t, triangle::barycentric_inside(p, t)));
+            cases.push((p, t, uv_f64(p, t)));
         }
     }
     check(
@@ -215,7 +234,8 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
 }
 
 /// Hand-worked rays, parallel and degenerate cases, and random rays against
-/// an f64 solution of the same 3x3 system.
+/// an f64 solution of the same 3x3 system (Cramer's rule, `intersect_f64`:
+/// not the Möller–Trumbore under test).
 pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check {
     let tri = [
         Vec3::new(0.0, 0.0, -2.0),
