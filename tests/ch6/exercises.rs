@@ -72,7 +72,7 @@ fn lecture_path(
         if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
             let cos = hit.n.dot(ls.wi);
             if cos > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
-                l += beta * f * ls.le * cos / ls.pdf;
+                l += beta * f * ls.li * cos / ls.pdf;
             }
         }
         let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));

@@ -84,7 +84,7 @@ fn path(
                     } else {
                         cos
                     };
-                    l += beta * f * ls.le * c / ls.pdf;
+                    l += beta * f * ls.li * c / ls.pdf;
                 }
             }
         }
@@ -221,7 +221,7 @@ fn recursive(scene: &PathScene, origin: Vec3, dir: Vec3, rng: &mut dyn FnMut() -
         if let Some(ls) = scene.sample_light(hit, Vec2::new(rng(), rng())) {
             let cos = ls.wi.dot(hit.n).max(0.0);
             if cos > 0.0 && scene.unoccluded(hit, ls.wi, ls.dist) {
-                l += f * ls.le * (cos / ls.pdf);
+                l += f * ls.li * (cos / ls.pdf);
             }
         }
         if pdf <= 0.0 {
@@ -270,7 +270,7 @@ fn roulette_first(
         if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
             let cos = hit.n.dot(ls.wi) as f64;
             if cos > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
-                l += beta * f * ls.le.as_dvec3() * cos / ls.pdf as f64;
+                l += beta * f * ls.li.as_dvec3() * cos / ls.pdf as f64;
             }
         }
         let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));

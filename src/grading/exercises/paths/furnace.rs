@@ -82,9 +82,10 @@ impl Furnace {
         let pdf = dist * dist / (cos_l * 4.0 * std::f32::consts::PI);
         Some(LightSample {
             wi,
-            dist,
-            le: self.le,
+            li: self.le,
             pdf,
+            dist,
+            delta: false,
         })
     }
 }

@@ -42,18 +42,10 @@ pub struct Hit {
     pub emitted: Vec3,
 }
 
-/// A point drawn on a light, seen from a hit.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LightSample {
-    /// Unit direction from the hit towards the light point.
-    pub wi: Vec3,
-    /// Distance to the light point.
-    pub dist: f32,
-    /// Radiance arriving along `wi` if nothing blocks it.
-    pub le: Vec3,
-    /// Density of `wi` per steradian.
-    pub pdf: f32,
-}
+/// A point drawn on a light, seen from a hit: chapter 5's light sample
+/// (`wi`, its distance `dist`, the radiance `li` arriving along it, its
+/// density `pdf` per steradian; `delta` is always false here).
+pub use crate::ch5_reflection::light::LightSample;
 
 /// A path may go this many bounces (calls of [`PathScene::next_hit`]);
 /// the next call ends it and marks the loop as never ending. With Russian
@@ -218,15 +210,7 @@ impl PathScene {
     pub fn sample_light(&self, at: &Hit, u: Vec2) -> Option<LightSample> {
         count(|t| t.light_samples += 1);
         let s = guard::grader(|| match &self.inner {
-            Inner::World(w) => {
-                let s = w.lights.lights.first()?.sample_li(at.p, at.n, u)?;
-                Some(LightSample {
-                    wi: s.wi,
-                    dist: s.dist,
-                    le: s.li,
-                    pdf: s.pdf,
-                })
-            }
+            Inner::World(w) => w.lights.lights.first()?.sample_li(at.p, at.n, u),
             Inner::Furnace(f) => f.sample_light(at, u),
         });
         if s.is_some() {
@@ -281,7 +265,7 @@ pub fn reference_path(
         if let Some(ls) = scene.sample_light(&hit, u) {
             let cos = hit.n.dot(ls.wi);
             if cos > 0.0 && ls.pdf > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
-                radiance += beta * f * ls.le * cos / ls.pdf;
+                radiance += beta * f * ls.li * cos / ls.pdf;
             }
         }
         let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));

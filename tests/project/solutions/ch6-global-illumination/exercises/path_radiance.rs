@@ -24,7 +24,7 @@ pub fn path_radiance(
         if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
             let cos = hit.n.dot(ls.wi);
             if cos > 0.0 && ls.pdf > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
-                radiance += beta * f * ls.le * cos / ls.pdf;
+                radiance += beta * f * ls.li * cos / ls.pdf;
             }
         }
         // One cosine-sampled bounce.
