@@ -38,7 +38,7 @@ use std::sync::Mutex;
 use glam::Vec3;
 
 use crate::core::error::Result;
-use crate::core::film::Film;
+use crate::core::film::{signed_colour, Film};
 use crate::core::strip::write_captioned_strip;
 
 /// Every exercise of every chapter, in order.
@@ -142,45 +142,12 @@ pub fn write_failure_images(ex: &Exercise, check: &Check, dir: &Path) -> Result<
 /// or blue. Fixed, so that images of two attempts compare.
 pub const DIFF_SCALE: f32 = 0.25;
 
-/// The signed difference of two images on the fixed scale [`DIFF_SCALE`]:
-/// red where the student's image is brighter, blue where it is darker (by
-/// the channel that differs most), black where they match, magenta where
-/// the student's value is not a number or infinite.
+/// The signed difference of two images on the fixed scale [`DIFF_SCALE`]
+/// ([`Film::signed_difference`]): red where the student's image is
+/// brighter, blue where it is darker, black where they match, magenta
+/// where the student's value is not a number or infinite.
 pub fn signed_difference(candidate: &Film, reference: &Film) -> Film {
-    let mut d = Film::new(candidate.width, candidate.height);
-    for ((o, a), b) in d
-        .pixels
-        .iter_mut()
-        .zip(&candidate.pixels)
-        .zip(&reference.pixels)
-    {
-        let diff = *a - *b;
-        if !diff.is_finite() {
-            *o = Vec3::new(1.0, 0.0, 1.0);
-            continue;
-        }
-        let abs = diff.abs();
-        let most = if abs.x >= abs.y && abs.x >= abs.z {
-            diff.x
-        } else if abs.y >= abs.z {
-            diff.y
-        } else {
-            diff.z
-        };
-        *o = signed_colour(most / DIFF_SCALE);
-    }
-    d
-}
-
-/// The colour of a signed difference `s` in units of [`DIFF_SCALE`]: red
-/// for positive, blue for negative, full at ±1, black at 0.
-fn signed_colour(s: f32) -> Vec3 {
-    let s = s.clamp(-1.0, 1.0);
-    if s >= 0.0 {
-        Vec3::new(s, 0.0, 0.0)
-    } else {
-        Vec3::new(0.0, 0.0, -s)
-    }
+    candidate.signed_difference(reference, DIFF_SCALE)
 }
 
 /// `diff` above a colour bar from -[`DIFF_SCALE`] (blue) through 0

@@ -308,11 +308,10 @@ impl App {
             (None, None) => None,
         };
         if let Some((student, reference)) = pair {
-            return Some(match self.compare {
-                Compare::Render => Cow::Borrowed(student),
-                Compare::Reference => Cow::Borrowed(reference),
-                Compare::Difference => Cow::Owned(student.difference(reference)),
-            });
+            return Some(
+                self.compare
+                    .apply(Cow::Borrowed(student), reference, self.exposure),
+            );
         }
         let snap = self.snapshot.as_ref()?;
         let mut film = Cow::Borrowed(snap.views.get(self.view)?);
@@ -325,12 +324,19 @@ impl App {
             .reference
             .as_ref()
             .filter(|r| (r.width, r.height) == (film.width, film.height));
-        match (self.compare, reference) {
-            (Compare::Reference, Some(r)) if self.view == 0 => Some(Cow::Borrowed(r)),
-            (Compare::Difference, Some(r)) if self.view == 0 => {
-                Some(Cow::Owned(film.difference(r)))
-            }
+        match reference {
+            Some(r) if self.view == 0 => Some(self.compare.apply(film, r, self.exposure)),
             _ => Some(film),
+        }
+    }
+
+    /// The exposure the preview applies: none to a false-colour difference
+    /// (its colours are final; exposure set its scale).
+    pub fn display_exposure(&self) -> i32 {
+        if self.compare.is_difference() && self.shows_compare() {
+            0
+        } else {
+            self.exposure
         }
     }
 

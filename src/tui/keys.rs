@@ -14,7 +14,7 @@ pub const KEYS: &[(&str, &str)] = &[
     ("+  -  0", "exposure one stop up / down / back to 0"),
     ("]  [", "one bounce more / less (chapters with bounces)"),
     ("m", "toggle \"exactly k\" / \"up to k\" bounces"),
-    ("r", "render → reference → difference (with a reference)"),
+    ("r", "render → reference → difference → relative difference"),
     (
         "g",
         "grader's newest failed image: student / reference / diff",

@@ -70,9 +70,22 @@ pub enum Compare {
     Render,
     /// The stage's reference.
     Reference,
-    /// |render - reference|, scaled so the largest difference is white.
+    /// render − reference in false colour on a fixed scale
+    /// ([`DIFFERENCE_SCALE`], red brighter, blue darker).
     Difference,
+    /// (render − reference) / reference, the same way
+    /// ([`RELATIVE_SCALE`]).
+    Relative,
 }
+
+/// The difference at which the difference view's colour is full, at
+/// exposure 0; each stop of exposure halves it. The grader's failure
+/// images use the same scale, so the two compare.
+pub const DIFFERENCE_SCALE: f32 = crate::grading::DIFF_SCALE;
+
+/// The relative difference at which the relative view's colour is full,
+/// at exposure 0 (±50%); each stop of exposure halves it.
+pub const RELATIVE_SCALE: f32 = 0.5;
 
 impl Compare {
     /// Name for the status line and file names.
@@ -81,6 +94,56 @@ impl Compare {
             Compare::Render => "render",
             Compare::Reference => "reference",
             Compare::Difference => "difference",
+            Compare::Relative => "relative",
+        }
+    }
+
+    /// The next in the cycle render → reference → difference → relative.
+    pub fn next(self) -> Compare {
+        match self {
+            Compare::Render => Compare::Reference,
+            Compare::Reference => Compare::Difference,
+            Compare::Difference => Compare::Relative,
+            Compare::Relative => Compare::Render,
+        }
+    }
+
+    /// Whether the preview shows a false-colour difference (then exposure
+    /// sets its scale instead of brightening it).
+    pub fn is_difference(self) -> bool {
+        matches!(self, Compare::Difference | Compare::Relative)
+    }
+
+    /// The difference shown in full colour at `exposure` stops, and how
+    /// to print it: "0.25" or "50%".
+    pub fn scale(self, exposure: i32) -> (f32, String) {
+        let stops = 2f32.powi(-exposure);
+        match self {
+            Compare::Relative => {
+                let s = RELATIVE_SCALE * stops;
+                (s, format!("{}%", 100.0 * s))
+            }
+            _ => {
+                let s = DIFFERENCE_SCALE * stops;
+                (s, format!("{s}"))
+            }
+        }
+    }
+
+    /// `film` compared with `reference` as this selection shows it.
+    pub fn apply<'a>(
+        self,
+        film: std::borrow::Cow<'a, Film>,
+        reference: &'a Film,
+        exposure: i32,
+    ) -> std::borrow::Cow<'a, Film> {
+        use std::borrow::Cow;
+        let (scale, _) = self.scale(exposure);
+        match self {
+            Compare::Render => film,
+            Compare::Reference => Cow::Borrowed(reference),
+            Compare::Difference => Cow::Owned(film.signed_difference(reference, scale)),
+            Compare::Relative => Cow::Owned(film.signed_relative(reference, scale)),
         }
     }
 

@@ -33,7 +33,7 @@ pub enum Msg {
     BounceDown,
     /// Toggle "exactly k" / "up to k".
     ToggleBounceMode,
-    /// Render → reference → difference → render.
+    /// Render → reference → difference → relative difference → render.
     CycleCompare,
     /// Next estimator or sampler (the next step of the lecture's ladder).
     NextVariant,

@@ -86,11 +86,7 @@ pub fn update(mut app: App, msg: Msg) -> App {
         Msg::BounceUp | Msg::BounceDown | Msg::ToggleBounceMode => {}
         Msg::CycleCompare => {
             if app.shows_compare() {
-                app.compare = match app.compare {
-                    Compare::Render => Compare::Reference,
-                    Compare::Reference => Compare::Difference,
-                    Compare::Difference => Compare::Render,
-                }
+                app.compare = app.compare.next();
             }
         }
         Msg::NextVariant | Msg::PrevVariant => {
@@ -209,7 +205,7 @@ pub fn update(mut app: App, msg: Msg) -> App {
                 Ok(Some(images)) => {
                     app.student = None;
                     app.message = format!(
-                        "grading {}: student vs reference (r: student → reference → difference, g: back)",
+                        "grading {}: student vs reference (r: student → reference → difference → relative, g: back)",
                         images.stem
                     );
                     app.grading = Some(images);
@@ -312,7 +308,7 @@ fn start_student(app: &mut App) {
     app.grading = None;
     app.compare = Compare::Render;
     app.message = format!(
-        "student mode: {} from {}, re-rendered when you save (r: student → reference → difference, x: back)",
+        "student mode: {} from {}, re-rendered when you save (r: student → reference → difference → relative, x: back)",
         ex.id(),
         ex.file
     );
@@ -385,7 +381,7 @@ pub fn save(app: &App) -> Result<Vec<PathBuf>, String> {
     let stem = app.save_stem();
     let png = app.out_dir.join(format!("{stem}.png"));
     let exr = app.out_dir.join(format!("{stem}.exr"));
-    expose(&film, app.exposure)
+    expose(&film, app.display_exposure())
         .write_png(&png)
         .map_err(|e| e.to_string())?;
     film.write_exr(&exr).map_err(|e| e.to_string())?;

@@ -176,6 +176,9 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
     }
     if app.shows_compare() {
         lines.push(Line::from(format!("compare: {}", app.compare_name())));
+        if app.compare.is_difference() {
+            lines.push(difference_legend(app));
+        }
     }
     if let Some(c) = app.current_chapter() {
         if let Some(v) = c.info().variants.get(app.variant) {
@@ -284,6 +287,18 @@ fn student_title(app: &App) -> String {
     }
 }
 
+/// The difference views' legend: which colour is which sign, on which
+/// scale.
+fn difference_legend(app: &App) -> Line<'static> {
+    let (_, scale) = app.compare.scale(app.exposure);
+    Line::from(vec![
+        Span::styled(format!("−{scale}"), fg(app, Color::Blue)),
+        Span::raw(" blue · 0 · "),
+        Span::styled(format!("+{scale}"), fg(app, Color::Red)),
+        Span::raw(" red"),
+    ])
+}
+
 /// Draws `film` with the exposure into `area`: box-filtered to the cells
 /// first and exposed after, so a redraw touches the full-size film once
 /// and allocates only the small one. (Exposure is a power of two, so for
@@ -292,7 +307,7 @@ fn draw_film(app: &App, frame: &mut Frame, film: &Film, area: Rect) {
     if let (Some(picker), true) = (&app.picker, app.color) {
         // Every pixel, through the terminal's graphics protocol, as large
         // as fits (never enlarged).
-        let exposed = expose(film, app.exposure);
+        let exposed = expose(film, app.display_exposure());
         let bytes: Vec<u8> = exposed
             .pixels
             .iter()
@@ -312,7 +327,7 @@ fn draw_film(app: &App, frame: &mut Frame, film: &Film, area: Rect) {
     }
     let small = expose(
         &downsample(film, r.width as u32, r.height as u32 * 2),
-        app.exposure,
+        app.display_exposure(),
     );
     frame.render_widget(
         Picture {

@@ -342,9 +342,35 @@ fn compare_cycles_render_reference_difference() {
     assert_eq!(pixel(&app), reference);
     let app = update(app, Msg::CycleCompare);
     assert_eq!(app.compare, Compare::Difference);
-    // |render - reference| = (0, 0, 0.125), scaled so the largest is 1.
+    // render − reference = (0, 0, −0.125): blue, on the fixed scale 0.25.
+    assert_eq!(render - reference, Vec3::new(0.0, 0.0, -0.125));
+    assert_eq!(pixel(&app), Vec3::new(0.0, 0.0, 0.5));
+    let legend = |app: &App| {
+        control_lines(app)
+            .iter()
+            .map(|l| l.to_string())
+            .collect::<Vec<_>>()
+    };
+    assert!(
+        legend(&app).contains(&"−0.25 blue · 0 · +0.25 red".to_string()),
+        "{:?}",
+        legend(&app)
+    );
+    // A stop of exposure halves the scale (the colours are not brightened).
+    let app = update(app, Msg::ExposureUp);
     assert_eq!(pixel(&app), Vec3::new(0.0, 0.0, 1.0));
-    assert_ne!(render, reference);
+    assert_eq!(app.display_exposure(), 0);
+    assert!(legend(&app).contains(&"−0.125 blue · 0 · +0.125 red".to_string()));
+    let app = update(app, Msg::ExposureReset);
+    // Relative: −0.125 / 0.25 = −50%, full blue on the ±50% scale.
+    let app = update(app, Msg::CycleCompare);
+    assert_eq!(app.compare, Compare::Relative);
+    assert_eq!(pixel(&app), Vec3::new(0.0, 0.0, 1.0));
+    assert!(
+        legend(&app).contains(&"−50% blue · 0 · +50% red".to_string()),
+        "{:?}",
+        legend(&app)
+    );
     let app = update(app, Msg::CycleCompare);
     assert_eq!(app.compare, Compare::Render);
     assert_eq!(pixel(&app), render);
@@ -857,7 +883,10 @@ fn g_shows_the_graders_newest_failure_student_against_reference() {
     for (name, colour) in [
         ("student", red),
         ("reference", blue),
-        ("difference", Vec3::new(1.0, 0.0, 1.0)),
+        // (1, 0, 0) − (0, 0, 1): the channel that differs most, x, is
+        // brighter by 1, beyond the ±0.25 scale: full red.
+        ("difference", red),
+        ("relative", red),
     ] {
         assert_eq!(app.compare_name(), name);
         assert_eq!(pixel(&app), colour, "{name}");
@@ -957,7 +986,10 @@ fn x_shows_the_students_capstone_live_and_follows_the_chapter() {
     for (name, colour) in [
         ("student", red),
         ("reference", blue),
-        ("difference", Vec3::new(1.0, 0.0, 1.0)),
+        // (1, 0, 0) − (0, 0, 1): the channel that differs most, x, is
+        // brighter by 1, beyond the ±0.25 scale: full red.
+        ("difference", red),
+        ("relative", red),
     ] {
         assert_eq!(app.compare_name(), name);
         assert_eq!(pixel(&app), colour, "{name}");
