@@ -3,6 +3,7 @@
 //! plots, reports, random numbers, the stage boundary between a chapter and
 //! its front ends, and the headless runner.
 
+pub mod difference;
 pub mod draw;
 pub mod error;
 pub mod figure;

@@ -37,8 +37,9 @@ use std::sync::Mutex;
 
 use glam::Vec3;
 
+use crate::core::difference::signed_colour;
 use crate::core::error::Result;
-use crate::core::film::{signed_colour, Film};
+use crate::core::film::Film;
 use crate::core::strip::write_captioned_strip;
 
 /// Every exercise of every chapter, in order.
