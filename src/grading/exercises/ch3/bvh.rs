@@ -179,7 +179,7 @@ fn every_triangle(tris: &[[Vec3; 3]], ray: &Ray, t_max: f32) -> Option<Hit> {
 /// Cornell box at 32 x 32, one ray per pixel centre, and 2,000 rays from
 /// random points inside it in random directions; then [`sheet_rays`]
 /// through [`sheets`], answers and work. Every answer must be the
-/// answer of [`every_triangle`] (no BVH at all): the same t (1e-5
+/// answer of `every_triangle` (no BVH at all): the same t (1e-5
 /// relative) and the same triangle (another only where it too is hit at
 /// that t). The work must stay near the reference traversal's (see
 /// [`work_verdict`]).

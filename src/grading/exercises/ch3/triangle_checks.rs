@@ -173,7 +173,7 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
 }
 
 /// Hand-worked points of one triangle, a degenerate triangle, and random
-/// points against [`uv_f64`], an independent f64 solution worked here.
+/// points against `uv_f64`, an independent f64 solution worked here.
 pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Check {
     let tri = [
         Vec3::ZERO,
