@@ -110,13 +110,7 @@ fn main() -> ExitCode {
             }
         };
     }
-    match headless(&cli) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("error: {e}");
-            ExitCode::from(2)
-        }
-    }
+    raystep::core::run::exit_code(headless(&cli))
 }
 
 fn headless(cli: &Cli) -> Result<()> {

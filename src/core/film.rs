@@ -173,6 +173,12 @@ pub fn decode_srgb(v: u8) -> f32 {
 static TEMPORARIES: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 /// Set once a signal handler has started cleaning up: no new write starts.
 static STOPPING: AtomicBool = AtomicBool::new(false);
+
+/// Whether a signal has asked the process to stop: its handler is removing
+/// the temporaries and exits with 128 + the signal's number.
+pub fn stopping() -> bool {
+    STOPPING.load(Ordering::SeqCst)
+}
 /// Distinguishes temporaries of one process.
 static COUNTER: AtomicU64 = AtomicU64::new(0);
 

@@ -360,13 +360,26 @@ pub fn clean_up_on_signals() {
     }
 }
 
-/// Success, or the error on stderr and exit status 2.
+/// Success, or the error on stderr and exit status 2. When a signal is
+/// stopping the run (its error is then "interrupted"), the signal's own
+/// exit status wins: this waits for the handler's exit ([`stop_code`]).
 pub fn exit_code<T>(result: Result<T>) -> ExitCode {
     match result {
         Ok(_) => ExitCode::SUCCESS,
+        Err(_) if crate::core::film::stopping() => stop_code(),
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(2)
         }
+    }
+}
+
+/// What a run that a signal interrupted returns: nothing, because the
+/// signal's handler exits the process with 130 or 143 once it has removed
+/// the temporaries ([`clean_up_on_signals`]); the main thread must not
+/// return first with an exit status of its own.
+pub fn stop_code() -> ExitCode {
+    loop {
+        std::thread::park();
     }
 }
