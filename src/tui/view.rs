@@ -28,7 +28,7 @@ use super::keys::KEYS;
 use super::picture::{fit, Picture};
 pub use super::screen::{areas, pixel_at, sidebar_width, Areas};
 use crate::core::film::Film;
-use crate::core::format::{format_number, format_seconds};
+use crate::core::format::format_seconds;
 use crate::core::preview::downsample;
 
 /// A style with this foreground colour, or plain without colour.
@@ -193,29 +193,63 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
     lines
 }
 
+/// The error against time on log-log axes, whole decades, with the slope
+/// −1/2 guide of a Monte Carlo estimate through the last point (the same
+/// as the reports' plots): a render on the guide converges as it should.
 fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
     let Some(snap) = &app.snapshot else { return };
-    let data = &snap.error_series;
-    let t_max = data.iter().map(|p| p.0).fold(0.0, f64::max).max(1e-9);
-    let e_max = data.iter().map(|p| p.1).fold(0.0, f64::max).max(1e-12);
-    let dataset = Dataset::default()
-        .marker(Marker::Braille)
-        .graph_type(GraphType::Line)
-        .style(fg(app, Color::Cyan))
-        .data(data);
-    let chart = Chart::new(vec![dataset])
-        .block(Block::bordered().title("error vs time"))
-        .x_axis(
-            Axis::default()
-                .bounds([0.0, t_max])
-                .labels(["0".to_string(), format_seconds(t_max)]),
-        )
-        .y_axis(
-            Axis::default()
-                .bounds([0.0, e_max])
-                .labels(["0".to_string(), format_number(e_max)]),
-        );
+    let (data, guide, x, y) = log_log(&snap.error_series);
+    let label = |e: f64| format!("1e{}", e as i32);
+    let chart = Chart::new(vec![
+        Dataset::default()
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(fg(app, Color::DarkGray))
+            .data(&guide),
+        Dataset::default()
+            .marker(Marker::Braille)
+            .graph_type(GraphType::Line)
+            .style(fg(app, Color::Cyan))
+            .data(&data),
+    ])
+    .block(Block::bordered().title("error vs time, log-log"))
+    .x_axis(Axis::default().bounds([x.0, x.1]).labels([
+        format_seconds(10f64.powf(x.0)),
+        format_seconds(10f64.powf(x.1)),
+    ]))
+    .y_axis(
+        Axis::default()
+            .bounds([y.0, y.1])
+            .labels([label(y.0), label(y.1)]),
+    );
     frame.render_widget(chart, area);
+}
+
+/// An error series as log10 points, the −1/2 guide through its last
+/// point, and the axes' bounds in whole decades (points that are not
+/// positive and finite are left out).
+pub fn log_log(
+    series: &[(f64, f64)],
+) -> (Vec<(f64, f64)>, Vec<(f64, f64)>, (f64, f64), (f64, f64)) {
+    let data: Vec<(f64, f64)> = series
+        .iter()
+        .filter(|(t, e)| *t > 0.0 && *e > 0.0 && t.is_finite() && e.is_finite())
+        .map(|(t, e)| (t.log10(), e.log10()))
+        .collect();
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for (x, y) in &data {
+        (x0, x1, y0, y1) = (x0.min(*x), x1.max(*x), y0.min(*y), y1.max(*y));
+    }
+    if data.is_empty() {
+        (x0, x1, y0, y1) = (-1.0, 0.0, -2.0, -1.0);
+    }
+    let x = (x0.floor(), x1.ceil().max(x0.floor() + 1.0));
+    let y = (y0.floor(), y1.ceil().max(y0.floor() + 1.0));
+    let guide = match data.last() {
+        Some(&(lx, ly)) => vec![(x.0, ly + 0.5 * (lx - x.0)), (x.1, ly - 0.5 * (x.1 - lx))],
+        None => Vec::new(),
+    };
+    (data, guide, x, y)
 }
 
 fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {

@@ -1076,3 +1076,27 @@ fn an_edited_scene_file_is_reloaded() {
     );
     assert!(!app.reload_if_changed());
 }
+
+#[test]
+fn the_error_chart_is_log_log_with_the_half_slope_guide() {
+    use raystep::tui::view::log_log;
+    let (data, guide, x, y) = log_log(&[(1.0, 0.1), (0.0, 0.5), (4.0, 0.05), (2.0, f64::NAN)]);
+    // Points that cannot be on a log axis are left out.
+    assert_eq!(data.len(), 2);
+    assert!(
+        (data[1].0 - 4f64.log10()).abs() < 1e-12 && (data[1].1 - 0.05f64.log10()).abs() < 1e-12
+    );
+    assert_eq!(
+        (x, y),
+        ((0.0, 1.0), (-2.0, -1.0)),
+        "whole decades around the points"
+    );
+    // The guide goes through the last point with slope −1/2 from edge to edge.
+    let slope = (guide[1].1 - guide[0].1) / (guide[1].0 - guide[0].0);
+    assert!((slope + 0.5).abs() < 1e-12);
+    let at = guide[0].1 - 0.5 * (data[1].0 - guide[0].0);
+    assert!((at - data[1].1).abs() < 1e-12);
+    assert_eq!((guide[0].0, guide[1].0), (0.0, 1.0));
+    let (none, no_guide, _, _) = log_log(&[]);
+    assert!(none.is_empty() && no_guide.is_empty());
+}
