@@ -198,7 +198,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
 /// as the reports' plots): a render on the guide converges as it should.
 fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
     let Some(snap) = &app.snapshot else { return };
-    let (data, guide, x, y) = log_log(&snap.error_series);
+    let LogLog { data, guide, x, y } = log_log(&snap.error_series);
     let label = |e: f64| format!("1e{}", e as i32);
     let chart = Chart::new(vec![
         Dataset::default()
@@ -249,7 +249,7 @@ pub fn log_log(
         Some(&(lx, ly)) => vec![(x.0, ly + 0.5 * (lx - x.0)), (x.1, ly - 0.5 * (x.1 - lx))],
         None => Vec::new(),
     };
-    (data, guide, x, y)
+    LogLog { data, guide, x, y }
 }
 
 fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {

@@ -1079,8 +1079,9 @@ fn an_edited_scene_file_is_reloaded() {
 
 #[test]
 fn the_error_chart_is_log_log_with_the_half_slope_guide() {
-    use raystep::tui::view::log_log;
-    let (data, guide, x, y) = log_log(&[(1.0, 0.1), (0.0, 0.5), (4.0, 0.05), (2.0, f64::NAN)]);
+    use raystep::tui::view::{log_log, LogLog};
+    let LogLog { data, guide, x, y } =
+        log_log(&[(1.0, 0.1), (0.0, 0.5), (4.0, 0.05), (2.0, f64::NAN)]);
     // Points that cannot be on a log axis are left out.
     assert_eq!(data.len(), 2);
     assert!(
@@ -1097,6 +1098,6 @@ fn the_error_chart_is_log_log_with_the_half_slope_guide() {
     let at = guide[0].1 - 0.5 * (data[1].0 - guide[0].0);
     assert!((at - data[1].1).abs() < 1e-12);
     assert_eq!((guide[0].0, guide[1].0), (0.0, 1.0));
-    let (none, no_guide, _, _) = log_log(&[]);
-    assert!(none.is_empty() && no_guide.is_empty());
+    let empty = log_log(&[]);
+    assert!(empty.data.is_empty() && empty.guide.is_empty());
 }
