@@ -225,12 +225,23 @@ fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
     frame.render_widget(chart, area);
 }
 
+/// An error series ready for log-log axes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LogLog {
+    /// The points as (log10 seconds, log10 error).
+    pub data: Vec<(f64, f64)>,
+    /// The slope −1/2 guide through the last point, edge to edge.
+    pub guide: Vec<(f64, f64)>,
+    /// The x axis' bounds, whole decades.
+    pub x: (f64, f64),
+    /// The y axis' bounds, whole decades.
+    pub y: (f64, f64),
+}
+
 /// An error series as log10 points, the −1/2 guide through its last
 /// point, and the axes' bounds in whole decades (points that are not
 /// positive and finite are left out).
-pub fn log_log(
-    series: &[(f64, f64)],
-) -> (Vec<(f64, f64)>, Vec<(f64, f64)>, (f64, f64), (f64, f64)) {
+pub fn log_log(series: &[(f64, f64)]) -> LogLog {
     let data: Vec<(f64, f64)> = series
         .iter()
         .filter(|(t, e)| *t > 0.0 && *e > 0.0 && t.is_finite() && e.is_finite())
