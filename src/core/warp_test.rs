@@ -158,15 +158,39 @@ pub fn cell_mass(pdf: &dyn Fn(Vec3) -> f32, sub: usize) -> Vec<f64> {
 /// Runs the test: `draws` directions from `warp`, with numbers from
 /// (`seed`, draw index, dimension).
 pub fn run(warp: &Warp, draws: usize, seed: u64) -> WarpTest {
+    draw(warp.sample, draws, seed).test(warp.name, warp.pdf)
+}
+
+/// What a routine drew: the counts per cell, the draws that returned no
+/// direction or a bad one, and the first few directions. The half of a
+/// warp test that runs the routine (in the grader's sandbox, for a
+/// student's); [`Drawn::test`] is the other half.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Drawn {
+    /// Draws made.
+    pub draws: usize,
+    /// Draws per cell.
+    pub observed: Vec<f64>,
+    /// Draws that returned no direction.
+    pub lost: f64,
+    /// Directions that were not unit length or not finite.
+    pub bad: usize,
+    /// The first few directions, for a scatter plot.
+    pub points: Vec<Vec3>,
+}
+
+/// Draws `draws` directions from `sample`, with numbers from (`seed`,
+/// draw index, dimension), and counts them per cell.
+pub fn draw(sample: &dyn Fn(Vec2) -> Option<Vec3>, draws: usize, seed: u64) -> Drawn {
     let mut observed = vec![0.0; COS_CELLS * PHI_CELLS];
     let (mut lost, mut bad) = (0.0, 0);
     let mut points = Vec::new();
     for i in 0..draws as u64 {
         let u = Vec2::new(random(seed, 0, i, 0), random(seed, 0, i, 1));
-        match (warp.sample)(u) {
+        match sample(u) {
             Some(w) if w.is_finite() && (w.length() - 1.0).abs() < 1e-3 => {
                 observed[cell_of(w)] += 1.0;
-                if points.len() < 4000 {
+                if points.len() < MAX_POINTS {
                     points.push(w);
                 }
             }
@@ -174,24 +198,97 @@ pub fn run(warp: &Warp, draws: usize, seed: u64) -> WarpTest {
             None => lost += 1.0,
         }
     }
-    let n = draws as f64;
-    let expected: Vec<f64> = cell_mass(warp.pdf, INTEGRATION_POINTS)
-        .iter()
-        .map(|m| m * n)
-        .collect();
-    let lost_expected = (n - expected.iter().sum::<f64>()).max(0.0);
-    let (chi2, dof) = pearson(&observed, &expected, (lost, lost_expected));
-    WarpTest {
-        name: warp.name.to_string(),
+    Drawn {
         draws,
-        points,
         observed,
-        expected,
-        lost: (lost, lost_expected),
-        chi2,
-        dof,
-        p_value: chi2_survival(chi2, dof),
+        lost,
         bad,
+        points,
+    }
+}
+
+/// Directions kept for the scatter plot.
+pub const MAX_POINTS: usize = 4000;
+
+impl Drawn {
+    /// The test of these draws against `pdf`.
+    pub fn test(self, name: &str, pdf: &dyn Fn(Vec3) -> f32) -> WarpTest {
+        let n = self.draws as f64;
+        let expected: Vec<f64> = cell_mass(pdf, INTEGRATION_POINTS)
+            .iter()
+            .map(|m| m * n)
+            .collect();
+        let lost_expected = (n - expected.iter().sum::<f64>()).max(0.0);
+        let (chi2, dof) = pearson(&self.observed, &expected, (self.lost, lost_expected));
+        WarpTest {
+            name: name.to_string(),
+            draws: self.draws,
+            points: self.points,
+            observed: self.observed,
+            expected,
+            lost: (self.lost, lost_expected),
+            chi2,
+            dof,
+            p_value: chi2_survival(chi2, dof),
+            bad: self.bad,
+        }
+    }
+
+    /// As text, one `key value…` line each, for a child process to print.
+    pub fn to_text(&self) -> String {
+        let counts: Vec<String> = self.observed.iter().map(|c| c.to_string()).collect();
+        let points: Vec<String> = self
+            .points
+            .iter()
+            .map(|p| format!("{},{},{}", p.x, p.y, p.z))
+            .collect();
+        format!(
+            "draws {}\nlost {}\nbad {}\nobserved {}\npoints {}\n",
+            self.draws,
+            self.lost,
+            self.bad,
+            counts.join(" "),
+            points.join(" ")
+        )
+    }
+
+    /// Reads [`Drawn::to_text`]'s text back; `None` when it is not that
+    /// (wrong cell count, a number that does not parse, a count that does
+    /// not add up).
+    pub fn from_text(text: &str) -> Option<Drawn> {
+        let field = |key: &str| {
+            text.lines()
+                .find_map(|l| l.strip_prefix(key)?.strip_prefix(' ').or(Some("")))
+        };
+        let draws: usize = field("draws")?.trim().parse().ok()?;
+        let lost: f64 = field("lost")?.trim().parse().ok()?;
+        let bad: usize = field("bad")?.trim().parse().ok()?;
+        let observed: Vec<f64> = field("observed")?
+            .split_whitespace()
+            .map(|c| c.parse().ok())
+            .collect::<Option<_>>()?;
+        let points: Vec<Vec3> = field("points")?
+            .split_whitespace()
+            .map(|p| {
+                let v: Vec<f32> = p
+                    .split(',')
+                    .map(|c| c.parse().ok())
+                    .collect::<Option<_>>()?;
+                (v.len() == 3).then(|| Vec3::new(v[0], v[1], v[2]))
+            })
+            .collect::<Option<_>>()?;
+        let total = observed.iter().sum::<f64>() + lost + bad as f64;
+        let ok = observed.len() == COS_CELLS * PHI_CELLS
+            && observed.iter().all(|c| c.is_finite() && *c >= 0.0)
+            && total == draws as f64
+            && points.len() <= MAX_POINTS;
+        ok.then_some(Drawn {
+            draws,
+            observed,
+            lost,
+            bad,
+            points,
+        })
     }
 }
 
