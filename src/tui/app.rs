@@ -4,7 +4,11 @@
 //! disk.
 
 use std::borrow::Cow;
+use std::collections::BTreeMap;
 use std::path::PathBuf;
+use std::time::Duration;
+
+use ratatui::layout::Rect;
 
 pub use super::layers::{bounce_name, combine_layers, expose, BounceMode, Compare};
 pub use super::msg::Msg;
@@ -16,6 +20,10 @@ use crate::grading::FailureImages;
 
 /// The highest bounce count the bounce control steps to.
 pub const MAX_BOUNCE: u32 = 16;
+
+/// How long a message stays on the message line when nothing else
+/// happens (the next key clears it sooner).
+pub const MESSAGE_TTL: Duration = Duration::from_secs(6);
 
 /// Which list the arrow keys move in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -100,6 +108,23 @@ pub struct App {
     /// The per-pixel story of chapters 3 to 5 for the inspected pixel
     /// (the event loop fills it in when the cursor moves).
     pub story: Option<(u32, u32, Vec<String>)>,
+    /// Why a chapter refused a scene when it started, per (chapter index,
+    /// scene index): the scene list marks those scenes, and switching
+    /// chapters avoids them.
+    pub refusals: BTreeMap<(usize, usize), String>,
+    /// Which chapters have been shown in this run (a chapter's own scene,
+    /// [`ChapterInfo::scene`](crate::core::stage::ChapterInfo::scene), is
+    /// chosen only the first time).
+    pub opened: Vec<bool>,
+    /// The terminal's size, as the event loop last saw it (for scrolling
+    /// and the mouse wheel, which depend on the layout).
+    pub screen: Rect,
+    /// How far the inspect panel is scrolled, in lines.
+    pub panel_scroll: u16,
+    /// How far the traced path's table is scrolled, in lines.
+    pub table_scroll: u16,
+    /// How long the current message has been shown.
+    pub message_age: Duration,
 }
 
 impl App {
@@ -115,7 +140,7 @@ impl App {
         if let Some(first) = scenes.first_mut() {
             first.ensure_loaded();
         }
-        App {
+        let mut app = App {
             chapters,
             scenes,
             chapter: 0,
@@ -149,7 +174,21 @@ impl App {
             trace_requested: None,
             traces: 0,
             story: None,
+            refusals: BTreeMap::new(),
+            opened: Vec::new(),
+            screen: Rect::new(0, 0, 80, 24),
+            panel_scroll: 0,
+            table_scroll: 0,
+            message_age: Duration::ZERO,
+        };
+        if !app.chapters.is_empty() {
+            if let Some(i) = app.opening_scene(0) {
+                app.scene = i;
+                app.scenes[i].ensure_loaded();
+            }
+            app.opened = vec![true];
         }
+        app
     }
 
     /// Where the grader writes its failure images: `grade/` in the save
@@ -173,9 +212,16 @@ impl App {
         self.scenes.get(self.scene)
     }
 
-    /// Why scene `index` cannot be rendered, if it cannot (its load error;
-    /// a stage that refuses a scene says so when it starts).
+    /// Why scene `index` cannot be rendered in the selected chapter, if
+    /// that is known: its load error, or the chapter's refusal when it
+    /// last started on it.
     pub fn scene_problem(&self, index: usize) -> Option<String> {
+        self.problem_in(self.chapter, index)
+    }
+
+    /// Why scene `index` cannot be rendered in chapter `chapter` (an index
+    /// into [`App::chapters`]), if that is known.
+    pub fn problem_in(&self, chapter: usize, index: usize) -> Option<String> {
         let entry = self.scenes.get(index)?;
         if entry.pending.is_some() {
             // Not read yet: nothing known against it.
@@ -183,7 +229,7 @@ impl App {
         }
         match &entry.scene {
             Err(e) => Some(e.clone()),
-            Ok(_) => None,
+            Ok(_) => self.refusals.get(&(chapter, index)).cloned(),
         }
     }
 
@@ -336,10 +382,34 @@ impl App {
         match self.bounce {
             None => "all bounces".into(),
             Some(k) => match self.bounce_mode {
-                BounceMode::Exactly if k == 0 => "exactly 0: direct light alone".into(),
-                BounceMode::Exactly => format!("exactly {k}: bounce {k} alone"),
-                BounceMode::UpTo => format!("up to {k}: {}", bounce_name(k)),
+                BounceMode::Exactly if k == 0 => "exactly 0 bounces: direct light alone".into(),
+                BounceMode::Exactly => {
+                    format!("{}: bounce {k} alone", self.bounce_short_words())
+                }
+                BounceMode::UpTo => format!("{}: {}", self.bounce_short_words(), bounce_name(k)),
             },
+        }
+    }
+
+    /// The bounce selection in a few words: "all bounces", "up to 2
+    /// bounces", "exactly 1 bounce".
+    pub fn bounce_short_words(&self) -> String {
+        match self.bounce {
+            None => "all bounces".into(),
+            Some(k) => {
+                let noun = if k == 1 { "bounce" } else { "bounces" };
+                format!("{} {noun}", self.bounce_short())
+            }
+        }
+    }
+
+    /// The bounce selection for the controls box: "all", "up to 2",
+    /// "exactly 1".
+    pub fn bounce_short(&self) -> String {
+        match (self.bounce, self.bounce_mode) {
+            (None, _) => "all".into(),
+            (Some(k), BounceMode::UpTo) => format!("up to {k}"),
+            (Some(k), BounceMode::Exactly) => format!("exactly {k}"),
         }
     }
 
@@ -370,6 +440,16 @@ impl App {
         }
         if self.view == 0 && self.shows_compare() && self.compare != Compare::Render {
             stem += &format!("-{}", self.compare.name());
+        }
+        let info = self.current_chapter().map(|c| c.info());
+        if let Some(v) = info.and_then(|i| i.variants.get(self.variant)) {
+            stem += &format!("-{}", v.name);
+        }
+        if let Some(snap) = self.snapshot.as_ref().filter(|s| s.samples > 0) {
+            stem += &format!("-{}spp", snap.samples);
+        }
+        if self.exposure != 0 {
+            stem += &format!("-ev{:+}", self.exposure);
         }
         stem
     }
@@ -404,8 +484,37 @@ impl App {
             self.view = 0;
             self.variant = self.chapters[index].info().default_variant;
             self.compare = Compare::Render;
+            if let Some(scene) = self.opening_scene(index) {
+                if scene != self.scene {
+                    self.scene = scene;
+                    self.scenes[scene].ensure_loaded();
+                }
+            }
+            if self.opened.len() <= index {
+                self.opened.resize(index + 1, false);
+            }
+            self.opened[index] = true;
             self.restart();
         }
+    }
+
+    /// The scene chapter `index` opens on: the first time, the chapter's
+    /// own scene ([`ChapterInfo::scene`](crate::core::stage::ChapterInfo::scene))
+    /// when the list has it; never a scene the chapter is known to refuse
+    /// when another one may work (then the first such one). `None`: stay.
+    pub fn opening_scene(&self, index: usize) -> Option<usize> {
+        let first_time = !self.opened.get(index).copied().unwrap_or(false);
+        let own = self.chapters.get(index)?.info().scene;
+        if let (true, Some(name)) = (first_time, own) {
+            let found = self.scenes.iter().position(|e| e.stem() == name);
+            if let Some(i) = found.filter(|i| self.problem_in(index, *i).is_none()) {
+                return Some(i);
+            }
+        }
+        if self.problem_in(index, self.scene).is_none() {
+            return None;
+        }
+        (0..self.scenes.len()).find(|i| self.problem_in(index, *i).is_none())
     }
 
     /// Reads the current scene's file again if it was edited since it was
@@ -417,6 +526,10 @@ impl App {
         if !entry.reload_if_changed() {
             return false;
         }
+        // The file is new: what the chapters said of the old one is not
+        // known of it.
+        let scene = self.scene;
+        self.refusals.retain(|(_, s), _| *s != scene);
         self.message = format!(
             "reloaded {}: the file changed",
             crate::core::text::escape(&entry.source)

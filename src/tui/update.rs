@@ -16,12 +16,27 @@ use crate::grading::live::{capstone, LiveError};
 
 /// The next state of the UI after `msg`.
 pub fn update(mut app: App, msg: Msg) -> App {
+    let before = app.message.clone();
+    // The next action clears a message (it may set its own).
+    if msg.is_action() {
+        app.message.clear();
+    }
+    let mut app = step(app, msg);
+    if app.message != before {
+        app.message_age = std::time::Duration::ZERO;
+    }
+    app
+}
+
+fn step(mut app: App, msg: Msg) -> App {
     // Any key but `?` closes the help overlay first.
     if app.help
         && !matches!(
             msg,
             Msg::ToggleHelp
                 | Msg::Quit
+                | Msg::Tick(_)
+                | Msg::Resize(..)
                 | Msg::Progress(_)
                 | Msg::Saved(_)
                 | Msg::GradeLoaded(_)
@@ -132,6 +147,10 @@ pub fn update(mut app: App, msg: Msg) -> App {
                 _ => None,
             };
             app.trace = None;
+            app.panel_scroll = 0;
+            if app.inspect.is_none() && size.is_none() {
+                app.message = "nothing rendered yet: i inspects a pixel of the picture".into();
+            }
         }
         Msg::CursorMove(dx, dy) => {
             let size = app
@@ -180,6 +199,7 @@ pub fn update(mut app: App, msg: Msg) -> App {
                         t.sample, t.pixel.0, t.pixel.1
                     );
                     app.trace = Some(t);
+                    app.table_scroll = 0;
                 }
                 Ok(_) => {}
                 Err(e) => app.message = format!("cannot trace: {e}"),
@@ -249,9 +269,41 @@ pub fn update(mut app: App, msg: Msg) -> App {
         }
         Msg::ToggleHelp => app.help = !app.help,
         Msg::Quit => app.quit = true,
+        Msg::Close => close(&mut app),
+        Msg::Scroll(lines) => scroll(&mut app, lines),
+        Msg::Wheel { column, row, lines } => {
+            let a = super::screen::areas(&app, app.screen);
+            let inside = |r: ratatui::layout::Rect| {
+                column >= r.x && column < r.x + r.width && row >= r.y && row < r.y + r.height
+            };
+            if a.table.is_some_and(inside) {
+                app.table_scroll = scrolled(app.table_scroll, lines, table_room(&app));
+            } else if a.panel.is_some_and(inside) {
+                app.panel_scroll = scrolled(app.panel_scroll, lines, panel_room(&app));
+            }
+        }
+        Msg::Resize(width, height) => {
+            app.screen = ratatui::layout::Rect::new(0, 0, width, height);
+            // The same scroll may now be past the end.
+            app.panel_scroll = app.panel_scroll.min(panel_room(&app));
+            app.table_scroll = app.table_scroll.min(table_room(&app));
+        }
+        Msg::Tick(elapsed) => {
+            if !app.message.is_empty() {
+                app.message_age += elapsed;
+                if app.message_age >= MESSAGE_TTL {
+                    app.message.clear();
+                }
+            }
+        }
         Msg::Progress(p) if p.generation() == app.generation => match p {
             Progress::State(s) => app.snapshot = Some(*s),
             Progress::Failed { message, .. } => app.failure = Some(message),
+            Progress::Refused { message, .. } => {
+                // Known from now on: the scene list marks it, and this
+                // chapter is not opened on it again while others work.
+                app.refusals.insert((app.chapter, app.scene), message);
+            }
             Progress::Inspected {
                 purpose: Purpose::Trace,
                 result,
@@ -272,6 +324,60 @@ pub fn update(mut app: App, msg: Msg) -> App {
     }
     student_follows_chapter(&mut app);
     app
+}
+
+/// Esc: closes what is open, the innermost first (the help is closed
+/// before any message gets here): the path table, inspect mode, the
+/// grader's images, student mode. It never quits.
+fn close(app: &mut App) {
+    if app.trace.is_some() {
+        app.trace = None;
+        app.table_scroll = 0;
+    } else if app.inspect.is_some() {
+        app.inspect = None;
+        app.panel_scroll = 0;
+    } else if app.grading.take().is_some() {
+        app.compare = Compare::Render;
+        app.message = "back to the render".into();
+    } else if app.student.take().is_some() {
+        app.compare = Compare::Render;
+        app.message = "back to the render".into();
+    } else {
+        app.message = "nothing to close: q quits".into();
+    }
+}
+
+/// `u`/`d`, Page Up/Down: scrolls the path table when it is shown, else
+/// the inspect panel.
+fn scroll(app: &mut App, lines: i32) {
+    let a = super::screen::areas(app, app.screen);
+    if a.table.is_some() {
+        app.table_scroll = scrolled(app.table_scroll, lines, table_room(app));
+    } else if a.panel.is_some() {
+        app.panel_scroll = scrolled(app.panel_scroll, lines, panel_room(app));
+    } else {
+        app.message = "nothing to scroll: i opens the pixel panel".into();
+    }
+}
+
+fn scrolled(at: u16, lines: i32, max: u16) -> u16 {
+    (at as i32 + lines).clamp(0, max as i32) as u16
+}
+
+/// How far the inspect panel can scroll at the current screen size.
+fn panel_room(app: &App) -> u16 {
+    let a = super::screen::areas(app, app.screen);
+    a.panel
+        .map_or(0, |r| super::inspect::overflow(&super::inspect::inspect_lines(app), r))
+}
+
+/// How far the path table can scroll at the current screen size.
+fn table_room(app: &App) -> u16 {
+    let a = super::screen::areas(app, app.screen);
+    match (a.table, &app.trace) {
+        (Some(r), Some(t)) => super::inspect::overflow(&t.lines, r),
+        _ => 0,
+    }
 }
 
 /// `x`: student mode on for the current chapter (when it has a capstone),
@@ -364,9 +470,23 @@ pub fn target_text(t: &super::worker::Target) -> String {
 
 /// Writes what the preview shows (with exposure) as PNG and the same film
 /// without exposure as linear EXR into `app.out_dir`; returns the paths.
+/// Never overwrites: the name says what is saved ([`App::save_stem`]), and
+/// when a file of that name is already there (the same state saved
+/// before) the new one gets the first free suffix `-2`, `-3`, ….
 pub fn save(app: &App) -> Result<Vec<PathBuf>, String> {
     let film = app.displayed().ok_or("nothing to save yet")?;
-    let stem = app.save_stem();
+    let base = app.save_stem();
+    let taken = |stem: &str| {
+        ["png", "exr"]
+            .iter()
+            .any(|e| app.out_dir.join(format!("{stem}.{e}")).exists())
+    };
+    let stem = std::iter::once(base.clone())
+        .chain((2..).map(|n| format!("{base}-{n}")))
+        .find(|s| !taken(s))
+        .expect("some suffix is free");
+    std::fs::create_dir_all(&app.out_dir)
+        .map_err(|e| format!("{}: {e}", app.out_dir.display()))?;
     let png = app.out_dir.join(format!("{stem}.png"));
     let exr = app.out_dir.join(format!("{stem}.exr"));
     expose(&film, app.exposure)

@@ -40,10 +40,15 @@ fn fg(app: &App, color: Color) -> Style {
     }
 }
 
+/// The focused list's box: bold, its title reversed (readable on light
+/// and dark backgrounds alike, where a yellow or grey border is not).
 fn block<'a>(app: &App, title: &'a str, focused: bool) -> Block<'a> {
     let b = Block::bordered().title(title);
-    if focused {
-        b.border_style(fg(app, Color::Yellow).add_modifier(Modifier::BOLD))
+    if focused && app.color {
+        b.border_style(Style::default().add_modifier(Modifier::BOLD))
+            .title_style(Style::default().add_modifier(Modifier::REVERSED))
+    } else if focused {
+        b.border_style(Style::default().add_modifier(Modifier::BOLD))
     } else {
         b
     }
@@ -56,24 +61,68 @@ pub fn view(app: &App, frame: &mut Frame) {
         side,
         preview,
         table,
+        panel,
         lines: [status, gauge, message],
+        too_small,
     } = areas(app, area);
-    draw_sidebar(app, frame, side);
-    draw_preview(app, frame, preview);
+    if too_small {
+        draw_too_small(frame, area);
+        return;
+    }
+    match panel {
+        Some(p) => super::inspect::draw_panel(app, frame, p),
+        None => draw_sidebar(app, frame, side),
+    }
+    if preview.width > 0 {
+        draw_preview(app, frame, preview);
+    }
     if let Some(t) = table {
         super::inspect::draw_table(app, frame, t);
     }
-    frame.render_widget(Paragraph::new(status_line(app)), status);
+    frame.render_widget(Paragraph::new(status_line_fit(app, status.width)), status);
     draw_gauge(app, frame, gauge);
-    let text = if app.message.is_empty() {
-        "? help · q quit".to_string()
+    // The message in the terminal's own colours (grey on a light
+    // background is unreadable), else the keys of the current mode.
+    let line = if app.message.is_empty() {
+        Line::from(key_hints(app))
     } else {
-        escape(&app.message).into_owned()
+        Line::from(escape(&app.message).into_owned()).style(Style::default().add_modifier(Modifier::BOLD))
     };
-    frame.render_widget(Paragraph::new(text).style(fg(app, Color::Gray)), message);
+    frame.render_widget(Paragraph::new(line), message);
     if app.help {
-        draw_help(app, frame, area);
+        draw_help(frame, area);
     }
+}
+
+/// The notice on a screen below [`MIN_SIZE`](super::screen::MIN_SIZE).
+fn draw_too_small(frame: &mut Frame, area: Rect) {
+    let (w, h) = super::screen::MIN_SIZE;
+    let text = format!(
+        "raystep needs a terminal of at least {w}x{h}; this one is {}x{}. Enlarge it, or q quits.",
+        area.width, area.height
+    );
+    frame.render_widget(Paragraph::new(text).wrap(Wrap { trim: true }), area);
+}
+
+/// The message line when there is no message: the keys that matter in
+/// the current mode.
+pub fn key_hints(app: &App) -> String {
+    let mode = if app.trace.is_some() {
+        "t next path · u d scroll · Esc close the path"
+    } else if app.inspect.is_some() && app.traces_paths() {
+        "arrows move · t trace a path · u d scroll · Esc close"
+    } else if app.inspect.is_some() {
+        "arrows move · u d scroll · Esc close"
+    } else if app.grading.is_some() {
+        "r student / reference / difference · g or Esc back"
+    } else if app.student.is_some() {
+        "r student / reference / difference · x or Esc back"
+    } else if app.paused {
+        "paused: space resumes"
+    } else {
+        "i inspect · r compare · s save"
+    };
+    format!("{mode} · ? help · q quit")
 }
 
 fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
@@ -89,11 +138,17 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         .enumerate()
         .map(|(i, _)| 1 + u16::from(chapter.is_some() && app.scene_problem(i).is_some()))
         .sum();
+    // Chapters first, then the controls, and the scene list gets what is
+    // left (at least three rows; it scrolls to the selection).
+    let total = area.height;
+    let ch_h = (app.chapters.len() as u16 + 2).min(total);
+    let ctrl_h = (controls.len() as u16 + 2).min(total.saturating_sub(ch_h + 3));
+    let sc_h = (scene_rows + 2).min(total.saturating_sub(ch_h + ctrl_h));
     let [chapters, scenes, ctrl, rest] = Layout::vertical([
-        Constraint::Length(app.chapters.len() as u16 + 2),
-        Constraint::Length(scene_rows + 2),
-        Constraint::Length(controls.len() as u16 + 2),
-        Constraint::Min(0),
+        Constraint::Length(ch_h),
+        Constraint::Length(sc_h),
+        Constraint::Length(ctrl_h),
+        Constraint::Fill(1),
     ])
     .areas(area);
 
@@ -117,10 +172,9 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         .map(|(i, s)| match chapter.and_then(|_| app.scene_problem(i)) {
             None => ListItem::new(escape(&s.name).into_owned()),
             Some(why) => ListItem::new(vec![
-                Line::from(format!("✗ {}", escape(&s.name))),
+                Line::from(format!("✗ {}", escape(&s.name))).style(fg(app, Color::Red)),
                 Line::from(format!("  {}", escape(&why.to_string()))),
-            ])
-            .style(fg(app, Color::DarkGray)),
+            ]),
         })
         .collect();
     let list = List::new(items)
@@ -134,9 +188,7 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         Paragraph::new(controls).block(Block::bordered().title("controls")),
         ctrl,
     );
-    if app.inspect.is_some() && rest.height >= 3 {
-        super::inspect::draw_panel(app, frame, rest);
-    } else if has_chart && rest.height >= 6 {
+    if has_chart && rest.height >= 6 {
         draw_chart(app, frame, rest);
     }
 }
@@ -154,16 +206,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
     }
     lines.push(Line::from(format!("exposure {:+} stops", app.exposure)));
     if app.shows_bounces() {
-        let short = match app.bounce {
-            None => "all".to_string(),
-            Some(_) => app
-                .bounce_label()
-                .split(':')
-                .next()
-                .unwrap_or("")
-                .to_string(),
-        };
-        lines.push(Line::from(format!("bounces {short}")));
+        lines.push(Line::from(format!("bounces {}", app.bounce_short())));
         if let Some(share) = app.bounce_share() {
             lines.push(Line::from(format!(
                 "  {:.1}% of the total light",
@@ -216,24 +259,7 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
     let title = match (&app.grading, app.current_chapter()) {
         (Some(g), _) => format!("grade · {} · {}", g.stem, app.compare_name()),
         (None, _) if app.student.is_some() => student_title(app),
-        (None, Some(c)) => {
-            let mut t = format!(
-                "ch{} {} · {}",
-                c.info().number,
-                c.info().slug,
-                app.view_name()
-            );
-            if app.picker.is_some() {
-                t += &format!(" · {}", app.graphics.name());
-            }
-            if app.view == 0 && app.shows_bounces() && app.bounce.is_some() {
-                t += &format!(" · {}", app.bounce_label());
-                if let Some(share) = app.bounce_share() {
-                    t += &format!(" ({:.1}% of the light)", 100.0 * share);
-                }
-            }
-            t
-        }
+        (None, Some(_)) => fit_parts(&preview_title_parts(app), area.width.saturating_sub(4)),
         (None, None) => "preview".into(),
     };
     let block = Block::bordered().title(title);
@@ -251,7 +277,7 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
         }
     } else if let Some(s) = &app.student {
         let color = match s.status.as_str() {
-            "starting…" | "building…" | "rendering…" => Color::Gray,
+            "starting…" | "building…" | "rendering…" => Color::Reset,
             _ => Color::Red,
         };
         let text = format!("{}\n\n{}", s.status, s.details);
@@ -267,8 +293,99 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
     } else if let Some(film) = app.displayed_ref() {
         draw_film(app, frame, &film, inner);
     } else {
-        frame.render_widget(note("rendering…".into(), Color::Gray), inner);
+        frame.render_widget(note("rendering…".into(), Color::Reset), inner);
     }
+}
+
+/// What the preview shows, most important first, for its title: render,
+/// reference or difference; which bounce layer ("up to k bounces" /
+/// "exactly k bounces"); which estimator; then the view and the chapter,
+/// the lecture's name for the layer, its share of the light and the
+/// graphics protocol. [`fit_parts`] drops from the end what does not fit.
+pub fn preview_title_parts(app: &App) -> Vec<String> {
+    let Some(c) = app.current_chapter() else {
+        return vec!["preview".into()];
+    };
+    let info = c.info();
+    let mut parts = Vec::new();
+    let variant = info.variants.get(app.variant).map(|v| v.name);
+    let layer = (app.view == 0 && app.shows_bounces())
+        .then_some(app.bounce)
+        .flatten();
+    let main = app.view == 0;
+    let compare = if main && app.shows_compare() {
+        app.compare
+    } else {
+        super::app::Compare::Render
+    };
+    let layer_words = layer.map(|_| app.bounce_short_words());
+    match compare {
+        super::app::Compare::Render => {
+            let what = if main { "render" } else { app.view_name() };
+            parts.push(match &layer_words {
+                Some(l) => format!("{what}, {l}"),
+                None => what.to_string(),
+            });
+            if let Some(v) = variant {
+                parts.push(format!("estimator {v}"));
+            }
+        }
+        super::app::Compare::Reference => {
+            // The stored reference has every bounce: say so when a layer
+            // is selected, so the title never claims a layer it is not.
+            parts.push(match layer {
+                Some(_) => "reference, all bounces".into(),
+                None => "reference".into(),
+            });
+        }
+        super::app::Compare::Difference => {
+            parts.push(match &layer_words {
+                Some(l) => format!("difference: render ({l}) - reference"),
+                None => "difference: render - reference".into(),
+            });
+            if let Some(v) = variant {
+                parts.push(format!("estimator {v}"));
+            }
+        }
+    }
+    if main {
+        parts.push(app.view_name().to_string());
+    }
+    parts.push(format!("ch{} {}", info.number, info.slug));
+    if let (Some(k), super::app::Compare::Render) = (layer, compare) {
+        if app.bounce_mode == super::app::BounceMode::UpTo {
+            parts.push(super::app::bounce_name(k));
+        }
+        if let Some(share) = app.bounce_share() {
+            parts.push(format!("{:.1}% of the light", 100.0 * share));
+        }
+    }
+    if app.picker.is_some() {
+        parts.push(app.graphics.name().to_string());
+    }
+    parts
+}
+
+/// `parts` joined with " · ", the last ones dropped until the text fits
+/// `width` cells (the first is always kept, cut if it must be).
+pub fn fit_parts(parts: &[String], width: u16) -> String {
+    let width = width as usize;
+    let mut out = String::new();
+    for (i, p) in parts.iter().enumerate() {
+        let next = if i == 0 {
+            p.clone()
+        } else {
+            format!("{out} · {p}")
+        };
+        if i > 0 && next.chars().count() > width {
+            break;
+        }
+        out = next;
+    }
+    if out.chars().count() > width {
+        out = out.chars().take(width).collect();
+    }
+    out
 }
 
 /// The preview's title in student mode: `student · ch1/draw_edges ·
@@ -344,61 +461,87 @@ pub fn format_rate(rate: f64) -> String {
     format!("{value:.digits$}{unit}")
 }
 
-/// The status line: chapter, scene, view, resolution, passes, elapsed time,
-/// rays per second when the stage counts rays, error against the reference
-/// when known.
-pub fn status_line(app: &App) -> Line<'static> {
+/// The status line's parts, most important first: chapter, samples (or
+/// passes), the error against the reference, then noise, scene, view,
+/// resolution, time and rays per second.
+pub fn status_parts(app: &App) -> Vec<String> {
     let mut parts: Vec<String> = Vec::new();
     if let Some(c) = app.current_chapter() {
         parts.push(format!("ch{} {}", c.info().number, c.info().slug));
     }
-    if let Some(s) = app.current_scene() {
-        // The scene's own name ("(built-in)" is in the scene list).
-        parts.push(match &s.scene {
-            Ok(scene) => escape(&scene.name).into_owned(),
-            Err(_) => escape(&s.name).into_owned(),
-        });
-    }
-    parts.push(app.view_name().to_string());
+    // The scene's own name ("(built-in)" is in the scene list).
+    let scene = app.current_scene().map(|s| match &s.scene {
+        Ok(scene) => escape(&scene.name).into_owned(),
+        Err(_) => escape(&s.name).into_owned(),
+    });
+    let view = app.view_name().to_string();
+    let mut rest = Vec::new();
     if let Some(g) = &app.grading {
         let f = &g.student;
         parts.push(format!("grade {}", g.stem));
-        parts.push(format!("{}x{}", f.width, f.height));
         parts.push(app.compare_name().to_string());
+        rest.push(format!("{}x{}", f.width, f.height));
     } else if let Some(s) = &app.student {
         parts.push(format!("student {}", s.id));
-        if let Some(r) = &s.render {
-            parts.push(format!("{}x{}", r.student.width, r.student.height));
-            parts.push(app.compare_name().to_string());
-        }
         parts.push(escape(&s.status).into_owned());
-    } else if let Some(snap) = &app.snapshot {
-        if let Some(f) = snap.views.first() {
-            parts.push(format!("{}x{}", f.width, f.height));
+        if let Some(r) = &s.render {
+            parts.push(app.compare_name().to_string());
+            rest.push(format!("{}x{}", r.student.width, r.student.height));
         }
+    } else if let Some(snap) = &app.snapshot {
         match &snap.target {
             Some(t) => parts.push(format!("spp {}/{}", snap.samples, t.spp)),
             None => parts.push(format!("pass {}/{}", snap.progress.0, snap.progress.1)),
         }
-        parts.push(format_seconds(snap.elapsed.as_secs_f64()));
-        if let Some(rate) = snap.rays_per_second() {
-            parts.push(format!("{} rays/s", format_rate(rate)));
+        if let Some(e) = snap.rmse {
+            parts.push(format!("rmse {}", short_number(e)));
         }
         if let Some(n) = snap.noise {
             parts.push(format!("noise {}", short_number(n)));
         }
-        if let Some(e) = snap.rmse {
-            parts.push(format!("rmse {}", short_number(e)));
+        if let Some(f) = snap.views.first() {
+            rest.push(format!("{}x{}", f.width, f.height));
+        }
+        rest.push(format_seconds(snap.elapsed.as_secs_f64()));
+        if let Some(rate) = snap.rays_per_second() {
+            rest.push(format!("{} rays/s", format_rate(rate)));
         }
     } else if app.failure.is_some() {
         parts.push("failed".into());
     } else if app.problem().is_none() {
         parts.push("rendering…".into());
     }
-    Line::from(Span::raw(parts.join(" │ ")))
+    parts.extend(scene);
+    parts.push(view);
+    parts.extend(rest);
+    parts
 }
 
-fn draw_help(app: &App, frame: &mut Frame, area: Rect) {
+/// The whole status line ([`status_parts`] joined).
+pub fn status_line(app: &App) -> Line<'static> {
+    Line::from(Span::raw(status_parts(app).join(" │ ")))
+}
+
+/// The status line for a screen `width` cells wide: what does not fit is
+/// dropped from the end, so chapter, samples and RMSE stay.
+pub fn status_line_fit(app: &App, width: u16) -> Line<'static> {
+    let parts = status_parts(app);
+    let mut out = String::new();
+    for (i, p) in parts.iter().enumerate() {
+        let next = if i == 0 {
+            p.clone()
+        } else {
+            format!("{out} │ {p}")
+        };
+        if i > 0 && next.chars().count() > width as usize {
+            break;
+        }
+        out = next;
+    }
+    Line::from(Span::raw(out))
+}
+
+fn draw_help(frame: &mut Frame, area: Rect) {
     let w = 78.min(area.width);
     let h = (KEYS.len() as u16 + 2).min(area.height);
     let r = Rect::new(
@@ -411,14 +554,17 @@ fn draw_help(app: &App, frame: &mut Frame, area: Rect) {
         .iter()
         .map(|(k, what)| {
             Line::from(vec![
-                Span::styled(format!("{k:>15}  "), fg(app, Color::Yellow)),
+                Span::styled(
+                    format!("{k:>15}  "),
+                    Style::default().add_modifier(Modifier::BOLD),
+                ),
                 Span::raw(*what),
             ])
         })
         .collect();
     frame.render_widget(Clear, r);
     frame.render_widget(
-        Paragraph::new(lines).block(Block::bordered().title("keys (any key closes)")),
+        Paragraph::new(lines).block(Block::bordered().title("keys (Esc or any key closes)")),
         r,
     );
 }

@@ -153,7 +153,15 @@ pub enum Progress {
         /// The render's answer, or why there is none.
         result: Result<Inspection, String>,
     },
-    /// The render could not start, or a pass panicked.
+    /// The stage refused to start on this scene ([`Chapter::start`]'s
+    /// error): the UI remembers it against the (chapter, scene) pair.
+    Refused {
+        /// The generation of the job.
+        generation: u64,
+        /// Why.
+        message: String,
+    },
+    /// The stage panicked while starting or in a pass.
     Failed {
         /// The generation of the job.
         generation: u64,
@@ -167,9 +175,9 @@ impl Progress {
     pub fn generation(&self) -> u64 {
         match self {
             Progress::State(s) => s.generation,
-            Progress::Inspected { generation, .. } | Progress::Failed { generation, .. } => {
-                *generation
-            }
+            Progress::Inspected { generation, .. }
+            | Progress::Refused { generation, .. }
+            | Progress::Failed { generation, .. } => *generation,
         }
     }
 }
@@ -326,7 +334,10 @@ fn start(job: Job, results: &Sender<Progress>) -> Option<Current> {
             sent: None,
         }),
         Ok(Err(e)) => {
-            let _ = results.send(fail(e.to_string()));
+            let _ = results.send(Progress::Refused {
+                generation: job.generation,
+                message: e.to_string(),
+            });
             None
         }
         Err(p) => {

@@ -391,6 +391,7 @@ fn the_flags_choose_the_chapter_the_scene_and_the_budget() {
         scene: Some(root.join("scenes/cornell-glass.toml")),
         spp: Some(64),
         halfblocks: false,
+        remember: None,
     };
     let app = launch_app(&launch, false);
     let chapter = app.current_chapter().unwrap();
