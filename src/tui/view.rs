@@ -534,6 +534,13 @@ pub fn status_line_fit(app: &App, width: u16) -> Line<'static> {
             format!("{out} │ {p}")
         };
         if i > 0 && next.chars().count() > width as usize {
+            // The part that does not fit, cut, when there is room for
+            // some of it.
+            let room = (width as usize).saturating_sub(out.chars().count() + 4);
+            if room >= 8 {
+                let cut: String = p.chars().take(room - 1).collect();
+                out = format!("{out} │ {cut}…");
+            }
             break;
         }
         out = next;

@@ -134,7 +134,9 @@ fn until_done(worker: &Worker, generation: u64) -> Vec<RenderState> {
                 }
             }
             Ok(Progress::State(_) | Progress::Inspected { .. }) => {}
-            Ok(Progress::Failed { message, .. }) => panic!("{message}"),
+            Ok(Progress::Failed { message, .. } | Progress::Refused { message, .. }) => {
+                panic!("{message}")
+            }
             Err(e) => panic!("no snapshot: {e}"),
         }
     }

@@ -98,6 +98,13 @@ fn shell(name: &str) -> Option<(Tmux, PathBuf)> {
         return None;
     }
     let dir = common::temp_dir(name);
+    // What the UI remembers between runs goes to this test's own folder,
+    // never the real home (and no test opens where another one left off).
+    let shell = format!(
+        "env PS1='READY$ ' {}={} sh",
+        raystep::tui::last::CONFIG_DIR_ENV,
+        dir.join("config").display()
+    );
     let tmux = Tmux {
         socket: format!("raystep-{name}-{}", std::process::id()),
     };
@@ -112,7 +119,7 @@ fn shell(name: &str) -> Option<(Tmux, PathBuf)> {
         "34",
         "-c",
         dir.to_str().unwrap(),
-        "env PS1='READY$ ' sh",
+        &shell,
     ]);
     assert!(started.status.success(), "{started:?}");
     tmux.wait("the shell", 10, |_, s| s.contains("READY$"));
@@ -172,9 +179,9 @@ fn the_real_binary_in_a_terminal() {
     if chapter.info().bounces {
         tmux.wait("the bounce control", 60, |_, s| s.contains("bounces all"));
         tmux.keys("]");
-        tmux.wait("bounce 0", 10, |_, s| s.contains("up to 0: direct"));
+        tmux.wait("bounce 0", 10, |_, s| s.contains("up to 0 bounces"));
         tmux.keys("m");
-        tmux.wait("exactly 0", 10, |_, s| s.contains("exactly 0: direct"));
+        tmux.wait("exactly 0", 10, |_, s| s.contains("exactly 0 bounces"));
     } else if chapter.info().views.len() > 1 {
         let name = chapter.info().views[1].name;
         tmux.keys("v");

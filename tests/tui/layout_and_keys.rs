@@ -241,21 +241,21 @@ fn bounce_stepping_shows_exactly_k_and_up_to_k_from_the_layers() {
     assert_eq!(app.bounce, Some(0));
     assert_eq!(app.bounce_mode, BounceMode::UpTo);
     assert_eq!(pixel(&app), layer_color(0));
-    assert_eq!(app.bounce_label(), "up to 0: direct illumination");
+    assert_eq!(app.bounce_label(), "up to 0 bounces: direct illumination");
 
     let app = update(app, Msg::BounceUp);
     assert_eq!(pixel(&app), layer_color(0) + layer_color(1));
     let app = update(app, Msg::ToggleBounceMode);
     assert_eq!(app.bounce_mode, BounceMode::Exactly);
     assert_eq!(pixel(&app), layer_color(1));
-    assert_eq!(app.bounce_label(), "exactly 1: bounce 1 alone");
+    assert_eq!(app.bounce_label(), "exactly 1 bounce: bounce 1 alone");
     assert!(control_lines(&app)
         .iter()
         .any(|l| l.to_string().contains("bounces exactly 1")));
     let app = update(app, Msg::ToggleBounceMode);
     assert_eq!(
         app.bounce_label(),
-        "up to 1: one-bounce global illumination"
+        "up to 1 bounce: one-bounce global illumination"
     );
     let app = update(app, Msg::ToggleBounceMode);
 
@@ -263,10 +263,10 @@ fn bounce_stepping_shows_exactly_k_and_up_to_k_from_the_layers() {
     let app = send(app, &vec![Msg::BounceUp; 3]);
     assert_eq!(app.bounce, Some(4));
     assert_eq!(pixel(&app), Vec3::ZERO);
-    assert_eq!(app.bounce_label(), "exactly 4: bounce 4 alone");
+    assert_eq!(app.bounce_label(), "exactly 4 bounces: bounce 4 alone");
     let app = send(app, &vec![Msg::BounceUp; 12]);
     assert_eq!(app.bounce, Some(16));
-    assert_eq!(app.bounce_label(), "exactly 16: bounce 16 alone");
+    assert_eq!(app.bounce_label(), "exactly 16 bounces: bounce 16 alone");
     // Up to k, the lecture's names: direct, one-bounce … sixteen-bounce.
     for (k, name) in [
         (0, "direct illumination"),
@@ -441,7 +441,8 @@ fn keys_map_to_messages() {
     let app = app();
     let m = |k| msg_for_key(&app, k).map(|m| format!("{m:?}"));
     assert_eq!(m(key(KeyCode::Char('q'))).as_deref(), Some("Quit"));
-    assert_eq!(m(key(KeyCode::Esc)).as_deref(), Some("Quit"));
+    // Esc closes what is open and never quits.
+    assert_eq!(m(key(KeyCode::Esc)).as_deref(), Some("Close"));
     assert_eq!(
         m(KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL)).as_deref(),
         Some("Quit")
@@ -460,12 +461,9 @@ fn keys_map_to_messages() {
 
     // With the help open, Esc closes it, and any other key only closes it.
     let app = update(app, Msg::ToggleHelp);
-    assert_eq!(
-        msg_for_key(&app, key(KeyCode::Esc))
-            .map(|m| format!("{m:?}"))
-            .as_deref(),
-        Some("ToggleHelp")
-    );
+    let closed = update(app, Msg::Close);
+    assert!(!closed.help && !closed.quit);
+    let app = update(closed, Msg::ToggleHelp);
     let app = update(app, Msg::NextView);
     assert!(!app.help);
     assert_eq!(app.view, 0);
@@ -491,11 +489,13 @@ fn save_writes_the_view_as_png_and_the_film_as_exr() {
     );
     assert!(app.save_requested);
     let files = save(&app).unwrap();
+    // The name says chapter, scene, view, bounce layer, estimator and
+    // exposure (the fake counts no samples).
     assert_eq!(
         files,
         vec![
-            dir.join("tui-ch6-cornell-box-image-exactly0.png"),
-            dir.join("tui-ch6-cornell-box-image-exactly0.exr")
+            dir.join("tui-ch6-cornell-box-image-exactly0-brdf-ev+1.png"),
+            dir.join("tui-ch6-cornell-box-image-exactly0-brdf-ev+1.exr")
         ]
     );
     // PNG: layer 0 (0.5 red) one stop up = 1.0; EXR: the film, unexposed.
