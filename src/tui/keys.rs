@@ -42,8 +42,8 @@ pub const KEYS: &[(&str, &str)] = &[
         "inspecting ch6: trace one path from the pixel (again: next)",
     ),
     (
-        "u  d  PgUp  PgDn",
-        "scroll the pixel panel or the path table (or the mouse wheel)",
+        "u d PgUp PgDn",
+        "scroll the pixel panel or the path table (also the wheel)",
     ),
     ("s", "save the view as PNG and EXR in out/ (never overwrites)"),
     ("?", "show / hide this help"),

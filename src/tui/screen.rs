@@ -73,7 +73,11 @@ pub fn areas(app: &App, area: Rect) -> Areas {
     ])
     .areas(area);
     let inspecting = app.inspect.is_some();
-    let width = if inspecting {
+    // A path table over the picture gets the room the wider panel would
+    // take.
+    let covered = app.trace.is_some()
+        && area.width.saturating_sub(panel_width(area.width)) < TABLE_BESIDE_MIN;
+    let width = if inspecting && !covered {
         panel_width(area.width)
     } else {
         sidebar_width(area.width)

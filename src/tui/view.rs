@@ -119,8 +119,10 @@ pub fn key_hints(app: &App) -> String {
         "r student / reference / difference · x or Esc back"
     } else if app.paused {
         "paused: space resumes"
-    } else {
+    } else if app.shows_compare() {
         "i inspect · r compare · s save"
+    } else {
+        "i inspect · s save"
     };
     format!("{mode} · ? help · q quit")
 }

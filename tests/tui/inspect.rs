@@ -17,7 +17,7 @@ use raystep::tui::update::update;
 use raystep::tui::worker::{Progress, RenderState};
 
 /// Chapter 6 on the 64x64 Cornell box (the stored reference's size), 2 spp.
-fn rendered() -> App {
+pub(crate) fn rendered() -> App {
     let ch6 = raystep::chapters::all()[5];
     let scene = Scene::builtin().with_resolution(64, 64).unwrap();
     let entry = SceneEntry {
@@ -246,7 +246,7 @@ fn t_traces_a_path_and_the_panel_shows_its_table() {
 
 /// What the current job's render answers for sample `sample` of `pixel`
 /// after its first pass.
-fn inspected(app: &App, pixel: (u32, u32), sample: u32) -> Inspection {
+pub(crate) fn inspected(app: &App, pixel: (u32, u32), sample: u32) -> Inspection {
     let job = app.job().unwrap();
     let settings = Settings {
         variant: Some(job.variant),

@@ -31,12 +31,12 @@ use raystep::tui::worker::{Job, Progress, RenderState, Worker};
 
 /// A stage with everything the UI can show: bounce layers, a reference, an
 /// error series, two views and two variants. Layer k is a flat colour.
-struct Fake {
+pub(crate) struct Fake {
     bounces: bool,
 }
 
-static FAKE: Fake = Fake { bounces: true };
-static FAKE_PLAIN: Fake = Fake { bounces: false };
+pub(crate) static FAKE: Fake = Fake { bounces: true };
+pub(crate) static FAKE_PLAIN: Fake = Fake { bounces: false };
 
 const W: u32 = 8;
 const H: u32 = 4;
@@ -184,7 +184,7 @@ fn renamed(name: &str) -> SceneEntry {
     }
 }
 
-fn scenes() -> Vec<SceneEntry> {
+pub(crate) fn scenes() -> Vec<SceneEntry> {
     vec![
         SceneEntry::builtin(),
         renamed("no-go"),
@@ -200,7 +200,7 @@ fn scenes() -> Vec<SceneEntry> {
 
 /// A fresh UI on the fake stage with bounces (chapter 6), plus the plain
 /// fake (chapter 2).
-fn app() -> App {
+pub(crate) fn app() -> App {
     let mut app = App::new(vec![&FAKE_PLAIN, &FAKE], scenes(), false);
     app = update(app, Msg::ChapterNumber(6));
     app
@@ -208,7 +208,7 @@ fn app() -> App {
 
 /// Runs the current job to completion synchronously and feeds the last
 /// snapshot to the UI.
-fn rendered(app: App) -> App {
+pub(crate) fn rendered(app: App) -> App {
     let job = app.job().expect("the selection renders");
     let settings = Settings {
         variant: Some(job.variant),
@@ -220,7 +220,7 @@ fn rendered(app: App) -> App {
     update(app, Msg::Progress(Progress::State(Box::new(snap))))
 }
 
-fn send(app: App, msgs: &[Msg]) -> App {
+pub(crate) fn send(app: App, msgs: &[Msg]) -> App {
     msgs.iter().cloned().fold(app, update)
 }
 
@@ -582,7 +582,7 @@ fn text(buffer: &Buffer) -> String {
     out
 }
 
-fn draw(app: &App, w: u16, h: u16) -> String {
+pub(crate) fn draw(app: &App, w: u16, h: u16) -> String {
     let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
     terminal.draw(|f| view(app, f)).unwrap();
     text(terminal.backend().buffer())

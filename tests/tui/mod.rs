@@ -7,3 +7,4 @@ mod end_to_end;
 mod graphics;
 mod inspect;
 mod layout_and_keys;
+mod sizes_and_keys;
