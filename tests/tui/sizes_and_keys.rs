@@ -551,3 +551,29 @@ fn the_last_chapter_scene_and_view_are_remembered() {
     assert_eq!(next.scene, 0);
     assert_eq!(next.view, 0);
 }
+
+#[test]
+fn the_headless_summary_says_which_chapters_refuse_a_scene() {
+    let scene = common::shipped_scene("sdf-shapes", 32, 24);
+    let out = common::temp_dir("tui-summary-refused");
+    let mut text = Vec::new();
+    let clean = raystep::summary::summarise(
+        &scene,
+        &out,
+        1,
+        16,
+        &mut text,
+        &mut raystep::summary::NoProgress,
+    )
+    .expect("a refusal is a line, not a failure");
+    assert!(clean.is_none());
+    let text = String::from_utf8(text).unwrap();
+    for n in [1, 2, 3, 5, 6] {
+        assert!(
+            text.contains(&format!("refused: chapter {n} draws triangle meshes")),
+            "{text}"
+        );
+    }
+    assert!(out.join("ch4-sdf-shapes.png").exists(), "{text}");
+    assert!(text.contains("ch6 clean: refused"), "{text}");
+}
