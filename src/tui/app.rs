@@ -511,7 +511,8 @@ impl App {
                 return Some(i);
             }
         }
-        if self.problem_in(index, self.scene).is_none() {
+        let refused_here = self.problem_in(index, self.scene).is_some();
+        if !refused_here {
             return None;
         }
         (0..self.scenes.len()).find(|i| self.problem_in(index, *i).is_none())

@@ -45,9 +45,15 @@ pub const KEYS: &[(&str, &str)] = &[
         "u d PgUp PgDn",
         "scroll the pixel panel or the path table (also the wheel)",
     ),
-    ("s", "save the view as PNG and EXR in out/ (never overwrites)"),
+    (
+        "s",
+        "save the view as PNG and EXR in out/ (never overwrites)",
+    ),
     ("?", "show / hide this help"),
-    ("Esc", "close what is open: help, path, inspect, grade, student"),
+    (
+        "Esc",
+        "close what is open: help, path, inspect, grade, student",
+    ),
     ("q  Ctrl-C", "quit"),
 ];
 

@@ -336,10 +336,8 @@ fn close(app: &mut App) {
     } else if app.inspect.is_some() {
         app.inspect = None;
         app.panel_scroll = 0;
-    } else if app.grading.take().is_some() {
-        app.compare = Compare::Render;
-        app.message = "back to the render".into();
-    } else if app.student.take().is_some() {
+    } else if app.grading.take().is_some() || app.student.take().is_some() {
+        // (The two are never on together.)
         app.compare = Compare::Render;
         app.message = "back to the render".into();
     } else {
@@ -367,8 +365,9 @@ fn scrolled(at: u16, lines: i32, max: u16) -> u16 {
 /// How far the inspect panel can scroll at the current screen size.
 fn panel_room(app: &App) -> u16 {
     let a = super::screen::areas(app, app.screen);
-    a.panel
-        .map_or(0, |r| super::inspect::overflow(&super::inspect::inspect_lines(app), r))
+    a.panel.map_or(0, |r| {
+        super::inspect::overflow(&super::inspect::inspect_lines(app), r)
+    })
 }
 
 /// How far the path table can scroll at the current screen size.
@@ -485,8 +484,7 @@ pub fn save(app: &App) -> Result<Vec<PathBuf>, String> {
         .chain((2..).map(|n| format!("{base}-{n}")))
         .find(|s| !taken(s))
         .expect("some suffix is free");
-    std::fs::create_dir_all(&app.out_dir)
-        .map_err(|e| format!("{}: {e}", app.out_dir.display()))?;
+    std::fs::create_dir_all(&app.out_dir).map_err(|e| format!("{}: {e}", app.out_dir.display()))?;
     let png = app.out_dir.join(format!("{stem}.png"));
     let exr = app.out_dir.join(format!("{stem}.exr"));
     expose(&film, app.exposure)

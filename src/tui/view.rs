@@ -86,7 +86,8 @@ pub fn view(app: &App, frame: &mut Frame) {
     let line = if app.message.is_empty() {
         Line::from(key_hints(app))
     } else {
-        Line::from(escape(&app.message).into_owned()).style(Style::default().add_modifier(Modifier::BOLD))
+        Line::from(escape(&app.message).into_owned())
+            .style(Style::default().add_modifier(Modifier::BOLD))
     };
     frame.render_widget(Paragraph::new(line), message);
     if app.help {

@@ -338,3 +338,70 @@ fn the_half_block_fallback_in_tmux_and_with_the_flag() {
         tmux.wait("a clear screen", 10, |_, s| !s.contains("EXIT=0"));
     }
 }
+
+/// At 80x24, the default terminal: Esc closes the help, the path table and
+/// inspect mode one at a time and, with nothing open, does not quit; the
+/// pixel panel shows the pixel's values and the path table its vertices;
+/// `q` quits.
+#[test]
+fn esc_never_quits_and_the_inspector_has_room_at_80x24() {
+    let Some((tmux, dir)) = shell("tui-e2e-esc") else {
+        return;
+    };
+    tmux.run(&["resize-window", "-t", "t", "-x", "80", "-y", "24"]);
+    let command = format!(
+        "{} --chapter 6 --spp 16 --scenes {} --out {}; echo \"EXIT=$?\"",
+        env!("CARGO_BIN_EXE_raystep"),
+        dir.display(),
+        dir.join("out").display()
+    );
+    tmux.keys(&command);
+    tmux.key("Enter");
+    let up = |t: &Tmux| t.flag("alternate_on") == "1";
+    tmux.wait("chapter 6's first preview", 60, |t, s| {
+        up(t) && s.contains("│ spp ")
+    });
+    // Nothing open: Esc only says how to quit.
+    for _ in 0..3 {
+        tmux.key("Escape");
+    }
+    tmux.wait("the hint after Esc", 10, |t, s| {
+        up(t) && s.contains("nothing to close: q quits")
+    });
+    // The help, then Esc.
+    tmux.keys("?");
+    tmux.wait("the help", 10, |_, s| s.contains("keys (Esc"));
+    tmux.key("Escape");
+    tmux.wait("the help closed", 10, |t, s| {
+        up(t) && !s.contains("keys (Esc")
+    });
+    // The pixel panel, with the pixel's values in view.
+    tmux.keys("i");
+    let panel = tmux.wait("the pixel panel", 20, |_, s| {
+        s.contains("pixel (") && s.contains("image: ") && s.contains("Esc: close")
+    });
+    println!("inspector at 80x24:\n{panel}");
+    // A path, over the picture at this width; Esc closes it and keeps the
+    // panel; Esc again closes the panel; once more changes nothing.
+    tmux.keys("t");
+    let path = tmux.wait("the path table", 30, |_, s| {
+        s.contains("path: sample 0 of pixel") && s.contains("camera ray")
+    });
+    println!("path table at 80x24:\n{path}");
+    tmux.key("Escape");
+    tmux.wait("the table closed", 10, |_, s| {
+        !s.contains("camera ray") && s.contains("image: ")
+    });
+    tmux.key("Escape");
+    tmux.wait("the panel closed", 10, |t, s| {
+        up(t) && !s.contains("image: ")
+    });
+    tmux.key("Escape");
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    let screen = tmux.capture();
+    assert!(up(&tmux) && screen.contains("chapters"), "{screen}");
+    tmux.keys("q");
+    tmux.wait("the shell after quitting", 20, |t, s| {
+        s.contains("EXIT=0") && t.flag("alternate_on") == "0"
+    });
+}

@@ -71,7 +71,9 @@ fn the_pixel_panel_has_room_and_scrolls_at_every_size() {
         assert_eq!(back.panel_scroll, 0, "{size:?}");
         // The mouse wheel over the panel scrolls it; over the picture it
         // does not.
-        let panel = raystep::tui::screen::areas(&back, back.screen).panel.unwrap();
+        let panel = raystep::tui::screen::areas(&back, back.screen)
+            .panel
+            .unwrap();
         let preview = raystep::tui::screen::areas(&back, back.screen).preview;
         let wheel = |column, row| Msg::Wheel {
             column,
@@ -207,7 +209,12 @@ fn titles_name_render_reference_difference_the_layer_and_the_estimator() {
         );
         let exactly = send(
             difference,
-            &[Msg::CycleCompare, Msg::BounceUp, Msg::BounceUp, Msg::ToggleBounceMode],
+            &[
+                Msg::CycleCompare,
+                Msg::BounceUp,
+                Msg::BounceUp,
+                Msg::ToggleBounceMode,
+            ],
         );
         let t = title(&exactly, w, h);
         assert!(t.contains("render, exactly 2 bounces"), "{w}x{h}: {t}");
@@ -310,7 +317,10 @@ fn messages_clear_after_a_while_or_on_the_next_key_and_hints_remain() {
     for (w, h) in SIZES {
         let screen = draw(&app, w, h);
         let last = screen.lines().last().unwrap();
-        assert!(last.contains("i inspect") && last.contains("q quit"), "{last}");
+        assert!(
+            last.contains("i inspect") && last.contains("q quit"),
+            "{last}"
+        );
         let inspecting = update(rendered(fake_app()), Msg::ToggleInspect);
         let screen = draw(&inspecting, w, h);
         let last = screen.lines().last().unwrap();
@@ -381,7 +391,11 @@ fn mesh_chapters_refuse_a_scene_without_meshes_and_say_why() {
     // Chapter 4 on a scene without SDFs renders its meshes (through
     // chapter 3's BVH): it does not refuse.
     let ch4 = raystep::chapters::all()[3];
-    let cornell = Arc::new(raystep::scene::Scene::builtin().with_resolution(16, 12).unwrap());
+    let cornell = Arc::new(
+        raystep::scene::Scene::builtin()
+            .with_resolution(16, 12)
+            .unwrap(),
+    );
     let mut render = ch4.start(cornell, &Settings::default()).unwrap();
     while !render.pass().complete {}
     let shaded = &render.snapshot().views[0];
@@ -454,7 +468,14 @@ fn chapter_4_opens_on_an_sdf_scene_when_the_list_has_one() {
     assert_eq!(app.current_scene().unwrap().stem(), "cornell-box");
     let app = update(app, Msg::ChapterNumber(4));
     assert_eq!(app.current_scene().unwrap().stem(), "sdf-shapes");
-    assert!(!app.current_scene().unwrap().scene.as_ref().unwrap().sdfs.is_empty());
+    assert!(!app
+        .current_scene()
+        .unwrap()
+        .scene
+        .as_ref()
+        .unwrap()
+        .sdfs
+        .is_empty());
     // Only the first time: back in chapter 4 after choosing the Cornell
     // box in chapter 3, it stays on the Cornell box.
     let mut app = send(app, &[Msg::ChapterNumber(3), Msg::SwitchFocus]);
