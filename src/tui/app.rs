@@ -269,19 +269,6 @@ impl App {
         self.current_chapter().is_some_and(|c| c.info().progressive)
     }
 
-    /// The selected estimator or sampler's step on the ladder, in the
-    /// lecture's words: "step 8/8: importance sampling according to …".
-    pub fn variant_label(&self) -> Option<String> {
-        let c = self.current_chapter()?;
-        let v = c.info().variants.get(self.variant)?;
-        Some(format!(
-            "step {}/{}: {}",
-            self.variant + 1,
-            c.info().variants.len(),
-            v.about
-        ))
-    }
-
     /// The share of the whole image's light that the selected bounces
     /// carry (sum over pixels and channels), when bounces are selected.
     pub fn bounce_share(&self) -> Option<f64> {
@@ -315,24 +302,6 @@ impl App {
                 .snapshot
                 .as_ref()
                 .is_some_and(|s| s.reference.is_some())
-    }
-
-    /// The compare selection's name: render, reference, difference, or
-    /// student, reference, difference for the grader's images.
-    pub fn compare_name(&self) -> &'static str {
-        if self.grading.is_some() || self.student_render().is_some() {
-            self.compare.grading_name()
-        } else {
-            self.compare.name()
-        }
-    }
-
-    /// The name of the selected view.
-    pub fn view_name(&self) -> &'static str {
-        self.current_chapter()
-            .and_then(|c| c.info().views.get(self.view))
-            .map(|v| v.name)
-            .unwrap_or("-")
     }
 
     /// What the preview shows, before exposure: the selected view, or for
@@ -375,83 +344,6 @@ impl App {
             }
             _ => Some(film),
         }
-    }
-
-    /// The label of the bounce selection, in the lecture's words.
-    pub fn bounce_label(&self) -> String {
-        match self.bounce {
-            None => "all bounces".into(),
-            Some(k) => match self.bounce_mode {
-                BounceMode::Exactly if k == 0 => "exactly 0 bounces: direct light alone".into(),
-                BounceMode::Exactly => {
-                    format!("{}: bounce {k} alone", self.bounce_short_words())
-                }
-                BounceMode::UpTo => format!("{}: {}", self.bounce_short_words(), bounce_name(k)),
-            },
-        }
-    }
-
-    /// The bounce selection in a few words: "all bounces", "up to 2
-    /// bounces", "exactly 1 bounce".
-    pub fn bounce_short_words(&self) -> String {
-        match self.bounce {
-            None => "all bounces".into(),
-            Some(k) => {
-                let noun = if k == 1 { "bounce" } else { "bounces" };
-                format!("{} {noun}", self.bounce_short())
-            }
-        }
-    }
-
-    /// The bounce selection for the controls box: "all", "up to 2",
-    /// "exactly 1".
-    pub fn bounce_short(&self) -> String {
-        match (self.bounce, self.bounce_mode) {
-            (None, _) => "all".into(),
-            (Some(k), BounceMode::UpTo) => format!("up to {k}"),
-            (Some(k), BounceMode::Exactly) => format!("exactly {k}"),
-        }
-    }
-
-    /// The base name of saved files for the current view.
-    pub fn save_stem(&self) -> String {
-        if let Some(g) = &self.grading {
-            return format!("tui-grade-{}-{}", g.stem, self.compare_name());
-        }
-        if let Some(r) = self.student_render() {
-            let id = r.id.replace('/', "-");
-            return format!("tui-student-{id}-{}", self.compare_name());
-        }
-        let chapter = self.current_chapter().map(|c| c.info().number).unwrap_or(0);
-        let scene = self
-            .current_scene()
-            .and_then(|s| s.scene.as_ref().ok())
-            .map(|s| s.name.clone())
-            .unwrap_or_else(|| "scene".into());
-        let mut stem = format!("tui-ch{chapter}-{scene}-{}", self.view_name());
-        if self.view == 0 && self.shows_bounces() {
-            if let Some(k) = self.bounce {
-                let mode = match self.bounce_mode {
-                    BounceMode::Exactly => "exactly",
-                    BounceMode::UpTo => "upto",
-                };
-                stem += &format!("-{mode}{k}");
-            }
-        }
-        if self.view == 0 && self.shows_compare() && self.compare != Compare::Render {
-            stem += &format!("-{}", self.compare.name());
-        }
-        let info = self.current_chapter().map(|c| c.info());
-        if let Some(v) = info.and_then(|i| i.variants.get(self.variant)) {
-            stem += &format!("-{}", v.name);
-        }
-        if let Some(snap) = self.snapshot.as_ref().filter(|s| s.samples > 0) {
-            stem += &format!("-{}spp", snap.samples);
-        }
-        if self.exposure != 0 {
-            stem += &format!("-ev{:+}", self.exposure);
-        }
-        stem
     }
 
     /// Starts over: a new generation, no picture yet.

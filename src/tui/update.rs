@@ -1,5 +1,5 @@
-//! [`update`], a pure function from (state, message) to the next state,
-//! student mode's part of it included, and [`save`]. `update` touches
+//! [`update`], a pure function from (state, message) to the next state (its
+//! student-mode part is in [`student_update`](super::student_update)), and [`save`]. `update` touches
 //! neither the terminal, the clock nor the disk: the event loop turns keys
 //! and worker reports into messages and carries out the effects `update`
 //! asks for (start a render when the generation changes, save when
@@ -10,9 +10,8 @@
 use std::path::PathBuf;
 
 use super::app::*;
-use super::student::{StudentEvent, StudentMode};
+use super::student_update::{student_event, student_follows_chapter, toggle_student};
 use super::worker::{Progress, Purpose};
-use crate::grading::live::{capstone, LiveError};
 
 /// The next state of the UI after `msg`.
 pub fn update(mut app: App, msg: Msg) -> App {
@@ -376,82 +375,6 @@ fn table_room(app: &App) -> u16 {
     match (a.table, &app.trace) {
         (Some(r), Some(t)) => super::inspect::overflow(&t.lines, r),
         _ => 0,
-    }
-}
-
-/// `x`: student mode on for the current chapter (when it has a capstone),
-/// or off.
-fn toggle_student(app: &mut App) {
-    if app.student.take().is_some() {
-        app.compare = Compare::Render;
-        app.message = "back to the render".into();
-        return;
-    }
-    start_student(app);
-}
-
-/// Student mode for the current chapter, or a message why there is none.
-fn start_student(app: &mut App) {
-    let n = app.current_chapter().map_or(0, |c| c.info().number);
-    let Some(ex) = capstone(n) else {
-        app.student = None;
-        app.message = format!("chapter {n} has no capstone for student mode");
-        return;
-    };
-    app.grading = None;
-    app.compare = Compare::Render;
-    app.message = format!(
-        "student mode: {} from {}, re-rendered when you save (r: student → reference → difference, x: back)",
-        ex.id(),
-        ex.file
-    );
-    app.student = Some(StudentMode {
-        chapter: n,
-        id: ex.id(),
-        status: "starting…".into(),
-        details: String::new(),
-        render: None,
-    });
-}
-
-/// A report from the watcher of chapter `chapter`; one about another
-/// chapter (the student has moved on) is dropped.
-fn student_event(app: &mut App, chapter: u32, event: StudentEvent) {
-    let Some(s) = app.student.as_mut().filter(|s| s.chapter == chapter) else {
-        return;
-    };
-    match event {
-        StudentEvent::Building => s.status = "building…".into(),
-        StudentEvent::Rendering => s.status = "rendering…".into(),
-        StudentEvent::Done(Ok(render)) => {
-            s.status = render.status();
-            app.message = format!("{}: {}", render.id, render.detail);
-            s.render = Some(render);
-        }
-        StudentEvent::Done(Err(e)) => {
-            s.status = e.status();
-            s.details = match &e {
-                LiveError::DoesNotCompile { message, .. } => {
-                    app.message = message.lines().take(2).collect::<Vec<_>>().join(" ");
-                    message.lines().take(24).collect::<Vec<_>>().join("\n")
-                }
-                LiveError::Panicked { message, .. } | LiveError::Build(message) => message.clone(),
-                LiveError::NotStarted { file, .. } => {
-                    format!("replace the todo!() in {file}: its comments say what to write")
-                }
-                _ => String::new(),
-            };
-            s.render = None;
-            app.compare = Compare::Render;
-        }
-    }
-}
-
-/// Student mode follows the selected chapter.
-fn student_follows_chapter(app: &mut App) {
-    let n = app.current_chapter().map_or(0, |c| c.info().number);
-    if app.student.as_ref().is_some_and(|s| s.chapter != n) {
-        start_student(app);
     }
 }
 
