@@ -17,11 +17,13 @@ use super::worker::{Progress, Purpose};
 pub fn update(mut app: App, msg: Msg) -> App {
     let before = app.message.clone();
     // The next action clears a message (it may set its own).
-    if msg.is_action() {
+    let action = msg.is_action();
+    if action {
         app.message.clear();
     }
     let mut app = step(app, msg);
-    if app.message != before {
+    // A new message, or the same one said again, starts its time anew.
+    if app.message != before || (action && !app.message.is_empty()) {
         app.message_age = std::time::Duration::ZERO;
     }
     app

@@ -222,7 +222,9 @@ fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
     let dataset = Dataset::default()
         .marker(Marker::Braille)
         .graph_type(GraphType::Line)
-        .style(fg(app, Color::Cyan))
+        // The terminal's own colour: cyan or yellow fade on a light
+        // background, blue on a dark one.
+        .style(Style::default())
         .data(data);
     let chart = Chart::new(vec![dataset])
         .block(Block::bordered().title("error vs time"))

@@ -309,7 +309,15 @@ fn messages_clear_after_a_while_or_on_the_next_key_and_hints_remain() {
     assert!(!app.message.is_empty());
     let app = update(app, Msg::Saved(Err("disk full".into())));
     assert!(app.message.contains("disk full"));
-    let app = update(app, Msg::Tick(MESSAGE_TTL / 2));
+    // The same message said again starts its time anew.
+    let three_quarters = MESSAGE_TTL * 3 / 4;
+    let app = update(app, Msg::Close);
+    let app = update(app, Msg::Tick(three_quarters));
+    let again = update(app, Msg::Close);
+    assert!(again.message.contains("q quits"));
+    let again = update(again, Msg::Tick(three_quarters));
+    assert!(!again.message.is_empty(), "said again: not stale yet");
+    let app = update(again, Msg::Tick(MESSAGE_TTL / 2));
     let app = update(app, Msg::NextView);
     assert!(app.message.is_empty(), "{}", app.message);
     // With no message, the line shows the keys of the mode, at every
@@ -339,6 +347,8 @@ fn the_ui_reads_on_light_and_dark_backgrounds() {
         Color::Black,
         Color::Yellow,
         Color::LightYellow,
+        Color::Cyan,
+        Color::LightCyan,
     ];
     let mut base = rendered(fake_app());
     base.color = true;
