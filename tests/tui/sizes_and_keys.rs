@@ -451,6 +451,8 @@ fn a_refused_scene_is_marked_in_the_list_and_chapters_avoid_it() {
     );
     assert_eq!(app.scene_problem(sdf), Some(why.clone()));
     assert!(app.job().is_none(), "a known refusal is not started again");
+    let (_, gauge) = raystep::tui::view::gauge_state(&app);
+    assert_eq!(gauge, "not rendered: the preview says why");
     for (w, h) in SIZES {
         let screen = draw(&app, w, h);
         assert!(screen.contains("✗ sdf-shapes"), "{w}x{h}\n{screen}");
