@@ -344,7 +344,16 @@ fn draw_help(frame: &mut Frame, area: Rect) {
         w,
         h,
     );
-    let lines: Vec<Line> = KEYS
+    // Where the terminal is too short for every key, the last row says
+    // so (the book and a taller terminal have them all).
+    let rows = h.saturating_sub(2) as usize;
+    let hidden = KEYS.len().saturating_sub(rows);
+    let shown = if hidden > 0 {
+        rows.saturating_sub(1)
+    } else {
+        rows
+    };
+    let mut lines: Vec<Line> = KEYS[..shown]
         .iter()
         .map(|(k, what)| {
             Line::from(vec![
@@ -356,6 +365,13 @@ fn draw_help(frame: &mut Frame, area: Rect) {
             ])
         })
         .collect();
+    if hidden > 0 {
+        lines.push(Line::from(format!(
+            "… {} more keys: a terminal {} rows tall shows them all",
+            KEYS.len() - shown,
+            KEYS.len() + 2
+        )));
+    }
     frame.render_widget(Clear, r);
     frame.render_widget(
         Paragraph::new(lines).block(Block::bordered().title("keys (Esc or any key closes)")),

@@ -610,3 +610,19 @@ fn the_headless_summary_says_which_chapters_refuse_a_scene() {
     assert!(out.join("ch4-sdf-shapes.png").exists(), "{text}");
     assert!(text.contains("ch6 clean: refused"), "{text}");
 }
+
+#[test]
+fn the_help_says_when_a_short_terminal_hides_keys() {
+    let app = update(rendered(fake_app()), Msg::ToggleHelp);
+    let keys = raystep::tui::keys::KEYS.len();
+    let tall = draw(&app, 100, 30);
+    assert!(!tall.contains("more keys"), "{tall}");
+    for (_, what) in raystep::tui::keys::KEYS {
+        assert!(tall.contains(what), "{what}\n{tall}");
+    }
+    let short = draw(&app, 80, 16);
+    assert!(
+        short.contains(&format!("… {} more keys", keys - 13)),
+        "{short}"
+    );
+}
