@@ -140,11 +140,11 @@ pub fn preview_title_parts(app: &App) -> Vec<String> {
     let compare = if main && app.shows_compare() {
         app.compare
     } else {
-        super::app::Compare::Render
+        Compare::Render
     };
     let layer_words = layer.map(|_| app.bounce_short_words());
     match compare {
-        super::app::Compare::Render => {
+        Compare::Render => {
             let what = if main { "render" } else { app.view_name() };
             parts.push(match &layer_words {
                 Some(l) => format!("{what}, {l}"),
@@ -154,7 +154,7 @@ pub fn preview_title_parts(app: &App) -> Vec<String> {
                 parts.push(format!("estimator {v}"));
             }
         }
-        super::app::Compare::Reference => {
+        Compare::Reference => {
             // The stored reference has every bounce: say so when a layer
             // is selected, so the title never claims a layer it is not.
             parts.push(match layer {
@@ -162,7 +162,7 @@ pub fn preview_title_parts(app: &App) -> Vec<String> {
                 None => "reference".into(),
             });
         }
-        super::app::Compare::Difference => {
+        Compare::Difference => {
             parts.push(match &layer_words {
                 Some(l) => format!("difference: render ({l}) - reference"),
                 None => "difference: render - reference".into(),
@@ -176,9 +176,9 @@ pub fn preview_title_parts(app: &App) -> Vec<String> {
         parts.push(app.view_name().to_string());
     }
     parts.push(format!("ch{} {}", info.number, info.slug));
-    if let (Some(k), super::app::Compare::Render) = (layer, compare) {
-        if app.bounce_mode == super::app::BounceMode::UpTo {
-            parts.push(super::app::bounce_name(k));
+    if let (Some(k), Compare::Render) = (layer, compare) {
+        if app.bounce_mode == BounceMode::UpTo {
+            parts.push(bounce_name(k));
         }
         if let Some(share) = app.bounce_share() {
             parts.push(format!("{:.1}% of the light", 100.0 * share));
