@@ -85,7 +85,14 @@ pub fn summarise(
     for chapter in crate::chapters::all() {
         writeln!(w, "{}", chapter_line(chapter, scene, out)?).map_err(io)?;
     }
-    let clean = clean_render(scene, out, clean_spp, progress)?;
+    let clean = match clean_render(scene, out, clean_spp, progress) {
+        // A scene chapter 6 cannot render (no meshes): said, not failed.
+        Err(Error::Usage(why)) => {
+            writeln!(w, "\nch6 clean: refused: {why}").map_err(io)?;
+            return Ok(None);
+        }
+        other => other?,
+    };
     let rmse = clean
         .rmse
         .map_or("no stored reference at this size".into(), |e| {
@@ -127,14 +134,19 @@ fn chapter_line(chapter: &dyn Chapter, scene: &Scene, out: &Path) -> Result<Stri
     let info = chapter.info();
     let name = format!("ch{} {}", info.number, info.slug);
     let settings = Settings::default();
-    let summary = run_headless(
+    let summary = match run_headless(
         chapter,
         scene.clone(),
         &settings,
         out,
         16,
         &mut std::io::sink(),
-    )?;
+    ) {
+        // With default settings, a usage error is the stage refusing the
+        // scene (`Chapter::start`): a line saying why, and on to the next.
+        Err(Error::Usage(why)) => return Ok(format!("{name:<23} refused: {why}")),
+        other => other?,
+    };
     let views = info.views;
     let what = match views.len() {
         0 | 1 => views.first().map_or("image", |v| v.name).to_string(),

@@ -101,6 +101,7 @@ fn main() -> ExitCode {
             scene: cli.scene.clone(),
             spp: cli.spp,
             halfblocks: cli.halfblocks,
+            remember: raystep::tui::last::path(&|k| std::env::var(k).ok()),
         };
         return match raystep::tui::run(&launch) {
             Ok(()) => ExitCode::SUCCESS,

@@ -41,6 +41,7 @@ impl Chapter for Projection {
         ChapterInfo::new(1, "projection", "Projection: the pinhole camera", VIEWS)
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
+        crate::core::stage::require_meshes(1, &scene)?;
         Ok(Box::new(ProjectionRender {
             camera: Camera::new(scene.camera)?,
             scene,

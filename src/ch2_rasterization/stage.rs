@@ -38,6 +38,7 @@ impl Chapter for Rasterization {
         )
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
+        crate::core::stage::require_meshes(2, &scene)?;
         let cam = &scene.camera;
         let samples = cam.width as u64 * cam.height as u64 * settings.spp as u64;
         if settings.spp == 0 || samples > MAX_SAMPLES {

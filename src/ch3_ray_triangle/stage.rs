@@ -56,6 +56,7 @@ impl Chapter for RayTriangle {
         )
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
+        crate::core::stage::require_meshes(3, &scene)?;
         let geometry = Geometry::new(&scene);
         let n = scene.camera.width as usize * scene.camera.height as usize;
         Ok(Box::new(RayTriangleRender {

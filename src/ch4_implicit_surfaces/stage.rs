@@ -105,12 +105,15 @@ impl SphereTracing {
 
 impl Chapter for SphereTracing {
     fn info(&self) -> ChapterInfo {
-        ChapterInfo::new(
-            4,
-            "sphere-tracing",
-            "Implicit surfaces: signed distance functions and sphere tracing",
-            VIEWS,
-        )
+        ChapterInfo {
+            scene: Some("sdf-shapes"),
+            ..ChapterInfo::new(
+                4,
+                "sphere-tracing",
+                "Implicit surfaces: signed distance functions and sphere tracing",
+                VIEWS,
+            )
+        }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         self.check()?;

@@ -105,6 +105,25 @@ pub fn views_of(
         .collect()
 }
 
+/// Refuses a scene with no triangle meshes, for a stage that draws only
+/// meshes: "chapter 1 draws triangle meshes; sdf-shapes has none (it has
+/// 3 SDF objects)". Such a stage would otherwise show a black picture
+/// without a word.
+pub fn require_meshes(chapter: u32, scene: &Scene) -> Result<()> {
+    if !scene.meshes.is_empty() {
+        return Ok(());
+    }
+    let has = match scene.sdfs.len() {
+        0 => "it is empty".to_string(),
+        1 => "it has 1 SDF object: chapter 4 draws it".to_string(),
+        n => format!("it has {n} SDF objects: chapter 4 draws them"),
+    };
+    Err(crate::core::error::Error::Usage(format!(
+        "chapter {chapter} draws triangle meshes; {} has none ({has})",
+        scene.name
+    )))
+}
+
 /// The [`Pass`] of a stage that renders in a fixed number of passes and
 /// samples nothing progressively.
 pub fn fixed_pass(done: u32, planned: u32, rays: u64) -> Pass {
@@ -143,6 +162,11 @@ pub struct ChapterInfo {
     pub radiance: bool,
     /// Whether snapshots carry per-bounce layers ([`Snapshot::layers`]).
     pub bounces: bool,
+    /// The shipped scene (its file stem) the chapter's lesson is told on,
+    /// when the chapter draws something most scenes lack (chapter 4: SDF
+    /// objects): a front end opens the chapter there the first time, if
+    /// its list has that scene.
+    pub scene: Option<&'static str>,
 }
 
 impl ChapterInfo {
@@ -164,6 +188,7 @@ impl ChapterInfo {
             progressive: false,
             radiance: false,
             bounces: false,
+            scene: None,
         }
     }
 

@@ -4,7 +4,11 @@
 //! disk.
 
 use std::borrow::Cow;
+use std::collections::BTreeMap;
 use std::path::PathBuf;
+use std::time::Duration;
+
+use ratatui::layout::Rect;
 
 pub use super::layers::{bounce_name, combine_layers, expose, BounceMode, Compare};
 pub use super::msg::Msg;
@@ -16,6 +20,10 @@ use crate::grading::FailureImages;
 
 /// The highest bounce count the bounce control steps to.
 pub const MAX_BOUNCE: u32 = 16;
+
+/// How long a message stays on the message line when nothing else
+/// happens (the next key clears it sooner).
+pub const MESSAGE_TTL: Duration = Duration::from_secs(6);
 
 /// Which list the arrow keys move in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -102,6 +110,23 @@ pub struct App {
     /// The per-pixel story of chapters 3 to 5 for the inspected pixel
     /// (the event loop fills it in when the cursor moves).
     pub story: Option<(u32, u32, Vec<String>)>,
+    /// Why a chapter refused a scene when it started, per (chapter index,
+    /// scene index): the scene list marks those scenes, and switching
+    /// chapters avoids them.
+    pub refusals: BTreeMap<(usize, usize), String>,
+    /// Which chapters have been shown in this run (a chapter's own scene,
+    /// [`ChapterInfo::scene`](crate::core::stage::ChapterInfo::scene), is
+    /// chosen only the first time).
+    pub opened: Vec<bool>,
+    /// The terminal's size, as the event loop last saw it (for scrolling
+    /// and the mouse wheel, which depend on the layout).
+    pub screen: Rect,
+    /// How far the inspect panel is scrolled, in lines.
+    pub panel_scroll: u16,
+    /// How far the traced path's table is scrolled, in lines.
+    pub table_scroll: u16,
+    /// How long the current message has been shown.
+    pub message_age: Duration,
 }
 
 impl App {
@@ -117,7 +142,7 @@ impl App {
         if let Some(first) = scenes.first_mut() {
             first.ensure_loaded();
         }
-        App {
+        let mut app = App {
             chapters,
             scenes,
             chapter: 0,
@@ -152,7 +177,21 @@ impl App {
             trace_requested: None,
             traces: 0,
             story: None,
+            refusals: BTreeMap::new(),
+            opened: Vec::new(),
+            screen: Rect::new(0, 0, 80, 24),
+            panel_scroll: 0,
+            table_scroll: 0,
+            message_age: Duration::ZERO,
+        };
+        if !app.chapters.is_empty() {
+            if let Some(i) = app.opening_scene(0) {
+                app.scene = i;
+                app.scenes[i].ensure_loaded();
+            }
+            app.opened = vec![true];
         }
+        app
     }
 
     /// Where the grader writes its failure images: `grade/` in the save
@@ -176,9 +215,16 @@ impl App {
         self.scenes.get(self.scene)
     }
 
-    /// Why scene `index` cannot be rendered, if it cannot (its load error;
-    /// a stage that refuses a scene says so when it starts).
+    /// Why scene `index` cannot be rendered in the selected chapter, if
+    /// that is known: its load error, or the chapter's refusal when it
+    /// last started on it.
     pub fn scene_problem(&self, index: usize) -> Option<String> {
+        self.problem_in(self.chapter, index)
+    }
+
+    /// Why scene `index` cannot be rendered in chapter `chapter` (an index
+    /// into [`App::chapters`]), if that is known.
+    pub fn problem_in(&self, chapter: usize, index: usize) -> Option<String> {
         let entry = self.scenes.get(index)?;
         if entry.pending.is_some() {
             // Not read yet: nothing known against it.
@@ -186,7 +232,7 @@ impl App {
         }
         match &entry.scene {
             Err(e) => Some(e.clone()),
-            Ok(_) => None,
+            Ok(_) => self.refusals.get(&(chapter, index)).cloned(),
         }
     }
 
@@ -226,19 +272,6 @@ impl App {
         self.current_chapter().is_some_and(|c| c.info().progressive)
     }
 
-    /// The selected estimator or sampler's step on the ladder, in the
-    /// lecture's words: "step 8/8: importance sampling according to …".
-    pub fn variant_label(&self) -> Option<String> {
-        let c = self.current_chapter()?;
-        let v = c.info().variants.get(self.variant)?;
-        Some(format!(
-            "step {}/{}: {}",
-            self.variant + 1,
-            c.info().variants.len(),
-            v.about
-        ))
-    }
-
     /// The share of the whole image's light that the selected bounces
     /// carry (sum over pixels and channels), when bounces are selected.
     pub fn bounce_share(&self) -> Option<f64> {
@@ -272,24 +305,6 @@ impl App {
                 .snapshot
                 .as_ref()
                 .is_some_and(|s| s.reference.is_some())
-    }
-
-    /// The compare selection's name: render, reference, difference, or
-    /// student, reference, difference for the grader's images.
-    pub fn compare_name(&self) -> &'static str {
-        if self.grading.is_some() || self.student_render().is_some() {
-            self.compare.grading_name()
-        } else {
-            self.compare.name()
-        }
-    }
-
-    /// The name of the selected view.
-    pub fn view_name(&self) -> &'static str {
-        self.current_chapter()
-            .and_then(|c| c.info().views.get(self.view))
-            .map(|v| v.name)
-            .unwrap_or("-")
     }
 
     /// What the preview shows, before exposure: the selected view, or for
@@ -340,49 +355,6 @@ impl App {
         }
     }
 
-    /// The label of the bounce selection, in the lecture's words.
-    pub fn bounce_label(&self) -> String {
-        match self.bounce {
-            None => "all bounces".into(),
-            Some(k) => match self.bounce_mode {
-                BounceMode::Exactly if k == 0 => "exactly 0: direct light alone".into(),
-                BounceMode::Exactly => format!("exactly {k}: bounce {k} alone"),
-                BounceMode::UpTo => format!("up to {k}: {}", bounce_name(k)),
-            },
-        }
-    }
-
-    /// The base name of saved files for the current view.
-    pub fn save_stem(&self) -> String {
-        if let Some(g) = &self.grading {
-            return format!("tui-grade-{}-{}", g.stem, self.compare_name());
-        }
-        if let Some(r) = self.student_render() {
-            let id = r.id.replace('/', "-");
-            return format!("tui-student-{id}-{}", self.compare_name());
-        }
-        let chapter = self.current_chapter().map(|c| c.info().number).unwrap_or(0);
-        let scene = self
-            .current_scene()
-            .and_then(|s| s.scene.as_ref().ok())
-            .map(|s| s.name.clone())
-            .unwrap_or_else(|| "scene".into());
-        let mut stem = format!("tui-ch{chapter}-{scene}-{}", self.view_name());
-        if self.view == 0 && self.shows_bounces() {
-            if let Some(k) = self.bounce {
-                let mode = match self.bounce_mode {
-                    BounceMode::Exactly => "exactly",
-                    BounceMode::UpTo => "upto",
-                };
-                stem += &format!("-{mode}{k}");
-            }
-        }
-        if self.view == 0 && self.shows_compare() && self.compare != Compare::Render {
-            stem += &format!("-{}", self.compare.name());
-        }
-        stem
-    }
-
     /// Starts over: a new generation, no picture yet.
     pub(super) fn restart(&mut self) {
         self.generation += 1;
@@ -413,8 +385,38 @@ impl App {
             self.view = 0;
             self.variant = self.chapters[index].info().default_variant;
             self.compare = Compare::Render;
+            if let Some(scene) = self.opening_scene(index) {
+                if scene != self.scene {
+                    self.scene = scene;
+                    self.scenes[scene].ensure_loaded();
+                }
+            }
+            if self.opened.len() <= index {
+                self.opened.resize(index + 1, false);
+            }
+            self.opened[index] = true;
             self.restart();
         }
+    }
+
+    /// The scene chapter `index` opens on: the first time, the chapter's
+    /// own scene ([`ChapterInfo::scene`](crate::core::stage::ChapterInfo::scene))
+    /// when the list has it; never a scene the chapter is known to refuse
+    /// when another one may work (then the first such one). `None`: stay.
+    pub fn opening_scene(&self, index: usize) -> Option<usize> {
+        let first_time = !self.opened.get(index).copied().unwrap_or(false);
+        let own = self.chapters.get(index)?.info().scene;
+        if let (true, Some(name)) = (first_time, own) {
+            let found = self.scenes.iter().position(|e| e.stem() == name);
+            if let Some(i) = found.filter(|i| self.problem_in(index, *i).is_none()) {
+                return Some(i);
+            }
+        }
+        let refused_here = self.problem_in(index, self.scene).is_some();
+        if !refused_here {
+            return None;
+        }
+        (0..self.scenes.len()).find(|i| self.problem_in(index, *i).is_none())
     }
 
     /// Reads the current scene's file again if it was edited since it was
@@ -426,6 +428,10 @@ impl App {
         if !entry.reload_if_changed() {
             return false;
         }
+        // The file is new: what the chapters said of the old one is not
+        // known of it.
+        let scene = self.scene;
+        self.refusals.retain(|(_, s), _| *s != scene);
         self.message = format!(
             "reloaded {}: the file changed",
             crate::core::text::escape(&entry.source)

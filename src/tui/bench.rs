@@ -61,7 +61,7 @@ pub fn run(
                 .recv()
                 .map_err(|e| std::io::Error::other(e.to_string()))?;
             let ours = p.generation() == app.generation;
-            let failed = matches!(p, Progress::Failed { .. });
+            let failed = matches!(p, Progress::Failed { .. } | Progress::Refused { .. });
             app = update(app, Msg::Progress(p));
             if ours && (app.snapshot.is_some() || failed) {
                 break;

@@ -25,7 +25,14 @@ pub fn short_number(x: f64) -> String {
 /// with 1/√spp).
 pub fn gauge_state(app: &App) -> (f64, String) {
     let Some(snap) = &app.snapshot else {
-        return (0.0, "0/1 passes".into());
+        let label = if app.problem().is_some() {
+            "not rendered: the preview says why"
+        } else if app.failure.is_some() {
+            "failed"
+        } else {
+            "0/1 passes"
+        };
+        return (0.0, label.into());
     };
     if let Some(t) = &snap.target {
         let budget = snap.samples as f64 / t.spp.max(1) as f64;

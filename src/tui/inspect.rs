@@ -8,7 +8,7 @@
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::Line;
-use ratatui::widgets::{Block, Paragraph, Wrap};
+use ratatui::widgets::{Block, Paragraph};
 use ratatui::Frame;
 
 use super::app::{bounce_name, App};
@@ -90,14 +90,90 @@ pub fn inspect_lines(app: &App) -> Vec<String> {
     lines
 }
 
-/// Draws the panel into `area`.
-pub fn draw_panel(app: &App, frame: &mut Frame, area: Rect) {
-    let lines: Vec<Line> = inspect_lines(app).into_iter().map(Line::from).collect();
+/// `lines` wrapped to `width` cells: at spaces where it can, a
+/// continuation indented by two, a word longer than the width cut.
+pub fn wrap_lines(lines: &[String], width: u16) -> Vec<String> {
+    let width = (width as usize).max(4);
+    let mut out = Vec::new();
+    for line in lines {
+        let mut cur: Vec<char> = Vec::new();
+        for (i, word) in line.split(' ').enumerate() {
+            let mut word: &[char] = &word.chars().collect::<Vec<_>>();
+            let fits = cur.len() + usize::from(i > 0) + word.len() <= width;
+            if i > 0 && !fits && cur.iter().any(|c| *c != ' ') {
+                out.push(cur.iter().collect());
+                cur = vec![' ', ' '];
+            } else if i > 0 {
+                cur.push(' ');
+            }
+            while cur.len() + word.len() > width {
+                let take = width.saturating_sub(cur.len()).min(word.len());
+                cur.extend_from_slice(&word[..take]);
+                word = &word[take..];
+                out.push(cur.iter().collect());
+                cur = vec![' ', ' '];
+            }
+            cur.extend_from_slice(word);
+        }
+        out.push(cur.iter().collect());
+    }
+    out
+}
+
+/// How many lines of `lines` do not fit a bordered box `area`: how far it
+/// can scroll.
+pub fn overflow(lines: &[String], area: Rect) -> u16 {
+    let shown = area.height.saturating_sub(2) as usize;
+    let n = wrap_lines(lines, area.width.saturating_sub(2)).len();
+    n.saturating_sub(shown).min(u16::MAX as usize) as u16
+}
+
+/// Draws `lines` into a bordered box `area` scrolled by `scroll` (clamped
+/// to the end), with `title` on top and, below, where the view is and the
+/// keys that apply.
+fn draw_scrolled(
+    frame: &mut Frame,
+    area: Rect,
+    lines: &[String],
+    scroll: u16,
+    title: String,
+    keys: &str,
+) {
+    let wrapped = wrap_lines(lines, area.width.saturating_sub(2));
+    let shown = area.height.saturating_sub(2) as usize;
+    let max = wrapped.len().saturating_sub(shown);
+    let at = (scroll as usize).min(max);
+    let bottom = if max > 0 {
+        format!(
+            "{}-{} of {} · u d scroll · {keys}",
+            at + 1,
+            (at + shown).min(wrapped.len()),
+            wrapped.len()
+        )
+    } else {
+        keys.to_string()
+    };
+    let text: Vec<Line> = wrapped
+        .into_iter()
+        .skip(at)
+        .take(shown)
+        .map(Line::from)
+        .collect();
     frame.render_widget(
-        Paragraph::new(lines)
-            .wrap(Wrap { trim: false })
-            .block(Block::bordered().title("pixel (i: close)")),
+        Paragraph::new(text).block(Block::bordered().title(title).title_bottom(bottom)),
         area,
+    );
+}
+
+/// Draws the panel into `area`, scrolled by [`App::panel_scroll`].
+pub fn draw_panel(app: &App, frame: &mut Frame, area: Rect) {
+    draw_scrolled(
+        frame,
+        area,
+        &inspect_lines(app),
+        app.panel_scroll,
+        "pixel".into(),
+        "Esc: close",
     );
 }
 
@@ -148,18 +224,21 @@ pub fn graphics_rect(area: Rect, width: u32, height: u32, font: (u16, u16)) -> R
     Rect::new(area.x, area.y, cols.min(area.width), rows.min(area.height))
 }
 
-/// Draws the traced path's table into `area`.
+/// Draws the traced path's table into `area`, scrolled by
+/// [`App::table_scroll`].
 pub fn draw_table(app: &App, frame: &mut Frame, area: Rect) {
     let Some(t) = &app.trace else { return };
     let title = format!(
-        "path: sample {} of pixel ({}, {}) (t: next)",
+        "path: sample {} of pixel ({}, {})",
         t.sample, t.pixel.0, t.pixel.1
     );
-    let lines: Vec<Line> = t.lines.iter().map(|l| Line::from(l.as_str())).collect();
-    frame.render_widget(
-        Paragraph::new(lines)
-            .wrap(Wrap { trim: false })
-            .block(Block::bordered().title(title)),
+    frame.render_widget(ratatui::widgets::Clear, area);
+    draw_scrolled(
+        frame,
         area,
+        &t.lines,
+        app.table_scroll,
+        title,
+        "t: next · Esc: close",
     );
 }

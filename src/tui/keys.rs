@@ -41,13 +41,24 @@ pub const KEYS: &[(&str, &str)] = &[
         "t",
         "inspecting ch6: trace one path from the pixel (again: next)",
     ),
-    ("s", "save the view as PNG and its film as EXR in out/"),
+    (
+        "u d PgUp PgDn",
+        "scroll the pixel panel or the path table (also the wheel)",
+    ),
+    (
+        "s",
+        "save the view as PNG and EXR in out/ (never overwrites)",
+    ),
     (
         "w",
         "warp test: ch5's sampling routines against their pdf (χ²)",
     ),
     ("?", "show / hide this help"),
-    ("q  Esc  Ctrl-C", "quit (Esc first closes the help)"),
+    (
+        "Esc",
+        "close what is open: help, path, inspect, grade, student",
+    ),
+    ("q  Ctrl-C", "quit"),
 ];
 
 /// The message for a key press, if the key means anything.
@@ -88,9 +99,6 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         if let Some((dx, dy)) = moved {
             return Some(Msg::CursorMove(dx, dy));
         }
-        if key.code == KeyCode::Esc {
-            return Some(Msg::ToggleInspect);
-        }
         if key.code == KeyCode::Char('t') {
             return Some(Msg::TracePath);
         }
@@ -98,8 +106,11 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
     Some(match key.code {
         KeyCode::Char('q') => Msg::Quit,
         KeyCode::Char('i') => Msg::ToggleInspect,
-        KeyCode::Esc if app.help => Msg::ToggleHelp,
-        KeyCode::Esc => Msg::Quit,
+        KeyCode::Esc => Msg::Close,
+        KeyCode::Char('u') => Msg::Scroll(-5),
+        KeyCode::Char('d') => Msg::Scroll(5),
+        KeyCode::PageUp => Msg::Scroll(-10),
+        KeyCode::PageDown => Msg::Scroll(10),
         KeyCode::Up | KeyCode::Char('k') => Msg::Up,
         KeyCode::Down | KeyCode::Char('j') => Msg::Down,
         KeyCode::Tab | KeyCode::BackTab => Msg::SwitchFocus,

@@ -21,12 +21,16 @@ pub mod gauge;
 pub mod graphics;
 pub mod inspect;
 pub mod keys;
+pub mod labels;
+pub mod last;
 pub mod layers;
 pub mod msg;
 pub mod picture;
 pub mod scenes;
 pub mod screen;
+pub mod state;
 pub mod student;
+pub mod student_update;
 pub mod target;
 pub mod update;
 pub mod view;
@@ -131,11 +135,20 @@ pub struct Launch {
     /// Draw the preview with half blocks even where the terminal has a
     /// graphics protocol.
     pub halfblocks: bool,
+    /// Where the last chapter, scene and view are remembered
+    /// ([`last::path`]); `None`: nothing is remembered.
+    pub remember: Option<PathBuf>,
 }
 
 /// The UI's first state for `launch`: its chapter, scene and budget
 /// selected, asking for its first render.
 pub fn launch_app(launch: &Launch, color: bool) -> App {
+    launch_app_with(launch, color, None)
+}
+
+/// [`launch_app`], opening on what the last run showed (`last`) where the
+/// flags do not choose: the flags' chapter and scene win over it.
+pub fn launch_app_with(launch: &Launch, color: bool, last: Option<&last::Last>) -> App {
     let mut entries = scenes::scene_list(&launch.scenes_dir);
     let chosen = launch.scene.as_ref().map(|path| {
         let same = |e: &scenes::SceneEntry| {
@@ -152,19 +165,59 @@ pub fn launch_app(launch: &Launch, color: bool) -> App {
     if let Some(spp) = launch.spp {
         app.target.spp = spp.max(1);
     }
-    if let Some(n) = launch.chapter {
+    let remembered_scene = last.and_then(|l| {
+        let found = app.scenes.iter().position(|e| e.source == l.scene);
+        found.or_else(|| {
+            let path = std::path::Path::new(&l.scene);
+            (path.extension().is_some_and(|e| e == "toml") && path.is_file()).then(|| {
+                app.scenes.push(scenes::SceneEntry::load(path));
+                app.scenes.len() - 1
+            })
+        })
+    });
+    if let Some(n) = launch.chapter.or(last.map(|l| l.chapter)) {
         app = update(app, Msg::ChapterNumber(n));
     }
-    if let Some(i) = chosen {
+    if let Some(i) = chosen.or(remembered_scene.filter(|_| launch.scene.is_none())) {
         app.select_scene(i);
+    }
+    if let (Some(l), None) = (last, launch.chapter) {
+        let views = app.current_chapter().map(|c| c.info().views).unwrap_or(&[]);
+        if let Some(v) = views.iter().position(|v| v.name == l.view) {
+            app.view = v;
+        }
     }
     app
 }
 
 /// Runs the UI until the user quits.
 pub fn run(launch: &Launch) -> std::io::Result<()> {
+    let mut warnings = Vec::new();
+    let last = match launch.remember.as_deref().map(last::load) {
+        Some(Ok(l)) => l,
+        Some(Err(e)) => {
+            warnings.push(format!("warning: ignored {e}"));
+            None
+        }
+        None => None,
+    };
+    let app = launch_app_with(launch, color_allowed(), last.as_ref());
+    let result = run_app(launch, app);
+    // The terminal is restored by now: warnings can be read.
+    if let (Ok(Some(now)), Some(file)) = (&result, &launch.remember) {
+        if let Err(e) = last::store(file, now) {
+            warnings.push(format!("warning: could not remember the last view: {e}"));
+        }
+    }
+    for w in warnings {
+        eprintln!("{w}");
+    }
+    result.map(|_| ())
+}
+
+/// Runs the UI on `app` until the user quits; what it showed last.
+fn run_app(launch: &Launch, mut app: App) -> std::io::Result<Option<last::Last>> {
     install_panic_hook();
-    let mut app = launch_app(launch, color_allowed());
     if !launch.halfblocks {
         let font = graphics::font_size();
         app.graphics = graphics::detect(&|k| std::env::var(k).ok(), font);
@@ -189,8 +242,11 @@ pub fn run(launch: &Launch) -> std::io::Result<()> {
 fn event_loop(
     terminal: &mut Terminal<CrosstermBackend<Stdout>>,
     mut app: App,
-) -> std::io::Result<()> {
+) -> std::io::Result<Option<last::Last>> {
     let worker = Worker::spawn();
+    let size = terminal.size()?;
+    app = update(app, Msg::Resize(size.width, size.height));
+    let mut ticked = Instant::now();
     // Student mode's watcher, on the chapter `app.student` names; dropped
     // (its build or render stopped) on the way out.
     let mut student: Option<student::Watcher> = None;
@@ -271,7 +327,14 @@ fn event_loop(
             }
         }
         if app.quit {
-            return Ok(());
+            return Ok(last::of(&app));
+        }
+        // Old messages clear (the message line then shows the mode's keys).
+        let elapsed = ticked.elapsed();
+        ticked = Instant::now();
+        if !app.message.is_empty() {
+            app = update(app, Msg::Tick(elapsed));
+            dirty |= app.message.is_empty();
         }
         let since = last_draw.map_or(FRAME, |t| t.elapsed());
         if dirty && since >= FRAME {
@@ -316,8 +379,30 @@ fn event_loop(
                     );
                     dirty = true;
                 }
-                Event::Resize(..) => {
+                Event::Mouse(m)
+                    if matches!(
+                        m.kind,
+                        MouseEventKind::ScrollUp | MouseEventKind::ScrollDown
+                    ) =>
+                {
+                    let lines = if m.kind == MouseEventKind::ScrollUp {
+                        -3
+                    } else {
+                        3
+                    };
+                    app = update(
+                        app,
+                        Msg::Wheel {
+                            column: m.column,
+                            row: m.row,
+                            lines,
+                        },
+                    );
+                    dirty = true;
+                }
+                Event::Resize(width, height) => {
                     terminal.autoresize()?;
+                    app = update(app, Msg::Resize(width, height));
                     dirty = true;
                 }
                 _ => {}

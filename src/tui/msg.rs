@@ -90,6 +90,47 @@ pub enum Msg {
     WarpReseed,
     /// Quit.
     Quit,
+    /// Esc: close what is open (the help, the path table, inspect mode,
+    /// the grader's images, student mode), the innermost first; never
+    /// quits.
+    Close,
+    /// Scroll the path table, or else the inspect panel, by this many
+    /// lines (negative: up).
+    Scroll(i32),
+    /// The mouse wheel at terminal cell (`column`, `row`): scrolls the
+    /// panel or table under it by `lines`.
+    Wheel {
+        /// Cell column.
+        column: u16,
+        /// Cell row.
+        row: u16,
+        /// Lines to scroll (negative: up).
+        lines: i32,
+    },
+    /// The terminal's size in cells (at the start and on every resize).
+    Resize(u16, u16),
+    /// Time passed since the last tick: an old message clears
+    /// ([`MESSAGE_TTL`](super::app::MESSAGE_TTL)).
+    Tick(std::time::Duration),
     /// A report from the render worker.
     Progress(Progress),
+}
+
+impl Msg {
+    /// Whether the user did this (a key, a click, the wheel): such a
+    /// message clears the message line before it acts. Reports from the
+    /// worker, the save, the grader and the clock do not.
+    pub fn is_action(&self) -> bool {
+        !matches!(
+            self,
+            Msg::Progress(_)
+                | Msg::Saved(_)
+                | Msg::GradeLoaded(_)
+                | Msg::Student(..)
+                | Msg::Traced(_)
+                | Msg::Story(..)
+                | Msg::Resize(..)
+                | Msg::Tick(_)
+        )
+    }
 }

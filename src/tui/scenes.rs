@@ -64,6 +64,18 @@ impl SceneEntry {
         }
     }
 
+    /// The name a chapter knows the scene by: the file stem, or the
+    /// built-in scene's own name (`cornell-box`).
+    pub fn stem(&self) -> &str {
+        match (&self.pending, &self.scene) {
+            (None, Ok(scene)) if self.source.starts_with("<built-in>") => &scene.name,
+            _ => Path::new(&self.source)
+                .file_stem()
+                .and_then(|s| s.to_str())
+                .unwrap_or(&self.name),
+        }
+    }
+
     /// Reads the scene file if it has not been read yet.
     pub fn ensure_loaded(&mut self) {
         if let Some(path) = self.pending.take() {

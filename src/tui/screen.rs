@@ -13,21 +13,58 @@ pub fn sidebar_width(total: u16) -> u16 {
     (total / 3).clamp(16, 34).min(total)
 }
 
+/// Width of the left column while inspecting: the pixel panel fills it,
+/// so it gets a little more of the screen.
+pub fn panel_width(total: u16) -> u16 {
+    (total * 2 / 5).clamp(16, 44).min(total)
+}
+
+/// The smallest terminal the UI draws into (columns, rows); below it a
+/// notice says how big the terminal must be.
+pub const MIN_SIZE: (u16, u16) = (60, 16);
+
+/// A path table narrower than this covers the picture instead of sitting
+/// beside it.
+pub const TABLE_BESIDE_MIN: u16 = 96;
+
 /// Where everything goes on a screen of `area`.
 pub struct Areas {
     /// The left column.
     pub side: Rect,
-    /// The preview's box.
+    /// The preview's box (empty while the path table covers it).
     pub preview: Rect,
-    /// The traced path's table, right of the preview, when there is one.
+    /// The traced path's table, beside the preview or over it, when there
+    /// is one.
     pub table: Option<Rect>,
+    /// The inspect panel (the whole left column while inspecting).
+    pub panel: Option<Rect>,
     /// Status line, gauge and message line.
     pub lines: [Rect; 3],
+    /// Whether the screen is below [`MIN_SIZE`] (then only a notice is
+    /// drawn, and every other area is empty).
+    pub too_small: bool,
 }
 
-/// The layout of a screen of `area`: the same for drawing and for mapping
-/// a mouse click to a pixel.
+/// The layout of a screen of `area`: the same for drawing, for mapping a
+/// mouse click to a pixel and for scrolling.
+///
+/// While inspecting, the pixel panel takes the whole left column (the
+/// chapter and scene lists fold away: the arrow keys move the cursor then,
+/// and the status line and title still name chapter and scene). The path
+/// table sits beside the picture on wide screens and over it on narrow
+/// ones (Esc closes it).
 pub fn areas(app: &App, area: Rect) -> Areas {
+    if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
+        let empty = Rect::new(area.x, area.y, 0, 0);
+        return Areas {
+            side: empty,
+            preview: empty,
+            table: None,
+            panel: None,
+            lines: [empty; 3],
+            too_small: true,
+        };
+    }
     let [main, status, gauge, message] = Layout::vertical([
         Constraint::Min(3),
         Constraint::Length(1),
@@ -35,23 +72,35 @@ pub fn areas(app: &App, area: Rect) -> Areas {
         Constraint::Length(1),
     ])
     .areas(area);
-    let [side, right] = Layout::horizontal([
-        Constraint::Length(sidebar_width(area.width)),
-        Constraint::Min(1),
-    ])
-    .areas(main);
-    let (preview, table) = if app.trace.is_some() && right.width >= 40 {
-        let w = (right.width / 2).max(36).min(right.width - 4);
-        let [p, t] = Layout::horizontal([Constraint::Min(1), Constraint::Length(w)]).areas(right);
-        (p, Some(t))
+    let inspecting = app.inspect.is_some();
+    // A path table over the picture gets the room the wider panel would
+    // take.
+    let covered = app.trace.is_some()
+        && area.width.saturating_sub(panel_width(area.width)) < TABLE_BESIDE_MIN;
+    let width = if inspecting && !covered {
+        panel_width(area.width)
     } else {
-        (right, None)
+        sidebar_width(area.width)
+    };
+    let [side, right] =
+        Layout::horizontal([Constraint::Length(width), Constraint::Min(1)]).areas(main);
+    let (preview, table) = match &app.trace {
+        Some(_) if right.width >= TABLE_BESIDE_MIN => {
+            let w = right.width / 2;
+            let [p, t] =
+                Layout::horizontal([Constraint::Min(1), Constraint::Length(w)]).areas(right);
+            (p, Some(t))
+        }
+        Some(_) => (Rect::new(right.x, right.y, 0, 0), Some(right)),
+        None => (right, None),
     };
     Areas {
         side,
         preview,
         table,
+        panel: inspecting.then_some(side),
         lines: [status, gauge, message],
+        too_small: false,
     }
 }
 
@@ -60,7 +109,11 @@ pub fn areas(app: &App, area: Rect) -> Areas {
 pub fn pixel_at(app: &App, area: Rect, column: u16, row: u16) -> Option<(u32, u32)> {
     let film = app.snapshot.as_ref()?.views.first()?;
     let (w, h) = (film.width, film.height);
-    let inner = Block::bordered().inner(areas(app, area).preview);
+    let preview = areas(app, area).preview;
+    if preview.width < 3 || preview.height < 3 {
+        return None;
+    }
+    let inner = Block::bordered().inner(preview);
     let r = match (&app.picker, app.color) {
         (Some(p), true) => super::inspect::graphics_rect(inner, w, h, p.font_size()),
         _ => fit(inner, w, h),

@@ -1,5 +1,5 @@
-//! [`update`], a pure function from (state, message) to the next state,
-//! student mode's part of it included, and [`save`]. `update` touches
+//! [`update`], a pure function from (state, message) to the next state (its
+//! student-mode part is in [`student_update`](super::student_update)), and [`save`]. `update` touches
 //! neither the terminal, the clock nor the disk: the event loop turns keys
 //! and worker reports into messages and carries out the effects `update`
 //! asks for (start a render when the generation changes, save when
@@ -10,18 +10,34 @@
 use std::path::PathBuf;
 
 use super::app::*;
-use super::student::{StudentEvent, StudentMode};
+use super::student_update::{student_event, student_follows_chapter, toggle_student};
 use super::worker::{Progress, Purpose};
-use crate::grading::live::{capstone, LiveError};
 
 /// The next state of the UI after `msg`.
 pub fn update(mut app: App, msg: Msg) -> App {
+    let before = app.message.clone();
+    // The next action clears a message (it may set its own).
+    let action = msg.is_action();
+    if action {
+        app.message.clear();
+    }
+    let mut app = step(app, msg);
+    // A new message, or the same one said again, starts its time anew.
+    if app.message != before || (action && !app.message.is_empty()) {
+        app.message_age = std::time::Duration::ZERO;
+    }
+    app
+}
+
+fn step(mut app: App, msg: Msg) -> App {
     // Any key but `?` closes the help overlay first.
     if app.help
         && !matches!(
             msg,
             Msg::ToggleHelp
                 | Msg::Quit
+                | Msg::Tick(_)
+                | Msg::Resize(..)
                 | Msg::Progress(_)
                 | Msg::Saved(_)
                 | Msg::GradeLoaded(_)
@@ -128,6 +144,10 @@ pub fn update(mut app: App, msg: Msg) -> App {
                 _ => None,
             };
             app.trace = None;
+            app.panel_scroll = 0;
+            if app.inspect.is_none() && size.is_none() {
+                app.message = "nothing rendered yet: i inspects a pixel of the picture".into();
+            }
         }
         Msg::CursorMove(dx, dy) => {
             let size = app
@@ -176,6 +196,7 @@ pub fn update(mut app: App, msg: Msg) -> App {
                         t.sample, t.pixel.0, t.pixel.1
                     );
                     app.trace = Some(t);
+                    app.table_scroll = 0;
                 }
                 Ok(_) => {}
                 Err(e) => app.message = format!("cannot trace: {e}"),
@@ -261,9 +282,41 @@ pub fn update(mut app: App, msg: Msg) -> App {
             }
         }
         Msg::Quit => app.quit = true,
+        Msg::Close => close(&mut app),
+        Msg::Scroll(lines) => scroll(&mut app, lines),
+        Msg::Wheel { column, row, lines } => {
+            let a = super::screen::areas(&app, app.screen);
+            let inside = |r: ratatui::layout::Rect| {
+                column >= r.x && column < r.x + r.width && row >= r.y && row < r.y + r.height
+            };
+            if a.table.is_some_and(inside) {
+                app.table_scroll = scrolled(app.table_scroll, lines, table_room(&app));
+            } else if a.panel.is_some_and(inside) {
+                app.panel_scroll = scrolled(app.panel_scroll, lines, panel_room(&app));
+            }
+        }
+        Msg::Resize(width, height) => {
+            app.screen = ratatui::layout::Rect::new(0, 0, width, height);
+            // The same scroll may now be past the end.
+            app.panel_scroll = app.panel_scroll.min(panel_room(&app));
+            app.table_scroll = app.table_scroll.min(table_room(&app));
+        }
+        Msg::Tick(elapsed) => {
+            if !app.message.is_empty() {
+                app.message_age += elapsed;
+                if app.message_age >= MESSAGE_TTL {
+                    app.message.clear();
+                }
+            }
+        }
         Msg::Progress(p) if p.generation() == app.generation => match p {
             Progress::State(s) => app.snapshot = Some(*s),
             Progress::Failed { message, .. } => app.failure = Some(message),
+            Progress::Refused { message, .. } => {
+                // Known from now on: the scene list marks it, and this
+                // chapter is not opened on it again while others work.
+                app.refusals.insert((app.chapter, app.scene), message);
+            }
             Progress::Inspected {
                 purpose: Purpose::Trace,
                 result,
@@ -286,79 +339,56 @@ pub fn update(mut app: App, msg: Msg) -> App {
     app
 }
 
-/// `x`: student mode on for the current chapter (when it has a capstone),
-/// or off.
-fn toggle_student(app: &mut App) {
-    if app.student.take().is_some() {
+/// Esc: closes what is open, the innermost first (the help is closed
+/// before any message gets here): the path table, inspect mode, the
+/// grader's images, student mode. It never quits.
+fn close(app: &mut App) {
+    if app.trace.is_some() {
+        app.trace = None;
+        app.table_scroll = 0;
+    } else if app.inspect.is_some() {
+        app.inspect = None;
+        app.panel_scroll = 0;
+    } else if app.grading.take().is_some() || app.student.take().is_some() {
+        // (The two are never on together.)
         app.compare = Compare::Render;
         app.message = "back to the render".into();
-        return;
-    }
-    start_student(app);
-}
-
-/// Student mode for the current chapter, or a message why there is none.
-fn start_student(app: &mut App) {
-    let n = app.current_chapter().map_or(0, |c| c.info().number);
-    let Some(ex) = capstone(n) else {
-        app.student = None;
-        app.message = format!("chapter {n} has no capstone for student mode");
-        return;
-    };
-    app.grading = None;
-    app.compare = Compare::Render;
-    app.message = format!(
-        "student mode: {} from {}, re-rendered when you save (r: student → reference → difference → relative, x: back)",
-        ex.id(),
-        ex.file
-    );
-    app.student = Some(StudentMode {
-        chapter: n,
-        id: ex.id(),
-        status: "starting…".into(),
-        details: String::new(),
-        render: None,
-    });
-}
-
-/// A report from the watcher of chapter `chapter`; one about another
-/// chapter (the student has moved on) is dropped.
-fn student_event(app: &mut App, chapter: u32, event: StudentEvent) {
-    let Some(s) = app.student.as_mut().filter(|s| s.chapter == chapter) else {
-        return;
-    };
-    match event {
-        StudentEvent::Building => s.status = "building…".into(),
-        StudentEvent::Rendering => s.status = "rendering…".into(),
-        StudentEvent::Done(Ok(render)) => {
-            s.status = render.status();
-            app.message = format!("{}: {}", render.id, render.detail);
-            s.render = Some(render);
-        }
-        StudentEvent::Done(Err(e)) => {
-            s.status = e.status();
-            s.details = match &e {
-                LiveError::DoesNotCompile { message, .. } => {
-                    app.message = message.lines().take(2).collect::<Vec<_>>().join(" ");
-                    message.lines().take(24).collect::<Vec<_>>().join("\n")
-                }
-                LiveError::Panicked { message, .. } | LiveError::Build(message) => message.clone(),
-                LiveError::NotStarted { file, .. } => {
-                    format!("replace the todo!() in {file}: its comments say what to write")
-                }
-                _ => String::new(),
-            };
-            s.render = None;
-            app.compare = Compare::Render;
-        }
+    } else {
+        app.message = "nothing to close: q quits".into();
     }
 }
 
-/// Student mode follows the selected chapter.
-fn student_follows_chapter(app: &mut App) {
-    let n = app.current_chapter().map_or(0, |c| c.info().number);
-    if app.student.as_ref().is_some_and(|s| s.chapter != n) {
-        start_student(app);
+/// `u`/`d`, Page Up/Down: scrolls the path table when it is shown, else
+/// the inspect panel.
+fn scroll(app: &mut App, lines: i32) {
+    let a = super::screen::areas(app, app.screen);
+    if a.table.is_some() {
+        app.table_scroll = scrolled(app.table_scroll, lines, table_room(app));
+    } else if a.panel.is_some() {
+        app.panel_scroll = scrolled(app.panel_scroll, lines, panel_room(app));
+    } else {
+        app.message = "nothing to scroll: i opens the pixel panel".into();
+    }
+}
+
+fn scrolled(at: u16, lines: i32, max: u16) -> u16 {
+    (at as i32 + lines).clamp(0, max as i32) as u16
+}
+
+/// How far the inspect panel can scroll at the current screen size.
+fn panel_room(app: &App) -> u16 {
+    let a = super::screen::areas(app, app.screen);
+    a.panel.map_or(0, |r| {
+        super::inspect::overflow(&super::inspect::inspect_lines(app), r)
+    })
+}
+
+/// How far the path table can scroll at the current screen size.
+fn table_room(app: &App) -> u16 {
+    let a = super::screen::areas(app, app.screen);
+    match (a.table, &app.trace) {
+        (Some(r), Some(t)) => super::inspect::overflow(&t.lines, r),
+        _ => 0,
     }
 }
 
@@ -376,9 +406,22 @@ pub fn target_text(t: &super::worker::Target) -> String {
 
 /// Writes what the preview shows (with exposure) as PNG and the same film
 /// without exposure as linear EXR into `app.out_dir`; returns the paths.
+/// Never overwrites: the name says what is saved ([`App::save_stem`]), and
+/// when a file of that name is already there (the same state saved
+/// before) the new one gets the first free suffix `-2`, `-3`, ….
 pub fn save(app: &App) -> Result<Vec<PathBuf>, String> {
     let film = app.displayed().ok_or("nothing to save yet")?;
-    let stem = app.save_stem();
+    let base = app.save_stem();
+    let taken = |stem: &str| {
+        ["png", "exr"]
+            .iter()
+            .any(|e| app.out_dir.join(format!("{stem}.{e}")).exists())
+    };
+    let stem = std::iter::once(base.clone())
+        .chain((2..).map(|n| format!("{base}-{n}")))
+        .find(|s| !taken(s))
+        .expect("some suffix is free");
+    std::fs::create_dir_all(&app.out_dir).map_err(|e| format!("{}: {e}", app.out_dir.display()))?;
     let png = app.out_dir.join(format!("{stem}.png"));
     let exr = app.out_dir.join(format!("{stem}.exr"));
     expose(&film, app.display_exposure())

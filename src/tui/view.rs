@@ -25,6 +25,10 @@ use super::app::{expose, App, Focus};
 use super::gauge::draw_gauge;
 pub use super::gauge::{gauge_state, short_number};
 use super::keys::KEYS;
+pub use super::labels::{
+    fit_parts, format_rate, key_hints, preview_title_parts, status_line, status_line_fit,
+    status_parts,
+};
 use super::picture::{fit, Picture};
 pub use super::screen::{areas, pixel_at, sidebar_width, Areas};
 use crate::core::film::Film;
@@ -40,10 +44,15 @@ fn fg(app: &App, color: Color) -> Style {
     }
 }
 
+/// The focused list's box: bold, its title reversed (readable on light
+/// and dark backgrounds alike, where a yellow or grey border is not).
 fn block<'a>(app: &App, title: &'a str, focused: bool) -> Block<'a> {
     let b = Block::bordered().title(title);
-    if focused {
-        b.border_style(fg(app, Color::Yellow).add_modifier(Modifier::BOLD))
+    if focused && app.color {
+        b.border_style(Style::default().add_modifier(Modifier::BOLD))
+            .title_style(Style::default().add_modifier(Modifier::REVERSED))
+    } else if focused {
+        b.border_style(Style::default().add_modifier(Modifier::BOLD))
     } else {
         b
     }
@@ -56,27 +65,51 @@ pub fn view(app: &App, frame: &mut Frame) {
         side,
         preview,
         table,
+        panel,
         lines: [status, gauge, message],
+        too_small,
     } = areas(app, area);
-    draw_sidebar(app, frame, side);
-    draw_preview(app, frame, preview);
+    if too_small {
+        draw_too_small(frame, area);
+        return;
+    }
+    match panel {
+        Some(p) => super::inspect::draw_panel(app, frame, p),
+        None => draw_sidebar(app, frame, side),
+    }
+    if preview.width > 0 {
+        draw_preview(app, frame, preview);
+    }
     if let Some(t) = table {
         super::inspect::draw_table(app, frame, t);
     }
-    frame.render_widget(Paragraph::new(status_line(app)), status);
+    frame.render_widget(Paragraph::new(status_line_fit(app, status.width)), status);
     draw_gauge(app, frame, gauge);
-    let text = if app.message.is_empty() {
-        "? help · q quit".to_string()
+    // The message in the terminal's own colours (grey on a light
+    // background is unreadable), else the keys of the current mode.
+    let line = if app.message.is_empty() {
+        Line::from(key_hints(app))
     } else {
-        escape(&app.message).into_owned()
+        Line::from(escape(&app.message).into_owned())
+            .style(Style::default().add_modifier(Modifier::BOLD))
     };
-    frame.render_widget(Paragraph::new(text).style(fg(app, Color::Gray)), message);
+    frame.render_widget(Paragraph::new(line), message);
     if let Some(w) = &app.warp {
         super::warp::draw(w, app.color, frame, area);
     }
     if app.help {
-        draw_help(app, frame, area);
+        draw_help(frame, area);
     }
+}
+
+/// The notice on a screen below [`MIN_SIZE`](super::screen::MIN_SIZE).
+fn draw_too_small(frame: &mut Frame, area: Rect) {
+    let (w, h) = super::screen::MIN_SIZE;
+    let text = format!(
+        "raystep needs a terminal of at least {w}x{h}; this one is {}x{}. Enlarge it, or q quits.",
+        area.width, area.height
+    );
+    frame.render_widget(Paragraph::new(text).wrap(Wrap { trim: true }), area);
 }
 
 fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
@@ -92,11 +125,17 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         .enumerate()
         .map(|(i, _)| 1 + u16::from(chapter.is_some() && app.scene_problem(i).is_some()))
         .sum();
+    // Chapters first, then the controls, and the scene list gets what is
+    // left (at least three rows; it scrolls to the selection).
+    let total = area.height;
+    let ch_h = (app.chapters.len() as u16 + 2).min(total);
+    let ctrl_h = (controls.len() as u16 + 2).min(total.saturating_sub(ch_h + 3));
+    let sc_h = (scene_rows + 2).min(total.saturating_sub(ch_h + ctrl_h));
     let [chapters, scenes, ctrl, rest] = Layout::vertical([
-        Constraint::Length(app.chapters.len() as u16 + 2),
-        Constraint::Length(scene_rows + 2),
-        Constraint::Length(controls.len() as u16 + 2),
-        Constraint::Min(0),
+        Constraint::Length(ch_h),
+        Constraint::Length(sc_h),
+        Constraint::Length(ctrl_h),
+        Constraint::Fill(1),
     ])
     .areas(area);
 
@@ -120,10 +159,9 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         .map(|(i, s)| match chapter.and_then(|_| app.scene_problem(i)) {
             None => ListItem::new(escape(&s.name).into_owned()),
             Some(why) => ListItem::new(vec![
-                Line::from(format!("✗ {}", escape(&s.name))),
+                Line::from(format!("✗ {}", escape(&s.name))).style(fg(app, Color::Red)),
                 Line::from(format!("  {}", escape(&why.to_string()))),
-            ])
-            .style(fg(app, Color::DarkGray)),
+            ]),
         })
         .collect();
     let list = List::new(items)
@@ -137,9 +175,7 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         Paragraph::new(controls).block(Block::bordered().title("controls")),
         ctrl,
     );
-    if app.inspect.is_some() && rest.height >= 3 {
-        super::inspect::draw_panel(app, frame, rest);
-    } else if has_chart && rest.height >= 6 {
+    if has_chart && rest.height >= 6 {
         draw_chart(app, frame, rest);
     }
 }
@@ -157,16 +193,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
     }
     lines.push(Line::from(format!("exposure {:+} stops", app.exposure)));
     if app.shows_bounces() {
-        let short = match app.bounce {
-            None => "all".to_string(),
-            Some(_) => app
-                .bounce_label()
-                .split(':')
-                .next()
-                .unwrap_or("")
-                .to_string(),
-        };
-        lines.push(Line::from(format!("bounces {short}")));
+        lines.push(Line::from(format!("bounces {}", app.bounce_short())));
         if let Some(share) = app.bounce_share() {
             lines.push(Line::from(format!(
                 "  {:.1}% of the total light",
@@ -204,12 +231,14 @@ fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
         Dataset::default()
             .marker(Marker::Braille)
             .graph_type(GraphType::Line)
-            .style(fg(app, Color::DarkGray))
+            .style(Style::default().add_modifier(Modifier::DIM))
             .data(&guide),
         Dataset::default()
             .marker(Marker::Braille)
             .graph_type(GraphType::Line)
-            .style(fg(app, Color::Cyan))
+            // The terminal's own colour: cyan or yellow fade on a light
+            // background, blue on a dark one.
+            .style(Style::default())
             .data(&data),
     ])
     .block(Block::bordered().title("error vs time, log-log"))
@@ -267,24 +296,7 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
     let title = match (&app.grading, app.current_chapter()) {
         (Some(g), _) => format!("grade · {} · {}", g.stem, app.compare_name()),
         (None, _) if app.student.is_some() => student_title(app),
-        (None, Some(c)) => {
-            let mut t = format!(
-                "ch{} {} · {}",
-                c.info().number,
-                c.info().slug,
-                app.view_name()
-            );
-            if app.picker.is_some() {
-                t += &format!(" · {}", app.graphics.name());
-            }
-            if app.view == 0 && app.shows_bounces() && app.bounce.is_some() {
-                t += &format!(" · {}", app.bounce_label());
-                if let Some(share) = app.bounce_share() {
-                    t += &format!(" ({:.1}% of the light)", 100.0 * share);
-                }
-            }
-            t
-        }
+        (None, Some(_)) => fit_parts(&preview_title_parts(app), area.width.saturating_sub(4)),
         (None, None) => "preview".into(),
     };
     let block = Block::bordered().title(title);
@@ -302,7 +314,7 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
         }
     } else if let Some(s) = &app.student {
         let color = match s.status.as_str() {
-            "starting…" | "building…" | "rendering…" => Color::Gray,
+            "starting…" | "building…" | "rendering…" => Color::Reset,
             _ => Color::Red,
         };
         let text = format!("{}\n\n{}", s.status, s.details);
@@ -318,7 +330,7 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
     } else if let Some(film) = app.displayed_ref() {
         draw_film(app, frame, &film, inner);
     } else {
-        frame.render_widget(note("rendering…".into(), Color::Gray), inner);
+        frame.render_widget(note("rendering…".into(), Color::Reset), inner);
     }
 }
 
@@ -386,82 +398,7 @@ fn draw_film(app: &App, frame: &mut Frame, film: &Film, area: Rect) {
     }
 }
 
-/// A rate in the status line: 1234567 → "1.23M".
-pub fn format_rate(rate: f64) -> String {
-    let (value, unit) = if rate >= 1e9 {
-        (rate / 1e9, "G")
-    } else if rate >= 1e6 {
-        (rate / 1e6, "M")
-    } else if rate >= 1e3 {
-        (rate / 1e3, "k")
-    } else {
-        (rate, "")
-    };
-    let digits = if value >= 100.0 {
-        0
-    } else if value >= 10.0 {
-        1
-    } else {
-        2
-    };
-    format!("{value:.digits$}{unit}")
-}
-
-/// The status line: chapter, scene, view, resolution, passes, elapsed time,
-/// rays per second when the stage counts rays, error against the reference
-/// when known.
-pub fn status_line(app: &App) -> Line<'static> {
-    let mut parts: Vec<String> = Vec::new();
-    if let Some(c) = app.current_chapter() {
-        parts.push(format!("ch{} {}", c.info().number, c.info().slug));
-    }
-    if let Some(s) = app.current_scene() {
-        // The scene's own name ("(built-in)" is in the scene list).
-        parts.push(match &s.scene {
-            Ok(scene) => escape(&scene.name).into_owned(),
-            Err(_) => escape(&s.name).into_owned(),
-        });
-    }
-    parts.push(app.view_name().to_string());
-    if let Some(g) = &app.grading {
-        let f = &g.student;
-        parts.push(format!("grade {}", g.stem));
-        parts.push(format!("{}x{}", f.width, f.height));
-        parts.push(app.compare_name().to_string());
-    } else if let Some(s) = &app.student {
-        parts.push(format!("student {}", s.id));
-        if let Some(r) = &s.render {
-            parts.push(format!("{}x{}", r.student.width, r.student.height));
-            parts.push(app.compare_name().to_string());
-        }
-        parts.push(escape(&s.status).into_owned());
-    } else if let Some(snap) = &app.snapshot {
-        if let Some(f) = snap.views.first() {
-            parts.push(format!("{}x{}", f.width, f.height));
-        }
-        match &snap.target {
-            Some(t) => parts.push(format!("spp {}/{}", snap.samples, t.spp)),
-            None => parts.push(format!("pass {}/{}", snap.progress.0, snap.progress.1)),
-        }
-        parts.push(format_seconds(snap.elapsed.as_secs_f64()));
-        if let Some(rate) = snap.rays_per_second() {
-            parts.push(format!("{} rays/s", format_rate(rate)));
-        }
-        if let Some(n) = snap.noise {
-            parts.push(format!("noise {}", short_number(n)));
-        }
-        if let Some(e) = snap.rmse {
-            parts.push(format!("rmse {}", short_number(e)));
-        }
-    } else if app.failure.is_some() {
-        parts.push("failed".into());
-    } else if app.problem().is_none() {
-        parts.push("rendering…".into());
-    }
-    Line::from(Span::raw(parts.join(" │ ")))
-}
-
-fn draw_help(app: &App, frame: &mut Frame, area: Rect) {
+fn draw_help(frame: &mut Frame, area: Rect) {
     let w = 78.min(area.width);
     let h = (KEYS.len() as u16 + 2).min(area.height);
     let r = Rect::new(
@@ -470,18 +407,37 @@ fn draw_help(app: &App, frame: &mut Frame, area: Rect) {
         w,
         h,
     );
-    let lines: Vec<Line> = KEYS
+    // Where the terminal is too short for every key, the last row says
+    // so (the book and a taller terminal have them all).
+    let rows = h.saturating_sub(2) as usize;
+    let hidden = KEYS.len().saturating_sub(rows);
+    let shown = if hidden > 0 {
+        rows.saturating_sub(1)
+    } else {
+        rows
+    };
+    let mut lines: Vec<Line> = KEYS[..shown]
         .iter()
         .map(|(k, what)| {
             Line::from(vec![
-                Span::styled(format!("{k:>15}  "), fg(app, Color::Yellow)),
+                Span::styled(
+                    format!("{k:>15}  "),
+                    Style::default().add_modifier(Modifier::BOLD),
+                ),
                 Span::raw(*what),
             ])
         })
         .collect();
+    if hidden > 0 {
+        lines.push(Line::from(format!(
+            "… {} more keys: a terminal {} rows tall shows them all",
+            KEYS.len() - shown,
+            KEYS.len() + 2
+        )));
+    }
     frame.render_widget(Clear, r);
     frame.render_widget(
-        Paragraph::new(lines).block(Block::bordered().title("keys (any key closes)")),
+        Paragraph::new(lines).block(Block::bordered().title("keys (Esc or any key closes)")),
         r,
     );
 }

@@ -21,7 +21,6 @@ use std::sync::Arc;
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
-use crate::core::film::Film;
 use crate::core::stage::{Chapter, Inspection, Render, Settings};
 use crate::scene::Scene;
 
@@ -49,95 +48,12 @@ pub struct Job {
     pub target: Option<Target>,
 }
 
-/// Everything the UI shows of a render after one pass.
-#[derive(Clone, Debug)]
-pub struct RenderState {
-    /// The generation of the job this comes from.
-    pub generation: u64,
-    /// Every view of the chapter, in the order of [`ChapterInfo::views`](crate::core::stage::ChapterInfo::views).
-    pub views: Vec<Film>,
-    /// Per-bounce layers ([`Snapshot::layers`](crate::core::stage::Snapshot::layers)).
-    pub layers: Option<Vec<Film>>,
-    /// The reference ([`Snapshot::reference`](crate::core::stage::Snapshot::reference)).
-    pub reference: Option<Film>,
-    /// Error against time ([`Snapshot::error_series`](crate::core::stage::Snapshot::error_series)).
-    pub error_series: Vec<(f64, f64)>,
-    /// RMSE of view 0 against the reference, when there is one: the last
-    /// point of the error series where the stage keeps one (at the
-    /// reference's resolution), else pixel by pixel.
-    pub rmse: Option<f64>,
-    /// (passes done, passes planned).
-    pub progress: (u32, u32),
-    /// Samples per pixel so far ([`Pass::samples`](crate::core::stage::Pass::samples)).
-    pub samples: u32,
-    /// The render's own noise estimate ([`Pass::noise`](crate::core::stage::Pass::noise)).
-    pub noise: Option<f64>,
-    /// The mean value of view 0 over pixels and channels.
-    pub mean: f64,
-    /// The target this render goes to (progressive stages).
-    pub target: Option<Target>,
-    /// Time spent rendering (pauses not counted).
-    pub elapsed: Duration,
-    /// Rays traced so far ([`Pass::rays`](crate::core::stage::Pass::rays); 0 when the stage does not count).
-    pub rays: u64,
-    /// Whether the render is complete.
-    pub done: bool,
-    /// Why it stopped, once done.
-    pub finish: Option<Finish>,
-}
-
-impl RenderState {
-    /// Reads everything the UI needs from `render`.
-    pub fn capture(
-        render: &dyn Render,
-        generation: u64,
-        elapsed: Duration,
-        done: bool,
-    ) -> RenderState {
-        let snap = render.snapshot();
-        let rmse = snap.rmse();
-        let mean = snap.views.first().map_or(0.0, film_mean);
-        let pass = snap.pass;
-        RenderState {
-            generation,
-            layers: snap.layers,
-            error_series: snap.error_series,
-            reference: snap.reference,
-            rmse,
-            views: snap.views,
-            progress: (pass.done, pass.planned),
-            samples: pass.samples,
-            noise: pass.noise.map(|(n, _)| n),
-            mean,
-            target: None,
-            rays: pass.rays,
-            elapsed,
-            done,
-            finish: done.then_some(Finish::Complete),
-        }
-    }
-
-    /// The noise estimate as a fraction of the image's mean value.
-    pub fn relative_noise(&self) -> Option<f64> {
-        self.noise
-            .filter(|_| self.mean > 0.0)
-            .map(|n| n / self.mean)
-    }
-}
+pub use super::state::RenderState;
 
 pub use crate::core::film::film_mean;
 
 /// Name of the worker thread (the panic hook uses it).
 pub const THREAD_NAME: &str = "raystep-render";
-
-impl RenderState {
-    /// Rays per second since the render started, when the stage counts
-    /// rays and some time has passed.
-    pub fn rays_per_second(&self) -> Option<f64> {
-        let secs = self.elapsed.as_secs_f64();
-        (self.rays > 0 && secs > 0.0).then(|| self.rays as f64 / secs)
-    }
-}
 
 /// What the worker reports.
 #[derive(Clone, Debug)]
@@ -153,7 +69,15 @@ pub enum Progress {
         /// The render's answer, or why there is none.
         result: Result<Inspection, String>,
     },
-    /// The render could not start, or a pass panicked.
+    /// The stage refused to start on this scene ([`Chapter::start`]'s
+    /// error): the UI remembers it against the (chapter, scene) pair.
+    Refused {
+        /// The generation of the job.
+        generation: u64,
+        /// Why.
+        message: String,
+    },
+    /// The stage panicked while starting or in a pass.
     Failed {
         /// The generation of the job.
         generation: u64,
@@ -167,9 +91,9 @@ impl Progress {
     pub fn generation(&self) -> u64 {
         match self {
             Progress::State(s) => s.generation,
-            Progress::Inspected { generation, .. } | Progress::Failed { generation, .. } => {
-                *generation
-            }
+            Progress::Inspected { generation, .. }
+            | Progress::Refused { generation, .. }
+            | Progress::Failed { generation, .. } => *generation,
         }
     }
 }
@@ -326,7 +250,10 @@ fn start(job: Job, results: &Sender<Progress>) -> Option<Current> {
             sent: None,
         }),
         Ok(Err(e)) => {
-            let _ = results.send(fail(e.to_string()));
+            let _ = results.send(Progress::Refused {
+                generation: job.generation,
+                message: e.to_string(),
+            });
             None
         }
         Err(p) => {

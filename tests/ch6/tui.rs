@@ -45,7 +45,9 @@ fn the_worker_renders_chapter_6_with_layers_reference_and_error_series() {
                     }
                 }
                 Progress::State(_) | Progress::Inspected { .. } => {}
-                Progress::Failed { message, .. } => panic!("{message}"),
+                Progress::Failed { message, .. } | Progress::Refused { message, .. } => {
+                    panic!("{message}")
+                }
             }
         };
         assert!(snapshots >= 2, "the first pass and the last are shown");

@@ -134,7 +134,9 @@ fn until_done(worker: &Worker, generation: u64) -> Vec<RenderState> {
                 }
             }
             Ok(Progress::State(_) | Progress::Inspected { .. }) => {}
-            Ok(Progress::Failed { message, .. }) => panic!("{message}"),
+            Ok(Progress::Failed { message, .. } | Progress::Refused { message, .. }) => {
+                panic!("{message}")
+            }
             Err(e) => panic!("no snapshot: {e}"),
         }
     }
@@ -391,6 +393,7 @@ fn the_flags_choose_the_chapter_the_scene_and_the_budget() {
         scene: Some(root.join("scenes/cornell-glass.toml")),
         spp: Some(64),
         halfblocks: false,
+        remember: None,
     };
     let app = launch_app(&launch, false);
     let chapter = app.current_chapter().unwrap();

@@ -132,6 +132,13 @@ fn shell(name: &str) -> Option<(Tmux, PathBuf)> {
         TmuxPlan::Fail => panic!("tmux not found under CI (.ci/run installs it)"),
     }
     let dir = common::temp_dir(name);
+    // What the UI remembers between runs goes to this test's own folder,
+    // never the real home (and no test opens where another one left off).
+    let shell = format!(
+        "env PS1='READY$ ' {}={} sh",
+        raystep::tui::last::CONFIG_DIR_ENV,
+        dir.join("config").display()
+    );
     let tmux = Tmux {
         socket: format!("raystep-{name}-{}", std::process::id()),
     };
@@ -146,7 +153,7 @@ fn shell(name: &str) -> Option<(Tmux, PathBuf)> {
         "34",
         "-c",
         dir.to_str().unwrap(),
-        "env PS1='READY$ ' sh",
+        &shell,
     ]);
     assert!(started.status.success(), "{started:?}");
     tmux.wait("the shell", 10, |_, s| s.contains("READY$"));
@@ -214,9 +221,9 @@ fn the_real_binary_in_a_terminal() {
     if chapter.info().bounces {
         tmux.wait("the bounce control", 60, |_, s| s.contains("bounces all"));
         tmux.keys("]");
-        tmux.wait("bounce 0", 10, |_, s| s.contains("up to 0: direct"));
+        tmux.wait("bounce 0", 10, |_, s| s.contains("up to 0 bounces"));
         tmux.keys("m");
-        tmux.wait("exactly 0", 10, |_, s| s.contains("exactly 0: direct"));
+        tmux.wait("exactly 0", 10, |_, s| s.contains("exactly 0 bounces"));
     } else if chapter.info().views.len() > 1 {
         let name = chapter.info().views[1].name;
         tmux.keys("v");
@@ -372,4 +379,71 @@ fn the_half_block_fallback_in_tmux_and_with_the_flag() {
         tmux.key("Enter");
         tmux.wait("a clear screen", 10, |_, s| !s.contains("EXIT=0"));
     }
+}
+
+/// At 80x24, the default terminal: Esc closes the help, the path table and
+/// inspect mode one at a time and, with nothing open, does not quit; the
+/// pixel panel shows the pixel's values and the path table its vertices;
+/// `q` quits.
+#[test]
+fn esc_never_quits_and_the_inspector_has_room_at_80x24() {
+    let Some((tmux, dir)) = shell("tui-e2e-esc") else {
+        return;
+    };
+    tmux.run(&["resize-window", "-t", "t", "-x", "80", "-y", "24"]);
+    let command = format!(
+        "{} --chapter 6 --spp 16 --scenes {} --out {}; echo \"EXIT=$?\"",
+        env!("CARGO_BIN_EXE_raystep"),
+        dir.display(),
+        dir.join("out").display()
+    );
+    tmux.keys(&command);
+    tmux.key("Enter");
+    let up = |t: &Tmux| t.flag("alternate_on") == "1";
+    tmux.wait("chapter 6's first preview", 60, |t, s| {
+        up(t) && s.contains("│ spp ")
+    });
+    // Nothing open: Esc only says how to quit.
+    for _ in 0..3 {
+        tmux.key("Escape");
+    }
+    tmux.wait("the hint after Esc", 10, |t, s| {
+        up(t) && s.contains("nothing to close: q quits")
+    });
+    // The help, then Esc.
+    tmux.keys("?");
+    tmux.wait("the help", 10, |_, s| s.contains("keys (Esc"));
+    tmux.key("Escape");
+    tmux.wait("the help closed", 10, |t, s| {
+        up(t) && !s.contains("keys (Esc")
+    });
+    // The pixel panel, with the pixel's values in view.
+    tmux.keys("i");
+    let panel = tmux.wait("the pixel panel", 20, |_, s| {
+        s.contains("pixel (") && s.contains("image: ") && s.contains("Esc: close")
+    });
+    println!("inspector at 80x24:\n{panel}");
+    // A path, over the picture at this width; Esc closes it and keeps the
+    // panel; Esc again closes the panel; once more changes nothing.
+    tmux.keys("t");
+    let path = tmux.wait("the path table", 30, |_, s| {
+        s.contains("path: sample 0 of pixel") && s.contains("camera ray")
+    });
+    println!("path table at 80x24:\n{path}");
+    tmux.key("Escape");
+    tmux.wait("the table closed", 10, |_, s| {
+        !s.contains("camera ray") && s.contains("image: ")
+    });
+    tmux.key("Escape");
+    tmux.wait("the panel closed", 10, |t, s| {
+        up(t) && !s.contains("image: ")
+    });
+    tmux.key("Escape");
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    let screen = tmux.capture();
+    assert!(up(&tmux) && screen.contains("chapters"), "{screen}");
+    tmux.keys("q");
+    tmux.wait("the shell after quitting", 20, |t, s| {
+        s.contains("EXIT=0") && t.flag("alternate_on") == "0"
+    });
 }

@@ -17,7 +17,7 @@ use raystep::tui::update::update;
 use raystep::tui::worker::{Progress, RenderState};
 
 /// Chapter 6 on the 64x64 Cornell box (the stored reference's size), 2 spp.
-fn rendered() -> App {
+pub(crate) fn rendered() -> App {
     let ch6 = raystep::chapters::all()[5];
     let scene = Scene::builtin().with_resolution(64, 64).unwrap();
     let entry = SceneEntry {
@@ -85,10 +85,13 @@ fn keys_move_the_cursor_while_inspecting_and_the_lists_otherwise() {
     assert_eq!(moved(key(KeyCode::Left, none)), (-1, 0));
     assert_eq!(moved(key(KeyCode::Down, KeyModifiers::SHIFT)), (0, 8));
     assert_eq!(moved(key(KeyCode::Char('H'), KeyModifiers::SHIFT)), (-8, 0));
+    // Esc closes inspect mode (and never quits).
     assert!(matches!(
         msg_for_key(&app, key(KeyCode::Esc, none)),
-        Some(Msg::ToggleInspect)
+        Some(Msg::Close)
     ));
+    let closed = update(app, Msg::Close);
+    assert!(closed.inspect.is_none() && !closed.quit);
 }
 
 #[test]
@@ -126,7 +129,7 @@ fn the_panel_tells_the_pixels_story() {
         .iter()
         .map(|c| c.symbol().to_string())
         .collect();
-    assert!(screen.contains("pixel (i: close)"));
+    assert!(screen.contains("Esc: close"));
     assert!(screen.contains("pixel (32, 32)"));
     assert!(screen.contains('+'));
 }
@@ -143,7 +146,9 @@ fn screen_rows(app: &App, w: u16, h: u16) -> Vec<String> {
 
 #[test]
 fn a_click_on_the_picture_puts_the_cursor_on_that_pixel() {
-    let app = rendered();
+    // Inspecting: the layout the clicks land on (the panel widens the
+    // left column).
+    let app = update(rendered(), Msg::ToggleInspect);
     let (w, h) = (120u16, 40u16);
     let screen = ratatui::layout::Rect::new(0, 0, w, h);
     // Click every cell of the screen: inside the picture the cursor goes
@@ -177,7 +182,7 @@ fn a_click_on_the_picture_puts_the_cursor_on_that_pixel() {
                                 .filter(|(_, c)| *c == '+')
                                 .map(move |(x, _)| (x, y))
                         })
-                        .filter(|&(x, _)| x >= 34)
+                        .filter(|&(x, _)| x >= raystep::tui::screen::panel_width(w) as usize)
                         .collect();
                     assert_eq!(at.len(), 1, "{at:?}");
                     let (cx, cy) = at[0];
@@ -241,7 +246,7 @@ fn t_traces_a_path_and_the_panel_shows_its_table() {
 
 /// What the current job's render answers for sample `sample` of `pixel`
 /// after its first pass.
-fn inspected(app: &App, pixel: (u32, u32), sample: u32) -> Inspection {
+pub(crate) fn inspected(app: &App, pixel: (u32, u32), sample: u32) -> Inspection {
     let job = app.job().unwrap();
     let settings = Settings {
         variant: Some(job.variant),

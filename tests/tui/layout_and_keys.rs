@@ -31,12 +31,12 @@ use raystep::tui::worker::{Job, Progress, RenderState, Worker};
 
 /// A stage with everything the UI can show: bounce layers, a reference, an
 /// error series, two views and two variants. Layer k is a flat colour.
-struct Fake {
+pub(crate) struct Fake {
     bounces: bool,
 }
 
-static FAKE: Fake = Fake { bounces: true };
-static FAKE_PLAIN: Fake = Fake { bounces: false };
+pub(crate) static FAKE: Fake = Fake { bounces: true };
+pub(crate) static FAKE_PLAIN: Fake = Fake { bounces: false };
 
 const W: u32 = 8;
 const H: u32 = 4;
@@ -184,7 +184,7 @@ fn renamed(name: &str) -> SceneEntry {
     }
 }
 
-fn scenes() -> Vec<SceneEntry> {
+pub(crate) fn scenes() -> Vec<SceneEntry> {
     vec![
         SceneEntry::builtin(),
         renamed("no-go"),
@@ -200,7 +200,7 @@ fn scenes() -> Vec<SceneEntry> {
 
 /// A fresh UI on the fake stage with bounces (chapter 6), plus the plain
 /// fake (chapter 2).
-fn app() -> App {
+pub(crate) fn app() -> App {
     let mut app = App::new(vec![&FAKE_PLAIN, &FAKE], scenes(), false);
     app = update(app, Msg::ChapterNumber(6));
     app
@@ -208,7 +208,7 @@ fn app() -> App {
 
 /// Runs the current job to completion synchronously and feeds the last
 /// snapshot to the UI.
-fn rendered(app: App) -> App {
+pub(crate) fn rendered(app: App) -> App {
     let job = app.job().expect("the selection renders");
     let settings = Settings {
         variant: Some(job.variant),
@@ -220,7 +220,7 @@ fn rendered(app: App) -> App {
     update(app, Msg::Progress(Progress::State(Box::new(snap))))
 }
 
-fn send(app: App, msgs: &[Msg]) -> App {
+pub(crate) fn send(app: App, msgs: &[Msg]) -> App {
     msgs.iter().cloned().fold(app, update)
 }
 
@@ -241,21 +241,21 @@ fn bounce_stepping_shows_exactly_k_and_up_to_k_from_the_layers() {
     assert_eq!(app.bounce, Some(0));
     assert_eq!(app.bounce_mode, BounceMode::UpTo);
     assert_eq!(pixel(&app), layer_color(0));
-    assert_eq!(app.bounce_label(), "up to 0: direct illumination");
+    assert_eq!(app.bounce_label(), "up to 0 bounces: direct illumination");
 
     let app = update(app, Msg::BounceUp);
     assert_eq!(pixel(&app), layer_color(0) + layer_color(1));
     let app = update(app, Msg::ToggleBounceMode);
     assert_eq!(app.bounce_mode, BounceMode::Exactly);
     assert_eq!(pixel(&app), layer_color(1));
-    assert_eq!(app.bounce_label(), "exactly 1: bounce 1 alone");
+    assert_eq!(app.bounce_label(), "exactly 1 bounce: bounce 1 alone");
     assert!(control_lines(&app)
         .iter()
         .any(|l| l.to_string().contains("bounces exactly 1")));
     let app = update(app, Msg::ToggleBounceMode);
     assert_eq!(
         app.bounce_label(),
-        "up to 1: one-bounce global illumination"
+        "up to 1 bounce: one-bounce global illumination"
     );
     let app = update(app, Msg::ToggleBounceMode);
 
@@ -263,10 +263,10 @@ fn bounce_stepping_shows_exactly_k_and_up_to_k_from_the_layers() {
     let app = send(app, &vec![Msg::BounceUp; 3]);
     assert_eq!(app.bounce, Some(4));
     assert_eq!(pixel(&app), Vec3::ZERO);
-    assert_eq!(app.bounce_label(), "exactly 4: bounce 4 alone");
+    assert_eq!(app.bounce_label(), "exactly 4 bounces: bounce 4 alone");
     let app = send(app, &vec![Msg::BounceUp; 12]);
     assert_eq!(app.bounce, Some(16));
-    assert_eq!(app.bounce_label(), "exactly 16: bounce 16 alone");
+    assert_eq!(app.bounce_label(), "exactly 16 bounces: bounce 16 alone");
     // Up to k, the lecture's names: direct, one-bounce … sixteen-bounce.
     for (k, name) in [
         (0, "direct illumination"),
@@ -467,7 +467,8 @@ fn keys_map_to_messages() {
     let app = app();
     let m = |k| msg_for_key(&app, k).map(|m| format!("{m:?}"));
     assert_eq!(m(key(KeyCode::Char('q'))).as_deref(), Some("Quit"));
-    assert_eq!(m(key(KeyCode::Esc)).as_deref(), Some("Quit"));
+    // Esc closes what is open and never quits.
+    assert_eq!(m(key(KeyCode::Esc)).as_deref(), Some("Close"));
     assert_eq!(
         m(KeyEvent::new(KeyCode::Char('c'), KeyModifiers::CONTROL)).as_deref(),
         Some("Quit")
@@ -486,12 +487,9 @@ fn keys_map_to_messages() {
 
     // With the help open, Esc closes it, and any other key only closes it.
     let app = update(app, Msg::ToggleHelp);
-    assert_eq!(
-        msg_for_key(&app, key(KeyCode::Esc))
-            .map(|m| format!("{m:?}"))
-            .as_deref(),
-        Some("ToggleHelp")
-    );
+    let closed = update(app, Msg::Close);
+    assert!(!closed.help && !closed.quit);
+    let app = update(closed, Msg::ToggleHelp);
     let app = update(app, Msg::NextView);
     assert!(!app.help);
     assert_eq!(app.view, 0);
@@ -517,11 +515,13 @@ fn save_writes_the_view_as_png_and_the_film_as_exr() {
     );
     assert!(app.save_requested);
     let files = save(&app).unwrap();
+    // The name says chapter, scene, view, bounce layer, estimator and
+    // exposure (the fake counts no samples).
     assert_eq!(
         files,
         vec![
-            dir.join("tui-ch6-cornell-box-image-exactly0.png"),
-            dir.join("tui-ch6-cornell-box-image-exactly0.exr")
+            dir.join("tui-ch6-cornell-box-image-exactly0-brdf-ev+1.png"),
+            dir.join("tui-ch6-cornell-box-image-exactly0-brdf-ev+1.exr")
         ]
     );
     // PNG: layer 0 (0.5 red) one stop up = 1.0; EXR: the film, unexposed.
@@ -608,7 +608,7 @@ fn text(buffer: &Buffer) -> String {
     out
 }
 
-fn draw(app: &App, w: u16, h: u16) -> String {
+pub(crate) fn draw(app: &App, w: u16, h: u16) -> String {
     let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
     terminal.draw(|f| view(app, f)).unwrap();
     text(terminal.backend().buffer())

@@ -7,4 +7,5 @@ mod end_to_end;
 mod graphics;
 mod inspect;
 mod layout_and_keys;
+mod sizes_and_keys;
 mod warp;

@@ -1,0 +1,94 @@
+//! What the UI holds of a render after a pass: [`RenderState`], read
+//! from the stage's [`Snapshot`](crate::core::stage::Snapshot) by the
+//! [`worker`](super::worker).
+
+use std::time::Duration;
+
+use super::target::{Finish, Target};
+use crate::core::film::{film_mean, Film};
+use crate::core::stage::Render;
+
+/// Everything the UI shows of a render after one pass.
+#[derive(Clone, Debug)]
+pub struct RenderState {
+    /// The generation of the job this comes from.
+    pub generation: u64,
+    /// Every view of the chapter, in the order of [`ChapterInfo::views`](crate::core::stage::ChapterInfo::views).
+    pub views: Vec<Film>,
+    /// Per-bounce layers ([`Snapshot::layers`](crate::core::stage::Snapshot::layers)).
+    pub layers: Option<Vec<Film>>,
+    /// The reference ([`Snapshot::reference`](crate::core::stage::Snapshot::reference)).
+    pub reference: Option<Film>,
+    /// Error against time ([`Snapshot::error_series`](crate::core::stage::Snapshot::error_series)).
+    pub error_series: Vec<(f64, f64)>,
+    /// RMSE of view 0 against the reference, when there is one: the last
+    /// point of the error series where the stage keeps one (at the
+    /// reference's resolution), else pixel by pixel.
+    pub rmse: Option<f64>,
+    /// (passes done, passes planned).
+    pub progress: (u32, u32),
+    /// Samples per pixel so far ([`Pass::samples`](crate::core::stage::Pass::samples)).
+    pub samples: u32,
+    /// The render's own noise estimate ([`Pass::noise`](crate::core::stage::Pass::noise)).
+    pub noise: Option<f64>,
+    /// The mean value of view 0 over pixels and channels.
+    pub mean: f64,
+    /// The target this render goes to (progressive stages).
+    pub target: Option<Target>,
+    /// Time spent rendering (pauses not counted).
+    pub elapsed: Duration,
+    /// Rays traced so far ([`Pass::rays`](crate::core::stage::Pass::rays); 0 when the stage does not count).
+    pub rays: u64,
+    /// Whether the render is complete.
+    pub done: bool,
+    /// Why it stopped, once done.
+    pub finish: Option<Finish>,
+}
+
+impl RenderState {
+    /// Reads everything the UI needs from `render`.
+    pub fn capture(
+        render: &dyn Render,
+        generation: u64,
+        elapsed: Duration,
+        done: bool,
+    ) -> RenderState {
+        let snap = render.snapshot();
+        let rmse = snap.rmse();
+        let mean = snap.views.first().map_or(0.0, film_mean);
+        let pass = snap.pass;
+        RenderState {
+            generation,
+            layers: snap.layers,
+            error_series: snap.error_series,
+            reference: snap.reference,
+            rmse,
+            views: snap.views,
+            progress: (pass.done, pass.planned),
+            samples: pass.samples,
+            noise: pass.noise.map(|(n, _)| n),
+            mean,
+            target: None,
+            rays: pass.rays,
+            elapsed,
+            done,
+            finish: done.then_some(Finish::Complete),
+        }
+    }
+
+    /// The noise estimate as a fraction of the image's mean value.
+    pub fn relative_noise(&self) -> Option<f64> {
+        self.noise
+            .filter(|_| self.mean > 0.0)
+            .map(|n| n / self.mean)
+    }
+}
+
+impl RenderState {
+    /// Rays per second since the render started, when the stage counts
+    /// rays and some time has passed.
+    pub fn rays_per_second(&self) -> Option<f64> {
+        let secs = self.elapsed.as_secs_f64();
+        (self.rays > 0 && secs > 0.0).then(|| self.rays as f64 / secs)
+    }
+}
