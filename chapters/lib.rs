@@ -183,3 +183,23 @@ pub fn registry() -> Registry {
     }));
     r
 }
+
+/// The student's sampling routines the terminal UI's warp view can test
+/// (`grade-student warp <id> …`): exercise 5.2's directions, tested
+/// against the density its contract names, cos θ / π.
+pub fn warps() -> raystep::grading::runner::Warps {
+    let mut w: raystep::grading::runner::Warps = Vec::new();
+    #[cfg(not(broken_ch5_cosine_hemisphere))]
+    w.push((
+        "ch5/cosine_hemisphere",
+        raystep::core::warp_test::WarpRoutine {
+            name: "your cosine_hemisphere (exercise 5.2)",
+            sample: |u| {
+                let f = student!(ch5::cosine_hemisphere::cosine_hemisphere, a0);
+                Some(f(u).0)
+            },
+            pdf: |w| (w.z / std::f32::consts::PI).max(0.0),
+        },
+    ));
+    w
+}

@@ -3,5 +3,5 @@
 //! per exercise, under a time limit.
 
 fn main() -> std::process::ExitCode {
-    raystep::grading::runner::runner_main(raystep_exercises::registry())
+    raystep::grading::runner::runner_main(raystep_exercises::registry(), raystep_exercises::warps())
 }

@@ -19,3 +19,8 @@ pub fn all() -> Vec<&'static dyn Chapter> {
 pub fn warp_routines() -> &'static [crate::core::warp_test::WarpRoutine] {
     &crate::ch5_reflection::warp_test::ROUTINES
 }
+
+/// The student's sampling routine the warp view can test (exercise 5.2).
+pub fn student_warp() -> crate::core::warp_test::StudentWarp {
+    crate::ch5_reflection::warp_test::STUDENT
+}

@@ -7,7 +7,7 @@ use std::sync::OnceLock;
 
 use glam::Vec3;
 
-use crate::core::warp_test::WarpRoutine;
+use crate::core::warp_test::{StudentWarp, WarpRoutine};
 use crate::scene::mesh::Mesh;
 
 use super::light::area::AreaLight;
@@ -39,6 +39,14 @@ pub const ROUTINES: [WarpRoutine; 3] = [
         pdf: |w| light_pdf(test_light(), w),
     },
 ];
+
+/// Exercise 5.2's routine, which the warp view can test with the
+/// student's code: the directions must have density cos θ / π.
+pub const STUDENT: StudentWarp = StudentWarp {
+    id: "ch5/cosine_hemisphere",
+    name: "your cosine_hemisphere (exercise 5.2)",
+    pdf: |w| cosine_hemisphere_pdf(w.z).max(0.0),
+};
 
 /// The square area light of the test: 1 × 1, at height 1 above the
 /// origin, facing down, seen from the origin (built once).

@@ -62,6 +62,19 @@ impl WarpRoutine {
     }
 }
 
+/// A student's sampling routine the warp view can test: the exercise that
+/// holds it, a name for the title, and the density its contract names
+/// (the student's own draws are made in the grader's sandbox).
+#[derive(Clone, Copy, Debug)]
+pub struct StudentWarp {
+    /// The exercise, `chN/name`.
+    pub id: &'static str,
+    /// A name for titles.
+    pub name: &'static str,
+    /// The density the exercise's contract asks for, per steradian.
+    pub pdf: fn(Vec3) -> f32,
+}
+
 /// A sampling routine to test: draws a direction from two uniform
 /// numbers (or none), and says its density per steradian.
 pub struct Warp<'a> {

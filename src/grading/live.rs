@@ -15,11 +15,12 @@ use std::sync::atomic::AtomicBool;
 use std::time::{Duration, SystemTime};
 
 use crate::core::film::Film;
+use crate::core::warp_test::Drawn;
 use crate::grading::build::{build_exercises_in, Place};
 use crate::grading::child::{crash_message, last_progress, run_limited, Ran};
 use crate::grading::exercise::Exercise;
 use crate::grading::process::too_much_output;
-use crate::grading::runner::{Handshake, CAPSTONES};
+use crate::grading::runner::{Handshake, CAPSTONES, WARP_HEADER};
 use crate::grading::PROGRESS_ENV;
 
 /// The student's capstone image beside the reference.
@@ -283,6 +284,71 @@ pub fn live_student_with(
             reference,
         }),
         (Err(e), _) | (_, Err(e)) => Err(panicked(format!("cannot read the images: {e}"))),
+    }
+}
+
+/// Builds the exercises and has the student's sampling routine `id` (an
+/// entry of the exercises crate's `warps()`, e.g. `ch5/cosine_hemisphere`)
+/// draw `draws` directions in a sandboxed process under the time limit;
+/// the counts, or why not.
+pub fn live_warp(
+    id: &str,
+    draws: usize,
+    seed: u64,
+    opts: &LiveOptions,
+    cancel: Option<&AtomicBool>,
+) -> Result<Drawn, LiveError> {
+    let ex = crate::grading::all()
+        .into_iter()
+        .find(|e| e.id() == id)
+        .ok_or_else(|| LiveError::Build(format!("no exercise {id}")))?;
+    let built =
+        build_exercises_in(&opts.exercises, &opts.place, cancel).map_err(LiveError::Build)?;
+    if let Some(message) = built.broken.get(id) {
+        let (id, message) = (id.to_string(), message.clone());
+        return Err(LiveError::DoesNotCompile { id, message });
+    }
+    let out = opts.out.join("warp");
+    std::fs::create_dir_all(&out)
+        .map_err(|e| LiveError::Build(format!("cannot create {}: {e}", out.display())))?;
+    let mut cmd = Command::new(&built.runner);
+    cmd.args(["warp", id])
+        .arg(&out)
+        .args([draws.to_string(), seed.to_string()]);
+    let panicked = |message: String| LiveError::Panicked {
+        id: id.to_string(),
+        message,
+    };
+    let (status, stdout, stderr) = match run_limited(&mut cmd, b"", Some(opts.timeout), cancel) {
+        Err(e) => {
+            let m = format!("cannot start {}: {e}", built.runner.display());
+            return Err(LiveError::Build(m));
+        }
+        Ok(Ran::Cancelled) => return Err(LiveError::Build("cancelled".into())),
+        Ok(Ran::TooMuchOutput) => return Err(panicked(too_much_output())),
+        Ok(Ran::TimedOut { .. }) => {
+            let (id, seconds) = (id.to_string(), opts.timeout.as_secs_f64());
+            let doing = "drawing directions".to_string();
+            return Err(LiveError::TimedOut { id, seconds, doing });
+        }
+        Ok(Ran::Exited {
+            status,
+            stdout,
+            stderr,
+        }) => (status, stdout, stderr),
+    };
+    let first = stdout.lines().next().unwrap_or("");
+    if first == "not_implemented" {
+        let (id, file) = (id.to_string(), ex.file.to_string());
+        return Err(LiveError::NotStarted { id, file });
+    }
+    if let Some(message) = first.strip_prefix("panicked: ") {
+        return Err(panicked(message.to_string()));
+    }
+    match stdout.strip_prefix(WARP_HEADER) {
+        Some(rest) => Drawn::from_text(rest)
+            .ok_or_else(|| panicked("its draws could not be read back".into())),
+        None => Err(panicked(crash_message(&status, &stderr))),
     }
 }
 

@@ -19,6 +19,14 @@ use crate::grading::{run_check, write_failure_images};
 /// crate compiled (an exercise that does not compile is left out).
 pub type Registry = Vec<(&'static str, fn() -> Check)>;
 
+/// The student's sampling routines the warp view can test, by exercise id.
+pub type Warps = Vec<(&'static str, crate::core::warp_test::WarpRoutine)>;
+
+/// The first line `grade-student warp` prints before the draws
+/// ([`crate::core::warp_test::Drawn::to_text`]); `not_implemented` or
+/// `panicked: …` instead when the routine could not draw.
+pub const WARP_HEADER: &str = "raystep-warp";
+
 /// What the grader hands a `grade-student` process on its standard input,
 /// read before any student code runs: a secret that marks the verdict, and
 /// the time limit (for the process's CPU limit). The student's code cannot
@@ -296,7 +304,7 @@ fn render_check(ex: &Exercise, check: fn() -> Check, out: &Path) -> (ExitCode, V
 /// [`Handshake`] on standard input; `grade-student render <chN> <out>`
 /// renders a chapter's capstone. Before any student code runs, the process
 /// limits itself ([`Limits`]) and may write only under `out`.
-pub fn runner_main(registry: Registry) -> ExitCode {
+pub fn runner_main(registry: Registry, warps: Warps) -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     // `grade-student --sandbox-check <dir>`: which limits this system
     // cannot set, one per line (the grader says so before grading).
@@ -306,6 +314,11 @@ pub fn runner_main(registry: Registry) -> ExitCode {
                 println!("{missing}");
             }
             return ExitCode::SUCCESS;
+        }
+    }
+    if let [cmd, id, out, draws, seed] = args.as_slice() {
+        if cmd == "warp" {
+            return warp(&warps, id, Path::new(out), draws, seed);
         }
     }
     let handshake = Handshake::read();
@@ -339,5 +352,47 @@ pub fn runner_main(registry: Registry) -> ExitCode {
         return ExitCode::from(2);
     };
     handshake.print(&verdict(&registry, &ex, out));
+    ExitCode::SUCCESS
+}
+
+/// `grade-student warp <id> <out> <draws> <seed>`: the student's routine
+/// `id` draws `draws` directions in the sandbox (it may write only under
+/// `out`), and the counts are printed after [`WARP_HEADER`]; the test
+/// against the pdf is the caller's.
+fn warp(warps: &Warps, id: &str, out: &Path, draws: &str, seed: &str) -> ExitCode {
+    let (Ok(draws), Ok(seed)) = (draws.parse::<usize>(), seed.parse::<u64>()) else {
+        eprintln!("usage: grade-student warp <chN/name> <out dir> <draws> <seed>");
+        return ExitCode::from(2);
+    };
+    let Some((_, routine)) = warps.iter().find(|(w, _)| *w == id) else {
+        eprintln!("error: no sampling routine `{id}` in the exercises crate that was built");
+        return ExitCode::from(2);
+    };
+    if let Err(e) = std::fs::create_dir_all(out) {
+        eprintln!("error: cannot create {}: {e}", out.display());
+        return ExitCode::from(2);
+    }
+    for missing in Limits::for_timeout(60.0).apply(out) {
+        eprintln!("note: the grader's sandbox could not set {missing}");
+    }
+    let sample = routine.sample;
+    let drawn = std::panic::catch_unwind(|| {
+        crate::core::warp_test::draw(&sample, draws.min(1 << 22), seed)
+    });
+    match drawn {
+        Ok(d) => println!("{WARP_HEADER}\n{}", d.to_text()),
+        Err(payload) => {
+            let message = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "panicked".into());
+            if message.starts_with("not yet implemented") {
+                println!("not_implemented");
+            } else {
+                println!("panicked: {}", message.replace('\n', " "));
+            }
+        }
+    }
     ExitCode::SUCCESS
 }

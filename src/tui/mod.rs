@@ -260,6 +260,9 @@ fn event_loop(
     // worker: the UI never traces a ray itself).
     let mut story_key = None;
     let mut sent_trace = None;
+    // The student's warp routine, built and run in a thread of its own.
+    let (warp_tx, warp_rx) = std::sync::mpsc::channel();
+    let mut warp_sent = None;
     // When the current scene's file was last looked at for edits.
     let mut checked = Instant::now();
     loop {
@@ -306,6 +309,19 @@ fn event_loop(
                 app = update(app, Msg::Student(w.chapter, event));
                 dirty = true;
             }
+        }
+        let wanted = app.warp.as_ref().and_then(|w| w.student_requested);
+        if wanted.is_some() && wanted != warp_sent {
+            warp_sent = wanted;
+            let (tx, out, seed) = (warp_tx.clone(), app.out_dir.clone(), wanted.unwrap_or(1));
+            std::thread::spawn(move || {
+                let _ = tx.send((seed, warp::student_draws(&out, seed)));
+            });
+        }
+        while let Ok((seed, drawn)) = warp_rx.try_recv() {
+            warp_sent = None;
+            app = update(app, Msg::WarpStudent(seed, drawn));
+            dirty = true;
         }
         if app.trace_requested != sent_trace {
             sent_trace = app.trace_requested;

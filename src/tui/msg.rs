@@ -88,6 +88,8 @@ pub enum Msg {
     WarpStep(i64),
     /// The warp view's routine again with new random numbers.
     WarpReseed,
+    /// The student's routine drew (seed, its draws or why not).
+    WarpStudent(u64, Result<crate::core::warp_test::Drawn, String>),
     /// Quit.
     Quit,
     /// Esc: close what is open (the help, the path table, inspect mode,

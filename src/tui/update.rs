@@ -281,6 +281,11 @@ fn step(mut app: App, msg: Msg) -> App {
                 app.warp = Some(Box::new(w.reseeded()));
             }
         }
+        Msg::WarpStudent(seed, drawn) => {
+            if let Some(w) = app.warp.as_mut() {
+                w.student_drawn(seed, drawn);
+            }
+        }
         Msg::Quit => app.quit = true,
         Msg::Close => close(&mut app),
         Msg::Scroll(lines) => scroll(&mut app, lines),

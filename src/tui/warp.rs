@@ -2,7 +2,8 @@
 //! the terminal, after Nori's warptest. The directions a routine draws,
 //! seen from above; how many fell in each cell of the sphere beside how
 //! many its pdf predicts; and the χ² test's verdict
-//! ([`crate::ch5_reflection::warp_test`]).
+//! ([`crate::core::warp_test`]). The last routine is the student's own
+//! (exercise 5.2), built and run in the grader's sandbox.
 
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Style};
@@ -12,36 +13,68 @@ use ratatui::widgets::canvas::{Canvas, Circle, Points};
 use ratatui::widgets::{Block, Clear, Paragraph};
 use ratatui::Frame;
 
-use crate::chapters::warp_routines;
-use crate::core::warp_test::{WarpTest, COS_CELLS, DEFAULT_DRAWS, PHI_CELLS};
+use crate::chapters::{student_warp, warp_routines};
+use crate::core::warp_test::{Drawn, WarpTest, COS_CELLS, DEFAULT_DRAWS, PHI_CELLS};
 
 /// What the warp view shows: a routine, the seed of its numbers, and the
 /// test's outcome.
 #[derive(Clone, Debug)]
 pub struct WarpView {
-    /// Index into [`warp_routines`].
+    /// Index into the routines: [`warp_routines`], then the student's
+    /// ([`student_warp`]).
     pub index: usize,
     /// The seed of the draws (`n` takes the next).
     pub seed: u64,
-    /// The outcome.
-    pub test: WarpTest,
+    /// The outcome, or for the student's routine while it is being built
+    /// and run (or could not be) what is happening.
+    pub test: Result<WarpTest, String>,
+    /// The student's routine is to be built and run with this seed (the
+    /// event loop does it in a thread and answers with
+    /// [`crate::tui::app::Msg::WarpStudent`]).
+    pub student_requested: Option<u64>,
+}
+
+/// How many routines the view cycles through: the built-in ones and the
+/// student's.
+fn count() -> usize {
+    warp_routines().len() + 1
 }
 
 impl WarpView {
-    /// Runs routine `index` with `seed`.
+    /// Runs routine `index` with `seed` (the student's is requested).
     pub fn new(index: usize, seed: u64) -> WarpView {
         let routines = warp_routines();
-        let index = index % routines.len();
-        WarpView {
-            index,
-            seed,
-            test: routines[index].run(DEFAULT_DRAWS, seed),
+        let index = index % count();
+        match routines.get(index) {
+            Some(r) => WarpView {
+                index,
+                seed,
+                test: Ok(r.run(DEFAULT_DRAWS, seed)),
+                student_requested: None,
+            },
+            None => WarpView {
+                index,
+                seed,
+                test: Err(format!(
+                    "building and running {} (chapters/{}.rs)…",
+                    student_warp().name,
+                    student_warp().id.replace('/', "-reflection/exercises/")
+                )),
+                student_requested: Some(seed),
+            },
         }
+    }
+
+    /// The routine's name.
+    pub fn name(&self) -> &'static str {
+        warp_routines()
+            .get(self.index)
+            .map_or(student_warp().name, |r| r.name)
     }
 
     /// The next (or, with `step` −1, previous) routine.
     pub fn step(&self, step: i64) -> WarpView {
-        let n = warp_routines().len() as i64;
+        let n = count() as i64;
         WarpView::new((self.index as i64 + step).rem_euclid(n) as usize, self.seed)
     }
 
@@ -49,21 +82,47 @@ impl WarpView {
     pub fn reseeded(&self) -> WarpView {
         WarpView::new(self.index, self.seed + 1)
     }
+
+    /// The student's draws (or why there are none) for seed `seed`,
+    /// tested against the density the exercise's contract names; ignored
+    /// unless the view still waits for them.
+    pub fn student_drawn(&mut self, seed: u64, drawn: Result<Drawn, String>) {
+        if self.index != warp_routines().len() || self.seed != seed {
+            return;
+        }
+        self.student_requested = None;
+        let pdf = student_warp().pdf;
+        self.test = drawn.map(|d| d.test(student_warp().name, &pdf));
+    }
+}
+
+/// The student's routine built and run as the grader runs it (in its
+/// sandbox, under its time limit), drawing [`DEFAULT_DRAWS`] directions
+/// with `seed`; or the one-line reason why not. Takes as long as the
+/// build: the event loop calls it in a thread.
+pub fn student_draws(out: &std::path::Path, seed: u64) -> Result<Drawn, String> {
+    let opts = crate::grading::live::LiveOptions::for_out_dir(out)?;
+    crate::grading::live::live_warp(student_warp().id, DEFAULT_DRAWS, seed, &opts, None)
+        .map_err(|e| e.status())
 }
 
 /// The view's lines of text (title, verdict, keys), for tests and for
 /// terminals too small for the pictures.
 pub fn summary(w: &WarpView) -> Vec<String> {
+    let draws = w.test.as_ref().map_or(DEFAULT_DRAWS, |t| t.draws);
     vec![
         format!(
             "warp test {}/{}: {} ({} draws, seed {})",
             w.index + 1,
-            warp_routines().len(),
-            w.test.name,
-            w.test.draws,
+            count(),
+            w.name(),
+            draws,
             w.seed
         ),
-        w.test.verdict(),
+        match &w.test {
+            Ok(t) => t.verdict(),
+            Err(why) => why.clone(),
+        },
         "←/→ routine · n new numbers · Esc close".into(),
     ]
 }
@@ -81,7 +140,12 @@ pub fn draw(w: &WarpView, color: bool, frame: &mut Frame, area: Rect) {
         Constraint::Length(1),
     ])
     .areas(inner);
-    let good = if w.test.passes() {
+    let Ok(test) = &w.test else {
+        frame.render_widget(Paragraph::new(text[1].clone()), verdict);
+        frame.render_widget(Paragraph::new(text[2].clone()), keys);
+        return;
+    };
+    let good = if test.passes() {
         Color::Green
     } else {
         Color::Red
@@ -101,18 +165,17 @@ pub fn draw(w: &WarpView, color: bool, frame: &mut Frame, area: Rect) {
         Constraint::Length(histogram_width.min(pictures.width / 2)),
     ])
     .areas(pictures);
-    draw_points(w, color, frame, points);
+    draw_points(test, color, frame, points);
     let [observed, expected] =
         Layout::vertical([Constraint::Fill(1), Constraint::Fill(1)]).areas(histograms);
-    let max = w
-        .test
+    let max = test
         .observed
         .iter()
-        .chain(&w.test.expected)
+        .chain(&test.expected)
         .fold(1.0f64, |m, v| m.max(*v));
     draw_histogram(
         "drawn per cell",
-        &w.test.observed,
+        &test.observed,
         max,
         color,
         frame,
@@ -120,7 +183,7 @@ pub fn draw(w: &WarpView, color: bool, frame: &mut Frame, area: Rect) {
     );
     draw_histogram(
         "the pdf's prediction",
-        &w.test.expected,
+        &test.expected,
         max,
         color,
         frame,
@@ -130,16 +193,14 @@ pub fn draw(w: &WarpView, color: bool, frame: &mut Frame, area: Rect) {
 
 /// The directions seen from above: (x, y) of each, upper hemisphere in
 /// one colour, lower in another, inside the unit circle.
-fn draw_points(w: &WarpView, color: bool, frame: &mut Frame, area: Rect) {
-    let upper: Vec<(f64, f64)> = w
-        .test
+fn draw_points(test: &WarpTest, color: bool, frame: &mut Frame, area: Rect) {
+    let upper: Vec<(f64, f64)> = test
         .points
         .iter()
         .filter(|p| p.z >= 0.0)
         .map(|p| (p.x as f64, p.y as f64))
         .collect();
-    let lower: Vec<(f64, f64)> = w
-        .test
+    let lower: Vec<(f64, f64)> = test
         .points
         .iter()
         .filter(|p| p.z < 0.0)
@@ -149,7 +210,7 @@ fn draw_points(w: &WarpView, color: bool, frame: &mut Frame, area: Rect) {
     let canvas = Canvas::default()
         .block(Block::bordered().title(format!(
             "{} directions from above (x, y){}",
-            w.test.points.len(),
+            test.points.len(),
             if lower.is_empty() {
                 String::new()
             } else {

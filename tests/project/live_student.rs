@@ -77,3 +77,56 @@ fn live_student_is_not_started_for_the_stub_and_matches_with_the_reference() {
         LiveError::NoCapstone(9)
     );
 }
+
+/// The warp view's student routine: the stub is "not started"; the
+/// solution's draws pass the χ² test against cos θ / π; Malley's method
+/// without its square root is rejected; a panic is reported, not a crash.
+#[test]
+fn live_warp_tests_the_students_cosine_hemisphere() {
+    use raystep::ch5_reflection::warp_test::ROUTINES;
+    use raystep::grading::live::live_warp;
+    let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
+    let exercises = copy_exercises(&common::temp_dir("warp-src"));
+    let opts = LiveOptions {
+        exercises: exercises.clone(),
+        place: Place::current().unwrap(),
+        out: common::temp_dir("warp-out"),
+        timeout: Duration::from_secs(60),
+    };
+    let id = "ch5/cosine_hemisphere";
+    let file = exercises.join("ch5-reflection/exercises/cosine_hemisphere.rs");
+    let err = live_warp(id, 10_000, 1, &opts, None).unwrap_err();
+    assert!(matches!(err, LiveError::NotStarted { .. }), "{err:?}");
+
+    let solution = std::fs::read_to_string(
+        common::root()
+            .join("tests/project/solutions/ch5-reflection/exercises/cosine_hemisphere.rs"),
+    )
+    .unwrap();
+    std::fs::write(&file, &solution).unwrap();
+    let cosine_pdf = ROUTINES[1].pdf;
+    let drawn = live_warp(id, 100_000, 1, &opts, None).unwrap();
+    assert_eq!(drawn.draws, 100_000);
+    let test = drawn.test("yours", &cosine_pdf);
+    assert!(test.passes(), "{}", test.verdict());
+
+    // r = u instead of √u: too many directions near the pole.
+    let no_root = solution.replace("u.x.sqrt()", "u.x");
+    assert_ne!(no_root, solution, "the solution takes a square root");
+    std::fs::write(&file, no_root).unwrap();
+    let test = live_warp(id, 100_000, 1, &opts, None)
+        .unwrap()
+        .test("no root", &cosine_pdf);
+    assert!(!test.passes() && test.bad == 0, "{}", test.verdict());
+
+    std::fs::write(
+        &file,
+        "use glam::{Vec2, Vec3};\npub fn cosine_hemisphere(u: Vec2) -> (Vec3, f32) {\n    panic!(\"on purpose\")\n}\n",
+    )
+    .unwrap();
+    let err = live_warp(id, 1000, 1, &opts, None).unwrap_err();
+    assert!(
+        matches!(&err, LiveError::Panicked { message, .. } if message.contains("on purpose")),
+        "{err:?}"
+    );
+}

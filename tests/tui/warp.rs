@@ -4,7 +4,7 @@
 use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
-use raystep::tui::app::App;
+use raystep::tui::app::{App, Msg};
 use raystep::tui::keys::msg_for_key;
 use raystep::tui::scenes::SceneEntry;
 use raystep::tui::update::update;
@@ -37,11 +37,12 @@ fn the_warp_view_tests_each_routine_at_every_size() {
     let app = App::new(raystep::chapters::all(), vec![SceneEntry::builtin()], false);
     let app = key(app, KeyCode::Char('w'));
     let w = app.warp.as_ref().expect("w opens the warp view");
-    assert_eq!(w.test.name, "uniform hemisphere");
-    assert!(w.test.passes(), "{}", w.test.verdict());
+    let t = w.test.as_ref().unwrap();
+    assert_eq!(t.name, "uniform hemisphere");
+    assert!(t.passes(), "{}", t.verdict());
     for (width, height) in [(80, 24), (100, 30), (160, 48)] {
         let t = draw(&app, width, height);
-        assert!(t.contains("warp test 1/3: uniform hemisphere"), "{t}");
+        assert!(t.contains("warp test 1/4: uniform hemisphere"), "{t}");
         assert!(t.contains("accepted"), "{width}x{height}:\n{t}");
         assert!(t.contains("←/→ routine · n new numbers · Esc close"), "{t}");
         assert!(t.contains("drawn per cell"), "{width}x{height}:\n{t}");
@@ -59,22 +60,54 @@ fn the_warp_view_tests_each_routine_at_every_size() {
     insta::assert_snapshot!("warp_80x24", draw(&app, 80, 24));
 
     // → the next routine, ← back, n new numbers.
+    let test = |app: &App| app.warp.as_ref().unwrap().test.clone().unwrap();
     let app = key(app, KeyCode::Right);
-    assert_eq!(app.warp.as_ref().unwrap().test.name, "cosine hemisphere");
+    assert_eq!(test(&app).name, "cosine hemisphere");
+    let app = key(app, KeyCode::Right);
+    assert_eq!(test(&app).name, "area light");
+    assert!(test(&app).passes(), "{}", test(&app).verdict());
+    assert!(draw(&app, 100, 30).contains("warp test 3/4: area light"));
+    // The student's routine: asked of the event loop, which builds and
+    // runs it in a thread; its draws are tested against cos θ / π.
     let app = key(app, KeyCode::Right);
     let w = app.warp.as_ref().unwrap();
-    assert_eq!(w.test.name, "area light");
-    assert!(w.test.passes(), "{}", w.test.verdict());
-    assert!(draw(&app, 100, 30).contains("warp test 3/3: area light"));
+    assert_eq!(w.student_requested, Some(1));
+    let t = draw(&app, 80, 24);
+    assert!(t.contains("warp test 4/4: your cosine_hemisphere"), "{t}");
+    assert!(
+        t.contains("building and running your cosine_hemisphere"),
+        "{t}"
+    );
+    let drawn = raystep::core::warp_test::draw(
+        &|u| Some(raystep::ch5_reflection::warp::cosine_hemisphere(u)),
+        20_000,
+        1,
+    );
+    let mut stale = (**app.warp.as_ref().unwrap()).clone();
+    stale.student_drawn(7, Ok(drawn.clone()));
+    assert!(stale.test.is_err(), "an answer for another seed is dropped");
+    let mut failed = stale.reseeded();
+    failed.student_drawn(2, Err("ch5/cosine_hemisphere: not started (todo!)".into()));
+    assert_eq!(
+        failed.test,
+        Err("ch5/cosine_hemisphere: not started (todo!)".to_string())
+    );
+    let app = update(app, Msg::WarpStudent(1, Ok(drawn)));
+    assert!(test(&app).passes(), "{}", test(&app).verdict());
+    assert_eq!(app.warp.as_ref().unwrap().student_requested, None);
+    let mut app = app;
+    let shown = app.warp.replace(Box::new(failed));
+    assert!(draw(&app, 80, 24).contains("not started (todo!)"));
+    app.warp = shown;
     let app = key(app, KeyCode::Right);
     assert_eq!(app.warp.as_ref().unwrap().index, 0, "wraps around");
     let app = key(app, KeyCode::Left);
+    let app = key(app, KeyCode::Left);
     assert_eq!(app.warp.as_ref().unwrap().index, 2);
-    let before = app.warp.as_ref().unwrap().test.observed.clone();
+    let before = test(&app).observed;
     let app = key(app, KeyCode::Char('n'));
-    let w = app.warp.as_ref().unwrap();
-    assert_eq!(w.seed, 2);
-    assert_ne!(w.test.observed, before, "new numbers, new counts");
+    assert_eq!(app.warp.as_ref().unwrap().seed, 2);
+    assert_ne!(test(&app).observed, before, "new numbers, new counts");
     // Keys of the main view do nothing while it is open; Esc closes it
     // and the app goes on.
     let chapter = app.chapter;
