@@ -107,7 +107,7 @@ impl Chapter for Reflection {
         }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
-        crate::core::stage::require_meshes(5, &scene)?;
+        crate::core::stage::require_light(5, &scene)?;
         let stage = self.with_variant(self.info().variant(settings)?);
         Ok(Box::new(ReflectionRender::new(stage, scene, settings)?))
     }

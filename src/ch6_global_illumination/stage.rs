@@ -167,7 +167,7 @@ impl Chapter for GlobalIllumination {
         }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
-        crate::core::stage::require_meshes(6, &scene)?;
+        crate::core::stage::require_light(6, &scene)?;
         let stage = self.with_variant(self.info().variant(settings)?);
         stage.check()?;
         Ok(Box::new(PathTracingRender::new(stage, scene, settings)?))

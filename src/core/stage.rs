@@ -124,6 +124,32 @@ pub fn require_meshes(chapter: u32, scene: &Scene) -> Result<()> {
     )))
 }
 
+/// Refuses a scene that holds nothing, or no light, for a stage that
+/// shades with the scene's lights (chapters 5 and 6 draw meshes and SDFs
+/// alike, but without a light or an emitting material every pixel is
+/// black): "chapter 5 needs light; sdf-shapes has no lights and no
+/// emitting material".
+pub fn require_light(chapter: u32, scene: &Scene) -> Result<()> {
+    if scene.meshes.is_empty() && scene.sdfs.is_empty() {
+        return Err(crate::core::error::Error::Usage(format!(
+            "chapter {chapter} needs something to render; {} has no meshes and no SDFs",
+            scene.name
+        )));
+    }
+    let emits = scene
+        .materials
+        .iter()
+        .any(|m| m.emission.max_element() > 0.0);
+    if scene.lights.is_empty() && !emits {
+        return Err(crate::core::error::Error::Usage(format!(
+            "chapter {chapter} needs light; {} has no lights and no emitting material \
+             (add a [[lights]] entry, or an emission to a material)",
+            scene.name
+        )));
+    }
+    Ok(())
+}
+
 /// The [`Pass`] of a stage that renders in a fixed number of passes and
 /// samples nothing progressively.
 pub fn fixed_pass(done: u32, planned: u32, rays: u64) -> Pass {

@@ -397,13 +397,19 @@ fn mesh_chapters_refuse_a_scene_without_meshes_and_say_why() {
             continue;
         }
         let why = result.err().expect("refused").to_string();
-        assert_eq!(
-            why,
+        let expected = if number >= 5 {
+            // Chapters 5 and 6 draw SDFs too: what they lack is light.
+            format!(
+                "chapter {number} needs light; sdf-shapes has no lights and no emitting \
+                 material (add a [[lights]] entry, or an emission to a material)"
+            )
+        } else {
             format!(
                 "chapter {number} draws triangle meshes; sdf-shapes has none \
                  (it has {n} SDF objects: chapter 4 draws them)"
             )
-        );
+        };
+        assert_eq!(why, expected);
     }
     // Chapter 4 on a scene without SDFs renders its meshes (through
     // chapter 3's BVH): it does not refuse.
@@ -608,9 +614,15 @@ fn the_headless_summary_says_which_chapters_refuse_a_scene() {
     .expect("a refusal is a line, not a failure");
     assert!(clean.is_none());
     let text = String::from_utf8(text).unwrap();
-    for n in [1, 2, 3, 5, 6] {
+    for n in [1, 2, 3] {
         assert!(
             text.contains(&format!("refused: chapter {n} draws triangle meshes")),
+            "{text}"
+        );
+    }
+    for n in [5, 6] {
+        assert!(
+            text.contains(&format!("refused: chapter {n} needs light")),
             "{text}"
         );
     }
@@ -632,4 +644,36 @@ fn the_help_says_when_a_short_terminal_hides_keys() {
         short.contains(&format!("… {} more keys", keys - 13)),
         "{short}"
     );
+}
+
+/// Chapters 5 and 6 render SDFs: an SDF-only scene with a light renders,
+/// one without any light or emitter is refused for that reason.
+#[test]
+fn chapters_5_and_6_render_sdfs_and_refuse_only_a_dark_scene() {
+    let mut lit = common::shipped_scene("sdf-lit", 24, 16);
+    lit.meshes.clear(); // the area light is a mesh: keep the point light and sky
+    assert!(!lit.lights.is_empty() && !lit.sdfs.is_empty());
+    let lit = Arc::new(lit);
+    for n in [5, 6] {
+        let chapter = raystep::chapters::all()[n - 1];
+        let mut render = chapter.start(lit.clone(), &Settings::default()).unwrap();
+        while !render.pass().complete {}
+        let image = &render.snapshot().views[0];
+        assert!(image.pixels.iter().any(|p| p.max_element() > 0.0), "ch{n}");
+    }
+    let mut dark = common::shipped_scene("sdf-lit", 24, 16);
+    dark.meshes.clear();
+    dark.lights.clear();
+    for m in &mut dark.materials {
+        m.emission = glam::Vec3::ZERO;
+    }
+    let dark = Arc::new(dark);
+    for n in [5, 6] {
+        let chapter = raystep::chapters::all()[n - 1];
+        let why = chapter
+            .start(dark.clone(), &Settings::default())
+            .err()
+            .unwrap();
+        assert!(why.to_string().contains("needs light"), "{why}");
+    }
 }
