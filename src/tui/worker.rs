@@ -263,7 +263,71 @@ fn start(job: Job, results: &Sender<Progress>) -> Option<Current> {
     }
 }
 
+/// The worker thread: each job renders in a thread of its own
+/// ([`render_jobs`]), so a new job starts at once even while the old one
+/// is in the middle of a long pass (a huge scene's first pass can take
+/// minutes). The old thread is told to stop by closing its channel: it
+/// notices after its pass, and what it sends then carries its old
+/// generation, which the UI drops. Commands for the current job are passed
+/// on to its thread.
 fn work(commands: Receiver<Command>, results: Sender<Progress>) {
+    let mut current: Option<(u64, Sender<Command>, JoinHandle<()>)> = None;
+    let mut stopping: Vec<JoinHandle<()>> = Vec::new();
+    for command in commands.iter() {
+        match command {
+            Command::Start(job) => {
+                let (tx, rx) = channel();
+                let generation = job.generation;
+                let _ = tx.send(Command::Start(job));
+                let to_ui = results.clone();
+                let spawned = std::thread::Builder::new()
+                    .name(THREAD_NAME.into())
+                    .spawn(move || render_jobs(rx, to_ui));
+                let Ok(handle) = spawned else {
+                    let _ = results.send(Progress::Failed {
+                        generation,
+                        message: "cannot start a render thread".into(),
+                    });
+                    continue;
+                };
+                if let Some((_, old, thread)) = current.replace((generation, tx, handle)) {
+                    drop(old);
+                    stopping.push(thread);
+                }
+            }
+            other => {
+                if let Some((generation, tx, _)) = &current {
+                    if other.generation() == Some(*generation) {
+                        let _ = tx.send(other);
+                    }
+                }
+            }
+        }
+        stopping.retain(|t| !t.is_finished());
+    }
+    // The UI is gone: stop the current job after its pass and wait for it.
+    if let Some((_, tx, thread)) = current {
+        drop(tx);
+        let _ = thread.join();
+    }
+}
+
+impl Command {
+    /// The generation a command is about (`None` for a new job).
+    fn generation(&self) -> Option<u64> {
+        match self {
+            Command::Start(_) => None,
+            Command::Retarget { generation, .. }
+            | Command::Pause { generation, .. }
+            | Command::Inspect { generation, .. } => Some(*generation),
+        }
+    }
+}
+
+/// One job's thread: starts its render and runs its passes, taking the
+/// commands the worker passes on, until the render is replaced (the
+/// channel closes) or the UI is gone.
+fn render_jobs(commands: Receiver<Command>, results: Sender<Progress>) {
     let mut current: Option<Current> = None;
     loop {
         // Wait for a command when there is nothing to render; otherwise

@@ -417,3 +417,84 @@ fn the_flags_choose_the_chapter_the_scene_and_the_budget() {
     assert_eq!(app.scenes.len(), 2, "the built-in scene and the file");
     assert_eq!(app.current_scene().unwrap().name, "tetrahedron");
 }
+
+/// A stage whose pass waits until the test lets it go: a pass that takes
+/// as long as the test wants.
+struct Stuck;
+
+static STUCK: Stuck = Stuck;
+static RELEASE: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+impl Chapter for Stuck {
+    fn info(&self) -> ChapterInfo {
+        ChapterInfo::new(
+            4,
+            "stuck",
+            "A pass that waits",
+            &[View {
+                name: "image",
+                about: "",
+            }],
+        )
+    }
+    fn start(&self, _: Arc<Scene>, _: &Settings) -> Result<Box<dyn Render>> {
+        Ok(Box::new(StuckRender))
+    }
+}
+
+struct StuckRender;
+
+impl Render for StuckRender {
+    fn pass(&mut self) -> Pass {
+        while !RELEASE.load(std::sync::atomic::Ordering::SeqCst) {
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        Pass {
+            done: 1,
+            planned: 1,
+            complete: true,
+            ..Pass::default()
+        }
+    }
+    fn snapshot(&self) -> raystep::core::stage::Snapshot {
+        raystep::core::stage::Snapshot {
+            views: vec![Film::new(2, 2)],
+            ..Default::default()
+        }
+    }
+    fn report(&self) -> Report {
+        Report::default()
+    }
+}
+
+#[test]
+fn a_new_render_does_not_wait_for_the_old_ones_pass() {
+    let worker = Worker::spawn();
+    worker.start(Job {
+        generation: 1,
+        chapter: &STUCK,
+        scene: Arc::new(Scene::builtin()),
+        settings: Settings::default(),
+        variant: 0,
+        target: None,
+    });
+    // The stuck pass is under way; switch to another render, which
+    // finishes while the first pass still waits.
+    std::thread::sleep(Duration::from_millis(50));
+    worker.start(job(
+        2,
+        Target {
+            spp: 4,
+            noise: None,
+        },
+    ));
+    let seen = until_done(&worker, 2);
+    assert_eq!(seen.last().unwrap().samples, 4);
+    assert!(
+        !RELEASE.load(std::sync::atomic::Ordering::SeqCst),
+        "the first pass is still waiting"
+    );
+    // Let it go: the old render's thread ends; nothing of it is needed.
+    RELEASE.store(true, std::sync::atomic::Ordering::SeqCst);
+    worker.stop();
+}
