@@ -388,7 +388,6 @@ impl App {
             if let Some(scene) = self.opening_scene(index) {
                 if scene != self.scene {
                     self.scene = scene;
-                    self.scenes[scene].ensure_loaded();
                 }
             }
             if self.opened.len() <= index {
@@ -419,8 +418,9 @@ impl App {
         (0..self.scenes.len()).find(|i| self.problem_in(index, *i).is_none())
     }
 
-    /// Reads the current scene's file again if it was edited since it was
-    /// read, and renders it anew; whether it did.
+    /// Marks the current scene to be read again if its file was edited
+    /// since it was read (the event loop reads it in a thread, then it
+    /// renders anew); whether it was.
     pub fn reload_if_changed(&mut self) -> bool {
         let Some(entry) = self.scenes.get_mut(self.scene) else {
             return false;
@@ -433,17 +433,44 @@ impl App {
         let scene = self.scene;
         self.refusals.retain(|(_, s), _| *s != scene);
         self.message = format!(
-            "reloaded {}: the file changed",
+            "reloading {}: the file changed",
             crate::core::text::escape(&entry.source)
         );
         self.restart();
         true
     }
 
+    /// The scene file the UI waits for, if the current entry has not been
+    /// read yet: the event loop reads it in a thread and answers with
+    /// [`Msg::SceneRead`].
+    pub fn scene_to_read(&self) -> Option<(usize, PathBuf)> {
+        let entry = self.current_scene()?;
+        entry.pending.clone().map(|p| (self.scene, p))
+    }
+
+    /// Reads the current scene now, in this thread, if it waits to be read
+    /// (what the event loop does in a thread; for tests and tools).
+    pub fn read_scene_now(&mut self) {
+        if let Some((index, path)) = self.scene_to_read() {
+            let read = super::scenes::read_scene(&path);
+            self.scene_read(index, &path, read);
+        }
+    }
+
+    /// Takes a scene file the event loop read: the entry gets it, and if it
+    /// is the current scene its render starts.
+    pub fn scene_read(&mut self, index: usize, path: &std::path::Path, read: super::scenes::Read) {
+        let Some(entry) = self.scenes.get_mut(index) else {
+            return;
+        };
+        if entry.finish_loading(path, read) && index == self.scene {
+            self.restart();
+        }
+    }
+
     pub(super) fn select_scene(&mut self, index: usize) {
         if index < self.scenes.len() && index != self.scene {
             self.scene = index;
-            self.scenes[index].ensure_loaded();
             self.restart();
         }
     }

@@ -286,6 +286,8 @@ pub fn status_parts(app: &App) -> Vec<String> {
         }
     } else if app.failure.is_some() {
         parts.push("failed".into());
+    } else if app.scene_to_read().is_some() {
+        parts.push("reading the scene…".into());
     } else if app.problem().is_none() {
         parts.push("rendering…".into());
     }

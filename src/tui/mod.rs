@@ -260,6 +260,9 @@ fn event_loop(
     // worker: the UI never traces a ray itself).
     let mut story_key = None;
     let mut sent_trace = None;
+    // Scene files are read in a thread of their own, one at a time.
+    let (read_tx, read_rx) = std::sync::mpsc::channel();
+    let mut reading: Option<(usize, PathBuf)> = None;
     // The student's warp routine, built and run in a thread of its own.
     let (warp_tx, warp_rx) = std::sync::mpsc::channel();
     let mut warp_sent = None;
@@ -309,6 +312,22 @@ fn event_loop(
                 app = update(app, Msg::Student(w.chapter, event));
                 dirty = true;
             }
+        }
+        if reading.is_none() {
+            if let Some((index, path)) = app.scene_to_read() {
+                reading = Some((index, path.clone()));
+                let tx = read_tx.clone();
+                std::thread::spawn(move || {
+                    let read = scenes::read_scene(&path);
+                    let _ = tx.send((index, path, read));
+                });
+                dirty = true;
+            }
+        }
+        while let Ok((index, path, read)) = read_rx.try_recv() {
+            reading = None;
+            app = update(app, Msg::SceneRead(index, path, read));
+            dirty = true;
         }
         let wanted = app.warp.as_ref().and_then(|w| w.student_requested);
         if wanted.is_some() && wanted != warp_sent {

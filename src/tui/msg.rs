@@ -88,6 +88,9 @@ pub enum Msg {
     WarpStep(i64),
     /// The warp view's routine again with new random numbers.
     WarpReseed,
+    /// A scene file the event loop read in a thread: the entry, the path,
+    /// what it read.
+    SceneRead(usize, std::path::PathBuf, super::scenes::Read),
     /// The student's routine drew (seed, its draws or why not).
     WarpStudent(u64, Result<crate::core::warp_test::Drawn, String>),
     /// Quit.

@@ -76,16 +76,29 @@ impl SceneEntry {
         }
     }
 
-    /// Reads the scene file if it has not been read yet.
+    /// Reads the scene file if it has not been read yet, here and now.
+    /// The terminal UI reads it in a thread instead ([`read_scene`] and
+    /// [`SceneEntry::finish_loading`]), so a heavy scene never freezes it.
     pub fn ensure_loaded(&mut self) {
-        if let Some(path) = self.pending.take() {
-            self.modified = modified(&path);
-            self.scene = Scene::load(&path).map(Arc::new).map_err(|e| e.to_string());
+        if let Some(path) = self.pending.clone() {
+            let read = read_scene(&path);
+            self.finish_loading(&path, read);
         }
     }
 
-    /// Reads the scene file again if it was edited (or deleted, or made)
-    /// since it was read; whether it did. The built-in scene and entries
+    /// Takes what [`read_scene`] read from `path`, if the entry still
+    /// waits for that file; whether it did.
+    pub fn finish_loading(&mut self, path: &Path, read: Read) -> bool {
+        if self.pending.as_deref() != Some(path) {
+            return false;
+        }
+        self.pending = None;
+        (self.scene, self.modified) = read;
+        true
+    }
+
+    /// Marks the entry to be read again if its file was edited (or
+    /// deleted, or made) since it was read; whether it was. The built-in scene and entries
     /// not read yet never change here.
     pub fn reload_if_changed(&mut self) -> bool {
         if self.pending.is_some() || self.source.starts_with("<built-in>") {
@@ -96,9 +109,20 @@ impl SceneEntry {
             return false;
         }
         self.pending = Some(path);
-        self.ensure_loaded();
+        self.scene = Err("reading the changed file…".into());
         true
     }
+}
+
+/// A scene file read: the scene or its error as text, and the file's
+/// modification time.
+pub type Read = (Result<Arc<Scene>, String>, Option<SystemTime>);
+
+/// Reads the scene file at `path` (in any thread).
+pub fn read_scene(path: &Path) -> Read {
+    let when = modified(path);
+    let scene = Scene::load(path).map(Arc::new).map_err(|e| e.to_string());
+    (scene, when)
 }
 
 /// A file's modification time, if it can be read.

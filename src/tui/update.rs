@@ -281,6 +281,7 @@ fn step(mut app: App, msg: Msg) -> App {
                 app.warp = Some(Box::new(w.reseeded()));
             }
         }
+        Msg::SceneRead(index, path, read) => app.scene_read(index, &path, read),
         Msg::WarpStudent(seed, drawn) => {
             if let Some(w) = app.warp.as_mut() {
                 w.student_drawn(seed, drawn);

@@ -329,6 +329,9 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
         frame.render_widget(note(format!("render failed: {e}"), Color::Red), inner);
     } else if let Some(film) = app.displayed_ref() {
         draw_film(app, frame, &film, inner);
+    } else if let Some((_, path)) = app.scene_to_read() {
+        let text = format!("reading {}…", escape(&path.display().to_string()));
+        frame.render_widget(note(text, Color::Reset), inner);
     } else {
         frame.render_widget(note("rendering…".into(), Color::Reset), inner);
     }

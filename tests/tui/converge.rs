@@ -395,7 +395,9 @@ fn the_flags_choose_the_chapter_the_scene_and_the_budget() {
         halfblocks: false,
         remember: None,
     };
-    let app = launch_app(&launch, false);
+    let mut app = launch_app(&launch, false);
+    // What the event loop does in a thread: read the chosen scene.
+    app.read_scene_now();
     let chapter = app.current_chapter().unwrap();
     assert_eq!(chapter.info().number, 6);
     assert_eq!(app.variant, chapter.info().default_variant);

@@ -1043,6 +1043,18 @@ fn an_edited_scene_file_is_reloaded() {
     let mut app = App::new(raystep::chapters::all(), scene_list(&dir), false);
     app = update(app, Msg::SwitchFocus);
     app = update(app, Msg::Down);
+    // Chosen, not read yet: the UI does not read files itself.
+    assert!(app.scene_to_read().is_some() && app.job().is_none());
+    let waiting = raystep::tui::view::status_line(&app).to_string();
+    assert!(waiting.contains("reading the scene…"), "{waiting}");
+    let generation = app.generation;
+    let (index, file) = app.scene_to_read().unwrap();
+    let read = raystep::tui::scenes::read_scene(&file);
+    app = update(app, Msg::SceneRead(index, file, read));
+    assert!(
+        app.job().is_some() && app.generation > generation,
+        "read: it renders"
+    );
     let width = |app: &App| {
         app.current_scene()
             .unwrap()
@@ -1067,10 +1079,11 @@ fn an_edited_scene_file_is_reloaded() {
         .unwrap();
     let generation = app.generation;
     assert!(app.reload_if_changed());
+    app.read_scene_now();
     assert_eq!(width(&app), 77);
     assert!(app.generation > generation, "the render restarts");
     assert!(
-        app.message.contains("reloaded") && app.message.contains("tet.toml"),
+        app.message.contains("reloading") && app.message.contains("tet.toml"),
         "{}",
         app.message
     );

@@ -447,6 +447,7 @@ fn a_refused_scene_is_marked_in_the_list_and_chapters_avoid_it() {
     while app.scene != sdf {
         app = update(app, Msg::Down);
     }
+    app.read_scene_now();
     // The worker reports what chapter 1 said when it started.
     let job = app.job().expect("not known yet: it is tried");
     let why = job
@@ -491,8 +492,9 @@ fn a_refused_scene_is_marked_in_the_list_and_chapters_avoid_it() {
 fn chapter_4_opens_on_an_sdf_scene_when_the_list_has_one() {
     let app = real_app();
     assert_eq!(app.current_scene().unwrap().stem(), "cornell-box");
-    let app = update(app, Msg::ChapterNumber(4));
+    let mut app = update(app, Msg::ChapterNumber(4));
     assert_eq!(app.current_scene().unwrap().stem(), "sdf-shapes");
+    app.read_scene_now();
     assert!(!app
         .current_scene()
         .unwrap()
