@@ -278,10 +278,12 @@ impl Report {
             if et.show_slopes {
                 s += "  log-log slope of error against time (— = fewer than 3 runs or under 4x in time):\n";
                 for series in et.series() {
+                    // Whether a slope can be trusted depends on the times
+                    // too (their span): hidden with them.
                     let k = match (et.slope(&series), times) {
+                        (_, Times::Hide) => "-".into(),
                         (Some(k), Times::Show) => format!("{k:.2}"),
-                        (Some(_), Times::Hide) => "-".into(),
-                        (None, _) => "—".into(),
+                        (None, Times::Show) => "—".into(),
                     };
                     s += &wrap(&format!("{series}: {k}"), "    ", "      ", COLUMNS);
                 }

@@ -24,6 +24,7 @@ pub mod keys;
 pub mod labels;
 pub mod last;
 pub mod layers;
+pub mod loading;
 pub mod msg;
 pub mod picture;
 pub mod scenes;
