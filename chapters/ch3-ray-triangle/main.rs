@@ -12,6 +12,7 @@ use std::process::ExitCode;
 
 use clap::Parser;
 use raystep::ch3_ray_triangle::bench::benchmark;
+use raystep::ch3_ray_triangle::hostile::hostile_builds;
 use raystep::ch3_ray_triangle::stage::DEFAULT;
 use raystep::core::run::{exit_code, run_with, CommonArgs};
 
@@ -22,7 +23,8 @@ struct Cli {
     common: CommonArgs,
     /// Print the throughput benchmark (BVH build, Mrays/s on 1 and 2
     /// threads, the stage against obvhs alone) instead of rendering; an
-    /// optional MESH keeps only the rows whose mesh name contains it.
+    /// optional MESH keeps only the rows whose mesh name contains it;
+    /// `--bench hostile` times the BVH builds on hostile geometry instead.
     #[arg(long, value_name = "MESH", num_args = 0..=1, default_missing_value = "")]
     bench: Option<String>,
 }
@@ -34,6 +36,10 @@ fn main() -> ExitCode {
     }
     let cli = Cli::parse();
     if let Some(only) = cli.bench {
+        if only == "hostile" {
+            print!("{}", hostile_builds(1.0).to_text());
+            return ExitCode::SUCCESS;
+        }
         let only = (!only.is_empty()).then_some(only.as_str());
         print!("{}", benchmark(only).to_text());
         return ExitCode::SUCCESS;

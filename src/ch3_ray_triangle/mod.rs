@@ -26,6 +26,7 @@ pub mod agreement;
 pub mod bench;
 pub mod bvh_robust;
 pub mod geometry;
+pub mod hostile;
 pub mod leaks;
 pub mod obvhs_bvh;
 pub mod ray;

@@ -132,3 +132,34 @@ fn a_normal_mesh_still_builds_and_agrees() {
     let tris = scene_triangles("[[objects]]\nshape = \"sphere\"\nsubdivisions = 4\n");
     check("unit sphere", &tris, true);
 }
+
+/// `ch3 --bench hostile` has every case of the issue (collapsed spheres
+/// away from the origin, 10^5 overlapping triangles at full size), and
+/// each builds into trees that answer like the naive loop; how long they
+/// take is the benchmark's to say, not a test's.
+#[test]
+fn the_hostile_build_benchmark_has_every_case_and_each_builds() {
+    use raystep::ch3_ray_triangle::hostile::{cases, hostile_builds};
+    let full: Vec<(String, usize)> = cases(1.0).into_iter().map(|(n, t)| (n, t.len())).collect();
+    assert!(full
+        .iter()
+        .any(|(n, _)| n.contains("collapsed sphere, r 1e-30 at (1000, 1000, 1000)")));
+    assert!(full
+        .iter()
+        .any(|(n, c)| n.contains("overlapping") && *c == 100_000));
+    assert!(full.iter().all(|(_, c)| *c >= 100_000), "{full:?}");
+    let table = hostile_builds(0.002);
+    let text = table.to_text();
+    assert_eq!(
+        text.matches(" yes").count() + text.matches(" NO").count(),
+        6,
+        "{text}"
+    );
+    for (name, tris) in cases(0.002) {
+        // At r 1e-30 the arithmetic underflows, and at 1e6 a radius of
+        // 1e-4 is below f32's spacing (the sphere is one point): nothing
+        // is hit. Every other case is hit by rays aimed at its middle.
+        let point = name.contains("1e-30") || name.contains("below f32's spacing");
+        check(&name, &tris, !point);
+    }
+}
