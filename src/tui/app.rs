@@ -97,6 +97,8 @@ pub struct App {
     pub graphics: super::graphics::Graphics,
     /// Inspect mode's cursor, a pixel of the image; `None` when off.
     pub inspect: Option<(u32, u32)>,
+    /// The preview's zoom: 1, 2, 4, … (see [`super::zoom`]).
+    pub zoom: u32,
     /// The picker for a graphics protocol; `None` draws half blocks.
     pub picker: Option<ratatui_image::picker::Picker>,
     /// The path traced from the inspected pixel (`t`), as the panel shows
@@ -173,6 +175,7 @@ impl App {
             graphics: super::graphics::Graphics::HalfBlocks,
             picker: None,
             inspect: None,
+            zoom: 1,
             trace: None,
             trace_requested: None,
             traces: 0,

@@ -183,8 +183,16 @@ pub fn draw_cursor(frame: &mut Frame, r: Rect, (x, y): (u32, u32), width: u32, h
     if r.width == 0 || r.height == 0 || x >= width || y >= height {
         return;
     }
-    let cx = r.x + (x as u64 * r.width as u64 / width as u64) as u16;
-    let cy = r.y + (y as u64 * r.height as u64 / height as u64) as u16;
+    // The cell a click would map back to this pixel ([`cell_to_pixel`]),
+    // when there is one (a zoomed picture has several cells per pixel);
+    // else the cell the pixel falls in.
+    let cell = |p: u32, cells: u16, pixels: u32| {
+        (0..cells)
+            .find(|c| cell_to_pixel(*c, cells, pixels) == p)
+            .unwrap_or((p as u64 * cells as u64 / pixels as u64) as u16)
+    };
+    let cx = r.x + cell(x, r.width, width);
+    let cy = r.y + cell(y, r.height, height);
     if let Some(cell) = frame.buffer_mut().cell_mut((cx, cy)) {
         cell.set_symbol("+").set_style(
             Style::default()

@@ -5,8 +5,16 @@ use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
 
 use super::app::{App, Msg};
 
-/// Every key, as (keys, what it does), in the order the help shows them.
+/// Every key, as (keys, what it does), in the order the help shows them:
+/// how to quit and close first, so a short terminal that cuts the list
+/// still shows them.
 pub const KEYS: &[(&str, &str)] = &[
+    ("q  Ctrl-C", "quit"),
+    (
+        "Esc",
+        "close what is open: help, path, inspect, grade, student",
+    ),
+    ("?", "show / hide this help"),
     ("↑ ↓  k j", "move in the focused list (chapters or scenes)"),
     ("Tab", "switch focus between chapters and scenes"),
     ("1 … 6", "jump to that chapter"),
@@ -53,12 +61,7 @@ pub const KEYS: &[(&str, &str)] = &[
         "w",
         "warp test: ch5's sampling routines against their pdf (χ²)",
     ),
-    ("?", "show / hide this help"),
-    (
-        "Esc",
-        "close what is open: help, path, inspect, grade, student",
-    ),
-    ("q  Ctrl-C", "quit"),
+    ("z  Z", "zoom in / out, around the inspect cursor (it pans)"),
 ];
 
 /// The message for a key press, if the key means anything.
@@ -133,6 +136,8 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         KeyCode::Char('x') => Msg::ToggleStudent,
         KeyCode::Char('s') => Msg::Save,
         KeyCode::Char('w') => Msg::ToggleWarp,
+        KeyCode::Char('z') => Msg::Zoom(1),
+        KeyCode::Char('Z') => Msg::Zoom(-1),
         KeyCode::Char('?') => Msg::ToggleHelp,
         _ => return None,
     })

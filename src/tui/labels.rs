@@ -190,6 +190,10 @@ pub fn preview_title_parts(app: &App) -> Vec<String> {
             parts.push(format!("{:.1}% of the light", 100.0 * share));
         }
     }
+    if app.zoom > 1 {
+        // Right after what is shown: a zoomed picture must say so.
+        parts.insert(1.min(parts.len()), format!("zoom {}x", app.zoom));
+    }
     if app.picker.is_some() {
         parts.push(app.graphics.name().to_string());
     }

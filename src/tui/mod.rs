@@ -37,6 +37,7 @@ pub mod update;
 pub mod view;
 pub mod warp;
 pub mod worker;
+pub mod zoom;
 
 use std::io::{IsTerminal, Stdout};
 use std::path::PathBuf;

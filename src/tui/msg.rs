@@ -80,6 +80,8 @@ pub enum Msg {
     Save,
     /// The save finished: the files written, or the error.
     Saved(Result<Vec<PathBuf>, String>),
+    /// Zoom the preview in (+1) or out (−1).
+    Zoom(i32),
     /// Show or hide the help overlay.
     ToggleHelp,
     /// Open or close the warp test view.

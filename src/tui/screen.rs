@@ -108,7 +108,8 @@ pub fn areas(app: &App, area: Rect) -> Areas {
 /// screen of `area`, if the cell shows the picture.
 pub fn pixel_at(app: &App, area: Rect, column: u16, row: u16) -> Option<(u32, u32)> {
     let film = app.snapshot.as_ref()?.views.first()?;
-    let (w, h) = (film.width, film.height);
+    let window = super::zoom::Window::of(app, film.width, film.height);
+    let (w, h) = (window.width, window.height);
     let preview = areas(app, area).preview;
     if preview.width < 3 || preview.height < 3 {
         return None;
@@ -124,5 +125,5 @@ pub fn pixel_at(app: &App, area: Rect, column: u16, row: u16) -> Option<(u32, u3
     }
     let x = super::inspect::cell_to_pixel(column - r.x, r.width, w);
     let y = super::inspect::cell_to_pixel(row - r.y, r.height, h);
-    Some((x, y))
+    Some(window.to_image((x, y)))
 }

@@ -265,6 +265,7 @@ fn step(mut app: App, msg: Msg) -> App {
             };
         }
         Msg::ToggleHelp => app.help = !app.help,
+        Msg::Zoom(step) => app.zoom = super::zoom::zoomed(app.zoom, step),
         Msg::ToggleWarp => {
             app.warp = match app.warp {
                 Some(_) => None,

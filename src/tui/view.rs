@@ -11,6 +11,7 @@
 //!  status line · progress gauge · message
 //! ```
 
+use super::zoom::{graphics_pixels, Window};
 use crate::core::text::{escape, escape_keep_newlines};
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Modifier, Style};
@@ -363,16 +364,21 @@ fn difference_legend(app: &App) -> Line<'static> {
 /// first and exposed after, so a redraw touches the full-size film once
 /// and allocates only the small one. (Exposure is a power of two, so for
 /// ordinary values the order changes no bit.)
-fn draw_film(app: &App, frame: &mut Frame, film: &Film, area: Rect) {
+fn draw_film(app: &App, frame: &mut Frame, full: &Film, area: Rect) {
+    let window = Window::of(app, full.width, full.height);
+    let cropped;
+    let film = if window.is_whole(full.width, full.height) {
+        full
+    } else {
+        cropped = window.crop(full);
+        &cropped
+    };
+    let cursor = app.inspect.and_then(|p| window.to_window(p));
     if let (Some(picker), true) = (&app.picker, app.color) {
         // Every pixel, through the terminal's graphics protocol, as large
-        // as fits (never enlarged).
+        // as fits (never enlarged), the cursor drawn into the pixels.
         let exposed = expose(film, app.display_exposure());
-        let bytes: Vec<u8> = exposed
-            .pixels
-            .iter()
-            .flat_map(|p| p.to_array().map(crate::core::film::encode_srgb))
-            .collect();
+        let bytes = graphics_pixels(&exposed, cursor);
         if let Some(img) = image::RgbImage::from_raw(film.width, film.height, bytes) {
             let resize = ratatui_image::Resize::Fit(None);
             if let Ok(protocol) = picker.new_protocol(img.into(), area, resize) {
@@ -396,7 +402,7 @@ fn draw_film(app: &App, frame: &mut Frame, film: &Film, area: Rect) {
         },
         r,
     );
-    if let Some(p) = app.inspect {
+    if let Some(p) = cursor {
         super::inspect::draw_cursor(frame, r, p, film.width, film.height);
     }
 }

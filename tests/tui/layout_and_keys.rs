@@ -483,7 +483,8 @@ fn keys_map_to_messages() {
         Some("ChapterNumber(3)")
     );
     assert_eq!(m(key(KeyCode::Down)).as_deref(), Some("Down"));
-    assert_eq!(m(key(KeyCode::Char('z'))), None);
+    assert_eq!(m(key(KeyCode::Char('z'))).as_deref(), Some("Zoom(1)"));
+    assert_eq!(m(key(KeyCode::Char('y'))), None);
 
     // With the help open, Esc closes it, and any other key only closes it.
     let app = update(app, Msg::ToggleHelp);

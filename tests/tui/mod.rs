@@ -9,3 +9,4 @@ mod inspect;
 mod layout_and_keys;
 mod sizes_and_keys;
 mod warp;
+mod zoom;
