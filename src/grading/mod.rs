@@ -59,6 +59,15 @@ pub fn run(ex: &Exercise) -> Outcome {
 /// Where the first panic of a check happened (`file:line:column`).
 static PANIC_AT: Mutex<Option<String>> = Mutex::new(None);
 
+/// A panic's message (`"panicked"` when it carries no text).
+pub fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
+    payload
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| payload.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "panicked".into())
+}
+
 /// Runs a check, catching `todo!()` and any other panic; a panic's
 /// message names the file and line it happened at (the student's file,
 /// from its chapter folder, when it was there).
@@ -85,11 +94,7 @@ pub fn run_check(check: fn() -> Check) -> Outcome {
         Ok(check) if check.passed() => Outcome::Passed(check),
         Ok(check) => Outcome::Failed(check),
         Err(payload) => {
-            let message = payload
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| payload.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "panicked".into());
+            let message = panic_text(&*payload);
             if message.starts_with("not yet implemented") {
                 return Outcome::NotImplemented;
             }

@@ -382,11 +382,7 @@ fn warp(warps: &Warps, id: &str, out: &Path, draws: &str, seed: &str) -> ExitCod
     match drawn {
         Ok(d) => println!("{WARP_HEADER}\n{}", d.to_text()),
         Err(payload) => {
-            let message = payload
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| payload.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "panicked".into());
+            let message = crate::grading::panic_text(&*payload);
             if message.starts_with("not yet implemented") {
                 println!("not_implemented");
             } else {
