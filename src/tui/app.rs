@@ -99,6 +99,8 @@ pub struct App {
     pub inspect: Option<(u32, u32)>,
     /// The preview's zoom: 1, 2, 4, … (see [`super::zoom`]).
     pub zoom: u32,
+    /// The pixel under the mouse, when it is over the picture.
+    pub hover: Option<(u32, u32)>,
     /// The picker for a graphics protocol; `None` draws half blocks.
     pub picker: Option<ratatui_image::picker::Picker>,
     /// The path traced from the inspected pixel (`t`), as the panel shows
@@ -176,6 +178,7 @@ impl App {
             picker: None,
             inspect: None,
             zoom: 1,
+            hover: None,
             trace: None,
             trace_requested: None,
             traces: 0,
@@ -399,26 +402,6 @@ impl App {
             self.opened[index] = true;
             self.restart();
         }
-    }
-
-    /// The scene chapter `index` opens on: the first time, the chapter's
-    /// own scene ([`ChapterInfo::scene`](crate::core::stage::ChapterInfo::scene))
-    /// when the list has it; never a scene the chapter is known to refuse
-    /// when another one may work (then the first such one). `None`: stay.
-    pub fn opening_scene(&self, index: usize) -> Option<usize> {
-        let first_time = !self.opened.get(index).copied().unwrap_or(false);
-        let own = self.chapters.get(index)?.info().scene;
-        if let (true, Some(name)) = (first_time, own) {
-            let found = self.scenes.iter().position(|e| e.stem() == name);
-            if let Some(i) = found.filter(|i| self.problem_in(index, *i).is_none()) {
-                return Some(i);
-            }
-        }
-        let refused_here = self.problem_in(index, self.scene).is_some();
-        if !refused_here {
-            return None;
-        }
-        (0..self.scenes.len()).find(|i| self.problem_in(index, *i).is_none())
     }
 
     /// Marks the current scene to be read again if its file was edited

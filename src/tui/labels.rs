@@ -332,9 +332,12 @@ pub fn status_line_fit(app: &App, width: u16) -> Line<'static> {
     Line::from(Span::raw(out))
 }
 
-/// The message line when there is no message: the keys that matter in
-/// the current mode.
+/// The message line when there is no message: the pixel under the mouse
+/// and its value, or the keys that matter in the current mode.
 pub fn key_hints(app: &App) -> String {
+    if let Some(text) = hover_text(app) {
+        return text;
+    }
     let mode = if app.trace.is_some() {
         "t next path · u d scroll · Esc close the path"
     } else if app.inspect.is_some() && app.traces_paths() {
@@ -353,4 +356,18 @@ pub fn key_hints(app: &App) -> String {
         "i inspect · s save"
     };
     format!("{mode} · ? help · q quit")
+}
+
+/// "pixel (x, y): r g b" for the pixel under the mouse, as the preview
+/// shows it (the view, layer and comparison selected, before exposure).
+pub fn hover_text(app: &App) -> Option<String> {
+    let (x, y) = app.hover?;
+    let film = app.displayed_ref()?;
+    (x < film.width && y < film.height).then(|| {
+        let v = film.get(x, y);
+        format!(
+            "pixel ({x}, {y}): {} (under the mouse; click to inspect)",
+            crate::core::format::rgb(v)
+        )
+    })
 }

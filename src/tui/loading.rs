@@ -39,4 +39,24 @@ impl App {
             self.restart();
         }
     }
+
+    /// The scene chapter `index` opens on: the first time, the chapter's
+    /// own scene ([`ChapterInfo::scene`](crate::core::stage::ChapterInfo::scene))
+    /// when the list has it; never a scene the chapter is known to refuse
+    /// when another one may work (then the first such one). `None`: stay.
+    pub fn opening_scene(&self, index: usize) -> Option<usize> {
+        let first_time = !self.opened.get(index).copied().unwrap_or(false);
+        let own = self.chapters.get(index)?.info().scene;
+        if let (true, Some(name)) = (first_time, own) {
+            let found = self.scenes.iter().position(|e| e.stem() == name);
+            if let Some(i) = found.filter(|i| self.problem_in(index, *i).is_none()) {
+                return Some(i);
+            }
+        }
+        let refused_here = self.problem_in(index, self.scene).is_some();
+        if !refused_here {
+            return None;
+        }
+        (0..self.scenes.len()).find(|i| self.problem_in(index, *i).is_none())
+    }
 }

@@ -437,6 +437,16 @@ fn event_loop(
                     );
                     dirty = true;
                 }
+                Event::Mouse(m) if m.kind == MouseEventKind::Moved => {
+                    app = update(
+                        app,
+                        Msg::Hover {
+                            column: m.column,
+                            row: m.row,
+                        },
+                    );
+                    dirty = true;
+                }
                 Event::Resize(width, height) => {
                     terminal.autoresize()?;
                     app = update(app, Msg::Resize(width, height));

@@ -80,6 +80,13 @@ pub enum Msg {
     Save,
     /// The save finished: the files written, or the error.
     Saved(Result<Vec<PathBuf>, String>),
+    /// The mouse moved to a cell.
+    Hover {
+        /// Its column.
+        column: u16,
+        /// Its row.
+        row: u16,
+    },
     /// Zoom the preview in (+1) or out (−1).
     Zoom(i32),
     /// Show or hide the help overlay.

@@ -300,7 +300,13 @@ fn step(mut app: App, msg: Msg) -> App {
                 app.table_scroll = scrolled(app.table_scroll, lines, table_room(&app));
             } else if a.panel.is_some_and(inside) {
                 app.panel_scroll = scrolled(app.panel_scroll, lines, panel_room(&app));
+            } else if inside(a.preview) {
+                // Over the picture the wheel zooms: up is in.
+                app.zoom = super::zoom::zoomed(app.zoom, -lines.signum());
             }
+        }
+        Msg::Hover { column, row } => {
+            app.hover = super::screen::pixel_at(&app, app.screen, column, row);
         }
         Msg::Resize(width, height) => {
             app.screen = ratatui::layout::Rect::new(0, 0, width, height);

@@ -96,3 +96,55 @@ fn a_graphics_protocol_gets_the_cursor_in_its_pixels() {
     let edge = graphics_pixels(&film, Some((0, 0)));
     assert_eq!(at(&edge, 31, 0), at(&plain, 31, 0));
 }
+
+#[test]
+fn the_mouse_reads_the_pixel_under_it_and_its_wheel_zooms_the_picture() {
+    let app = rendered();
+    let screen = app.screen;
+    let buffer = draw(&app, screen.width, screen.height);
+    let preview = raystep::tui::screen::areas(&app, screen).preview;
+    let (cx, cy) = (
+        preview.x + preview.width / 2,
+        preview.y + preview.height / 2,
+    );
+    let app = update(
+        app,
+        Msg::Hover {
+            column: cx,
+            row: cy,
+        },
+    );
+    let p = app.hover.expect("the middle of the picture is a pixel");
+    assert_eq!(pixel_at(&app, screen, cx, cy), Some(p));
+    let line = raystep::tui::view::key_hints(&app);
+    let v = app.displayed_ref().unwrap().get(p.0, p.1);
+    assert!(
+        line.starts_with(&format!("pixel ({}, {}): ", p.0, p.1)),
+        "{line}"
+    );
+    assert!(line.contains(&raystep::core::format::rgb(v)), "{line}");
+    drop(buffer);
+    // Off the picture: no readout, the keys again.
+    let app = update(app, Msg::Hover { column: 0, row: 0 });
+    assert_eq!(app.hover, None);
+    assert!(!raystep::tui::view::key_hints(&app).starts_with("pixel"));
+    // The wheel over the picture zooms, up in, down out.
+    let app = update(
+        app,
+        Msg::Wheel {
+            column: cx,
+            row: cy,
+            lines: -3,
+        },
+    );
+    assert_eq!(app.zoom, 2);
+    let app = update(
+        app,
+        Msg::Wheel {
+            column: cx,
+            row: cy,
+            lines: 3,
+        },
+    );
+    assert_eq!(app.zoom, 1);
+}
