@@ -1,7 +1,9 @@
 //! Keys → messages: one pure function, and the key table that the help
 //! overlay and the book show.
 
-use crossterm::event::{KeyCode, KeyEvent, KeyEventKind, KeyModifiers};
+use crossterm::event::{
+    KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
+};
 
 use super::app::{App, Msg};
 
@@ -139,6 +141,32 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         KeyCode::Char('z') => Msg::Zoom(1),
         KeyCode::Char('Z') => Msg::Zoom(-1),
         KeyCode::Char('?') => Msg::ToggleHelp,
+        _ => return None,
+    })
+}
+
+/// The message for a mouse event on a terminal of `size` (columns, rows):
+/// a left click, the wheel (3 lines a notch; up is negative) or a move.
+pub fn msg_for_mouse(m: MouseEvent, (width, height): (u16, u16)) -> Option<Msg> {
+    let (column, row) = (m.column, m.row);
+    Some(match m.kind {
+        MouseEventKind::Down(MouseButton::Left) => Msg::Click {
+            column,
+            row,
+            width,
+            height,
+        },
+        MouseEventKind::ScrollUp => Msg::Wheel {
+            column,
+            row,
+            lines: -3,
+        },
+        MouseEventKind::ScrollDown => Msg::Wheel {
+            column,
+            row,
+            lines: 3,
+        },
+        MouseEventKind::Moved => Msg::Hover { column, row },
         _ => return None,
     })
 }

@@ -45,9 +45,7 @@ use std::sync::OnceLock;
 use std::thread::ThreadId;
 use std::time::{Duration, Instant};
 
-use crossterm::event::{
-    self, DisableMouseCapture, EnableMouseCapture, Event, MouseButton, MouseEventKind,
-};
+use crossterm::event::{self, DisableMouseCapture, EnableMouseCapture, Event};
 use crossterm::execute;
 use crossterm::terminal::{
     disable_raw_mode, enable_raw_mode, EnterAlternateScreen, LeaveAlternateScreen,
@@ -403,49 +401,12 @@ fn event_loop(
                         dirty = true;
                     }
                 }
-                Event::Mouse(m) if m.kind == MouseEventKind::Down(MouseButton::Left) => {
+                Event::Mouse(m) => {
                     let size = terminal.size()?;
-                    app = update(
-                        app,
-                        Msg::Click {
-                            column: m.column,
-                            row: m.row,
-                            width: size.width,
-                            height: size.height,
-                        },
-                    );
-                    dirty = true;
-                }
-                Event::Mouse(m)
-                    if matches!(
-                        m.kind,
-                        MouseEventKind::ScrollUp | MouseEventKind::ScrollDown
-                    ) =>
-                {
-                    let lines = if m.kind == MouseEventKind::ScrollUp {
-                        -3
-                    } else {
-                        3
-                    };
-                    app = update(
-                        app,
-                        Msg::Wheel {
-                            column: m.column,
-                            row: m.row,
-                            lines,
-                        },
-                    );
-                    dirty = true;
-                }
-                Event::Mouse(m) if m.kind == MouseEventKind::Moved => {
-                    app = update(
-                        app,
-                        Msg::Hover {
-                            column: m.column,
-                            row: m.row,
-                        },
-                    );
-                    dirty = true;
+                    if let Some(msg) = keys::msg_for_mouse(m, (size.width, size.height)) {
+                        app = update(app, msg);
+                        dirty = true;
+                    }
                 }
                 Event::Resize(width, height) => {
                     terminal.autoresize()?;

@@ -148,3 +148,29 @@ fn the_mouse_reads_the_pixel_under_it_and_its_wheel_zooms_the_picture() {
     );
     assert_eq!(app.zoom, 1);
 }
+
+#[test]
+fn mouse_events_map_to_click_wheel_and_hover() {
+    use crossterm::event::{KeyModifiers, MouseButton, MouseEvent, MouseEventKind};
+    use raystep::tui::keys::msg_for_mouse;
+    let at = |kind| MouseEvent {
+        kind,
+        column: 7,
+        row: 3,
+        modifiers: KeyModifiers::NONE,
+    };
+    let m = |kind| msg_for_mouse(at(kind), (80, 24)).map(|m| format!("{m:?}"));
+    assert_eq!(
+        m(MouseEventKind::Down(MouseButton::Left)).as_deref(),
+        Some("Click { column: 7, row: 3, width: 80, height: 24 }")
+    );
+    assert_eq!(
+        m(MouseEventKind::ScrollUp).as_deref(),
+        Some("Wheel { column: 7, row: 3, lines: -3 }")
+    );
+    assert_eq!(
+        m(MouseEventKind::Moved).as_deref(),
+        Some("Hover { column: 7, row: 3 }")
+    );
+    assert_eq!(m(MouseEventKind::Down(MouseButton::Right)), None);
+}
