@@ -11,7 +11,7 @@
 //! table); an array grown or shrunk; a key and value from another seed
 //! added. The OBJ edits: a byte-order mark, `l` and `p` lines, huge and
 //! negative indices, concave polygons, NaN and infinite coordinates, empty
-//! and short faces, bad texture and normal indices, collapsed triangles
+//! and short faces, bad texture and normal indices, collapsed and overlapping triangles
 //! repeated, CRLF line endings.
 
 use arbitrary::{Result, Unstructured};
@@ -143,6 +143,14 @@ fn get_mut<'a>(mut v: &'a mut Value, path: &[Step]) -> Option<&'a mut Value> {
     Some(v)
 }
 
+fn same(a: &Step, b: &Step) -> bool {
+    match (a, b) {
+        (Step::Key(x), Step::Key(y)) => x == y,
+        (Step::Index(x), Step::Index(y)) => x == y,
+        _ => false,
+    }
+}
+
 fn name(path: &[Step]) -> String {
     let parts: Vec<String> = path
         .iter()
@@ -162,8 +170,9 @@ fn boundary(u: &mut Unstructured) -> Result<Value> {
         F(-0.0),
         F(1e-7),
         F(1e-30),
-        F(1e-40),  // subnormal as f32
-        F(5e-324), // subnormal as f64
+        F(f32::MIN_POSITIVE as f64), // the smallest normal f32
+        F(1e-40),                    // subnormal as f32
+        F(5e-324),                   // subnormal as f64
         F(1e18),
         F(1e20),
         F(3.5e38), // over f32::MAX
@@ -184,6 +193,9 @@ fn boundary(u: &mut Unstructured) -> Result<Value> {
         F(0.5),
         I(1),
         I(2),
+        I(5),
+        I(6),
+        I(7),
         I(65_536),
     ];
     Ok(values[u.choose_index(values.len())?].clone())
@@ -241,7 +253,7 @@ fn mutate(u: &mut Unstructured, root: &mut Value) -> Result<String> {
         .iter()
         .filter(|p| get(root, p).is_some_and(|v| matches!(v, Value::Integer(_) | Value::Float(_))))
         .collect();
-    let kind = u.int_in_range(0..=11u8)?;
+    let kind = u.int_in_range(0..=12u8)?;
     let path = match kind {
         0..=4 if !numbers.is_empty() => numbers[u.choose_index(numbers.len())?].clone(),
         _ => all[u.choose_index(all.len())?].clone(),
@@ -316,6 +328,30 @@ fn mutate(u: &mut Unstructured, root: &mut Value) -> Result<String> {
             let what = if grow { "grown" } else { "shrunk" };
             Ok(format!("{} {what} by {count}", name(&path[..n])))
         }
+        // Half the numbers of one table (an object, a light) at
+        // boundaries together: a tiny radius with many subdivisions.
+        10 => {
+            let n = (0..path.len())
+                .rev()
+                .find(|&n| matches!(get(root, &path[..n]), Some(Value::Table(_))))
+                .unwrap_or(0);
+            let inside: Vec<&Vec<Step>> = numbers
+                .iter()
+                .copied()
+                .filter(|p| p.len() > n && p[..n].iter().zip(&path[..n]).all(|(a, b)| same(a, b)))
+                .collect();
+            let mut what = Vec::new();
+            for p in inside {
+                if u.ratio(1u8, 2)? {
+                    let b = boundary(u)?;
+                    what.push(format!("{} = {b}", name(p)));
+                    if let Some(v) = get_mut(root, p) {
+                        *v = b;
+                    }
+                }
+            }
+            Ok(format!("together: {}", what.join(", ")))
+        }
         // A key and value from another seed added to a table on the path.
         _ => {
             let Some((key, value)) = donor(u)? else {
@@ -383,11 +419,24 @@ fn odd_obj(u: &mut Unstructured, edits: &mut Vec<String>) -> Result<String> {
             0 => bom = true,
             1 => crlf = true,
             2 => lines.insert(at, STAR.into()),
+            // The same triangle many times, collapsed to a point or not,
+            // away from the origin (up to the fuzzer's 1 MiB file limit).
             3 => {
-                let n = [10usize, 1000, 20_000][u.choose_index(3)?];
-                lines.push("v 5 5 5".into());
-                lines.extend(std::iter::repeat_n("f -1 -1 -1".to_string(), n));
-                edits.push(format!("obj: {n} collapsed triangles"));
+                let n = [10usize, 1000, 20_000, 80_000][u.choose_index(4)?];
+                let collapsed = u.ratio(1u8, 2)?;
+                lines.extend(["v 5 5 5", "v 6 5 5", "v 5 6 5"].map(String::from));
+                let face = if collapsed {
+                    "f -1 -1 -1"
+                } else {
+                    "f -3 -2 -1"
+                };
+                lines.extend(std::iter::repeat_n(face.to_string(), n));
+                let what = if collapsed {
+                    "collapsed"
+                } else {
+                    "overlapping"
+                };
+                edits.push(format!("obj: {n} {what} triangles"));
             }
             _ => {
                 let line = ODD_LINES[u.choose_index(ODD_LINES.len())?];
