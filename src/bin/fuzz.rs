@@ -143,8 +143,13 @@ fn main() -> ExitCode {
 }
 
 /// The command that replays case `index` of `seed`.
-fn replay(seed: u64, index: u64) -> String {
-    format!("cargo run --release --bin fuzz -- --structured --seed {seed} --case {index}")
+fn replay(seed: u64, index: u64, limits: &CaseLimits) -> String {
+    format!(
+        "cargo run --release --bin fuzz -- --structured --seed {seed} --case {index} \
+         --timeout {} --memory-mib {}",
+        limits.timeout.as_secs(),
+        limits.memory >> 20
+    )
 }
 
 /// `--structured`: one case shown and run (`one`), or `cases` cases from
@@ -218,7 +223,7 @@ fn run_structured(
         println!(
             "{}: case {i}: {detail}\n  replay: {}",
             class.label(),
-            replay(seed, *i)
+            replay(seed, *i, limits)
         );
     }
     if r.findings.is_empty() {

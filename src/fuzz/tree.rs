@@ -331,10 +331,14 @@ fn mutate(u: &mut Unstructured, root: &mut Value) -> Result<String> {
         // Half the numbers of one table (an object, a light) at
         // boundaries together: a tiny radius with many subdivisions.
         10 => {
-            let n = (0..path.len())
+            // The innermost table holding the node (or the node itself),
+            // never the whole scene.
+            let Some(n) = (1..=path.len())
                 .rev()
                 .find(|&n| matches!(get(root, &path[..n]), Some(Value::Table(_))))
-                .unwrap_or(0);
+            else {
+                return Ok(format!("{at}: in no table"));
+            };
             let inside: Vec<&Vec<Step>> = numbers
                 .iter()
                 .copied()
