@@ -12,10 +12,10 @@
 //! slow. Case `i` of seed `s` is the same input on every machine.
 //!
 //! `cargo run --release --bin fuzz -- --cases 1000000` runs many;
-//! `tests/project/fuzz.rs` runs a few thousand in CI. The structure-aware,
-//! out-of-process fuzzer that also sees hangs, memory blow-ups and signals
-//! is in [`tree`] (its inputs) and [`process`] (its runs).
+//! `tests/project/fuzz.rs` runs a few thousand in CI. The out-of-process
+//! fuzzer that also sees hangs, OOMs and signals: [`tree`], [`process`].
 
+mod obj;
 pub mod process;
 pub mod tree;
 
