@@ -12,7 +12,12 @@
 //! slow. Case `i` of seed `s` is the same input on every machine.
 //!
 //! `cargo run --release --bin fuzz -- --cases 1000000` runs many;
-//! `tests/project/fuzz.rs` runs a few thousand in CI.
+//! `tests/project/fuzz.rs` runs a few thousand in CI. The out-of-process
+//! fuzzer that also sees hangs, OOMs and signals: [`tree`], [`process`].
+
+mod obj;
+pub mod process;
+pub mod tree;
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::Arc;
@@ -322,6 +327,11 @@ fn mutate(rng: &mut Rng, text: &str, obj: bool) -> String {
 /// Loads `case` and, if it loads, renders it at 16x16 with its chapter:
 /// `Ok(())` rendered, `Err(message)` a clean error. Panics propagate.
 pub fn run_case(case: &Case) -> Result<(), String> {
+    render(case, 16, 16, 1)
+}
+
+/// [`run_case`] at `width` x `height` and `spp` samples per pixel.
+pub fn render(case: &Case, width: u32, height: u32, spp: u32) -> Result<(), String> {
     let obj = case.obj.clone();
     let read = move |rel: &str| -> Result<(String, String), (String, String)> {
         if rel.len() > 200 {
@@ -334,11 +344,11 @@ pub fn run_case(case: &Case) -> Result<(), String> {
         Ok((rel.to_string(), obj.clone()))
     };
     let scene = Scene::parse_with(&case.scene, "fuzz", "fuzz.toml", &read, &FUZZ_LIMITS)
-        .and_then(|s| s.with_resolution(16, 16))
+        .and_then(|s| s.with_resolution(width, height))
         .map_err(|e| e.to_string())?;
     let chapter = crate::chapters::all()[case.chapter];
     let settings = Settings {
-        spp: 1,
+        spp,
         ..Settings::default()
     };
     let mut render = chapter
