@@ -242,24 +242,14 @@ pub fn live_student_with(
         message,
     };
     let handshake = Handshake::new(opts.timeout);
-    let ran = run_limited(&mut cmd, &handshake.line(), Some(opts.timeout), cancel);
-    let (status, stdout, stderr) = match ran {
-        Err(e) => {
-            let m = format!("cannot start {}: {e}", built.runner.display());
-            return Err(LiveError::Build(m));
-        }
-        Ok(Ran::Cancelled) => return Err(LiveError::Build("cancelled".into())),
-        Ok(Ran::TooMuchOutput) => return Err(panicked(too_much_output())),
-        Ok(Ran::TimedOut { stderr }) => {
-            let (seconds, doing) = (opts.timeout.as_secs_f64(), last_progress(&stderr));
-            return Err(LiveError::TimedOut { id, seconds, doing });
-        }
-        Ok(Ran::Exited {
-            status,
-            stdout,
-            stderr,
-        }) => (status, stdout, stderr),
-    };
+    let (status, stdout, stderr) = run_student_code(
+        &mut cmd,
+        &handshake.line(),
+        (&built.runner, &id),
+        opts,
+        cancel,
+        &last_progress,
+    )?;
     let Some(verdict) = handshake.verdict_in(&stdout) else {
         return Err(panicked(crash_message(&status, &stderr)));
     };
@@ -284,6 +274,42 @@ pub fn live_student_with(
             reference,
         }),
         (Err(e), _) | (_, Err(e)) => Err(panicked(format!("cannot read the images: {e}"))),
+    }
+}
+
+/// Runs the student's code (`cmd`: the exercises' `runner`, for exercise
+/// `id`) under the time limit, handing it `input`: its exit status and
+/// output, or the [`LiveError`] for a runner that cannot start, a cancel,
+/// too much output or the time limit (`doing` says what it was doing, from
+/// what it wrote to standard error).
+fn run_student_code(
+    cmd: &mut Command,
+    input: &[u8],
+    (runner, id): (&Path, &str),
+    opts: &LiveOptions,
+    cancel: Option<&AtomicBool>,
+    doing: &dyn Fn(&str) -> String,
+) -> Result<(std::process::ExitStatus, String, String), LiveError> {
+    match run_limited(cmd, input, Some(opts.timeout), cancel) {
+        Err(e) => Err(LiveError::Build(format!(
+            "cannot start {}: {e}",
+            runner.display()
+        ))),
+        Ok(Ran::Cancelled) => Err(LiveError::Build("cancelled".into())),
+        Ok(Ran::TooMuchOutput) => Err(LiveError::Panicked {
+            id: id.to_string(),
+            message: too_much_output(),
+        }),
+        Ok(Ran::TimedOut { stderr }) => Err(LiveError::TimedOut {
+            id: id.to_string(),
+            seconds: opts.timeout.as_secs_f64(),
+            doing: doing(&stderr),
+        }),
+        Ok(Ran::Exited {
+            status,
+            stdout,
+            stderr,
+        }) => Ok((status, stdout, stderr)),
     }
 }
 
@@ -319,24 +345,10 @@ pub fn live_warp(
         id: id.to_string(),
         message,
     };
-    let (status, stdout, stderr) = match run_limited(&mut cmd, b"", Some(opts.timeout), cancel) {
-        Err(e) => {
-            let m = format!("cannot start {}: {e}", built.runner.display());
-            return Err(LiveError::Build(m));
-        }
-        Ok(Ran::Cancelled) => return Err(LiveError::Build("cancelled".into())),
-        Ok(Ran::TooMuchOutput) => return Err(panicked(too_much_output())),
-        Ok(Ran::TimedOut { .. }) => {
-            let (id, seconds) = (id.to_string(), opts.timeout.as_secs_f64());
-            let doing = "drawing directions".to_string();
-            return Err(LiveError::TimedOut { id, seconds, doing });
-        }
-        Ok(Ran::Exited {
-            status,
-            stdout,
-            stderr,
-        }) => (status, stdout, stderr),
-    };
+    let (status, stdout, stderr) =
+        run_student_code(&mut cmd, b"", (&built.runner, id), opts, cancel, &|_| {
+            "drawing directions".to_string()
+        })?;
     let first = stdout.lines().next().unwrap_or("");
     if first == "not_implemented" {
         let (id, file) = (id.to_string(), ex.file.to_string());
