@@ -51,7 +51,10 @@
 //! are named `a_from_b`. Colour is linear RGB until an 8-bit image is
 //! written.
 
-#![forbid(unsafe_code)]
+// No unsafe code, except in the one module that calls the fast engine's
+// vector code compiled for the CPU's instructions
+// (`ch6_global_illumination::fast::simd`, which gives its safety argument).
+#![deny(unsafe_code)]
 #![warn(missing_docs)]
 
 pub mod ch1_projection;

@@ -12,6 +12,7 @@ use std::process::ExitCode;
 use clap::{Parser, ValueEnum};
 use raystep::ch6_global_illumination::annotate::annotate_references;
 use raystep::ch6_global_illumination::bench;
+use raystep::ch6_global_illumination::fast::Engine;
 use raystep::ch6_global_illumination::integrator::{roulette_cannot_end, Strategy, SAFETY_BOUNCES};
 use raystep::ch6_global_illumination::reference::{make_reference, reference_dir};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
@@ -39,6 +40,14 @@ enum SamplerArg {
     Sobol,
 }
 
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum EngineArg {
+    /// The eight-wide BVH with SIMD chosen at run time (same images).
+    Fast,
+    /// The lesson's four-wide BVH.
+    Readable,
+}
+
 #[derive(Parser)]
 #[command(
     name = "ch6",
@@ -63,6 +72,9 @@ struct Cli {
     /// path before it gathers light of this bounce count k or more.
     #[arg(long, default_value_t = 1)]
     rr_after: u32,
+    /// Which engine traces the paths; both make the same images.
+    #[arg(long, value_enum, default_value = "fast")]
+    engine: EngineArg,
     /// Samples per pixel in one progressive pass.
     #[arg(long, default_value_t = 4)]
     spp_per_pass: u32,
@@ -108,6 +120,10 @@ fn main() -> ExitCode {
     stage.path.max_bounces = (!cli.unlimited).then_some(cli.max_bounces);
     stage.path.rr_min_bounce = cli.rr_after;
     stage.spp_per_pass = cli.spp_per_pass;
+    stage.engine = match cli.engine {
+        EngineArg::Fast => Engine::Fast,
+        EngineArg::Readable => Engine::Readable,
+    };
     stage.layers = !cli.final_only;
     stage.spp_figure = cli.spp_figure;
     exit_code(run(&stage, &cli))

@@ -30,10 +30,14 @@ use crate::core::sampling::Sampler;
 use crate::scene::Scene;
 
 use super::accumulate::downsample;
+use super::fast::bvh8::Bvh8;
+use super::fast::simd::Level;
+use super::fast::Engine;
 use super::integrator::PathSettings;
 use super::reference::StoredReference;
 use super::sampler::SamplerKind;
-use super::studies::render;
+use super::studies::render_with;
+use crate::ch5_reflection::world::RayQueries;
 
 /// Runs the benchmark and returns its table.
 pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table> {
@@ -51,6 +55,7 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
             path.rr_min_bounce,
         ),
         &[
+            "engine",
             "sampler",
             "seconds",
             "paths/s",
@@ -62,8 +67,11 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
             "noise from variance",
         ],
     );
-    for sampler in [SamplerKind::Independent, SamplerKind::Sobol] {
-        let (acc, secs) = render(&scene, path, sampler, spp, 1, false);
+    let runs = [Engine::Fast, Engine::Readable]
+        .into_iter()
+        .flat_map(|e| [(e, SamplerKind::Independent), (e, SamplerKind::Sobol)]);
+    for (engine, sampler) in runs {
+        let (acc, secs) = render_with(engine, &scene, path, sampler, (spp, 1), false);
         let var = acc.variance_of_mean();
         let noise = (var
             .pixels
@@ -87,6 +95,7 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
         let (full, full_eff) = e(full);
         let (down, down_eff) = e(down);
         t.row(vec![
+            engine.name().into(),
             sampler.name().into(),
             format!("{secs:.3}"),
             format_number(acc.stats.paths as f64 / secs),
@@ -160,9 +169,20 @@ pub fn query_bench() -> Table {
     let (bounce, shadow) = vertex_rays(&world, &scene);
     let mut t = Table::new(
         "ray queries on the Cornell box, one thread, million queries per second (best of 5)",
-        &["query", "rays", "binary BVH (ch3)", "wide BVH (ch6)"],
+        &[
+            "query",
+            "rays",
+            "binary BVH (ch3)",
+            "4-wide BVH",
+            "8-wide BVH (fast)",
+        ],
     );
-    let (Some(bvh), Some(wide)) = (Bvh::build(&world.triangles.tris), &world.wide) else {
+    let tris = &world.triangles.tris;
+    let (Some(bvh), Some(wide), Some(eight)) = (
+        Bvh::build(tris),
+        &world.wide,
+        Bvh8::build(tris, Level::detect()),
+    ) else {
         return t;
     };
     let x = Intersector::Watertight;
@@ -177,12 +197,16 @@ pub fn query_bench() -> Table {
         rate(nb, &|| {
             count(&bounce, |r| wide.closest(r, f32::INFINITY).is_some())
         }),
+        rate(nb, &|| {
+            count(&bounce, |r| eight.closest(r, f32::INFINITY).is_some())
+        }),
     ]);
     t.row(vec![
         "occlusion (shadow rays)".into(),
         ns.to_string(),
         rate(ns, &|| count(&shadow, |(r, d)| bvh.occluded(r, *d, x))),
         rate(ns, &|| count(&shadow, |(r, d)| wide.occluded(r, *d))),
+        rate(ns, &|| count(&shadow, |(r, d)| eight.occluded(r, *d))),
     ]);
     t
 }

@@ -23,6 +23,7 @@
 pub mod accumulate;
 pub mod annotate;
 pub mod bench;
+pub mod fast;
 pub mod figures;
 pub mod inspect;
 pub mod integrator;

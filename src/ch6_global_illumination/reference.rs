@@ -28,10 +28,10 @@ use crate::core::film::{write_atomically, Film};
 use crate::scene::Scene;
 
 use super::accumulate::{downsample, Accumulator};
+use super::fast::Engine;
 use super::integrator::PathSettings;
 use super::sampler::SamplerKind;
 use crate::ch1_projection::camera::Camera;
-use crate::ch5_reflection::world::World;
 use std::time::Instant;
 
 /// Where references live.
@@ -380,7 +380,7 @@ pub fn make_reference(
     let spp = spp.max(1);
     let t = Instant::now();
     let mut acc = Accumulator::new(scene.camera.width, scene.camera.height, false);
-    let world = World::new(scene);
+    let world = Engine::default().world(scene);
     let chunk = 256;
     while acc.samples < spp {
         let count = chunk.min(spp - acc.samples);

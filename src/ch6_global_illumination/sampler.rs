@@ -89,7 +89,8 @@ impl PathSampler {
                 let group = d / 4;
                 if group != self.group {
                     self.group = group;
-                    self.group_values = sobol_group(self.sample, self.pixel_scramble, group);
+                    self.group_values =
+                        sobol_group_by_table(self.sample, self.pixel_scramble, group);
                 }
                 self.group_values[(d % 4) as usize]
             }
@@ -119,8 +120,58 @@ impl PathSampler {
 /// scramble seed `pixel_scramble`: the four dimensions of the crate's first
 /// set, scrambled with a seed of their own per group.
 // ANCHOR: sobol_group
-fn sobol_group(sample: u64, pixel_scramble: u64, group: u64) -> [f32; 4] {
+pub fn sobol_group(sample: u64, pixel_scramble: u64, group: u64) -> [f32; 4] {
     let scramble = mix64(pixel_scramble ^ group) as u32;
     sobol_burley::sample_4d(sample as u32, 0, scramble).map(|u| u.min(1.0 - f32::EPSILON / 2.0))
 }
 // ANCHOR_END: sobol_group
+
+/// [`sobol_group`] with its slowest step, the Sobol point itself (up to
+/// sixteen XORs of direction numbers, one per bit of the shuffled index),
+/// replaced by two table lookups: the point is linear in the index's bits,
+/// so the XOR of the directions of each byte's bits can be stored once for
+/// all 256 values of each of the index's two bytes. Every other step is
+/// the crate's own, so the numbers are the same bits as [`sobol_group`]'s
+/// (a test compares them); this is what the path tracer calls.
+pub fn sobol_group_by_table(sample: u64, pixel_scramble: u64, group: u64) -> [f32; 4] {
+    use sobol_burley::parts::{hash, hash_int4, owen_scramble_int4_rev, owen_scramble_rev, Int4};
+    let seed = mix64(pixel_scramble ^ group) as u32;
+    // The crate's `sample_4d(sample, 0, seed)`, step by step.
+    let rev = owen_scramble_rev((sample as u32).reverse_bits(), hash(seed ^ 0x79c68e4a));
+    let t = byte_tables();
+    let (hi, lo) = (
+        t[0][(rev >> 24) as usize],
+        t[1][((rev >> 16) & 0xff) as usize],
+    );
+    let sobol: Int4 = std::array::from_fn::<u32, 4, _>(|d| hi[d] ^ lo[d]).into();
+    let s = seed.wrapping_mul(0x9c8f2d3b);
+    let scramble: Int4 = [
+        s ^ 0x912f69ba,
+        s ^ 0x174f18ab,
+        s ^ 0x691e72ca,
+        s ^ 0xb40cc1b8,
+    ]
+    .into();
+    owen_scramble_int4_rev(sobol, hash_int4(scramble))
+        .reverse_bits()
+        .to_f32_norm()
+        .map(|u| u.min(1.0 - f32::EPSILON / 2.0))
+}
+
+/// For each byte of a reversed sample index (bits 31..24, then 23..16;
+/// the crate uses the top 16), the XOR of the direction numbers of its set
+/// bits, for all 256 values: dimension set 0's Sobol point of any index is
+/// then `t[0][top byte] ^ t[1][next byte]`.
+fn byte_tables() -> &'static [[[u32; 4]; 256]; 2] {
+    static TABLES: std::sync::OnceLock<Box<[[[u32; 4]; 256]; 2]>> = std::sync::OnceLock::new();
+    TABLES.get_or_init(|| {
+        let mut t = Box::new([[[0u32; 4]; 256]; 2]);
+        for (k, table) in t.iter_mut().enumerate() {
+            for (b, entry) in table.iter_mut().enumerate() {
+                let rev = (b as u32) << (24 - 8 * k);
+                *entry = sobol_burley::parts::sobol_int4_rev(rev, 0).into();
+            }
+        }
+        t
+    })
+}

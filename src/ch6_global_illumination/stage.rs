@@ -16,6 +16,7 @@ use std::time::Instant;
 use glam::Vec3;
 
 use super::accumulate::{downsample, Accumulator};
+use super::fast::Engine;
 use super::figures::{layer_figures, spp_figure, strategy_plot};
 use super::inspect::table_lines;
 use super::integrator::{PathSettings, Strategy};
@@ -97,6 +98,8 @@ pub struct GlobalIllumination {
     pub sampler: SamplerKind,
     /// Samples per pixel in one progressive pass.
     pub spp_per_pass: u32,
+    /// Which engine traces the paths (the same images either way).
+    pub engine: Engine,
     /// Keep per-bounce layers (off when only the final image is wanted).
     pub layers: bool,
     /// Also write the spp-doubling figure up to this many samples per
@@ -115,6 +118,7 @@ pub const DEFAULT: GlobalIllumination = GlobalIllumination {
     },
     sampler: SamplerKind::Sobol,
     spp_per_pass: 4,
+    engine: Engine::Fast,
     layers: true,
     spp_figure: None,
 };
@@ -337,7 +341,7 @@ impl Render for PathTracingRender {
         let started = *self.started.get_or_insert_with(Instant::now);
         if self.world.is_none() {
             let t = Instant::now();
-            let world = World::new(&self.scene);
+            let world = self.stage.engine.world(&self.scene);
             self.world = Some((world, t.elapsed().as_secs_f64()));
         }
         let spp = self.settings.spp.max(1);

@@ -7,19 +7,20 @@ use std::time::Instant;
 use glam::Vec3;
 
 use crate::ch1_projection::camera::Camera;
-use crate::ch5_reflection::world::World;
 use crate::core::film::Film;
 use crate::core::format::{format_number, format_seconds};
 use crate::core::report::{ErrorTime, Measurement, Table};
 use crate::scene::Scene;
 
 use super::accumulate::Accumulator;
+use super::fast::Engine;
 use super::integrator::{PathSettings, Strategy};
 use super::reference::StoredReference;
 use super::sampler::SamplerKind;
 use super::scenes;
 
-/// Renders `spp` samples per pixel of `scene` in one go: (sums, seconds).
+/// Renders `spp` samples per pixel of `scene` in one go with the default
+/// engine: (sums, seconds).
 pub fn render(
     scene: &Scene,
     path: &PathSettings,
@@ -28,9 +29,22 @@ pub fn render(
     seed: u64,
     layers: bool,
 ) -> (Accumulator, f64) {
-    let world = World::new(scene);
-    let mut acc = Accumulator::new(scene.camera.width, scene.camera.height, layers);
+    render_with(Engine::default(), scene, path, sampler, (spp, seed), layers)
+}
+
+/// [`render`] with `engine` (`spp_seed`: samples per pixel and seed); the
+/// time includes building the engine's world.
+pub fn render_with(
+    engine: Engine,
+    scene: &Scene,
+    path: &PathSettings,
+    sampler: SamplerKind,
+    (spp, seed): (u32, u64),
+    layers: bool,
+) -> (Accumulator, f64) {
     let t = Instant::now();
+    let world = engine.world(scene);
+    let mut acc = Accumulator::new(scene.camera.width, scene.camera.height, layers);
     acc.add_samples(&world, &Camera::of(scene), path, sampler, seed, spp);
     (acc, t.elapsed().as_secs_f64())
 }
@@ -46,7 +60,7 @@ fn series(
     max_spp: u32,
     error_of: &dyn Fn(&Accumulator) -> f64,
 ) {
-    let world = World::new(scene);
+    let world = Engine::default().world(scene);
     let camera = Camera::of(scene);
     let mut acc = Accumulator::new(camera.width, camera.height, false);
     let mut seconds = 0.0;

@@ -1,6 +1,7 @@
 //! Chapter 6: global illumination, its exercises, and its terminal preview.
 
 mod exercises;
+mod fast;
 mod global_illumination;
 mod ladder;
 mod path_record;

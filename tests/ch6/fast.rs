@@ -1,0 +1,145 @@
+//! The fast engine (`ch6_global_illumination::fast`): the same bytes as
+//! the readable engine on every shipped scene, on every SIMD path this CPU
+//! has; the table-driven Sobol numbers equal the crate's; `unsafe` code
+//! only in the one module that argues for it.
+
+use std::path::Path;
+
+use raystep::ch1_projection::camera::Camera;
+use raystep::ch6_global_illumination::accumulate::Accumulator;
+use raystep::ch6_global_illumination::fast::simd::Level;
+use raystep::ch6_global_illumination::fast::Engine;
+use raystep::ch6_global_illumination::integrator::{PathSettings, Strategy};
+use raystep::ch6_global_illumination::sampler::{sobol_group, sobol_group_by_table, SamplerKind};
+use raystep::scene::Scene;
+
+fn render(
+    scene: &Scene,
+    engine: Engine,
+    level: Level,
+    path: &PathSettings,
+    sampler: SamplerKind,
+) -> Accumulator {
+    let world = engine.world_at(scene, level);
+    let camera = Camera::of(scene);
+    let mut acc = Accumulator::new(camera.width, camera.height, true);
+    acc.add_samples(&world, &camera, path, sampler, 3, 2);
+    acc
+}
+
+fn shipped(name: &str) -> Scene {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    Scene::load(&root.join("scenes").join(name))
+        .unwrap()
+        .with_resolution(40, 30)
+        .unwrap()
+}
+
+#[test]
+fn both_engines_make_the_same_bytes_on_every_scene_and_simd_path() {
+    let levels: Vec<Level> = Level::ALL.into_iter().filter(|l| l.available()).collect();
+    assert!(levels.contains(&Level::Portable));
+    let mut scenes = vec![Scene::builtin().with_resolution(40, 40).unwrap()];
+    for name in [
+        "cornell-glass.toml",
+        "lights-gallery.toml",
+        "bunny.toml",
+        "brdf-row.toml",
+        "interpenetrating.toml",
+        "sdf-lit.toml",
+        "tetrahedron.toml",
+    ] {
+        scenes.push(shipped(name));
+    }
+    let mut compared = 0;
+    for scene in &scenes {
+        for (strategy, sampler) in [
+            (Strategy::Mis, SamplerKind::Sobol),
+            (Strategy::Bsdf, SamplerKind::Independent),
+        ] {
+            let path = PathSettings {
+                strategy,
+                ..PathSettings::default()
+            };
+            let readable = render(scene, Engine::Readable, Level::Portable, &path, sampler);
+            assert!(readable.stats.rays > 0, "{}", scene.name);
+            for &level in &levels {
+                let fast = render(scene, Engine::Fast, level, &path, sampler);
+                let what = format!(
+                    "{} {} {} on {}",
+                    scene.name,
+                    strategy.name(),
+                    sampler.name(),
+                    level.name()
+                );
+                assert_eq!(fast.sum, readable.sum, "{what}");
+                assert_eq!(fast.sum_sq, readable.sum_sq, "{what}");
+                assert_eq!(fast.layers, readable.layers, "{what}");
+                assert_eq!(fast.stats, readable.stats, "{what}");
+                compared += 1;
+            }
+        }
+    }
+    assert_eq!(compared, scenes.len() * 2 * levels.len());
+}
+
+#[test]
+fn a_level_the_cpu_lacks_falls_back_to_portable() {
+    let scene = Scene::builtin();
+    for level in Level::ALL {
+        let world = Engine::Fast.world_at(&scene, level);
+        assert!(world.queries.is_some());
+    }
+    assert!(Level::Portable.available());
+}
+
+#[test]
+fn the_table_driven_sobol_numbers_are_the_crates() {
+    for sample in (0..4096u64).chain([65_535]) {
+        for (pixel_scramble, group) in [
+            (0u64, 0u64),
+            (0x1234_5678_9abc, 3),
+            (u64::MAX, 17),
+            (42, 1 << 40),
+        ] {
+            let a = sobol_group(sample, pixel_scramble, group);
+            let b = sobol_group_by_table(sample, pixel_scramble, group);
+            assert_eq!(
+                a.map(f32::to_bits),
+                b.map(f32::to_bits),
+                "sample {sample} group {group}"
+            );
+        }
+    }
+}
+
+#[test]
+fn unsafe_code_lives_in_one_module() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut found = Vec::new();
+    let mut stack = vec![src.clone()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let p = entry.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|e| e == "rs") {
+                let text = std::fs::read_to_string(&p).unwrap();
+                let code: String = text
+                    .lines()
+                    .filter(|l| !l.trim_start().starts_with("//"))
+                    .collect::<Vec<_>>()
+                    .join("\n");
+                if code.contains("unsafe {") || code.contains("unsafe fn") {
+                    found.push(p.strip_prefix(&src).unwrap().display().to_string());
+                }
+            }
+        }
+    }
+    assert_eq!(
+        found,
+        vec!["ch6_global_illumination/fast/simd.rs".to_string()]
+    );
+    let lib = std::fs::read_to_string(src.join("lib.rs")).unwrap();
+    assert!(lib.contains("#![deny(unsafe_code)]"));
+}
