@@ -30,18 +30,18 @@ use super::simd::{self, Level};
 /// Children per node and triangles per leaf.
 pub const W: usize = 8;
 /// Most triangles in a leaf.
-const LEAF_SIZE: usize = 4;
+const LEAF_SIZE: usize = 8;
 /// A child reference with this bit set is a leaf.
 const LEAF: u32 = 1 << 31;
 /// How much a box's far distance is stretched (as the readable tree).
-const FAR_STRETCH: f32 = 1.0 + 4.0 * gamma(3);
+pub(super) const FAR_STRETCH: f32 = 1.0 + 4.0 * gamma(3);
 
 /// Eight children's boxes by axis; an unused slot has an empty box.
 #[derive(Clone, Copy, Debug)]
 #[repr(C, align(32))]
-struct Node8 {
-    min: [[f32; W]; 3],
-    max: [[f32; W]; 3],
+pub(super) struct Node8 {
+    pub(super) min: [[f32; W]; 3],
+    pub(super) max: [[f32; W]; 3],
     child: [u32; W],
 }
 
@@ -49,8 +49,32 @@ struct Node8 {
 /// triangles hold NaN, which every test rejects.
 #[derive(Clone, Copy, Debug)]
 #[repr(C, align(32))]
-struct Leaf8 {
-    p: [[[f32; W]; 3]; 3],
+pub(super) struct Leaf8 {
+    pub(super) p: [[[f32; W]; 3]; 3],
+}
+
+/// The two lane tests a traversal needs, as one instruction set computes
+/// them: [`Lanes`] in plain Rust, or [`super::simd`]'s AVX2 code. Every
+/// implementation gives the same bits.
+pub(super) trait Kernel {
+    /// [`enter`]: the children a ray enters and where.
+    fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]);
+    /// [`leaf_test`]: the leaf's hits and the lanes left to check.
+    fn leaf(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8;
+}
+
+/// The portable kernel: the lane loops above.
+pub(super) struct Lanes;
+
+impl Kernel for Lanes {
+    #[inline(always)]
+    fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
+        enter(r, node, t_max)
+    }
+    #[inline(always)]
+    fn leaf(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
+        leaf_test(r, leaf, t_max)
+    }
 }
 
 /// The eight-wide tree.
@@ -73,13 +97,13 @@ pub struct RayData<'a> {
     wt: WatertightRay<'a>,
     /// Origin, 1/direction (tiny components kept finite), and per axis
     /// whether the direction is negative.
-    o: [f32; 3],
-    inv: [f32; 3],
-    negative: [bool; 3],
+    pub(super) o: [f32; 3],
+    pub(super) inv: [f32; 3],
+    pub(super) negative: [bool; 3],
     /// Watertight permutation and shear.
-    k: [usize; 3],
-    ko: [f32; 3],
-    s: [f32; 3],
+    pub(super) k: [usize; 3],
+    pub(super) ko: [f32; 3],
+    pub(super) s: [f32; 3],
 }
 
 impl<'a> RayData<'a> {
@@ -137,7 +161,7 @@ fn mask(b: [bool; W]) -> u32 {
 /// children entered and where the ray enters each.
 // ANCHOR: slab8
 #[inline(always)]
-fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
+pub(super) fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
     let mut t_near = [0.0f32; W];
     let mut t_far = [t_max; W];
     for axis in 0..3 {
@@ -159,12 +183,12 @@ fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
 // ANCHOR_END: slab8
 
 /// What [`leaf_test`] found: hit and check masks, and t, u, v per lane.
-struct Hits8 {
-    hit: u32,
-    check: u32,
-    t: [f32; W],
-    u: [f32; W],
-    v: [f32; W],
+pub(super) struct Hits8 {
+    pub(super) hit: u32,
+    pub(super) check: u32,
+    pub(super) t: [f32; W],
+    pub(super) u: [f32; W],
+    pub(super) v: [f32; W],
 }
 
 /// The watertight test on a leaf's eight triangles in (0, t_max), lane
@@ -173,7 +197,7 @@ struct Hits8 {
 /// compiler turns into vector instructions.
 // ANCHOR: leaf8
 #[inline(always)]
-fn leaf_test(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
+pub(super) fn leaf_test(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
     let (px, py, pz) = (&leaf.p[r.k[0]], &leaf.p[r.k[1]], &leaf.p[r.k[2]]);
     let [ox, oy, oz] = r.ko;
     let [sx, sy, sz] = r.s;
@@ -392,7 +416,12 @@ impl Bvh8 {
     /// The closest hit in (0, t_max), `stack` holding at least
     /// [`Bvh8::stack_size`] entries.
     #[inline(always)]
-    pub fn closest_with(&self, r: &RayData, t_max: f32, stack: &mut [(u32, f32)]) -> Option<Hit> {
+    pub(super) fn closest_with<K: Kernel>(
+        &self,
+        r: &RayData,
+        t_max: f32,
+        stack: &mut [(u32, f32)],
+    ) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         let mut t_best = t_max;
         let mut depth = 0;
@@ -400,7 +429,7 @@ impl Bvh8 {
         loop {
             if at & LEAF == 0 {
                 let node = &self.nodes[at as usize];
-                let (mut entered, t_near) = enter(r, node, t_best);
+                let (mut entered, t_near) = K::enter(r, node, t_best);
                 if entered != 0 {
                     let mut order = [(0u32, 0f32); W];
                     let mut count = 0;
@@ -425,7 +454,7 @@ impl Bvh8 {
                 }
             } else {
                 let l = (at & !LEAF) as usize;
-                if let Some((hit, lane)) = self.leaf_closest(r, l, t_best) {
+                if let Some((hit, lane)) = self.leaf_closest::<K>(r, l, t_best) {
                     t_best = hit.t;
                     best = Some(Hit {
                         triangle: self.original[l * W + lane],
@@ -448,8 +477,8 @@ impl Bvh8 {
     }
 
     #[inline(always)]
-    fn leaf_closest(&self, r: &RayData, l: usize, t_max: f32) -> Option<(Hit, usize)> {
-        let h = leaf_test(r, &self.leaves[l], t_max);
+    fn leaf_closest<K: Kernel>(&self, r: &RayData, l: usize, t_max: f32) -> Option<(Hit, usize)> {
+        let h = K::leaf(r, &self.leaves[l], t_max);
         let mut best: Option<(Hit, usize)> = None;
         let mut hits = h.hit;
         while hits != 0 {
@@ -494,13 +523,18 @@ impl Bvh8 {
 
     /// Whether anything is hit in (0, t_max).
     #[inline(always)]
-    pub fn occluded_with(&self, r: &RayData, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
+    pub(super) fn occluded_with<K: Kernel>(
+        &self,
+        r: &RayData,
+        t_max: f32,
+        stack: &mut [(u32, f32)],
+    ) -> bool {
         let mut depth = 0;
         let mut at = self.root;
         loop {
             if at & LEAF == 0 {
                 let node = &self.nodes[at as usize];
-                let (mut entered, _) = enter(r, node, t_max);
+                let (mut entered, _) = K::enter(r, node, t_max);
                 while entered != 0 {
                     let lane = entered.trailing_zeros() as usize;
                     entered &= entered - 1;
@@ -509,7 +543,7 @@ impl Bvh8 {
                 }
             } else {
                 let l = (at & !LEAF) as usize;
-                let h = leaf_test(r, &self.leaves[l], t_max);
+                let h = K::leaf(r, &self.leaves[l], t_max);
                 if h.hit != 0 || (h.check != 0 && self.any_checked(r, l, h.check, t_max)) {
                     return true;
                 }

@@ -16,7 +16,7 @@
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Hit;
 
-use super::bvh8::{Bvh8, RayData};
+use super::bvh8::{Bvh8, Kernel, Lanes, RayData};
 
 /// A set of vector instructions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -112,7 +112,7 @@ pub fn closest(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
         // SAFETY: as above.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { closest_avx2(bvh, ray, t_max) },
-        _ => closest_lanes(bvh, ray, t_max),
+        _ => closest_lanes::<Lanes>(bvh, ray, t_max),
     }
 }
 
@@ -126,7 +126,7 @@ pub fn occluded(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
         // SAFETY: as in `closest`.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { occluded_avx2(bvh, ray, t_max) },
-        _ => occluded_lanes(bvh, ray, t_max),
+        _ => occluded_lanes::<Lanes>(bvh, ray, t_max),
     }
 }
 
@@ -135,47 +135,213 @@ pub fn occluded(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
 const ON_STACK: usize = 64;
 
 #[inline(always)]
-fn closest_lanes(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
+fn closest_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
     let r = RayData::new(ray);
     if bvh.stack_size() <= ON_STACK {
         let mut stack = [(0u32, 0f32); ON_STACK];
-        bvh.closest_with(&r, t_max, &mut stack)
+        bvh.closest_with::<K>(&r, t_max, &mut stack)
     } else {
-        bvh.closest_with(&r, t_max, &mut vec![(0, 0.0); bvh.stack_size()])
+        bvh.closest_with::<K>(&r, t_max, &mut vec![(0, 0.0); bvh.stack_size()])
     }
 }
 
 #[inline(always)]
-fn occluded_lanes(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
+fn occluded_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
     let r = RayData::new(ray);
     if bvh.stack_size() <= ON_STACK {
         let mut stack = [(0u32, 0f32); ON_STACK];
-        bvh.occluded_with(&r, t_max, &mut stack)
+        bvh.occluded_with::<K>(&r, t_max, &mut stack)
     } else {
-        bvh.occluded_with(&r, t_max, &mut vec![(0, 0.0); bvh.stack_size()])
+        bvh.occluded_with::<K>(&r, t_max, &mut vec![(0, 0.0); bvh.stack_size()])
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn closest_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    closest_lanes(bvh, ray, t_max)
+    closest_lanes::<avx::Avx>(bvh, ray, t_max)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn closest_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    closest_lanes(bvh, ray, t_max)
+    closest_lanes::<avx::Avx>(bvh, ray, t_max)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn occluded_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    occluded_lanes(bvh, ray, t_max)
+    occluded_lanes::<avx::Avx>(bvh, ray, t_max)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn occluded_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    occluded_lanes(bvh, ray, t_max)
+    occluded_lanes::<avx::Avx>(bvh, ray, t_max)
+}
+
+/// The two lane tests written with AVX intrinsics, eight lanes in one
+/// register, in exactly the operations and order of the portable loops in
+/// [`super::bvh8`] (so the same bits; `max`/`min` take the new value first,
+/// so a NaN keeps the old one, as `f32::max` does).
+///
+/// SAFETY (for every `unsafe` block below): these functions are only
+/// reached from the `#[target_feature(enable = "avx2,...")]` entry points
+/// above, which run only on CPUs that have AVX2 (`Level::available`); every
+/// load reads a whole `[f32; 8]` that the reference proves is there.
+#[cfg(target_arch = "x86_64")]
+mod avx {
+    use std::arch::x86_64::*;
+
+    use super::super::bvh8::{Hits8, Kernel, Leaf8, Node8, RayData, FAR_STRETCH, W};
+    use crate::ch3_ray_triangle::triangle::gamma;
+
+    pub(super) struct Avx;
+
+    #[target_feature(enable = "avx2,fma")]
+    #[inline]
+    fn load(a: &[f32; W]) -> __m256 {
+        // SAFETY: see the module.
+        unsafe { _mm256_loadu_ps(a.as_ptr()) }
+    }
+
+    #[target_feature(enable = "avx2,fma")]
+    #[inline]
+    fn store(v: __m256) -> [f32; W] {
+        let mut a = [0.0f32; W];
+        // SAFETY: see the module.
+        unsafe { _mm256_storeu_ps(a.as_mut_ptr(), v) };
+        a
+    }
+
+    impl Kernel for Avx {
+        #[inline(always)]
+        fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
+            // SAFETY: see the module.
+            unsafe { enter_avx(r, node, t_max) }
+        }
+
+        #[inline(always)]
+        fn leaf(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
+            // SAFETY: see the module.
+            unsafe { leaf_avx(r, leaf, t_max) }
+        }
+    }
+
+    #[target_feature(enable = "avx2,fma")]
+    #[inline]
+    fn enter_avx(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
+        {
+            let mut t_near = _mm256_setzero_ps();
+            let mut t_far = _mm256_set1_ps(t_max);
+            for axis in 0..3 {
+                let (near, far) = match r.negative[axis] {
+                    true => (&node.max[axis], &node.min[axis]),
+                    false => (&node.min[axis], &node.max[axis]),
+                };
+                let (o, inv) = (_mm256_set1_ps(r.o[axis]), _mm256_set1_ps(r.inv[axis]));
+                t_near = _mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(load(near), o), inv), t_near);
+                t_far = _mm256_min_ps(_mm256_mul_ps(_mm256_sub_ps(load(far), o), inv), t_far);
+            }
+            let stretched = _mm256_mul_ps(t_far, _mm256_set1_ps(FAR_STRETCH));
+            let entered = _mm256_cmp_ps::<_CMP_LE_OQ>(t_near, stretched);
+            (_mm256_movemask_ps(entered) as u32, store(t_near))
+        }
+    }
+
+    #[target_feature(enable = "avx2,fma")]
+    #[inline]
+    fn leaf_avx(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
+        let (px, py, pz) = (&leaf.p[r.k[0]], &leaf.p[r.k[1]], &leaf.p[r.k[2]]);
+        let [ox, oy, oz] = r.ko.map(|x| _mm256_set1_ps(x));
+        let [sx, sy, sz] = r.s.map(|x| _mm256_set1_ps(x));
+        let (add, sub, mul) = (_mm256_add_ps, _mm256_sub_ps, _mm256_mul_ps);
+        let zero = _mm256_setzero_ps();
+        let z = [0, 1, 2].map(|j| sub(load(&pz[j]), oz));
+        let x = [0, 1, 2].map(|j| add(sub(load(&px[j]), ox), mul(sx, z[j])));
+        let y = [0, 1, 2].map(|j| add(sub(load(&py[j]), oy), mul(sy, z[j])));
+        let e0 = sub(mul(x[1], y[2]), mul(y[1], x[2]));
+        let e1 = sub(mul(x[2], y[0]), mul(y[2], x[0]));
+        let e2 = sub(mul(x[0], y[1]), mul(y[0], x[1]));
+        let or3 = |a, b, c| _mm256_or_ps(_mm256_or_ps(a, b), c);
+        let any_zero = or3(
+            _mm256_cmp_ps::<_CMP_EQ_OQ>(e0, zero),
+            _mm256_cmp_ps::<_CMP_EQ_OQ>(e1, zero),
+            _mm256_cmp_ps::<_CMP_EQ_OQ>(e2, zero),
+        );
+        let neg = or3(
+            _mm256_cmp_ps::<_CMP_LT_OQ>(e0, zero),
+            _mm256_cmp_ps::<_CMP_LT_OQ>(e1, zero),
+            _mm256_cmp_ps::<_CMP_LT_OQ>(e2, zero),
+        );
+        let pos = or3(
+            _mm256_cmp_ps::<_CMP_GT_OQ>(e0, zero),
+            _mm256_cmp_ps::<_CMP_GT_OQ>(e1, zero),
+            _mm256_cmp_ps::<_CMP_GT_OQ>(e2, zero),
+        );
+        let det = add(add(e0, e1), e2);
+        let zs = z.map(|zj| mul(zj, sz));
+        let ts = add(add(mul(e0, zs[0]), mul(e1, zs[1])), mul(e2, zs[2]));
+        let (lo, hi) = (mul(zero, det), mul(_mm256_set1_ps(t_max), det));
+        let and = _mm256_and_ps;
+        let in_neg = and(
+            and(
+                _mm256_cmp_ps::<_CMP_LT_OQ>(det, zero),
+                _mm256_cmp_ps::<_CMP_LT_OQ>(ts, lo),
+            ),
+            _mm256_cmp_ps::<_CMP_GE_OQ>(ts, hi),
+        );
+        let in_pos = and(
+            and(
+                _mm256_cmp_ps::<_CMP_GT_OQ>(det, zero),
+                _mm256_cmp_ps::<_CMP_GT_OQ>(ts, lo),
+            ),
+            _mm256_cmp_ps::<_CMP_LE_OQ>(ts, hi),
+        );
+        let sign = _mm256_set1_ps(-0.0);
+        let abs = |v| _mm256_andnot_ps(sign, v);
+        let finite = _mm256_cmp_ps::<_CMP_LT_OQ>(abs(det), _mm256_set1_ps(f32::INFINITY));
+        let candidate = _mm256_andnot_ps(and(neg, pos), and(finite, _mm256_or_ps(in_neg, in_pos)));
+        let candidates = _mm256_movemask_ps(candidate) as u32;
+        let zeros = _mm256_movemask_ps(any_zero) as u32;
+        let mut h = Hits8 {
+            hit: 0,
+            check: zeros,
+            t: [0.0; W],
+            u: [0.0; W],
+            v: [0.0; W],
+        };
+        if candidates == 0 {
+            return h;
+        }
+        let max = |a, b| _mm256_max_ps(b, a);
+        let max3 = |v: [__m256; 3]| max(max(abs(v[0]), abs(v[1])), abs(v[2]));
+        let g = |n| _mm256_set1_ps(gamma(n));
+        let inv_det = _mm256_div_ps(_mm256_set1_ps(1.0), det);
+        let t = mul(ts, inv_det);
+        let (max_zt, max_xt, max_yt) = (max3(zs), max3(x), max3(y));
+        let delta_z = mul(g(3), max_zt);
+        let delta_x = mul(g(5), add(max_xt, max_zt));
+        let delta_y = mul(g(5), add(max_yt, max_zt));
+        let delta_e = mul(
+            _mm256_set1_ps(2.0),
+            add(
+                add(mul(mul(g(2), max_xt), max_yt), mul(delta_y, max_xt)),
+                mul(delta_x, max_yt),
+            ),
+        );
+        let max_e = max3([e0, e1, e2]);
+        let inner = add(
+            add(mul(mul(g(3), max_e), max_zt), mul(delta_e, max_zt)),
+            mul(delta_z, max_e),
+        );
+        let delta_t = mul(mul(_mm256_set1_ps(3.0), inner), abs(inv_det));
+        let trusted = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_GT_OQ>(t, delta_t)) as u32;
+        h.hit = candidates & trusted & !zeros;
+        h.check = zeros | (candidates & !trusted);
+        h.t = store(t);
+        h.u = store(mul(e1, inv_det));
+        h.v = store(mul(e2, inv_det));
+        h
+    }
 }
