@@ -351,7 +351,7 @@ pub fn key_hints(app: &App) -> String {
     } else if app.paused {
         "paused: space resumes"
     } else if app.shows_compare() {
-        "i inspect · r compare · s save"
+        "i inspect · r compare · f flip · s save"
     } else {
         "i inspect · s save"
     };

@@ -4,6 +4,7 @@
 
 mod converge;
 mod end_to_end;
+mod flip;
 mod graphics;
 mod inspect;
 mod layout_and_keys;
