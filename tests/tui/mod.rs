@@ -8,6 +8,7 @@ mod flip;
 mod graphics;
 mod inspect;
 mod layout_and_keys;
+mod painter;
 mod sizes_and_keys;
 mod warp;
 mod zoom;
