@@ -83,11 +83,12 @@ pub fn base64(bytes: &[u8]) -> String {
     s
 }
 
-/// `image` as PNG (fast compression: it is sent, not stored).
+/// `image` as PNG. Adaptive filters: a row repeated by the zoom filters
+/// to zeros ("up"), so an enlarged picture costs about what the film does.
 fn png(image: &image::RgbImage) -> io::Result<Vec<u8>> {
     use image::codecs::png::{CompressionType, FilterType, PngEncoder};
     let mut bytes = Vec::new();
-    let encoder = PngEncoder::new_with_quality(&mut bytes, CompressionType::Fast, FilterType::Sub);
+    let encoder = PngEncoder::new_with_quality(&mut bytes, CompressionType::Default, FilterType::Adaptive);
     image
         .write_with_encoder(encoder)
         .map_err(io::Error::other)?;
@@ -131,8 +132,14 @@ impl Painter {
         Ok(())
     }
 
-    /// Brings the screen to `next` (none: no picture), writing to `out`.
+    /// Brings the screen to `next` (none: no picture), writing to `out`,
+    /// and flushes it (stdout holds what it is given until a newline).
     pub fn paint(&mut self, out: &mut dyn Write, next: Option<&Request>, now: Instant) -> io::Result<()> {
+        self.change(out, next, now)?;
+        out.flush()
+    }
+
+    fn change(&mut self, out: &mut dyn Write, next: Option<&Request>, now: Instant) -> io::Result<()> {
         self.pending = false;
         let Some(r) = next else {
             if let Some(s) = &mut self.shown {
@@ -151,7 +158,7 @@ impl Painter {
                     goto(out, r.cells)?;
                     kitty(out, &format!("a=p,i={},p=1,C=1,q=2", s.id), "")?;
                     (s.placed, s.cells) = (true, r.cells);
-                    return out.flush();
+                    return Ok(());
                 }
                 if s.cells == r.cells {
                     return Ok(());
@@ -217,7 +224,7 @@ impl Painter {
             placed: true,
         });
         self.sent_at = Some(now);
-        out.flush()
+        Ok(())
     }
 }
 

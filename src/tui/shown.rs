@@ -3,8 +3,9 @@
 //! protocol, as a picture placed over cells the view leaves blank
 //! ([`request`] says what the [`super::painter`] sends after the frame).
 //!
-//! A picture fills its box: enlarged by a whole factor where that fits
-//! (every pixel a sharp square), shrunk to fit otherwise, and centred
+//! A picture fills its box: enlarged by a whole factor where that fills
+//! most of it (every pixel a sharp square), scaled to fill otherwise, and
+//! centred
 //! ([`place`]). Its cells reach to whole sixel bands (six pixels) below
 //! it, so a terminal that paints the last band whole stays inside them. While the help or the warp
 //! test covers the screen ([`covered`]), the picture is drawn with half
@@ -96,8 +97,9 @@ pub fn pad6(n: u32) -> u32 {
 }
 
 /// The placement of a `width` x `height` picture in `area` with cells of
-/// `font` pixels: the largest whole zoom that fits, or shrunk to fit when
-/// even 1x does not; centred.
+/// `font` pixels, centred: the largest whole zoom that fits when it fills
+/// at least four fifths of the room it could (every pixel a sharp
+/// square), else scaled to fill (shrunk when even 1x does not fit).
 pub fn place(area: Rect, width: u32, height: u32, font: (u16, u16)) -> Placement {
     let (fw, fh) = (font.0.max(1) as u32, font.1.max(1) as u32);
     let (w, h) = (width.max(1), height.max(1));
@@ -105,7 +107,12 @@ pub fn place(area: Rect, width: u32, height: u32, font: (u16, u16)) -> Placement
     // Whole sixel bands only.
     let room_h = area.height as u32 * fh / 6 * 6;
     let s = (room_w as f64 / w as f64).min(room_h as f64 / h as f64);
-    let s = if s >= 1.0 { s.floor() } else { s };
+    // A whole factor unless it would leave a fifth of the room empty.
+    let s = if s >= 1.0 && s.floor() >= 0.8 * s {
+        s.floor()
+    } else {
+        s
+    };
     let pw = ((w as f64 * s).floor() as u32).clamp(1, room_w.max(1));
     let ph = ((h as f64 * s).floor() as u32).clamp(1, room_h.max(1));
     let cols = (pw.div_ceil(fw) as u16).clamp(1, area.width.max(1));

@@ -240,3 +240,40 @@ fn in_graphics_mode_the_pictures_cells_are_left_blank_centred_at_every_size() {
         assert!(w < 160 || cells.contains('▀'), "{w}x{h}");
     }
 }
+
+/// A line-buffered terminal (stdout) shows only what was flushed.
+#[derive(Default)]
+struct Buffered {
+    held: Vec<u8>,
+    shown: Vec<u8>,
+}
+
+impl std::io::Write for Buffered {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.held.extend_from_slice(buf);
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.shown.append(&mut self.held);
+        Ok(())
+    }
+}
+
+#[test]
+fn every_change_reaches_the_terminal_at_once() {
+    // Hiding kitty's picture under the help was held in stdout's buffer
+    // until the next frame: the picture stayed over the help.
+    let mut p = Painter::new(Graphics::Kitty, 3);
+    p.interval = Duration::ZERO;
+    let mut out = Buffered::default();
+    let at = Rect::new(1, 1, 4, 2);
+    let t = Instant::now();
+    for next in [Some(req(at, 1)), None, Some(req(at, 1)), Some(req(at, 2))] {
+        p.paint(&mut out, next.as_ref(), t).unwrap();
+        assert!(out.held.is_empty(), "flushed");
+    }
+    let shown = text(&out.shown);
+    for command in ["a=T,f=100,i=3,", "a=d,d=i,i=3,", "a=p,i=3,", "a=T,f=100,i=4,", "a=d,d=I,i=3,"] {
+        assert!(shown.contains(command), "{command}");
+    }
+}
