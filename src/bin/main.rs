@@ -110,9 +110,13 @@ fn main() -> ExitCode {
             chapter: cli.chapter,
             scene: cli.scene.clone(),
             spp: cli.spp,
-            graphics: if cli.halfblocks { "halfblocks" } else { &cli.graphics }
-                .parse()
-                .unwrap_or_default(),
+            graphics: if cli.halfblocks {
+                "halfblocks"
+            } else {
+                &cli.graphics
+            }
+            .parse()
+            .unwrap_or_default(),
             stats: cli.stats,
             remember: raystep::tui::last::path(&|k| std::env::var(k).ok()),
         };

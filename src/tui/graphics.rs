@@ -17,6 +17,8 @@
 
 use std::str::FromStr;
 
+pub use super::query::Answer;
+
 /// How the preview is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Graphics {
@@ -74,19 +76,6 @@ impl FromStr for Choice {
             _ => return Err("one of auto, kitty, sixel, iterm2, halfblocks".into()),
         })
     }
-}
-
-/// What the terminal answered to the query.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct Answer {
-    /// It answered kitty's graphics query with OK.
-    pub kitty: bool,
-    /// Its primary device attributes list 4 (sixel graphics).
-    pub sixel: bool,
-    /// Its cell size in pixels (width, height), from `CSI 16 t`.
-    pub font: Option<(u16, u16)>,
-    /// Its name and version (XTVERSION), such as `kitty(0.26.5)`.
-    pub version: Option<String>,
 }
 
 /// The protocol chosen, the cell size it places pictures with, and why a
@@ -211,4 +200,15 @@ pub fn font_size() -> Option<(u16, u16)> {
     (w.width > 0 && w.height > 0 && w.columns > 0 && w.rows > 0)
         .then(|| (w.width / w.columns, w.height / w.rows))
         .filter(|(x, y)| *x > 0 && *y > 0)
+}
+
+/// The protocol for `choice` in this terminal: asks it (once, before the
+/// UI reads keys) when [`should_query`] says so.
+pub fn pick(choice: Choice) -> Chosen {
+    let var = |k: &str| std::env::var(k).ok();
+    let font = font_size();
+    let answer = should_query(choice, &var, font)
+        .then(super::query::ask)
+        .flatten();
+    choose(choice, &var, font, answer.as_ref())
 }

@@ -194,7 +194,7 @@ pub fn preview_title_parts(app: &App) -> Vec<String> {
         // Right after what is shown: a zoomed picture must say so.
         parts.insert(1.min(parts.len()), format!("zoom {}x", app.zoom));
     }
-    if super::shown::graphics_font(app).is_some() {
+    if super::placement::graphics_font(app).is_some() {
         parts.push(app.graphics.name().to_string());
     }
     parts

@@ -28,12 +28,13 @@ pub mod loading;
 pub mod msg;
 pub mod painter;
 pub mod picture;
+pub mod placement;
 pub mod query;
 pub mod scenes;
 pub mod screen;
 pub mod shown;
-pub mod stats;
 pub mod state;
+pub mod stats;
 pub mod student;
 pub mod student_update;
 pub mod target;
@@ -43,7 +44,7 @@ pub mod warp;
 pub mod worker;
 pub mod zoom;
 
-use std::io::{IsTerminal, Stdout};
+use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::sync::OnceLock;
 use std::thread::ThreadId;
@@ -241,36 +242,24 @@ fn run_app(
         crossterm::cursor::Hide
     )?;
     // Asked once, before crossterm reads keys.
-    let var = |k: &str| std::env::var(k).ok();
-    let font = graphics::font_size();
-    let answer = graphics::should_query(launch.graphics, &var, font)
-        .then(query::ask)
-        .flatten();
-    let chosen = graphics::choose(launch.graphics, &var, font, answer.as_ref());
+    let chosen = graphics::pick(launch.graphics);
     (app.graphics, app.font) = (chosen.graphics, chosen.font);
     if let Some(note) = chosen.note {
         app.message = note;
     }
     let out = stats::Counting::new(std::io::stdout());
-    let count = out.count();
+    let mut rates = stats::Rates::new(Instant::now(), out.count());
     let mut terminal = Terminal::new(CrosstermBackend::new(out))?;
     terminal.clear()?;
-    let mut rates = launch
-        .stats
-        .then(|| stats::Rates::new(Instant::now(), 0));
-    let last = event_loop(&mut terminal, app, rates.as_mut(), &count);
-    *report = rates.map(|r| r.report(count.get()));
+    let last = event_loop(&mut terminal, app, &mut rates);
+    *report = launch.stats.then(|| rates.report());
     last
 }
 
-/// The terminal the UI draws on: stdout, its bytes counted.
-pub type Term = Terminal<CrosstermBackend<stats::Counting<Stdout>>>;
-
 fn event_loop(
-    terminal: &mut Term,
+    terminal: &mut stats::Term,
     mut app: App,
-    mut rates: Option<&mut stats::Rates>,
-    count: &stats::Count,
+    rates: &mut stats::Rates,
 ) -> std::io::Result<Option<last::Last>> {
     let worker = Worker::spawn();
     let size = terminal.size()?;
@@ -297,12 +286,9 @@ fn event_loop(
     let mut warp_sent = None;
     // When the current scene's file was last looked at for edits.
     let mut checked = Instant::now();
-    let first_id = std::process::id().wrapping_mul(2_654_435_761) >> 8;
-    let mut painter = painter::Painter::new(app.graphics, first_id);
+    let mut painter = painter::Painter::for_process(app.graphics);
     loop {
-        if let Some(r) = rates.as_deref_mut() {
-            r.tick(Instant::now(), count.get());
-        }
+        rates.tick(Instant::now());
         if checked.elapsed() >= Duration::from_secs(1) {
             checked = Instant::now();
             dirty |= app.reload_if_changed();
@@ -454,9 +440,7 @@ fn event_loop(
         while let Ok(progress) = worker.results.try_recv() {
             app = update(app, Msg::Progress(progress));
             dirty = true;
-            if let Some(r) = rates.as_deref_mut() {
-                r.busy();
-            }
+            rates.busy();
         }
     }
 }

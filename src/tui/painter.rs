@@ -71,7 +71,9 @@ pub fn base64(bytes: &[u8]) -> String {
     const ABC: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     let mut s = String::with_capacity(bytes.len().div_ceil(3) * 4);
     for c in bytes.chunks(3) {
-        let n = (c[0] as u32) << 16 | (*c.get(1).unwrap_or(&0) as u32) << 8 | *c.get(2).unwrap_or(&0) as u32;
+        let n = (c[0] as u32) << 16
+            | (*c.get(1).unwrap_or(&0) as u32) << 8
+            | *c.get(2).unwrap_or(&0) as u32;
         for i in 0..4 {
             if i <= c.len() {
                 s.push(ABC[(n >> (18 - 6 * i) & 63) as usize] as char);
@@ -88,7 +90,8 @@ pub fn base64(bytes: &[u8]) -> String {
 fn png(image: &image::RgbImage) -> io::Result<Vec<u8>> {
     use image::codecs::png::{CompressionType, FilterType, PngEncoder};
     let mut bytes = Vec::new();
-    let encoder = PngEncoder::new_with_quality(&mut bytes, CompressionType::Default, FilterType::Adaptive);
+    let encoder =
+        PngEncoder::new_with_quality(&mut bytes, CompressionType::Default, FilterType::Adaptive);
     image
         .write_with_encoder(encoder)
         .map_err(io::Error::other)?;
@@ -106,6 +109,15 @@ impl Painter {
             pending: false,
             interval: Duration::from_millis(200),
         }
+    }
+
+    /// A painter whose kitty ids start from a number of this process's
+    /// own (another program in the same kitty window uses others).
+    pub fn for_process(graphics: Graphics) -> Painter {
+        Painter::new(
+            graphics,
+            std::process::id().wrapping_mul(2_654_435_761) >> 8,
+        )
     }
 
     /// Whether new pixels are waiting for [`Painter::interval`] to pass
@@ -134,12 +146,22 @@ impl Painter {
 
     /// Brings the screen to `next` (none: no picture), writing to `out`,
     /// and flushes it (stdout holds what it is given until a newline).
-    pub fn paint(&mut self, out: &mut dyn Write, next: Option<&Request>, now: Instant) -> io::Result<()> {
+    pub fn paint(
+        &mut self,
+        out: &mut dyn Write,
+        next: Option<&Request>,
+        now: Instant,
+    ) -> io::Result<()> {
         self.change(out, next, now)?;
         out.flush()
     }
 
-    fn change(&mut self, out: &mut dyn Write, next: Option<&Request>, now: Instant) -> io::Result<()> {
+    fn change(
+        &mut self,
+        out: &mut dyn Write,
+        next: Option<&Request>,
+        now: Instant,
+    ) -> io::Result<()> {
         self.pending = false;
         let Some(r) = next else {
             if let Some(s) = &mut self.shown {
@@ -165,7 +187,9 @@ impl Painter {
                 }
             } else if s.cells == r.cells
                 && (s.placed || self.graphics != Graphics::Kitty)
-                && self.sent_at.is_some_and(|t| now.duration_since(t) < self.interval)
+                && self
+                    .sent_at
+                    .is_some_and(|t| now.duration_since(t) < self.interval)
             {
                 // New pixels too soon after the last: later.
                 self.pending = true;

@@ -13,7 +13,18 @@
 
 use std::time::{Duration, Instant};
 
-use super::graphics::Answer;
+/// What the terminal answered to the query.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Answer {
+    /// It answered kitty's graphics query with OK.
+    pub kitty: bool,
+    /// Its primary device attributes list 4 (sixel graphics).
+    pub sixel: bool,
+    /// Its cell size in pixels (width, height), from `CSI 16 t`.
+    pub font: Option<(u16, u16)>,
+    /// Its name and version (XTVERSION), such as `kitty(0.26.5)`.
+    pub version: Option<String>,
+}
 
 /// The longest start-up waits for the terminal's answers.
 pub const TIMEOUT: Duration = Duration::from_millis(1000);
@@ -72,7 +83,10 @@ pub fn ask() -> Option<Answer> {
             break;
         }
         let ms = PollTimeout::try_from(left.as_millis().max(1) as i32).unwrap_or(PollTimeout::ZERO);
-        let mut fds = [PollFd::new(std::os::fd::AsFd::as_fd(&tty), PollFlags::POLLIN)];
+        let mut fds = [PollFd::new(
+            std::os::fd::AsFd::as_fd(&tty),
+            PollFlags::POLLIN,
+        )];
         match poll(&mut fds, ms) {
             Ok(n) if n > 0 => {
                 let mut buf = [0u8; 256];

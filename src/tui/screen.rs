@@ -114,7 +114,7 @@ pub fn pixel_at(app: &App, area: Rect, column: u16, row: u16) -> Option<(u32, u3
         return None;
     }
     let inner = Block::bordered().inner(preview);
-    let r = super::shown::picture_cells(app, inner, w, h);
+    let r = super::placement::picture_cells(app, inner, w, h);
     let inside = |c: u16, start: u16, len: u16| c >= start && c < start + len;
     if !inside(column, r.x, r.width) || !inside(row, r.y, r.height) {
         return None;

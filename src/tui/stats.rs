@@ -53,9 +53,13 @@ impl<W: Write> Write for Counting<W> {
     }
 }
 
+/// The terminal the UI draws on: stdout, its bytes counted.
+pub type Term = ratatui::Terminal<ratatui::backend::CrosstermBackend<Counting<io::Stdout>>>;
+
 /// Bytes per second, idle and rendering.
 #[derive(Clone, Debug)]
 pub struct Rates {
+    count: Count,
     start: Instant,
     second: Instant,
     bytes_then: u64,
@@ -67,12 +71,13 @@ pub struct Rates {
 }
 
 impl Rates {
-    /// Starts counting at `now`, with `bytes` written so far.
-    pub fn new(now: Instant, bytes: u64) -> Rates {
+    /// Starts counting at `now` what goes through `count`.
+    pub fn new(now: Instant, count: Count) -> Rates {
         Rates {
             start: now,
             second: now,
-            bytes_then: bytes,
+            bytes_then: count.get(),
+            count,
             busy: false,
             idle: (0, 0),
             rendering: (0, 0),
@@ -84,8 +89,9 @@ impl Rates {
         self.busy = true;
     }
 
-    /// Closes every whole second up to `now` (`bytes` written in all).
-    pub fn tick(&mut self, now: Instant, bytes: u64) {
+    /// Closes the second when a whole one has passed by `now`.
+    pub fn tick(&mut self, now: Instant) {
+        let bytes = self.count.get();
         if now.duration_since(self.second) < Duration::from_secs(1) {
             return;
         }
@@ -101,7 +107,8 @@ impl Rates {
     }
 
     /// One line per kind of second, and the total.
-    pub fn report(&self, bytes: u64) -> String {
+    pub fn report(&self) -> String {
+        let bytes = self.count.get();
         let rate = |(b, s): (u64, u32)| match s {
             0 => "no whole second".to_string(),
             s => format!("{:.0} bytes/s over {s} s", b as f64 / s as f64),

@@ -103,7 +103,11 @@ fn step(mut app: App, msg: Msg) -> App {
         Msg::CycleCompare | Msg::Flip => {
             if app.shows_compare() {
                 let flip = matches!(msg, Msg::Flip);
-                app.compare = if flip { app.compare.flipped() } else { app.compare.next() };
+                app.compare = if flip {
+                    app.compare.flipped()
+                } else {
+                    app.compare.next()
+                };
             }
         }
         Msg::NextVariant | Msg::PrevVariant => {

@@ -29,8 +29,8 @@ pub use super::labels::{
     fit_parts, format_rate, key_hints, preview_title_parts, status_line, status_line_fit,
     status_parts,
 };
-use super::shown::{draw_film, Content};
 pub use super::screen::{areas, pixel_at, sidebar_width, Areas};
+use super::shown::{draw_film, Content};
 use crate::core::format::format_seconds;
 
 /// A style with this foreground colour, or plain without colour.

@@ -20,7 +20,10 @@ fn f_flips_between_render_and_reference_at_every_size() {
     for (w, h) in [(80u16, 24u16), (100, 30), (160, 48)] {
         let app = update(rendered(fake_app()), Msg::Resize(w, h));
         let before = draw(&app, w, h);
-        assert!(before.contains("f flip"), "the key bar names it, {w}x{h}:\n{before}");
+        assert!(
+            before.contains("f flip"),
+            "the key bar names it, {w}x{h}:\n{before}"
+        );
         let flipped = press(app, 'f');
         assert_eq!(flipped.compare, Compare::Reference);
         let screen = draw(&flipped, w, h);

@@ -321,7 +321,7 @@ fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
 #[test]
 fn with_a_graphics_protocol_a_click_maps_through_the_scaled_picture() {
     // A 64x64 film with 10x20-pixel cells is enlarged by a whole factor
-    // and centred (raystep::tui::shown::place): its corner cells map to
+    // and centred (raystep::tui::placement::place): its corner cells map to
     // its corner pixels, cells beside it miss.
     let mut app = update(rendered(), Msg::ToggleInspect);
     app.color = true;
@@ -330,8 +330,8 @@ fn with_a_graphics_protocol_a_click_maps_through_the_scaled_picture() {
     let screen = ratatui::layout::Rect::new(0, 0, 120, 40);
     let preview = raystep::tui::view::areas(&app, screen).preview;
     let inner = ratatui::widgets::Block::bordered().inner(preview);
-    let p = raystep::tui::shown::place(inner, 64, 64, (10, 20));
-    assert!(p.width >= 128 && p.width % 64 == 0, "{p:?}");
+    let p = raystep::tui::placement::place(inner, 64, 64, (10, 20));
+    assert!(p.width >= 128 && p.width.is_multiple_of(64), "{p:?}");
     let r = p.cells;
     let at = |c, r| raystep::tui::view::pixel_at(&app, screen, c, r);
     assert_eq!(at(r.x, r.y), Some((0, 0)));

@@ -12,7 +12,8 @@ use ratatui::{Terminal, TerminalOptions, Viewport};
 use raystep::tui::app::{App, Msg};
 use raystep::tui::graphics::Graphics;
 use raystep::tui::painter::{base64, draw_frame, Painter};
-use raystep::tui::shown::{place, request, Request};
+use raystep::tui::placement::place;
+use raystep::tui::shown::{request, Request};
 use raystep::tui::stats::Counting;
 use raystep::tui::update::update;
 
@@ -48,7 +49,10 @@ fn kitty_transmits_once_places_by_id_and_deletes_what_is_replaced() {
     p.paint(&mut out, Some(&req(at, 10)), t).unwrap();
     let first = text(&out);
     assert!(first.starts_with("\x1b[3;11H"), "placed at its cells");
-    assert!(first.contains("\x1b_Ga=T,f=100,i=7,p=1,C=1,q=2"), "{first:.80}");
+    assert!(
+        first.contains("\x1b_Ga=T,f=100,i=7,p=1,C=1,q=2"),
+        "{first:.80}"
+    );
     assert!(!first.contains("a=d"), "nothing to delete yet");
     assert!(!first.contains("U=1"), "no Unicode placeholders");
     // The same pixels again: nothing at all.
@@ -123,7 +127,8 @@ fn sixel_resends_only_changes_and_clears_when_the_picture_moves() {
     p.paint(&mut out, Some(&req(at, 11)), t + Duration::from_millis(50))
         .unwrap();
     assert!(out.is_empty() && p.pending());
-    p.paint(&mut out, Some(&req(at, 11)), t + p.interval).unwrap();
+    p.paint(&mut out, Some(&req(at, 11)), t + p.interval)
+        .unwrap();
     assert!(!out.is_empty() && !p.pending());
 }
 
@@ -219,7 +224,10 @@ fn in_graphics_mode_the_pictures_cells_are_left_blank_centred_at_every_size() {
         let right = inner.right() - r.cells.right();
         let top = r.cells.y - inner.y;
         let bottom = inner.bottom() - r.cells.bottom();
-        assert!(left.abs_diff(right) <= 1 && top.abs_diff(bottom) <= 1, "{w}x{h}");
+        assert!(
+            left.abs_diff(right) <= 1 && top.abs_diff(bottom) <= 1,
+            "{w}x{h}"
+        );
         assert!(
             left + right <= 2 || top + bottom <= 3,
             "{w}x{h}: {r:?} in {inner:?}",
@@ -235,7 +243,13 @@ fn in_graphics_mode_the_pictures_cells_are_left_blank_centred_at_every_size() {
         let help = update(app, Msg::ToggleHelp);
         assert!(request(&help, screen).is_none());
         t.draw(|f| raystep::tui::view::view(&help, f)).unwrap();
-        let cells: String = t.backend().buffer().content().iter().map(|c| c.symbol()).collect();
+        let cells: String = t
+            .backend()
+            .buffer()
+            .content()
+            .iter()
+            .map(|c| c.symbol())
+            .collect();
         // (At 80x24 and 100x30 the help hides all of it.)
         assert!(w < 160 || cells.contains('▀'), "{w}x{h}");
     }
@@ -273,7 +287,35 @@ fn every_change_reaches_the_terminal_at_once() {
         assert!(out.held.is_empty(), "flushed");
     }
     let shown = text(&out.shown);
-    for command in ["a=T,f=100,i=3,", "a=d,d=i,i=3,", "a=p,i=3,", "a=T,f=100,i=4,", "a=d,d=I,i=3,"] {
+    for command in [
+        "a=T,f=100,i=3,",
+        "a=d,d=i,i=3,",
+        "a=p,i=3,",
+        "a=T,f=100,i=4,",
+        "a=d,d=I,i=3,",
+    ] {
         assert!(shown.contains(command), "{command}");
     }
+}
+
+#[test]
+fn stats_sort_each_second_by_whether_passes_arrived() {
+    use raystep::tui::stats::Rates;
+    use std::io::Write;
+    let mut out = Counting::new(std::io::sink());
+    let t = Instant::now();
+    let mut rates = Rates::new(t, out.count());
+    let s = Duration::from_secs(1);
+    out.write_all(&[0; 500]).unwrap();
+    rates.busy();
+    rates.tick(t + s / 2); // not a whole second yet
+    rates.tick(t + s);
+    out.write_all(&[0; 30]).unwrap();
+    rates.tick(t + 2 * s);
+    rates.tick(t + 3 * s);
+    assert_eq!(rates.rendering, (500, 1));
+    assert_eq!(rates.idle, (30, 2));
+    let report = rates.report();
+    assert!(report.contains("idle 15 bytes/s over 2 s"), "{report}");
+    assert!(report.contains("rendering 500 bytes/s over 1 s"), "{report}");
 }
