@@ -162,15 +162,13 @@ pub fn choose(
         Choice::Force(Graphics::HalfBlocks) => return half(None),
         Choice::Force(g) if multiplexer(var) => {
             return half(Some(format!(
-                "--graphics {}: inside tmux or screen, which do not pass pictures \
-                 through; half blocks instead",
+                "--graphics {}: tmux and screen pass no pictures; half blocks",
                 g.flag()
             )))
         }
         Choice::Force(g) if font.is_none() => {
             return half(Some(format!(
-                "--graphics {}: the terminal reports no cell size in pixels, so a \
-                 picture cannot be placed; half blocks instead",
+                "--graphics {}: the terminal reports no cell size in pixels; half blocks",
                 g.flag()
             )))
         }
