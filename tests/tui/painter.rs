@@ -317,5 +317,8 @@ fn stats_sort_each_second_by_whether_passes_arrived() {
     assert_eq!(rates.idle, (30, 2));
     let report = rates.report();
     assert!(report.contains("idle 15 bytes/s over 2 s"), "{report}");
-    assert!(report.contains("rendering 500 bytes/s over 1 s"), "{report}");
+    assert!(
+        report.contains("rendering 500 bytes/s over 1 s"),
+        "{report}"
+    );
 }
