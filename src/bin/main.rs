@@ -50,10 +50,20 @@ struct Cli {
     /// The folder of scene files the UI lists (given, it must exist).
     #[arg(long, value_name = "DIR", default_value = "scenes", value_parser = scenes_folder)]
     scenes: PathBuf,
-    /// Draw the UI's preview with coloured half blocks even where the
-    /// terminal shows full-resolution pictures (kitty, iTerm2, sixel).
+    /// How the UI draws its preview: `auto` asks the terminal (kitty
+    /// graphics, sixel, its cell size) and falls back on the environment;
+    /// `kitty`, `sixel`, `iterm2` force a protocol (half blocks, with a
+    /// note, where it cannot work); `halfblocks` works everywhere.
+    #[arg(long, value_name = "HOW", default_value = "auto",
+          value_parser = ["auto", "kitty", "sixel", "iterm2", "halfblocks"])]
+    graphics: String,
+    /// The same as `--graphics halfblocks`.
     #[arg(long)]
     halfblocks: bool,
+    /// On quit, print the bytes the UI wrote to the terminal per second,
+    /// idle and while rendering.
+    #[arg(long)]
+    stats: bool,
     /// Time the UI's start-up and redraws and print a table (needs the
     /// `tui` feature).
     #[arg(long)]
@@ -100,7 +110,14 @@ fn main() -> ExitCode {
             chapter: cli.chapter,
             scene: cli.scene.clone(),
             spp: cli.spp,
-            halfblocks: cli.halfblocks,
+            graphics: if cli.halfblocks {
+                "halfblocks"
+            } else {
+                &cli.graphics
+            }
+            .parse()
+            .unwrap_or_default(),
+            stats: cli.stats,
             remember: raystep::tui::last::path(&|k| std::env::var(k).ok()),
         };
         return match raystep::tui::run(&launch) {

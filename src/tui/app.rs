@@ -93,7 +93,7 @@ pub struct App {
     pub target: Target,
     /// Whether the progressive render is paused (passed on likewise).
     pub paused: bool,
-    /// How the preview is drawn ([`super::graphics::detect`]).
+    /// How the preview is drawn ([`super::graphics::choose`]).
     pub graphics: super::graphics::Graphics,
     /// Inspect mode's cursor, a pixel of the image; `None` when off.
     pub inspect: Option<(u32, u32)>,
@@ -101,8 +101,9 @@ pub struct App {
     pub zoom: u32,
     /// The pixel under the mouse, when it is over the picture.
     pub hover: Option<(u32, u32)>,
-    /// The picker for a graphics protocol; `None` draws half blocks.
-    pub picker: Option<ratatui_image::picker::Picker>,
+    /// The terminal's cell size in pixels, for a graphics protocol;
+    /// `None` draws half blocks.
+    pub font: Option<(u16, u16)>,
     /// The path traced from the inspected pixel (`t`), as the panel shows
     /// it; cleared when the cursor moves or the render restarts.
     pub trace: Option<Box<Inspection>>,
@@ -175,7 +176,7 @@ impl App {
             target: Target::DEFAULT,
             paused: false,
             graphics: super::graphics::Graphics::HalfBlocks,
-            picker: None,
+            font: None,
             inspect: None,
             zoom: 1,
             hover: None,

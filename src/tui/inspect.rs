@@ -217,21 +217,6 @@ pub fn cell_to_pixel(cell: u16, cells: u16, pixels: u32) -> u32 {
     x.min(p.saturating_sub(1)) as u32
 }
 
-/// The cells a graphics protocol's picture of a `width` x `height` film
-/// takes in `area` with cells of `font` pixels: ratatui-image's
-/// `Resize::Fit` keeps the aspect, never enlarges, and starts at the
-/// area's top-left corner.
-pub fn graphics_rect(area: Rect, width: u32, height: u32, font: (u16, u16)) -> Rect {
-    let (fw, fh) = (font.0.max(1) as f64, font.1.max(1) as f64);
-    let (w, h) = (width.max(1) as f64, height.max(1) as f64);
-    let s = (area.width as f64 * fw / w)
-        .min(area.height as f64 * fh / h)
-        .min(1.0);
-    let cols = ((w * s / fw).ceil() as u16).clamp(1, area.width.max(1));
-    let rows = ((h * s / fh).ceil() as u16).clamp(1, area.height.max(1));
-    Rect::new(area.x, area.y, cols.min(area.width), rows.min(area.height))
-}
-
 /// Draws the traced path's table into `area`, scrolled by
 /// [`App::table_scroll`].
 pub fn draw_table(app: &App, frame: &mut Frame, area: Rect) {

@@ -25,6 +25,7 @@ pub const KEYS: &[(&str, &str)] = &[
     ("]  [", "one bounce more / less (chapters with bounces)"),
     ("m", "toggle \"exactly k\" / \"up to k\" bounces"),
     ("r", "render → reference → difference → relative difference"),
+    ("f", "flip: render ↔ reference (A/B)"),
     (
         "g",
         "grader's newest failed image: student / reference / diff",
@@ -129,6 +130,7 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         KeyCode::Char('[') => Msg::BounceDown,
         KeyCode::Char('m') => Msg::ToggleBounceMode,
         KeyCode::Char('r') => Msg::CycleCompare,
+        KeyCode::Char('f') => Msg::Flip,
         KeyCode::Char('e') => Msg::NextVariant,
         KeyCode::Char('E') => Msg::PrevVariant,
         KeyCode::Char(' ') => Msg::TogglePause,

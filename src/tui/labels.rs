@@ -194,7 +194,7 @@ pub fn preview_title_parts(app: &App) -> Vec<String> {
         // Right after what is shown: a zoomed picture must say so.
         parts.insert(1.min(parts.len()), format!("zoom {}x", app.zoom));
     }
-    if app.picker.is_some() {
+    if super::placement::graphics_font(app).is_some() {
         parts.push(app.graphics.name().to_string());
     }
     parts
@@ -351,7 +351,7 @@ pub fn key_hints(app: &App) -> String {
     } else if app.paused {
         "paused: space resumes"
     } else if app.shows_compare() {
-        "i inspect · r compare · s save"
+        "i inspect · r compare · f flip · s save"
     } else {
         "i inspect · s save"
     };

@@ -108,6 +108,15 @@ impl Compare {
         }
     }
 
+    /// The A/B flip: the reference from anything else, the render from
+    /// the reference.
+    pub fn flipped(self) -> Compare {
+        match self {
+            Compare::Reference => Compare::Render,
+            _ => Compare::Reference,
+        }
+    }
+
     /// Whether the preview shows a false-colour difference (then exposure
     /// sets its scale instead of brightening it).
     pub fn is_difference(self) -> bool {

@@ -26,10 +26,15 @@ pub mod last;
 pub mod layers;
 pub mod loading;
 pub mod msg;
+pub mod painter;
 pub mod picture;
+pub mod placement;
+pub mod query;
 pub mod scenes;
 pub mod screen;
+pub mod shown;
 pub mod state;
+pub mod stats;
 pub mod student;
 pub mod student_update;
 pub mod target;
@@ -39,7 +44,7 @@ pub mod warp;
 pub mod worker;
 pub mod zoom;
 
-use std::io::{IsTerminal, Stdout};
+use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::sync::OnceLock;
 use std::thread::ThreadId;
@@ -132,9 +137,12 @@ pub struct Launch {
     pub scene: Option<PathBuf>,
     /// The sample budget of progressive chapters.
     pub spp: Option<u32>,
-    /// Draw the preview with half blocks even where the terminal has a
-    /// graphics protocol.
-    pub halfblocks: bool,
+    /// How the preview is drawn (`--graphics`; `--halfblocks` forces
+    /// half blocks).
+    pub graphics: graphics::Choice,
+    /// Print the bytes written to the terminal per second on quit
+    /// (`--stats`).
+    pub stats: bool,
     /// Where the last chapter, scene and view are remembered
     /// ([`last::path`]); `None`: nothing is remembered.
     pub remember: Option<PathBuf>,
@@ -202,8 +210,10 @@ pub fn run(launch: &Launch) -> std::io::Result<()> {
         None => None,
     };
     let app = launch_app_with(launch, color_allowed(), last.as_ref());
-    let result = run_app(launch, app);
+    let mut report = None;
+    let result = run_app(launch, app, &mut report);
     // The terminal is restored by now: warnings can be read.
+    warnings.extend(report);
     if let (Ok(Some(now)), Some(file)) = (&result, &launch.remember) {
         if let Err(e) = last::store(file, now) {
             warnings.push(format!("warning: could not remember the last view: {e}"));
@@ -216,16 +226,13 @@ pub fn run(launch: &Launch) -> std::io::Result<()> {
 }
 
 /// Runs the UI on `app` until the user quits; what it showed last.
-fn run_app(launch: &Launch, mut app: App) -> std::io::Result<Option<last::Last>> {
+/// With `--stats`, `report` gets the bytes written per second.
+fn run_app(
+    launch: &Launch,
+    mut app: App,
+    report: &mut Option<String>,
+) -> std::io::Result<Option<last::Last>> {
     install_panic_hook();
-    if !launch.halfblocks {
-        let font = graphics::font_size();
-        app.graphics = graphics::detect(&|k| std::env::var(k).ok(), font);
-        app.picker = font.and_then(|f| graphics::picker(app.graphics, f));
-        if app.picker.is_none() {
-            app.graphics = graphics::Graphics::HalfBlocks;
-        }
-    }
     enable_raw_mode()?;
     let _restore = Restore;
     execute!(
@@ -234,14 +241,25 @@ fn run_app(launch: &Launch, mut app: App) -> std::io::Result<Option<last::Last>>
         EnableMouseCapture,
         crossterm::cursor::Hide
     )?;
-    let mut terminal = Terminal::new(CrosstermBackend::new(std::io::stdout()))?;
+    // Asked once, before crossterm reads keys.
+    let chosen = graphics::pick(launch.graphics);
+    (app.graphics, app.font) = (chosen.graphics, chosen.font);
+    if let Some(note) = chosen.note {
+        app.message = note;
+    }
+    let out = stats::Counting::new(std::io::stdout());
+    let mut rates = stats::Rates::new(Instant::now(), out.count());
+    let mut terminal = Terminal::new(CrosstermBackend::new(out))?;
     terminal.clear()?;
-    event_loop(&mut terminal, app)
+    let last = event_loop(&mut terminal, app, &mut rates);
+    *report = launch.stats.then(|| rates.report());
+    last
 }
 
 fn event_loop(
-    terminal: &mut Terminal<CrosstermBackend<Stdout>>,
+    terminal: &mut stats::Term,
     mut app: App,
+    rates: &mut stats::Rates,
 ) -> std::io::Result<Option<last::Last>> {
     let worker = Worker::spawn();
     let size = terminal.size()?;
@@ -268,7 +286,9 @@ fn event_loop(
     let mut warp_sent = None;
     // When the current scene's file was last looked at for edits.
     let mut checked = Instant::now();
+    let mut painter = painter::Painter::for_process(app.graphics);
     loop {
+        rates.tick(Instant::now());
         if checked.elapsed() >= Duration::from_secs(1) {
             checked = Instant::now();
             dirty |= app.reload_if_changed();
@@ -373,9 +393,9 @@ fn event_loop(
         }
         let since = last_draw.map_or(FRAME, |t| t.elapsed());
         if dirty && since >= FRAME {
-            terminal.draw(|f| view::view(&app, f))?;
+            painter::draw_frame(terminal, &app, &mut painter)?;
             last_draw = Some(Instant::now());
-            dirty = false;
+            dirty = painter.pending();
             // For the end-to-end test of the panic hook: a panic while the
             // UI owns the terminal.
             if std::env::var_os(TEST_PANIC).is_some() {
@@ -410,6 +430,7 @@ fn event_loop(
                 }
                 Event::Resize(width, height) => {
                     terminal.autoresize()?;
+                    painter.invalidate(terminal.backend_mut())?;
                     app = update(app, Msg::Resize(width, height));
                     dirty = true;
                 }
@@ -419,6 +440,7 @@ fn event_loop(
         while let Ok(progress) = worker.results.try_recv() {
             app = update(app, Msg::Progress(progress));
             dirty = true;
+            rates.busy();
         }
     }
 }

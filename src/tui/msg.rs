@@ -35,6 +35,8 @@ pub enum Msg {
     ToggleBounceMode,
     /// Render → reference → difference → relative difference → render.
     CycleCompare,
+    /// A/B: flip between the render and the reference.
+    Flip,
     /// Next estimator or sampler (the next step of the lecture's ladder).
     NextVariant,
     /// Previous estimator or sampler.

@@ -6,7 +6,6 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::widgets::Block;
 
 use super::app::App;
-use super::picture::fit;
 
 /// Width of the left column, in cells.
 pub fn sidebar_width(total: u16) -> u16 {
@@ -115,10 +114,7 @@ pub fn pixel_at(app: &App, area: Rect, column: u16, row: u16) -> Option<(u32, u3
         return None;
     }
     let inner = Block::bordered().inner(preview);
-    let r = match (&app.picker, app.color) {
-        (Some(p), true) => super::inspect::graphics_rect(inner, w, h, p.font_size()),
-        _ => fit(inner, w, h),
-    };
+    let r = super::placement::picture_cells(app, inner, w, h);
     let inside = |c: u16, start: u16, len: u16| c >= start && c < start + len;
     if !inside(column, r.x, r.width) || !inside(row, r.y, r.height) {
         return None;

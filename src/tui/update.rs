@@ -100,9 +100,14 @@ fn step(mut app: App, msg: Msg) -> App {
             }
         }
         Msg::BounceUp | Msg::BounceDown | Msg::ToggleBounceMode => {}
-        Msg::CycleCompare => {
+        Msg::CycleCompare | Msg::Flip => {
             if app.shows_compare() {
-                app.compare = app.compare.next();
+                let flip = matches!(msg, Msg::Flip);
+                app.compare = if flip {
+                    app.compare.flipped()
+                } else {
+                    app.compare.next()
+                };
             }
         }
         Msg::NextVariant | Msg::PrevVariant => {

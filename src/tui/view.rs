@@ -11,7 +11,6 @@
 //!  status line · progress gauge · message
 //! ```
 
-use super::zoom::{graphics_pixels, Window};
 use crate::core::text::{escape, escape_keep_newlines};
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::{Color, Modifier, Style};
@@ -22,7 +21,7 @@ use ratatui::widgets::{
 };
 use ratatui::Frame;
 
-use super::app::{expose, App, Focus};
+use super::app::{App, Focus};
 use super::gauge::draw_gauge;
 pub use super::gauge::{gauge_state, short_number};
 use super::keys::KEYS;
@@ -30,11 +29,9 @@ pub use super::labels::{
     fit_parts, format_rate, key_hints, preview_title_parts, status_line, status_line_fit,
     status_parts,
 };
-use super::picture::{fit, Picture};
 pub use super::screen::{areas, pixel_at, sidebar_width, Areas};
-use crate::core::film::Film;
+use super::shown::{draw_film, Content};
 use crate::core::format::format_seconds;
-use crate::core::preview::downsample;
 
 /// A style with this foreground colour, or plain without colour.
 fn fg(app: &App, color: Color) -> Style {
@@ -308,33 +305,9 @@ fn draw_preview(app: &App, frame: &mut Frame, area: Rect) {
             .style(fg(app, color))
             .wrap(Wrap { trim: true })
     };
-    if app.grading.is_some() || app.student_render().is_some() {
-        // The grader's images need no render: shown whatever the selection.
-        if let Some(film) = app.displayed_ref() {
-            draw_film(app, frame, &film, inner);
-        }
-    } else if let Some(s) = &app.student {
-        let color = match s.status.as_str() {
-            "starting…" | "building…" | "rendering…" => Color::Reset,
-            _ => Color::Red,
-        };
-        let text = format!("{}\n\n{}", s.status, s.details);
-        frame.render_widget(note(text, color), inner);
-    } else if let Some(why) = app.problem() {
-        let scene = app.current_scene().map(|s| s.source.as_str()).unwrap_or("");
-        frame.render_widget(
-            note(format!("cannot render {scene}:\n{why}"), Color::Red),
-            inner,
-        );
-    } else if let Some(e) = &app.failure {
-        frame.render_widget(note(format!("render failed: {e}"), Color::Red), inner);
-    } else if let Some(film) = app.displayed_ref() {
-        draw_film(app, frame, &film, inner);
-    } else if let Some((_, path)) = app.scene_to_read() {
-        let text = format!("reading {}…", escape(&path.display().to_string()));
-        frame.render_widget(note(text, Color::Reset), inner);
-    } else {
-        frame.render_widget(note("rendering…".into(), Color::Reset), inner);
+    match super::shown::content(app) {
+        Content::Film(film) => draw_film(app, frame, &film, inner),
+        Content::Note(text, color) => frame.render_widget(note(text, color), inner),
     }
 }
 
@@ -358,53 +331,6 @@ fn difference_legend(app: &App) -> Line<'static> {
         Span::styled(format!("+{scale}"), fg(app, Color::Red)),
         Span::raw(" red"),
     ])
-}
-
-/// Draws `film` with the exposure into `area`: box-filtered to the cells
-/// first and exposed after, so a redraw touches the full-size film once
-/// and allocates only the small one. (Exposure is a power of two, so for
-/// ordinary values the order changes no bit.)
-fn draw_film(app: &App, frame: &mut Frame, full: &Film, area: Rect) {
-    let window = Window::of(app, full.width, full.height);
-    let cropped;
-    let film = if window.is_whole(full.width, full.height) {
-        full
-    } else {
-        cropped = window.crop(full);
-        &cropped
-    };
-    let cursor = app.inspect.and_then(|p| window.to_window(p));
-    if let (Some(picker), true) = (&app.picker, app.color) {
-        // Every pixel, through the terminal's graphics protocol, as large
-        // as fits (never enlarged), the cursor drawn into the pixels.
-        let exposed = expose(film, app.display_exposure());
-        let bytes = graphics_pixels(&exposed, cursor);
-        if let Some(img) = image::RgbImage::from_raw(film.width, film.height, bytes) {
-            let resize = ratatui_image::Resize::Fit(None);
-            if let Ok(protocol) = picker.new_protocol(img.into(), area, resize) {
-                frame.render_widget(ratatui_image::Image::new(&protocol), area);
-                return;
-            }
-        }
-    }
-    let r = fit(area, film.width, film.height);
-    if r.width == 0 {
-        return;
-    }
-    let small = expose(
-        &downsample(film, r.width as u32, r.height as u32 * 2),
-        app.display_exposure(),
-    );
-    frame.render_widget(
-        Picture {
-            film: &small,
-            color: app.color,
-        },
-        r,
-    );
-    if let Some(p) = cursor {
-        super::inspect::draw_cursor(frame, r, p, film.width, film.height);
-    }
 }
 
 fn draw_help(frame: &mut Frame, area: Rect) {

@@ -392,7 +392,8 @@ fn the_flags_choose_the_chapter_the_scene_and_the_budget() {
         chapter: Some(6),
         scene: Some(root.join("scenes/cornell-glass.toml")),
         spp: Some(64),
-        halfblocks: false,
+        graphics: Default::default(),
+        stats: false,
         remember: None,
     };
     let mut app = launch_app(&launch, false);

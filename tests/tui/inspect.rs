@@ -319,22 +319,25 @@ fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
 }
 
 #[test]
-fn with_a_graphics_protocol_a_click_maps_proportionally() {
-    // A 64x64 film with 10x20-pixel cells is drawn at its own size, 7x4
-    // cells from the preview's top-left corner (ratatui-image never
-    // enlarges): clicks inside map proportionally, clicks beside it miss.
+fn with_a_graphics_protocol_a_click_maps_through_the_scaled_picture() {
+    // A 64x64 film with 10x20-pixel cells is enlarged by a whole factor
+    // and centred (raystep::tui::placement::place): its corner cells map to
+    // its corner pixels, cells beside it miss.
     let mut app = update(rendered(), Msg::ToggleInspect);
     app.color = true;
-    let mut picker = ratatui_image::picker::Picker::from_fontsize((10, 20));
-    picker.set_protocol_type(ratatui_image::picker::ProtocolType::Kitty);
-    app.picker = Some(picker);
+    app.graphics = raystep::tui::graphics::Graphics::Kitty;
+    app.font = Some((10, 20));
     let screen = ratatui::layout::Rect::new(0, 0, 120, 40);
     let preview = raystep::tui::view::areas(&app, screen).preview;
-    let (x0, y0) = (preview.x + 1, preview.y + 1);
-    let at = |c, r| raystep::tui::view::pixel_at(&app, screen, x0 + c, y0 + r);
-    assert_eq!(at(0, 0), Some((0, 0)));
-    assert_eq!(at(6, 3), Some((55, 48)));
-    assert_eq!(at(3, 2), Some((28, 32)));
-    assert_eq!(at(7, 0), None);
-    assert_eq!(at(0, 4), None);
+    let inner = ratatui::widgets::Block::bordered().inner(preview);
+    let p = raystep::tui::placement::place(inner, 64, 64, (10, 20));
+    assert!(p.width >= 128 && p.width.is_multiple_of(64), "{p:?}");
+    let r = p.cells;
+    let at = |c, r| raystep::tui::view::pixel_at(&app, screen, c, r);
+    assert_eq!(at(r.x, r.y), Some((0, 0)));
+    assert_eq!(at(r.right() - 1, r.bottom() - 1), Some((63, 63)));
+    let (mx, my) = at(r.x + r.width / 2, r.y + r.height / 2).unwrap();
+    assert!(mx.abs_diff(32) <= 2 && my.abs_diff(32) <= 2, "({mx}, {my})");
+    assert_eq!(at(r.x - 1, r.y), None);
+    assert_eq!(at(r.x, r.bottom()), None);
 }

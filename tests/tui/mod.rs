@@ -4,9 +4,11 @@
 
 mod converge;
 mod end_to_end;
+mod flip;
 mod graphics;
 mod inspect;
 mod layout_and_keys;
+mod painter;
 mod sizes_and_keys;
 mod warp;
 mod zoom;
