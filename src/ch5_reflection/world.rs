@@ -47,6 +47,8 @@ pub trait RayQueries: Send + Sync {
     fn closest(&self, ray: &Ray, t_max: f32) -> Option<crate::ch3_ray_triangle::triangle::Hit>;
     /// Whether anything is hit in (0, t_max).
     fn occluded(&self, ray: &Ray, t_max: f32) -> bool;
+    /// What it is, for reports ("8 wide, 12 nodes, ...").
+    fn describe(&self) -> String;
 }
 
 /// A [`RayQueries`] as [`World`] holds it (a world stays safe to use
@@ -59,6 +61,13 @@ impl RayQueries for WideBvh {
     }
     fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
         WideBvh::occluded(self, ray, t_max)
+    }
+    fn describe(&self) -> String {
+        format!(
+            "chapter 3's BVH, 4 wide ({} nodes, {} leaves)",
+            self.node_count(),
+            self.leaf_count()
+        )
     }
 }
 
@@ -91,8 +100,22 @@ pub struct World {
 impl World {
     /// Builds what `scene` needs.
     pub fn new(scene: &Scene) -> World {
+        World::with_queries(scene, |_| None)
+    }
+
+    /// Builds what `scene` needs, with the ray queries over its triangles
+    /// answered by what `queries` builds over them; where it builds
+    /// nothing, by chapter 3's tree in its four-wide form (then built).
+    pub fn with_queries(
+        scene: &Scene,
+        queries: impl FnOnce(&[[Vec3; 3]]) -> Option<Box<Queries>>,
+    ) -> World {
         let triangles = Triangles::from_meshes(&scene.meshes);
-        let wide = WideBvh::build(&triangles.tris);
+        let queries = queries(&triangles.tris);
+        let wide = match queries {
+            Some(_) => None,
+            None => WideBvh::build(&triangles.tris),
+        };
         let normals = triangles
             .tris
             .iter()
@@ -105,7 +128,7 @@ impl World {
         World {
             triangles,
             wide,
-            queries: None,
+            queries,
             normals,
             mesh_material: scene.meshes.iter().map(|m| m.material).collect(),
             sdfs: scene.sdfs.clone(),
@@ -113,6 +136,16 @@ impl World {
             materials: scene.materials.clone(),
             bsdfs: scene.materials.iter().map(Bsdf::from_material).collect(),
             lights: Lights::new(scene),
+        }
+    }
+
+    /// What answers the ray queries over the meshes, for reports; `None`
+    /// without meshes.
+    pub fn mesh_queries(&self) -> Option<&dyn RayQueries> {
+        match (&self.queries, &self.wide) {
+            (Some(q), _) => Some(q.as_ref() as &dyn RayQueries),
+            (None, Some(w)) => Some(w),
+            (None, None) => None,
         }
     }
 

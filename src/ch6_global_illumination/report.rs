@@ -150,12 +150,11 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
 fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
     let (scene, world) = (r.scene, r.world);
     let (b, l) = (&mut report.built, &mut report.left_out);
-    match world.and_then(|(w, s)| w.wide.as_ref().map(|wide| (w, wide, *s))) {
-        Some((w, wide, s)) => b.push(format!(
-            "chapter 3's BVH, 4 wide, over {} triangles ({} nodes, {} leaves; world built in {})",
+    match world.and_then(|(w, s)| w.mesh_queries().map(|q| (w, q, *s))) {
+        Some((w, q, s)) => b.push(format!(
+            "{} over {} triangles; world built in {}",
+            q.describe(),
             w.triangles.tris.len(),
-            wide.node_count(),
-            wide.leaf_count(),
             format_seconds(s)
         )),
         None => l.push("BVH: the scene has no meshes".into()),

@@ -580,6 +580,14 @@ impl RayQueries for Bvh8 {
     fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
         simd::occluded(self.level, self, ray, t_max)
     }
+    fn describe(&self) -> String {
+        format!(
+            "the fast engine's BVH, 8 wide ({} nodes, {} leaves; {} instructions)",
+            self.nodes.len(),
+            self.leaves.len(),
+            self.level.name()
+        )
+    }
 }
 
 /// Fills `counts[n]` with the number of triangles under binary node `n`.

@@ -19,7 +19,7 @@ pub mod bvh8;
 #[allow(unsafe_code)]
 pub mod simd;
 
-use crate::ch5_reflection::world::World;
+use crate::ch5_reflection::world::{Queries, World};
 use crate::scene::Scene;
 
 use bvh8::Bvh8;
@@ -48,13 +48,12 @@ impl Engine {
     /// queries use `level`'s instructions ([`Level::detect`] for the CPU's
     /// best).
     pub fn world_at(self, scene: &Scene, level: Level) -> World {
-        let mut world = World::new(scene);
-        if self == Engine::Fast {
-            if let Some(bvh) = Bvh8::build(&world.triangles.tris, level) {
-                world.queries = Some(Box::new(bvh));
-            }
+        match self {
+            Engine::Fast => World::with_queries(scene, |tris| {
+                Bvh8::build(tris, level).map(|b| Box::new(b) as Box<Queries>)
+            }),
+            Engine::Readable => World::new(scene),
         }
-        world
     }
 
     /// The world of `scene` as this engine traces it, with the CPU's best
