@@ -31,7 +31,7 @@ use crate::scene::Scene;
 
 use super::accumulate::downsample;
 use super::fast::bvh8::Bvh8;
-use super::fast::simd::Level;
+use super::fast::level::Level;
 use super::fast::Engine;
 use super::integrator::PathSettings;
 use super::reference::StoredReference;

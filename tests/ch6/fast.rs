@@ -7,7 +7,7 @@ use std::path::Path;
 
 use raystep::ch1_projection::camera::Camera;
 use raystep::ch6_global_illumination::accumulate::Accumulator;
-use raystep::ch6_global_illumination::fast::simd::Level;
+use raystep::ch6_global_illumination::fast::level::Level;
 use raystep::ch6_global_illumination::fast::Engine;
 use raystep::ch6_global_illumination::integrator::{PathSettings, Strategy};
 use raystep::ch6_global_illumination::sampler::{sobol_group, sobol_group_by_table, SamplerKind};

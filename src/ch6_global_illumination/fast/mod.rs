@@ -16,6 +16,8 @@
 //! their triangles go through the eight-wide tree.
 
 pub mod bvh8;
+pub mod lanes;
+pub mod level;
 #[allow(unsafe_code)]
 pub mod simd;
 
@@ -23,7 +25,7 @@ use crate::ch5_reflection::world::{Queries, World};
 use crate::scene::Scene;
 
 use bvh8::Bvh8;
-use simd::Level;
+use level::Level;
 
 /// Which engine traces the paths.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]

@@ -2,103 +2,27 @@
 //! at run time, and the one place with `unsafe` code.
 //!
 //! The release build targets the x86-64 baseline (SSE2), so that the
-//! binary runs on any x86-64 CPU. The queries' lane loops are compiled
-//! three times: for AVX-512, for AVX2, and for the baseline (the
-//! portable path, which is also the only one on other architectures).
-//! [`Level::detect`] picks the widest the CPU has; `RAYSTEP_SIMD`
-//! (`portable`, `avx2`, `avx512`) asks for a narrower one.
+//! binary runs on any x86-64 CPU. Each query is compiled three times: with
+//! the portable lane loops of [`super::lanes`] for the baseline (the only
+//! path on other architectures), and with the AVX2 kernel below for AVX2
+//! and for AVX-512 CPUs (the same eight-lane code; with AVX-512 enabled the
+//! compiler may use its mask registers). [`Level::detect`] picks the widest
+//! the CPU has; `RAYSTEP_SIMD` (`portable`, `avx2`, `avx512`) asks for a
+//! narrower one.
 //!
 //! Every path computes the same bits: each lane's arithmetic is the same
-//! IEEE operations in the same order whatever the vector width, and Rust
-//! never fuses a multiply and an add on its own (tests render with each
-//! path and compare the bytes).
+//! IEEE operations in the same order, and neither Rust nor the kernel
+//! fuses a multiply and an add (tests render with each path and compare
+//! the bytes).
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Hit;
 
-use super::bvh8::{Bvh8, Kernel, Lanes, RayData};
+use crate::ch5_reflection::world::RayQueries;
 
-/// A set of vector instructions.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Level {
-    /// The build's baseline (SSE2 on x86-64).
-    Portable,
-    /// AVX2 and FMA (x86-64).
-    Avx2,
-    /// AVX-512 F, VL, BW and DQ (x86-64).
-    Avx512,
-}
-
-impl Level {
-    /// Every level, narrowest first.
-    pub const ALL: [Level; 3] = [Level::Portable, Level::Avx2, Level::Avx512];
-
-    /// A short name.
-    pub fn name(self) -> &'static str {
-        match self {
-            Level::Portable => "portable",
-            Level::Avx2 => "avx2",
-            Level::Avx512 => "avx512",
-        }
-    }
-
-    /// Whether this CPU has the level's instructions.
-    pub fn available(self) -> bool {
-        #[cfg(target_arch = "x86_64")]
-        {
-            match self {
-                Level::Portable => true,
-                Level::Avx2 => {
-                    std::arch::is_x86_feature_detected!("avx2")
-                        && std::arch::is_x86_feature_detected!("fma")
-                }
-                Level::Avx512 => {
-                    Level::Avx2.available()
-                        && std::arch::is_x86_feature_detected!("avx512f")
-                        && std::arch::is_x86_feature_detected!("avx512vl")
-                        && std::arch::is_x86_feature_detected!("avx512bw")
-                        && std::arch::is_x86_feature_detected!("avx512dq")
-                }
-            }
-        }
-        #[cfg(not(target_arch = "x86_64"))]
-        {
-            self == Level::Portable
-        }
-    }
-
-    /// The widest level this CPU has, or the one `RAYSTEP_SIMD` names
-    /// if the CPU has it (a name it does not know, or a level the CPU
-    /// lacks, is ignored with a warning on stderr).
-    pub fn detect() -> Level {
-        let best = Level::ALL
-            .into_iter()
-            .rev()
-            .find(|l| l.available())
-            .unwrap_or(Level::Portable);
-        let Ok(asked) = std::env::var("RAYSTEP_SIMD") else {
-            return best;
-        };
-        match Level::ALL.into_iter().find(|l| l.name() == asked) {
-            Some(l) if l.available() => l,
-            Some(l) => {
-                eprintln!(
-                    "RAYSTEP_SIMD={asked}: this CPU has no {}; using {}",
-                    l.name(),
-                    best.name()
-                );
-                best
-            }
-            None => {
-                eprintln!(
-                    "RAYSTEP_SIMD={asked}: expected portable, avx2 or avx512; using {}",
-                    best.name()
-                );
-                best
-            }
-        }
-    }
-}
+use super::bvh8::Bvh8;
+use super::lanes::{Kernel, Lanes, RayData};
+use super::level::Level;
 
 /// The closest hit of `ray` in (0, t_max) with `level`'s instructions.
 #[inline]
@@ -127,6 +51,23 @@ pub fn occluded(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { occluded_avx2(bvh, ray, t_max) },
         _ => occluded_lanes::<Lanes>(bvh, ray, t_max),
+    }
+}
+
+impl RayQueries for Bvh8 {
+    fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        closest(self.level, self, ray, t_max)
+    }
+    fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
+        occluded(self.level, self, ray, t_max)
+    }
+    fn describe(&self) -> String {
+        format!(
+            "the fast engine's BVH, 8 wide ({} nodes, {} leaves; {} instructions)",
+            self.nodes.len(),
+            self.leaves.len(),
+            self.level.name()
+        )
     }
 }
 
@@ -193,7 +134,7 @@ unsafe fn occluded_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
 mod avx {
     use std::arch::x86_64::*;
 
-    use super::super::bvh8::{Hits8, Kernel, Leaf8, Node8, RayData, FAR_STRETCH, W};
+    use super::super::lanes::{Hits8, Kernel, Leaf8, Node8, RayData, FAR_STRETCH, W};
     use crate::ch3_ray_triangle::triangle::gamma;
 
     pub(super) struct Avx;
