@@ -15,6 +15,16 @@ pub fn all() -> Vec<&'static dyn Chapter> {
     ]
 }
 
+/// [`all`], with chapter 6 traced by the lesson's readable engine when
+/// `readable` (`--engine readable`; the images are the same bytes).
+pub fn with_engine(readable: bool) -> Vec<&'static dyn Chapter> {
+    let mut chapters = all();
+    if readable {
+        chapters[5] = &crate::ch6_global_illumination::stage::READABLE;
+    }
+    chapters
+}
+
 /// The sampling routines the warp view tests (chapter 5's).
 pub fn warp_routines() -> &'static [crate::core::warp_test::WarpRoutine] {
     &crate::ch5_reflection::warp_test::ROUTINES

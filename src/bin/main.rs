@@ -57,6 +57,12 @@ struct Cli {
     #[arg(long, value_name = "HOW", default_value = "auto",
           value_parser = ["auto", "kitty", "sixel", "iterm2", "halfblocks"])]
     graphics: String,
+    /// Which engine traces chapter 6's paths in the UI and with
+    /// `--chapter`/`--report`: `fast` (an eight-wide BVH with SIMD chosen at
+    /// run time) or `readable` (the lesson's code); the images are the
+    /// same bytes.
+    #[arg(long, value_name = "ENGINE", default_value = "fast", value_parser = ["fast", "readable"])]
+    engine: String,
     /// The same as `--graphics halfblocks`.
     #[arg(long)]
     halfblocks: bool,
@@ -118,6 +124,7 @@ fn main() -> ExitCode {
             .parse()
             .unwrap_or_default(),
             stats: cli.stats,
+            readable: cli.engine == "readable",
             remember: raystep::tui::last::path(&|k| std::env::var(k).ok()),
         };
         return match raystep::tui::run(&launch) {
@@ -146,7 +153,7 @@ fn headless(cli: &Cli) -> Result<()> {
             studies: cli.report,
             ..Settings::default()
         };
-        for chapter in raystep::chapters::all() {
+        for chapter in raystep::chapters::with_engine(cli.engine == "readable") {
             if cli.chapter.is_some_and(|n| n != chapter.info().number) {
                 continue;
             }

@@ -143,6 +143,8 @@ pub struct Launch {
     /// Print the bytes written to the terminal per second on quit
     /// (`--stats`).
     pub stats: bool,
+    /// Chapter 6 with the lesson's readable engine (`--engine readable`).
+    pub readable: bool,
     /// Where the last chapter, scene and view are remembered
     /// ([`last::path`]); `None`: nothing is remembered.
     pub remember: Option<PathBuf>,
@@ -168,7 +170,11 @@ pub fn launch_app_with(launch: &Launch, color: bool, last: Option<&last::Last>) 
             entries.len() - 1
         })
     });
-    let mut app = App::new(crate::chapters::all(), entries, color);
+    let mut app = App::new(
+        crate::chapters::with_engine(launch.readable),
+        entries,
+        color,
+    );
     app.out_dir = launch.out_dir.clone();
     if let Some(spp) = launch.spp {
         app.target.spp = spp.max(1);

@@ -143,3 +143,22 @@ fn unsafe_code_lives_in_one_module() {
     let lib = std::fs::read_to_string(src.join("lib.rs")).unwrap();
     assert!(lib.contains("#![deny(unsafe_code)]"));
 }
+
+#[test]
+fn the_engine_flag_chooses_the_tree_chapter_6_traces() {
+    use raystep::core::stage::Settings;
+    use std::sync::Arc;
+    let scene = Arc::new(Scene::builtin().with_resolution(8, 8).unwrap());
+    let settings = Settings {
+        spp: 1,
+        ..Settings::default()
+    };
+    for (readable, tree) in [(false, "8 wide"), (true, "4 wide")] {
+        let ch6 = raystep::chapters::with_engine(readable)[5];
+        assert_eq!(ch6.info().number, 6);
+        let mut r = ch6.start(scene.clone(), &settings).unwrap();
+        while !r.pass().complete {}
+        let built = r.report().built.join("\n");
+        assert!(built.contains(tree), "readable = {readable}: {built}");
+    }
+}

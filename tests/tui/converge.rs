@@ -394,6 +394,7 @@ fn the_flags_choose_the_chapter_the_scene_and_the_budget() {
         spp: Some(64),
         graphics: Default::default(),
         stats: false,
+        readable: false,
         remember: None,
     };
     let mut app = launch_app(&launch, false);
