@@ -89,6 +89,10 @@ struct Cli {
     /// Run the benchmark (Cornell box 256x256, 64 spp, 16 bounces) instead.
     #[arg(long)]
     bench: bool,
+    /// Paths per second of both engines on the Cornell box, the bunny and a
+    /// 524,288-triangle mesh (128x128, 32 spp or --spp) instead.
+    #[arg(long)]
+    bench_scenes: bool,
     /// Render the stored Cornell-box reference into scenes/references
     /// (use with --width/--height/--spp/--seed).
     #[arg(long)]
@@ -141,6 +145,11 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
             bench::query_bench().to_text()
         );
         return print(&text);
+    }
+    if cli.bench_scenes {
+        init_threads(common.threads)?;
+        let spp = if common.spp > 1 { common.spp } else { 32 };
+        return print(&bench::scenes_bench(spp, &stage.path)?.to_text());
     }
     if cli.annotate_references {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));

@@ -1,6 +1,6 @@
 //! `ch6 --bench`: the Cornell box at 256x256, 64 spp, up to 16 bounces,
 //! MIS (or the estimator, bounce limit and roulette flags given), on the
-//! current thread pool; seconds, paths/s, rays/s and RMSE
+//! current thread pool, with both engines; seconds, paths/s, rays per path and RMSE
 //! against the stored references, for both samplers.
 //!
 //! Two RMSEs are printed. The first is per pixel, against the stored
@@ -55,14 +55,13 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
             path.rr_min_bounce,
         ),
         &[
-            "engine",
-            "sampler",
+            "engine sampler",
             "seconds",
             "paths/s",
-            "rays/s",
+            "rays/path",
             "RMSE per pixel",
             "RMSE²·s",
-            "RMSE at 64x64",
+            "RMSE 64²",
             "RMSE²·s",
             "noise from variance",
         ],
@@ -95,11 +94,13 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
         let (full, full_eff) = e(full);
         let (down, down_eff) = e(down);
         t.row(vec![
-            engine.name().into(),
-            sampler.name().into(),
+            format!("{} {}", engine.name(), sampler.name()),
             format!("{secs:.3}"),
             format_number(acc.stats.paths as f64 / secs),
-            format_number(acc.stats.rays as f64 / secs),
+            format!(
+                "{:.2}",
+                acc.stats.rays as f64 / acc.stats.paths.max(1) as f64
+            ),
             full,
             full_eff,
             down,
@@ -161,8 +162,9 @@ fn mqps(n: usize, query: &dyn Fn() -> usize) -> f64 {
 }
 
 /// The ray queries alone, on one thread: chapter 3's binary BVH against
-/// the wide BVH the path tracer uses, on rays from the path tracer's own
-/// vertices (bounce rays: closest hit; shadow rays: occlusion).
+/// the readable engine's four-wide tree and the fast engine's eight-wide
+/// one, on rays from the path tracer's own vertices (bounce rays: closest
+/// hit; shadow rays: occlusion).
 pub fn query_bench() -> Table {
     let scene = Scene::builtin();
     let world = World::new(&scene);
@@ -173,8 +175,8 @@ pub fn query_bench() -> Table {
             "query",
             "rays",
             "binary BVH (ch3)",
-            "4-wide BVH",
-            "8-wide BVH (fast)",
+            "4-wide (readable)",
+            "8-wide (fast)",
         ],
     );
     let tris = &world.triangles.tris;
@@ -209,4 +211,98 @@ pub fn query_bench() -> Table {
         rate(ns, &|| count(&shadow, |(r, d)| eight.occluded(r, *d))),
     ]);
     t
+}
+
+/// The Cornell box with a bumpy sphere of `rings` × `segments` × 2
+/// triangles standing in it (white, radius about 0.35): the large mesh of
+/// the per-scene benchmark.
+pub fn cornell_with_large_mesh(rings: u32, segments: u32) -> Scene {
+    let mut scene = Scene::builtin();
+    let (r, s) = (rings.max(2), segments.max(3));
+    let mut positions = Vec::with_capacity(((r + 1) * s) as usize);
+    for i in 0..=r {
+        let theta = std::f32::consts::PI * i as f32 / r as f32;
+        for j in 0..s {
+            let phi = std::f32::consts::TAU * j as f32 / s as f32;
+            let radius = 0.35 * (1.0 + 0.05 * (7.0 * theta).sin() * (9.0 * phi).cos());
+            let d = glam::Vec3::new(
+                theta.sin() * phi.cos(),
+                theta.cos(),
+                theta.sin() * phi.sin(),
+            );
+            positions.push(glam::Vec3::new(-0.2, -0.6, 0.1) + radius * d);
+        }
+    }
+    let mut triangles = Vec::with_capacity((2 * r * s) as usize);
+    for i in 0..r {
+        for j in 0..s {
+            let (a, b) = (i * s + j, i * s + (j + 1) % s);
+            let (c, d) = (a + s, b + s);
+            triangles.push([a, c, b]);
+            triangles.push([b, c, d]);
+        }
+    }
+    let material = scene.meshes[0].material;
+    scene.meshes.push(crate::scene::mesh::Mesh {
+        name: "bumpy sphere".into(),
+        positions,
+        triangles,
+        colors: None,
+        material,
+    });
+    scene.name = "cornell-large-mesh".into();
+    scene
+}
+
+/// `ch6 --bench-scenes`: paths per second of both engines on the Cornell
+/// box (36 triangles), the bunny (3,674) and the Cornell box with a bumpy
+/// sphere of 524,288 triangles, at 128x128 and `spp` samples per pixel,
+/// on the current thread pool; the world's build time apart, and the
+/// ratio of the engines' paths per second.
+pub fn scenes_bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table> {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let scenes = [
+        Scene::builtin(),
+        Scene::load(&root.join("scenes/bunny.toml"))?,
+        cornell_with_large_mesh(512, 512),
+    ];
+    let mut t = Table::new(
+        &format!(
+            "paths per second by scene and engine: 128x128, {spp} spp, {}, {} threads",
+            path.strategy.name(),
+            rayon::current_num_threads()
+        ),
+        &[
+            "scene",
+            "triangles",
+            "build (fast / readable)",
+            "paths/s fast",
+            "readable",
+            "ratio",
+        ],
+    );
+    for scene in scenes {
+        let scene = scene.with_resolution(128, 128)?;
+        let camera = Camera::of(&scene);
+        let mut rate = [0.0; 2];
+        let mut build = [String::new(), String::new()];
+        for (i, engine) in [Engine::Fast, Engine::Readable].into_iter().enumerate() {
+            let t0 = Instant::now();
+            let world = engine.world(&scene);
+            build[i] = crate::core::format::format_seconds(t0.elapsed().as_secs_f64());
+            let mut acc = super::accumulate::Accumulator::new(128, 128, false);
+            let t1 = Instant::now();
+            acc.add_samples(&world, &camera, path, SamplerKind::Sobol, 1, spp);
+            rate[i] = acc.stats.paths as f64 / t1.elapsed().as_secs_f64();
+        }
+        t.row(vec![
+            scene.name.clone(),
+            scene.triangle_count().to_string(),
+            format!("{} / {}", build[0], build[1]),
+            format_number(rate[0]),
+            format_number(rate[1]),
+            format!("{:.2}", rate[0] / rate[1]),
+        ]);
+    }
+    Ok(t)
 }
