@@ -106,6 +106,8 @@ section "$out/ch6-cornell-box-report.txt" "Stiff and extreme cases" "$out/ch6-st
 # 64 spp (the default roulette, and roulette from the third scattering).
 "$bin/ch6" --bench --threads 2 > "$out/ch6-bench.txt"
 "$bin/ch6" --bench --threads 2 --rr-after 3 > "$out/ch6-bench-rr-after-3.txt"
+# Both engines on three scene sizes (the appendix's fast-engine section).
+"$bin/ch6" --bench-scenes --threads 2 > "$out/ch6-bench-scenes.txt"
 
 # The main program's headless summary (running.md), run where its images
 # land in a scratch folder so the listing shows the plain `out/` paths.

@@ -20,10 +20,17 @@ pub fn all() -> Vec<&'static dyn Chapter> {
 pub fn with_engine(readable: bool) -> Vec<&'static dyn Chapter> {
     let mut chapters = all();
     if readable {
-        chapters[5] = &crate::ch6_global_illumination::stage::READABLE;
+        chapters[5] = &READABLE_CH6;
     }
     chapters
 }
+
+/// Chapter 6's defaults traced by the lesson's readable engine.
+const READABLE_CH6: crate::ch6_global_illumination::stage::GlobalIllumination =
+    crate::ch6_global_illumination::stage::GlobalIllumination {
+        engine: crate::ch6_global_illumination::fast::Engine::Readable,
+        ..crate::ch6_global_illumination::stage::DEFAULT
+    };
 
 /// The sampling routines the warp view tests (chapter 5's).
 pub fn warp_routines() -> &'static [crate::core::warp_test::WarpRoutine] {

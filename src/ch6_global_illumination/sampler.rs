@@ -133,6 +133,7 @@ pub fn sobol_group(sample: u64, pixel_scramble: u64, group: u64) -> [f32; 4] {
 /// all 256 values of each of the index's two bytes. Every other step is
 /// the crate's own, so the numbers are the same bits as [`sobol_group`]'s
 /// (a test compares them); this is what the path tracer calls.
+// ANCHOR: sobol_by_table
 pub fn sobol_group_by_table(sample: u64, pixel_scramble: u64, group: u64) -> [f32; 4] {
     use sobol_burley::parts::{hash, hash_int4, owen_scramble_int4_rev, owen_scramble_rev, Int4};
     let seed = mix64(pixel_scramble ^ group) as u32;
@@ -157,6 +158,7 @@ pub fn sobol_group_by_table(sample: u64, pixel_scramble: u64, group: u64) -> [f3
         .to_f32_norm()
         .map(|u| u.min(1.0 - f32::EPSILON / 2.0))
 }
+// ANCHOR_END: sobol_by_table
 
 /// For each byte of a reversed sample index (bits 31..24, then 23..16;
 /// the crate uses the top 16), the XOR of the direction numbers of its set

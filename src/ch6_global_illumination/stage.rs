@@ -123,12 +123,6 @@ pub const DEFAULT: GlobalIllumination = GlobalIllumination {
     spp_figure: None,
 };
 
-/// [`DEFAULT`] traced by the lesson's readable engine (`--engine readable`).
-pub const READABLE: GlobalIllumination = GlobalIllumination {
-    engine: Engine::Readable,
-    ..DEFAULT
-};
-
 impl GlobalIllumination {
     /// The variant index of this estimator and sampler (into [`VARIANTS`]).
     pub fn variant(&self) -> usize {
