@@ -131,11 +131,14 @@ pub fn sobol_group(sample: u64, pixel_scramble: u64, group: u64) -> [f32; 4] {
 /// replaced by two table lookups: the point is linear in the index's bits,
 /// so the XOR of the directions of each byte's bits can be stored once for
 /// all 256 values of each of the index's two bytes. Every other step is
-/// the crate's own, so the numbers are the same bits as [`sobol_group`]'s
-/// (a test compares them); this is what the path tracer calls.
+/// the crate's, the last ones ([`owen_finish_lanes`](super::fast::lanes::owen_finish_lanes))
+/// in integer lanes the CPU's
+/// vector instructions run, so the numbers are the same bits as
+/// [`sobol_group`]'s (a test compares them); this is what the path tracer
+/// calls.
 // ANCHOR: sobol_by_table
 pub fn sobol_group_by_table(sample: u64, pixel_scramble: u64, group: u64) -> [f32; 4] {
-    use sobol_burley::parts::{hash, hash_int4, owen_scramble_int4_rev, owen_scramble_rev, Int4};
+    use sobol_burley::parts::{hash, owen_scramble_rev};
     let seed = mix64(pixel_scramble ^ group) as u32;
     // The crate's `sample_4d(sample, 0, seed)`, step by step.
     let rev = owen_scramble_rev((sample as u32).reverse_bits(), hash(seed ^ 0x79c68e4a));
@@ -144,19 +147,8 @@ pub fn sobol_group_by_table(sample: u64, pixel_scramble: u64, group: u64) -> [f3
         t[0][(rev >> 24) as usize],
         t[1][((rev >> 16) & 0xff) as usize],
     );
-    let sobol: Int4 = std::array::from_fn::<u32, 4, _>(|d| hi[d] ^ lo[d]).into();
-    let s = seed.wrapping_mul(0x9c8f2d3b);
-    let scramble: Int4 = [
-        s ^ 0x912f69ba,
-        s ^ 0x174f18ab,
-        s ^ 0x691e72ca,
-        s ^ 0xb40cc1b8,
-    ]
-    .into();
-    owen_scramble_int4_rev(sobol, hash_int4(scramble))
-        .reverse_bits()
-        .to_f32_norm()
-        .map(|u| u.min(1.0 - f32::EPSILON / 2.0))
+    let sobol = std::array::from_fn(|d| hi[d] ^ lo[d]);
+    super::fast::simd::owen_finish(sobol, seed)
 }
 // ANCHOR_END: sobol_by_table
 

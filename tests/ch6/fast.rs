@@ -162,3 +162,46 @@ fn the_engine_flag_chooses_the_tree_chapter_6_traces() {
         assert!(built.contains(tree), "readable = {readable}: {built}");
     }
 }
+
+#[test]
+fn the_owen_scramble_is_the_crates_on_every_simd_path() {
+    use raystep::ch6_global_illumination::fast::simd::owen_finish_at;
+    use sobol_burley::parts::{hash_int4, owen_scramble_int4_rev, Int4};
+    let mut x = 0x2545_f491_4f6c_dd1du64;
+    for _ in 0..20_000 {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        let (sobol, seed) = (
+            [
+                x as u32,
+                (x >> 32) as u32,
+                (x >> 7) as u32,
+                (x >> 19) as u32,
+            ],
+            (x >> 11) as u32,
+        );
+        // The crate's own steps, as `sample_4d` takes them.
+        let s = seed.wrapping_mul(0x9c8f2d3b);
+        let scramble: Int4 = [
+            s ^ 0x912f69ba,
+            s ^ 0x174f18ab,
+            s ^ 0x691e72ca,
+            s ^ 0xb40cc1b8,
+        ]
+        .into();
+        let expected = owen_scramble_int4_rev(sobol.into(), hash_int4(scramble))
+            .reverse_bits()
+            .to_f32_norm()
+            .map(|u| u.min(1.0 - f32::EPSILON / 2.0));
+        for level in Level::ALL {
+            let got = owen_finish_at(level, sobol, seed);
+            assert_eq!(
+                got.map(f32::to_bits),
+                expected.map(f32::to_bits),
+                "{}",
+                level.name()
+            );
+        }
+    }
+}

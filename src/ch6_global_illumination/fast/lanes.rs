@@ -4,7 +4,8 @@
 //! arithmetic is chapter 3's in the order
 //! [`WatertightRay::intersect4`] uses, so every hit (t, u, v) is bit for
 //! bit what the readable engine finds. [`super::simd`] holds the same two
-//! tests in AVX2 instructions; a [`Kernel`] is either.
+//! tests in AVX2 instructions; a [`Kernel`] is either. And the last steps
+//! of a Sobol point (the Owen scramble), in integer lanes.
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::gamma;
@@ -248,3 +249,35 @@ pub(super) fn leaf_test(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
     h
 }
 // ANCHOR_END: leaf8
+
+/// The last steps of the crate's `sample_4d` on a Sobol point's four
+/// dimensions (reversed bits): the Owen scramble with a seed per dimension,
+/// the bits put back in order, the conversion to [0, 1). Written lane by
+/// lane in integers, so that the compiler can run the four lanes in one
+/// vector register, and any width gives the same bits.
+#[inline(always)]
+pub fn owen_finish_lanes(sobol: [u32; 4], seed: u32) -> [f32; 4] {
+    const DIMENSION: [u32; 4] = [0x912f69ba, 0x174f18ab, 0x691e72ca, 0xb40cc1b8];
+    let s = seed.wrapping_mul(0x9c8f2d3b);
+    let mut out = [0.0f32; 4];
+    for d in 0..4 {
+        // The crate's `hash_int4` of the dimension's scramble seed.
+        let mut h = s ^ DIMENSION[d] ^ 0xe6fe3beb;
+        h ^= h >> 16;
+        h = h.wrapping_mul(0x7feb352d);
+        h ^= h >> 15;
+        h = h.wrapping_mul(0x846ca68b);
+        h ^= h >> 16;
+        // Its `owen_scramble_int4_rev`.
+        let mut n = sobol[d];
+        n ^= n.wrapping_mul(0x3d20adea);
+        n = n.wrapping_add(h);
+        n = n.wrapping_mul((h >> 16) | 1);
+        n ^= n.wrapping_mul(0x05526c56);
+        n ^= n.wrapping_mul(0x53a22864);
+        let n = n.reverse_bits();
+        let u = f32::from_bits((n >> 9) | 0x3f800000) - 1.0;
+        out[d] = u.min(1.0 - f32::EPSILON / 2.0);
+    }
+    out
+}

@@ -21,7 +21,7 @@ use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch5_reflection::world::RayQueries;
 
 use super::bvh8::Bvh8;
-use super::lanes::{Kernel, Lanes, RayData};
+use super::lanes::{owen_finish_lanes, Kernel, Lanes, RayData};
 use super::level::Level;
 
 /// The closest hit of `ray` in (0, t_max) with `level`'s instructions.
@@ -69,6 +69,38 @@ impl RayQueries for Bvh8 {
             self.level.name()
         )
     }
+}
+
+/// The widest level this CPU has (or `RAYSTEP_SIMD` asks for), found once.
+pub fn best() -> Level {
+    static BEST: std::sync::OnceLock<Level> = std::sync::OnceLock::new();
+    *BEST.get_or_init(Level::detect)
+}
+
+/// [`owen_finish_lanes`] with the widest instructions this CPU has.
+#[inline]
+pub fn owen_finish(sobol: [u32; 4], seed: u32) -> [f32; 4] {
+    owen_finish_at(best(), sobol, seed)
+}
+
+/// [`owen_finish_lanes`] with `level`'s instructions (the portable path if
+/// this CPU lacks them).
+#[inline]
+pub fn owen_finish_at(level: Level, sobol: [u32; 4], seed: u32) -> [f32; 4] {
+    match level {
+        // SAFETY: only where `Level::available` says the CPU has AVX2.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 | Level::Avx512 if level.available() => unsafe {
+            owen_finish_avx2(sobol, seed)
+        },
+        _ => owen_finish_lanes(sobol, seed),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn owen_finish_avx2(sobol: [u32; 4], seed: u32) -> [f32; 4] {
+    owen_finish_lanes(sobol, seed)
 }
 
 /// Entries of a traversal stack kept on the call stack; deeper trees
