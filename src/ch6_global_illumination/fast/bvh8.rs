@@ -2,7 +2,7 @@
 //! children per node and up to eight triangles per leaf, stored by
 //! coordinate (`[f32; 8]` per axis) so that one pass over the lanes tests
 //! all eight boxes or triangles ([`super::lanes`]). The traversal is
-//! generic over the [`Kernel`] that runs those tests, so the same loop runs
+//! generic over the `Kernel` that runs those tests, so the same loop runs
 //! with the portable lane loops or the AVX2 ones ([`super::simd`]).
 //!
 //! The rare lanes the triangle test hands back (an edge function exactly

@@ -4,7 +4,7 @@
 //! arithmetic is chapter 3's in the order
 //! [`WatertightRay::intersect4`] uses, so every hit (t, u, v) is bit for
 //! bit what the readable engine finds. [`super::simd`] holds the same two
-//! tests in AVX2 instructions; a [`Kernel`] is either. And the last steps
+//! tests in AVX2 instructions; a `Kernel` is either. And the last steps
 //! of a Sobol point (the Owen scramble), in integer lanes.
 
 use crate::ch3_ray_triangle::ray::Ray;
