@@ -11,7 +11,7 @@
 //! | the hierarchical approach, written to be read: a median-split BVH and its front-to-back traversal | [`readable_bvh`] |
 //! | building the BVH without going quadratic on coincident or tiny triangles | [`bvh_robust`] |
 //! | how much a traversal did: boxes and triangles tested, counted for the grader | [`work`] |
-//! | the BVH in the four-wide layout the shading chapters trace | [`wide_bvh`] |
+//! | the BVH in the four-wide layout the shading chapters trace, and the collapse it shares with chapter 6's eight-wide one | [`wide_bvh`], [`wide_build`] |
 //! | what is traced and what a first hit shows (depth, normal, barycentrics) | [`geometry`], [`render`] |
 //! | leaving a surface without hitting it again | [`spawn`] |
 //! | rays aimed at edges and vertices: do they slip through? | [`leaks`] |
@@ -39,5 +39,6 @@ pub mod stage;
 pub mod studies;
 pub mod triangle;
 pub mod watertight_fast;
+pub mod wide_build;
 pub mod wide_bvh;
 pub mod work;

@@ -20,6 +20,7 @@ use crate::ch3_ray_triangle::obvhs_bvh::padded_boxes;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{gamma, Hit};
 use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, Tri4, WatertightRay};
+use crate::ch3_ray_triangle::wide_build::{count_triangles, open_children, triangles_under};
 
 /// A child reference with this bit set is a leaf (the rest of the bits
 /// index [`WideBvh::leaves`]); otherwise it indexes [`WideBvh::nodes`].
@@ -171,22 +172,7 @@ impl WideBvh {
             return self.leaf(bvh2, n, tris);
         }
         self.levels = self.levels.max(level);
-        let first = bvh2.nodes[n].first_index as usize;
-        let mut children = vec![first, first + 1];
-        while children.len() < 4 {
-            let open = children
-                .iter()
-                .enumerate()
-                .filter(|(_, &c)| counts[c] as usize > LANES)
-                .max_by(|a, b| {
-                    let area = |c: usize| bvh2.nodes[c].aabb.half_area();
-                    area(*a.1).total_cmp(&area(*b.1))
-                });
-            let Some((i, &c)) = open else { break };
-            let first = bvh2.nodes[c].first_index as usize;
-            children[i] = first;
-            children.push(first + 1);
-        }
+        let children = open_children(bvh2, counts, n, 4, LANES);
         let index = self.nodes.len();
         self.nodes.push(Node4 {
             min: [Vec4::INFINITY; 3],
@@ -209,17 +195,7 @@ impl WideBvh {
 
     /// A leaf holding every triangle under binary node `n` (at most four).
     fn leaf(&mut self, bvh2: &Bvh2, n: usize, tris: &[[Vec3; 3]]) -> u32 {
-        let mut ids = Vec::new();
-        let mut stack = vec![n];
-        while let Some(m) = stack.pop() {
-            let node = &bvh2.nodes[m];
-            if node.is_leaf() {
-                let range = node.first_index..node.first_index + node.prim_count;
-                ids.extend(range.map(|k| bvh2.primitive_indices[k as usize]));
-            } else {
-                stack.extend([node.first_index as usize + 1, node.first_index as usize]);
-            }
-        }
+        let ids = triangles_under(bvh2, n);
         let nan = SoaTriangle {
             rows: [glam::Vec3A::NAN; 3],
         };
@@ -444,16 +420,4 @@ thread_local! {
     /// one per thread is enough).
     static STACK: std::cell::RefCell<[(u32, f32); ON_STACK]> =
         const { std::cell::RefCell::new([(0, 0.0); ON_STACK]) };
-}
-
-/// Fills `counts[n]` with the number of triangles under binary node `n`.
-fn count_triangles(bvh2: &Bvh2, n: usize, counts: &mut [u32]) -> u32 {
-    let node = &bvh2.nodes[n];
-    counts[n] = if node.is_leaf() {
-        node.prim_count
-    } else {
-        let first = node.first_index as usize;
-        count_triangles(bvh2, first, counts) + count_triangles(bvh2, first + 1, counts)
-    };
-    counts[n]
 }

@@ -17,6 +17,7 @@ use crate::ch3_ray_triangle::bvh_robust::build_guarded;
 use crate::ch3_ray_triangle::obvhs_bvh::padded_boxes;
 use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch3_ray_triangle::watertight_fast::SoaTriangle;
+use crate::ch3_ray_triangle::wide_build::{count_triangles, open_children, triangles_under};
 
 use super::lanes::{Kernel, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
 use super::level::Level;
@@ -51,7 +52,7 @@ impl Bvh8 {
         };
         let bvh2 = build_guarded(&padded_boxes(tris), params);
         let mut counts = vec![0u32; bvh2.nodes.len()];
-        count(&bvh2, 0, &mut counts);
+        count_triangles(&bvh2, 0, &mut counts);
         let mut b = Bvh8 {
             nodes: Vec::new(),
             leaves: Vec::new(),
@@ -96,22 +97,7 @@ impl Bvh8 {
             return self.leaf(bvh2, n, tris);
         }
         self.levels = self.levels.max(level);
-        let first = bvh2.nodes[n].first_index as usize;
-        let mut children = vec![first, first + 1];
-        while children.len() < W {
-            let open = children
-                .iter()
-                .enumerate()
-                .filter(|(_, &c)| counts[c] as usize > LEAF_SIZE)
-                .max_by(|a, b| {
-                    let area = |c: usize| bvh2.nodes[c].aabb.half_area();
-                    area(*a.1).total_cmp(&area(*b.1))
-                });
-            let Some((i, &c)) = open else { break };
-            let first = bvh2.nodes[c].first_index as usize;
-            children[i] = first;
-            children.push(first + 1);
-        }
+        let children = open_children(bvh2, counts, n, W, LEAF_SIZE);
         let index = self.nodes.len();
         self.nodes.push(Node8 {
             min: [[f32::INFINITY; W]; 3],
@@ -132,17 +118,7 @@ impl Bvh8 {
     }
 
     fn leaf(&mut self, bvh2: &Bvh2, n: usize, tris: &[[Vec3; 3]]) -> u32 {
-        let mut ids = Vec::new();
-        let mut stack = vec![n];
-        while let Some(m) = stack.pop() {
-            let node = &bvh2.nodes[m];
-            if node.is_leaf() {
-                let range = node.first_index..node.first_index + node.prim_count;
-                ids.extend(range.map(|k| bvh2.primitive_indices[k as usize]));
-            } else {
-                stack.extend([node.first_index as usize + 1, node.first_index as usize]);
-            }
-        }
+        let ids = triangles_under(bvh2, n);
         let mut leaf = Leaf8 {
             p: [[[f32::NAN; W]; 3]; 3],
         };
@@ -325,16 +301,4 @@ impl Bvh8 {
         }
         false
     }
-}
-
-/// Fills `counts[n]` with the number of triangles under binary node `n`.
-fn count(bvh2: &Bvh2, n: usize, counts: &mut [u32]) -> u32 {
-    let node = &bvh2.nodes[n];
-    counts[n] = if node.is_leaf() {
-        node.prim_count
-    } else {
-        let first = node.first_index as usize;
-        count(bvh2, first, counts) + count(bvh2, first + 1, counts)
-    };
-    counts[n]
 }
