@@ -16,7 +16,7 @@ use obvhs::BvhBuildParams;
 use crate::ch3_ray_triangle::bvh_robust::build_guarded;
 use crate::ch3_ray_triangle::obvhs_bvh::padded_boxes;
 use crate::ch3_ray_triangle::triangle::Hit;
-use crate::ch3_ray_triangle::watertight_fast::SoaTriangle;
+use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, WatertightRay};
 use crate::ch3_ray_triangle::wide_build::{count_triangles, open_children, triangles_under};
 
 use super::lanes::{Kernel, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
@@ -240,11 +240,12 @@ impl Bvh8 {
         t_max: f32,
         mut best: Option<(Hit, usize)>,
     ) -> Option<(Hit, usize)> {
+        let wt = WatertightRay::new(r.ray);
         while check != 0 {
             let lane = check.trailing_zeros() as usize;
             check &= check - 1;
             let t_best = best.map_or(t_max, |(b, _)| b.t);
-            if let Some(hit) = r.wt.intersect(&self.tris[l * W + lane], 0.0, t_best) {
+            if let Some(hit) = wt.intersect(&self.tris[l * W + lane], 0.0, t_best) {
                 best = Some((hit, lane));
             }
         }
@@ -289,13 +290,11 @@ impl Bvh8 {
     #[cold]
     #[inline(never)]
     fn any_checked(&self, r: &RayData, l: usize, mut check: u32, t_max: f32) -> bool {
+        let wt = WatertightRay::new(r.ray);
         while check != 0 {
             let lane = check.trailing_zeros() as usize;
             check &= check - 1;
-            if r.wt
-                .intersect(&self.tris[l * W + lane], 0.0, t_max)
-                .is_some()
-            {
+            if wt.intersect(&self.tris[l * W + lane], 0.0, t_max).is_some() {
                 return true;
             }
         }

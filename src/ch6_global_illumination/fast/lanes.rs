@@ -2,14 +2,13 @@
 //! plain Rust over `[f32; 8]` arrays: the slab test of a node's eight
 //! boxes and the watertight test of a leaf's eight triangles. Each lane's
 //! arithmetic is chapter 3's in the order
-//! [`WatertightRay::intersect4`] uses, so every hit (t, u, v) is bit for
+//! [`WatertightRay::intersect4`](crate::ch3_ray_triangle::watertight_fast::WatertightRay::intersect4) uses, so every hit (t, u, v) is bit for
 //! bit what the readable engine finds. [`super::simd`] holds the same two
 //! tests in AVX2 instructions; a `Kernel` is either. And the last steps
 //! of a Sobol point (the Owen scramble), in integer lanes.
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::gamma;
-use crate::ch3_ray_triangle::watertight_fast::WatertightRay;
 
 /// Children per node and triangles per leaf.
 pub const W: usize = 8;
@@ -63,7 +62,8 @@ impl Kernel for Lanes {
 
 /// What the box and triangle tests need of a ray, computed once per ray.
 pub struct RayData<'a> {
-    pub(super) wt: WatertightRay<'a>,
+    /// The ray, for the rare lanes the one-triangle test decides.
+    pub(super) ray: &'a Ray,
     /// Origin, 1/direction (tiny components kept finite), and per axis
     /// whether the direction is negative.
     pub(super) o: [f32; 3],
@@ -105,7 +105,7 @@ impl<'a> RayData<'a> {
         let k = PERMUTATION[kz];
         let dz = d[k[2]];
         RayData {
-            wt: WatertightRay::new(ray),
+            ray,
             o,
             inv,
             negative: d.map(|x| x.is_sign_negative()),

@@ -103,29 +103,35 @@ unsafe fn owen_finish_avx2(sobol: [u32; 4], seed: u32) -> [f32; 4] {
     owen_finish_lanes(sobol, seed)
 }
 
-/// Entries of a traversal stack kept on the call stack; deeper trees
-/// (more than 9 levels, over 8^9 leaves) get one on the heap.
+/// Entries of a traversal stack kept on the call stack: a small one for
+/// small trees (up to 2 levels; clearing it is part of every query), a
+/// larger one up to 9 levels (over 8^9 leaves), else one on the heap.
+const SMALL_STACK: usize = 16;
 const ON_STACK: usize = 64;
 
+// (No helper taking a closure: a closure is compiled without the AVX
+// features of its caller, and the kernels inside it would become calls.)
 #[inline(always)]
 fn closest_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    let r = RayData::new(ray);
-    if bvh.stack_size() <= ON_STACK {
-        let mut stack = [(0u32, 0f32); ON_STACK];
-        bvh.closest_with::<K>(&r, t_max, &mut stack)
+    let (r, n) = (RayData::new(ray), bvh.stack_size());
+    if n <= SMALL_STACK {
+        bvh.closest_with::<K>(&r, t_max, &mut [(0u32, 0f32); SMALL_STACK])
+    } else if n <= ON_STACK {
+        bvh.closest_with::<K>(&r, t_max, &mut [(0u32, 0f32); ON_STACK])
     } else {
-        bvh.closest_with::<K>(&r, t_max, &mut vec![(0, 0.0); bvh.stack_size()])
+        bvh.closest_with::<K>(&r, t_max, &mut vec![(0, 0.0); n])
     }
 }
 
 #[inline(always)]
 fn occluded_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    let r = RayData::new(ray);
-    if bvh.stack_size() <= ON_STACK {
-        let mut stack = [(0u32, 0f32); ON_STACK];
-        bvh.occluded_with::<K>(&r, t_max, &mut stack)
+    let (r, n) = (RayData::new(ray), bvh.stack_size());
+    if n <= SMALL_STACK {
+        bvh.occluded_with::<K>(&r, t_max, &mut [(0u32, 0f32); SMALL_STACK])
+    } else if n <= ON_STACK {
+        bvh.occluded_with::<K>(&r, t_max, &mut [(0u32, 0f32); ON_STACK])
     } else {
-        bvh.occluded_with::<K>(&r, t_max, &mut vec![(0, 0.0); bvh.stack_size()])
+        bvh.occluded_with::<K>(&r, t_max, &mut vec![(0, 0.0); n])
     }
 }
 
