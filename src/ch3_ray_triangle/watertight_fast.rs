@@ -198,6 +198,14 @@ impl<'a> WatertightRay<'a> {
 // ANCHOR_END: watertight_ray
 
 impl WatertightRay<'_> {
+    /// The per-ray part of the test, for tests written elsewhere over more
+    /// lanes (chapter 6's eight-wide tree): which axes become x, y and z,
+    /// the origin's coordinates in that order, and the shear (sx, sy, sz).
+    #[inline(always)]
+    pub fn setup(&self) -> ([usize; 3], [f32; 3], [f32; 3]) {
+        (self.k, self.o.map(|o| o.x), [self.sx, self.sy, self.sz])
+    }
+
     /// [`WatertightRay::intersect`] on four triangles at once: the same
     /// arithmetic in the same order, one triangle per lane, so every lane's
     /// t, u and v are bit for bit what the one-triangle test gives. Lanes

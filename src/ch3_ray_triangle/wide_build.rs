@@ -1,9 +1,14 @@
-//! Collapsing chapter 3's binary tree into a wide one, the steps the
-//! four-wide tree ([`super::wide_bvh`]) and chapter 6's eight-wide one
-//! share: which binary nodes become a wide node's children, and which
-//! triangles a leaf holds.
+//! What the four-wide tree ([`super::wide_bvh`]) and chapter 6's
+//! eight-wide one share: collapsing chapter 3's binary tree into a wide one
+//! (which binary nodes become a wide node's children, which triangles a
+//! leaf holds), and the steps of a query that do not depend on the width
+//! (the order children are visited in, the nearest hit of a leaf, the rare
+//! lanes the one-triangle test decides).
 
 use obvhs::bvh2::Bvh2;
+
+use crate::ch3_ray_triangle::triangle::Hit;
+use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, WatertightRay};
 
 // ANCHOR: open_children
 /// The children of a wide node made from binary node `n`: its two binary
@@ -63,4 +68,105 @@ pub(crate) fn count_triangles(bvh2: &Bvh2, n: usize, counts: &mut [u32]) -> u32 
         count_triangles(bvh2, first, counts) + count_triangles(bvh2, first + 1, counts)
     };
     counts[n]
+}
+
+/// Traversal steps the two wide trees share.
+///
+/// A closest-hit query at a node: `entered` marks the children the ray
+/// enters, `t_near` where it enters each. Visit the nearest child next
+/// (returned); stack the others farthest first, so they come off nearest
+/// first.
+#[inline(always)]
+pub(crate) fn nearest_child_next<const N: usize>(
+    mut entered: u32,
+    child: &[u32; N],
+    t_near: &[f32; N],
+    stack: &mut [(u32, f32)],
+    depth: &mut usize,
+) -> u32 {
+    let mut order = [(0u32, 0f32); N];
+    let mut count = 0;
+    while entered != 0 {
+        let lane = entered.trailing_zeros() as usize;
+        entered &= entered - 1;
+        let item = (child[lane], t_near[lane]);
+        let mut i = count;
+        while i > 0 && order[i - 1].1 < item.1 {
+            order[i] = order[i - 1];
+            i -= 1;
+        }
+        order[i] = item;
+        count += 1;
+    }
+    for &item in &order[..count - 1] {
+        stack[*depth] = item;
+        *depth += 1;
+    }
+    order[count - 1].0
+}
+
+/// The nearest of a leaf's hit lanes (`hits`, with their t, u and v) and
+/// its lane; `Hit::triangle` is left 0. A later lane wins a tie.
+#[inline(always)]
+pub(crate) fn nearest_lane(mut hits: u32, t: &[f32], u: &[f32], v: &[f32]) -> Option<(Hit, usize)> {
+    let mut best: Option<(Hit, usize)> = None;
+    while hits != 0 {
+        let lane = hits.trailing_zeros() as usize;
+        hits &= hits - 1;
+        if best.is_none_or(|(b, _)| t[lane] <= b.t) {
+            let hit = Hit {
+                t: t[lane],
+                u: u[lane],
+                v: v[lane],
+                triangle: 0,
+            };
+            best = Some((hit, lane));
+        }
+    }
+    best
+}
+
+/// The rare lanes `check` of a leaf (its triangles one by one in `tris`)
+/// that the one-triangle test must decide, against the nearest hit so far.
+/// Kept out of line, so the common path's registers are not spent on the
+/// f64 tie-breakers.
+#[cold]
+#[inline(never)]
+pub(crate) fn nearest_checked(
+    wr: &WatertightRay,
+    tris: &[SoaTriangle],
+    mut check: u32,
+    t_max: f32,
+    mut best: Option<(Hit, usize)>,
+) -> Option<(Hit, usize)> {
+    while check != 0 {
+        let lane = check.trailing_zeros() as usize;
+        check &= check - 1;
+        let t_best = best.map_or(t_max, |(b, _)| b.t);
+        if let Some(hit) = wr.intersect(&tris[lane], 0.0, t_best) {
+            best = Some((hit, lane));
+        }
+    }
+    best
+}
+
+/// Whether any of the rare lanes `check` of a leaf (its triangles in
+/// `tris`) is hit in (0, t_max), by the one-triangle test (out of line,
+/// as above).
+#[cold]
+#[inline(never)]
+pub(crate) fn any_checked(
+    wr: &WatertightRay,
+    tris: &[SoaTriangle],
+    mut check: u32,
+    t_max: f32,
+) -> bool {
+    while check != 0 {
+        let lane = check.trailing_zeros() as usize;
+        check &= check - 1;
+        if wr.intersect(&tris[lane], 0.0, t_max).is_some() {
+            return true;
+        }
+    }
+    false
 }

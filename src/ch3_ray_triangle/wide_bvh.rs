@@ -20,7 +20,10 @@ use crate::ch3_ray_triangle::obvhs_bvh::padded_boxes;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{gamma, Hit};
 use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, Tri4, WatertightRay};
-use crate::ch3_ray_triangle::wide_build::{count_triangles, open_children, triangles_under};
+use crate::ch3_ray_triangle::wide_build::{
+    any_checked, count_triangles, nearest_checked, nearest_child_next, nearest_lane, open_children,
+    triangles_under,
+};
 
 /// A child reference with this bit set is a leaf (the rest of the bits
 /// index [`WideBvh::leaves`]); otherwise it indexes [`WideBvh::nodes`].
@@ -63,23 +66,24 @@ pub struct WideBvh {
 
 /// How much a box's far distance is stretched, so rounding in the slab
 /// test never culls a box a hit lies in (pbrt stretches by 2γ₃ ≈ 4e-7).
-const FAR_STRETCH: f32 = 1.0 + 4.0 * gamma(3);
+pub(crate) const FAR_STRETCH: f32 = 1.0 + 4.0 * gamma(3);
 
-/// The part of the slab test that depends only on the ray.
-struct BoxRay {
+/// The part of the slab test that depends only on the ray (chapter 6's
+/// eight-wide tree uses it too).
+pub(crate) struct BoxRay {
     /// The origin, one splat per axis.
-    o: [Vec4; 3],
+    pub(crate) o: [Vec4; 3],
     /// 1 / direction per axis (zero components replaced by a tiny number
     /// of the same sign, so no 0 · ∞ can make a NaN).
-    inv: [Vec4; 3],
+    pub(crate) inv: [Vec4; 3],
     /// Per axis, whether the ray runs towards -∞ (then a box's max is met
     /// first).
-    negative: [bool; 3],
+    pub(crate) negative: [bool; 3],
 }
 
 impl BoxRay {
     #[inline(always)]
-    fn new(ray: &Ray) -> BoxRay {
+    pub(crate) fn new(ray: &Ray) -> BoxRay {
         let d = Vec3A::from(ray.dir);
         let tiny = d.abs().cmplt(Vec3A::splat(1e-30));
         let safe = Vec3A::select(tiny, Vec3A::splat(1e-30).copysign(d), d);
@@ -238,30 +242,11 @@ impl WideBvh {
         loop {
             if at & LEAF == 0 {
                 let node = &self.nodes[at as usize];
-                let (mut entered, t_near) = br.enter(node, t_best);
-                let t_near = t_near.to_array();
+                let (entered, t_near) = br.enter(node, t_best);
                 if entered != 0 {
-                    // Visit the nearest child next; stack the others
-                    // farthest first, so they come off nearest first.
-                    let mut order = [(0u32, 0f32); 4];
-                    let mut count = 0;
-                    while entered != 0 {
-                        let lane = entered.trailing_zeros() as usize;
-                        entered &= entered - 1;
-                        let item = (node.child[lane], t_near[lane]);
-                        let mut i = count;
-                        while i > 0 && order[i - 1].1 < item.1 {
-                            order[i] = order[i - 1];
-                            i -= 1;
-                        }
-                        order[i] = item;
-                        count += 1;
-                    }
-                    for &item in &order[..count - 1] {
-                        stack[depth] = item;
-                        depth += 1;
-                    }
-                    at = order[count - 1].0;
+                    // Visit the nearest child next, stack the others.
+                    let t_near = t_near.to_array();
+                    at = nearest_child_next(entered, &node.child, &t_near, stack, &mut depth);
                     continue;
                 }
             } else {
@@ -296,49 +281,16 @@ impl WideBvh {
     fn leaf_closest(&self, wr: &WatertightRay, leaf: usize, t_max: f32) -> Option<(Hit, usize)> {
         let h = wr.intersect4(&self.leaves[leaf], 0.0, t_max);
         let (t, u, v) = (h.t.to_array(), h.u.to_array(), h.v.to_array());
-        let mut best: Option<(Hit, usize)> = None;
-        let mut hits = h.hit;
-        while hits != 0 {
-            let lane = hits.trailing_zeros() as usize;
-            hits &= hits - 1;
-            if best.is_none_or(|(b, _)| t[lane] <= b.t) {
-                let hit = Hit {
-                    t: t[lane],
-                    u: u[lane],
-                    v: v[lane],
-                    triangle: 0,
-                };
-                best = Some((hit, lane));
-            }
+        let best = nearest_lane(h.hit, &t, &u, &v);
+        match h.check {
+            0 => best,
+            check => nearest_checked(wr, self.leaf_tris(leaf), check, t_max, best),
         }
-        if h.check != 0 {
-            best = self.closest_checked(wr, leaf, h.check, t_max, best);
-        }
-        best
     }
 
-    /// The rare lanes of [`WideBvh::leaf_closest`] that the one-triangle
-    /// test must decide. Kept out of line, so the common path's registers
-    /// are not spent on the f64 tie-breakers.
-    #[cold]
-    #[inline(never)]
-    fn closest_checked(
-        &self,
-        wr: &WatertightRay,
-        leaf: usize,
-        mut check: u32,
-        t_max: f32,
-        mut best: Option<(Hit, usize)>,
-    ) -> Option<(Hit, usize)> {
-        while check != 0 {
-            let lane = check.trailing_zeros() as usize;
-            check &= check - 1;
-            let t_best = best.map_or(t_max, |(b, _)| b.t);
-            if let Some(hit) = wr.intersect(&self.tris[leaf * LANES + lane], 0.0, t_best) {
-                best = Some((hit, lane));
-            }
-        }
-        best
+    /// Leaf `leaf`'s triangles one by one, for the rare lanes.
+    fn leaf_tris(&self, leaf: usize) -> &[SoaTriangle] {
+        &self.tris[leaf * LANES..(leaf + 1) * LANES]
     }
 
     /// Whether anything is hit in (0, t_max): stops at the first hit, in
@@ -366,7 +318,8 @@ impl WideBvh {
             } else {
                 let leaf = (at & !LEAF) as usize;
                 let h = wr.intersect4(&self.leaves[leaf], 0.0, t_max);
-                if h.hit != 0 || (h.check != 0 && self.any_checked(&wr, leaf, h.check, t_max)) {
+                let checked = || any_checked(&wr, self.leaf_tris(leaf), h.check, t_max);
+                if h.hit != 0 || (h.check != 0 && checked()) {
                     return true;
                 }
             }
@@ -376,24 +329,6 @@ impl WideBvh {
             depth -= 1;
             at = stack[depth].0;
         }
-    }
-
-    /// Whether any of the rare lanes `check` of leaf `leaf` is hit in
-    /// (0, t_max), by the one-triangle test (out of line, as above).
-    #[cold]
-    #[inline(never)]
-    fn any_checked(&self, wr: &WatertightRay, leaf: usize, mut check: u32, t_max: f32) -> bool {
-        while check != 0 {
-            let lane = check.trailing_zeros() as usize;
-            check &= check - 1;
-            if wr
-                .intersect(&self.tris[leaf * LANES + lane], 0.0, t_max)
-                .is_some()
-            {
-                return true;
-            }
-        }
-        false
     }
 
     /// Runs `query` with a traversal stack deep enough for this tree: this

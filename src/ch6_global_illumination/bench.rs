@@ -31,7 +31,6 @@ use crate::scene::Scene;
 
 use super::accumulate::downsample;
 use super::fast::bvh8::Bvh8;
-use super::fast::level::Level;
 use super::fast::Engine;
 use super::integrator::PathSettings;
 use super::reference::StoredReference;
@@ -183,7 +182,7 @@ pub fn query_bench() -> Table {
     let (Some(bvh), Some(wide), Some(eight)) = (
         Bvh::build(tris),
         &world.wide,
-        Bvh8::build(tris, Level::detect()),
+        Bvh8::build(tris, super::fast::simd::best()),
     ) else {
         return t;
     };

@@ -16,8 +16,11 @@ use obvhs::BvhBuildParams;
 use crate::ch3_ray_triangle::bvh_robust::build_guarded;
 use crate::ch3_ray_triangle::obvhs_bvh::padded_boxes;
 use crate::ch3_ray_triangle::triangle::Hit;
-use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, WatertightRay};
-use crate::ch3_ray_triangle::wide_build::{count_triangles, open_children, triangles_under};
+use crate::ch3_ray_triangle::watertight_fast::SoaTriangle;
+use crate::ch3_ray_triangle::wide_build::{
+    any_checked, count_triangles, nearest_checked, nearest_child_next, nearest_lane, open_children,
+    triangles_under,
+};
 
 use super::lanes::{Kernel, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
 use super::level::Level;
@@ -159,27 +162,9 @@ impl Bvh8 {
         loop {
             if at & LEAF == 0 {
                 let node = &self.nodes[at as usize];
-                let (mut entered, t_near) = K::enter(r, node, t_best);
+                let (entered, t_near) = K::enter(r, node, t_best);
                 if entered != 0 {
-                    let mut order = [(0u32, 0f32); W];
-                    let mut count = 0;
-                    while entered != 0 {
-                        let lane = entered.trailing_zeros() as usize;
-                        entered &= entered - 1;
-                        let item = (node.child[lane], t_near[lane]);
-                        let mut i = count;
-                        while i > 0 && order[i - 1].1 < item.1 {
-                            order[i] = order[i - 1];
-                            i -= 1;
-                        }
-                        order[i] = item;
-                        count += 1;
-                    }
-                    for &item in &order[..count - 1] {
-                        stack[depth] = item;
-                        depth += 1;
-                    }
-                    at = order[count - 1].0;
+                    at = nearest_child_next(entered, &node.child, &t_near, stack, &mut depth);
                     continue;
                 }
             } else {
@@ -209,47 +194,16 @@ impl Bvh8 {
     #[inline(always)]
     fn leaf_closest<K: Kernel>(&self, r: &RayData, l: usize, t_max: f32) -> Option<(Hit, usize)> {
         let h = K::leaf(r, &self.leaves[l], t_max);
-        let mut best: Option<(Hit, usize)> = None;
-        let mut hits = h.hit;
-        while hits != 0 {
-            let lane = hits.trailing_zeros() as usize;
-            hits &= hits - 1;
-            if best.is_none_or(|(b, _)| h.t[lane] <= b.t) {
-                let hit = Hit {
-                    t: h.t[lane],
-                    u: h.u[lane],
-                    v: h.v[lane],
-                    triangle: 0,
-                };
-                best = Some((hit, lane));
-            }
+        let best = nearest_lane(h.hit, &h.t, &h.u, &h.v);
+        match h.check {
+            0 => best,
+            check => nearest_checked(&r.wt, self.leaf_tris(l), check, t_max, best),
         }
-        if h.check != 0 {
-            best = self.closest_checked(r, l, h.check, t_max, best);
-        }
-        best
     }
 
-    #[cold]
-    #[inline(never)]
-    fn closest_checked(
-        &self,
-        r: &RayData,
-        l: usize,
-        mut check: u32,
-        t_max: f32,
-        mut best: Option<(Hit, usize)>,
-    ) -> Option<(Hit, usize)> {
-        let wt = WatertightRay::new(r.ray);
-        while check != 0 {
-            let lane = check.trailing_zeros() as usize;
-            check &= check - 1;
-            let t_best = best.map_or(t_max, |(b, _)| b.t);
-            if let Some(hit) = wt.intersect(&self.tris[l * W + lane], 0.0, t_best) {
-                best = Some((hit, lane));
-            }
-        }
-        best
+    /// Leaf `l`'s triangles one by one, for the rare lanes.
+    fn leaf_tris(&self, l: usize) -> &[SoaTriangle] {
+        &self.tris[l * W..(l + 1) * W]
     }
 
     /// Whether anything is hit in (0, t_max).
@@ -275,7 +229,8 @@ impl Bvh8 {
             } else {
                 let l = (at & !LEAF) as usize;
                 let h = K::leaf(r, &self.leaves[l], t_max);
-                if h.hit != 0 || (h.check != 0 && self.any_checked(r, l, h.check, t_max)) {
+                let checked = || any_checked(&r.wt, self.leaf_tris(l), h.check, t_max);
+                if h.hit != 0 || (h.check != 0 && checked()) {
                     return true;
                 }
             }
@@ -285,19 +240,5 @@ impl Bvh8 {
             depth -= 1;
             at = stack[depth].0;
         }
-    }
-
-    #[cold]
-    #[inline(never)]
-    fn any_checked(&self, r: &RayData, l: usize, mut check: u32, t_max: f32) -> bool {
-        let wt = WatertightRay::new(r.ray);
-        while check != 0 {
-            let lane = check.trailing_zeros() as usize;
-            check &= check - 1;
-            if wt.intersect(&self.tris[l * W + lane], 0.0, t_max).is_some() {
-                return true;
-            }
-        }
-        false
     }
 }

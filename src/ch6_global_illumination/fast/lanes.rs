@@ -9,6 +9,8 @@
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::gamma;
+use crate::ch3_ray_triangle::watertight_fast::WatertightRay;
+use crate::ch3_ray_triangle::wide_bvh::BoxRay;
 
 /// Children per node and triangles per leaf.
 pub const W: usize = 8;
@@ -16,8 +18,8 @@ pub const W: usize = 8;
 pub(super) const LEAF_SIZE: usize = 8;
 /// A child reference with this bit set is a leaf.
 pub(super) const LEAF: u32 = 1 << 31;
-/// How much a box's far distance is stretched (as the readable tree).
-pub(super) const FAR_STRETCH: f32 = 1.0 + 4.0 * gamma(3);
+/// How much a box's far distance is stretched: the readable tree's.
+pub(super) use crate::ch3_ray_triangle::wide_bvh::FAR_STRETCH;
 
 /// Eight children's boxes by axis; an unused slot has an empty box.
 #[derive(Clone, Copy, Debug)]
@@ -60,16 +62,19 @@ impl Kernel for Lanes {
     }
 }
 
-/// What the box and triangle tests need of a ray, computed once per ray.
+/// What the box and triangle tests need of a ray, computed once per ray
+/// by the readable tree's own per-ray steps (chapter 3's `BoxRay` and
+/// `WatertightRay`), in the scalar form the lane loops read.
 pub struct RayData<'a> {
-    /// The ray, for the rare lanes the one-triangle test decides.
-    pub(super) ray: &'a Ray,
+    /// The watertight test's per-ray part, also for the rare lanes the
+    /// one-triangle test decides.
+    pub(super) wt: WatertightRay<'a>,
     /// Origin, 1/direction (tiny components kept finite), and per axis
     /// whether the direction is negative.
     pub(super) o: [f32; 3],
     pub(super) inv: [f32; 3],
     pub(super) negative: [bool; 3],
-    /// Watertight permutation and shear.
+    /// Watertight permutation, permuted origin and shear.
     pub(super) k: [usize; 3],
     pub(super) ko: [f32; 3],
     pub(super) s: [f32; 3],
@@ -79,39 +84,17 @@ impl<'a> RayData<'a> {
     /// The per-ray data of `ray`.
     #[inline(always)]
     pub fn new(ray: &'a Ray) -> RayData<'a> {
-        let d = ray.dir.to_array();
-        let o = ray.origin.to_array();
-        let inv = d.map(|x| {
-            let safe = if x.abs() < 1e-30 {
-                1e-30f32.copysign(x)
-            } else {
-                x
-            };
-            1.0 / safe
-        });
-        let a = ray.dir.abs();
-        let kz = if a.x > a.y {
-            if a.x > a.z {
-                0
-            } else {
-                2
-            }
-        } else if a.y > a.z {
-            1
-        } else {
-            2
-        };
-        const PERMUTATION: [[usize; 3]; 3] = [[1, 2, 0], [2, 0, 1], [0, 1, 2]];
-        let k = PERMUTATION[kz];
-        let dz = d[k[2]];
+        let wt = WatertightRay::new(ray);
+        let (k, ko, s) = wt.setup();
+        let b = BoxRay::new(ray);
         RayData {
-            ray,
-            o,
-            inv,
-            negative: d.map(|x| x.is_sign_negative()),
+            wt,
+            o: b.o.map(|v| v.x),
+            inv: b.inv.map(|v| v.x),
+            negative: b.negative,
             k,
-            ko: k.map(|i| o[i]),
-            s: [-d[k[0]] / dz, -d[k[1]] / dz, 1.0 / dz],
+            ko,
+            s,
         }
     }
 }

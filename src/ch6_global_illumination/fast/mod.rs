@@ -47,7 +47,7 @@ impl Engine {
     }
 
     /// The world of `scene` as this engine traces it; the fast engine's
-    /// queries use `level`'s instructions ([`Level::detect`] for the CPU's
+    /// queries use `level`'s instructions ([`simd::best`] for the CPU's
     /// best).
     pub fn world_at(self, scene: &Scene, level: Level) -> World {
         match self {
@@ -61,6 +61,6 @@ impl Engine {
     /// The world of `scene` as this engine traces it, with the CPU's best
     /// instructions.
     pub fn world(self, scene: &Scene) -> World {
-        self.world_at(scene, Level::detect())
+        self.world_at(scene, simd::best())
     }
 }
