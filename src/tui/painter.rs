@@ -66,23 +66,10 @@ fn goto(out: &mut dyn Write, r: Rect) -> io::Result<()> {
     write!(out, "\x1b[{};{}H", r.y + 1, r.x + 1)
 }
 
-/// Standard base64 with padding.
+/// Standard base64 with padding (the base64-simd crate, which
+/// ratatui-image already brings in).
 pub fn base64(bytes: &[u8]) -> String {
-    const ABC: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    let mut s = String::with_capacity(bytes.len().div_ceil(3) * 4);
-    for c in bytes.chunks(3) {
-        let n = (c[0] as u32) << 16
-            | (*c.get(1).unwrap_or(&0) as u32) << 8
-            | *c.get(2).unwrap_or(&0) as u32;
-        for i in 0..4 {
-            if i <= c.len() {
-                s.push(ABC[(n >> (18 - 6 * i) & 63) as usize] as char);
-            } else {
-                s.push('=');
-            }
-        }
-    }
-    s
+    base64_simd::STANDARD.encode_to_string(bytes)
 }
 
 /// `image` as PNG. Adaptive filters: a row repeated by the zoom filters
