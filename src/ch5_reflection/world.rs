@@ -49,6 +49,12 @@ pub trait RayQueries: Send + Sync {
     fn occluded(&self, ray: &Ray, t_max: f32) -> bool;
     /// What it is, for reports ("8 wide, 12 nodes, ...").
     fn describe(&self) -> String;
+    /// The queries' own type, for a caller that knows it and can do more
+    /// with it (chapter 6's fast engine finds its tree here and then traces
+    /// paths in waves); `None` by default.
+    fn as_any(&self) -> Option<&dyn std::any::Any> {
+        None
+    }
 }
 
 /// A [`RayQueries`] as [`World`] holds it (a world stays safe to use
@@ -220,6 +226,7 @@ impl World {
     /// `dir`, started far enough off the surface not to hit it again:
     /// chapter 3's offset in ulps, plus a few marching ε when the scene has
     /// SDFs (a march that starts on the surface stops at once).
+    #[inline]
     pub fn spawn(&self, p: Vec3, n: Vec3, dir: Vec3) -> Option<Ray> {
         let side = if n.dot(dir) < 0.0 { -n } else { n };
         let mut origin = offset_origin(p, side);

@@ -87,6 +87,10 @@ impl Accumulator {
             Some(l) => l.chunks_mut(w).map(Some).collect(),
             None => (0..self.height).map(|_| None).collect(),
         };
+        let wave = super::fast::wave::engine_tree(world)
+            .filter(|_| layer_rows.iter().all(Option::is_none))
+            .filter(|_| super::fast::wave::supports(world, settings))
+            .map(|tree| tree.level());
         let stats = self
             .sum
             .par_chunks_mut(w)
@@ -95,6 +99,19 @@ impl Accumulator {
             .enumerate()
             .map(|(y, ((sum, sum_sq), layer_row))| {
                 let mut stats = PathStats::default();
+                if let Some(level) = wave {
+                    wave_row(
+                        world,
+                        level,
+                        camera,
+                        settings,
+                        (sampler, seed),
+                        (y, first, count),
+                        (sum, sum_sq),
+                        &mut stats,
+                    );
+                    return stats;
+                }
                 for x in 0..w {
                     for s in first..first + count {
                         let (mut sampler, ray) = camera_sample(camera, sampler, seed, x, y, s);
@@ -215,4 +232,40 @@ pub fn downsample(film: &Film, factor: u32) -> Film {
         }
     }
     out
+}
+
+/// One row's samples through the fast engine's wavefront loop, a few
+/// thousand paths at a time; each pixel's samples are then added in order,
+/// as the one-path-at-a-time loop adds them.
+fn wave_row(
+    world: &World,
+    level: super::fast::level::Level,
+    camera: &Camera,
+    settings: &PathSettings,
+    (sampler, seed): (SamplerKind, u64),
+    (y, first, count): (usize, u32, u32),
+    (sum, sum_sq): (&mut [Vec3], &mut [Vec3]),
+    stats: &mut PathStats,
+) {
+    let per_pixel = count as usize;
+    let chunk = (4096 / per_pixel).max(1);
+    let mut outs = vec![Vec3::ZERO; chunk * per_pixel];
+    for x0 in (0..sum.len()).step_by(chunk) {
+        let x1 = (x0 + chunk).min(sum.len());
+        let outs = &mut outs[..(x1 - x0) * per_pixel];
+        outs.fill(Vec3::ZERO);
+        let starts = (x0..x1).flat_map(|x| {
+            (first..first + count).map(move |s| {
+                let (sampler, ray) = camera_sample(camera, sampler, seed, x, y, s);
+                (ray, sampler)
+            })
+        });
+        super::fast::wave::trace_paths(world, level, starts, settings, outs, stats);
+        for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
+            for l in ls {
+                sum[x] += *l;
+                sum_sq[x] += *l * *l;
+            }
+        }
+    }
 }

@@ -70,7 +70,7 @@ pub struct PathSettings {
 
 impl PathSettings {
     /// The largest bounce count a path gathers.
-    fn bounce_limit(&self) -> u32 {
+    pub(super) fn bounce_limit(&self) -> u32 {
         self.max_bounces
             .unwrap_or(SAFETY_BOUNCES)
             .min(SAFETY_BOUNCES)
@@ -180,27 +180,27 @@ pub fn trace_path(
 
 /// A path under way: how it is traced, its throughput, and what the
 /// emission its current ray finds must know about the vertex it left.
-struct Path {
-    strategy: Strategy,
+pub(super) struct Path {
+    pub(super) strategy: Strategy,
     /// Whether vertices sample lights (then emission that a sampled
     /// direction finds is weighted against light sampling).
-    samples_lights: bool,
+    pub(super) samples_lights: bool,
     /// The throughput β.
-    beta: Vec3,
+    pub(super) beta: Vec3,
     /// The bounce count of light the current ray finds (`None`: the camera
     /// ray, whose emitters are layer E).
-    k: Option<u32>,
+    pub(super) k: Option<u32>,
     /// Whether the vertex the ray left is a delta (the camera counts as one).
-    from_delta: bool,
+    pub(super) from_delta: bool,
     /// The pdf of the ray's direction there.
-    from_pdf: f32,
+    pub(super) from_pdf: f32,
     /// That vertex's position and its normal on the path's side.
-    from_p: Vec3,
-    from_n: Vec3,
+    pub(super) from_p: Vec3,
+    pub(super) from_n: Vec3,
 }
 
 impl Path {
-    fn from_camera(ray: &Ray, strategy: Strategy, world: &World) -> Path {
+    pub(super) fn from_camera(ray: &Ray, strategy: Strategy, world: &World) -> Path {
         Path {
             strategy,
             samples_lights: strategy.samples_lights() && !world.lights.is_empty(),
@@ -220,7 +220,7 @@ impl Path {
 
     /// Goes on from `v` (where light of bounce count `k` scattered) along
     /// `step`.
-    fn scatter(&mut self, v: &Vertex, k: u32, step: &Step) {
+    pub(super) fn scatter(&mut self, v: &Vertex, k: u32, step: &Step) {
         self.beta *= step.weight;
         self.k = Some(k);
         self.from_delta = v.delta;
@@ -279,7 +279,7 @@ fn direct_light(
 
 /// The environment's radiance along `dir`, where a ray escaped, with its
 /// weight against light sampling; `None` where it is black.
-fn sky_emission(world: &World, dir: Vec3, path: &Path) -> Option<(Vec3, f32)> {
+pub(super) fn sky_emission(world: &World, dir: Vec3, path: &Path) -> Option<(Vec3, f32)> {
     let lights = &world.lights;
     let le = lights.environment_radiance(dir);
     if le == Vec3::ZERO {
@@ -298,7 +298,12 @@ fn sky_emission(world: &World, dir: Vec3, path: &Path) -> Option<(Vec3, f32)> {
 
 /// What the surface at `it` emits towards `wo` (back along the ray), with
 /// its weight against light sampling; `None` where it emits nothing.
-fn surface_emission(world: &World, it: &Interaction, wo: Vec3, path: &Path) -> Option<(Vec3, f32)> {
+pub(super) fn surface_emission(
+    world: &World,
+    it: &Interaction,
+    wo: Vec3,
+    path: &Path,
+) -> Option<(Vec3, f32)> {
     let le = world.emitted(it, wo);
     if le == Vec3::ZERO {
         return None;
@@ -316,16 +321,16 @@ fn surface_emission(world: &World, it: &Interaction, wo: Vec3, path: &Path) -> O
 
 /// Where one path's contributions go, with its counts; every addition is
 /// also told to a listener ([`Contributions::note`]).
-struct PathOut<'a, C: Contributions> {
-    layers: &'a mut C,
-    stats: &'a mut PathStats,
+pub(super) struct PathOut<'a, C: Contributions> {
+    pub(super) layers: &'a mut C,
+    pub(super) stats: &'a mut PathStats,
 }
 
 impl<C: Contributions> PathOut<'_, C> {
     /// Adds `c` to the layer of bounce count `k` unless it is NaN or
     /// infinite (then counts it).
     #[inline(always)]
-    fn add(&mut self, k: Option<u32>, c: Vec3) {
+    pub(super) fn add(&mut self, k: Option<u32>, c: Vec3) {
         if c.is_finite() {
             self.layers.add_to(slot_of(k), c);
         } else {
@@ -334,7 +339,7 @@ impl<C: Contributions> PathOut<'_, C> {
     }
 
     /// The sky found by an escaped ray.
-    fn add_sky(&mut self, path: &Path, dir: Vec3, sky: Option<(Vec3, f32)>) {
+    pub(super) fn add_sky(&mut self, path: &Path, dir: Vec3, sky: Option<(Vec3, f32)>) {
         let Some((le, weight)) = sky else {
             return;
         };
@@ -349,7 +354,12 @@ impl<C: Contributions> PathOut<'_, C> {
     }
 
     /// A surface reached, and what it emits towards the path.
-    fn add_emitted(&mut self, path: &Path, it: &Interaction, emitted: Option<(Vec3, f32)>) {
+    pub(super) fn add_emitted(
+        &mut self,
+        path: &Path,
+        it: &Interaction,
+        emitted: Option<(Vec3, f32)>,
+    ) {
         self.layers.note(PathEvent::Hit {
             it,
             beta: path.beta,

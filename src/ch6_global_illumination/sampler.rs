@@ -108,6 +108,22 @@ impl PathSampler {
         Vec2::new(x, self.get1())
     }
 
+    /// The eight numbers of dimensions `first .. first + 8` (`first` a
+    /// multiple of four), the same bits [`PathSampler::get1`] would give
+    /// them: what one path vertex draws, for a loop that draws them all at
+    /// once ([`super::fast::wave`]).
+    pub fn eight_at(&self, first: u64) -> [f32; 8] {
+        debug_assert!(first % 4 == 0);
+        match self.kind {
+            SamplerKind::Sobol if self.sample < SOBOL_MAX_SAMPLES => {
+                let a = sobol_group_by_table(self.sample, self.pixel_scramble, first / 4);
+                let b = sobol_group_by_table(self.sample, self.pixel_scramble, first / 4 + 1);
+                [a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]]
+            }
+            _ => std::array::from_fn(|i| dimension_random(self.prefix, first + i as u64)),
+        }
+    }
+
     /// Skips to the first dimension of the next group of four, so each
     /// bounce starts its numbers in a fresh Sobol group.
     #[inline]

@@ -20,6 +20,7 @@ pub mod lanes;
 pub mod level;
 #[allow(unsafe_code)]
 pub mod simd;
+pub mod wave;
 
 use crate::ch5_reflection::world::{Queries, World};
 use crate::scene::Scene;
