@@ -88,7 +88,6 @@ impl Accumulator {
             None => (0..self.height).map(|_| None).collect(),
         };
         let wave = super::fast::wave::engine_tree(world)
-            .filter(|_| layer_rows.iter().all(Option::is_none))
             .filter(|_| super::fast::wave::supports(world, settings))
             .map(|tree| tree.level());
         let stats = self
@@ -100,16 +99,12 @@ impl Accumulator {
             .map(|(y, ((sum, sum_sq), layer_row))| {
                 let mut stats = PathStats::default();
                 if let Some(level) = wave {
-                    wave_row(
-                        world,
-                        level,
-                        camera,
-                        settings,
-                        (sampler, seed),
-                        (y, first, count),
-                        (sum, sum_sq),
-                        &mut stats,
-                    );
+                    let frame = (world, level, camera, settings, (sampler, seed));
+                    let samples = (y, first, count);
+                    match layer_row.as_deref_mut() {
+                        Some(row) => wave_row(frame, samples, (sum, sum_sq, row), &mut stats),
+                        None => wave_row(frame, samples, (sum, sum_sq, &mut []), &mut stats),
+                    }
                     return stats;
                 }
                 for x in 0..w {
@@ -236,35 +231,55 @@ pub fn downsample(film: &Film, factor: u32) -> Film {
 
 /// One row's samples through the fast engine's wavefront loop, a few
 /// thousand paths at a time; each pixel's samples are then added in order,
-/// as the one-path-at-a-time loop adds them.
+/// as the one-path-at-a-time loop adds them. With layers (`layers` one
+/// entry per pixel) each path keeps its light per layer; without (`layers`
+/// empty), one sum.
 fn wave_row(
-    world: &World,
-    level: super::fast::level::Level,
-    camera: &Camera,
-    settings: &PathSettings,
-    (sampler, seed): (SamplerKind, u64),
+    (world, level, camera, settings, (sampler, seed)): (
+        &World,
+        super::fast::level::Level,
+        &Camera,
+        &PathSettings,
+        (SamplerKind, u64),
+    ),
     (y, first, count): (usize, u32, u32),
-    (sum, sum_sq): (&mut [Vec3], &mut [Vec3]),
+    (sum, sum_sq, layers): (&mut [Vec3], &mut [Vec3], &mut [[Vec3; LAYER_SLOTS]]),
     stats: &mut PathStats,
 ) {
     let per_pixel = count as usize;
     let chunk = (4096 / per_pixel).max(1);
-    let mut outs = vec![Vec3::ZERO; chunk * per_pixel];
     for x0 in (0..sum.len()).step_by(chunk) {
         let x1 = (x0 + chunk).min(sum.len());
-        let outs = &mut outs[..(x1 - x0) * per_pixel];
-        outs.fill(Vec3::ZERO);
-        let starts = (x0..x1).flat_map(|x| {
-            (first..first + count).map(move |s| {
-                let (sampler, ray) = camera_sample(camera, sampler, seed, x, y, s);
-                (ray, sampler)
+        let starts = || {
+            (x0..x1).flat_map(move |x| {
+                (first..first + count).map(move |s| {
+                    let (sampler, ray) = camera_sample(camera, sampler, seed, x, y, s);
+                    (ray, sampler)
+                })
             })
-        });
-        super::fast::wave::trace_paths(world, level, starts, settings, outs, stats);
-        for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
-            for l in ls {
-                sum[x] += *l;
-                sum_sq[x] += *l * *l;
+        };
+        let n = (x1 - x0) * per_pixel;
+        if layers.is_empty() {
+            let mut outs = vec![Vec3::ZERO; n];
+            super::fast::wave::trace_paths(world, level, starts(), settings, &mut outs, stats);
+            for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
+                for l in ls {
+                    sum[x] += *l;
+                    sum_sq[x] += *l * *l;
+                }
+            }
+        } else {
+            let mut outs = vec![[Vec3::ZERO; LAYER_SLOTS]; n];
+            super::fast::wave::trace_paths(world, level, starts(), settings, &mut outs, stats);
+            for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
+                for path in ls {
+                    for (acc, v) in layers[x].iter_mut().zip(path) {
+                        *acc += *v;
+                    }
+                    let l: Vec3 = path.iter().sum();
+                    sum[x] += l;
+                    sum_sq[x] += l * l;
+                }
             }
         }
     }

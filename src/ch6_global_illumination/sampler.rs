@@ -113,7 +113,7 @@ impl PathSampler {
     /// them: what one path vertex draws, for a loop that draws them all at
     /// once ([`super::fast::wave`]).
     pub fn eight_at(&self, first: u64) -> [f32; 8] {
-        debug_assert!(first % 4 == 0);
+        debug_assert!(first.is_multiple_of(4));
         match self.kind {
             SamplerKind::Sobol if self.sample < SOBOL_MAX_SAMPLES => {
                 let a = sobol_group_by_table(self.sample, self.pixel_scramble, first / 4);

@@ -18,6 +18,7 @@
 pub mod bvh8;
 pub mod lanes;
 pub mod level;
+pub mod shade8;
 #[allow(unsafe_code)]
 pub mod simd;
 pub mod wave;

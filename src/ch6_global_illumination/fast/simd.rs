@@ -23,7 +23,7 @@ use crate::ch5_reflection::world::RayQueries;
 use super::bvh8::Bvh8;
 use super::lanes::{owen_finish_lanes, Kernel, Lanes, RayData};
 use super::level::Level;
-use super::wave::{self, In8, Out8};
+use super::shade8::{self, In8, Out8};
 
 /// The closest hit of `ray` in (0, t_max) with `level`'s instructions.
 #[inline]
@@ -107,7 +107,7 @@ unsafe fn owen_finish_avx2(sobol: [u32; 4], seed: u32) -> [f32; 4] {
     owen_finish_lanes(sobol, seed)
 }
 
-/// One vertex of eight paths ([`wave::shade8`]) with `level`'s
+/// One vertex of eight paths ([`shade8::shade8`]) with `level`'s
 /// instructions: the same lane loops, compiled for AVX2's eight-lane
 /// registers where the CPU has them (the same operations, so the same bits).
 #[inline]
@@ -117,14 +117,14 @@ pub(super) fn shade8_at(level: Level, x: &In8) -> Out8 {
         // the function needs.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 | Level::Avx512 if level.available() => unsafe { shade8_avx2(x) },
-        _ => wave::shade8(x),
+        _ => shade8::shade8(x),
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn shade8_avx2(x: &In8) -> Out8 {
-    wave::shade8(x)
+    shade8::shade8(x)
 }
 
 /// Entries of a traversal stack kept on the call stack: a small one for

@@ -1,0 +1,232 @@
+//! The lane half of the fast engine's wavefront loop ([`super::wave`]):
+//! one vertex of eight paths shaded together. Every step is written as
+//! one pass over eight lanes, with selects (`if` on values, `&` and `|` on
+//! conditions) where the lesson's code branches, so the compiler turns the
+//! whole function into vector instructions; [`super::simd`] compiles it a
+//! second time for AVX2's eight-lane registers.
+//!
+//! Each lane runs the lesson's formulas in the lesson's order (the frame
+//! of `Frame::from_normal`, `AreaLight::sample_li`, the power heuristic,
+//! `cosine_hemisphere`), so a lane's numbers are the readable loop's bit
+//! for bit except where the disk mapping's cosine and sine come from a
+//! polynomial ([`sin_cos_quarter`]) instead of the C library.
+
+// Lane loops index several arrays by lane, on purpose: that is the form
+// the compiler turns into vector instructions.
+#![allow(clippy::needless_range_loop)]
+
+use std::f32::consts::{FRAC_1_PI, PI};
+
+/// Lanes shaded together.
+pub const L: usize = 8;
+
+/// What the lanes read: per lane the ray, the hit, the material, the
+/// throughput, the vertex's random numbers and the light sample's
+/// triangle (chosen by scalar code: a short search per lane). Vectors are
+/// stored by coordinate: `d[axis][lane]`.
+#[derive(Default)]
+pub struct In8 {
+    /// The ray's unit direction.
+    pub d: [[f32; L]; 3],
+    /// The hit point.
+    pub p: [[f32; L]; 3],
+    /// The surface's unit outward normal.
+    pub n: [[f32; L]; 3],
+    /// The diffuse reflectance ρ.
+    pub rho: [[f32; L]; 3],
+    /// The throughput β on arrival.
+    pub beta: [[f32; L]; 3],
+    /// The vertex's eight numbers: u_choose, u_light (2), u_lobe, u_dir
+    /// (2), u_roulette and one unused, as the lesson's loop draws them.
+    pub u: [[f32; L]; 8],
+    /// The chosen light triangle's corners a, b, c: `tri[corner][axis]`.
+    pub tri: [[[f32; L]; 3]; 3],
+    /// Its unit normal.
+    pub n_light: [[f32; L]; 3],
+    /// The position inside the chosen triangle, rescaled from u_light.x.
+    pub ux: [f32; L],
+    /// 1 / the light's area.
+    pub inv_area: [f32; L],
+    /// The probability of having chosen that light.
+    pub p_choose: [f32; L],
+    /// The light's radiance.
+    pub le: [[f32; L]; 3],
+    /// Whether the light emits from both faces.
+    pub two_sided: [bool; L],
+    /// Whether roulette is played at this vertex.
+    pub roulette: bool,
+}
+
+/// What the lanes give back.
+#[derive(Default)]
+pub struct Out8 {
+    /// wo.z ≠ 0: the ray is not in the surface's plane.
+    pub valid: [bool; L],
+    /// The normal on the side the path arrived from.
+    pub n_side: [[f32; L]; 3],
+    /// A shadow ray is cast (the light sample exists and f ≠ 0).
+    pub shadow: [bool; L],
+    /// The unit direction to the light's point (world).
+    pub wi_light: [[f32; L]; 3],
+    /// The distance to it.
+    pub dist: [f32; L],
+    /// The light it brings if nothing blocks it: β f Li |cos| w / pdf.
+    pub contribution: [[f32; L]; 3],
+    /// A next direction exists (pdf > 0, weight finite and non-zero).
+    pub step: [bool; L],
+    /// The next direction (world).
+    pub dir: [[f32; L]; 3],
+    /// Its pdf.
+    pub pdf: [f32; L],
+    /// β after the step and roulette.
+    pub beta: [[f32; L]; 3],
+    /// Whether the path survived roulette.
+    pub survives: [bool; L],
+}
+
+/// Cosine and sine of φ in [-π/4, π/4] (Cephes' minimax polynomials,
+/// within a couple of units in the last place of `f32::sin_cos`).
+// ANCHOR: sin_cos_quarter
+#[inline(always)]
+pub fn sin_cos_quarter(phi: f32) -> (f32, f32) {
+    let z = phi * phi;
+    let s = ((-1.951_529_6e-4 * z + 8.332_161e-3) * z - 1.666_665_5e-1) * z * phi + phi;
+    let c = ((2.443_315_7e-5 * z - 1.388_731_6e-3) * z + 4.166_664_6e-2) * z * z - 0.5 * z + 1.0;
+    (c, s)
+}
+// ANCHOR_END: sin_cos_quarter
+
+/// One vertex of eight paths: frame, light sample, MIS, next direction,
+/// roulette. Each line is one pass over the lanes with selects in place of
+/// branches.
+#[inline(always)]
+pub(super) fn shade8(x: &In8) -> Out8 {
+    let mut o = Out8::default();
+    for j in 0..L {
+        let (nx, ny, nz) = (x.n[0][j], x.n[1][j], x.n[2][j]);
+        // Frame::from_normal (Duff et al.).
+        let sign = 1.0f32.copysign(nz);
+        let a = -1.0 / (sign + nz);
+        let b = nx * ny * a;
+        let s = [1.0 + sign * nx * nx * a, sign * b, -sign * nx];
+        let t = [b, sign + ny * ny * a, -ny];
+        let n = [nx, ny, nz];
+        let local = |v: [f32; 3]| {
+            [
+                v[0] * s[0] + v[1] * s[1] + v[2] * s[2],
+                v[0] * t[0] + v[1] * t[1] + v[2] * t[2],
+                v[0] * n[0] + v[1] * n[1] + v[2] * n[2],
+            ]
+        };
+        let wo = local([-x.d[0][j], -x.d[1][j], -x.d[2][j]]);
+        o.valid[j] = wo[2] != 0.0;
+        let flip = if wo[2] > 0.0 { 1.0 } else { -1.0 };
+        for a in 0..3 {
+            o.n_side[a][j] = n[a] * flip;
+        }
+        let p = [x.p[0][j], x.p[1][j], x.p[2][j]];
+        let beta = [x.beta[0][j], x.beta[1][j], x.beta[2][j]];
+        let f_rho = [
+            x.rho[0][j] * FRAC_1_PI,
+            x.rho[1][j] * FRAC_1_PI,
+            x.rho[2][j] * FRAC_1_PI,
+        ];
+
+        // The light sample: a uniform point y on the chosen triangle.
+        let sq = x.ux[j].sqrt();
+        let b1 = 1.0 - sq;
+        let b2 = x.u[2][j] * sq;
+        let b0 = 1.0 - b1 - b2;
+        let mut to = [0.0; 3];
+        for a in 0..3 {
+            let y = b0 * x.tri[0][a][j] + b1 * x.tri[1][a][j] + b2 * x.tri[2][a][j];
+            to[a] = y - p[a];
+        }
+        let dist = (to[0] * to[0] + to[1] * to[1] + to[2] * to[2]).sqrt();
+        let nl = [x.n_light[0][j], x.n_light[1][j], x.n_light[2][j]];
+        let wi = [to[0] / dist, to[1] / dist, to[2] / dist];
+        let cos_l = nl[0] * wi[0] + nl[1] * wi[1] + nl[2] * wi[2];
+        let faces = x.two_sided[j] | (nl[0] * -wi[0] + nl[1] * -wi[1] + nl[2] * -wi[2] > 0.0);
+        let c = cos_l.abs();
+        let pdf_area = x.inv_area[j] * dist * dist / c;
+        let pdf_light = if (c > 0.0) & (pdf_area.abs() < f32::INFINITY) {
+            pdf_area
+        } else {
+            0.0
+        };
+        let li_nonzero = faces & ((x.le[0][j] != 0.0) | (x.le[1][j] != 0.0) | (x.le[2][j] != 0.0));
+        let has_sample = (dist > 0.0)
+            & (dist < f32::INFINITY)
+            & ((nl[0] != 0.0) | (nl[1] != 0.0) | (nl[2] != 0.0))
+            & (pdf_light > 0.0)
+            & li_nonzero;
+        let wil = local(wi);
+        let same = wo[2] * wil[2] > 0.0;
+        let f = if same { f_rho } else { [0.0; 3] };
+        let f_nonzero = (f[0] != 0.0) | (f[1] != 0.0) | (f[2] != 0.0);
+        o.shadow[j] = o.valid[j] & has_sample & f_nonzero;
+        let pdf = pdf_light * x.p_choose[j];
+        let bsdf_pdf = if same {
+            wil[2].abs().max(0.0) * FRAC_1_PI
+        } else {
+            0.0
+        };
+        let r = bsdf_pdf / pdf;
+        // The power heuristic: 1 for an infinite pdf, 0 for NaN or ≤ 0.
+        let heuristic = 1.0 / (1.0 + r * r);
+        let weight = if pdf == f32::INFINITY {
+            1.0
+        } else if pdf > 0.0 {
+            heuristic
+        } else {
+            0.0
+        };
+        let cos_i = wil[2].abs();
+        for a in 0..3 {
+            o.wi_light[a][j] = wi[a];
+            o.contribution[a][j] = beta[a] * f[a] * x.le[a][j] * cos_i * (weight / pdf);
+        }
+        o.dist[j] = dist;
+
+        // The next direction: cosine-weighted (concentric disk, lifted).
+        let ox = 2.0 * x.u[4][j] - 1.0;
+        let oy = 2.0 * x.u[5][j] - 1.0;
+        let wide = ox.abs() > oy.abs();
+        let (r_disk, ratio) = if wide { (ox, oy / ox) } else { (oy, ox / oy) };
+        let (cphi, sphi) = sin_cos_quarter(0.25 * PI * ratio);
+        // θ = φ (wide) or π/2 − φ: cos θ and sin θ swap.
+        let (cos_t, sin_t) = if wide { (cphi, sphi) } else { (sphi, cphi) };
+        let zero = (ox == 0.0) & (oy == 0.0);
+        let dx = if zero { 0.0 } else { r_disk * cos_t };
+        let dy = if zero { 0.0 } else { r_disk * sin_t };
+        let z = (1.0 - (dx * dx + dy * dy)).max(0.0).sqrt();
+        let z = if wo[2] < 0.0 { -z } else { z };
+        let step_pdf = if wo[2] * z > 0.0 {
+            z.abs().max(0.0) * FRAC_1_PI
+        } else {
+            0.0
+        };
+        let rho_ok = ((x.rho[0][j] != 0.0) | (x.rho[1][j] != 0.0) | (x.rho[2][j] != 0.0))
+            & (x.rho[0][j].abs() < f32::INFINITY)
+            & (x.rho[1][j].abs() < f32::INFINITY)
+            & (x.rho[2][j].abs() < f32::INFINITY);
+        o.step[j] = o.valid[j] & (step_pdf > 0.0) & rho_ok;
+        o.pdf[j] = step_pdf;
+        for a in 0..3 {
+            o.dir[a][j] = s[a] * dx + t[a] * dy + n[a] * z;
+        }
+        // Throughput and Russian roulette.
+        let nb = [
+            beta[0] * x.rho[0][j],
+            beta[1] * x.rho[1][j],
+            beta[2] * x.rho[2][j],
+        ];
+        let q = nb[0].max(nb[1].max(nb[2])).min(1.0);
+        let dies = x.roulette & (x.u[6][j] >= q);
+        o.survives[j] = !dies;
+        for a in 0..3 {
+            o.beta[a][j] = if x.roulette { nb[a] / q } else { nb[a] };
+        }
+    }
+    o
+}
