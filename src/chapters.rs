@@ -16,7 +16,8 @@ pub fn all() -> Vec<&'static dyn Chapter> {
 }
 
 /// [`all`], with chapter 6 traced by the lesson's readable engine when
-/// `readable` (`--engine readable`; the images are the same bytes).
+/// `readable` (`--engine readable`; the images agree to the last bits of
+/// a sine, see [`crate::ch6_global_illumination::fast`]).
 pub fn with_engine(readable: bool) -> Vec<&'static dyn Chapter> {
     let mut chapters = all();
     if readable {

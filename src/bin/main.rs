@@ -59,8 +59,8 @@ struct Cli {
     graphics: String,
     /// Which engine traces chapter 6's paths in the UI and with
     /// `--chapter`/`--report`: `fast` (an eight-wide BVH with SIMD chosen at
-    /// run time) or `readable` (the lesson's code); the images are the
-    /// same bytes.
+    /// run time, and a wavefront path loop on diffuse scenes) or `readable`
+    /// (the lesson's code); the images agree to the last bits of a sine.
     #[arg(long, value_name = "ENGINE", default_value = "fast", value_parser = ["fast", "readable"])]
     engine: String,
     /// The same as `--graphics halfblocks`.

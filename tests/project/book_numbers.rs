@@ -696,15 +696,16 @@ fn the_appendix_statements_match_the_benchmarks() {
         "With Sobol numbers the estimate is about twice the true error",
     );
     for r in [ind, sobol] {
-        assert!(
-            num(&r["RMSE²·s #2"]) < 3e-4 && num(&r["RMSE²·s"]) > 3e-4,
-            "{r:?}"
-        );
+        assert!(num(&r["RMSE²·s #2"]) < 3e-4, "{r:?}");
         assert!(num(&r["paths/s"]) < 3.5e6);
     }
+    assert!(num(&ind["RMSE²·s"]) > 3e-4, "{ind:?}");
+    assert!(num(&sobol["RMSE²·s"]) < 3e-4, "{sobol:?}");
+    let readable_sobol = get("readable sobol");
+    assert!(num(&readable_sobol["RMSE²·s"]) > 3e-4, "{readable_sobol:?}");
     says(
         "making-it-fast.md",
-        "holds against the 64x64 reference for both samplers, but not per pixel at 256x256",
+        "holds against the 64x64 reference for both samplers; per pixel at 256x256 only the fast engine's Sobol row reaches it",
     );
     let queries = table(&bench, "ray queries");
     assert_eq!(queries.len(), 2);

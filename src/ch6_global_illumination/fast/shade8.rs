@@ -100,7 +100,7 @@ pub fn sin_cos_quarter(phi: f32) -> (f32, f32) {
 /// roulette. Each line is one pass over the lanes with selects in place of
 /// branches.
 #[inline(always)]
-pub(super) fn shade8(x: &In8) -> Out8 {
+pub fn shade8(x: &In8) -> Out8 {
     let mut o = Out8::default();
     for j in 0..L {
         let (nx, ny, nz) = (x.n[0][j], x.n[1][j], x.n[2][j]);
@@ -188,6 +188,7 @@ pub(super) fn shade8(x: &In8) -> Out8 {
         }
         o.dist[j] = dist;
 
+        // ANCHOR: next_direction
         // The next direction: cosine-weighted (concentric disk, lifted).
         let ox = 2.0 * x.u[4][j] - 1.0;
         let oy = 2.0 * x.u[5][j] - 1.0;
@@ -211,6 +212,7 @@ pub(super) fn shade8(x: &In8) -> Out8 {
             & (x.rho[1][j].abs() < f32::INFINITY)
             & (x.rho[2][j].abs() < f32::INFINITY);
         o.step[j] = o.valid[j] & (step_pdf > 0.0) & rho_ok;
+        // ANCHOR_END: next_direction
         o.pdf[j] = step_pdf;
         for a in 0..3 {
             o.dir[a][j] = s[a] * dx + t[a] * dy + n[a] * z;
