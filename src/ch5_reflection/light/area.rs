@@ -89,11 +89,12 @@ impl AreaLight {
         emitted_towards(self.le, self.two_sided, n_light, w)
     }
 
-    /// A point on the light seen from `p`, as a direction with a
-    /// solid-angle pdf.
-    pub fn sample_li(&self, p: Vec3, u: Vec2) -> Option<LightSample> {
-        // Pick a triangle by area, reusing u.x for the point inside it.
-        let target = u.x * self.area;
+    /// The triangle a sample with first number `u_x` lies in, chosen by
+    /// area, and `u_x` rescaled to [0, 1) inside its share, to place the
+    /// point in it.
+    #[inline]
+    pub fn pick(&self, u_x: f32) -> (usize, f32) {
+        let target = u_x * self.area;
         // The first triangle whose running total exceeds the target: by
         // counting for a few triangles (no branch to mispredict), by
         // bisection for many; the same index either way.
@@ -112,6 +113,13 @@ impl AreaLight {
         } else {
             0.0
         };
+        (k, ux)
+    }
+
+    /// A point on the light seen from `p`, as a direction with a
+    /// solid-angle pdf.
+    pub fn sample_li(&self, p: Vec3, u: Vec2) -> Option<LightSample> {
+        let (k, ux) = self.pick(u.x);
         let [a, b, c] = self.triangles[k];
         let bary = uniform_triangle(Vec2::new(ux, u.y));
         let y = bary.x * a + bary.y * b + bary.z * c;

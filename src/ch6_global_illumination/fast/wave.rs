@@ -211,20 +211,8 @@ fn gather(
             }
         };
         // The triangle, as `AreaLight::sample_li` picks it.
-        let target = u[1] * light.area;
-        let below = if light.cdf.len() <= 8 {
-            light.cdf.iter().map(|c| (*c <= target) as usize).sum()
-        } else {
-            light.cdf.partition_point(|c| *c <= target)
-        };
-        let t = below.min(light.cdf.len() - 1);
-        let lo = light.cdf[t.saturating_sub(1)] * f32::from(u8::from(t > 0));
-        let width = light.cdf[t] - lo;
-        x.ux[j] = if width > 0.0 {
-            ((target - lo) / width).clamp(0.0, 1.0 - f32::EPSILON)
-        } else {
-            0.0
-        };
+        let (t, ux) = light.pick(u[1]);
+        x.ux[j] = ux;
         for (c, corner) in light.triangles[t].iter().enumerate() {
             for a in 0..3 {
                 x.tri[c][a][j] = corner[a];
