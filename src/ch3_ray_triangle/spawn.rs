@@ -15,7 +15,7 @@ use glam::Vec3;
 use crate::ch3_ray_triangle::ray::Ray;
 
 /// Below this magnitude a coordinate is offset by a fixed amount...
-const ORIGIN: f32 = 1.0 / 32.0;
+pub const ORIGIN: f32 = 1.0 / 32.0;
 /// ... of this size times the normal.
 pub const FLOAT_SCALE: f32 = 1.0 / 65536.0;
 /// Elsewhere it moves by this many ulps times the normal. Wächter and
@@ -24,7 +24,7 @@ pub const FLOAT_SCALE: f32 = 1.0 / 65536.0;
 /// margin, and the offset stays small next to the scene far from the
 /// origin: at 1e4, 256 ulps are 0.25, an eighth of the Cornell box, and
 /// the box came out 4 % too dark (tests/ch6/placement.rs).
-const INT_SCALE: f32 = 32.0;
+pub const INT_SCALE: f32 = 32.0;
 
 /// Moves `p` off the surface with normal `n` (pointing to the side the new
 /// ray leaves into) by a distance that scales with `p`'s magnitude.

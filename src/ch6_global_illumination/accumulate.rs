@@ -88,8 +88,8 @@ impl Accumulator {
             None => (0..self.height).map(|_| None).collect(),
         };
         let wave = super::fast::wave::engine_tree(world)
-            .filter(|_| super::fast::wave::supports(world, settings))
-            .map(|tree| tree.level());
+            .filter(|_| super::fast::wave::supports(world, settings));
+
         let stats = self
             .sum
             .par_chunks_mut(w)
@@ -98,8 +98,8 @@ impl Accumulator {
             .enumerate()
             .map(|(y, ((sum, sum_sq), layer_row))| {
                 let mut stats = PathStats::default();
-                if let Some(level) = wave {
-                    let frame = (world, level, camera, settings, (sampler, seed));
+                if let Some(tree) = wave {
+                    let frame = (world, tree, camera, settings, (sampler, seed));
                     let samples = (y, first, count);
                     match layer_row.as_deref_mut() {
                         Some(row) => wave_row(frame, samples, (sum, sum_sq, row), &mut stats),
@@ -235,9 +235,9 @@ pub fn downsample(film: &Film, factor: u32) -> Film {
 /// entry per pixel) each path keeps its light per layer; without (`layers`
 /// empty), one sum.
 fn wave_row(
-    (world, level, camera, settings, (sampler, seed)): (
+    (world, tree, camera, settings, (sampler, seed)): (
         &World,
-        super::fast::level::Level,
+        &super::fast::bvh8::Bvh8,
         &Camera,
         &PathSettings,
         (SamplerKind, u64),
@@ -261,7 +261,7 @@ fn wave_row(
         let n = (x1 - x0) * per_pixel;
         if layers.is_empty() {
             let mut outs = vec![Vec3::ZERO; n];
-            super::fast::wave::trace_paths(world, level, starts(), settings, &mut outs, stats);
+            super::fast::wave::trace_paths(world, tree, starts(), settings, &mut outs, stats);
             for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
                 for l in ls {
                     sum[x] += *l;
@@ -270,7 +270,7 @@ fn wave_row(
             }
         } else {
             let mut outs = vec![[Vec3::ZERO; LAYER_SLOTS]; n];
-            super::fast::wave::trace_paths(world, level, starts(), settings, &mut outs, stats);
+            super::fast::wave::trace_paths(world, tree, starts(), settings, &mut outs, stats);
             for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
                 for path in ls {
                     for (acc, v) in layers[x].iter_mut().zip(path) {

@@ -251,3 +251,53 @@ fn the_owen_scramble_is_the_crates_on_every_simd_path() {
         }
     }
 }
+
+#[test]
+fn the_lanes_offsets_are_chapter_3s_bit_for_bit() {
+    use glam::Vec3;
+    use raystep::ch3_ray_triangle::spawn::{offset_distance, offset_origin};
+    use raystep::ch6_global_illumination::fast::shade8;
+    let mut values = vec![
+        0.0f32,
+        -0.0,
+        1.0 / 32.0,
+        -1.0 / 32.0,
+        0.031,
+        1e-30,
+        1e30,
+        -1e30,
+    ];
+    let mut h = 0x9e37_79b9_7f4a_7c15u64;
+    for _ in 0..20_000 {
+        h = h
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        let bits = (h >> 32) as u32;
+        let v = f32::from_bits(bits);
+        if v.is_finite() {
+            values.push(v);
+            values.push(v.fract());
+        }
+    }
+    let normals = [-1.0f32, -0.7, -0.01, 0.0, 0.3, 1.0];
+    for (i, &p) in values.iter().enumerate() {
+        let n = normals[i % normals.len()];
+        let want = offset_origin(Vec3::splat(p), Vec3::splat(n)).x;
+        assert_eq!(
+            shade8::offset_coordinate(p, n).to_bits(),
+            want.to_bits(),
+            "{p} {n}"
+        );
+        let y = [
+            p,
+            values[(i * 7) % values.len()],
+            -values[(i * 13) % values.len()],
+        ];
+        let want = offset_distance(Vec3::from_array(y));
+        assert_eq!(
+            shade8::offset_distance(y).to_bits(),
+            want.to_bits(),
+            "{y:?}"
+        );
+    }
+}

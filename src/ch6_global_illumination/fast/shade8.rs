@@ -17,6 +17,8 @@
 
 use std::f32::consts::{FRAC_1_PI, PI};
 
+use crate::ch3_ray_triangle::spawn::{FLOAT_SCALE, INT_SCALE, ORIGIN};
+
 /// Lanes shaded together.
 pub const L: usize = 8;
 
@@ -82,6 +84,22 @@ pub struct Out8 {
     pub beta: [[f32; L]; 3],
     /// Whether the path survived roulette.
     pub survives: [bool; L],
+    /// Whether the next ray exists (`World::spawn` gives one).
+    pub next_ok: [bool; L],
+    /// Its origin, off the surface.
+    pub next_o: [[f32; L]; 3],
+    /// Its unit direction.
+    pub next_d: [[f32; L]; 3],
+    /// Whether the shadow ray must be traced (area lights)...
+    pub shadow_trace: [bool; L],
+    /// ... or its ends meet, so nothing blocks it (neither: blocked).
+    pub shadow_free: [bool; L],
+    /// The shadow ray's origin.
+    pub shadow_o: [[f32; L]; 3],
+    /// Its unit direction.
+    pub shadow_d: [[f32; L]; 3],
+    /// How far it is traced.
+    pub shadow_t: [f32; L],
 }
 
 /// Cosine and sine of φ in [-π/4, π/4] (Cephes' minimax polynomials,
@@ -223,12 +241,155 @@ pub fn shade8(x: &In8) -> Out8 {
             beta[1] * x.rho[1][j],
             beta[2] * x.rho[2][j],
         ];
-        let q = nb[0].max(nb[1].max(nb[2])).min(1.0);
+        let q = max_element(nb).min(1.0);
         let dies = x.roulette & (x.u[6][j] >= q);
         o.survives[j] = !dies;
         for a in 0..3 {
             o.beta[a][j] = if x.roulette { nb[a] / q } else { nb[a] };
         }
+
+        // The two rays leaving this vertex, as `World::spawn` and
+        // `World::unoccluded` make them.
+        let next = spawn(p, n, [o.dir[0][j], o.dir[1][j], o.dir[2][j]]);
+        o.next_ok[j] = next.ok;
+        for a in 0..3 {
+            o.next_o[a][j] = next.origin[a];
+            o.next_d[a][j] = next.dir[a];
+        }
+        let shadow = shadow_ray(p, n, wi, dist);
+        o.shadow_trace[j] = shadow.ray.ok;
+        o.shadow_free[j] = shadow.free;
+        o.shadow_t[j] = shadow.t_max;
+        for a in 0..3 {
+            o.shadow_o[a][j] = shadow.ray.origin[a];
+            o.shadow_d[a][j] = shadow.ray.dir[a];
+        }
     }
     o
+}
+
+/// glam's `Vec3::max_element`, in its order.
+#[inline(always)]
+fn max_element(v: [f32; 3]) -> f32 {
+    let max = |a: f32, b: f32| if a > b { a } else { b };
+    max(v[0], max(v[1], v[2]))
+}
+
+/// Chapter 3's [`offset_origin`](crate::ch3_ray_triangle::spawn::offset_origin)
+/// for one coordinate, with a select in place of its early return (a test
+/// checks that the bits agree).
+#[inline(always)]
+pub fn offset_coordinate(p: f32, n: f32) -> f32 {
+    let near = p + FLOAT_SCALE * n;
+    let ulps = (INT_SCALE * n) as i32;
+    let ulps = if p < 0.0 { ulps.wrapping_neg() } else { ulps };
+    let far = f32::from_bits((p.to_bits() as i32).wrapping_add(ulps) as u32);
+    if p.abs() < ORIGIN {
+        near
+    } else {
+        far
+    }
+}
+
+/// Chapter 3's [`offset_distance`](crate::ch3_ray_triangle::spawn::offset_distance),
+/// with a select.
+#[inline(always)]
+pub fn offset_distance(y: [f32; 3]) -> f32 {
+    let m = max_element([y[0].abs(), y[1].abs(), y[2].abs()]);
+    let ulp = f32::from_bits(m.to_bits().wrapping_add(1)) - m;
+    if m < ORIGIN {
+        FLOAT_SCALE
+    } else {
+        INT_SCALE * ulp
+    }
+}
+
+/// A ray as `Ray::from_unit` makes it, for one lane; `ok` is false where
+/// it gives `None`.
+#[derive(Clone, Copy)]
+pub struct LaneRay {
+    /// Whether there is a ray.
+    pub ok: bool,
+    /// Its origin.
+    pub origin: [f32; 3],
+    /// Its unit direction.
+    pub dir: [f32; 3],
+}
+
+/// `Ray::from_unit(origin, dir)`: `dir` as it is when its length is 1 to
+/// within 10⁻⁵, else normalised (`Ray::new`); no ray for an origin that is
+/// not finite or a direction that cannot be normalised.
+#[inline(always)]
+fn from_unit(origin: [f32; 3], dir: [f32; 3]) -> LaneRay {
+    let len2 = dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2];
+    let finite = (origin[0].abs() < f32::INFINITY)
+        & (origin[1].abs() < f32::INFINITY)
+        & (origin[2].abs() < f32::INFINITY);
+    let unit = (len2 - 1.0).abs() <= 1e-5;
+    let rcp = 1.0 / len2.sqrt();
+    let normalisable = (rcp < f32::INFINITY) & (rcp > 0.0);
+    LaneRay {
+        ok: finite & (unit | normalisable),
+        origin,
+        dir: [
+            if unit { dir[0] } else { dir[0] * rcp },
+            if unit { dir[1] } else { dir[1] * rcp },
+            if unit { dir[2] } else { dir[2] * rcp },
+        ],
+    }
+}
+
+/// `World::spawn(p, n, dir)` without SDFs: the origin moved off the
+/// surface to the side `dir` leaves into.
+#[inline(always)]
+fn spawn(p: [f32; 3], n: [f32; 3], dir: [f32; 3]) -> LaneRay {
+    let back = n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2] < 0.0;
+    let s = if back { -1.0 } else { 1.0 };
+    let origin = [
+        offset_coordinate(p[0], n[0] * s),
+        offset_coordinate(p[1], n[1] * s),
+        offset_coordinate(p[2], n[2] * s),
+    ];
+    from_unit(origin, dir)
+}
+
+/// The shadow ray of `World::unoccluded(p, n, wi, dist)` without SDFs:
+/// `ray.ok` when it must be traced (to `t_max`), `free` when the two ends
+/// meet and nothing can lie between; neither: blocked (no origin).
+struct ShadowRay {
+    ray: LaneRay,
+    t_max: f32,
+    free: bool,
+}
+
+#[inline(always)]
+fn shadow_ray(p: [f32; 3], n: [f32; 3], wi: [f32; 3], dist: f32) -> ShadowRay {
+    let spawned = spawn(p, n, wi);
+    let y = [
+        p[0] + wi[0] * dist,
+        p[1] + wi[1] * dist,
+        p[2] + wi[2] * dist,
+    ];
+    let back = offset_distance(y);
+    let to = [
+        y[0] - wi[0] * back - spawned.origin[0],
+        y[1] - wi[1] * back - spawned.origin[1],
+        y[2] - wi[2] * back - spawned.origin[2],
+    ];
+    let t_max = (to[0] * to[0] + to[1] * to[1] + to[2] * to[2]).sqrt();
+    let infinite = !(t_max.abs() < f32::INFINITY);
+    let ahead = (t_max > 0.0) & (to[0] * wi[0] + to[1] * wi[1] + to[2] * wi[2] > 0.0);
+    let aimed = from_unit(
+        spawned.origin,
+        [to[0] / t_max, to[1] / t_max, to[2] / t_max],
+    );
+    let ray = if infinite { spawned } else { aimed };
+    ShadowRay {
+        ray: LaneRay {
+            ok: spawned.ok & (infinite | (ahead & aimed.ok)),
+            ..ray
+        },
+        t_max: if infinite { f32::INFINITY } else { t_max },
+        free: spawned.ok & !infinite & !(ahead & aimed.ok),
+    }
 }

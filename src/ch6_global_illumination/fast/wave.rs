@@ -31,6 +31,7 @@
 use glam::Vec3;
 
 use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::direct::Strategy;
 use crate::ch5_reflection::light::{Light, LightSample};
 use crate::ch5_reflection::material::Bsdf;
@@ -44,7 +45,6 @@ use crate::ch6_global_illumination::layers::Contributions;
 use crate::ch6_global_illumination::sampler::PathSampler;
 
 use super::bvh8::Bvh8;
-use super::level::Level;
 use super::shade8::{In8, Out8, L};
 
 /// Whether the wavefront loop renders `world` with `settings` exactly as
@@ -72,15 +72,30 @@ struct Lane {
     out: u32,
 }
 
-/// A shadow ray to trace and the light it carries if nothing blocks it.
+/// A shadow ray to test and the light it carries if nothing blocks it.
 struct Shadow {
-    p: Vec3,
-    n: Vec3,
-    wi: Vec3,
-    dist: f32,
+    test: ShadowTest,
     k: u32,
     contribution: Vec3,
     out: u32,
+}
+
+/// How a shadow ray is decided.
+enum ShadowTest {
+    /// Its two ends meet: nothing can block it.
+    Visible,
+    /// It has no origin (a surface point that is not finite).
+    Blocked,
+    /// Traced through the tree to `t_max` (made in the lanes).
+    Trace(Ray, f32),
+    /// `World::unoccluded(p, n, wi, dist)` (lights sampled one lane at a
+    /// time).
+    World {
+        p: Vec3,
+        n: Vec3,
+        wi: Vec3,
+        dist: f32,
+    },
 }
 
 /// Traces one path per (camera ray, sampler) of `starts`, adding path i's
@@ -88,7 +103,7 @@ struct Shadow {
 /// one per bounce layer.
 pub fn trace_paths<C: Contributions>(
     world: &World,
-    level: Level,
+    tree: &Bvh8,
     starts: impl Iterator<Item = (Ray, PathSampler)>,
     settings: &PathSettings,
     outs: &mut [C],
@@ -107,6 +122,7 @@ pub fn trace_paths<C: Contributions>(
     let mut hits: Vec<Interaction> = Vec::with_capacity(lanes.len());
     let mut shaded: Vec<u32> = Vec::with_capacity(lanes.len());
     let mut shadows: Vec<Shadow> = Vec::with_capacity(lanes.len());
+    let level = tree.level();
     let mut k = 0u32;
     while !lanes.is_empty() {
         // 1. Closest hits; emission found; paths that leave or end.
@@ -119,7 +135,7 @@ pub fn trace_paths<C: Contributions>(
                 layers: &mut outs[lane.out as usize],
                 stats,
             };
-            let Some(it) = world.intersect(&lane.ray) else {
+            let Some(it) = intersect(world, tree, &lane.ray) else {
                 let sky = sky_emission(world, lane.ray.dir, &lane.path);
                 out.add_sky(&lane.path, lane.ray.dir, sky);
                 continue;
@@ -149,7 +165,13 @@ pub fn trace_paths<C: Contributions>(
         }
         // 3. Shadow rays.
         for s in &shadows {
-            if world.unoccluded(s.p, s.n, s.wi, s.dist) {
+            let visible = match s.test {
+                ShadowTest::Visible => true,
+                ShadowTest::Blocked => false,
+                ShadowTest::Trace(ray, t_max) => !super::simd::occluded(level, tree, &ray, t_max),
+                ShadowTest::World { p, n, wi, dist } => world.unoccluded(p, n, wi, dist),
+            };
+            if visible {
                 let mut out = PathOut {
                     layers: &mut outs[s.out as usize],
                     stats,
@@ -248,7 +270,20 @@ fn finish(
     let v3 = |a: &[[f32; L]; 3]| Vec3::new(a[0][j], a[1][j], a[2][j]);
     let shadow = match given {
         // An area light: the lanes did it all.
-        None => o.shadow[j].then(|| (v3(&o.wi_light), o.dist[j], v3(&o.contribution))),
+        None => o.shadow[j].then(|| {
+            let test = if o.shadow_trace[j] {
+                let ray = Ray {
+                    origin: v3(&o.shadow_o),
+                    dir: v3(&o.shadow_d),
+                };
+                ShadowTest::Trace(ray, o.shadow_t[j])
+            } else if o.shadow_free[j] {
+                ShadowTest::Visible
+            } else {
+                ShadowTest::Blocked
+            };
+            (test, v3(&o.contribution))
+        }),
         // Another kind: the lesson's `direct_light`, step by step.
         Some(sample) => sample.and_then(|ls| {
             let Bsdf::Lambertian(bsdf) = &world.bsdfs[it.material] else {
@@ -266,16 +301,19 @@ fn finish(
                 false => power_heuristic(pdf, bsdf.pdf(wo, wi)),
             };
             let c = lane.path.beta * f * ls.li * wi.z.abs() * (weight / pdf);
-            Some((ls.wi, ls.dist, c))
+            let test = ShadowTest::World {
+                p: it.p,
+                n: it.n,
+                wi: ls.wi,
+                dist: ls.dist,
+            };
+            Some((test, c))
         }),
     };
-    if let Some((wi, dist, contribution)) = shadow {
+    if let Some((test, contribution)) = shadow {
         stats.rays += 1;
         shadows.push(Shadow {
-            p: it.p,
-            n: it.n,
-            wi,
-            dist,
+            test,
             k,
             contribution,
             out: lane.out,
@@ -291,11 +329,27 @@ fn finish(
     path.from_pdf = o.pdf[j];
     path.from_p = it.p;
     path.from_n = v3(&o.n_side);
-    match world.spawn(it.p, it.n, v3(&o.dir)) {
-        Some(ray) => {
-            lane.ray = ray;
-            true
-        }
-        None => false,
+    if !o.next_ok[j] {
+        return false;
     }
+    lane.ray = Ray {
+        origin: v3(&o.next_o),
+        dir: v3(&o.next_d),
+    };
+    true
+}
+
+/// `World::intersect` for a scene without SDFs, asking the tree directly.
+#[inline]
+fn intersect(world: &World, tree: &Bvh8, ray: &Ray) -> Option<Interaction> {
+    let hit = super::simd::closest(tree.level(), tree, ray, f32::INFINITY)?;
+    let k = hit.triangle as usize;
+    let mesh = world.triangles.mesh[k] as usize;
+    Some(Interaction {
+        t: hit.t,
+        p: hit.point(world.triangles.tris[k]),
+        n: world.normals[k],
+        material: world.mesh_material[mesh],
+        surface: Surface::Mesh(mesh),
+    })
 }
