@@ -74,6 +74,13 @@ impl PathSampler {
         }
     }
 
+    /// The sample index, when this sampler draws Sobol points from the
+    /// byte tables (`None`: independent numbers, or an index past them).
+    pub fn sobol_index(&self) -> Option<u32> {
+        (self.kind == SamplerKind::Sobol && self.sample < SOBOL_MAX_SAMPLES)
+            .then_some(self.sample as u32)
+    }
+
     /// The Sobol scramble seed of this pixel.
     pub fn pixel_scramble(&self) -> u64 {
         self.pixel_scramble
@@ -158,7 +165,7 @@ pub fn sobol_group_by_table(sample: u64, pixel_scramble: u64, group: u64) -> [f3
     let seed = mix64(pixel_scramble ^ group) as u32;
     // The crate's `sample_4d(sample, 0, seed)`, step by step.
     let rev = owen_scramble_rev((sample as u32).reverse_bits(), hash(seed ^ 0x79c68e4a));
-    let t = byte_tables();
+    let t = super::fast::sobol8::byte_tables();
     let (hi, lo) = (
         t[0][(rev >> 24) as usize],
         t[1][((rev >> 16) & 0xff) as usize],
@@ -167,21 +174,3 @@ pub fn sobol_group_by_table(sample: u64, pixel_scramble: u64, group: u64) -> [f3
     super::fast::simd::owen_finish(sobol, seed)
 }
 // ANCHOR_END: sobol_by_table
-
-/// For each byte of a reversed sample index (bits 31..24, then 23..16;
-/// the crate uses the top 16), the XOR of the direction numbers of its set
-/// bits, for all 256 values: dimension set 0's Sobol point of any index is
-/// then `t[0][top byte] ^ t[1][next byte]`.
-fn byte_tables() -> &'static [[[u32; 4]; 256]; 2] {
-    static TABLES: std::sync::OnceLock<Box<[[[u32; 4]; 256]; 2]>> = std::sync::OnceLock::new();
-    TABLES.get_or_init(|| {
-        let mut t = Box::new([[[0u32; 4]; 256]; 2]);
-        for (k, table) in t.iter_mut().enumerate() {
-            for (b, entry) in table.iter_mut().enumerate() {
-                let rev = (b as u32) << (24 - 8 * k);
-                *entry = sobol_burley::parts::sobol_int4_rev(rev, 0).into();
-            }
-        }
-        t
-    })
-}

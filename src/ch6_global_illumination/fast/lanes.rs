@@ -12,6 +12,8 @@ use crate::ch3_ray_triangle::triangle::gamma;
 use crate::ch3_ray_triangle::watertight_fast::WatertightRay;
 use crate::ch3_ray_triangle::wide_bvh::BoxRay;
 
+use super::sobol8::owen_dim;
+
 /// Children per node and triangles per leaf.
 pub const W: usize = 8;
 /// Most triangles in a leaf.
@@ -240,27 +242,6 @@ pub(super) fn leaf_test(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
 /// vector register, and any width gives the same bits.
 #[inline(always)]
 pub fn owen_finish_lanes(sobol: [u32; 4], seed: u32) -> [f32; 4] {
-    const DIMENSION: [u32; 4] = [0x912f69ba, 0x174f18ab, 0x691e72ca, 0xb40cc1b8];
     let s = seed.wrapping_mul(0x9c8f2d3b);
-    let mut out = [0.0f32; 4];
-    for d in 0..4 {
-        // The crate's `hash_int4` of the dimension's scramble seed.
-        let mut h = s ^ DIMENSION[d] ^ 0xe6fe3beb;
-        h ^= h >> 16;
-        h = h.wrapping_mul(0x7feb352d);
-        h ^= h >> 15;
-        h = h.wrapping_mul(0x846ca68b);
-        h ^= h >> 16;
-        // Its `owen_scramble_int4_rev`.
-        let mut n = sobol[d];
-        n ^= n.wrapping_mul(0x3d20adea);
-        n = n.wrapping_add(h);
-        n = n.wrapping_mul((h >> 16) | 1);
-        n ^= n.wrapping_mul(0x05526c56);
-        n ^= n.wrapping_mul(0x53a22864);
-        let n = n.reverse_bits();
-        let u = f32::from_bits((n >> 9) | 0x3f800000) - 1.0;
-        out[d] = u.min(1.0 - f32::EPSILON / 2.0);
-    }
-    out
+    std::array::from_fn(|d| owen_dim(sobol[d], s, d))
 }

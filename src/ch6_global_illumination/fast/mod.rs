@@ -26,6 +26,7 @@ pub mod level;
 pub mod shade8;
 #[allow(unsafe_code)]
 pub mod simd;
+pub mod sobol8;
 pub mod wave;
 
 use crate::ch5_reflection::world::{Queries, World};

@@ -377,7 +377,8 @@ fn shadow_ray(p: [f32; 3], n: [f32; 3], wi: [f32; 3], dist: f32) -> ShadowRay {
         y[2] - wi[2] * back - spawned.origin[2],
     ];
     let t_max = (to[0] * to[0] + to[1] * to[1] + to[2] * to[2]).sqrt();
-    let infinite = !(t_max.abs() < f32::INFINITY);
+    let finite = t_max.abs() < f32::INFINITY;
+    let infinite = !finite;
     let ahead = (t_max > 0.0) & (to[0] * wi[0] + to[1] * wi[1] + to[2] * wi[2] > 0.0);
     let aimed = from_unit(
         spawned.origin,

@@ -127,6 +127,36 @@ unsafe fn shade8_avx2(x: &In8) -> Out8 {
     shade8::shade8(x)
 }
 
+/// [`sobol_group8`](super::sobol8::sobol_group8) with `level`'s
+/// instructions (the same bits on every path).
+#[inline]
+pub fn sobol_group8_at(
+    level: Level,
+    sample: &[u32; 8],
+    pixel_scramble: &[u64; 8],
+    group: u64,
+) -> [[f32; 8]; 4] {
+    match level {
+        // SAFETY: `level.available()` checked that this CPU has AVX2, all
+        // the function needs.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 | Level::Avx512 if level.available() => unsafe {
+            sobol_group8_avx2(sample, pixel_scramble, group)
+        },
+        _ => super::sobol8::sobol_group8(sample, pixel_scramble, group),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn sobol_group8_avx2(
+    sample: &[u32; 8],
+    pixel_scramble: &[u64; 8],
+    group: u64,
+) -> [[f32; 8]; 4] {
+    super::sobol8::sobol_group8(sample, pixel_scramble, group)
+}
+
 /// Entries of a traversal stack kept on the call stack: a small one for
 /// small trees (up to 2 levels; clearing it is part of every query), a
 /// larger one up to 9 levels (over 8^9 leaves), else one on the heap.

@@ -45,6 +45,7 @@ use crate::ch6_global_illumination::layers::Contributions;
 use crate::ch6_global_illumination::sampler::PathSampler;
 
 use super::bvh8::Bvh8;
+use super::level::Level;
 use super::shade8::{In8, Out8, L};
 
 /// Whether the wavefront loop renders `world` with `settings` exactly as
@@ -155,7 +156,8 @@ pub fn trace_paths<C: Contributions>(
         let mut alive = vec![false; lanes.len()];
         for (ids, its) in shaded.chunks(L).zip(hits.chunks(L)) {
             let mut given = [None; L];
-            let input = gather(world, &lanes, ids, its, k, roulette, &mut given);
+            let u = numbers(level, &lanes, ids, k);
+            let input = gather(world, &lanes, (ids, its), &u, roulette, &mut given);
             let o = super::simd::shade8_at(level, &input);
             for (j, (&i, it)) in ids.iter().zip(its).enumerate() {
                 let lane = &mut lanes[i as usize];
@@ -190,13 +192,42 @@ pub fn trace_paths<C: Contributions>(
 
 /// Reads lanes `ids` (with their hits) into eight-lane arrays; unused
 /// lanes repeat the first one.
+/// The eight numbers of vertex `k` of lanes `ids` (unused lanes repeat the
+/// first), `u[d][lane]`: Sobol points computed eight paths at a time, or
+/// one path at a time for independent numbers.
+#[allow(clippy::needless_range_loop)]
+fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
+    let first = 4 + 8 * k as u64;
+    let lane = |j: usize| &lanes[ids[if j < ids.len() { j } else { 0 }] as usize];
+    let mut u = [[0.0; L]; 8];
+    let index: [Option<u32>; L] = std::array::from_fn(|j| lane(j).sampler.sobol_index());
+    match index.iter().all(Option::is_some) {
+        true => {
+            let sample: [u32; L] = std::array::from_fn(|j| index[j].unwrap_or(0));
+            let scramble: [u64; L] = std::array::from_fn(|j| lane(j).sampler.pixel_scramble());
+            for half in 0..2 {
+                let g = super::simd::sobol_group8_at(level, &sample, &scramble, first / 4 + half);
+                u[4 * half as usize..4 * half as usize + 4].copy_from_slice(&g);
+            }
+        }
+        false => {
+            for j in 0..L {
+                let v = lane(j).sampler.eight_at(first);
+                for d in 0..8 {
+                    u[d][j] = v[d];
+                }
+            }
+        }
+    }
+    u
+}
+
 #[allow(clippy::needless_range_loop)]
 fn gather(
     world: &World,
     lanes: &[Lane],
-    ids: &[u32],
-    hits: &[Interaction],
-    k: u32,
+    (ids, hits): (&[u32], &[Interaction]),
+    u8: &[[f32; L]; 8],
     roulette: bool,
     given: &mut [Option<Option<LightSample>>; L],
 ) -> In8 {
@@ -208,7 +239,7 @@ fn gather(
         let Bsdf::Lambertian(b) = &world.bsdfs[it.material] else {
             unreachable!("the wavefront loop only runs on diffuse scenes");
         };
-        let u = lane.sampler.eight_at(4 + 8 * k as u64);
+        let u: [f32; 8] = std::array::from_fn(|d| u8[d][j]);
         for a in 0..3 {
             x.d[a][j] = lane.ray.dir[a];
             x.p[a][j] = it.p[a];
