@@ -114,12 +114,12 @@ pub fn sin_cos_quarter(phi: f32) -> (f32, f32) {
 }
 // ANCHOR_END: sin_cos_quarter
 
-/// One vertex of eight paths: frame, light sample, MIS, next direction,
+/// One vertex of eight paths (into `o`, every field of every lane
+/// written): frame, light sample, MIS, next direction,
 /// roulette. Each line is one pass over the lanes with selects in place of
 /// branches.
 #[inline(always)]
-pub fn shade8(x: &In8) -> Out8 {
-    let mut o = Out8::default();
+pub fn shade8(x: &In8, o: &mut Out8) {
     for j in 0..L {
         let (nx, ny, nz) = (x.n[0][j], x.n[1][j], x.n[2][j]);
         // Frame::from_normal (Duff et al.).
@@ -265,7 +265,6 @@ pub fn shade8(x: &In8) -> Out8 {
             o.shadow_d[a][j] = shadow.ray.dir[a];
         }
     }
-    o
 }
 
 /// glam's `Vec3::max_element`, in its order.

@@ -111,20 +111,20 @@ unsafe fn owen_finish_avx2(sobol: [u32; 4], seed: u32) -> [f32; 4] {
 /// instructions: the same lane loops, compiled for AVX2's eight-lane
 /// registers where the CPU has them (the same operations, so the same bits).
 #[inline]
-pub(super) fn shade8_at(level: Level, x: &In8) -> Out8 {
+pub(super) fn shade8_at(level: Level, x: &In8, o: &mut Out8) {
     match level {
         // SAFETY: `level.available()` checked that this CPU has AVX2, all
         // the function needs.
         #[cfg(target_arch = "x86_64")]
-        Level::Avx2 | Level::Avx512 if level.available() => unsafe { shade8_avx2(x) },
-        _ => shade8::shade8(x),
+        Level::Avx2 | Level::Avx512 if level.available() => unsafe { shade8_avx2(x, o) },
+        _ => shade8::shade8(x, o),
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn shade8_avx2(x: &In8) -> Out8 {
-    shade8::shade8(x)
+unsafe fn shade8_avx2(x: &In8, o: &mut Out8) {
+    shade8::shade8(x, o)
 }
 
 /// [`sobol_group8`](super::sobol8::sobol_group8) with `level`'s

@@ -124,6 +124,8 @@ pub fn trace_paths<C: Contributions>(
     let mut shaded: Vec<u32> = Vec::with_capacity(lanes.len());
     let mut shadows: Vec<Shadow> = Vec::with_capacity(lanes.len());
     let level = tree.level();
+    let (mut input, mut o) = (Box::<In8>::default(), Box::<Out8>::default());
+    let mut alive: Vec<bool> = Vec::with_capacity(lanes.len());
     let mut k = 0u32;
     while !lanes.is_empty() {
         // 1. Closest hits; emission found; paths that leave or end.
@@ -153,16 +155,17 @@ pub fn trace_paths<C: Contributions>(
         // 2. Shading, eight lanes at a time.
         shadows.clear();
         let roulette = k + 1 >= settings.rr_min_bounce;
-        let mut alive = vec![false; lanes.len()];
+        alive.clear();
+        alive.resize(lanes.len(), false);
         for (ids, its) in shaded.chunks(L).zip(hits.chunks(L)) {
             let mut given = [None; L];
             let u = numbers(level, &lanes, ids, k);
-            let input = gather(world, &lanes, (ids, its), &u, roulette, &mut given);
-            let o = super::simd::shade8_at(level, &input);
+            gather(world, &lanes, (ids, its), &u, roulette, &mut given, &mut input);
+            super::simd::shade8_at(level, &input, &mut o);
             for (j, (&i, it)) in ids.iter().zip(its).enumerate() {
                 let lane = &mut lanes[i as usize];
                 let light = (given[j], input.p_choose[j]);
-                alive[i as usize] = finish(world, lane, it, k, (&o, j), light, stats, &mut shadows);
+                alive[i as usize] = finish(world, lane, it, k, (&*o, j), light, stats, &mut shadows);
             }
         }
         // 3. Shadow rays.
@@ -190,8 +193,6 @@ pub fn trace_paths<C: Contributions>(
     }
 }
 
-/// Reads lanes `ids` (with their hits) into eight-lane arrays; unused
-/// lanes repeat the first one.
 /// The eight numbers of vertex `k` of lanes `ids` (unused lanes repeat the
 /// first), `u[d][lane]`: Sobol points computed eight paths at a time, or
 /// one path at a time for independent numbers.
@@ -222,6 +223,10 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
     u
 }
 
+/// Reads lanes `ids` (with their hits and numbers `u8`) into the eight-lane
+/// arrays `x`; unused lanes repeat the first one. A lane whose light is not
+/// an area light leaves the light fields as they were (the lanes' shadow
+/// ray for it is not used: [`finish`] makes its own).
 #[allow(clippy::needless_range_loop)]
 fn gather(
     world: &World,
@@ -230,8 +235,8 @@ fn gather(
     u8: &[[f32; L]; 8],
     roulette: bool,
     given: &mut [Option<Option<LightSample>>; L],
-) -> In8 {
-    let mut x = In8::default();
+    x: &mut In8,
+) {
     for j in 0..L {
         let jj = if j < ids.len() { j } else { 0 };
         let lane = &lanes[ids[jj] as usize];
@@ -279,7 +284,6 @@ fn gather(
         x.two_sided[j] = light.two_sided;
     }
     x.roulette = roulette;
-    x
 }
 
 /// Writes lane `j`'s results back: its shadow ray, and the path going on
