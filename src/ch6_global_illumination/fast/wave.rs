@@ -160,12 +160,21 @@ pub fn trace_paths<C: Contributions>(
         for (ids, its) in shaded.chunks(L).zip(hits.chunks(L)) {
             let mut given = [None; L];
             let u = numbers(level, &lanes, ids, k);
-            gather(world, &lanes, (ids, its), &u, roulette, &mut given, &mut input);
+            gather(
+                world,
+                &lanes,
+                (ids, its),
+                &u,
+                roulette,
+                &mut given,
+                &mut input,
+            );
             super::simd::shade8_at(level, &input, &mut o);
             for (j, (&i, it)) in ids.iter().zip(its).enumerate() {
                 let lane = &mut lanes[i as usize];
                 let light = (given[j], input.p_choose[j]);
-                alive[i as usize] = finish(world, lane, it, k, (&*o, j), light, stats, &mut shadows);
+                alive[i as usize] =
+                    finish(world, lane, it, k, (&*o, j), light, stats, &mut shadows);
             }
         }
         // 3. Shadow rays.
