@@ -159,6 +159,22 @@ fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
         )),
         None => l.push("BVH: the scene has no meshes".into()),
     }
+    if let Some((w, _)) = world {
+        let path = &r.path;
+        match super::fast::wave::engine_tree(w) {
+            Some(_) if super::fast::wave::supports(w, path) => b.push(
+                "the fast engine's wavefront loop: paths extended a bounce at a time, eight hits \
+                 shaded at once"
+                    .into(),
+            ),
+            Some(_) => l.push(
+                "the wavefront loop: it covers diffuse surfaces with MIS and no SDFs; the \
+                 lesson's path loop runs instead"
+                    .into(),
+            ),
+            None => {}
+        }
+    }
     if scene.sdfs.is_empty() {
         l.push("sphere tracing: the scene has no SDFs".into());
     } else {

@@ -313,15 +313,16 @@ fn index_one_glass_leaves_the_image_unchanged_statistically() {
 #[test]
 fn same_bytes_on_one_and_two_threads() {
     let scene = Scene::builtin().with_resolution(12, 12).unwrap();
-    let run = |threads: usize, sampler| {
+    let run = |threads: usize, sampler, layers| {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
             .unwrap();
-        pool.install(|| render(&scene, &PathSettings::default(), sampler, 4, 5, true).0)
+        pool.install(|| render(&scene, &PathSettings::default(), sampler, 4, 5, layers).0)
     };
-    for sampler in [SamplerKind::Independent, SamplerKind::Sobol] {
-        let (a, b): (Accumulator, Accumulator) = (run(1, sampler), run(2, sampler));
+    let samplers = [SamplerKind::Independent, SamplerKind::Sobol];
+    for (sampler, layers) in samplers.into_iter().flat_map(|s| [(s, true), (s, false)]) {
+        let (a, b): (Accumulator, Accumulator) = (run(1, sampler, layers), run(2, sampler, layers));
         assert_eq!(a.sum, b.sum);
         assert_eq!(a.sum_sq, b.sum_sq);
         assert_eq!(a.layers, b.layers);
@@ -342,6 +343,7 @@ fn the_stage_reports_what_it_built_and_left_out() {
     let built = rep.built.join("\n");
     let left = rep.left_out.join("\n");
     assert!(built.contains("8 wide ("), "{built}");
+    assert!(built.contains("wavefront loop"), "{built}");
     assert!(built.contains("over 36 triangles"), "{built}");
     assert!(built.contains("light sampling over 1 light"), "{built}");
     assert!(!built.contains("1 lights"), "{built}");
