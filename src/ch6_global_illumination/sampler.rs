@@ -81,6 +81,12 @@ impl PathSampler {
             .then_some(self.sample as u32)
     }
 
+    /// The hash every number shares, when this sampler draws independent
+    /// numbers (`dimension_random(prefix, d)`; `None`: Sobol points).
+    pub fn independent_prefix(&self) -> Option<u64> {
+        self.sobol_index().is_none().then_some(self.prefix)
+    }
+
     /// The Sobol scramble seed of this pixel.
     pub fn pixel_scramble(&self) -> u64 {
         self.pixel_scramble

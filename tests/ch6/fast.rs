@@ -71,6 +71,7 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
     for scene in &scenes {
         for (strategy, sampler) in [
             (Strategy::Mis, SamplerKind::Sobol),
+            (Strategy::Mis, SamplerKind::Independent),
             (Strategy::Bsdf, SamplerKind::Independent),
         ] {
             let path = PathSettings {
@@ -124,9 +125,10 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
             }
         }
     }
-    assert_eq!(compared, scenes.len() * 2 * levels.len());
-    // The built-in box and the bunny at least go through the waves.
-    assert!(in_waves >= 2, "{in_waves}");
+    assert_eq!(compared, scenes.len() * 3 * levels.len());
+    // The built-in box and the bunny at least go through the waves, with
+    // both samplers.
+    assert!(in_waves >= 4, "{in_waves}");
 }
 
 #[test]
@@ -299,5 +301,46 @@ fn the_lanes_offsets_are_chapter_3s_bit_for_bit() {
             want.to_bits(),
             "{y:?}"
         );
+    }
+}
+
+#[test]
+fn eight_paths_numbers_are_the_samplers_bit_for_bit() {
+    use raystep::ch6_global_illumination::fast::sobol8::{independent8, sobol_group8};
+    use raystep::ch6_global_illumination::sampler::PathSampler;
+    for kind in [SamplerKind::Sobol, SamplerKind::Independent] {
+        for (pixel0, sample0) in [(0u64, 0u64), (12_345, 63), (7, 4_000)] {
+            let samplers: Vec<PathSampler> = (0..8u64)
+                .map(|j| PathSampler::new(kind, 42, pixel0 + j * 31, sample0 + j))
+                .collect();
+            for first in [4u64, 12, 132] {
+                let lanes = match kind {
+                    SamplerKind::Sobol => {
+                        let sample = std::array::from_fn(|j| samplers[j].sobol_index().unwrap());
+                        let scramble = std::array::from_fn(|j| samplers[j].pixel_scramble());
+                        let (a, b) = (
+                            sobol_group8(&sample, &scramble, first / 4),
+                            sobol_group8(&sample, &scramble, first / 4 + 1),
+                        );
+                        [a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]]
+                    }
+                    SamplerKind::Independent => {
+                        let prefix =
+                            std::array::from_fn(|j| samplers[j].independent_prefix().unwrap());
+                        independent8(&prefix, first)
+                    }
+                };
+                for (j, s) in samplers.iter().enumerate() {
+                    let want = s.eight_at(first);
+                    for d in 0..8 {
+                        assert_eq!(
+                            lanes[d][j].to_bits(),
+                            want[d].to_bits(),
+                            "{kind:?} {first} {j} {d}"
+                        );
+                    }
+                }
+            }
+        }
     }
 }

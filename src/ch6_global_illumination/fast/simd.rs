@@ -157,6 +157,27 @@ unsafe fn sobol_group8_avx2(
     super::sobol8::sobol_group8(sample, pixel_scramble, group)
 }
 
+/// [`independent8`](super::sobol8::independent8) with `level`'s
+/// instructions (the same bits on every path).
+#[inline]
+pub fn independent8_at(level: Level, prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
+    match level {
+        // SAFETY: `level.available()` checked that this CPU has AVX2, all
+        // the function needs.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 | Level::Avx512 if level.available() => unsafe {
+            independent8_avx2(prefix, first)
+        },
+        _ => super::sobol8::independent8(prefix, first),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn independent8_avx2(prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
+    super::sobol8::independent8(prefix, first)
+}
+
 /// Entries of a traversal stack kept on the call stack: a small one for
 /// small trees (up to 2 levels; clearing it is part of every query), a
 /// larger one up to 9 levels (over 8^9 leaves), else one on the heap.

@@ -1,7 +1,8 @@
-//! The fast engine's Sobol numbers for eight paths at once: the same bits
+//! The fast engine's random numbers for eight paths at once. Sobol points: the same bits
 //! as [`sobol_group_by_table`](crate::ch6_global_illumination::sampler::sobol_group_by_table)
 //! (and so as `sobol_burley::sample_4d`), each step one pass over eight
-//! lanes of integers, so the compiler runs them in vector registers.
+//! lanes of integers, so the compiler runs them in vector registers. And
+//! independent numbers: `dimension_random`'s hash, lane by lane.
 
 use sobol_burley::parts::{hash, owen_scramble_rev};
 
@@ -85,4 +86,24 @@ pub fn byte_tables() -> &'static [[[u32; 4]; 256]; 2] {
         }
         t
     })
+}
+
+/// Dimensions `first .. first + 8` of eight paths' independent numbers
+/// (`prefix[j]`: each path's shared hash): `out[d][j]`, the same bits as
+/// [`dimension_random`](crate::core::sampling::dimension_random).
+// Lane loops index several arrays by lane, on purpose (vector code).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+pub fn independent8(prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
+    let mut out = [[0.0f32; 8]; 8];
+    for d in 0..8 {
+        let dim = (first + d as u64).wrapping_mul(0xd6e8_feb8_6659_fd93);
+        for j in 0..8 {
+            let h = mix64(prefix[j] ^ dim);
+            // The top 24 bits, exactly representable: as an i32 first, which
+            // vector instructions convert directly (the same value).
+            out[d][j] = ((h >> 40) as i32) as f32 * (1.0 / (1u64 << 24) as f32);
+        }
+    }
+    out
 }

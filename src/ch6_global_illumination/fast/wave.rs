@@ -125,15 +125,18 @@ pub fn trace_paths<C: Contributions>(
     let mut shadows: Vec<Shadow> = Vec::with_capacity(lanes.len());
     let level = tree.level();
     let (mut input, mut o) = (Box::<In8>::default(), Box::<Out8>::default());
-    let mut alive: Vec<bool> = Vec::with_capacity(lanes.len());
+    // The paths still going (indices into `lanes`, which never move).
+    let mut live: Vec<u32> = (0..lanes.len() as u32).collect();
+    let mut alive = vec![false; lanes.len()];
     let mut k = 0u32;
-    while !lanes.is_empty() {
+    while !live.is_empty() {
         // 1. Closest hits; emission found; paths that leave or end.
-        stats.rays += lanes.len() as u64;
+        stats.rays += live.len() as u64;
         hits.clear();
         shaded.clear();
         let over_limit = k > settings.bounce_limit();
-        for (i, lane) in lanes.iter().enumerate() {
+        for &i in &live {
+            let lane = &lanes[i as usize];
             let mut out = PathOut {
                 layers: &mut outs[lane.out as usize],
                 stats,
@@ -149,14 +152,12 @@ pub fn trace_paths<C: Contributions>(
                 out.stats.cut += u64::from(settings.max_bounces.is_none());
                 continue;
             }
-            shaded.push(i as u32);
+            shaded.push(i);
             hits.push(it);
         }
         // 2. Shading, eight lanes at a time.
         shadows.clear();
         let roulette = k + 1 >= settings.rr_min_bounce;
-        alive.clear();
-        alive.resize(lanes.len(), false);
         for (ids, its) in shaded.chunks(L).zip(hits.chunks(L)) {
             let mut given = [None; L];
             let u = numbers(level, &lanes, ids, k);
@@ -193,39 +194,37 @@ pub fn trace_paths<C: Contributions>(
                 out.add(Some(s.k), s.contribution);
             }
         }
-        let mut i = 0;
-        lanes.retain(|_| {
-            i += 1;
-            alive[i - 1]
-        });
+        live.retain(|&i| std::mem::take(&mut alive[i as usize]));
         k += 1;
     }
 }
 
 /// The eight numbers of vertex `k` of lanes `ids` (unused lanes repeat the
-/// first), `u[d][lane]`: Sobol points computed eight paths at a time, or
-/// one path at a time for independent numbers.
+/// first), `u[d][lane]`, computed eight paths at a time (one path at a
+/// time where Sobol points and independent numbers mix).
 #[allow(clippy::needless_range_loop)]
 fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
     let first = 4 + 8 * k as u64;
     let lane = |j: usize| &lanes[ids[if j < ids.len() { j } else { 0 }] as usize];
     let mut u = [[0.0; L]; 8];
     let index: [Option<u32>; L] = std::array::from_fn(|j| lane(j).sampler.sobol_index());
-    match index.iter().all(Option::is_some) {
-        true => {
-            let sample: [u32; L] = std::array::from_fn(|j| index[j].unwrap_or(0));
-            let scramble: [u64; L] = std::array::from_fn(|j| lane(j).sampler.pixel_scramble());
-            for half in 0..2 {
-                let g = super::simd::sobol_group8_at(level, &sample, &scramble, first / 4 + half);
-                u[4 * half as usize..4 * half as usize + 4].copy_from_slice(&g);
-            }
+    let prefix: [Option<u64>; L] = std::array::from_fn(|j| lane(j).sampler.independent_prefix());
+    if index.iter().all(Option::is_some) {
+        let sample: [u32; L] = std::array::from_fn(|j| index[j].unwrap_or(0));
+        let scramble: [u64; L] = std::array::from_fn(|j| lane(j).sampler.pixel_scramble());
+        for half in 0..2 {
+            let g = super::simd::sobol_group8_at(level, &sample, &scramble, first / 4 + half);
+            u[4 * half as usize..4 * half as usize + 4].copy_from_slice(&g);
         }
-        false => {
-            for j in 0..L {
-                let v = lane(j).sampler.eight_at(first);
-                for d in 0..8 {
-                    u[d][j] = v[d];
-                }
+    } else if prefix.iter().all(Option::is_some) {
+        let prefix: [u64; L] = std::array::from_fn(|j| prefix[j].unwrap_or(0));
+        u = super::simd::independent8_at(level, &prefix, first);
+    } else {
+        // Sobol points and, past the tables, independent numbers mixed.
+        for j in 0..L {
+            let v = lane(j).sampler.eight_at(first);
+            for d in 0..8 {
+                u[d][j] = v[d];
             }
         }
     }
