@@ -42,9 +42,10 @@ enum SamplerArg {
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum EngineArg {
-    /// The eight-wide BVH with SIMD chosen at run time (same images).
+    /// The eight-wide BVH with SIMD chosen at run time, and on diffuse
+    /// scenes with MIS a wavefront path loop shading eight hits at once.
     Fast,
-    /// The lesson's four-wide BVH.
+    /// The lesson's four-wide BVH and path loop.
     Readable,
 }
 
@@ -72,7 +73,8 @@ struct Cli {
     /// path before it gathers light of this bounce count k or more.
     #[arg(long, default_value_t = 1)]
     rr_after: u32,
-    /// Which engine traces the paths; both make the same images.
+    /// Which engine traces the paths; both trace the same paths, to the
+    /// last bits of a sine (see the book's appendix "Making it fast").
     #[arg(long, value_enum, default_value = "fast")]
     engine: EngineArg,
     /// Samples per pixel in one progressive pass.

@@ -60,7 +60,8 @@ struct Cli {
     /// Which engine traces chapter 6's paths in the UI and with
     /// `--chapter`/`--report`: `fast` (an eight-wide BVH with SIMD chosen at
     /// run time, and a wavefront path loop on diffuse scenes) or `readable`
-    /// (the lesson's code); the images agree to the last bits of a sine.
+    /// (the lesson's code); both trace the same paths, to the last bits of a
+    /// sine.
     #[arg(long, value_name = "ENGINE", default_value = "fast", value_parser = ["fast", "readable"])]
     engine: String,
     /// The same as `--graphics halfblocks`.
