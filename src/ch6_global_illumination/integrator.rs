@@ -181,10 +181,10 @@ pub fn trace_path(
 /// A path under way: how it is traced, its throughput, and what the
 /// emission its current ray finds must know about the vertex it left.
 pub(super) struct Path {
-    pub(super) strategy: Strategy,
+    strategy: Strategy,
     /// Whether vertices sample lights (then emission that a sampled
     /// direction finds is weighted against light sampling).
-    pub(super) samples_lights: bool,
+    samples_lights: bool,
     /// The throughput β.
     pub(super) beta: Vec3,
     /// The bounce count of light the current ray finds (`None`: the camera
@@ -220,7 +220,7 @@ impl Path {
 
     /// Goes on from `v` (where light of bounce count `k` scattered) along
     /// `step`.
-    pub(super) fn scatter(&mut self, v: &Vertex, k: u32, step: &Step) {
+    fn scatter(&mut self, v: &Vertex, k: u32, step: &Step) {
         self.beta *= step.weight;
         self.k = Some(k);
         self.from_delta = v.delta;
@@ -234,7 +234,7 @@ impl Path {
 /// on it with `u_light`, and cast a shadow ray. `None` when there is no
 /// light or the BSDF does not reflect towards the sample.
 // ANCHOR: direct_light
-fn direct_light(
+pub(super) fn direct_light(
     world: &World,
     v: &Vertex,
     u_choose: f32,
@@ -377,7 +377,7 @@ impl<C: Contributions> PathOut<'_, C> {
     }
 
     /// A light sample's contribution to bounce count `k`.
-    fn add_direct(&mut self, k: u32, direct: Option<DirectLight>) {
+    pub(super) fn add_direct(&mut self, k: u32, direct: Option<DirectLight>) {
         let Some(d) = direct else {
             return;
         };

@@ -28,21 +28,20 @@
 //! sampled in the lanes, other kinds by the lesson's code, one lane at a
 //! time); anything else goes to the lesson's loop ([`supports`]).
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::direct::Strategy;
-use crate::ch5_reflection::light::{Light, LightSample};
+use crate::ch5_reflection::light::Light;
 use crate::ch5_reflection::material::Bsdf;
-use crate::ch5_reflection::material::Frame;
-use crate::ch5_reflection::mis::power_heuristic;
 use crate::ch5_reflection::world::{Interaction, World};
 use crate::ch6_global_illumination::integrator::{
-    sky_emission, surface_emission, Path, PathOut, PathSettings, PathStats,
+    direct_light, sky_emission, surface_emission, Path, PathOut, PathSettings, PathStats,
 };
 use crate::ch6_global_illumination::layers::Contributions;
 use crate::ch6_global_illumination::sampler::PathSampler;
+use crate::ch6_global_illumination::vertex::Vertex;
 
 use super::bvh8::Bvh8;
 use super::level::Level;
@@ -89,14 +88,6 @@ enum ShadowTest {
     Blocked,
     /// Traced through the tree to `t_max` (made in the lanes).
     Trace(Ray, f32),
-    /// `World::unoccluded(p, n, wi, dist)` (lights sampled one lane at a
-    /// time).
-    World {
-        p: Vec3,
-        n: Vec3,
-        wi: Vec3,
-        dist: f32,
-    },
 }
 
 /// Traces one path per (camera ray, sampler) of `starts`, adding path i's
@@ -159,23 +150,28 @@ pub fn trace_paths<C: Contributions>(
         shadows.clear();
         let roulette = k + 1 >= settings.rr_min_bounce;
         for (ids, its) in shaded.chunks(L).zip(hits.chunks(L)) {
-            let mut given = [None; L];
-            let u = numbers(level, &lanes, ids, k);
-            gather(
-                world,
-                &lanes,
-                (ids, its),
-                &u,
-                roulette,
-                &mut given,
-                &mut input,
-            );
+            input.u = numbers(level, &lanes, ids, k);
+            let lesson_light = gather(world, &lanes, (ids, its), roulette, &mut input);
             super::simd::shade8_at(level, &input, &mut o);
             for (j, (&i, it)) in ids.iter().zip(its).enumerate() {
                 let lane = &mut lanes[i as usize];
-                let light = (given[j], input.p_choose[j]);
-                alive[i as usize] =
-                    finish(world, lane, it, k, (&*o, j), light, stats, &mut shadows);
+                if lesson_light[j] {
+                    // A point, spot, directional or sky light: the lesson's
+                    // `direct_light`, shadow ray and all, one lane at a time.
+                    if let Some(v) = Vertex::at(world, it, -lane.ray.dir) {
+                        let mut out = PathOut {
+                            layers: &mut outs[lane.out as usize],
+                            stats,
+                        };
+                        let u = &input.u;
+                        let u_light = Vec2::new(u[1][j], u[2][j]);
+                        let direct =
+                            direct_light(world, &v, u[0][j], u_light, &lane.path, out.stats);
+                        out.add_direct(k, direct);
+                    }
+                }
+                let shadows = (!lesson_light[j]).then_some(&mut shadows);
+                alive[i as usize] = finish(lane, it, k, (&*o, j), stats, shadows);
             }
         }
         // 3. Shadow rays.
@@ -184,7 +180,6 @@ pub fn trace_paths<C: Contributions>(
                 ShadowTest::Visible => true,
                 ShadowTest::Blocked => false,
                 ShadowTest::Trace(ray, t_max) => !super::simd::occluded(level, tree, &ray, t_max),
-                ShadowTest::World { p, n, wi, dist } => world.unoccluded(p, n, wi, dist),
             };
             if visible {
                 let mut out = PathOut {
@@ -208,7 +203,6 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
     let lane = |j: usize| &lanes[ids[if j < ids.len() { j } else { 0 }] as usize];
     let mut u = [[0.0; L]; 8];
     let index: [Option<u32>; L] = std::array::from_fn(|j| lane(j).sampler.sobol_index());
-    let prefix: [Option<u64>; L] = std::array::from_fn(|j| lane(j).sampler.independent_prefix());
     if index.iter().all(Option::is_some) {
         let sample: [u32; L] = std::array::from_fn(|j| index[j].unwrap_or(0));
         let scramble: [u64; L] = std::array::from_fn(|j| lane(j).sampler.pixel_scramble());
@@ -216,8 +210,9 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
             let g = super::simd::sobol_group8_at(level, &sample, &scramble, first / 4 + half);
             u[4 * half as usize..4 * half as usize + 4].copy_from_slice(&g);
         }
-    } else if prefix.iter().all(Option::is_some) {
-        let prefix: [u64; L] = std::array::from_fn(|j| prefix[j].unwrap_or(0));
+    } else if index.iter().all(Option::is_none) {
+        let prefix: [u64; L] =
+            std::array::from_fn(|j| lane(j).sampler.independent_prefix().unwrap_or(0));
         u = super::simd::independent8_at(level, &prefix, first);
     } else {
         // Sobol points and, past the tables, independent numbers mixed.
@@ -231,20 +226,20 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
     u
 }
 
-/// Reads lanes `ids` (with their hits and numbers `u8`) into the eight-lane
-/// arrays `x`; unused lanes repeat the first one. A lane whose light is not
-/// an area light leaves the light fields as they were (the lanes' shadow
-/// ray for it is not used: [`finish`] makes its own).
+/// Reads lanes `ids` (with their hits) into the eight-lane arrays `x`,
+/// beside the numbers already there; unused lanes repeat the first one.
+/// Returns which lanes chose a light that is not an area light: their
+/// light fields are left as they were, and the lesson's code samples that
+/// light instead (the lanes' shadow ray for them is not used).
 #[allow(clippy::needless_range_loop)]
 fn gather(
     world: &World,
     lanes: &[Lane],
     (ids, hits): (&[u32], &[Interaction]),
-    u8: &[[f32; L]; 8],
     roulette: bool,
-    given: &mut [Option<Option<LightSample>>; L],
     x: &mut In8,
-) {
+) -> [bool; L] {
+    let mut lesson_light = [false; L];
     for j in 0..L {
         let jj = if j < ids.len() { j } else { 0 };
         let lane = &lanes[ids[jj] as usize];
@@ -252,7 +247,6 @@ fn gather(
         let Bsdf::Lambertian(b) = &world.bsdfs[it.material] else {
             unreachable!("the wavefront loop only runs on diffuse scenes");
         };
-        let u: [f32; 8] = std::array::from_fn(|d| u8[d][j]);
         for a in 0..3 {
             x.d[a][j] = lane.ray.dir[a];
             x.p[a][j] = it.p[a];
@@ -260,24 +254,14 @@ fn gather(
             x.rho[a][j] = b.rho[a];
             x.beta[a][j] = lane.path.beta[a];
         }
-        for (d, v) in u.iter().enumerate() {
-            x.u[d][j] = *v;
-        }
-        let (i, p_choose) = world.lights.choose(u[0]).expect("a light");
+        let (i, p_choose) = world.lights.choose(x.u[0][j]).expect("a light");
         x.p_choose[j] = p_choose;
-        let light = match &world.lights.lights[i] {
-            Light::Area(light) => light,
-            other => {
-                // A point, spot, directional or sky light: sampled by the
-                // lesson's code, one lane at a time ([`finish`]).
-                let wo_z = (-lane.ray.dir).dot(it.n);
-                let n_side = if wo_z > 0.0 { it.n } else { -it.n };
-                given[j] = Some(other.sample_li(it.p, n_side, glam::Vec2::new(u[1], u[2])));
-                continue;
-            }
+        let Light::Area(light) = &world.lights.lights[i] else {
+            lesson_light[j] = true;
+            continue;
         };
         // The triangle, as `AreaLight::sample_li` picks it.
-        let (t, ux) = light.pick(u[1]);
+        let (t, ux) = light.pick(x.u[1][j]);
         x.ux[j] = ux;
         for (c, corner) in light.triangles[t].iter().enumerate() {
             for a in 0..3 {
@@ -292,73 +276,41 @@ fn gather(
         x.two_sided[j] = light.two_sided;
     }
     x.roulette = roulette;
+    lesson_light
 }
 
-/// Writes lane `j`'s results back: its shadow ray, and the path going on
-/// (`false` where it ends).
-#[allow(clippy::too_many_arguments)]
+/// Writes lane `j`'s results back: its shadow ray (into `shadows`, unless
+/// the lesson's code took care of the light: `None`), and the path going
+/// on (`false` where it ends).
 fn finish(
-    world: &World,
     lane: &mut Lane,
     it: &Interaction,
     k: u32,
     (o, j): (&Out8, usize),
-    (given, p_choose): (Option<Option<LightSample>>, f32),
     stats: &mut PathStats,
-    shadows: &mut Vec<Shadow>,
+    shadows: Option<&mut Vec<Shadow>>,
 ) -> bool {
     if !o.valid[j] {
         return false;
     }
     let v3 = |a: &[[f32; L]; 3]| Vec3::new(a[0][j], a[1][j], a[2][j]);
-    let shadow = match given {
-        // An area light: the lanes did it all.
-        None => o.shadow[j].then(|| {
-            let test = if o.shadow_trace[j] {
-                let ray = Ray {
-                    origin: v3(&o.shadow_o),
-                    dir: v3(&o.shadow_d),
-                };
-                ShadowTest::Trace(ray, o.shadow_t[j])
-            } else if o.shadow_free[j] {
-                ShadowTest::Visible
-            } else {
-                ShadowTest::Blocked
+    if let Some(shadows) = shadows.filter(|_| o.shadow[j]) {
+        let test = if o.shadow_trace[j] {
+            let ray = Ray {
+                origin: v3(&o.shadow_o),
+                dir: v3(&o.shadow_d),
             };
-            (test, v3(&o.contribution))
-        }),
-        // Another kind: the lesson's `direct_light`, step by step.
-        Some(sample) => sample.and_then(|ls| {
-            let Bsdf::Lambertian(bsdf) = &world.bsdfs[it.material] else {
-                return None;
-            };
-            let frame = Frame::from_normal(it.n);
-            let (wo, wi) = (frame.to_local(-lane.ray.dir), frame.to_local(ls.wi));
-            let f = bsdf.f(wo, wi);
-            if f == Vec3::ZERO {
-                return None;
-            }
-            let pdf = ls.pdf * p_choose;
-            let weight = match ls.delta {
-                true => 1.0,
-                false => power_heuristic(pdf, bsdf.pdf(wo, wi)),
-            };
-            let c = lane.path.beta * f * ls.li * wi.z.abs() * (weight / pdf);
-            let test = ShadowTest::World {
-                p: it.p,
-                n: it.n,
-                wi: ls.wi,
-                dist: ls.dist,
-            };
-            Some((test, c))
-        }),
-    };
-    if let Some((test, contribution)) = shadow {
+            ShadowTest::Trace(ray, o.shadow_t[j])
+        } else if o.shadow_free[j] {
+            ShadowTest::Visible
+        } else {
+            ShadowTest::Blocked
+        };
         stats.rays += 1;
         shadows.push(Shadow {
             test,
             k,
-            contribution,
+            contribution: v3(&o.contribution),
             out: lane.out,
         });
     }
