@@ -29,13 +29,13 @@ use super::level::Level;
 pub struct Bvh8 {
     pub(super) nodes: Vec<Node8>,
     pub(super) leaves: Vec<Leaf8>,
-    root: u32,
+    pub(super) root: u32,
     /// Inner-node levels on the longest root-to-leaf path.
     levels: usize,
     /// The triangles one by one (`tris[8 l + lane]`) for the rare lanes.
     tris: Vec<SoaTriangle>,
     /// `original[8 l + lane]`: the triangle's index in the build list.
-    original: Vec<u32>,
+    pub(super) original: Vec<u32>,
     /// Which vector instructions the queries use.
     pub(super) level: Level,
 }
@@ -192,13 +192,23 @@ impl Bvh8 {
     }
 
     #[inline(always)]
-    fn leaf_closest<K: Kernel>(&self, r: &RayData, l: usize, t_max: f32) -> Option<(Hit, usize)> {
+    pub(super) fn leaf_closest<K: Kernel>(
+        &self,
+        r: &RayData,
+        l: usize,
+        t_max: f32,
+    ) -> Option<(Hit, usize)> {
         let h = K::leaf(r, &self.leaves[l], t_max);
         let best = nearest_lane(h.hit, &h.t, &h.u, &h.v);
         match h.check {
             0 => best,
             check => nearest_checked(&r.wt, self.leaf_tris(l), check, t_max, best),
         }
+    }
+
+    /// Whether any of leaf `l`'s rare lanes `check` is hit in (0, t_max).
+    pub(super) fn leaf_any_checked(&self, r: &RayData, l: usize, check: u32, t_max: f32) -> bool {
+        any_checked(&r.wt, self.leaf_tris(l), check, t_max)
     }
 
     /// Leaf `l`'s triangles one by one, for the rare lanes.
@@ -229,8 +239,7 @@ impl Bvh8 {
             } else {
                 let l = (at & !LEAF) as usize;
                 let h = K::leaf(r, &self.leaves[l], t_max);
-                let checked = || any_checked(&r.wt, self.leaf_tris(l), h.check, t_max);
-                if h.hit != 0 || (h.check != 0 && checked()) {
+                if h.hit != 0 || (h.check != 0 && self.leaf_any_checked(r, l, h.check, t_max)) {
                     return true;
                 }
             }

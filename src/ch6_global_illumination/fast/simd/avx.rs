@@ -1,0 +1,344 @@
+//! The two lane tests written with AVX intrinsics, eight lanes in one
+//! register, in exactly the operations and order of the portable loops in
+//! [`lanes`](super::super::lanes) (so the same bits; `max`/`min` take the new value first,
+//! so a NaN keeps the old one, as `f32::max` does).
+//!
+//! SAFETY (for every `unsafe` block below): these functions are only
+//! reached from the `#[target_feature(enable = "avx2,...")]` entry points
+//! in [`super`], which run only on CPUs that have AVX2 (`Level::available`); every
+//! load reads a whole `[f32; 8]` that the reference proves is there.
+
+use std::arch::x86_64::*;
+
+use super::super::bvh8::Bvh8;
+use super::super::lanes::{Hits8, Kernel, Leaf8, Node8, RayData, FAR_STRETCH, LEAF, W};
+use crate::ch3_ray_triangle::triangle::{gamma, Hit};
+use crate::ch3_ray_triangle::wide_build::nearest_child_next;
+
+pub(super) struct Avx;
+
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+fn load(a: &[f32; W]) -> __m256 {
+    // SAFETY: see the module.
+    unsafe { _mm256_loadu_ps(a.as_ptr()) }
+}
+
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+fn store(v: __m256) -> [f32; W] {
+    let mut a = [0.0f32; W];
+    // SAFETY: see the module.
+    unsafe { _mm256_storeu_ps(a.as_mut_ptr(), v) };
+    a
+}
+
+impl Kernel for Avx {
+    #[inline(always)]
+    fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
+        // SAFETY: see the module.
+        unsafe { enter_avx(r, node, t_max) }
+    }
+
+    #[inline(always)]
+    fn leaf(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
+        // SAFETY: see the module.
+        unsafe { leaf_avx(r, leaf, t_max) }
+    }
+}
+
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+fn enter_avx(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
+    {
+        let mut t_near = _mm256_setzero_ps();
+        let mut t_far = _mm256_set1_ps(t_max);
+        for axis in 0..3 {
+            let (near, far) = match r.negative[axis] {
+                true => (&node.max[axis], &node.min[axis]),
+                false => (&node.min[axis], &node.max[axis]),
+            };
+            let (o, inv) = (_mm256_set1_ps(r.o[axis]), _mm256_set1_ps(r.inv[axis]));
+            t_near = _mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(load(near), o), inv), t_near);
+            t_far = _mm256_min_ps(_mm256_mul_ps(_mm256_sub_ps(load(far), o), inv), t_far);
+        }
+        let stretched = _mm256_mul_ps(t_far, _mm256_set1_ps(FAR_STRETCH));
+        let entered = _mm256_cmp_ps::<_CMP_LE_OQ>(t_near, stretched);
+        (_mm256_movemask_ps(entered) as u32, store(t_near))
+    }
+}
+
+/// The first half of the leaf test: each triangle's corners moved into
+/// the ray's frame, the edge functions, and which lanes can hit at all
+/// (`Front`). Written as a macro so that it expands inside the functions
+/// that use it: a `#[target_feature]` helper returning registers is not
+/// reliably inlined, and then its results go through memory.
+macro_rules! front {
+    ($r:expr, $leaf:expr, $t_max:expr) => {{
+        let (r, leaf, t_max): (&RayData, &Leaf8, f32) = ($r, $leaf, $t_max);
+        let (px, py, pz) = (&leaf.p[r.k[0]], &leaf.p[r.k[1]], &leaf.p[r.k[2]]);
+        let [ox, oy, oz] = r.ko.map(|x| _mm256_set1_ps(x));
+        let [sx, sy, sz] = r.s.map(|x| _mm256_set1_ps(x));
+        let (add, sub, mul) = (_mm256_add_ps, _mm256_sub_ps, _mm256_mul_ps);
+        let zero = _mm256_setzero_ps();
+        let z = [0, 1, 2].map(|j| sub(load(&pz[j]), oz));
+        let x = [0, 1, 2].map(|j| add(sub(load(&px[j]), ox), mul(sx, z[j])));
+        let y = [0, 1, 2].map(|j| add(sub(load(&py[j]), oy), mul(sy, z[j])));
+        let e0 = sub(mul(x[1], y[2]), mul(y[1], x[2]));
+        let e1 = sub(mul(x[2], y[0]), mul(y[2], x[0]));
+        let e2 = sub(mul(x[0], y[1]), mul(y[0], x[1]));
+        let or3 = |a, b, c| _mm256_or_ps(_mm256_or_ps(a, b), c);
+        let any_zero = or3(
+            _mm256_cmp_ps::<_CMP_EQ_OQ>(e0, zero),
+            _mm256_cmp_ps::<_CMP_EQ_OQ>(e1, zero),
+            _mm256_cmp_ps::<_CMP_EQ_OQ>(e2, zero),
+        );
+        let neg = or3(
+            _mm256_cmp_ps::<_CMP_LT_OQ>(e0, zero),
+            _mm256_cmp_ps::<_CMP_LT_OQ>(e1, zero),
+            _mm256_cmp_ps::<_CMP_LT_OQ>(e2, zero),
+        );
+        let pos = or3(
+            _mm256_cmp_ps::<_CMP_GT_OQ>(e0, zero),
+            _mm256_cmp_ps::<_CMP_GT_OQ>(e1, zero),
+            _mm256_cmp_ps::<_CMP_GT_OQ>(e2, zero),
+        );
+        let det = add(add(e0, e1), e2);
+        let zs = z.map(|zj| mul(zj, sz));
+        let ts = add(add(mul(e0, zs[0]), mul(e1, zs[1])), mul(e2, zs[2]));
+        let (lo, hi) = (mul(zero, det), mul(_mm256_set1_ps(t_max), det));
+        let and = _mm256_and_ps;
+        let in_neg = and(
+            and(
+                _mm256_cmp_ps::<_CMP_LT_OQ>(det, zero),
+                _mm256_cmp_ps::<_CMP_LT_OQ>(ts, lo),
+            ),
+            _mm256_cmp_ps::<_CMP_GE_OQ>(ts, hi),
+        );
+        let in_pos = and(
+            and(
+                _mm256_cmp_ps::<_CMP_GT_OQ>(det, zero),
+                _mm256_cmp_ps::<_CMP_GT_OQ>(ts, lo),
+            ),
+            _mm256_cmp_ps::<_CMP_LE_OQ>(ts, hi),
+        );
+        let finite = _mm256_cmp_ps::<_CMP_LT_OQ>(abs(det), _mm256_set1_ps(f32::INFINITY));
+        let candidate = _mm256_andnot_ps(and(neg, pos), and(finite, _mm256_or_ps(in_neg, in_pos)));
+        Front {
+            x,
+            y,
+            zs,
+            e: [e0, e1, e2],
+            det,
+            ts,
+            candidates: _mm256_movemask_ps(candidate) as u32,
+            zeros: _mm256_movemask_ps(any_zero) as u32,
+        }
+    }};
+}
+
+/// The second half, for a leaf with candidates: t, 1/det, and which
+/// candidates pbrt-v4's error bound trusts: `(t, inv_det, hit, check)`.
+macro_rules! trust {
+    ($f:expr) => {{
+        let f: &Front = $f;
+        let (add, mul) = (_mm256_add_ps, _mm256_mul_ps);
+        let max = |a, b| _mm256_max_ps(b, a);
+        let max3 = |v: [__m256; 3]| max(max(abs(v[0]), abs(v[1])), abs(v[2]));
+        let g = |n| _mm256_set1_ps(gamma(n));
+        let inv_det = _mm256_div_ps(_mm256_set1_ps(1.0), f.det);
+        let t = mul(f.ts, inv_det);
+        let (max_zt, max_xt, max_yt) = (max3(f.zs), max3(f.x), max3(f.y));
+        let delta_z = mul(g(3), max_zt);
+        let delta_x = mul(g(5), add(max_xt, max_zt));
+        let delta_y = mul(g(5), add(max_yt, max_zt));
+        let delta_e = mul(
+            _mm256_set1_ps(2.0),
+            add(
+                add(mul(mul(g(2), max_xt), max_yt), mul(delta_y, max_xt)),
+                mul(delta_x, max_yt),
+            ),
+        );
+        let max_e = max3(f.e);
+        let inner = add(
+            add(mul(mul(g(3), max_e), max_zt), mul(delta_e, max_zt)),
+            mul(delta_z, max_e),
+        );
+        let delta_t = mul(mul(_mm256_set1_ps(3.0), inner), abs(inv_det));
+        let trusted = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_GT_OQ>(t, delta_t)) as u32;
+        let (candidates, zeros) = (f.candidates, f.zeros);
+        (
+            t,
+            inv_det,
+            candidates & trusted & !zeros,
+            zeros | (candidates & !trusted),
+        )
+    }};
+}
+
+/// What [`front!`] computes: the corners in the ray's frame (x, y and the
+/// sheared z), the edge functions, det and the scaled t, and the masks of
+/// candidates and of lanes with an edge function exactly zero.
+struct Front {
+    x: [__m256; 3],
+    y: [__m256; 3],
+    zs: [__m256; 3],
+    e: [__m256; 3],
+    det: __m256,
+    ts: __m256,
+    candidates: u32,
+    zeros: u32,
+}
+
+/// |v|.
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+fn abs(v: __m256) -> __m256 {
+    _mm256_andnot_ps(_mm256_set1_ps(-0.0), v)
+}
+
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+fn leaf_avx(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
+    let f = front!(r, leaf, t_max);
+    let mut h = Hits8 {
+        hit: 0,
+        check: f.zeros,
+        t: [0.0; W],
+        u: [0.0; W],
+        v: [0.0; W],
+    };
+    if f.candidates == 0 {
+        return h;
+    }
+    let (t, inv_det, hit, check) = trust!(&f);
+    h.hit = hit;
+    h.check = check;
+    h.t = store(t);
+    h.u = store(_mm256_mul_ps(f.e[1], inv_det));
+    h.v = store(_mm256_mul_ps(f.e[2], inv_det));
+    h
+}
+
+/// [`Bvh8::closest_with`] with these kernels, the leaf test kept in
+/// registers: a leaf's nearest hit is found by a vector minimum (the last
+/// lane among equals, as `nearest_lane` picks), and only its t, u and v
+/// leave the registers. The same nodes and leaves in the same order, so
+/// the same hit as the generic loop, bit for bit.
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+pub(super) fn closest(
+    bvh: &Bvh8,
+    r: &RayData,
+    t_max: f32,
+    stack: &mut [(u32, f32)],
+) -> Option<Hit> {
+    let mut best: Option<Hit> = None;
+    let mut t_best = t_max;
+    let mut depth = 0;
+    let mut at = bvh.root;
+    loop {
+        if at & LEAF == 0 {
+            let node = &bvh.nodes[at as usize];
+            let (entered, t_near) = enter_avx(r, node, t_best);
+            if entered != 0 {
+                at = nearest_child_next(entered, &node.child, &t_near, stack, &mut depth);
+                continue;
+            }
+        } else {
+            let l = (at & !LEAF) as usize;
+            let f = front!(r, &bvh.leaves[l], t_best);
+            if f.candidates != 0 || f.zeros != 0 {
+                let (t, inv_det, hit, check) = trust!(&f);
+                let found = if check != 0 {
+                    bvh.leaf_closest::<Avx>(r, l, t_best)
+                } else if hit != 0 {
+                    Some(nearest(t, inv_det, &f, hit))
+                } else {
+                    None
+                };
+                if let Some((hit, lane)) = found {
+                    t_best = hit.t;
+                    best = Some(Hit {
+                        triangle: bvh.original[l * W + lane],
+                        ..hit
+                    });
+                }
+            }
+        }
+        loop {
+            if depth == 0 {
+                return best;
+            }
+            depth -= 1;
+            let (next, t_near) = stack[depth];
+            if t_near <= t_best {
+                at = next;
+                break;
+            }
+        }
+    }
+}
+
+/// The nearest of the lanes `hit` (at least one) and its lane: the
+/// smallest t, and of equal ones the last lane.
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+fn nearest(t: __m256, inv_det: __m256, f: &Front, hit: u32) -> (Hit, usize) {
+    let lanes = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
+    let bits = _mm256_set1_epi32(hit as i32);
+    let on = _mm256_cmpeq_epi32(_mm256_and_si256(bits, lanes), lanes);
+    let masked = _mm256_blendv_ps(_mm256_set1_ps(f32::INFINITY), t, _mm256_castsi256_ps(on));
+    // The minimum over the eight lanes, in every lane.
+    let m = _mm256_min_ps(masked, _mm256_permute_ps::<0b10_11_00_01>(masked));
+    let m = _mm256_min_ps(m, _mm256_permute_ps::<0b01_00_11_10>(m));
+    let m = _mm256_min_ps(m, _mm256_permute2f128_ps::<1>(m, m));
+    let equal = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_EQ_OQ>(masked, m)) as u32 & hit;
+    let lane = 31 - equal.leading_zeros() as usize;
+    let (u, v) = (
+        store(_mm256_mul_ps(f.e[1], inv_det)),
+        store(_mm256_mul_ps(f.e[2], inv_det)),
+    );
+    let hit = Hit {
+        t: store(t)[lane],
+        u: u[lane],
+        v: v[lane],
+        triangle: 0,
+    };
+    (hit, lane)
+}
+
+/// [`Bvh8::occluded_with`] with these kernels, the leaf test stopping at
+/// its first half where no lane can hit.
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+pub(super) fn occluded(bvh: &Bvh8, r: &RayData, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
+    let mut depth = 0;
+    let mut at = bvh.root;
+    loop {
+        if at & LEAF == 0 {
+            let node = &bvh.nodes[at as usize];
+            let (mut entered, _) = enter_avx(r, node, t_max);
+            while entered != 0 {
+                let lane = entered.trailing_zeros() as usize;
+                entered &= entered - 1;
+                stack[depth] = (node.child[lane], 0.0);
+                depth += 1;
+            }
+        } else {
+            let l = (at & !LEAF) as usize;
+            let f = front!(r, &bvh.leaves[l], t_max);
+            if f.candidates != 0 || f.zeros != 0 {
+                let (_, _, hit, check) = trust!(&f);
+                if hit != 0 || (check != 0 && bvh.leaf_any_checked(r, l, check, t_max)) {
+                    return true;
+                }
+            }
+        }
+        if depth == 0 {
+            return false;
+        }
+        depth -= 1;
+        at = stack[depth].0;
+    }
+}

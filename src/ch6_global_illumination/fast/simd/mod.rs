@@ -1,0 +1,248 @@
+//! Which vector instructions the fast engine's ray queries use, chosen
+//! at run time: the one module with `unsafe` code (this file's dispatch
+//! and its AVX kernels in `avx.rs`).
+//!
+//! The release build targets the x86-64 baseline (SSE2), so that the
+//! binary runs on any x86-64 CPU. Each query is compiled three times: with
+//! the portable lane loops of [`super::lanes`] for the baseline (the only
+//! path on other architectures), and with the AVX2 kernels of `avx.rs`
+//! for AVX2 and for AVX-512 CPUs (the same eight-lane code; with AVX-512
+//! enabled the compiler may use its mask registers). [`Level::detect`] picks the widest
+//! the CPU has; `RAYSTEP_SIMD` (`portable`, `avx2`, `avx512`) asks for a
+//! narrower one.
+//!
+//! Every path computes the same bits: each lane's arithmetic is the same
+//! IEEE operations in the same order, and neither Rust nor the kernel
+//! fuses a multiply and an add (tests render with each path and compare
+//! the bytes).
+
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::triangle::Hit;
+
+use crate::ch5_reflection::world::RayQueries;
+
+use super::bvh8::Bvh8;
+use super::lanes::{owen_finish_lanes, Kernel, Lanes, RayData};
+use super::level::Level;
+use super::shade8::{self, In8, Out8};
+
+/// The closest hit of `ray` in (0, t_max) with `level`'s instructions.
+#[inline]
+pub fn closest(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
+    match level {
+        // SAFETY: a `Bvh8` holds only levels `Level::available` said this
+        // CPU has (`Bvh8::build` checks), and the function needs nothing
+        // else than those instructions.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { closest_avx512(bvh, ray, t_max) },
+        // SAFETY: as above.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => unsafe { closest_avx2(bvh, ray, t_max) },
+        _ => closest_lanes::<Lanes>(bvh, ray, t_max),
+    }
+}
+
+/// Whether anything is hit in (0, t_max), with `level`'s instructions.
+#[inline]
+pub fn occluded(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
+    match level {
+        // SAFETY: as in `closest`.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { occluded_avx512(bvh, ray, t_max) },
+        // SAFETY: as in `closest`.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => unsafe { occluded_avx2(bvh, ray, t_max) },
+        _ => occluded_lanes::<Lanes>(bvh, ray, t_max),
+    }
+}
+
+impl RayQueries for Bvh8 {
+    fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        closest(self.level, self, ray, t_max)
+    }
+    fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
+        occluded(self.level, self, ray, t_max)
+    }
+    fn describe(&self) -> String {
+        format!(
+            "the fast engine's BVH, 8 wide ({} nodes, {} leaves; {} instructions)",
+            self.nodes.len(),
+            self.leaves.len(),
+            self.level.name()
+        )
+    }
+    fn as_any(&self) -> Option<&dyn std::any::Any> {
+        Some(self)
+    }
+}
+
+/// The widest level this CPU has (or `RAYSTEP_SIMD` asks for), found once.
+pub fn best() -> Level {
+    static BEST: std::sync::OnceLock<Level> = std::sync::OnceLock::new();
+    *BEST.get_or_init(Level::detect)
+}
+
+/// [`owen_finish_lanes`] with the widest instructions this CPU has.
+#[inline]
+pub fn owen_finish(sobol: [u32; 4], seed: u32) -> [f32; 4] {
+    owen_finish_at(best(), sobol, seed)
+}
+
+/// [`owen_finish_lanes`] with `level`'s instructions (the portable path if
+/// this CPU lacks them).
+#[inline]
+pub fn owen_finish_at(level: Level, sobol: [u32; 4], seed: u32) -> [f32; 4] {
+    match level {
+        // SAFETY: only where `Level::available` says the CPU has AVX2.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 | Level::Avx512 if level.available() => unsafe {
+            owen_finish_avx2(sobol, seed)
+        },
+        _ => owen_finish_lanes(sobol, seed),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn owen_finish_avx2(sobol: [u32; 4], seed: u32) -> [f32; 4] {
+    owen_finish_lanes(sobol, seed)
+}
+
+/// One vertex of eight paths ([`shade8::shade8`]) with `level`'s
+/// instructions: the same lane loops, compiled for AVX2's eight-lane
+/// registers where the CPU has them (the same operations, so the same bits).
+#[inline]
+pub(super) fn shade8_at(level: Level, x: &In8, o: &mut Out8) {
+    match level {
+        // SAFETY: `level.available()` checked that this CPU has AVX2, all
+        // the function needs.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 | Level::Avx512 if level.available() => unsafe { shade8_avx2(x, o) },
+        _ => shade8::shade8(x, o),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn shade8_avx2(x: &In8, o: &mut Out8) {
+    shade8::shade8(x, o)
+}
+
+/// [`sobol_group8`](super::sobol8::sobol_group8) with `level`'s
+/// instructions (the same bits on every path).
+#[inline]
+pub fn sobol_group8_at(
+    level: Level,
+    sample: &[u32; 8],
+    pixel_scramble: &[u64; 8],
+    group: u64,
+) -> [[f32; 8]; 4] {
+    match level {
+        // SAFETY: `level.available()` checked that this CPU has AVX2, all
+        // the function needs.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 | Level::Avx512 if level.available() => unsafe {
+            sobol_group8_avx2(sample, pixel_scramble, group)
+        },
+        _ => super::sobol8::sobol_group8(sample, pixel_scramble, group),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn sobol_group8_avx2(
+    sample: &[u32; 8],
+    pixel_scramble: &[u64; 8],
+    group: u64,
+) -> [[f32; 8]; 4] {
+    super::sobol8::sobol_group8(sample, pixel_scramble, group)
+}
+
+/// [`independent8`](super::sobol8::independent8) with `level`'s
+/// instructions (the same bits on every path).
+#[inline]
+pub fn independent8_at(level: Level, prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
+    match level {
+        // SAFETY: `level.available()` checked that this CPU has AVX2, all
+        // the function needs.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 | Level::Avx512 if level.available() => unsafe {
+            independent8_avx2(prefix, first)
+        },
+        _ => super::sobol8::independent8(prefix, first),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn independent8_avx2(prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
+    super::sobol8::independent8(prefix, first)
+}
+
+/// Entries of a traversal stack kept on the call stack: a small one for
+/// small trees (up to 2 levels; clearing it is part of every query), a
+/// larger one up to 9 levels (over 8^9 leaves), else one on the heap.
+const SMALL_STACK: usize = 16;
+const ON_STACK: usize = 64;
+
+/// Runs `$query` with `$r` the ray's data and `$stack` a traversal stack
+/// big enough for `$bvh`. (A macro, not a helper taking a closure: a
+/// closure is compiled without the AVX features of its caller, and the
+/// kernels inside it would become calls.)
+macro_rules! with_stack {
+    ($bvh:expr, $ray:expr, |$r:ident, $stack:ident| $query:expr) => {{
+        let ($r, n) = (RayData::new($ray), $bvh.stack_size());
+        if n <= SMALL_STACK {
+            let $stack = &mut [(0u32, 0f32); SMALL_STACK];
+            $query
+        } else if n <= ON_STACK {
+            let $stack = &mut [(0u32, 0f32); ON_STACK];
+            $query
+        } else {
+            let $stack = &mut vec![(0, 0.0); n];
+            $query
+        }
+    }};
+}
+
+#[inline(always)]
+fn closest_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
+    with_stack!(bvh, ray, |r, stack| bvh.closest_with::<K>(&r, t_max, stack))
+}
+
+#[inline(always)]
+fn occluded_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
+    with_stack!(bvh, ray, |r, stack| bvh
+        .occluded_with::<K>(&r, t_max, stack))
+}
+
+// The AVX entry points run the traversals of `avx`, which keep the leaf
+// test in registers; they visit the same nodes and leaves in the same
+// order as `Bvh8::closest_with` and `occluded_with`, so every path finds
+// the same hit.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn closest_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
+    with_stack!(bvh, ray, |r, stack| avx::closest(bvh, &r, t_max, stack))
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn closest_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
+    with_stack!(bvh, ray, |r, stack| avx::closest(bvh, &r, t_max, stack))
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn occluded_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
+    with_stack!(bvh, ray, |r, stack| avx::occluded(bvh, &r, t_max, stack))
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn occluded_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
+    with_stack!(bvh, ray, |r, stack| avx::occluded(bvh, &r, t_max, stack))
+}
+
+#[cfg(target_arch = "x86_64")]
+mod avx;
