@@ -309,6 +309,39 @@ fn the_lanes_offsets_are_chapter_3s_bit_for_bit() {
 }
 
 #[test]
+fn the_lanes_truncation_is_rusts_cast() {
+    use raystep::ch6_global_illumination::fast::shade8::truncate;
+    let specials = [
+        0.0f32,
+        -0.0,
+        0.5,
+        -0.999,
+        1.0,
+        -1.0,
+        8_388_607.5,
+        16_777_217.0,
+        2_147_483_520.0,
+        2_147_483_648.0,
+        -2_147_483_648.0,
+        -2_147_483_904.0,
+        f32::MAX,
+        f32::MIN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        f32::NAN,
+        -f32::NAN,
+        f32::from_bits(0x7f80_0001),
+        f32::MIN_POSITIVE,
+        1e-45,
+    ];
+    // Every 4099th bit pattern (both signs, every exponent), and the specials.
+    let strided = (0..=u32::MAX / 4099).map(|i| f32::from_bits(i * 4099));
+    for x in specials.into_iter().chain(strided) {
+        assert_eq!(truncate(x), x as i32, "{x:e} ({:#x})", x.to_bits());
+    }
+}
+
+#[test]
 fn eight_paths_numbers_are_the_samplers_bit_for_bit() {
     use raystep::ch6_global_illumination::fast::sobol8::{independent8, sobol_group8};
     use raystep::ch6_global_illumination::sampler::PathSampler;

@@ -280,13 +280,44 @@ fn max_element(v: [f32; 3]) -> f32 {
 #[inline(always)]
 pub fn offset_coordinate(p: f32, n: f32) -> f32 {
     let near = p + FLOAT_SCALE * n;
-    let ulps = (INT_SCALE * n) as i32;
+    let ulps = truncate(INT_SCALE * n);
     let ulps = if p < 0.0 { ulps.wrapping_neg() } else { ulps };
     let far = f32::from_bits((p.to_bits() as i32).wrapping_add(ulps) as u32);
     if p.abs() < ORIGIN {
         near
     } else {
         far
+    }
+}
+
+/// `x as i32`: x rounded towards zero, saturated to the `i32` range,
+/// NaN giving 0. Written with integer steps on the bits (exponent and
+/// mantissa, two shifts, selects), because the compiler turns Rust's
+/// saturating cast into one scalar conversion per lane, and these steps
+/// into vector instructions. A test checks it against `as i32`.
+#[inline(always)]
+pub fn truncate(x: f32) -> i32 {
+    let bits = x.to_bits();
+    let exponent = ((bits >> 23) & 0xff) as i32 - 127;
+    let mantissa = (bits & 0x7f_ffff) | 0x80_0000;
+    // |x| = mantissa · 2^(exponent - 23); below 1 the right shift of 31
+    // leaves nothing.
+    let right = (23 - exponent).clamp(0, 31) as u32;
+    let left = (exponent - 23).clamp(0, 7) as u32;
+    let magnitude = ((mantissa >> right) << left) as i32;
+    let negative = (bits >> 31) != 0;
+    let value = if negative {
+        magnitude.wrapping_neg()
+    } else {
+        magnitude
+    };
+    let saturated = if negative { i32::MIN } else { i32::MAX };
+    let nan = exponent == 128 && (bits & 0x7f_ffff) != 0;
+    let out = if exponent >= 31 { saturated } else { value };
+    if nan {
+        0
+    } else {
+        out
     }
 }
 
