@@ -697,7 +697,11 @@ fn the_appendix_statements_match_the_benchmarks() {
     );
     for r in [ind, sobol] {
         assert!(num(&r["RMSE²·s #2"]) < 3e-4, "{r:?}");
-        assert!(num(&r["paths/s"]) < 3.5e6);
+    }
+    let paths = |r: &Row| num(&r["paths/s"]);
+    assert!(paths(ind).max(paths(sobol)) > 3.5e6, "{ind:?} {sobol:?}");
+    for s in ["readable independent", "readable sobol"] {
+        assert!(paths(get(s)) < 3.5e6, "{s}");
     }
     assert!(num(&ind["RMSE²·s"]) > 3e-4, "{ind:?}");
     assert!(num(&sobol["RMSE²·s"]) < 3e-4, "{sobol:?}");
@@ -706,6 +710,10 @@ fn the_appendix_statements_match_the_benchmarks() {
     says(
         "making-it-fast.md",
         "holds against the 64x64 reference for both samplers; per pixel at 256x256 only the fast engine's Sobol row reaches it",
+    );
+    says(
+        "making-it-fast.md",
+        "The speed target (3.5 M paths/s) is reached only by the fast engine",
     );
     let queries = table(&bench, "ray queries");
     assert_eq!(queries.len(), 2);
