@@ -105,6 +105,39 @@ pub(crate) fn nearest_child_next<const N: usize>(
     order[count - 1].0
 }
 
+/// Pushes every entered child (mask `entered`) on `stack`, in lane order:
+/// a shadow ray needs any hit, not the nearest, so the order is free.
+#[inline(always)]
+pub(crate) fn push_entered<const N: usize>(
+    mut entered: u32,
+    child: &[u32; N],
+    stack: &mut [(u32, f32)],
+    depth: &mut usize,
+) {
+    while entered != 0 {
+        let lane = entered.trailing_zeros() as usize;
+        entered &= entered - 1;
+        stack[*depth] = (child[lane], 0.0);
+        *depth += 1;
+    }
+}
+
+/// Pops `stack` down to the next subtree that can still hold a hit nearer
+/// than `t_best` (one whose box the ray enters no farther than that): its
+/// node, or `None` when none is left. The readable tree's `closest` spells
+/// this loop out; the fast engine's traversals share it.
+#[inline(always)]
+pub(crate) fn pop_nearer(stack: &[(u32, f32)], depth: &mut usize, t_best: f32) -> Option<u32> {
+    while *depth > 0 {
+        *depth -= 1;
+        let (next, t_near) = stack[*depth];
+        if t_near <= t_best {
+            return Some(next);
+        }
+    }
+    None
+}
+
 /// The nearest of a leaf's hit lanes (`hits`, with their t, u and v) and
 /// its lane; `Hit::triangle` is left 0. A later lane wins a tie.
 #[inline(always)]

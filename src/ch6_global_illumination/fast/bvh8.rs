@@ -19,7 +19,7 @@ use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch3_ray_triangle::watertight_fast::SoaTriangle;
 use crate::ch3_ray_triangle::wide_build::{
     any_checked, count_triangles, nearest_checked, nearest_child_next, nearest_lane, open_children,
-    triangles_under,
+    pop_nearer, push_entered, triangles_under,
 };
 
 use super::lanes::{Kernel, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
@@ -177,16 +177,9 @@ impl Bvh8 {
                     });
                 }
             }
-            loop {
-                if depth == 0 {
-                    return best;
-                }
-                depth -= 1;
-                let (next, t_near) = stack[depth];
-                if t_near <= t_best {
-                    at = next;
-                    break;
-                }
+            match pop_nearer(stack, &mut depth, t_best) {
+                Some(next) => at = next,
+                None => return best,
             }
         }
     }
@@ -229,13 +222,8 @@ impl Bvh8 {
         loop {
             if at & LEAF == 0 {
                 let node = &self.nodes[at as usize];
-                let (mut entered, _) = K::enter(r, node, t_max);
-                while entered != 0 {
-                    let lane = entered.trailing_zeros() as usize;
-                    entered &= entered - 1;
-                    stack[depth] = (node.child[lane], 0.0);
-                    depth += 1;
-                }
+                let (entered, _) = K::enter(r, node, t_max);
+                push_entered(entered, &node.child, stack, &mut depth);
             } else {
                 let l = (at & !LEAF) as usize;
                 let h = K::leaf(r, &self.leaves[l], t_max);

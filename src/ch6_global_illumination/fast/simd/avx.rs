@@ -13,7 +13,7 @@ use std::arch::x86_64::*;
 use super::super::bvh8::Bvh8;
 use super::super::lanes::{Hits8, Kernel, Leaf8, Node8, RayData, FAR_STRETCH, LEAF, W};
 use crate::ch3_ray_triangle::triangle::{gamma, Hit};
-use crate::ch3_ray_triangle::wide_build::nearest_child_next;
+use crate::ch3_ray_triangle::wide_build::{nearest_child_next, pop_nearer, push_entered};
 
 pub(super) struct Avx;
 
@@ -266,16 +266,9 @@ pub(super) fn closest(
                 }
             }
         }
-        loop {
-            if depth == 0 {
-                return best;
-            }
-            depth -= 1;
-            let (next, t_near) = stack[depth];
-            if t_near <= t_best {
-                at = next;
-                break;
-            }
+        match pop_nearer(stack, &mut depth, t_best) {
+            Some(next) => at = next,
+            None => return best,
         }
     }
 }
@@ -318,13 +311,8 @@ pub(super) fn occluded(bvh: &Bvh8, r: &RayData, t_max: f32, stack: &mut [(u32, f
     loop {
         if at & LEAF == 0 {
             let node = &bvh.nodes[at as usize];
-            let (mut entered, _) = enter_avx(r, node, t_max);
-            while entered != 0 {
-                let lane = entered.trailing_zeros() as usize;
-                entered &= entered - 1;
-                stack[depth] = (node.child[lane], 0.0);
-                depth += 1;
-            }
+            let (entered, _) = enter_avx(r, node, t_max);
+            push_entered(entered, &node.child, stack, &mut depth);
         } else {
             let l = (at & !LEAF) as usize;
             let f = front!(r, &bvh.leaves[l], t_max);
