@@ -31,6 +31,7 @@
 use glam::{Vec2, Vec3};
 
 use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::direct::Strategy;
 use crate::ch5_reflection::light::Light;
@@ -114,6 +115,11 @@ pub fn trace_paths<C: Contributions>(
     let mut hits: Vec<Interaction> = Vec::with_capacity(lanes.len());
     let mut shaded: Vec<u32> = Vec::with_capacity(lanes.len());
     let mut shadows: Vec<Shadow> = Vec::with_capacity(lanes.len());
+    // A round's rays and what the tree answers for them.
+    let mut rays: Vec<Ray> = Vec::with_capacity(lanes.len());
+    let mut found: Vec<Option<Hit>> = Vec::with_capacity(lanes.len());
+    let mut shadow_rays: Vec<(Ray, f32)> = Vec::with_capacity(lanes.len());
+    let mut blocked: Vec<bool> = Vec::with_capacity(lanes.len());
     let level = tree.level();
     let (mut input, mut o) = (Box::<In8>::default(), Box::<Out8>::default());
     // The paths still going (indices into `lanes`, which never move).
@@ -126,13 +132,16 @@ pub fn trace_paths<C: Contributions>(
         hits.clear();
         shaded.clear();
         let over_limit = k > settings.bounce_limit();
-        for &i in &live {
+        rays.clear();
+        rays.extend(live.iter().map(|&i| lanes[i as usize].ray));
+        super::simd::closest_all(level, tree, &rays, &mut found);
+        for (&i, hit) in live.iter().zip(&found) {
             let lane = &lanes[i as usize];
             let mut out = PathOut {
                 layers: &mut outs[lane.out as usize],
                 stats,
             };
-            let Some(it) = intersect(world, tree, &lane.ray) else {
+            let Some(it) = hit.map(|hit| interaction(world, hit)) else {
                 let sky = sky_emission(world, lane.ray.dir, &lane.path);
                 out.add_sky(&lane.path, lane.ray.dir, sky);
                 continue;
@@ -175,11 +184,18 @@ pub fn trace_paths<C: Contributions>(
             }
         }
         // 3. Shadow rays.
+        shadow_rays.clear();
+        shadow_rays.extend(shadows.iter().filter_map(|s| match s.test {
+            ShadowTest::Trace(ray, t_max) => Some((ray, t_max)),
+            _ => None,
+        }));
+        super::simd::occluded_all(level, tree, &shadow_rays, &mut blocked);
+        let mut traced = blocked.iter();
         for s in &shadows {
             let visible = match s.test {
                 ShadowTest::Visible => true,
                 ShadowTest::Blocked => false,
-                ShadowTest::Trace(ray, t_max) => !super::simd::occluded(level, tree, &ray, t_max),
+                ShadowTest::Trace(..) => !traced.next().copied().unwrap_or(true),
             };
             if visible {
                 let mut out = PathOut {
@@ -334,17 +350,17 @@ fn finish(
     true
 }
 
-/// `World::intersect` for a scene without SDFs, asking the tree directly.
+/// What `World::intersect` makes of a hit the tree found (a scene without
+/// SDFs).
 #[inline]
-fn intersect(world: &World, tree: &Bvh8, ray: &Ray) -> Option<Interaction> {
-    let hit = super::simd::closest(tree.level(), tree, ray, f32::INFINITY)?;
+fn interaction(world: &World, hit: Hit) -> Interaction {
     let k = hit.triangle as usize;
     let mesh = world.triangles.mesh[k] as usize;
-    Some(Interaction {
+    Interaction {
         t: hit.t,
         p: hit.point(world.triangles.tris[k]),
         n: world.normals[k],
         material: world.mesh_material[mesh],
         surface: Surface::Mesh(mesh),
-    })
+    }
 }

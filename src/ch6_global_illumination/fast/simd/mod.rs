@@ -56,6 +56,51 @@ pub fn occluded(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
     }
 }
 
+/// [`closest`] in (0, ∞) for each of a round's `rays`, `hits[i]` for
+/// `rays[i]` (`hits` is emptied first): one dispatch and one traversal
+/// stack for the whole round, and the loop compiled with `level`'s
+/// instructions, so the per-ray call and set-up costs stay out of it.
+pub fn closest_all(level: Level, bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option<Hit>>) {
+    hits.clear();
+    let stack = &mut vec![(0u32, 0f32); bvh.stack_size()];
+    match level {
+        // SAFETY: as in `closest`.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { closest_all_avx512(bvh, rays, stack, hits) },
+        // SAFETY: as in `closest`.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => unsafe { closest_all_avx2(bvh, rays, stack, hits) },
+        _ => {
+            for ray in rays {
+                let r = RayData::new(ray);
+                hits.push(bvh.closest_with::<Lanes>(&r, f32::INFINITY, stack));
+            }
+        }
+    }
+}
+
+/// [`occluded`] for each of a round's shadow rays `(ray, t_max)`,
+/// `blocked[i]` for `rays[i]` (`blocked` is emptied first), as
+/// [`closest_all`] does it.
+pub fn occluded_all(level: Level, bvh: &Bvh8, rays: &[(Ray, f32)], blocked: &mut Vec<bool>) {
+    blocked.clear();
+    let stack = &mut vec![(0u32, 0f32); bvh.stack_size()];
+    match level {
+        // SAFETY: as in `closest`.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { occluded_all_avx512(bvh, rays, stack, blocked) },
+        // SAFETY: as in `closest`.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => unsafe { occluded_all_avx2(bvh, rays, stack, blocked) },
+        _ => {
+            for (ray, t_max) in rays {
+                let r = RayData::new(ray);
+                blocked.push(bvh.occluded_with::<Lanes>(&r, *t_max, stack));
+            }
+        }
+    }
+}
+
 impl RayQueries for Bvh8 {
     fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         closest(self.level, self, ray, t_max)
@@ -246,3 +291,56 @@ unsafe fn occluded_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
 
 #[cfg(target_arch = "x86_64")]
 mod avx;
+
+// The round loops, each compiled with its level's features.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn closest_all_avx512(
+    bvh: &Bvh8,
+    rays: &[Ray],
+    stack: &mut [(u32, f32)],
+    hits: &mut Vec<Option<Hit>>,
+) {
+    for ray in rays {
+        hits.push(avx::closest(bvh, &RayData::new(ray), f32::INFINITY, stack));
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn closest_all_avx2(
+    bvh: &Bvh8,
+    rays: &[Ray],
+    stack: &mut [(u32, f32)],
+    hits: &mut Vec<Option<Hit>>,
+) {
+    for ray in rays {
+        hits.push(avx::closest(bvh, &RayData::new(ray), f32::INFINITY, stack));
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn occluded_all_avx512(
+    bvh: &Bvh8,
+    rays: &[(Ray, f32)],
+    stack: &mut [(u32, f32)],
+    blocked: &mut Vec<bool>,
+) {
+    for (ray, t_max) in rays {
+        blocked.push(avx::occluded(bvh, &RayData::new(ray), *t_max, stack));
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn occluded_all_avx2(
+    bvh: &Bvh8,
+    rays: &[(Ray, f32)],
+    stack: &mut [(u32, f32)],
+    blocked: &mut Vec<bool>,
+) {
+    for (ray, t_max) in rays {
+        blocked.push(avx::occluded(bvh, &RayData::new(ray), *t_max, stack));
+    }
+}
