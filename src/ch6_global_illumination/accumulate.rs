@@ -251,12 +251,15 @@ fn wave_row(
     for x0 in (0..sum.len()).step_by(chunk) {
         let x1 = (x0 + chunk).min(sum.len());
         let starts = || {
-            (x0..x1).flat_map(move |x| {
-                (first..first + count).map(move |s| {
-                    let (sampler, ray) = camera_sample(camera, sampler, seed, x, y, s);
-                    (ray, sampler)
-                })
-            })
+            let pixels = (x0..x1, y);
+            super::fast::wave::camera_starts(
+                camera,
+                tree.level(),
+                (sampler, seed),
+                pixels,
+                (first, count),
+            )
+            .into_iter()
         };
         let n = (x1 - x0) * per_pixel;
         if layers.is_empty() {

@@ -137,6 +137,12 @@ impl PathSampler {
         }
     }
 
+    /// Skips `n` numbers, as if they had been drawn (for a loop that drew
+    /// them for several samplers at once).
+    pub fn skip(&mut self, n: u64) {
+        self.dimension += n;
+    }
+
     /// Skips to the first dimension of the next group of four, so each
     /// bounce starts its numbers in a fresh Sobol group.
     #[inline]

@@ -30,6 +30,7 @@
 
 use glam::{Vec2, Vec3};
 
+use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch4_implicit_surfaces::hit::Surface;
@@ -37,11 +38,12 @@ use crate::ch5_reflection::direct::Strategy;
 use crate::ch5_reflection::light::Light;
 use crate::ch5_reflection::material::Bsdf;
 use crate::ch5_reflection::world::{Interaction, World};
+use crate::ch6_global_illumination::accumulate::camera_sample;
 use crate::ch6_global_illumination::integrator::{
     direct_light, sky_emission, surface_emission, Path, PathOut, PathSettings, PathStats,
 };
 use crate::ch6_global_illumination::layers::Contributions;
-use crate::ch6_global_illumination::sampler::PathSampler;
+use crate::ch6_global_illumination::sampler::{PathSampler, SamplerKind};
 use crate::ch6_global_illumination::vertex::Vertex;
 
 use super::bvh8::Bvh8;
@@ -363,4 +365,44 @@ fn interaction(world: &World, hit: Hit) -> Interaction {
         material: world.mesh_material[mesh],
         surface: Surface::Mesh(mesh),
     }
+}
+
+/// The camera rays and samplers of samples `first .. first + count` of
+/// pixels `xs` of row `y`, in that order: what `camera_sample` gives, with
+/// the pixel positions of eight Sobol samples drawn at once
+/// ([`sobol_group8_at`](super::simd::sobol_group8_at), the same bits).
+pub fn camera_starts(
+    camera: &Camera,
+    level: Level,
+    (kind, seed): (SamplerKind, u64),
+    (xs, y): (std::ops::Range<usize>, usize),
+    (first, count): (u32, u32),
+) -> Vec<(Ray, PathSampler)> {
+    let mut starts = Vec::with_capacity(xs.len() * count as usize);
+    for x in xs {
+        let pixel = (y * camera.width as usize + x) as u64;
+        let mut s = first;
+        while s < first + count {
+            let samplers: [PathSampler; L] =
+                std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
+            let index: [Option<u32>; L] = std::array::from_fn(|j| samplers[j].sobol_index());
+            if s + L as u32 > first + count || index.iter().any(Option::is_none) {
+                let (sampler, ray) = camera_sample(camera, kind, seed, x, y, s);
+                starts.push((ray, sampler));
+                s += 1;
+                continue;
+            }
+            let sample: [u32; L] = std::array::from_fn(|j| index[j].unwrap_or(0));
+            let scramble: [u64; L] = std::array::from_fn(|j| samplers[j].pixel_scramble());
+            let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
+            for (j, mut sampler) in samplers.into_iter().enumerate() {
+                // `jittered`: the pixel's corner plus the first two numbers.
+                let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
+                sampler.skip(2);
+                starts.push((camera.ray(raster), sampler));
+            }
+            s += L as u32;
+        }
+    }
+    starts
 }
