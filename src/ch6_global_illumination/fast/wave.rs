@@ -32,13 +32,13 @@ use glam::{Vec2, Vec3};
 
 use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::render::camera_sample;
 use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::direct::Strategy;
 use crate::ch5_reflection::light::Light;
 use crate::ch5_reflection::material::Bsdf;
 use crate::ch5_reflection::world::{Interaction, World};
-use crate::ch6_global_illumination::accumulate::camera_sample;
 use crate::ch6_global_illumination::integrator::{
     direct_light, sky_emission, surface_emission, Path, PathOut, PathSettings, PathStats,
 };
@@ -368,7 +368,8 @@ fn interaction(world: &World, hit: Hit) -> Interaction {
 }
 
 /// The camera rays and samplers of samples `first .. first + count` of
-/// pixels `xs` of row `y`, in that order: what `camera_sample` gives, with
+/// pixels `xs` of row `y`, in that order: what chapter 6's `camera_sample`
+/// gives (chapter 3's with chapter 6's sampler), with
 /// the pixel positions of eight Sobol samples drawn at once
 /// ([`sobol_group8_at`](super::simd::sobol_group8_at), the same bits).
 pub fn camera_starts(
@@ -387,7 +388,8 @@ pub fn camera_starts(
                 std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
             let index: [Option<u32>; L] = std::array::from_fn(|j| samplers[j].sobol_index());
             if s + L as u32 > first + count || index.iter().any(Option::is_none) {
-                let (sampler, ray) = camera_sample(camera, kind, seed, x, y, s);
+                let pixel_of = |pixel| PathSampler::new(kind, seed, pixel, s as u64);
+                let (sampler, ray) = camera_sample(camera, (x as u32, y as u32), pixel_of);
                 starts.push((ray, sampler));
                 s += 1;
                 continue;
