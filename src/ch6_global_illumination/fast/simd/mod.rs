@@ -292,55 +292,45 @@ unsafe fn occluded_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
 #[cfg(target_arch = "x86_64")]
 mod avx;
 
-// The round loops, each compiled with its level's features.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-unsafe fn closest_all_avx512(
-    bvh: &Bvh8,
-    rays: &[Ray],
-    stack: &mut [(u32, f32)],
-    hits: &mut Vec<Option<Hit>>,
-) {
-    for ray in rays {
-        hits.push(avx::closest(bvh, &RayData::new(ray), f32::INFINITY, stack));
-    }
+/// Defines the round loops of `closest_all` and `occluded_all` for one
+/// level's target features.
+macro_rules! round_loops {
+    ($closest:ident, $occluded:ident, $features:literal) => {
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = $features)]
+        unsafe fn $closest(
+            bvh: &Bvh8,
+            rays: &[Ray],
+            stack: &mut [(u32, f32)],
+            hits: &mut Vec<Option<Hit>>,
+        ) {
+            for ray in rays {
+                hits.push(avx::closest(bvh, &RayData::new(ray), f32::INFINITY, stack));
+            }
+        }
+
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = $features)]
+        unsafe fn $occluded(
+            bvh: &Bvh8,
+            rays: &[(Ray, f32)],
+            stack: &mut [(u32, f32)],
+            blocked: &mut Vec<bool>,
+        ) {
+            for (ray, t_max) in rays {
+                blocked.push(avx::occluded(bvh, &RayData::new(ray), *t_max, stack));
+            }
+        }
+    };
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-unsafe fn closest_all_avx2(
-    bvh: &Bvh8,
-    rays: &[Ray],
-    stack: &mut [(u32, f32)],
-    hits: &mut Vec<Option<Hit>>,
-) {
-    for ray in rays {
-        hits.push(avx::closest(bvh, &RayData::new(ray), f32::INFINITY, stack));
-    }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-unsafe fn occluded_all_avx512(
-    bvh: &Bvh8,
-    rays: &[(Ray, f32)],
-    stack: &mut [(u32, f32)],
-    blocked: &mut Vec<bool>,
-) {
-    for (ray, t_max) in rays {
-        blocked.push(avx::occluded(bvh, &RayData::new(ray), *t_max, stack));
-    }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-unsafe fn occluded_all_avx2(
-    bvh: &Bvh8,
-    rays: &[(Ray, f32)],
-    stack: &mut [(u32, f32)],
-    blocked: &mut Vec<bool>,
-) {
-    for (ray, t_max) in rays {
-        blocked.push(avx::occluded(bvh, &RayData::new(ray), *t_max, stack));
-    }
-}
+round_loops!(
+    closest_all_avx512,
+    occluded_all_avx512,
+    "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt"
+);
+round_loops!(
+    closest_all_avx2,
+    occluded_all_avx2,
+    "avx2,fma,bmi1,bmi2,lzcnt,popcnt"
+);
