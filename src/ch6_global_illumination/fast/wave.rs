@@ -369,7 +369,7 @@ fn interaction(world: &World, hit: Hit) -> Interaction {
 
 /// The camera rays and samplers of samples `first .. first + count` of
 /// pixels `xs` of row `y`, in that order: what chapter 6's `camera_sample`
-/// gives (chapter 3's with chapter 6's sampler), with
+/// gives (chapter 3's, which hands the closure this same pixel index), with
 /// the pixel positions of eight Sobol samples drawn at once
 /// ([`sobol_group8_at`](super::simd::sobol_group8_at), the same bits).
 pub fn camera_starts(
@@ -382,16 +382,27 @@ pub fn camera_starts(
     let mut starts = Vec::with_capacity(xs.len() * count as usize);
     for x in xs {
         let pixel = (y * camera.width as usize + x) as u64;
+        let one_by_one =
+            |sampler: PathSampler| camera_sample(camera, (x as u32, y as u32), |_| sampler);
         let mut s = first;
         while s < first + count {
-            let samplers: [PathSampler; L] =
-                std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
-            let index: [Option<u32>; L] = std::array::from_fn(|j| samplers[j].sobol_index());
-            if s + L as u32 > first + count || index.iter().any(Option::is_none) {
-                let pixel_of = |pixel| PathSampler::new(kind, seed, pixel, s as u64);
-                let (sampler, ray) = camera_sample(camera, (x as u32, y as u32), pixel_of);
+            if s + L as u32 > first + count {
+                // The last few samples of the pixel.
+                let (sampler, ray) = one_by_one(PathSampler::new(kind, seed, pixel, s as u64));
                 starts.push((ray, sampler));
                 s += 1;
+                continue;
+            }
+            let samplers: [PathSampler; L] =
+                std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
+            s += L as u32;
+            let index: [Option<u32>; L] = std::array::from_fn(|j| samplers[j].sobol_index());
+            if index.iter().any(Option::is_none) {
+                // Independent numbers, or Sobol indices past the tables.
+                for sampler in samplers {
+                    let (sampler, ray) = one_by_one(sampler);
+                    starts.push((ray, sampler));
+                }
                 continue;
             }
             let sample: [u32; L] = std::array::from_fn(|j| index[j].unwrap_or(0));
@@ -403,7 +414,6 @@ pub fn camera_starts(
                 sampler.skip(2);
                 starts.push((camera.ray(raster), sampler));
             }
-            s += L as u32;
         }
     }
     starts
