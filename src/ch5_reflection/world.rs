@@ -226,7 +226,6 @@ impl World {
     /// `dir`, started far enough off the surface not to hit it again:
     /// chapter 3's offset in ulps, plus a few marching ε when the scene has
     /// SDFs (a march that starts on the surface stops at once).
-    #[inline]
     pub fn spawn(&self, p: Vec3, n: Vec3, dir: Vec3) -> Option<Ray> {
         let side = if n.dot(dir) < 0.0 { -n } else { n };
         let mut origin = offset_origin(p, side);

@@ -127,13 +127,13 @@ impl PathSampler {
     /// once ([`super::fast::wave`]).
     pub fn eight_at(&self, first: u64) -> [f32; 8] {
         debug_assert!(first.is_multiple_of(4));
-        match self.kind {
-            SamplerKind::Sobol if self.sample < SOBOL_MAX_SAMPLES => {
+        match self.sobol_index() {
+            Some(_) => {
                 let a = sobol_group_by_table(self.sample, self.pixel_scramble, first / 4);
                 let b = sobol_group_by_table(self.sample, self.pixel_scramble, first / 4 + 1);
                 [a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]]
             }
-            _ => std::array::from_fn(|i| dimension_random(self.prefix, first + i as u64)),
+            None => std::array::from_fn(|i| dimension_random(self.prefix, first + i as u64)),
         }
     }
 

@@ -220,15 +220,12 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
     let first = 4 + 8 * k as u64;
     let lane = |j: usize| &lanes[ids[if j < ids.len() { j } else { 0 }] as usize];
     let mut u = [[0.0; L]; 8];
-    let index: [Option<u32>; L] = std::array::from_fn(|j| lane(j).sampler.sobol_index());
-    if index.iter().all(Option::is_some) {
-        let sample: [u32; L] = std::array::from_fn(|j| index[j].unwrap_or(0));
-        let scramble: [u64; L] = std::array::from_fn(|j| lane(j).sampler.pixel_scramble());
+    if let Some((sample, scramble)) = sobol_lanes(|j| &lane(j).sampler) {
         for half in 0..2 {
             let g = super::simd::sobol_group8_at(level, &sample, &scramble, first / 4 + half);
             u[4 * half as usize..4 * half as usize + 4].copy_from_slice(&g);
         }
-    } else if index.iter().all(Option::is_none) {
+    } else if (0..L).all(|j| lane(j).sampler.independent_prefix().is_some()) {
         let prefix: [u64; L] =
             std::array::from_fn(|j| lane(j).sampler.independent_prefix().unwrap_or(0));
         u = super::simd::independent8_at(level, &prefix, first);
@@ -242,6 +239,17 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
         }
     }
     u
+}
+
+/// The sample indices and pixel scrambles of eight samplers (`sampler(j)`
+/// for lane j), when all of them draw Sobol points from the tables: what
+/// [`sobol_group8_at`](super::simd::sobol_group8_at) needs to draw for them.
+fn sobol_lanes<'a>(sampler: impl Fn(usize) -> &'a PathSampler) -> Option<([u32; L], [u64; L])> {
+    let index: [Option<u32>; L] = std::array::from_fn(|j| sampler(j).sobol_index());
+    index.iter().all(Option::is_some).then(|| {
+        let sample = std::array::from_fn(|j| index[j].unwrap_or(0));
+        (sample, std::array::from_fn(|j| sampler(j).pixel_scramble()))
+    })
 }
 
 /// Reads lanes `ids` (with their hits) into the eight-lane arrays `x`,
@@ -396,17 +404,14 @@ pub fn camera_starts(
             let samplers: [PathSampler; L] =
                 std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
             s += L as u32;
-            let index: [Option<u32>; L] = std::array::from_fn(|j| samplers[j].sobol_index());
-            if index.iter().any(Option::is_none) {
+            let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
                 // Independent numbers, or Sobol indices past the tables.
                 for sampler in samplers {
                     let (sampler, ray) = one_by_one(sampler);
                     starts.push((ray, sampler));
                 }
                 continue;
-            }
-            let sample: [u32; L] = std::array::from_fn(|j| index[j].unwrap_or(0));
-            let scramble: [u64; L] = std::array::from_fn(|j| samplers[j].pixel_scramble());
+            };
             let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
             for (j, mut sampler) in samplers.into_iter().enumerate() {
                 // `jittered`: the pixel's corner plus the first two numbers.
