@@ -12,6 +12,7 @@ use std::arch::x86_64::*;
 
 use super::super::bvh8::Bvh8;
 use super::super::lanes::{Hits8, Kernel, Leaf8, Node8, RayData, FAR_STRETCH, LEAF, W};
+use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{gamma, Hit};
 use crate::ch3_ray_triangle::wide_build::{nearest_child_next, pop_nearer, push_entered};
 
@@ -33,11 +34,40 @@ fn store(v: __m256) -> [f32; W] {
     a
 }
 
+/// A ray's numbers as the tests use them, each in all eight lanes: built
+/// once per query ([`splat!`]) so that the loop reads them from registers.
+struct Splat {
+    /// Origin and 1/direction per axis, and whether the direction is
+    /// negative (the slab test).
+    o: [__m256; 3],
+    inv: [__m256; 3],
+    negative: [bool; 3],
+    /// The watertight permutation, the permuted origin and the shear.
+    k: [usize; 3],
+    ko: [__m256; 3],
+    s: [__m256; 3],
+}
+
+/// The [`Splat`] of a [`RayData`] (a macro for the reason [`front!`] is).
+macro_rules! splat {
+    ($r:expr) => {{
+        let r: &RayData = $r;
+        Splat {
+            o: r.o.map(|x| _mm256_set1_ps(x)),
+            inv: r.inv.map(|x| _mm256_set1_ps(x)),
+            negative: r.negative,
+            k: r.k,
+            ko: r.ko.map(|x| _mm256_set1_ps(x)),
+            s: r.s.map(|x| _mm256_set1_ps(x)),
+        }
+    }};
+}
+
 impl Kernel for Avx {
     #[inline(always)]
     fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
         // SAFETY: see the module.
-        unsafe { enter_avx(r, node, t_max) }
+        unsafe { enter_avx(&splat_avx(r), node, t_max) }
     }
 
     #[inline(always)]
@@ -47,9 +77,16 @@ impl Kernel for Avx {
     }
 }
 
+/// [`splat!`] as a function, for the kernel's one-node calls.
 #[target_feature(enable = "avx2,fma")]
 #[inline]
-fn enter_avx(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
+fn splat_avx(r: &RayData) -> Splat {
+    splat!(r)
+}
+
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+fn enter_avx(r: &Splat, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
     {
         let mut t_near = _mm256_setzero_ps();
         let mut t_far = _mm256_set1_ps(t_max);
@@ -58,7 +95,7 @@ fn enter_avx(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
                 true => (&node.max[axis], &node.min[axis]),
                 false => (&node.min[axis], &node.max[axis]),
             };
-            let (o, inv) = (_mm256_set1_ps(r.o[axis]), _mm256_set1_ps(r.inv[axis]));
+            let (o, inv) = (r.o[axis], r.inv[axis]);
             t_near = _mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(load(near), o), inv), t_near);
             t_far = _mm256_min_ps(_mm256_mul_ps(_mm256_sub_ps(load(far), o), inv), t_far);
         }
@@ -75,10 +112,10 @@ fn enter_avx(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
 /// reliably inlined, and then its results go through memory.
 macro_rules! front {
     ($r:expr, $leaf:expr, $t_max:expr) => {{
-        let (r, leaf, t_max): (&RayData, &Leaf8, f32) = ($r, $leaf, $t_max);
+        let (r, leaf, t_max): (&Splat, &Leaf8, f32) = ($r, $leaf, $t_max);
         let (px, py, pz) = (&leaf.p[r.k[0]], &leaf.p[r.k[1]], &leaf.p[r.k[2]]);
-        let [ox, oy, oz] = r.ko.map(|x| _mm256_set1_ps(x));
-        let [sx, sy, sz] = r.s.map(|x| _mm256_set1_ps(x));
+        let [ox, oy, oz] = r.ko;
+        let [sx, sy, sz] = r.s;
         let (add, sub, mul) = (_mm256_add_ps, _mm256_sub_ps, _mm256_mul_ps);
         let zero = _mm256_setzero_ps();
         let z = [0, 1, 2].map(|j| sub(load(&pz[j]), oz));
@@ -200,7 +237,7 @@ fn abs(v: __m256) -> __m256 {
 #[target_feature(enable = "avx2,fma")]
 #[inline]
 fn leaf_avx(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
-    let f = front!(r, leaf, t_max);
+    let f = front!(&splat!(r), leaf, t_max);
     let mut h = Hits8 {
         hit: 0,
         check: f.zeros,
@@ -227,12 +264,9 @@ fn leaf_avx(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
 /// the same hit as the generic loop, bit for bit.
 #[target_feature(enable = "avx2,fma")]
 #[inline]
-pub(super) fn closest(
-    bvh: &Bvh8,
-    r: &RayData,
-    t_max: f32,
-    stack: &mut [(u32, f32)],
-) -> Option<Hit> {
+pub(super) fn closest(bvh: &Bvh8, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)]) -> Option<Hit> {
+    // The fallback builds its own RayData, so this one stays in registers.
+    let sp = &splat!(&RayData::new(ray));
     let mut best: Option<Hit> = None;
     let mut t_best = t_max;
     let mut depth = 0;
@@ -240,18 +274,18 @@ pub(super) fn closest(
     loop {
         if at & LEAF == 0 {
             let node = &bvh.nodes[at as usize];
-            let (entered, t_near) = enter_avx(r, node, t_best);
+            let (entered, t_near) = enter_avx(sp, node, t_best);
             if entered != 0 {
                 at = nearest_child_next(entered, &node.child, &t_near, stack, &mut depth);
                 continue;
             }
         } else {
             let l = (at & !LEAF) as usize;
-            let f = front!(r, &bvh.leaves[l], t_best);
+            let f = front!(sp, &bvh.leaves[l], t_best);
             if f.candidates != 0 || f.zeros != 0 {
                 let (t, inv_det, hit, check) = trust!(&f);
                 let found = if check != 0 {
-                    bvh.leaf_closest::<Avx>(r, l, t_best)
+                    bvh.leaf_closest::<Avx>(&RayData::new(ray), l, t_best)
                 } else if hit != 0 {
                     Some(nearest(t, inv_det, &f, hit))
                 } else {
@@ -305,20 +339,24 @@ fn nearest(t: __m256, inv_det: __m256, f: &Front, hit: u32) -> (Hit, usize) {
 /// its first half where no lane can hit.
 #[target_feature(enable = "avx2,fma")]
 #[inline]
-pub(super) fn occluded(bvh: &Bvh8, r: &RayData, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
+pub(super) fn occluded(bvh: &Bvh8, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
+    // The fallback builds its own RayData, so this one stays in registers.
+    let sp = &splat!(&RayData::new(ray));
     let mut depth = 0;
     let mut at = bvh.root;
     loop {
         if at & LEAF == 0 {
             let node = &bvh.nodes[at as usize];
-            let (entered, _) = enter_avx(r, node, t_max);
+            let (entered, _) = enter_avx(sp, node, t_max);
             push_entered(entered, &node.child, stack, &mut depth);
         } else {
             let l = (at & !LEAF) as usize;
-            let f = front!(r, &bvh.leaves[l], t_max);
+            let f = front!(sp, &bvh.leaves[l], t_max);
             if f.candidates != 0 || f.zeros != 0 {
                 let (_, _, hit, check) = trust!(&f);
-                if hit != 0 || (check != 0 && bvh.leaf_any_checked(r, l, check, t_max)) {
+                if hit != 0
+                    || (check != 0 && bvh.leaf_any_checked(&RayData::new(ray), l, check, t_max))
+                {
                     return true;
                 }
             }

@@ -230,13 +230,12 @@ unsafe fn independent8_avx2(prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
 const SMALL_STACK: usize = 16;
 const ON_STACK: usize = 64;
 
-/// Runs `$query` with `$r` the ray's data and `$stack` a traversal stack
-/// big enough for `$bvh`. (A macro, not a helper taking a closure: a
+/// Runs `$query` with `$stack` a traversal stack big enough for `$bvh`. (A macro, not a helper taking a closure: a
 /// closure is compiled without the AVX features of its caller, and the
 /// kernels inside it would become calls.)
 macro_rules! with_stack {
-    ($bvh:expr, $ray:expr, |$r:ident, $stack:ident| $query:expr) => {{
-        let ($r, n) = (RayData::new($ray), $bvh.stack_size());
+    ($bvh:expr, |$stack:ident| $query:expr) => {{
+        let n = $bvh.stack_size();
         if n <= SMALL_STACK {
             let $stack = &mut [(0u32, 0f32); SMALL_STACK];
             $query
@@ -252,13 +251,14 @@ macro_rules! with_stack {
 
 #[inline(always)]
 fn closest_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    with_stack!(bvh, ray, |r, stack| bvh.closest_with::<K>(&r, t_max, stack))
+    let r = RayData::new(ray);
+    with_stack!(bvh, |stack| bvh.closest_with::<K>(&r, t_max, stack))
 }
 
 #[inline(always)]
 fn occluded_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    with_stack!(bvh, ray, |r, stack| bvh
-        .occluded_with::<K>(&r, t_max, stack))
+    let r = RayData::new(ray);
+    with_stack!(bvh, |stack| bvh.occluded_with::<K>(&r, t_max, stack))
 }
 
 // The AVX entry points run the traversals of `avx`, which keep the leaf
@@ -268,25 +268,25 @@ fn occluded_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn closest_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    with_stack!(bvh, ray, |r, stack| avx::closest(bvh, &r, t_max, stack))
+    with_stack!(bvh, |stack| avx::closest(bvh, ray, t_max, stack))
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn closest_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    with_stack!(bvh, ray, |r, stack| avx::closest(bvh, &r, t_max, stack))
+    with_stack!(bvh, |stack| avx::closest(bvh, ray, t_max, stack))
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn occluded_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    with_stack!(bvh, ray, |r, stack| avx::occluded(bvh, &r, t_max, stack))
+    with_stack!(bvh, |stack| avx::occluded(bvh, ray, t_max, stack))
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn occluded_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    with_stack!(bvh, ray, |r, stack| avx::occluded(bvh, &r, t_max, stack))
+    with_stack!(bvh, |stack| avx::occluded(bvh, ray, t_max, stack))
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -305,7 +305,7 @@ macro_rules! round_loops {
             hits: &mut Vec<Option<Hit>>,
         ) {
             for ray in rays {
-                hits.push(avx::closest(bvh, &RayData::new(ray), f32::INFINITY, stack));
+                hits.push(avx::closest(bvh, ray, f32::INFINITY, stack));
             }
         }
 
@@ -318,7 +318,7 @@ macro_rules! round_loops {
             blocked: &mut Vec<bool>,
         ) {
             for (ray, t_max) in rays {
-                blocked.push(avx::occluded(bvh, &RayData::new(ray), *t_max, stack));
+                blocked.push(avx::occluded(bvh, ray, *t_max, stack));
             }
         }
     };
