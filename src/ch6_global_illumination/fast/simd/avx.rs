@@ -261,10 +261,18 @@ fn leaf_avx(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
 /// registers: a leaf's nearest hit is found by a vector minimum (the last
 /// lane among equals, as `nearest_lane` picks), and only its t, u and v
 /// leave the registers. The same nodes and leaves in the same order, so
-/// the same hit as the generic loop, bit for bit.
+/// the same hit as the generic loop, bit for bit, written to `out` (a
+/// returned one would be stored piecewise and read back whole, stalling
+/// on store forwarding).
 #[target_feature(enable = "avx2,fma")]
 #[inline]
-pub(super) fn closest(bvh: &Bvh8, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)]) -> Option<Hit> {
+pub(super) fn closest(
+    bvh: &Bvh8,
+    ray: &Ray,
+    t_max: f32,
+    stack: &mut [(u32, f32)],
+    out: &mut Option<Hit>,
+) {
     // The fallback builds its own RayData, so this one stays in registers.
     let sp = &splat!(&RayData::new(ray));
     let mut best: Option<Hit> = None;
@@ -302,7 +310,10 @@ pub(super) fn closest(bvh: &Bvh8, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)
         }
         match pop_nearer(stack, &mut depth, t_best) {
             Some(next) => at = next,
-            None => return best,
+            None => {
+                *out = best;
+                return;
+            }
         }
     }
 }

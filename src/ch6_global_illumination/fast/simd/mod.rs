@@ -268,13 +268,17 @@ fn occluded_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn closest_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    with_stack!(bvh, |stack| avx::closest(bvh, ray, t_max, stack))
+    let mut hit = None;
+    with_stack!(bvh, |stack| avx::closest(bvh, ray, t_max, stack, &mut hit));
+    hit
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn closest_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    with_stack!(bvh, |stack| avx::closest(bvh, ray, t_max, stack))
+    let mut hit = None;
+    with_stack!(bvh, |stack| avx::closest(bvh, ray, t_max, stack, &mut hit));
+    hit
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -304,8 +308,9 @@ macro_rules! round_loops {
             stack: &mut [(u32, f32)],
             hits: &mut Vec<Option<Hit>>,
         ) {
-            for ray in rays {
-                hits.push(avx::closest(bvh, ray, f32::INFINITY, stack));
+            hits.resize(rays.len(), None);
+            for (ray, hit) in rays.iter().zip(hits.iter_mut()) {
+                avx::closest(bvh, ray, f32::INFINITY, stack, hit);
             }
         }
 
