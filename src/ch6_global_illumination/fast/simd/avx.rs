@@ -130,37 +130,32 @@ macro_rules! front {
             _mm256_cmp_ps::<_CMP_EQ_OQ>(e1, zero),
             _mm256_cmp_ps::<_CMP_EQ_OQ>(e2, zero),
         );
-        let neg = or3(
-            _mm256_cmp_ps::<_CMP_LT_OQ>(e0, zero),
-            _mm256_cmp_ps::<_CMP_LT_OQ>(e1, zero),
-            _mm256_cmp_ps::<_CMP_LT_OQ>(e2, zero),
-        );
-        let pos = or3(
-            _mm256_cmp_ps::<_CMP_GT_OQ>(e0, zero),
-            _mm256_cmp_ps::<_CMP_GT_OQ>(e1, zero),
-            _mm256_cmp_ps::<_CMP_GT_OQ>(e2, zero),
+        // Edge functions of both signs: no hit. Where one is not finite,
+        // det is not either and `finite` below rejects the lane, so the
+        // minimum and maximum answer exactly as the six comparisons of
+        // the lane loops do.
+        let (min, max) = (_mm256_min_ps, _mm256_max_ps);
+        let mixed = _mm256_and_ps(
+            _mm256_cmp_ps::<_CMP_LT_OQ>(min(min(e0, e1), e2), zero),
+            _mm256_cmp_ps::<_CMP_GT_OQ>(max(max(e0, e1), e2), zero),
         );
         let det = add(add(e0, e1), e2);
         let zs = z.map(|zj| mul(zj, sz));
         let ts = add(add(mul(e0, zs[0]), mul(e1, zs[1])), mul(e2, zs[2]));
-        let (lo, hi) = (mul(zero, det), mul(_mm256_set1_ps(t_max), det));
+        // The lane loops' two cases (det < 0 and det > 0) as one: with
+        // det's sign taken off det and ts (exact), 0 < ts <= t_max det.
+        let sign = _mm256_and_ps(det, _mm256_set1_ps(-0.0));
+        let (abs_det, ts_pos) = (_mm256_xor_ps(det, sign), _mm256_xor_ps(ts, sign));
         let and = _mm256_and_ps;
-        let in_neg = and(
+        let inside = and(
             and(
-                _mm256_cmp_ps::<_CMP_LT_OQ>(det, zero),
-                _mm256_cmp_ps::<_CMP_LT_OQ>(ts, lo),
+                _mm256_cmp_ps::<_CMP_GT_OQ>(abs_det, zero),
+                _mm256_cmp_ps::<_CMP_GT_OQ>(ts_pos, zero),
             ),
-            _mm256_cmp_ps::<_CMP_GE_OQ>(ts, hi),
+            _mm256_cmp_ps::<_CMP_LE_OQ>(ts_pos, mul(_mm256_set1_ps(t_max), abs_det)),
         );
-        let in_pos = and(
-            and(
-                _mm256_cmp_ps::<_CMP_GT_OQ>(det, zero),
-                _mm256_cmp_ps::<_CMP_GT_OQ>(ts, lo),
-            ),
-            _mm256_cmp_ps::<_CMP_LE_OQ>(ts, hi),
-        );
-        let finite = _mm256_cmp_ps::<_CMP_LT_OQ>(abs(det), _mm256_set1_ps(f32::INFINITY));
-        let candidate = _mm256_andnot_ps(and(neg, pos), and(finite, _mm256_or_ps(in_neg, in_pos)));
+        let finite = _mm256_cmp_ps::<_CMP_LT_OQ>(abs_det, _mm256_set1_ps(f32::INFINITY));
+        let candidate = _mm256_andnot_ps(mixed, and(finite, inside));
         Front {
             x,
             y,
