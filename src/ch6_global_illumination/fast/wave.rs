@@ -123,6 +123,7 @@ pub fn trace_paths<C: Contributions>(
     let mut shadow_rays: Vec<(Ray, f32)> = Vec::with_capacity(lanes.len());
     let mut blocked: Vec<bool> = Vec::with_capacity(lanes.len());
     let level = tree.level();
+    let emissive: Vec<bool> = world.materials.iter().map(|m| m.is_emissive()).collect();
     let (mut input, mut o) = (Box::<In8>::default(), Box::<Out8>::default());
     // The paths still going (indices into `lanes`, which never move).
     let mut live: Vec<u32> = (0..lanes.len() as u32).collect();
@@ -148,7 +149,11 @@ pub fn trace_paths<C: Contributions>(
                 out.add_sky(&lane.path, lane.ray.dir, sky);
                 continue;
             };
-            let emitted = surface_emission(world, &it, -lane.ray.dir, &lane.path);
+            // Most surfaces emit nothing: no call to find that out.
+            let emitted = match emissive[it.material] {
+                true => surface_emission(world, &it, -lane.ray.dir, &lane.path),
+                false => None,
+            };
             out.add_emitted(&lane.path, &it, emitted);
             if over_limit {
                 out.stats.cut += u64::from(settings.max_bounces.is_none());
