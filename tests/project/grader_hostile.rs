@@ -63,7 +63,7 @@ fn hostile_files() -> Vec<(&'static str, &'static str, String)> {
             "edge_function",
             "use glam::Vec2;\n\
              pub fn edge_function(a: Vec2, b: Vec2, p: Vec2) -> f32 {\n\
-             let v = vec![1u8; 16 << 30];\n\
+             let v = std::hint::black_box(vec![1u8; 16 << 30]);\n\
              v[v.len() / 2] as f32\n}\n"
                 .into(),
         ),
