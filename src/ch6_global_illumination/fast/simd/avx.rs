@@ -252,67 +252,6 @@ fn leaf_avx(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
     h
 }
 
-/// [`Bvh8::closest_with`] with these kernels, the leaf test kept in
-/// registers: a leaf's nearest hit is found by a vector minimum (the last
-/// lane among equals, as `nearest_lane` picks), and only its t, u and v
-/// leave the registers. The same nodes and leaves in the same order, so
-/// the same hit as the generic loop, bit for bit, written to `out` (a
-/// returned one would be stored piecewise and read back whole, stalling
-/// on store forwarding).
-#[target_feature(enable = "avx2,fma")]
-#[inline]
-pub(super) fn closest(
-    bvh: &Bvh8,
-    ray: &Ray,
-    t_max: f32,
-    stack: &mut [(u32, f32)],
-    out: &mut Option<Hit>,
-) {
-    // The fallback builds its own RayData, so this one stays in registers.
-    let sp = &splat!(&RayData::new(ray));
-    let mut best: Option<Hit> = None;
-    let mut t_best = t_max;
-    let mut depth = 0;
-    let mut at = bvh.root;
-    loop {
-        if at & LEAF == 0 {
-            let node = &bvh.nodes[at as usize];
-            let (entered, t_near) = enter_avx(sp, node, t_best);
-            if entered != 0 {
-                at = nearest_child_next(entered, &node.child, &t_near, stack, &mut depth);
-                continue;
-            }
-        } else {
-            let l = (at & !LEAF) as usize;
-            let f = front!(sp, &bvh.leaves[l], t_best);
-            if f.candidates != 0 || f.zeros != 0 {
-                let (t, inv_det, hit, check) = trust!(&f);
-                let found = if check != 0 {
-                    bvh.leaf_closest::<Avx>(&RayData::new(ray), l, t_best)
-                } else if hit != 0 {
-                    Some(nearest(t, inv_det, &f, hit))
-                } else {
-                    None
-                };
-                if let Some((hit, lane)) = found {
-                    t_best = hit.t;
-                    best = Some(Hit {
-                        triangle: bvh.original[l * W + lane],
-                        ..hit
-                    });
-                }
-            }
-        }
-        match pop_nearer(stack, &mut depth, t_best) {
-            Some(next) => at = next,
-            None => {
-                *out = best;
-                return;
-            }
-        }
-    }
-}
-
 /// The nearest of the lanes `hit` (at least one) and its lane: the
 /// smallest t, and of equal ones the last lane.
 #[target_feature(enable = "avx2,fma")]
@@ -341,36 +280,125 @@ fn nearest(t: __m256, inv_det: __m256, f: &Front, hit: u32) -> (Hit, usize) {
     (hit, lane)
 }
 
-/// [`Bvh8::occluded_with`] with these kernels, the leaf test stopping at
-/// its first half where no lane can hit.
-#[target_feature(enable = "avx2,fma")]
-#[inline]
-pub(super) fn occluded(bvh: &Bvh8, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
-    // The fallback builds its own RayData, so this one stays in registers.
-    let sp = &splat!(&RayData::new(ray));
-    let mut depth = 0;
-    let mut at = bvh.root;
-    loop {
-        if at & LEAF == 0 {
-            let node = &bvh.nodes[at as usize];
-            let (entered, _) = enter_avx(sp, node, t_max);
-            push_entered(entered, &node.child, stack, &mut depth);
-        } else {
-            let l = (at & !LEAF) as usize;
-            let f = front!(sp, &bvh.leaves[l], t_max);
-            if f.candidates != 0 || f.zeros != 0 {
-                let (_, _, hit, check) = trust!(&f);
-                if hit != 0
-                    || (check != 0 && bvh.leaf_any_checked(&RayData::new(ray), l, check, t_max))
-                {
-                    return true;
+/// The closest-hit and shadow traversals below, compiled with the
+/// instructions `$features` allows: once for AVX2 ([`v2`]) and once for
+/// AVX-512 ([`v512`]), where the compiler has 32 vector registers and mask
+/// registers for the same intrinsics (measured faster; the book's
+/// appendix has the number). The helpers they call are inlined and
+/// compiled with the same features.
+macro_rules! traversals {
+    ($features:literal) => {
+        /// [`Bvh8::closest_with`] with these kernels, the leaf test kept in
+        /// registers: a leaf's nearest hit is found by a vector minimum (the last
+        /// lane among equals, as `nearest_lane` picks), and only its t, u and v
+        /// leave the registers. The same nodes and leaves in the same order, so
+        /// the same hit as the generic loop, bit for bit, written to `out` (a
+        /// returned one would be stored piecewise and read back whole, stalling
+        /// on store forwarding).
+        #[target_feature(enable = $features)]
+        #[inline]
+        pub(in super::super) fn closest(
+            bvh: &Bvh8,
+            ray: &Ray,
+            t_max: f32,
+            stack: &mut [(u32, f32)],
+            out: &mut Option<Hit>,
+        ) {
+            // The fallback builds its own RayData, so this one stays in registers.
+            let sp = &splat!(&RayData::new(ray));
+            let mut best: Option<Hit> = None;
+            let mut t_best = t_max;
+            let mut depth = 0;
+            let mut at = bvh.root;
+            loop {
+                if at & LEAF == 0 {
+                    let node = &bvh.nodes[at as usize];
+                    let (entered, t_near) = enter_avx(sp, node, t_best);
+                    if entered != 0 {
+                        at = nearest_child_next(entered, &node.child, &t_near, stack, &mut depth);
+                        continue;
+                    }
+                } else {
+                    let l = (at & !LEAF) as usize;
+                    let f = front!(sp, &bvh.leaves[l], t_best);
+                    if f.candidates != 0 || f.zeros != 0 {
+                        let (t, inv_det, hit, check) = trust!(&f);
+                        let found = if check != 0 {
+                            bvh.leaf_closest::<super::Avx>(&RayData::new(ray), l, t_best)
+                        } else if hit != 0 {
+                            Some(nearest(t, inv_det, &f, hit))
+                        } else {
+                            None
+                        };
+                        if let Some((hit, lane)) = found {
+                            t_best = hit.t;
+                            best = Some(Hit {
+                                triangle: bvh.original[l * W + lane],
+                                ..hit
+                            });
+                        }
+                    }
+                }
+                match pop_nearer(stack, &mut depth, t_best) {
+                    Some(next) => at = next,
+                    None => {
+                        *out = best;
+                        return;
+                    }
                 }
             }
         }
-        if depth == 0 {
-            return false;
+
+        /// [`Bvh8::occluded_with`] with these kernels, the leaf test stopping at
+        /// its first half where no lane can hit.
+        #[target_feature(enable = $features)]
+        #[inline]
+        pub(in super::super) fn occluded(
+            bvh: &Bvh8,
+            ray: &Ray,
+            t_max: f32,
+            stack: &mut [(u32, f32)],
+        ) -> bool {
+            // The fallback builds its own RayData, so this one stays in registers.
+            let sp = &splat!(&RayData::new(ray));
+            let mut depth = 0;
+            let mut at = bvh.root;
+            loop {
+                if at & LEAF == 0 {
+                    let node = &bvh.nodes[at as usize];
+                    let (entered, _) = enter_avx(sp, node, t_max);
+                    push_entered(entered, &node.child, stack, &mut depth);
+                } else {
+                    let l = (at & !LEAF) as usize;
+                    let f = front!(sp, &bvh.leaves[l], t_max);
+                    if f.candidates != 0 || f.zeros != 0 {
+                        let (_, _, hit, check) = trust!(&f);
+                        if hit != 0
+                            || (check != 0
+                                && bvh.leaf_any_checked(&RayData::new(ray), l, check, t_max))
+                        {
+                            return true;
+                        }
+                    }
+                }
+                if depth == 0 {
+                    return false;
+                }
+                depth -= 1;
+                at = stack[depth].0;
+            }
         }
-        depth -= 1;
-        at = stack[depth].0;
-    }
+    };
+}
+
+/// The traversals for CPUs with AVX2.
+pub(super) mod v2 {
+    use super::*;
+    traversals!("avx2,fma");
+}
+
+/// The traversals for CPUs with AVX-512 (the same bits).
+pub(super) mod v512 {
+    use super::*;
+    traversals!("avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt");
 }

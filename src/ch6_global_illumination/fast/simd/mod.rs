@@ -230,9 +230,10 @@ unsafe fn independent8_avx2(prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
 const SMALL_STACK: usize = 16;
 const ON_STACK: usize = 64;
 
-/// Runs `$query` with `$stack` a traversal stack big enough for `$bvh`. (A macro, not a helper taking a closure: a
-/// closure is compiled without the AVX features of its caller, and the
-/// kernels inside it would become calls.)
+/// Runs `$query` with `$stack` a traversal stack big enough for `$bvh`.
+/// (A macro, not a helper taking a closure: a closure is compiled
+/// without the AVX features of its caller, and the kernels inside it
+/// would become calls.)
 macro_rules! with_stack {
     ($bvh:expr, |$stack:ident| $query:expr) => {{
         let n = $bvh.stack_size();
@@ -269,7 +270,9 @@ fn occluded_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
 #[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn closest_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
     let mut hit = None;
-    with_stack!(bvh, |stack| avx::closest(bvh, ray, t_max, stack, &mut hit));
+    with_stack!(bvh, |stack| avx::v512::closest(
+        bvh, ray, t_max, stack, &mut hit
+    ));
     hit
 }
 
@@ -277,20 +280,22 @@ unsafe fn closest_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
 #[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn closest_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
     let mut hit = None;
-    with_stack!(bvh, |stack| avx::closest(bvh, ray, t_max, stack, &mut hit));
+    with_stack!(bvh, |stack| avx::v2::closest(
+        bvh, ray, t_max, stack, &mut hit
+    ));
     hit
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn occluded_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    with_stack!(bvh, |stack| avx::occluded(bvh, ray, t_max, stack))
+    with_stack!(bvh, |stack| avx::v512::occluded(bvh, ray, t_max, stack))
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn occluded_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    with_stack!(bvh, |stack| avx::occluded(bvh, ray, t_max, stack))
+    with_stack!(bvh, |stack| avx::v2::occluded(bvh, ray, t_max, stack))
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -299,7 +304,7 @@ mod avx;
 /// Defines the round loops of `closest_all` and `occluded_all` for one
 /// level's target features.
 macro_rules! round_loops {
-    ($closest:ident, $occluded:ident, $features:literal) => {
+    ($closest:ident, $occluded:ident, $avx:ident, $features:literal) => {
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = $features)]
         unsafe fn $closest(
@@ -310,7 +315,7 @@ macro_rules! round_loops {
         ) {
             hits.resize(rays.len(), None);
             for (ray, hit) in rays.iter().zip(hits.iter_mut()) {
-                avx::closest(bvh, ray, f32::INFINITY, stack, hit);
+                avx::$avx::closest(bvh, ray, f32::INFINITY, stack, hit);
             }
         }
 
@@ -323,7 +328,7 @@ macro_rules! round_loops {
             blocked: &mut Vec<bool>,
         ) {
             for (ray, t_max) in rays {
-                blocked.push(avx::occluded(bvh, ray, *t_max, stack));
+                blocked.push(avx::$avx::occluded(bvh, ray, *t_max, stack));
             }
         }
     };
@@ -332,10 +337,12 @@ macro_rules! round_loops {
 round_loops!(
     closest_all_avx512,
     occluded_all_avx512,
+    v512,
     "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt"
 );
 round_loops!(
     closest_all_avx2,
     occluded_all_avx2,
+    v2,
     "avx2,fma,bmi1,bmi2,lzcnt,popcnt"
 );
