@@ -31,9 +31,15 @@ impl Level {
         {
             match self {
                 Level::Portable => true,
+                // Everything the AVX2 functions enable (every AVX2 CPU
+                // has the bit-manipulation ones; checked all the same).
                 Level::Avx2 => {
                     std::arch::is_x86_feature_detected!("avx2")
                         && std::arch::is_x86_feature_detected!("fma")
+                        && std::arch::is_x86_feature_detected!("bmi1")
+                        && std::arch::is_x86_feature_detected!("bmi2")
+                        && std::arch::is_x86_feature_detected!("lzcnt")
+                        && std::arch::is_x86_feature_detected!("popcnt")
                 }
                 Level::Avx512 => {
                     Level::Avx2.available()

@@ -155,14 +155,20 @@ unsafe fn owen_finish_avx2(sobol: [u32; 4], seed: u32) -> [f32; 4] {
 
 /// One vertex of eight paths ([`shade8::shade8`]) with `level`'s
 /// instructions: the same lane loops, compiled for AVX2's eight-lane
-/// registers where the CPU has them (the same operations, so the same bits).
+/// registers where the CPU has them, and with AVX-512's 32 registers and
+/// mask registers where it has those (the same operations, so the same
+/// bits).
 #[inline]
 pub(super) fn shade8_at(level: Level, x: &In8, o: &mut Out8) {
     match level {
+        // SAFETY: `level.available()` checked that this CPU has AVX-512
+        // and the rest of the list.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 if level.available() => unsafe { shade8_avx512(x, o) },
         // SAFETY: `level.available()` checked that this CPU has AVX2, all
         // the function needs.
         #[cfg(target_arch = "x86_64")]
-        Level::Avx2 | Level::Avx512 if level.available() => unsafe { shade8_avx2(x, o) },
+        Level::Avx2 if level.available() => unsafe { shade8_avx2(x, o) },
         _ => shade8::shade8(x, o),
     }
 }
@@ -170,6 +176,12 @@ pub(super) fn shade8_at(level: Level, x: &In8, o: &mut Out8) {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn shade8_avx2(x: &In8, o: &mut Out8) {
+    shade8::shade8(x, o)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn shade8_avx512(x: &In8, o: &mut Out8) {
     shade8::shade8(x, o)
 }
 
