@@ -285,14 +285,24 @@ fn gather(
             x.rho[a][j] = b.rho[a];
             x.beta[a][j] = lane.path.beta[a];
         }
+    }
+    // The lights, then the triangles on them, each a short loop of its own:
+    // a pick is a chain of dependent steps (count, load, divide), and the
+    // processor overlaps eight independent chains only when they are near.
+    let mut area = [None; L];
+    for j in 0..L {
         let (i, p_choose) = world.lights.choose(x.u[0][j]).expect("a light");
         x.p_choose[j] = p_choose;
-        let Light::Area(light) = &world.lights.lights[i] else {
-            lesson_light[j] = true;
-            continue;
-        };
-        // The triangle, as `AreaLight::sample_li` picks it.
-        let (t, ux) = light.pick(x.u[1][j]);
+        match &world.lights.lights[i] {
+            Light::Area(light) => area[j] = Some(light),
+            _ => lesson_light[j] = true,
+        }
+    }
+    // The triangle, as `AreaLight::sample_li` picks it.
+    let picks: [(usize, f32); L] =
+        std::array::from_fn(|j| area[j].map_or((0, 0.0), |light| light.pick(x.u[1][j])));
+    for (j, (light, (t, ux))) in area.into_iter().zip(picks).enumerate() {
+        let Some(light) = light else { continue };
         x.ux[j] = ux;
         for (c, corner) in light.triangles[t].iter().enumerate() {
             for a in 0..3 {
