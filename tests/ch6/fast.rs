@@ -381,3 +381,79 @@ fn eight_paths_numbers_are_the_samplers_bit_for_bit() {
         }
     }
 }
+
+#[test]
+fn the_lanes_triangle_pick_is_the_lights() {
+    use glam::Vec3;
+    use raystep::ch5_reflection::light::area::AreaLight;
+    use raystep::ch6_global_illumination::fast::pick8::{pick8, MAX_TRIANGLES};
+    let light = |areas: &[f32]| {
+        let cdf: Vec<f32> = areas
+            .iter()
+            .scan(0.0f32, |sum, a| {
+                *sum += a;
+                Some(*sum)
+            })
+            .collect();
+        let area = *cdf.last().unwrap();
+        AreaLight {
+            mesh: 0,
+            triangles: vec![[Vec3::ZERO; 3]; areas.len()],
+            cdf,
+            normals: vec![Vec3::Z; areas.len()],
+            area,
+            inv_area: 1.0 / area,
+            le: Vec3::ONE,
+            two_sided: false,
+        }
+    };
+    // Areas of every size, with zero-area triangles first, between and last.
+    let mut lights = vec![
+        light(&[1.0]),
+        light(&[0.5, 0.5]),
+        light(&[0.0, 2.0, 0.0, 1e-7, 3.0, 0.0]),
+        light(&[1e-3, 1e3, 7.0, 0.1, 0.0, 2.5, 9.0, 1.0]),
+    ];
+    let mut state = 12345u64;
+    let mut next = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 40) as f32 / (1u64 << 24) as f32
+    };
+    for n in 1..=MAX_TRIANGLES {
+        let areas: Vec<f32> = (0..n).map(|_| next() * 4.0).collect();
+        lights.push(light(&areas));
+    }
+    for l in &lights {
+        // Numbers across [0, 1), and the ones that land exactly on a
+        // running total (and next to it).
+        let mut us: Vec<f32> = (0..4000).map(|_| next()).collect();
+        us.extend([0.0, 1.0 - f32::EPSILON, 0.5]);
+        for c in &l.cdf {
+            let u = c / l.area;
+            us.extend([
+                u,
+                f32::from_bits(u.to_bits().saturating_sub(1)),
+                f32::from_bits(u.to_bits() + 1),
+            ]);
+        }
+        for group in us.chunks(8) {
+            let u: [f32; 8] = std::array::from_fn(|j| group[j % group.len()]);
+            let (t, ux) = pick8(l, &u).expect("at most eight triangles");
+            for j in 0..8 {
+                let (want_t, want_ux) = l.pick(u[j]);
+                assert_eq!(t[j], want_t, "cdf {:?} u {}", l.cdf, u[j]);
+                assert_eq!(
+                    ux[j].to_bits(),
+                    want_ux.to_bits(),
+                    "cdf {:?} u {}",
+                    l.cdf,
+                    u[j]
+                );
+            }
+        }
+    }
+    // More triangles than the lanes pick: left to `pick`.
+    assert!(pick8(&light(&[1.0; MAX_TRIANGLES + 1]), &[0.5; 8]).is_none());
+}

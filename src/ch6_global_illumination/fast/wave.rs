@@ -48,6 +48,7 @@ use crate::ch6_global_illumination::vertex::Vertex;
 
 use super::bvh8::Bvh8;
 use super::level::Level;
+use super::pick8::pick8;
 use super::shade8::{In8, Out8, L};
 
 /// Whether the wavefront loop renders `world` with `settings` exactly as
@@ -298,9 +299,16 @@ fn gather(
             _ => lesson_light[j] = true,
         }
     }
-    // The triangle, as `AreaLight::sample_li` picks it.
-    let picks: [(usize, f32); L] =
-        std::array::from_fn(|j| area[j].map_or((0, 0.0), |light| light.pick(x.u[1][j])));
+    // The triangle, as `AreaLight::sample_li` picks it: for all eight
+    // lanes at once where they chose the same light.
+    let same = area.iter().all(|a| match (a, area[0]) {
+        (Some(a), Some(first)) => std::ptr::eq(*a, first),
+        _ => false,
+    });
+    let picks: [(usize, f32); L] = match area[0].filter(|_| same).and_then(|l| pick8(l, &x.u[1])) {
+        Some((t, ux)) => std::array::from_fn(|j| (t[j], ux[j])),
+        None => std::array::from_fn(|j| area[j].map_or((0, 0.0), |light| light.pick(x.u[1][j]))),
+    };
     for (j, (light, (t, ux))) in area.into_iter().zip(picks).enumerate() {
         let Some(light) = light else { continue };
         x.ux[j] = ux;

@@ -1,0 +1,57 @@
+//! An area light's choice of triangle ([`AreaLight::pick`]) for the eight
+//! lanes of a round at once. Picking is a chain of steps that each wait
+//! for the one before (count the running totals below the target, look up
+//! two of them, divide), which one lane at a time the processor cannot
+//! overlap much; for eight lanes that chose the same light, the same
+//! steps go lane by lane over arrays, with selects in place of the
+//! look-ups, and the compiler runs them in vector registers. A test
+//! checks it against `pick` bit for bit.
+
+use crate::ch5_reflection::light::area::AreaLight;
+
+use super::shade8::L;
+
+/// Most triangles of a light picked in the lanes (more go one lane at a
+/// time through `pick`'s bisection).
+pub const MAX_TRIANGLES: usize = 8;
+
+/// [`AreaLight::pick`] of `u[j]` for each lane j: the triangle and the
+/// number left for the point on it, the same bits; `None` for a light of
+/// more than [`MAX_TRIANGLES`] triangles.
+// Lane loops index several arrays by lane, on purpose (vector code).
+#[allow(clippy::needless_range_loop)]
+pub fn pick8(light: &AreaLight, u: &[f32; L]) -> Option<([usize; L], [f32; L])> {
+    let cdf = &light.cdf;
+    if cdf.is_empty() || cdf.len() > MAX_TRIANGLES {
+        return None;
+    }
+    let target: [f32; L] = std::array::from_fn(|j| u[j] * light.area);
+    // The first triangle whose running total exceeds the target.
+    let mut k = [0u32; L];
+    for &c in cdf {
+        for j in 0..L {
+            k[j] += u32::from(c <= target[j]);
+        }
+    }
+    let last = cdf.len() as u32 - 1;
+    // Its running total and the one before it (0 for the first).
+    let (mut lo, mut hi) = ([0.0f32; L], [0.0f32; L]);
+    for (i, &c) in cdf.iter().enumerate() {
+        for j in 0..L {
+            k[j] = k[j].min(last);
+            if k[j] == i as u32 {
+                hi[j] = c;
+            }
+            if k[j] == i as u32 + 1 {
+                lo[j] = c;
+            }
+        }
+    }
+    let mut ux = [0.0f32; L];
+    for j in 0..L {
+        let width = hi[j] - lo[j];
+        let x = ((target[j] - lo[j]) / width).clamp(0.0, 1.0 - f32::EPSILON);
+        ux[j] = if width > 0.0 { x } else { 0.0 };
+    }
+    Some((std::array::from_fn(|j| k[j] as usize), ux))
+}
