@@ -2,6 +2,7 @@
 
 mod exercises;
 mod fast;
+mod fast_tree;
 mod global_illumination;
 mod ladder;
 mod path_record;

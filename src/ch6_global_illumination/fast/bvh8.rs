@@ -1,9 +1,10 @@
 //! The fast engine's BVH: chapter 3's binary tree collapsed to *eight*
 //! children per node and up to eight triangles per leaf, stored by
 //! coordinate (`[f32; 8]` per axis) so that one pass over the lanes tests
-//! all eight boxes or triangles ([`super::lanes`]). The traversal is
-//! generic over the `Kernel` that runs those tests, so the same loop runs
-//! with the portable lane loops or the AVX2 ones ([`super::simd`]).
+//! all eight boxes or triangles ([`super::lanes`]). The traversals here run
+//! the portable lane loops; [`super::simd`] has the same traversals with
+//! the tests in AVX2 instructions, visiting the same nodes in the same
+//! order.
 //!
 //! The rare lanes the triangle test hands back (an edge function exactly
 //! zero, a t too small to trust) go to the same one-triangle test as the
@@ -22,7 +23,7 @@ use crate::ch3_ray_triangle::wide_build::{
     pop_nearer, push_entered, triangles_under,
 };
 
-use super::lanes::{Kernel, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
+use super::lanes::{enter, leaf_test, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
 use super::level::Level;
 
 /// The eight-wide tree.
@@ -149,7 +150,7 @@ impl Bvh8 {
     /// The closest hit in (0, t_max), `stack` holding at least
     /// [`Bvh8::stack_size`] entries.
     #[inline(always)]
-    pub(super) fn closest_with<K: Kernel>(
+    pub(super) fn closest_with(
         &self,
         r: &RayData,
         t_max: f32,
@@ -162,14 +163,14 @@ impl Bvh8 {
         loop {
             if at & LEAF == 0 {
                 let node = &self.nodes[at as usize];
-                let (entered, t_near) = K::enter(r, node, t_best);
+                let (entered, t_near) = enter(r, node, t_best);
                 if entered != 0 {
                     at = nearest_child_next(entered, &node.child, &t_near, stack, &mut depth);
                     continue;
                 }
             } else {
                 let l = (at & !LEAF) as usize;
-                if let Some((hit, lane)) = self.leaf_closest::<K>(r, l, t_best) {
+                if let Some((hit, lane)) = self.leaf_closest(r, l, t_best) {
                     t_best = hit.t;
                     best = Some(Hit {
                         triangle: self.original[l * W + lane],
@@ -185,18 +186,26 @@ impl Bvh8 {
     }
 
     #[inline(always)]
-    pub(super) fn leaf_closest<K: Kernel>(
-        &self,
-        r: &RayData,
-        l: usize,
-        t_max: f32,
-    ) -> Option<(Hit, usize)> {
-        let h = K::leaf(r, &self.leaves[l], t_max);
+    fn leaf_closest(&self, r: &RayData, l: usize, t_max: f32) -> Option<(Hit, usize)> {
+        let h = leaf_test(r, &self.leaves[l], t_max);
         let best = nearest_lane(h.hit, &h.t, &h.u, &h.v);
         match h.check {
             0 => best,
-            check => nearest_checked(&r.wt, self.leaf_tris(l), check, t_max, best),
+            check => self.leaf_checked(r, l, check, t_max, best),
         }
+    }
+
+    /// The nearest of `best` (the leaf's hits so far) and leaf `l`'s rare
+    /// lanes `check` hit in (0, t_max), by the one-triangle test.
+    pub(super) fn leaf_checked(
+        &self,
+        r: &RayData,
+        l: usize,
+        check: u32,
+        t_max: f32,
+        best: Option<(Hit, usize)>,
+    ) -> Option<(Hit, usize)> {
+        nearest_checked(&r.wt, self.leaf_tris(l), check, t_max, best)
     }
 
     /// Whether any of leaf `l`'s rare lanes `check` is hit in (0, t_max).
@@ -211,22 +220,17 @@ impl Bvh8 {
 
     /// Whether anything is hit in (0, t_max).
     #[inline(always)]
-    pub(super) fn occluded_with<K: Kernel>(
-        &self,
-        r: &RayData,
-        t_max: f32,
-        stack: &mut [(u32, f32)],
-    ) -> bool {
+    pub(super) fn occluded_with(&self, r: &RayData, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
         let mut depth = 0;
         let mut at = self.root;
         loop {
             if at & LEAF == 0 {
                 let node = &self.nodes[at as usize];
-                let (entered, _) = K::enter(r, node, t_max);
+                let (entered, _) = enter(r, node, t_max);
                 push_entered(entered, &node.child, stack, &mut depth);
             } else {
                 let l = (at & !LEAF) as usize;
-                let h = K::leaf(r, &self.leaves[l], t_max);
+                let h = leaf_test(r, &self.leaves[l], t_max);
                 if h.hit != 0 || (h.check != 0 && self.leaf_any_checked(r, l, h.check, t_max)) {
                     return true;
                 }

@@ -4,7 +4,7 @@
 //! arithmetic is chapter 3's in the order
 //! [`WatertightRay::intersect4`](crate::ch3_ray_triangle::watertight_fast::WatertightRay::intersect4) uses, so every hit (t, u, v) is bit for
 //! bit what the readable engine finds. [`super::simd`] holds the same two
-//! tests in AVX2 instructions; a `Kernel` is either. And the last steps
+//! tests in AVX2 instructions. And the last steps
 //! of a Sobol point (the Owen scramble), in integer lanes.
 
 use crate::ch3_ray_triangle::ray::Ray;
@@ -38,30 +38,6 @@ pub(super) struct Node8 {
 #[repr(C, align(32))]
 pub(super) struct Leaf8 {
     pub(super) p: [[[f32; W]; 3]; 3],
-}
-
-/// The two lane tests a traversal needs, as one instruction set computes
-/// them: [`Lanes`] in plain Rust, or [`super::simd`]'s AVX2 code. Every
-/// implementation gives the same bits.
-pub(super) trait Kernel {
-    /// [`enter`]: the children a ray enters and where.
-    fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]);
-    /// [`leaf_test`]: the leaf's hits and the lanes left to check.
-    fn leaf(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8;
-}
-
-/// The portable kernel: the lane loops above.
-pub(super) struct Lanes;
-
-impl Kernel for Lanes {
-    #[inline(always)]
-    fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
-        enter(r, node, t_max)
-    }
-    #[inline(always)]
-    fn leaf(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
-        leaf_test(r, leaf, t_max)
-    }
 }
 
 /// What the box and triangle tests need of a ray, computed once per ray

@@ -11,12 +11,10 @@
 use std::arch::x86_64::*;
 
 use super::super::bvh8::Bvh8;
-use super::super::lanes::{Hits8, Kernel, Leaf8, Node8, RayData, FAR_STRETCH, LEAF, W};
+use super::super::lanes::{Leaf8, Node8, RayData, FAR_STRETCH, LEAF, W};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{gamma, Hit};
 use crate::ch3_ray_triangle::wide_build::{nearest_child_next, pop_nearer, push_entered};
-
-pub(super) struct Avx;
 
 #[target_feature(enable = "avx2,fma")]
 #[inline]
@@ -61,27 +59,6 @@ macro_rules! splat {
             s: r.s.map(|x| _mm256_set1_ps(x)),
         }
     }};
-}
-
-impl Kernel for Avx {
-    #[inline(always)]
-    fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
-        // SAFETY: see the module.
-        unsafe { enter_avx(&splat_avx(r), node, t_max) }
-    }
-
-    #[inline(always)]
-    fn leaf(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
-        // SAFETY: see the module.
-        unsafe { leaf_avx(r, leaf, t_max) }
-    }
-}
-
-/// [`splat!`] as a function, for the kernel's one-node calls.
-#[target_feature(enable = "avx2,fma")]
-#[inline]
-fn splat_avx(r: &RayData) -> Splat {
-    splat!(r)
 }
 
 #[target_feature(enable = "avx2,fma")]
@@ -229,29 +206,6 @@ fn abs(v: __m256) -> __m256 {
     _mm256_andnot_ps(_mm256_set1_ps(-0.0), v)
 }
 
-#[target_feature(enable = "avx2,fma")]
-#[inline]
-fn leaf_avx(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
-    let f = front!(&splat!(r), leaf, t_max);
-    let mut h = Hits8 {
-        hit: 0,
-        check: f.zeros,
-        t: [0.0; W],
-        u: [0.0; W],
-        v: [0.0; W],
-    };
-    if f.candidates == 0 {
-        return h;
-    }
-    let (t, inv_det, hit, check) = trust!(&f);
-    h.hit = hit;
-    h.check = check;
-    h.t = store(t);
-    h.u = store(_mm256_mul_ps(f.e[1], inv_det));
-    h.v = store(_mm256_mul_ps(f.e[2], inv_det));
-    h
-}
-
 /// The nearest of the lanes `hit` (at least one) and its lane: the
 /// smallest t, and of equal ones the last lane.
 #[target_feature(enable = "avx2,fma")]
@@ -323,13 +277,12 @@ macro_rules! traversals {
                     let f = front!(sp, &bvh.leaves[l], t_best);
                     if f.candidates != 0 || f.zeros != 0 {
                         let (t, inv_det, hit, check) = trust!(&f);
-                        let found = if check != 0 {
-                            bvh.leaf_closest::<super::Avx>(&RayData::new(ray), l, t_best)
-                        } else if hit != 0 {
-                            Some(nearest(t, inv_det, &f, hit))
-                        } else {
-                            None
-                        };
+                        let mut found = (hit != 0).then(|| nearest(t, inv_det, &f, hit));
+                        if check != 0 {
+                            // The rare lanes, by the one-triangle test.
+                            let r = &RayData::new(ray);
+                            found = bvh.leaf_checked(r, l, check, t_best, found);
+                        }
                         if let Some((hit, lane)) = found {
                             t_best = hit.t;
                             best = Some(Hit {

@@ -22,7 +22,7 @@ use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch5_reflection::world::RayQueries;
 
 use super::bvh8::Bvh8;
-use super::lanes::{owen_finish_lanes, Kernel, Lanes, RayData};
+use super::lanes::{owen_finish_lanes, RayData};
 use super::level::Level;
 use super::shade8::{self, In8, Out8};
 
@@ -38,7 +38,7 @@ pub fn closest(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
         // SAFETY: as above.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { closest_avx2(bvh, ray, t_max) },
-        _ => closest_lanes::<Lanes>(bvh, ray, t_max),
+        _ => closest_lanes(bvh, ray, t_max),
     }
 }
 
@@ -52,7 +52,7 @@ pub fn occluded(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
         // SAFETY: as in `closest`.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { occluded_avx2(bvh, ray, t_max) },
-        _ => occluded_lanes::<Lanes>(bvh, ray, t_max),
+        _ => occluded_lanes(bvh, ray, t_max),
     }
 }
 
@@ -73,7 +73,7 @@ pub fn closest_all(level: Level, bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option
         _ => {
             for ray in rays {
                 let r = RayData::new(ray);
-                hits.push(bvh.closest_with::<Lanes>(&r, f32::INFINITY, stack));
+                hits.push(bvh.closest_with(&r, f32::INFINITY, stack));
             }
         }
     }
@@ -95,7 +95,7 @@ pub fn occluded_all(level: Level, bvh: &Bvh8, rays: &[(Ray, f32)], blocked: &mut
         _ => {
             for (ray, t_max) in rays {
                 let r = RayData::new(ray);
-                blocked.push(bvh.occluded_with::<Lanes>(&r, *t_max, stack));
+                blocked.push(bvh.occluded_with(&r, *t_max, stack));
             }
         }
     }
@@ -263,15 +263,15 @@ macro_rules! with_stack {
 }
 
 #[inline(always)]
-fn closest_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
+fn closest_lanes(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
     let r = RayData::new(ray);
-    with_stack!(bvh, |stack| bvh.closest_with::<K>(&r, t_max, stack))
+    with_stack!(bvh, |stack| bvh.closest_with(&r, t_max, stack))
 }
 
 #[inline(always)]
-fn occluded_lanes<K: Kernel>(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
+fn occluded_lanes(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
     let r = RayData::new(ray);
-    with_stack!(bvh, |stack| bvh.occluded_with::<K>(&r, t_max, stack))
+    with_stack!(bvh, |stack| bvh.occluded_with(&r, t_max, stack))
 }
 
 // The AVX entry points run the traversals of `avx`, which keep the leaf
