@@ -274,52 +274,39 @@ fn occluded_lanes(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
     with_stack!(bvh, |stack| bvh.occluded_with(&r, t_max, stack))
 }
 
-// The AVX entry points run the traversals of `avx`, which keep the leaf
-// test in registers; they visit the same nodes and leaves in the same
-// order as `Bvh8::closest_with` and `occluded_with`, so every path finds
-// the same hit.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-unsafe fn closest_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    let mut hit = None;
-    with_stack!(bvh, |stack| avx::v512::closest(
-        bvh, ray, t_max, stack, &mut hit
-    ));
-    hit
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-unsafe fn closest_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    let mut hit = None;
-    with_stack!(bvh, |stack| avx::v2::closest(
-        bvh, ray, t_max, stack, &mut hit
-    ));
-    hit
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-unsafe fn occluded_avx512(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    with_stack!(bvh, |stack| avx::v512::occluded(bvh, ray, t_max, stack))
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-unsafe fn occluded_avx2(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    with_stack!(bvh, |stack| avx::v2::occluded(bvh, ray, t_max, stack))
-}
-
 #[cfg(target_arch = "x86_64")]
 mod avx;
 
-/// Defines the round loops of `closest_all` and `occluded_all` for one
-/// level's target features.
-macro_rules! round_loops {
-    ($closest:ident, $occluded:ident, $avx:ident, $features:literal) => {
+/// Defines one level's AVX entry points: a query for one ray and the
+/// round loops of `closest_all` and `occluded_all`, all compiled with the
+/// level's target features. They run the traversals of `avx`, which keep
+/// the leaf test in registers and visit the same nodes and leaves in the
+/// same order as `Bvh8::closest_with` and `occluded_with`, so every path
+/// finds the same hit.
+macro_rules! level_entries {
+    (
+        $closest:ident, $occluded:ident, $closest_all:ident, $occluded_all:ident,
+        $avx:ident, $features:literal
+    ) => {
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = $features)]
-        unsafe fn $closest(
+        unsafe fn $closest(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
+            let mut hit = None;
+            with_stack!(bvh, |stack| avx::$avx::closest(
+                bvh, ray, t_max, stack, &mut hit
+            ));
+            hit
+        }
+
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = $features)]
+        unsafe fn $occluded(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
+            with_stack!(bvh, |stack| avx::$avx::occluded(bvh, ray, t_max, stack))
+        }
+
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = $features)]
+        unsafe fn $closest_all(
             bvh: &Bvh8,
             rays: &[Ray],
             stack: &mut [(u32, f32)],
@@ -333,7 +320,7 @@ macro_rules! round_loops {
 
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = $features)]
-        unsafe fn $occluded(
+        unsafe fn $occluded_all(
             bvh: &Bvh8,
             rays: &[(Ray, f32)],
             stack: &mut [(u32, f32)],
@@ -346,13 +333,17 @@ macro_rules! round_loops {
     };
 }
 
-round_loops!(
+level_entries!(
+    closest_avx512,
+    occluded_avx512,
     closest_all_avx512,
     occluded_all_avx512,
     v512,
     "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt"
 );
-round_loops!(
+level_entries!(
+    closest_avx2,
+    occluded_avx2,
     closest_all_avx2,
     occluded_all_avx2,
     v2,
