@@ -10,7 +10,7 @@ use glam::Vec3;
 
 use crate::ch3_ray_triangle::obvhs_bvh::Triangles;
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::spawn::{offset_distance, offset_origin};
+use crate::ch3_ray_triangle::spawn::{offset_origin, stop_distance};
 use crate::ch3_ray_triangle::triangle::unit_normal;
 use crate::ch3_ray_triangle::wide_bvh::WideBvh;
 use crate::ch4_implicit_surfaces::distance::{scene_distance, SdfObject};
@@ -239,7 +239,7 @@ impl World {
     /// (outward normal `n`) to the point `dist` away along the unit
     /// direction `wi` (`dist` = ∞: to infinity). The ray starts at the
     /// spawned origin and is aimed at the far point moved back towards `p`
-    /// by [`offset_distance`]: both ends sit off their surfaces by amounts
+    /// by [`stop_distance`]: both ends sit off their surfaces by amounts
     /// that scale with the coordinates, so neither surface blocks the
     /// segment wherever the scene sits and whatever its size (aiming from
     /// the moved origin along the old direction and length would meet the
@@ -249,7 +249,7 @@ impl World {
             return false;
         };
         let y = p + wi * dist;
-        let to = y - wi * offset_distance(y) - spawned.origin;
+        let to = y - wi * stop_distance(y) - spawned.origin;
         let t_max = to.length();
         let (ray, t_max) = if !t_max.is_finite() {
             // A light at infinity (or as good as).

@@ -261,7 +261,7 @@ fn the_owen_scramble_is_the_crates_on_every_simd_path() {
 #[test]
 fn the_lanes_offsets_are_chapter_3s_bit_for_bit() {
     use glam::Vec3;
-    use raystep::ch3_ray_triangle::spawn::{offset_distance, offset_origin};
+    use raystep::ch3_ray_triangle::spawn::{offset_origin, stop_distance};
     use raystep::ch6_global_illumination::fast::shade8;
     let mut values = vec![
         0.0f32,
@@ -299,12 +299,8 @@ fn the_lanes_offsets_are_chapter_3s_bit_for_bit() {
             values[(i * 7) % values.len()],
             -values[(i * 13) % values.len()],
         ];
-        let want = offset_distance(Vec3::from_array(y));
-        assert_eq!(
-            shade8::offset_distance(y).to_bits(),
-            want.to_bits(),
-            "{y:?}"
-        );
+        let want = stop_distance(Vec3::from_array(y));
+        assert_eq!(shade8::stop_distance(y).to_bits(), want.to_bits(), "{y:?}");
     }
 }
 

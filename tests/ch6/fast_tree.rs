@@ -72,3 +72,136 @@ fn every_simd_path_finds_the_portable_hits_on_edges_and_vertices() {
     let levels = Level::ALL.iter().filter(|l| l.available()).count();
     assert_eq!(hits, straight * levels);
 }
+
+/// The twelve triangles of the box `lo`..`hi`'s six faces.
+fn box_faces(lo: Vec3, hi: Vec3) -> Vec<[Vec3; 3]> {
+    let c = |i: usize| {
+        Vec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        )
+    };
+    let quads = [
+        [0, 1, 3, 2],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 3, 7, 6],
+        [0, 2, 6, 4],
+        [1, 3, 7, 5],
+    ];
+    quads
+        .iter()
+        .flat_map(|q| [[c(q[0]), c(q[1]), c(q[2])], [c(q[0]), c(q[2]), c(q[3])]])
+        .collect()
+}
+
+#[test]
+fn no_leaf_of_the_fast_tree_holds_a_room() {
+    // A room (the walls of a 2x2x2 box) with a tilted slab inside: the
+    // walls' triangles would fit one leaf, whose box is the whole room.
+    let mut tris = box_faces(Vec3::splat(-1.0), Vec3::splat(1.0));
+    tris.extend(
+        box_faces(Vec3::new(-0.5, -1.0, -0.3), Vec3::new(0.1, 0.2, 0.4))
+            .iter()
+            .map(|t| t.map(|p| Vec3::new(p.x + 0.2 * p.z, p.y, p.z - 0.2 * p.x))),
+    );
+    let volume = |lo: Vec3, hi: Vec3| (hi - lo).max(Vec3::ZERO).element_product();
+    let tree = Bvh8::build(&tris, Level::Portable).unwrap();
+    let leaves = tree.leaf_boxes();
+    assert_eq!(leaves.iter().map(|l| l.2).sum::<usize>(), tris.len());
+    for (lo, hi, n) in &leaves {
+        assert!(
+            *n == 1 || volume(*lo, *hi) <= 0.5 * 8.0,
+            "a leaf of {n} triangles fills {lo} .. {hi}"
+        );
+    }
+    // And the opened tree finds what testing every triangle finds, from
+    // points on the walls and inside the room.
+    let brute = |ray: &Ray| {
+        tris.iter()
+            .filter_map(|t| {
+                raystep::ch3_ray_triangle::triangle::intersect_watertight(
+                    ray,
+                    *t,
+                    0.0,
+                    f32::INFINITY,
+                )
+            })
+            .map(|h| h.t)
+            .fold(f32::INFINITY, f32::min)
+    };
+    let mut h = 0x2545_f491_4f6c_dd1du64;
+    let mut next = || {
+        h ^= h << 13;
+        h ^= h >> 7;
+        h ^= h << 17;
+        (h >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
+    };
+    for _ in 0..2000 {
+        let o = Vec3::new(next(), next() * 0.999, next() * 0.999);
+        let Some(ray) = Ray::new(o, Vec3::new(next(), next(), next())).ok() else {
+            continue;
+        };
+        let got = tree
+            .closest(&ray, f32::INFINITY)
+            .map_or(f32::INFINITY, |h| h.t);
+        let want = brute(&ray);
+        assert!(
+            got == want || (got - want).abs() <= 1e-5 * want,
+            "{ray:?}: {got} against {want}"
+        );
+    }
+}
+
+#[test]
+fn shadow_rays_end_outside_the_lights_box_wherever_the_scene_sits() {
+    use raystep::ch3_ray_triangle::obvhs_bvh::BOX_PADDING;
+    use raystep::ch3_ray_triangle::spawn::{offset_origin, stop_distance};
+    // The Cornell box's light (y = 0.99, facing down) seen from its floor
+    // (y = -1), with the box where it is, far away, small and large. The
+    // trees pad the light's box by BOX_PADDING of its coordinates and the
+    // slab test lets a far end reach 4γ(3) of t further; a shadow ray
+    // meeting the light at least 0.3 from grazing must end short of all
+    // that, or it tests the light's own leaf for nothing.
+    let eps = f32::EPSILON / 2.0;
+    let stretch = 4.0 * (3.0 * eps) / (1.0 - 3.0 * eps);
+    for (shift, scale) in [
+        (Vec3::ZERO, 1.0),
+        (Vec3::new(1e4, -2e4, 3e4), 1.0),
+        (Vec3::ZERO, 1e-3),
+        (Vec3::new(-300.0, 0.0, 70.0), 40.0),
+    ] {
+        let place = |p: Vec3| p * scale + shift;
+        let light_y = place(Vec3::new(0.0, 0.99, 0.0)).y;
+        let corners = [Vec3::new(-0.23, 0.99, -0.18), Vec3::new(0.23, 0.99, 0.2)].map(place);
+        let pad = corners[0].y.abs().max(corners[1].y.abs()) * BOX_PADDING;
+        let mut checked = 0;
+        for i in 0..9 {
+            for j in 0..9 {
+                let p = place(Vec3::new(i as f32 * 0.2 - 0.8, -1.0, j as f32 * 0.2 - 0.8));
+                for (a, b) in [(0.1, 0.2), (0.5, 0.5), (0.9, 0.7)] {
+                    let q = corners[0] + (corners[1] - corners[0]) * Vec3::new(a, 0.0, b);
+                    let (wi, dist) = ((q - p).normalize(), (q - p).length());
+                    if wi.y < 0.3 {
+                        continue;
+                    }
+                    // As `World::unoccluded` aims it.
+                    let origin = offset_origin(p, Vec3::Y);
+                    let y = p + wi * dist;
+                    let to = y - wi * stop_distance(y) - origin;
+                    let t_max = to.length();
+                    let dir = to / t_max;
+                    let reach = origin.y + dir.y * t_max * (1.0 + stretch);
+                    assert!(
+                        reach < light_y - pad,
+                        "{shift} x{scale}: a shadow ray from {p} reaches {reach}, the light's box starts at {}",
+                        light_y - pad
+                    );
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked > 100, "{checked}");
+    }
+}

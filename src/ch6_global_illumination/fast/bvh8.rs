@@ -41,6 +41,28 @@ pub struct Bvh8 {
     pub(super) level: Level,
 }
 
+/// Marks the subtrees of `bvh2` that would make a leaf (at most
+/// [`LEAF_SIZE`] triangles, `counts`) but whose box holds more than half
+/// of the whole tree's volume as too big for one (`LEAF_SIZE + 1`), so
+/// that the tree opens them into their parts. Such a leaf is the walls of
+/// a room: nearly every ray starts inside its box, so nearly every query
+/// would test its triangles. Opened, its parts are flat boxes along the
+/// walls, which the nearest-first order passes by once a nearer hit is
+/// found (and which rays leaving a wall do not enter). Larger scenes have
+/// no such leaf; a flat scene (no volume) is left as it is.
+fn open_rooms(bvh2: &Bvh2, counts: &mut [u32]) {
+    let volume = |n: usize| {
+        let d = bvh2.nodes[n].aabb.max - bvh2.nodes[n].aabb.min;
+        d.x * d.y * d.z
+    };
+    let whole = volume(0);
+    for (n, count) in counts.iter_mut().enumerate() {
+        if (2..=LEAF_SIZE as u32).contains(count) && volume(n) > 0.5 * whole {
+            *count = LEAF_SIZE as u32 + 1;
+        }
+    }
+}
+
 impl Bvh8 {
     /// Builds the tree over `tris` (`None` for an empty list): the same
     /// binary tree as the readable engine's, collapsed eight-wide. Its
@@ -57,6 +79,7 @@ impl Bvh8 {
         let bvh2 = build_guarded(&padded_boxes(tris), params);
         let mut counts = vec![0u32; bvh2.nodes.len()];
         count_triangles(&bvh2, 0, &mut counts);
+        open_rooms(&bvh2, &mut counts);
         let mut b = Bvh8 {
             nodes: Vec::new(),
             leaves: Vec::new(),
@@ -72,6 +95,28 @@ impl Bvh8 {
         };
         b.root = b.collapse(&bvh2, &counts, 0, tris, 1);
         Some(b)
+    }
+
+    /// The boxes of its leaves, each as (min, max) corners, with the number
+    /// of triangles in the leaf.
+    pub fn leaf_boxes(&self) -> Vec<(Vec3, Vec3, usize)> {
+        self.leaves
+            .iter()
+            .enumerate()
+            .map(|(l, leaf)| {
+                let (mut lo, mut hi, mut n) = (Vec3::INFINITY, Vec3::NEG_INFINITY, 0);
+                for lane in (0..W).filter(|&lane| self.original[l * W + lane] != u32::MAX) {
+                    n += 1;
+                    for corner in 0..3 {
+                        let p = Vec3::from_array(std::array::from_fn(|a| leaf.p[a][corner][lane]));
+                        if p.is_finite() {
+                            (lo, hi) = (lo.min(p), hi.max(p));
+                        }
+                    }
+                }
+                (lo, hi, n)
+            })
+            .collect()
     }
 
     /// Inner-node levels on the longest path.

@@ -17,7 +17,7 @@
 
 use std::f32::consts::{FRAC_1_PI, PI};
 
-use crate::ch3_ray_triangle::spawn::{FLOAT_SCALE, INT_SCALE, ORIGIN};
+use crate::ch3_ray_triangle::spawn::{FLOAT_SCALE, INT_SCALE, ORIGIN, STOP_SCALE};
 
 /// Lanes shaded together.
 pub const L: usize = 8;
@@ -321,17 +321,18 @@ pub fn truncate(x: f32) -> i32 {
     }
 }
 
-/// Chapter 3's [`offset_distance`](crate::ch3_ray_triangle::spawn::offset_distance),
+/// Chapter 3's [`stop_distance`](crate::ch3_ray_triangle::spawn::stop_distance),
 /// with a select.
 #[inline(always)]
-pub fn offset_distance(y: [f32; 3]) -> f32 {
+pub fn stop_distance(y: [f32; 3]) -> f32 {
     let m = max_element([y[0].abs(), y[1].abs(), y[2].abs()]);
     let ulp = f32::from_bits(m.to_bits().wrapping_add(1)) - m;
-    if m < ORIGIN {
-        FLOAT_SCALE
-    } else {
-        INT_SCALE * ulp
-    }
+    STOP_SCALE
+        * if m < ORIGIN {
+            FLOAT_SCALE
+        } else {
+            INT_SCALE * ulp
+        }
 }
 
 /// A ray as `Ray::from_unit` makes it, for one lane; `ok` is false where
@@ -400,7 +401,7 @@ fn shadow_ray(p: [f32; 3], n: [f32; 3], wi: [f32; 3], dist: f32) -> ShadowRay {
         p[1] + wi[1] * dist,
         p[2] + wi[2] * dist,
     ];
-    let back = offset_distance(y);
+    let back = stop_distance(y);
     let to = [
         y[0] - wi[0] * back - spawned.origin[0],
         y[1] - wi[1] * back - spawned.origin[1],
