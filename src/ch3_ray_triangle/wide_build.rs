@@ -105,21 +105,31 @@ pub(crate) fn nearest_child_next<const N: usize>(
     order[count - 1].0
 }
 
-/// Pushes every entered child (mask `entered`) on `stack`, in lane order:
-/// a shadow ray needs any hit, not the nearest, so the order is free.
+/// A shadow ray at a node: of the entered children (mask `entered`), the
+/// last in lane order is returned, to visit next (`None`: none entered),
+/// and the others are pushed on `stack` in lane order. A shadow ray needs
+/// any hit, not the nearest, so the order is free. (It is the order of
+/// pushing them all and popping one; the one visited next just does not
+/// go through memory, where reading it back at once waited on the store.)
 #[inline(always)]
 pub(crate) fn push_entered<const N: usize>(
-    mut entered: u32,
+    entered: u32,
     child: &[u32; N],
     stack: &mut [(u32, f32)],
     depth: &mut usize,
-) {
-    while entered != 0 {
-        let lane = entered.trailing_zeros() as usize;
-        entered &= entered - 1;
+) -> Option<u32> {
+    if entered == 0 {
+        return None;
+    }
+    let last = 31 - entered.leading_zeros();
+    let mut rest = entered & !(1 << last);
+    while rest != 0 {
+        let lane = rest.trailing_zeros() as usize;
+        rest &= rest - 1;
         stack[*depth] = (child[lane], 0.0);
         *depth += 1;
     }
+    Some(child[last as usize])
 }
 
 /// Pops `stack` down to the next subtree that can still hold a hit nearer

@@ -272,7 +272,10 @@ impl Bvh8 {
             if at & LEAF == 0 {
                 let node = &self.nodes[at as usize];
                 let (entered, _) = enter(r, node, t_max);
-                push_entered(entered, &node.child, stack, &mut depth);
+                if let Some(next) = push_entered(entered, &node.child, stack, &mut depth) {
+                    at = next;
+                    continue;
+                }
             } else {
                 let l = (at & !LEAF) as usize;
                 let h = leaf_test(r, &self.leaves[l], t_max);

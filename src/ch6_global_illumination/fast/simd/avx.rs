@@ -221,14 +221,14 @@ fn nearest(t: __m256, inv_det: __m256, f: &Front, hit: u32) -> (Hit, usize) {
     let m = _mm256_min_ps(m, _mm256_permute2f128_ps::<1>(m, m));
     let equal = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_EQ_OQ>(masked, m)) as u32 & hit;
     let lane = 31 - equal.leading_zeros() as usize;
-    let (u, v) = (
-        store(_mm256_mul_ps(f.e[1], inv_det)),
-        store(_mm256_mul_ps(f.e[2], inv_det)),
-    );
+    // Lane `lane` of each, moved to the bottom in registers (stored whole
+    // and read back one lane, it waited on the store).
+    let at = _mm256_set1_epi32(lane as i32);
+    let pick = |v: __m256| _mm256_cvtss_f32(_mm256_permutevar8x32_ps(v, at));
     let hit = Hit {
-        t: store(t)[lane],
-        u: u[lane],
-        v: v[lane],
+        t: pick(t),
+        u: pick(_mm256_mul_ps(f.e[1], inv_det)),
+        v: pick(_mm256_mul_ps(f.e[2], inv_det)),
         triangle: 0,
     };
     (hit, lane)
@@ -320,7 +320,10 @@ macro_rules! traversals {
                 if at & LEAF == 0 {
                     let node = &bvh.nodes[at as usize];
                     let (entered, _) = enter_avx(sp, node, t_max);
-                    push_entered(entered, &node.child, stack, &mut depth);
+                    if let Some(next) = push_entered(entered, &node.child, stack, &mut depth) {
+                        at = next;
+                        continue;
+                    }
                 } else {
                     let l = (at & !LEAF) as usize;
                     let f = front!(sp, &bvh.leaves[l], t_max);
