@@ -56,6 +56,7 @@ pub fn offset_distance(p: Vec3) -> f32 {
     INT_SCALE * ulp
 }
 
+// ANCHOR: stop_distance
 /// How many times [`offset_distance`] a shadow ray stops short of the
 /// light's point.
 pub const STOP_SCALE: f32 = 4.0;
@@ -72,6 +73,7 @@ pub const STOP_SCALE: f32 = 4.0;
 pub fn stop_distance(p: Vec3) -> f32 {
     STOP_SCALE * offset_distance(p)
 }
+// ANCHOR_END: stop_distance
 
 /// A ray leaving the surface point `p` (geometric normal `n`, either side)
 /// in direction `dir`, with its origin offset to the side `dir` points to.

@@ -41,6 +41,7 @@ pub struct Bvh8 {
     pub(super) level: Level,
 }
 
+// ANCHOR: open_rooms
 /// Marks the subtrees of `bvh2` that would make a leaf (at most
 /// [`LEAF_SIZE`] triangles, `counts`) but whose box holds more than half
 /// of the whole tree's volume as too big for one (`LEAF_SIZE + 1`), so
@@ -62,6 +63,7 @@ fn open_rooms(bvh2: &Bvh2, counts: &mut [u32]) {
         }
     }
 }
+// ANCHOR_END: open_rooms
 
 impl Bvh8 {
     /// Builds the tree over `tris` (`None` for an empty list): the same
