@@ -68,8 +68,8 @@ pub const STOP_SCALE: f32 = 4.0;
 /// stretches far ends by a few rounding errors, which together reach about
 /// as far as one offset; stopping at one offset, most shadow rays ended
 /// inside the box around the light and tested the light's own leaf for
-/// nothing. (An occluder closer to the light than this is not seen: about
-/// 8·10⁻⁶ of the coordinates.)
+/// nothing. (An occluder closer to the light than this is not seen: 128
+/// ulps of the point's largest coordinate, at most 1.5·10⁻⁵ of it.)
 pub fn stop_distance(p: Vec3) -> f32 {
     STOP_SCALE * offset_distance(p)
 }
