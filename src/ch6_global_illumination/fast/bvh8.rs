@@ -49,7 +49,8 @@ pub struct Bvh8 {
 /// a room: nearly every ray starts inside its box, so nearly every query
 /// would test its triangles. Opened, its parts are flat boxes along the
 /// walls, which the nearest-first order passes by once a nearer hit is
-/// found (and which rays leaving a wall do not enter). Larger scenes have
+/// found (and which a ray leaving a wall along an axis, moved off it by
+/// more than the boxes' padding, does not enter). Larger scenes have
 /// no such leaf; a flat scene (no volume) is left as it is.
 fn open_rooms(bvh2: &Bvh2, counts: &mut [u32]) {
     let volume = |n: usize| {
