@@ -4,6 +4,8 @@
 //! bit, as the portable one.
 
 use glam::Vec3;
+
+use crate::common;
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch5_reflection::world::RayQueries;
 use raystep::ch6_global_illumination::fast::bvh8::Bvh8;
@@ -73,36 +75,13 @@ fn every_simd_path_finds_the_portable_hits_on_edges_and_vertices() {
     assert_eq!(hits, straight * levels);
 }
 
-/// The twelve triangles of the box `lo`..`hi`'s six faces.
-fn box_faces(lo: Vec3, hi: Vec3) -> Vec<[Vec3; 3]> {
-    let c = |i: usize| {
-        Vec3::new(
-            if i & 1 == 0 { lo.x } else { hi.x },
-            if i & 2 == 0 { lo.y } else { hi.y },
-            if i & 4 == 0 { lo.z } else { hi.z },
-        )
-    };
-    let quads = [
-        [0, 1, 3, 2],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 3, 7, 6],
-        [0, 2, 6, 4],
-        [1, 3, 7, 5],
-    ];
-    quads
-        .iter()
-        .flat_map(|q| [[c(q[0]), c(q[1]), c(q[2])], [c(q[0]), c(q[2]), c(q[3])]])
-        .collect()
-}
-
 #[test]
 fn no_leaf_of_the_fast_tree_holds_a_room() {
     // A room (the walls of a 2x2x2 box) with a tilted slab inside: the
     // walls' triangles would fit one leaf, whose box is the whole room.
-    let mut tris = box_faces(Vec3::splat(-1.0), Vec3::splat(1.0));
+    let mut tris = common::box_faces(Vec3::splat(-1.0), Vec3::splat(1.0));
     tris.extend(
-        box_faces(Vec3::new(-0.5, -1.0, -0.3), Vec3::new(0.1, 0.2, 0.4))
+        common::box_faces(Vec3::new(-0.5, -1.0, -0.3), Vec3::new(0.1, 0.2, 0.4))
             .iter()
             .map(|t| t.map(|p| Vec3::new(p.x + 0.2 * p.z, p.y, p.z - 0.2 * p.x))),
     );

@@ -3,6 +3,8 @@
 
 use std::path::{Path, PathBuf};
 
+use glam::Vec3;
+
 /// A fresh empty folder under the system temp dir, unique to this test.
 pub fn temp_dir(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("raystep-test-{}-{name}", std::process::id()));
@@ -110,4 +112,28 @@ pub fn mean_and_variance(
         }
     }
     (mean, var)
+}
+
+/// The twelve triangles of the box `lo`..`hi`'s six faces (corner i has
+/// bit 0, 1, 2 of i choosing hi's x, y, z), two per face.
+pub fn box_faces(lo: Vec3, hi: Vec3) -> Vec<[Vec3; 3]> {
+    let c = |i: usize| {
+        Vec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        )
+    };
+    let quads = [
+        [0, 1, 3, 2],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 3, 7, 6],
+        [0, 2, 6, 4],
+        [1, 3, 7, 5],
+    ];
+    quads
+        .iter()
+        .flat_map(|q| [[c(q[0]), c(q[1]), c(q[2])], [c(q[0]), c(q[2]), c(q[3])]])
+        .collect()
 }

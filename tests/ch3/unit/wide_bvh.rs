@@ -9,28 +9,7 @@ use raystep::core::sampling::random;
 
 /// A closed box of 12 triangles plus a few inside, scaled by `s`.
 fn box_scene(s: f32) -> Vec<[Vec3; 3]> {
-    let mut tris = Vec::new();
-    let c = [
-        Vec3::new(-1.0, -1.0, -1.0),
-        Vec3::new(1.0, -1.0, -1.0),
-        Vec3::new(1.0, 1.0, -1.0),
-        Vec3::new(-1.0, 1.0, -1.0),
-        Vec3::new(-1.0, -1.0, 1.0),
-        Vec3::new(1.0, -1.0, 1.0),
-        Vec3::new(1.0, 1.0, 1.0),
-        Vec3::new(-1.0, 1.0, 1.0),
-    ];
-    for [a, b, cc, d] in [
-        [0, 1, 2, 3],
-        [4, 5, 6, 7],
-        [0, 1, 5, 4],
-        [3, 2, 6, 7],
-        [0, 3, 7, 4],
-        [1, 2, 6, 5],
-    ] {
-        tris.push([c[a], c[b], c[cc]]);
-        tris.push([c[a], c[cc], c[d]]);
-    }
+    let mut tris = crate::common::box_faces(Vec3::splat(-1.0), Vec3::splat(1.0));
     for i in 0..40 {
         let p = Vec3::new(
             random(1, i, 0, 0) * 1.6 - 0.8,
