@@ -252,7 +252,7 @@ fn wave_row(
         let x1 = (x0 + chunk).min(sum.len());
         let starts = || {
             let pixels = (x0..x1, y);
-            super::fast::wave::camera_starts(
+            super::fast::starts::camera_starts(
                 camera,
                 tree.level(),
                 (sampler, seed),

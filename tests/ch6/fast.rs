@@ -379,10 +379,11 @@ fn eight_paths_numbers_are_the_samplers_bit_for_bit() {
 }
 
 #[test]
-fn the_lanes_triangle_pick_is_the_lights() {
+fn the_lanes_triangle_pick_and_its_corners_are_the_lights() {
     use glam::Vec3;
     use raystep::ch5_reflection::light::area::AreaLight;
-    use raystep::ch6_global_illumination::fast::pick8::{pick8, MAX_TRIANGLES};
+    use raystep::ch6_global_illumination::fast::pick8::{fill_light8, pick8, MAX_TRIANGLES};
+    use raystep::ch6_global_illumination::fast::shade8::In8;
     let light = |areas: &[f32]| {
         let cdf: Vec<f32> = areas
             .iter()
@@ -394,9 +395,14 @@ fn the_lanes_triangle_pick_is_the_lights() {
         let area = *cdf.last().unwrap();
         AreaLight {
             mesh: 0,
-            triangles: vec![[Vec3::ZERO; 3]; areas.len()],
+            // Corners and normals that tell the triangles apart.
+            triangles: (0..areas.len())
+                .map(|i| [0.0, 1.0, 2.0].map(|c| Vec3::new(i as f32, c, -(i as f32) - c)))
+                .collect(),
             cdf,
-            normals: vec![Vec3::Z; areas.len()],
+            normals: (0..areas.len())
+                .map(|i| Vec3::new(1.0, i as f32, 0.5).normalize())
+                .collect(),
             area,
             inv_area: 1.0 / area,
             le: Vec3::ONE,
@@ -437,8 +443,25 @@ fn the_lanes_triangle_pick_is_the_lights() {
         for group in us.chunks(8) {
             let u: [f32; 8] = std::array::from_fn(|j| group[j % group.len()]);
             let (t, ux) = pick8(l, &u).expect("at most eight triangles");
+            // The lanes' arrays filled for that light, with selects.
+            let mut x = In8::default();
+            x.u[1] = u;
+            assert!(fill_light8(l, 0.25, &mut x));
             for j in 0..8 {
                 let (want_t, want_ux) = l.pick(u[j]);
+                let corners = l.triangles[want_t];
+                for a in 0..3 {
+                    for (c, corner) in corners.iter().enumerate() {
+                        assert_eq!(x.tri[c][a][j], corner[a], "corner {c} of {want_t}");
+                    }
+                    assert_eq!(x.n_light[a][j], l.normals[want_t][a]);
+                    assert_eq!(x.le[a][j], l.le[a]);
+                }
+                assert_eq!(x.ux[j].to_bits(), want_ux.to_bits());
+                assert_eq!(
+                    (x.inv_area[j], x.two_sided[j], x.p_choose[j]),
+                    (l.inv_area, l.two_sided, 0.25)
+                );
                 assert_eq!(t[j], want_t, "cdf {:?} u {}", l.cdf, u[j]);
                 assert_eq!(
                     ux[j].to_bits(),
@@ -451,5 +474,7 @@ fn the_lanes_triangle_pick_is_the_lights() {
         }
     }
     // More triangles than the lanes pick: left to `pick`.
-    assert!(pick8(&light(&[1.0; MAX_TRIANGLES + 1]), &[0.5; 8]).is_none());
+    let many = light(&[1.0; MAX_TRIANGLES + 1]);
+    assert!(pick8(&many, &[0.5; 8]).is_none());
+    assert!(!fill_light8(&many, 1.0, &mut In8::default()));
 }

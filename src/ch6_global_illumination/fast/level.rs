@@ -25,8 +25,15 @@ impl Level {
         }
     }
 
-    /// Whether this CPU has the level's instructions.
+    /// Whether this CPU has the level's instructions (asked once: the
+    /// vector kernels ask before every call).
     pub fn available(self) -> bool {
+        static HAS: std::sync::OnceLock<[bool; 3]> = std::sync::OnceLock::new();
+        HAS.get_or_init(|| Level::ALL.map(Level::ask_cpu))[self as usize]
+    }
+
+    /// Whether this CPU has the level's instructions, asked of the CPU.
+    fn ask_cpu(self) -> bool {
         #[cfg(target_arch = "x86_64")]
         {
             match self {
@@ -42,7 +49,7 @@ impl Level {
                         && std::arch::is_x86_feature_detected!("popcnt")
                 }
                 Level::Avx512 => {
-                    Level::Avx2.available()
+                    Level::Avx2.ask_cpu()
                         && std::arch::is_x86_feature_detected!("avx512f")
                         && std::arch::is_x86_feature_detected!("avx512vl")
                         && std::arch::is_x86_feature_detected!("avx512bw")

@@ -28,6 +28,7 @@ pub mod shade8;
 #[allow(unsafe_code)]
 pub mod simd;
 pub mod sobol8;
+pub mod starts;
 pub mod wave;
 
 use crate::ch5_reflection::world::{Queries, World};

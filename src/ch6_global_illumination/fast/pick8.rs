@@ -9,7 +9,7 @@
 
 use crate::ch5_reflection::light::area::AreaLight;
 
-use super::shade8::L;
+use super::shade8::{In8, L};
 
 /// Most triangles of a light picked in the lanes (more go one lane at a
 /// time through `pick`'s bisection).
@@ -54,4 +54,36 @@ pub fn pick8(light: &AreaLight, u: &[f32; L]) -> Option<([usize; L], [f32; L])> 
         ux[j] = if width > 0.0 { x } else { 0.0 };
     }
     Some((std::array::from_fn(|j| k[j] as usize), ux))
+}
+
+/// For eight lanes that all chose `light` (with probability `p_choose`):
+/// the triangle [`pick8`] picks with `x.u[1]`, its corners and normal, and
+/// the light's own numbers, written into the lanes' arrays with selects
+/// (one pass per triangle) instead of one look-up per lane. False, and
+/// nothing written, for a light of more than [`MAX_TRIANGLES`] triangles.
+// Lane loops index several arrays by lane, on purpose (vector code).
+#[allow(clippy::needless_range_loop)]
+pub fn fill_light8(light: &AreaLight, p_choose: f32, x: &mut In8) -> bool {
+    let Some((t, ux)) = pick8(light, &x.u[1]) else {
+        return false;
+    };
+    x.ux = ux;
+    for (i, (corners, normal)) in light.triangles.iter().zip(&light.normals).enumerate() {
+        for j in 0..L {
+            let here = t[j] == i;
+            for a in 0..3 {
+                for (c, corner) in corners.iter().enumerate() {
+                    x.tri[c][a][j] = if here { corner[a] } else { x.tri[c][a][j] };
+                }
+                x.n_light[a][j] = if here { normal[a] } else { x.n_light[a][j] };
+            }
+        }
+    }
+    for a in 0..3 {
+        x.le[a] = [light.le[a]; L];
+    }
+    x.inv_area = [light.inv_area; L];
+    x.two_sided = [light.two_sided; L];
+    x.p_choose = [p_choose; L];
+    true
 }

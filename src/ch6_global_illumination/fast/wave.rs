@@ -30,9 +30,7 @@
 
 use glam::{Vec2, Vec3};
 
-use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::render::camera_sample;
 use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::direct::Strategy;
@@ -43,13 +41,14 @@ use crate::ch6_global_illumination::integrator::{
     direct_light, sky_emission, surface_emission, Path, PathOut, PathSettings, PathStats,
 };
 use crate::ch6_global_illumination::layers::Contributions;
-use crate::ch6_global_illumination::sampler::{PathSampler, SamplerKind};
+use crate::ch6_global_illumination::sampler::PathSampler;
 use crate::ch6_global_illumination::vertex::Vertex;
 
 use super::bvh8::Bvh8;
 use super::level::Level;
-use super::pick8::pick8;
+use super::pick8::fill_light8;
 use super::shade8::{In8, Out8, L};
+use super::starts::sobol_lanes;
 
 /// Whether the wavefront loop renders `world` with `settings` exactly as
 /// the lesson's loop would (in distribution): MIS, diffuse surfaces, at
@@ -76,22 +75,14 @@ struct Lane {
     out: u32,
 }
 
-/// A shadow ray to test and the light it carries if nothing blocks it.
-struct Shadow {
-    test: ShadowTest,
-    k: u32,
-    contribution: Vec3,
-    out: u32,
-}
-
-/// How a shadow ray is decided.
-enum ShadowTest {
-    /// Its two ends meet: nothing can block it.
-    Visible,
-    /// It has no origin (a surface point that is not finite).
-    Blocked,
-    /// Traced through the tree to `t_max` (made in the lanes).
-    Trace(Ray, f32),
+/// A round's shadow rays to trace (ray and `t_max`), and beside each the
+/// light it carries if nothing blocks it and where that light goes. (A
+/// shadow ray whose two ends meet adds its light at once; one without an
+/// origin, a surface point that is not finite, is blocked.)
+#[derive(Default)]
+struct Shadows {
+    rays: Vec<(Ray, f32)>,
+    light: Vec<(u32, Vec3)>,
 }
 
 /// Traces one path per (camera ray, sampler) of `starts`, adding path i's
@@ -115,30 +106,39 @@ pub fn trace_paths<C: Contributions>(
         })
         .collect();
     stats.paths += lanes.len() as u64;
-    let mut hits: Vec<Interaction> = Vec::with_capacity(lanes.len());
-    let mut shaded: Vec<u32> = Vec::with_capacity(lanes.len());
-    let mut shadows: Vec<Shadow> = Vec::with_capacity(lanes.len());
+    // The hits of up to eight paths waiting to be shaded together.
+    let (mut ids, mut its) = (Vec::with_capacity(L), Vec::with_capacity(L));
+    let mut shadows = Shadows::default();
     // A round's rays and what the tree answers for them.
     let mut rays: Vec<Ray> = Vec::with_capacity(lanes.len());
     let mut found: Vec<Option<Hit>> = Vec::with_capacity(lanes.len());
-    let mut shadow_rays: Vec<(Ray, f32)> = Vec::with_capacity(lanes.len());
     let mut blocked: Vec<bool> = Vec::with_capacity(lanes.len());
     let level = tree.level();
     let emissive: Vec<bool> = world.materials.iter().map(|m| m.is_emissive()).collect();
-    let (mut input, mut o) = (Box::<In8>::default(), Box::<Out8>::default());
-    // The paths still going (indices into `lanes`, which never move).
+    let mut shade = Shade {
+        world,
+        level,
+        input: Box::default(),
+        o: Box::default(),
+    };
+    // The paths still going (indices into `lanes`, which never move), in
+    // order, and those that go on past this round.
     let mut live: Vec<u32> = (0..lanes.len() as u32).collect();
-    let mut alive = vec![false; lanes.len()];
+    let mut next: Vec<u32> = Vec::with_capacity(lanes.len());
     let mut k = 0u32;
     while !live.is_empty() {
-        // 1. Closest hits; emission found; paths that leave or end.
+        // 1. Closest hits; emission found; paths that leave or end. Every
+        //    eight hits to shade are shaded at once (2.), while they are
+        //    near: each path's light is still added in the lesson's order.
         stats.rays += live.len() as u64;
-        hits.clear();
-        shaded.clear();
         let over_limit = k > settings.bounce_limit();
+        let roulette = k + 1 >= settings.rr_min_bounce;
         rays.clear();
         rays.extend(live.iter().map(|&i| lanes[i as usize].ray));
         super::simd::closest_all(level, tree, &rays, &mut found);
+        shadows.rays.clear();
+        shadows.light.clear();
+        next.clear();
         for (&i, hit) in live.iter().zip(&found) {
             let lane = &lanes[i as usize];
             let mut out = PathOut {
@@ -160,61 +160,101 @@ pub fn trace_paths<C: Contributions>(
                 out.stats.cut += u64::from(settings.max_bounces.is_none());
                 continue;
             }
-            shaded.push(i);
-            hits.push(it);
-        }
-        // 2. Shading, eight lanes at a time.
-        shadows.clear();
-        let roulette = k + 1 >= settings.rr_min_bounce;
-        for (ids, its) in shaded.chunks(L).zip(hits.chunks(L)) {
-            input.u = numbers(level, &lanes, ids, k);
-            let lesson_light = gather(world, &lanes, (ids, its), roulette, &mut input);
-            super::simd::shade8_at(level, &input, &mut o);
-            for (j, (&i, it)) in ids.iter().zip(its).enumerate() {
-                let lane = &mut lanes[i as usize];
-                if lesson_light[j] {
-                    // A point, spot, directional or sky light: the lesson's
-                    // `direct_light`, shadow ray and all, one lane at a time.
-                    if let Some(v) = Vertex::at(world, it, -lane.ray.dir) {
-                        let mut out = PathOut {
-                            layers: &mut outs[lane.out as usize],
-                            stats,
-                        };
-                        let u = &input.u;
-                        let u_light = Vec2::new(u[1][j], u[2][j]);
-                        let direct =
-                            direct_light(world, &v, u[0][j], u_light, &lane.path, out.stats);
-                        out.add_direct(k, direct);
-                    }
-                }
-                let shadows = (!lesson_light[j]).then_some(&mut shadows);
-                alive[i as usize] = finish(lane, it, k, (&*o, j), stats, shadows);
+            ids.push(i);
+            its.push(it);
+            if ids.len() == L {
+                let round = (k, roulette, &mut next, &mut shadows);
+                shade.eight(&mut lanes, (&ids, &its), round, outs, stats);
+                ids.clear();
+                its.clear();
             }
+        }
+        if !ids.is_empty() {
+            let round = (k, roulette, &mut next, &mut shadows);
+            shade.eight(&mut lanes, (&ids, &its), round, outs, stats);
+            ids.clear();
+            its.clear();
         }
         // 3. Shadow rays.
-        shadow_rays.clear();
-        shadow_rays.extend(shadows.iter().filter_map(|s| match s.test {
-            ShadowTest::Trace(ray, t_max) => Some((ray, t_max)),
-            _ => None,
-        }));
-        super::simd::occluded_all(level, tree, &shadow_rays, &mut blocked);
-        let mut traced = blocked.iter();
-        for s in &shadows {
-            let visible = match s.test {
-                ShadowTest::Visible => true,
-                ShadowTest::Blocked => false,
-                ShadowTest::Trace(..) => !traced.next().copied().unwrap_or(true),
+        super::simd::occluded_all(level, tree, &shadows.rays, &mut blocked);
+        for (&(i, light), _) in shadows.light.iter().zip(&blocked).filter(|(_, b)| !**b) {
+            let mut out = PathOut {
+                layers: &mut outs[i as usize],
+                stats,
             };
-            if visible {
-                let mut out = PathOut {
-                    layers: &mut outs[s.out as usize],
-                    stats,
-                };
-                out.add(Some(s.k), s.contribution);
+            out.add(Some(k), light);
+        }
+        std::mem::swap(&mut live, &mut next);
+        k += 1;
+    }
+}
+
+/// What shading eight lanes at a time needs besides the lanes: the scene
+/// and the lanes' arrays, allocated once.
+struct Shade<'a> {
+    world: &'a World,
+    level: Level,
+    input: Box<In8>,
+    o: Box<Out8>,
+}
+
+impl Shade<'_> {
+    /// Shades lanes `ids` (up to eight) at their hits `its`, vertex `k`:
+    /// their shadow rays go to `shadows` and the paths that go on to
+    /// `next`, in order.
+    fn eight<C: Contributions>(
+        &mut self,
+        lanes: &mut [Lane],
+        (ids, its): (&[u32], &[Interaction]),
+        (k, roulette, next, shadows): (u32, bool, &mut Vec<u32>, &mut Shadows),
+        outs: &mut [C],
+        stats: &mut PathStats,
+    ) {
+        let (world, input, o) = (self.world, &mut *self.input, &mut *self.o);
+        input.u = numbers(self.level, lanes, ids, k);
+        let lesson_light = gather(world, lanes, (ids, its), roulette, input);
+        super::simd::shade8_at(self.level, input, o);
+        for (j, (&i, it)) in ids.iter().zip(its).enumerate() {
+            let lane = &mut lanes[i as usize];
+            if lesson_light[j] {
+                // A point, spot, directional or sky light: the lesson's
+                // `direct_light`, shadow ray and all, one lane at a time.
+                if let Some(v) = Vertex::at(world, it, -lane.ray.dir) {
+                    let mut out = PathOut {
+                        layers: &mut outs[lane.out as usize],
+                        stats,
+                    };
+                    let u = &input.u;
+                    let u_light = Vec2::new(u[1][j], u[2][j]);
+                    let direct = direct_light(world, &v, u[0][j], u_light, &lane.path, out.stats);
+                    out.add_direct(k, direct);
+                }
+            }
+            if o.valid[j] && o.shadow[j] && !lesson_light[j] {
+                // The light sample's shadow ray: traced after the round,
+                // or decided now.
+                stats.rays += 1;
+                let v3 = |a: &[[f32; L]; 3]| Vec3::new(a[0][j], a[1][j], a[2][j]);
+                let light = v3(&o.contribution);
+                if o.shadow_trace[j] {
+                    let ray = Ray {
+                        origin: v3(&o.shadow_o),
+                        dir: v3(&o.shadow_d),
+                    };
+                    shadows.rays.push((ray, o.shadow_t[j]));
+                    shadows.light.push((lane.out, light));
+                } else if o.shadow_free[j] {
+                    let mut out = PathOut {
+                        layers: &mut outs[lane.out as usize],
+                        stats,
+                    };
+                    out.add(Some(k), light);
+                }
+            }
+            if finish(lane, it, k, (&*o, j)) {
+                next.push(i);
             }
         }
-        live.retain(|&i| std::mem::take(&mut alive[i as usize]));
-        k += 1;
     }
 }
 
@@ -247,17 +287,6 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
     u
 }
 
-/// The sample indices and pixel scrambles of eight samplers (`sampler(j)`
-/// for lane j), when all of them draw Sobol points from the tables: what
-/// [`sobol_group8_at`](super::simd::sobol_group8_at) needs to draw for them.
-fn sobol_lanes<'a>(sampler: impl Fn(usize) -> &'a PathSampler) -> Option<([u32; L], [u64; L])> {
-    let index: [Option<u32>; L] = std::array::from_fn(|j| sampler(j).sobol_index());
-    index.iter().all(Option::is_some).then(|| {
-        let sample = std::array::from_fn(|j| index[j].unwrap_or(0));
-        (sample, std::array::from_fn(|j| sampler(j).pixel_scramble()))
-    })
-}
-
 /// Reads lanes `ids` (with their hits) into the eight-lane arrays `x`,
 /// beside the numbers already there; unused lanes repeat the first one.
 /// Returns which lanes chose a light that is not an area light: their
@@ -287,6 +316,16 @@ fn gather(
             x.beta[a][j] = lane.path.beta[a];
         }
     }
+    // One area light, or eight lanes that chose the same one: its
+    // triangles picked in the lanes.
+    let lights = &world.lights.lights;
+    if let [Light::Area(light)] = lights.as_slice() {
+        let (_, p_choose) = world.lights.choose(0.0).expect("a light");
+        if fill_light8(light, p_choose, x) {
+            x.roulette = roulette;
+            return lesson_light;
+        }
+    }
     // The lights, then the triangles on them, each a short loop of its own:
     // a pick is a chain of dependent steps (count, load, divide), and the
     // processor overlaps eight independent chains only when they are near.
@@ -294,23 +333,25 @@ fn gather(
     for j in 0..L {
         let (i, p_choose) = world.lights.choose(x.u[0][j]).expect("a light");
         x.p_choose[j] = p_choose;
-        match &world.lights.lights[i] {
+        match &lights[i] {
             Light::Area(light) => area[j] = Some(light),
             _ => lesson_light[j] = true,
         }
     }
-    // The triangle, as `AreaLight::sample_li` picks it: for all eight
-    // lanes at once where they chose the same light.
+    // The triangle, as `AreaLight::sample_li` picks it.
     let same = area.iter().all(|a| match (a, area[0]) {
         (Some(a), Some(first)) => std::ptr::eq(*a, first),
         _ => false,
     });
-    let picks: [(usize, f32); L] = match area[0].filter(|_| same).and_then(|l| pick8(l, &x.u[1])) {
-        Some((t, ux)) => std::array::from_fn(|j| (t[j], ux[j])),
-        None => std::array::from_fn(|j| area[j].map_or((0, 0.0), |light| light.pick(x.u[1][j]))),
-    };
-    for (j, (light, (t, ux))) in area.into_iter().zip(picks).enumerate() {
+    if let Some(light) = area[0].filter(|_| same) {
+        if fill_light8(light, x.p_choose[0], x) {
+            x.roulette = roulette;
+            return lesson_light;
+        }
+    }
+    for (j, light) in area.into_iter().enumerate() {
         let Some(light) = light else { continue };
+        let (t, ux) = light.pick(x.u[1][j]);
         x.ux[j] = ux;
         for (c, corner) in light.triangles[t].iter().enumerate() {
             for a in 0..3 {
@@ -328,42 +369,10 @@ fn gather(
     lesson_light
 }
 
-/// Writes lane `j`'s results back: its shadow ray (into `shadows`, unless
-/// the lesson's code took care of the light: `None`), and the path going
-/// on (`false` where it ends).
-fn finish(
-    lane: &mut Lane,
-    it: &Interaction,
-    k: u32,
-    (o, j): (&Out8, usize),
-    stats: &mut PathStats,
-    shadows: Option<&mut Vec<Shadow>>,
-) -> bool {
-    if !o.valid[j] {
-        return false;
-    }
+/// Writes lane `j`'s path back: `false` where it ends.
+fn finish(lane: &mut Lane, it: &Interaction, k: u32, (o, j): (&Out8, usize)) -> bool {
     let v3 = |a: &[[f32; L]; 3]| Vec3::new(a[0][j], a[1][j], a[2][j]);
-    if let Some(shadows) = shadows.filter(|_| o.shadow[j]) {
-        let test = if o.shadow_trace[j] {
-            let ray = Ray {
-                origin: v3(&o.shadow_o),
-                dir: v3(&o.shadow_d),
-            };
-            ShadowTest::Trace(ray, o.shadow_t[j])
-        } else if o.shadow_free[j] {
-            ShadowTest::Visible
-        } else {
-            ShadowTest::Blocked
-        };
-        stats.rays += 1;
-        shadows.push(Shadow {
-            test,
-            k,
-            contribution: v3(&o.contribution),
-            out: lane.out,
-        });
-    }
-    if !o.step[j] || !o.survives[j] {
+    if !o.valid[j] || !o.step[j] || !o.survives[j] {
         return false;
     }
     let path = &mut lane.path;
@@ -396,53 +405,4 @@ fn interaction(world: &World, hit: Hit) -> Interaction {
         material: world.mesh_material[mesh],
         surface: Surface::Mesh(mesh),
     }
-}
-
-/// The camera rays and samplers of samples `first .. first + count` of
-/// pixels `xs` of row `y`, in that order: what chapter 6's `camera_sample`
-/// gives (chapter 3's, which hands the closure this same pixel index), with
-/// the pixel positions of eight Sobol samples drawn at once
-/// ([`sobol_group8_at`](super::simd::sobol_group8_at), the same bits).
-pub fn camera_starts(
-    camera: &Camera,
-    level: Level,
-    (kind, seed): (SamplerKind, u64),
-    (xs, y): (std::ops::Range<usize>, usize),
-    (first, count): (u32, u32),
-) -> Vec<(Ray, PathSampler)> {
-    let mut starts = Vec::with_capacity(xs.len() * count as usize);
-    for x in xs {
-        let pixel = (y * camera.width as usize + x) as u64;
-        let one_by_one =
-            |sampler: PathSampler| camera_sample(camera, (x as u32, y as u32), |_| sampler);
-        let mut s = first;
-        while s < first + count {
-            if s + L as u32 > first + count {
-                // The last few samples of the pixel.
-                let (sampler, ray) = one_by_one(PathSampler::new(kind, seed, pixel, s as u64));
-                starts.push((ray, sampler));
-                s += 1;
-                continue;
-            }
-            let samplers: [PathSampler; L] =
-                std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
-            s += L as u32;
-            let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
-                // Independent numbers, or Sobol indices past the tables.
-                for sampler in samplers {
-                    let (sampler, ray) = one_by_one(sampler);
-                    starts.push((ray, sampler));
-                }
-                continue;
-            };
-            let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
-            for (j, mut sampler) in samplers.into_iter().enumerate() {
-                // `jittered`: the pixel's corner plus the first two numbers.
-                let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
-                sampler.skip(2);
-                starts.push((camera.ray(raster), sampler));
-            }
-        }
-    }
-    starts
 }

@@ -1,0 +1,74 @@
+//! The camera rays that start the fast engine's paths, with the pixel
+//! positions of eight Sobol samples drawn at once.
+
+use glam::Vec2;
+
+use crate::ch1_projection::camera::Camera;
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::render::camera_sample;
+use crate::ch6_global_illumination::sampler::{PathSampler, SamplerKind};
+
+use super::level::Level;
+use super::shade8::L;
+
+/// The camera rays and samplers of samples `first .. first + count` of
+/// pixels `xs` of row `y`, in that order: what chapter 6's `camera_sample`
+/// gives (chapter 3's, which hands the closure this same pixel index), with
+/// the pixel positions of eight Sobol samples drawn at once
+/// ([`sobol_group8_at`](super::simd::sobol_group8_at), the same bits).
+pub fn camera_starts(
+    camera: &Camera,
+    level: Level,
+    (kind, seed): (SamplerKind, u64),
+    (xs, y): (std::ops::Range<usize>, usize),
+    (first, count): (u32, u32),
+) -> Vec<(Ray, PathSampler)> {
+    let mut starts = Vec::with_capacity(xs.len() * count as usize);
+    for x in xs {
+        let pixel = (y * camera.width as usize + x) as u64;
+        let one_by_one =
+            |sampler: PathSampler| camera_sample(camera, (x as u32, y as u32), |_| sampler);
+        let mut s = first;
+        while s < first + count {
+            if s + L as u32 > first + count {
+                // The last few samples of the pixel.
+                let (sampler, ray) = one_by_one(PathSampler::new(kind, seed, pixel, s as u64));
+                starts.push((ray, sampler));
+                s += 1;
+                continue;
+            }
+            let samplers: [PathSampler; L] =
+                std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
+            s += L as u32;
+            let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
+                // Independent numbers, or Sobol indices past the tables.
+                for sampler in samplers {
+                    let (sampler, ray) = one_by_one(sampler);
+                    starts.push((ray, sampler));
+                }
+                continue;
+            };
+            let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
+            for (j, mut sampler) in samplers.into_iter().enumerate() {
+                // `jittered`: the pixel's corner plus the first two numbers.
+                let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
+                sampler.skip(2);
+                starts.push((camera.ray(raster), sampler));
+            }
+        }
+    }
+    starts
+}
+
+/// The sample indices and pixel scrambles of eight samplers (`sampler(j)`
+/// for lane j), when all of them draw Sobol points from the tables: what
+/// [`sobol_group8_at`](super::simd::sobol_group8_at) needs to draw for them.
+pub(super) fn sobol_lanes<'a>(
+    sampler: impl Fn(usize) -> &'a PathSampler,
+) -> Option<([u32; L], [u64; L])> {
+    let index: [Option<u32>; L] = std::array::from_fn(|j| sampler(j).sobol_index());
+    index.iter().all(Option::is_some).then(|| {
+        let sample = std::array::from_fn(|j| index[j].unwrap_or(0));
+        (sample, std::array::from_fn(|j| sampler(j).pixel_scramble()))
+    })
+}
