@@ -20,6 +20,7 @@ pub const MAX_TRIANGLES: usize = 8;
 /// more than [`MAX_TRIANGLES`] triangles.
 // Lane loops index several arrays by lane, on purpose (vector code).
 #[allow(clippy::needless_range_loop)]
+#[inline(always)]
 pub fn pick8(light: &AreaLight, u: &[f32; L]) -> Option<([usize; L], [f32; L])> {
     let cdf = &light.cdf;
     if cdf.is_empty() || cdf.len() > MAX_TRIANGLES {
@@ -63,6 +64,7 @@ pub fn pick8(light: &AreaLight, u: &[f32; L]) -> Option<([usize; L], [f32; L])> 
 /// nothing written, for a light of more than [`MAX_TRIANGLES`] triangles.
 // Lane loops index several arrays by lane, on purpose (vector code).
 #[allow(clippy::needless_range_loop)]
+#[inline(always)]
 pub fn fill_light8(light: &AreaLight, p_choose: f32, x: &mut In8) -> bool {
     let Some((t, ux)) = pick8(light, &x.u[1]) else {
         return false;

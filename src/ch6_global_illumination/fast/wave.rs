@@ -46,7 +46,6 @@ use crate::ch6_global_illumination::vertex::Vertex;
 
 use super::bvh8::Bvh8;
 use super::level::Level;
-use super::pick8::fill_light8;
 use super::shade8::{In8, Out8, L};
 use super::starts::sobol_lanes;
 
@@ -212,7 +211,7 @@ impl Shade<'_> {
     ) {
         let (world, input, o) = (self.world, &mut *self.input, &mut *self.o);
         input.u = numbers(self.level, lanes, ids, k);
-        let lesson_light = gather(world, lanes, (ids, its), roulette, input);
+        let lesson_light = gather((world, self.level), lanes, (ids, its), roulette, input);
         super::simd::shade8_at(self.level, input, o);
         for (j, (&i, it)) in ids.iter().zip(its).enumerate() {
             let lane = &mut lanes[i as usize];
@@ -294,7 +293,7 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
 /// light instead (the lanes' shadow ray for them is not used).
 #[allow(clippy::needless_range_loop)]
 fn gather(
-    world: &World,
+    (world, level): (&World, Level),
     lanes: &[Lane],
     (ids, hits): (&[u32], &[Interaction]),
     roulette: bool,
@@ -321,7 +320,7 @@ fn gather(
     let lights = &world.lights.lights;
     if let [Light::Area(light)] = lights.as_slice() {
         let (_, p_choose) = world.lights.choose(0.0).expect("a light");
-        if fill_light8(light, p_choose, x) {
+        if super::simd::fill_light8_at(level, light, p_choose, x) {
             x.roulette = roulette;
             return lesson_light;
         }
@@ -344,7 +343,7 @@ fn gather(
         _ => false,
     });
     if let Some(light) = area[0].filter(|_| same) {
-        if fill_light8(light, x.p_choose[0], x) {
+        if super::simd::fill_light8_at(level, light, x.p_choose[0], x) {
             x.roulette = roulette;
             return lesson_light;
         }

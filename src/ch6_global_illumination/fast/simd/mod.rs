@@ -25,6 +25,7 @@ use super::bvh8::Bvh8;
 use super::lanes::{owen_finish_lanes, RayData};
 use super::level::Level;
 use super::shade8::{self, In8, Out8};
+use crate::ch5_reflection::light::area::AreaLight;
 
 /// The closest hit of `ray` in (0, t_max) with `level`'s instructions.
 #[inline]
@@ -183,6 +184,34 @@ unsafe fn shade8_avx2(x: &In8, o: &mut Out8) {
 #[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
 unsafe fn shade8_avx512(x: &In8, o: &mut Out8) {
     shade8::shade8(x, o)
+}
+
+/// [`fill_light8`](super::pick8::fill_light8) with `level`'s
+/// instructions (the same lane loops, so the same bits).
+#[inline]
+pub(super) fn fill_light8_at(level: Level, light: &AreaLight, p_choose: f32, x: &mut In8) -> bool {
+    match level {
+        // SAFETY: `level.available()` checked that this CPU has AVX-512
+        // and the rest of the list.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 if level.available() => unsafe { fill_light8_avx512(light, p_choose, x) },
+        // SAFETY: `level.available()` checked that this CPU has AVX2.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 if level.available() => unsafe { fill_light8_avx2(light, p_choose, x) },
+        _ => super::pick8::fill_light8(light, p_choose, x),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn fill_light8_avx2(light: &AreaLight, p_choose: f32, x: &mut In8) -> bool {
+    super::pick8::fill_light8(light, p_choose, x)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn fill_light8_avx512(light: &AreaLight, p_choose: f32, x: &mut In8) -> bool {
+    super::pick8::fill_light8(light, p_choose, x)
 }
 
 /// [`sobol_group8`](super::sobol8::sobol_group8) with `level`'s
