@@ -15,7 +15,9 @@ use super::shade8::L;
 /// pixels `xs` of row `y`, in that order: what chapter 6's `camera_sample`
 /// gives (chapter 3's, which hands the closure this same pixel index), with
 /// the pixel positions of eight Sobol samples drawn at once
-/// ([`sobol_group8_at`](super::simd::sobol_group8_at), the same bits).
+/// ([`sobol_group8_at`](super::simd::sobol_group8_at), the same bits). The
+/// eight may belong to different pixels: a pass of fewer than eight
+/// samples per pixel (the terminal UI's) is drawn eight at a time too.
 pub fn camera_starts(
     camera: &Camera,
     level: Level,
@@ -23,39 +25,45 @@ pub fn camera_starts(
     (xs, y): (std::ops::Range<usize>, usize),
     (first, count): (u32, u32),
 ) -> Vec<(Ray, PathSampler)> {
-    let mut starts = Vec::with_capacity(xs.len() * count as usize);
-    for x in xs {
+    let total = xs.len() * count as usize;
+    let mut starts = Vec::with_capacity(total);
+    // Start i: pixel xs.start + i / count, sample first + i % count.
+    let at = |i: usize| {
+        let x = xs.start + i / count as usize;
+        (x, first + (i % count as usize) as u32)
+    };
+    let sampler = |(x, s): (usize, u32)| {
         let pixel = (y * camera.width as usize + x) as u64;
-        let one_by_one =
-            |sampler: PathSampler| camera_sample(camera, (x as u32, y as u32), |_| sampler);
-        let mut s = first;
-        while s < first + count {
-            if s + L as u32 > first + count {
-                // The last few samples of the pixel.
-                let (sampler, ray) = one_by_one(PathSampler::new(kind, seed, pixel, s as u64));
-                starts.push((ray, sampler));
-                s += 1;
-                continue;
-            }
-            let samplers: [PathSampler; L] =
-                std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
-            s += L as u32;
-            let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
-                // Independent numbers, or Sobol indices past the tables.
-                for sampler in samplers {
-                    let (sampler, ray) = one_by_one(sampler);
-                    starts.push((ray, sampler));
-                }
-                continue;
-            };
-            let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
-            for (j, mut sampler) in samplers.into_iter().enumerate() {
-                // `jittered`: the pixel's corner plus the first two numbers.
-                let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
-                sampler.skip(2);
-                starts.push((camera.ray(raster), sampler));
-            }
+        PathSampler::new(kind, seed, pixel, s as u64)
+    };
+    let one_by_one = |(x, s): (usize, u32)| {
+        let (sampler, ray) = camera_sample(camera, (x as u32, y as u32), |_| sampler((x, s)));
+        (ray, sampler)
+    };
+    let mut i = 0;
+    while i < total {
+        if i + L > total {
+            // The last few.
+            starts.push(one_by_one(at(i)));
+            i += 1;
+            continue;
         }
+        let samplers: [PathSampler; L] = std::array::from_fn(|j| sampler(at(i + j)));
+        let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
+            // Independent numbers, or Sobol indices past the tables.
+            starts.extend((i..i + L).map(|k| one_by_one(at(k))));
+            i += L;
+            continue;
+        };
+        let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
+        for (j, mut sampler) in samplers.into_iter().enumerate() {
+            // `jittered`: the pixel's corner plus the first two numbers.
+            let x = at(i + j).0;
+            let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
+            sampler.skip(2);
+            starts.push((camera.ray(raster), sampler));
+        }
+        i += L;
     }
     starts
 }
