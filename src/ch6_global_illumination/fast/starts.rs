@@ -17,8 +17,58 @@ use super::shade8::L;
 /// the pixel positions of eight Sobol samples drawn at once
 /// ([`sobol_group8_at`](super::simd::sobol_group8_at), the same bits). The
 /// eight may belong to different pixels: a pass of fewer than eight
-/// samples per pixel (the terminal UI's) is drawn eight at a time too.
+/// samples per pixel (the terminal UI's) is drawn eight at a time too
+/// ([`across_pixels`]).
 pub fn camera_starts(
+    camera: &Camera,
+    level: Level,
+    (kind, seed): (SamplerKind, u64),
+    (xs, y): (std::ops::Range<usize>, usize),
+    (first, count): (u32, u32),
+) -> Vec<(Ray, PathSampler)> {
+    if count < L as u32 {
+        return across_pixels(camera, level, (kind, seed), (xs, y), (first, count));
+    }
+    let mut starts = Vec::with_capacity(xs.len() * count as usize);
+    for x in xs {
+        let pixel = (y * camera.width as usize + x) as u64;
+        let one_by_one =
+            |sampler: PathSampler| camera_sample(camera, (x as u32, y as u32), |_| sampler);
+        let mut s = first;
+        while s < first + count {
+            if s + L as u32 > first + count {
+                // The last few samples of the pixel.
+                let (sampler, ray) = one_by_one(PathSampler::new(kind, seed, pixel, s as u64));
+                starts.push((ray, sampler));
+                s += 1;
+                continue;
+            }
+            let samplers: [PathSampler; L] =
+                std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
+            s += L as u32;
+            let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
+                // Independent numbers, or Sobol indices past the tables.
+                for sampler in samplers {
+                    let (sampler, ray) = one_by_one(sampler);
+                    starts.push((ray, sampler));
+                }
+                continue;
+            };
+            let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
+            for (j, mut sampler) in samplers.into_iter().enumerate() {
+                // `jittered`: the pixel's corner plus the first two numbers.
+                let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
+                sampler.skip(2);
+                starts.push((camera.ray(raster), sampler));
+            }
+        }
+    }
+    starts
+}
+
+/// [`camera_starts`] for fewer than eight samples per pixel: eight starts
+/// at once whatever pixels they belong to.
+fn across_pixels(
     camera: &Camera,
     level: Level,
     (kind, seed): (SamplerKind, u64),
@@ -27,11 +77,9 @@ pub fn camera_starts(
 ) -> Vec<(Ray, PathSampler)> {
     let total = xs.len() * count as usize;
     let mut starts = Vec::with_capacity(total);
-    // Start i: pixel xs.start + i / count, sample first + i % count.
-    let at = |i: usize| {
-        let x = xs.start + i / count as usize;
-        (x, first + (i % count as usize) as u32)
-    };
+    // Every (pixel, sample) in order: sample `first .. first + count` of
+    // each pixel of `xs`.
+    let mut all = xs.flat_map(|x| (first..first + count).map(move |s| (x, s)));
     let sampler = |(x, s): (usize, u32)| {
         let pixel = (y * camera.width as usize + x) as u64;
         PathSampler::new(kind, seed, pixel, s as u64)
@@ -40,30 +88,29 @@ pub fn camera_starts(
         let (sampler, ray) = camera_sample(camera, (x as u32, y as u32), |_| sampler((x, s)));
         (ray, sampler)
     };
-    let mut i = 0;
-    while i < total {
-        if i + L > total {
+    let mut left = total;
+    while left > 0 {
+        if left < L {
             // The last few.
-            starts.push(one_by_one(at(i)));
-            i += 1;
-            continue;
+            starts.extend(all.by_ref().map(one_by_one));
+            break;
         }
-        let samplers: [PathSampler; L] = std::array::from_fn(|j| sampler(at(i + j)));
+        left -= L;
+        let at: [(usize, u32); L] = std::array::from_fn(|_| all.next().unwrap_or((0, 0)));
+        let samplers: [PathSampler; L] = at.map(sampler);
         let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
             // Independent numbers, or Sobol indices past the tables.
-            starts.extend((i..i + L).map(|k| one_by_one(at(k))));
-            i += L;
+            starts.extend(at.into_iter().map(one_by_one));
             continue;
         };
         let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
         for (j, mut sampler) in samplers.into_iter().enumerate() {
             // `jittered`: the pixel's corner plus the first two numbers.
-            let x = at(i + j).0;
+            let x = at[j].0;
             let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
             sampler.skip(2);
             starts.push((camera.ray(raster), sampler));
         }
-        i += L;
     }
     starts
 }
