@@ -18,7 +18,7 @@ use super::shade8::L;
 /// ([`sobol_group8_at`](super::simd::sobol_group8_at), the same bits). The
 /// eight may belong to different pixels: a pass of fewer than eight
 /// samples per pixel (the terminal UI's) is drawn eight at a time too
-/// ([`across_pixels`]).
+/// (`across_pixels`).
 pub fn camera_starts(
     camera: &Camera,
     level: Level,
