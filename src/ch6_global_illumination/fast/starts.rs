@@ -46,21 +46,7 @@ pub fn camera_starts(
             let samplers: [PathSampler; L] =
                 std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
             s += L as u32;
-            let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
-                // Independent numbers, or Sobol indices past the tables.
-                for sampler in samplers {
-                    let (sampler, ray) = one_by_one(sampler);
-                    starts.push((ray, sampler));
-                }
-                continue;
-            };
-            let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
-            for (j, mut sampler) in samplers.into_iter().enumerate() {
-                // `jittered`: the pixel's corner plus the first two numbers.
-                let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
-                sampler.skip(2);
-                starts.push((camera.ray(raster), sampler));
-            }
+            eight_starts((camera, level), ([x; L], y), samplers, &mut starts);
         }
     }
     starts
@@ -97,22 +83,42 @@ fn across_pixels(
         }
         left -= L;
         let at: [(usize, u32); L] = std::array::from_fn(|_| all.next().unwrap_or((0, 0)));
-        let samplers: [PathSampler; L] = at.map(sampler);
-        let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
-            // Independent numbers, or Sobol indices past the tables.
-            starts.extend(at.into_iter().map(one_by_one));
-            continue;
-        };
-        let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
-        for (j, mut sampler) in samplers.into_iter().enumerate() {
-            // `jittered`: the pixel's corner plus the first two numbers.
-            let x = at[j].0;
-            let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
-            sampler.skip(2);
-            starts.push((camera.ray(raster), sampler));
-        }
+        eight_starts(
+            (camera, level),
+            (at.map(|(x, _)| x), y),
+            at.map(sampler),
+            &mut starts,
+        );
     }
     starts
+}
+
+/// The camera rays of eight samplers, lane j's in pixel (`xs[j]`, `y`),
+/// pushed on `starts` in order: their pixel positions drawn at once where
+/// all eight draw Sobol points from the tables, one at a time by
+/// `camera_sample` otherwise.
+#[inline(always)]
+fn eight_starts(
+    (camera, level): (&Camera, Level),
+    (xs, y): ([usize; L], usize),
+    samplers: [PathSampler; L],
+    starts: &mut Vec<(Ray, PathSampler)>,
+) {
+    let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
+        // Independent numbers, or Sobol indices past the tables.
+        for (x, sampler) in xs.into_iter().zip(samplers) {
+            let (sampler, ray) = camera_sample(camera, (x as u32, y as u32), |_| sampler);
+            starts.push((ray, sampler));
+        }
+        return;
+    };
+    let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
+    for (j, (x, mut sampler)) in xs.into_iter().zip(samplers).enumerate() {
+        // `jittered`: the pixel's corner plus the first two numbers.
+        let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
+        sampler.skip(2);
+        starts.push((camera.ray(raster), sampler));
+    }
 }
 
 /// The sample indices and pixel scrambles of eight samplers (`sampler(j)`

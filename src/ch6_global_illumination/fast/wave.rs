@@ -299,6 +299,7 @@ fn gather(
     roulette: bool,
     x: &mut In8,
 ) -> [bool; L] {
+    x.roulette = roulette;
     let mut lesson_light = [false; L];
     for j in 0..L {
         let jj = if j < ids.len() { j } else { 0 };
@@ -319,9 +320,7 @@ fn gather(
     // triangles picked in the lanes.
     let lights = &world.lights.lights;
     if let [Light::Area(light)] = lights.as_slice() {
-        let (_, p_choose) = world.lights.choose(0.0).expect("a light");
-        if super::simd::fill_light8_at(level, light, p_choose, x) {
-            x.roulette = roulette;
+        if super::simd::fill_light8_at(level, light, world.lights.choose_pdf(0), x) {
             return lesson_light;
         }
     }
@@ -344,7 +343,6 @@ fn gather(
     });
     if let Some(light) = area[0].filter(|_| same) {
         if super::simd::fill_light8_at(level, light, x.p_choose[0], x) {
-            x.roulette = roulette;
             return lesson_light;
         }
     }
@@ -364,7 +362,6 @@ fn gather(
         x.inv_area[j] = light.inv_area;
         x.two_sided[j] = light.two_sided;
     }
-    x.roulette = roulette;
     lesson_light
 }
 
