@@ -339,7 +339,9 @@ fn the_lanes_truncation_is_rusts_cast() {
 
 #[test]
 fn eight_paths_numbers_are_the_samplers_bit_for_bit() {
-    use raystep::ch6_global_illumination::fast::sobol8::{independent8, sobol_group8};
+    use raystep::ch6_global_illumination::fast::sobol8::{
+        independent8, sobol_group8, sobol_groups8,
+    };
     use raystep::ch6_global_illumination::sampler::PathSampler;
     for kind in [SamplerKind::Sobol, SamplerKind::Independent] {
         for (pixel0, sample0) in [(0u64, 0u64), (12_345, 63), (7, 4_000)] {
@@ -354,6 +356,13 @@ fn eight_paths_numbers_are_the_samplers_bit_for_bit() {
                         let (a, b) = (
                             sobol_group8(&sample, &scramble, first / 4),
                             sobol_group8(&sample, &scramble, first / 4 + 1),
+                        );
+                        // The two groups side by side (the wave loop's form)
+                        // are the same numbers as one at a time.
+                        let pair = sobol_groups8::<2>(&sample, &scramble, first / 4);
+                        assert_eq!(
+                            pair.map(|g| g.map(|d| d.map(f32::to_bits))),
+                            [a, b].map(|g| g.map(|d| d.map(f32::to_bits)))
                         );
                         [a[0], a[1], a[2], a[3], b[0], b[1], b[2], b[3]]
                     }

@@ -38,33 +38,56 @@ pub fn owen_dim(mut n: u32, s: u32, d: usize) -> f32 {
 /// Dimensions 4 `group` .. 4 `group` + 4 of Sobol samples `sample[j]` in
 /// pixels with scramble seeds `pixel_scramble[j]`, for eight paths j:
 /// `out[d][j]`. Every sample index must be below 2^16 (the tables' range).
+#[inline(always)]
+pub fn sobol_group8(sample: &[u32; 8], pixel_scramble: &[u64; 8], group: u64) -> [[f32; 8]; 4] {
+    let [out] = sobol_groups8::<1>(sample, pixel_scramble, group);
+    out
+}
+
+/// [`sobol_group8`] for `G` groups at once, `group` .. `group` + `G`:
+/// `out[g][d][j]`. Each number is a long chain of dependent multiplies
+/// (the seed's hash, the index shuffle, the scramble), so one group alone
+/// keeps the processor waiting on them; the groups' chains are
+/// independent, and computed side by side they overlap.
 // Lane loops index several arrays by lane, on purpose (vector code).
 #[allow(clippy::needless_range_loop)]
 #[inline(always)]
-pub fn sobol_group8(sample: &[u32; 8], pixel_scramble: &[u64; 8], group: u64) -> [[f32; 8]; 4] {
+pub fn sobol_groups8<const G: usize>(
+    sample: &[u32; 8],
+    pixel_scramble: &[u64; 8],
+    group: u64,
+) -> [[[f32; 8]; 4]; G] {
     let t = byte_tables();
-    let mut seed = [0u32; 8];
-    let mut rev = [0u32; 8];
-    for j in 0..8 {
-        seed[j] = mix64(pixel_scramble[j] ^ group) as u32;
-    }
-    for j in 0..8 {
-        rev[j] = owen_scramble_rev(sample[j].reverse_bits(), hash(seed[j] ^ 0x79c68e4a));
-    }
-    let mut sobol = [[0u32; 8]; 4];
-    for j in 0..8 {
-        let (hi, lo) = (
-            t[0][(rev[j] >> 24) as usize],
-            t[1][((rev[j] >> 16) & 0xff) as usize],
-        );
-        for d in 0..4 {
-            sobol[d][j] = hi[d] ^ lo[d];
+    let mut seed = [[0u32; 8]; G];
+    let mut rev = [[0u32; 8]; G];
+    for g in 0..G {
+        for j in 0..8 {
+            seed[g][j] = mix64(pixel_scramble[j] ^ (group + g as u64)) as u32;
         }
     }
-    let mut out = [[0.0f32; 8]; 4];
-    for d in 0..4 {
+    for g in 0..G {
         for j in 0..8 {
-            out[d][j] = owen_dim(sobol[d][j], seed[j].wrapping_mul(0x9c8f2d3b), d);
+            rev[g][j] = owen_scramble_rev(sample[j].reverse_bits(), hash(seed[g][j] ^ 0x79c68e4a));
+        }
+    }
+    let mut sobol = [[[0u32; 8]; 4]; G];
+    for g in 0..G {
+        for j in 0..8 {
+            let (hi, lo) = (
+                t[0][(rev[g][j] >> 24) as usize],
+                t[1][((rev[g][j] >> 16) & 0xff) as usize],
+            );
+            for d in 0..4 {
+                sobol[g][d][j] = hi[d] ^ lo[d];
+            }
+        }
+    }
+    let mut out = [[[0.0f32; 8]; 4]; G];
+    for g in 0..G {
+        for d in 0..4 {
+            for j in 0..8 {
+                out[g][d][j] = owen_dim(sobol[g][d][j], seed[g][j].wrapping_mul(0x9c8f2d3b), d);
+            }
         }
     }
     out

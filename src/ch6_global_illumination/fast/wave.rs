@@ -266,10 +266,9 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
     let lane = |j: usize| &lanes[ids[if j < ids.len() { j } else { 0 }] as usize];
     let mut u = [[0.0; L]; 8];
     if let Some((sample, scramble)) = sobol_lanes(|j| &lane(j).sampler) {
-        for half in 0..2 {
-            let g = super::simd::sobol_group8_at(level, &sample, &scramble, first / 4 + half);
-            u[4 * half as usize..4 * half as usize + 4].copy_from_slice(&g);
-        }
+        let [a, b] = super::simd::sobol_pair8_at(level, &sample, &scramble, first / 4);
+        u[..4].copy_from_slice(&a);
+        u[4..].copy_from_slice(&b);
     } else if (0..L).all(|j| lane(j).sampler.independent_prefix().is_some()) {
         let prefix: [u64; L] =
             std::array::from_fn(|j| lane(j).sampler.independent_prefix().unwrap_or(0));

@@ -244,6 +244,37 @@ unsafe fn sobol_group8_avx2(
     super::sobol8::sobol_group8(sample, pixel_scramble, group)
 }
 
+/// [`sobol_groups8`](super::sobol8::sobol_groups8) of two groups, `group`
+/// and `group + 1` (a path vertex's eight numbers), with `level`'s
+/// instructions (the same bits on every path).
+#[inline]
+pub fn sobol_pair8_at(
+    level: Level,
+    sample: &[u32; 8],
+    pixel_scramble: &[u64; 8],
+    group: u64,
+) -> [[[f32; 8]; 4]; 2] {
+    match level {
+        // SAFETY: `level.available()` checked that this CPU has AVX2, all
+        // the function needs.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 | Level::Avx512 if level.available() => unsafe {
+            sobol_pair8_avx2(sample, pixel_scramble, group)
+        },
+        _ => super::sobol8::sobol_groups8(sample, pixel_scramble, group),
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+unsafe fn sobol_pair8_avx2(
+    sample: &[u32; 8],
+    pixel_scramble: &[u64; 8],
+    group: u64,
+) -> [[[f32; 8]; 4]; 2] {
+    super::sobol8::sobol_groups8(sample, pixel_scramble, group)
+}
+
 /// [`independent8`](super::sobol8::independent8) with `level`'s
 /// instructions (the same bits on every path).
 #[inline]
