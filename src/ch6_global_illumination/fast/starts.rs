@@ -15,7 +15,7 @@ use super::shade8::L;
 /// pixels `xs` of row `y`, in that order: what chapter 6's `camera_sample`
 /// gives (chapter 3's, which hands the closure this same pixel index), with
 /// the pixel positions of eight Sobol samples drawn at once
-/// ([`sobol_group8_at`](super::simd::sobol_group8_at), the same bits). The
+/// ([`sobol_groups8_at`](super::simd::sobol_groups8_at), the same bits). The
 /// eight may belong to different pixels: a pass of fewer than eight
 /// samples per pixel (the terminal UI's) is drawn eight at a time too
 /// (`across_pixels`).
@@ -112,7 +112,7 @@ fn eight_starts(
         }
         return;
     };
-    let g = super::simd::sobol_group8_at(level, &sample, &scramble, 0);
+    let [g] = super::simd::sobol_groups8_at(level, &sample, &scramble, 0);
     for (j, (x, mut sampler)) in xs.into_iter().zip(samplers).enumerate() {
         // `jittered`: the pixel's corner plus the first two numbers.
         let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
@@ -123,7 +123,7 @@ fn eight_starts(
 
 /// The sample indices and pixel scrambles of eight samplers (`sampler(j)`
 /// for lane j), when all of them draw Sobol points from the tables: what
-/// [`sobol_group8_at`](super::simd::sobol_group8_at) needs to draw for them.
+/// [`sobol_groups8_at`](super::simd::sobol_groups8_at) needs to draw for them.
 pub(super) fn sobol_lanes<'a>(
     sampler: impl Fn(usize) -> &'a PathSampler,
 ) -> Option<([u32; L], [u64; L])> {

@@ -266,7 +266,7 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
     let lane = |j: usize| &lanes[ids[if j < ids.len() { j } else { 0 }] as usize];
     let mut u = [[0.0; L]; 8];
     if let Some((sample, scramble)) = sobol_lanes(|j| &lane(j).sampler) {
-        let [a, b] = super::simd::sobol_pair8_at(level, &sample, &scramble, first / 4);
+        let [a, b] = super::simd::sobol_groups8_at(level, &sample, &scramble, first / 4);
         u[..4].copy_from_slice(&a);
         u[4..].copy_from_slice(&b);
     } else if (0..L).all(|j| lane(j).sampler.independent_prefix().is_some()) {

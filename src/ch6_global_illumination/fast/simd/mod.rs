@@ -214,52 +214,23 @@ unsafe fn fill_light8_avx512(light: &AreaLight, p_choose: f32, x: &mut In8) -> b
     super::pick8::fill_light8(light, p_choose, x)
 }
 
-/// [`sobol_group8`](super::sobol8::sobol_group8) with `level`'s
-/// instructions (the same bits on every path).
+/// [`sobol_groups8`](super::sobol8::sobol_groups8), groups `group` ..
+/// `group + G` (one for the camera's pixel positions, two for a path
+/// vertex's eight numbers), with `level`'s instructions (the same bits on
+/// every path).
 #[inline]
-pub fn sobol_group8_at(
+pub fn sobol_groups8_at<const G: usize>(
     level: Level,
     sample: &[u32; 8],
     pixel_scramble: &[u64; 8],
     group: u64,
-) -> [[f32; 8]; 4] {
+) -> [[[f32; 8]; 4]; G] {
     match level {
         // SAFETY: `level.available()` checked that this CPU has AVX2, all
         // the function needs.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 | Level::Avx512 if level.available() => unsafe {
-            sobol_group8_avx2(sample, pixel_scramble, group)
-        },
-        _ => super::sobol8::sobol_group8(sample, pixel_scramble, group),
-    }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-unsafe fn sobol_group8_avx2(
-    sample: &[u32; 8],
-    pixel_scramble: &[u64; 8],
-    group: u64,
-) -> [[f32; 8]; 4] {
-    super::sobol8::sobol_group8(sample, pixel_scramble, group)
-}
-
-/// [`sobol_groups8`](super::sobol8::sobol_groups8) of two groups, `group`
-/// and `group + 1` (a path vertex's eight numbers), with `level`'s
-/// instructions (the same bits on every path).
-#[inline]
-pub fn sobol_pair8_at(
-    level: Level,
-    sample: &[u32; 8],
-    pixel_scramble: &[u64; 8],
-    group: u64,
-) -> [[[f32; 8]; 4]; 2] {
-    match level {
-        // SAFETY: `level.available()` checked that this CPU has AVX2, all
-        // the function needs.
-        #[cfg(target_arch = "x86_64")]
-        Level::Avx2 | Level::Avx512 if level.available() => unsafe {
-            sobol_pair8_avx2(sample, pixel_scramble, group)
+            sobol_groups8_avx2(sample, pixel_scramble, group)
         },
         _ => super::sobol8::sobol_groups8(sample, pixel_scramble, group),
     }
@@ -267,11 +238,11 @@ pub fn sobol_pair8_at(
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn sobol_pair8_avx2(
+unsafe fn sobol_groups8_avx2<const G: usize>(
     sample: &[u32; 8],
     pixel_scramble: &[u64; 8],
     group: u64,
-) -> [[[f32; 8]; 4]; 2] {
+) -> [[[f32; 8]; 4]; G] {
     super::sobol8::sobol_groups8(sample, pixel_scramble, group)
 }
 
