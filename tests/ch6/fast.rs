@@ -471,7 +471,7 @@ fn the_lanes_triangle_pick_and_its_corners_are_the_lights() {
                     (x.inv_area[j], x.two_sided[j], x.p_choose[j]),
                     (l.inv_area, l.two_sided, 0.25)
                 );
-                assert_eq!(t[j], want_t, "cdf {:?} u {}", l.cdf, u[j]);
+                assert_eq!(t[j] as usize, want_t, "cdf {:?} u {}", l.cdf, u[j]);
                 assert_eq!(
                     ux[j].to_bits(),
                     want_ux.to_bits(),

@@ -21,7 +21,7 @@ pub const MAX_TRIANGLES: usize = 8;
 // Lane loops index several arrays by lane, on purpose (vector code).
 #[allow(clippy::needless_range_loop)]
 #[inline(always)]
-pub fn pick8(light: &AreaLight, u: &[f32; L]) -> Option<([usize; L], [f32; L])> {
+pub fn pick8(light: &AreaLight, u: &[f32; L]) -> Option<([u32; L], [f32; L])> {
     let cdf = &light.cdf;
     if cdf.is_empty() || cdf.len() > MAX_TRIANGLES {
         return None;
@@ -54,7 +54,7 @@ pub fn pick8(light: &AreaLight, u: &[f32; L]) -> Option<([usize; L], [f32; L])> 
         let x = ((target[j] - lo[j]) / width).clamp(0.0, 1.0 - f32::EPSILON);
         ux[j] = if width > 0.0 { x } else { 0.0 };
     }
-    Some((std::array::from_fn(|j| k[j] as usize), ux))
+    Some((k, ux))
 }
 
 /// For eight lanes that all chose `light` (with probability `p_choose`):
@@ -70,15 +70,15 @@ pub fn fill_light8(light: &AreaLight, p_choose: f32, x: &mut In8) -> bool {
         return false;
     };
     x.ux = ux;
+    // One select per lane and array, the lanes innermost, so that each
+    // array is one vector blend per triangle.
     for (i, (corners, normal)) in light.triangles.iter().zip(&light.normals).enumerate() {
-        for j in 0..L {
-            let here = t[j] == i;
-            for a in 0..3 {
-                for (c, corner) in corners.iter().enumerate() {
-                    x.tri[c][a][j] = if here { corner[a] } else { x.tri[c][a][j] };
-                }
-                x.n_light[a][j] = if here { normal[a] } else { x.n_light[a][j] };
+        let here: [bool; L] = std::array::from_fn(|j| t[j] == i as u32);
+        for a in 0..3 {
+            for (c, corner) in corners.iter().enumerate() {
+                blend(&here, &mut x.tri[c][a], corner[a]);
             }
+            blend(&here, &mut x.n_light[a], normal[a]);
         }
     }
     for a in 0..3 {
@@ -88,4 +88,13 @@ pub fn fill_light8(light: &AreaLight, p_choose: f32, x: &mut In8) -> bool {
     x.two_sided = [light.two_sided; L];
     x.p_choose = [p_choose; L];
     true
+}
+
+/// `to[j] = value` in the lanes `here`.
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+fn blend(here: &[bool; L], to: &mut [f32; L], value: f32) {
+    for j in 0..L {
+        to[j] = if here[j] { value } else { to[j] };
+    }
 }
