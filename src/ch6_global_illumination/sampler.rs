@@ -37,10 +37,11 @@ pub struct PathSampler {
     sample: u64,
     dimension: u64,
     /// [`crate::core::sampling::random`]'s hash of (seed, pixel, sample), which
-    /// every dimension shares: computed once, so each number costs one mix.
+    /// every dimension shares: computed once, so each number costs one mix
+    /// (only for independent numbers; 0 where the Sobol tables answer).
     prefix: u64,
     /// The Sobol scramble seed of this pixel (one more mix per group of
-    /// four dimensions).
+    /// four dimensions; 0 for independent numbers).
     pixel_scramble: u64,
     /// The Sobol group whose four numbers are in `group_values`
     /// (`u64::MAX`: none yet).
@@ -62,13 +63,24 @@ impl crate::core::sampling::SampleNumbers for PathSampler {
 impl PathSampler {
     /// The sampler of sample `sample` of pixel `pixel`.
     pub fn new(kind: SamplerKind, seed: u64, pixel: u64, sample: u64) -> PathSampler {
+        let sobol = kind == SamplerKind::Sobol && sample < SOBOL_MAX_SAMPLES;
         PathSampler {
             kind,
             sample,
             dimension: 0,
-            // What `random(seed, pixel, sample, d)` hashes before `d`.
-            prefix: sample_hash(seed, pixel, sample),
-            pixel_scramble: mix64(seed ^ mix64(pixel)),
+            // What `random(seed, pixel, sample, d)` hashes before `d`, for
+            // the samplers that draw independent numbers (0, unused, for the
+            // others: the hash is most of the cost of a new sampler).
+            prefix: if sobol {
+                0
+            } else {
+                sample_hash(seed, pixel, sample)
+            },
+            pixel_scramble: if kind == SamplerKind::Sobol {
+                mix64(seed ^ mix64(pixel))
+            } else {
+                0
+            },
             group: u64::MAX,
             group_values: [0.0; 4],
         }
