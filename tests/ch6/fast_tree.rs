@@ -184,3 +184,69 @@ fn shadow_rays_end_outside_the_lights_box_wherever_the_scene_sits() {
         assert!(checked > 100, "{checked}");
     }
 }
+
+#[test]
+fn camera_rays_eight_at_a_time_find_the_one_ray_hits() {
+    use raystep::ch1_projection::camera::Camera;
+    use raystep::ch3_ray_triangle::triangle::Hit;
+    use raystep::ch6_global_illumination::fast::{packet, simd, Engine};
+    use raystep::scene::Scene;
+    let bits =
+        |h: &Option<Hit>| h.map(|h| (h.t.to_bits(), h.u.to_bits(), h.v.to_bits(), h.triangle));
+    // The Cornell box's camera rays, eight jittered samples per pixel (the
+    // packets), and the same rays shuffled across the image (eights that
+    // mostly differ in direction signs or permutation: one at a time).
+    let scene = Scene::builtin().with_resolution(48, 48).unwrap();
+    let camera = Camera::of(&scene);
+    let mut h = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = || {
+        h ^= h << 13;
+        h ^= h >> 7;
+        h ^= h << 17;
+        (h >> 40) as f32 / (1u64 << 24) as f32
+    };
+    let mut rays = Vec::new();
+    for y in 0..camera.height {
+        for x in 0..camera.width {
+            for _ in 0..8 {
+                let raster = glam::Vec2::new(x as f32 + next(), y as f32 + next());
+                rays.push(camera.ray(raster));
+            }
+        }
+    }
+    let mut shuffled = rays.clone();
+    for i in (1..shuffled.len()).rev() {
+        let j = (next() * i as f32) as usize;
+        shuffled.swap(i, j);
+    }
+    // And a remainder of three that is not a whole eight.
+    shuffled.truncate(shuffled.len() - 5);
+    let together = rays.chunks(8).filter(|r| packet::together(r)).count();
+    assert!(
+        together * 10 >= rays.len() / 8 * 9,
+        "{together} of {}",
+        rays.len() / 8
+    );
+    let apart = shuffled
+        .chunks_exact(8)
+        .filter(|r| !packet::together(r))
+        .count();
+    assert!(apart * 2 >= shuffled.len() / 8, "{apart}");
+    let world = Engine::Fast.world_at(&scene, Level::Portable);
+    let portable = raystep::ch6_global_illumination::fast::wave::engine_tree(&world).unwrap();
+    for level in Level::ALL.into_iter().filter(|l| l.available()) {
+        let world = Engine::Fast.world_at(&scene, level);
+        let tree = raystep::ch6_global_illumination::fast::wave::engine_tree(&world).unwrap();
+        for rays in [&rays, &shuffled] {
+            let (mut want, mut got) = (Vec::new(), Vec::new());
+            simd::closest_all(Level::Portable, portable, rays, &mut want);
+            simd::closest_packets(tree, rays, &mut got);
+            assert_eq!(got.len(), rays.len());
+            let misses = want.iter().filter(|h| h.is_none()).count();
+            assert!(misses * 4 < rays.len(), "most rays see the box: {misses}");
+            for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                assert_eq!(bits(g), bits(w), "{level:?} ray {i}: {:?}", rays[i]);
+            }
+        }
+    }
+}

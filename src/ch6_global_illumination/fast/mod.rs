@@ -23,6 +23,7 @@
 pub mod bvh8;
 pub mod lanes;
 pub mod level;
+pub mod packet;
 pub mod pick8;
 pub mod shade8;
 #[allow(unsafe_code)]

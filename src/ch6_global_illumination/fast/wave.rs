@@ -134,7 +134,12 @@ pub fn trace_paths<C: Contributions>(
         let roulette = k + 1 >= settings.rr_min_bounce;
         rays.clear();
         rays.extend(live.iter().map(|&i| lanes[i as usize].ray));
-        super::simd::closest_all(level, tree, &rays, &mut found);
+        if k == 0 {
+            // Camera rays: eight samples of a pixel leave together.
+            super::simd::closest_packets(tree, &rays, &mut found);
+        } else {
+            super::simd::closest_all(level, tree, &rays, &mut found);
+        }
         shadows.rays.clear();
         shadows.light.clear();
         next.clear();

@@ -80,6 +80,50 @@ pub fn closest_all(level: Level, bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option
     }
 }
 
+/// [`closest_all`] for a round of camera rays, eight at a time through
+/// [`packet::closest8`](super::packet::closest8) (the last few one at a
+/// time), with the tree's instructions: the same lane loops on every
+/// path, so the same bits.
+pub fn closest_packets(bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option<Hit>>) {
+    hits.clear();
+    hits.resize(rays.len(), None);
+    match bvh.level() {
+        // SAFETY: a `Bvh8` holds only levels `Level::available` said this
+        // CPU has (`Bvh8::build` checks), and the function needs nothing
+        // else than those instructions.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => unsafe { closest_packets_avx512(bvh, rays, hits) },
+        // SAFETY: as above.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => unsafe { closest_packets_avx2(bvh, rays, hits) },
+        _ => closest_packets_lanes(bvh, rays, hits),
+    }
+}
+
+#[inline(always)]
+fn closest_packets_lanes(bvh: &Bvh8, rays: &[Ray], hits: &mut [Option<Hit>]) {
+    let eights = rays.len() / 8 * 8;
+    for (r, h) in rays[..eights].chunks_exact(8).zip(hits.chunks_exact_mut(8)) {
+        super::packet::closest8(bvh, r, h);
+    }
+    let stack = &mut vec![(0u32, 0f32); bvh.stack_size()];
+    for (ray, hit) in rays[eights..].iter().zip(&mut hits[eights..]) {
+        *hit = bvh.closest_with(&RayData::new(ray), f32::INFINITY, stack);
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn closest_packets_avx2(bvh: &Bvh8, rays: &[Ray], hits: &mut [Option<Hit>]) {
+    closest_packets_lanes(bvh, rays, hits)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
+unsafe fn closest_packets_avx512(bvh: &Bvh8, rays: &[Ray], hits: &mut [Option<Hit>]) {
+    closest_packets_lanes(bvh, rays, hits)
+}
+
 /// [`occluded`] for each of a round's shadow rays `(ray, t_max)`,
 /// `blocked[i]` for `rays[i]` (`blocked` is emptied first), as
 /// [`closest_all`] does it.

@@ -1,0 +1,379 @@
+//! Camera rays eight at a time. The eight samples of a pixel that start a
+//! round of paths leave the same eye through the same pixel, so they open
+//! the same nodes and leaves of the tree: one traversal for all eight,
+//! with one ray per lane, does each box and triangle test once for the
+//! eight where [`Bvh8::closest_with`] does it eight times, and makes its
+//! branches once.
+//!
+//! Each lane runs the one-ray test's arithmetic in its order (the slab
+//! test, the watertight test with the ray's own shear, pbrt-v4's error
+//! bound), so a ray's hit is the one the one-ray traversal finds: the
+//! nearest trusted hit, t, u and v to the bit. Two things send a ray back
+//! to the one-ray traversal: eight rays whose largest direction component
+//! is not on the same axis (the test's permutation differs), and a lane
+//! the one-ray test would hand to its exact fallback (an edge function
+//! exactly zero, or a t too small to trust). A tie (two triangles at
+//! exactly the same t, which only coincident surfaces give) may go to
+//! another of the tied triangles than the one-ray order picks.
+
+// Lane loops index several arrays by lane, on purpose (vector code).
+#![allow(clippy::needless_range_loop)]
+
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::triangle::{gamma, Hit};
+
+use super::bvh8::Bvh8;
+use super::lanes::{RayData, FAR_STRETCH, LEAF, W};
+
+/// Most stack entries a packet traversal keeps (deeper trees go one ray at
+/// a time).
+const STACK: usize = 64;
+
+/// Eight rays' numbers, by lane: the slab test's origin and 1/direction,
+/// the watertight test's permuted origin and shear; the direction signs
+/// and the permutation are the same for all eight.
+struct Packet {
+    o: [[f32; W]; 3],
+    inv: [[f32; W]; 3],
+    negative: [bool; 3],
+    k: [usize; 3],
+    ko: [[f32; W]; 3],
+    s: [[f32; W]; 3],
+}
+
+impl Packet {
+    /// The numbers of eight rays, as chapter 3's `BoxRay` and
+    /// `WatertightRay` compute them for one (the same operations, lane by
+    /// lane); `None` where the rays' permutations or direction signs
+    /// differ.
+    #[inline(always)]
+    fn new(rays: &[Ray]) -> Option<Packet> {
+        let mut d = [[0.0f32; W]; 3];
+        let mut o = [[0.0f32; W]; 3];
+        for j in 0..W {
+            for a in 0..3 {
+                d[a][j] = rays[j].dir[a];
+                o[a][j] = rays[j].origin[a];
+            }
+        }
+        // The watertight permutation: z is the largest component.
+        let mut kz = [0u32; W];
+        for j in 0..W {
+            let (x, y, z) = (d[0][j].abs(), d[1][j].abs(), d[2][j].abs());
+            let xy = if x > z { 0 } else { 2 };
+            let yz = if y > z { 1 } else { 2 };
+            kz[j] = if x > y { xy } else { yz };
+        }
+        let mut sign = [[false; W]; 3];
+        for a in 0..3 {
+            for j in 0..W {
+                sign[a][j] = d[a][j].is_sign_negative();
+            }
+        }
+        let same = |v: &[bool; W]| v.iter().all(|&b| b == v[0]);
+        if kz.iter().any(|&k| k != kz[0]) || !(0..3).all(|a| same(&sign[a])) {
+            return None;
+        }
+        const PERMUTATION: [[usize; 3]; 3] = [[1, 2, 0], [2, 0, 1], [0, 1, 2]];
+        let k = PERMUTATION[kz[0] as usize];
+        let mut p = Packet {
+            o,
+            inv: [[0.0; W]; 3],
+            negative: [sign[0][0], sign[1][0], sign[2][0]],
+            k,
+            ko: [o[k[0]], o[k[1]], o[k[2]]],
+            s: [[0.0; W]; 3],
+        };
+        for a in 0..3 {
+            for j in 0..W {
+                // `BoxRay`: tiny components kept finite.
+                let x = d[a][j];
+                let safe = if x.abs() < 1e-30 {
+                    1e-30f32.copysign(x)
+                } else {
+                    x
+                };
+                p.inv[a][j] = 1.0 / safe;
+            }
+        }
+        for j in 0..W {
+            let (dx, dy, dz) = (d[k[0]][j], d[k[1]][j], d[k[2]][j]);
+            p.s[0][j] = -dx / dz;
+            p.s[1][j] = -dy / dz;
+            p.s[2][j] = 1.0 / dz;
+        }
+        Some(p)
+    }
+}
+
+/// The first half of the triangle test for eight rays: the corners in
+/// each ray's frame (x, y and the sheared z), the edge functions, det and
+/// the scaled t, and which rays can hit and which have an edge function
+/// exactly zero.
+#[derive(Default)]
+struct Front {
+    x: [[f32; W]; 3],
+    y: [[f32; W]; 3],
+    z: [[f32; W]; 3],
+    e: [[f32; W]; 3],
+    det: [f32; W],
+    ts: [f32; W],
+    candidate: [bool; W],
+    zero: [bool; W],
+}
+
+/// Whether eight rays go through the tree together in
+/// [`closest8`] (the same permutation and direction signs), rather than
+/// one at a time.
+pub fn together(rays: &[Ray]) -> bool {
+    rays.len() == W && Packet::new(rays).is_some()
+}
+
+/// The nearest hits found so far, by lane.
+struct Best {
+    t: [f32; W],
+    u: [f32; W],
+    v: [f32; W],
+    triangle: [u32; W],
+}
+
+/// The closest hits of eight `rays` in (0, ∞), into `out` (eight
+/// entries), as [`Bvh8::closest_with`] finds them.
+#[inline(always)]
+pub(super) fn closest8(bvh: &Bvh8, rays: &[Ray], out: &mut [Option<Hit>]) {
+    let one_by_one = |out: &mut [Option<Hit>], lanes: u32| {
+        let stack = &mut vec![(0u32, 0f32); bvh.stack_size()];
+        for (j, ray) in rays.iter().enumerate().filter(|(j, _)| lanes >> j & 1 != 0) {
+            out[j] = bvh.closest_with(&RayData::new(ray), f32::INFINITY, stack);
+        }
+    };
+    let packet = (bvh.stack_size() <= STACK)
+        .then(|| Packet::new(rays))
+        .flatten();
+    let Some(p) = packet else {
+        return one_by_one(out, 0xff);
+    };
+    let mut best = Best {
+        t: [f32::INFINITY; W],
+        u: [0.0; W],
+        v: [0.0; W],
+        triangle: [u32::MAX; W],
+    };
+    // Lanes the one-ray traversal decides.
+    let mut redo = 0u32;
+    // Subtrees to visit, each with the nearest distance at which a lane
+    // enters its box.
+    let mut stack = [(0u32, 0f32); STACK];
+    let mut depth = 0;
+    let mut at = bvh.root;
+    loop {
+        if at & LEAF == 0 {
+            let node = &bvh.nodes[at as usize];
+            // The entered children, nearest last.
+            let mut order = [(0u32, 0f32); W];
+            let mut count = 0;
+            for c in 0..W {
+                if node.child[c] == u32::MAX {
+                    continue;
+                }
+                let near = enter(&p, &best.t, node, c);
+                if near == f32::INFINITY {
+                    continue;
+                }
+                let mut i = count;
+                while i > 0 && order[i - 1].1 < near {
+                    order[i] = order[i - 1];
+                    i -= 1;
+                }
+                order[i] = (node.child[c], near);
+                count += 1;
+            }
+            for &item in &order[..count] {
+                stack[depth] = item;
+                depth += 1;
+            }
+        } else {
+            let l = (at & !LEAF) as usize;
+            redo |= leaf(&p, bvh, l, &mut best);
+        }
+        // The next subtree some lane can still find a nearer hit in.
+        let farthest = largest(best.t);
+        loop {
+            if depth == 0 {
+                for j in 0..W {
+                    out[j] = (best.triangle[j] != u32::MAX).then(|| Hit {
+                        t: best.t[j],
+                        u: best.u[j],
+                        v: best.v[j],
+                        triangle: best.triangle[j],
+                    });
+                }
+                if redo != 0 {
+                    one_by_one(out, redo);
+                }
+                return;
+            }
+            depth -= 1;
+            if stack[depth].1 <= farthest {
+                at = stack[depth].0;
+                break;
+            }
+        }
+    }
+}
+
+/// The slab test of child `c` of `node` for the eight lanes, each against
+/// (0, its nearest hit so far): the nearest distance at which a lane
+/// enters the box, or ∞ where none does.
+#[inline(always)]
+fn enter(p: &Packet, t_best: &[f32; W], node: &super::lanes::Node8, c: usize) -> f32 {
+    let mut t_near = [0.0f32; W];
+    let mut t_far = *t_best;
+    for axis in 0..3 {
+        let (lo, hi) = (node.min[axis][c], node.max[axis][c]);
+        let (near, far) = if p.negative[axis] { (hi, lo) } else { (lo, hi) };
+        for j in 0..W {
+            // `max` and `min` as selects (a NaN keeps the old value, as
+            // `f32::max` does): one instruction each.
+            let (a, b) = (
+                (near - p.o[axis][j]) * p.inv[axis][j],
+                (far - p.o[axis][j]) * p.inv[axis][j],
+            );
+            t_near[j] = if a > t_near[j] { a } else { t_near[j] };
+            t_far[j] = if b < t_far[j] { b } else { t_far[j] };
+        }
+    }
+    let mut near = [f32::INFINITY; W];
+    for j in 0..W {
+        let entered = t_near[j] <= t_far[j] * FAR_STRETCH;
+        near[j] = if entered { t_near[j] } else { f32::INFINITY };
+    }
+    smallest(near)
+}
+
+/// The smallest of the lanes, pairwise (three vector steps, not a chain
+/// of eight scalar ones; the lanes are never NaN).
+#[inline(always)]
+fn smallest(v: [f32; W]) -> f32 {
+    let mut a = [0.0f32; 4];
+    for j in 0..4 {
+        a[j] = if v[j + 4] < v[j] { v[j + 4] } else { v[j] };
+    }
+    let b = [
+        if a[2] < a[0] { a[2] } else { a[0] },
+        if a[3] < a[1] { a[3] } else { a[1] },
+    ];
+    if b[1] < b[0] {
+        b[1]
+    } else {
+        b[0]
+    }
+}
+
+/// The largest of the lanes, likewise.
+#[inline(always)]
+fn largest(v: [f32; W]) -> f32 {
+    let mut a = [0.0f32; 4];
+    for j in 0..4 {
+        a[j] = if v[j + 4] > v[j] { v[j + 4] } else { v[j] };
+    }
+    let b = [
+        if a[2] > a[0] { a[2] } else { a[0] },
+        if a[3] > a[1] { a[3] } else { a[1] },
+    ];
+    if b[1] > b[0] {
+        b[1]
+    } else {
+        b[0]
+    }
+}
+
+/// Leaf `l`'s triangles, one at a time, against the eight lanes (each in
+/// (0, its nearest hit so far)), in lane order with a later triangle
+/// winning a tie, as the one-ray leaf test picks: updates `best`, and
+/// returns the lanes that the one-ray test's exact fallback must decide.
+#[inline(always)]
+fn leaf(p: &Packet, bvh: &Bvh8, l: usize, best: &mut Best) -> u32 {
+    let leaf = &bvh.leaves[l];
+    let (px, py, pz) = (&leaf.p[p.k[0]], &leaf.p[p.k[1]], &leaf.p[p.k[2]]);
+    let g = gamma;
+    let mut check = [false; W];
+    for i in 0..W {
+        let triangle = bvh.original[l * W + i];
+        if triangle == u32::MAX {
+            continue;
+        }
+        // The first half of `leaf_test`'s arithmetic, for triangle i and
+        // each ray j: the edge functions and which rays can hit at all.
+        let mut f = Front::default();
+        for j in 0..W {
+            let [ox, oy, oz] = [p.ko[0][j], p.ko[1][j], p.ko[2][j]];
+            let [sx, sy, sz] = [p.s[0][j], p.s[1][j], p.s[2][j]];
+            let t_max = best.t[j];
+            let (z0, z1, z2) = (pz[0][i] - oz, pz[1][i] - oz, pz[2][i] - oz);
+            let (x0, x1, x2) = (
+                (px[0][i] - ox) + sx * z0,
+                (px[1][i] - ox) + sx * z1,
+                (px[2][i] - ox) + sx * z2,
+            );
+            let (y0, y1, y2) = (
+                (py[0][i] - oy) + sy * z0,
+                (py[1][i] - oy) + sy * z1,
+                (py[2][i] - oy) + sy * z2,
+            );
+            let e0 = x1 * y2 - y1 * x2;
+            let e1 = x2 * y0 - y2 * x0;
+            let e2 = x0 * y1 - y0 * x1;
+            let any_zero = (e0 == 0.0) | (e1 == 0.0) | (e2 == 0.0);
+            let neg = (e0 < 0.0) | (e1 < 0.0) | (e2 < 0.0);
+            let pos = (e0 > 0.0) | (e1 > 0.0) | (e2 > 0.0);
+            let d = e0 + e1 + e2;
+            let (z0, z1, z2) = (z0 * sz, z1 * sz, z2 * sz);
+            let t_scaled = e0 * z0 + e1 * z1 + e2 * z2;
+            let (lo, hi) = (0.0 * d, t_max * d);
+            let in_neg = (d < 0.0) & (t_scaled < lo) & (t_scaled >= hi);
+            let in_pos = (d > 0.0) & (t_scaled > lo) & (t_scaled <= hi);
+            let finite = d.abs() < f32::INFINITY;
+            f.candidate[j] = !(neg & pos) & finite & (in_neg | in_pos);
+            check[j] |= any_zero;
+            f.zero[j] = any_zero;
+            (f.e[0][j], f.e[1][j], f.e[2][j]) = (e0, e1, e2);
+            (f.x[0][j], f.x[1][j], f.x[2][j]) = (x0, x1, x2);
+            (f.y[0][j], f.y[1][j], f.y[2][j]) = (y0, y1, y2);
+            (f.z[0][j], f.z[1][j], f.z[2][j]) = (z0, z1, z2);
+            (f.det[j], f.ts[j]) = (d, t_scaled);
+        }
+        if !f.candidate.iter().any(|&c| c) {
+            continue;
+        }
+        // The second half, where a ray can hit: t, and whether pbrt-v4's
+        // error bound trusts it.
+        for j in 0..W {
+            let max3 = |v: &[[f32; W]; 3]| v[0][j].abs().max(v[1][j].abs()).max(v[2][j].abs());
+            let inv_det = 1.0 / f.det[j];
+            let t = f.ts[j] * inv_det;
+            let (max_zt, max_xt, max_yt) = (max3(&f.z), max3(&f.x), max3(&f.y));
+            let delta_z = g(3) * max_zt;
+            let delta_x = g(5) * (max_xt + max_zt);
+            let delta_y = g(5) * (max_yt + max_zt);
+            let delta_e = 2.0 * (g(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+            let max_e = max3(&f.e);
+            let delta_t =
+                3.0 * (g(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs();
+            let trusted = t > delta_t;
+            let candidate = f.candidate[j];
+            let hit = candidate & trusted & !f.zero[j];
+            check[j] |= candidate & !trusted;
+            let take = hit & (t <= best.t[j]);
+            best.t[j] = if take { t } else { best.t[j] };
+            best.u[j] = if take { f.e[1][j] * inv_det } else { best.u[j] };
+            best.v[j] = if take { f.e[2][j] * inv_det } else { best.v[j] };
+            best.triangle[j] = if take { triangle } else { best.triangle[j] };
+        }
+    }
+    let mut bits = 0u32;
+    for j in 0..W {
+        bits |= u32::from(check[j]) << j;
+    }
+    bits
+}
