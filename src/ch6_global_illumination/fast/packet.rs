@@ -225,6 +225,7 @@ pub(super) fn closest8(bvh: &Bvh8, rays: &[Ray], out: &mut [Option<Hit>]) {
 /// The slab test of child `c` of `node` for the eight lanes, each against
 /// (0, its nearest hit so far): the nearest distance at which a lane
 /// enters the box, or ∞ where none does.
+// ANCHOR: packet_enter
 #[inline(always)]
 fn enter(p: &Packet, t_best: &[f32; W], node: &super::lanes::Node8, c: usize) -> f32 {
     let mut t_near = [0.0f32; W];
@@ -250,6 +251,7 @@ fn enter(p: &Packet, t_best: &[f32; W], node: &super::lanes::Node8, c: usize) ->
     }
     smallest(near)
 }
+// ANCHOR_END: packet_enter
 
 /// The smallest of the lanes, pairwise (three vector steps, not a chain
 /// of eight scalar ones; the lanes are never NaN).

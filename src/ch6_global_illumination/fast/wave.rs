@@ -3,7 +3,8 @@
 //! few thousand paths at once and extends all of them by one bounce per
 //! round:
 //!
-//! 1. every live path's ray finds its closest hit (the eight-wide tree);
+//! 1. every live path's ray finds its closest hit (the eight-wide tree;
+//!    the first round's camera rays eight at a time, [`super::packet`]);
 //! 2. the hits are shaded eight at a time ([`shade8`](super::shade8::shade8)): the local frame,
 //!    the light sample with its MIS weight, the cosine-weighted next
 //!    direction and Russian roulette, each step one pass over eight lanes
