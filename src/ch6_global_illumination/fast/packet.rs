@@ -2,7 +2,7 @@
 //! round of paths leave the same eye through the same pixel, so they open
 //! the same nodes and leaves of the tree: one traversal for all eight,
 //! with one ray per lane, does each box and triangle test once for the
-//! eight where [`Bvh8::closest_with`] does it eight times, and makes its
+//! eight where the one-ray `Bvh8::closest_with` does it eight times, and makes its
 //! branches once.
 //!
 //! Each lane runs the one-ray test's arithmetic in its order (the slab
@@ -123,7 +123,7 @@ struct Front {
 }
 
 /// Whether eight rays go through the tree together in
-/// [`closest8`] (the same permutation and direction signs), rather than
+/// `closest8` (the same permutation and direction signs), rather than
 /// one at a time.
 pub fn together(rays: &[Ray]) -> bool {
     rays.len() == W && Packet::new(rays).is_some()
@@ -138,7 +138,7 @@ struct Best {
 }
 
 /// The closest hits of eight `rays` in (0, ∞), into `out` (eight
-/// entries), as [`Bvh8::closest_with`] finds them.
+/// entries), as `Bvh8::closest_with` finds them.
 #[inline(always)]
 pub(super) fn closest8(bvh: &Bvh8, rays: &[Ray], out: &mut [Option<Hit>]) {
     let one_by_one = |out: &mut [Option<Hit>], lanes: u32| {

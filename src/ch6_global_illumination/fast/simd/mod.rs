@@ -81,8 +81,8 @@ pub fn closest_all(level: Level, bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option
 }
 
 /// [`closest_all`] for a round of camera rays, eight at a time through
-/// [`packet::closest8`](super::packet::closest8) (the last few one at a
-/// time), with the tree's instructions: the same lane loops on every
+/// the group traversal of [`packet`](super::packet) (the last few one at
+/// a time), with the tree's instructions: the same lane loops on every
 /// path, so the same bits.
 pub fn closest_packets(bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option<Hit>>) {
     hits.clear();
