@@ -487,3 +487,41 @@ fn the_lanes_triangle_pick_and_its_corners_are_the_lights() {
     assert!(pick8(&many, &[0.5; 8]).is_none());
     assert!(!fill_light8(&many, 1.0, &mut In8::default()));
 }
+
+#[test]
+fn the_sobol_lanes_are_the_same_bits_on_every_simd_path() {
+    use raystep::ch6_global_illumination::fast::simd::sobol_groups8_at;
+    use raystep::ch6_global_illumination::fast::sobol8::sobol_groups8;
+    // Sample indices across the tables' range (every bit of the shuffled
+    // index in play), pixels and groups of all sizes.
+    let mut h = 0x2545_f491_4f6c_dd1du64;
+    let mut next = || {
+        h ^= h << 13;
+        h ^= h >> 7;
+        h ^= h << 17;
+        h
+    };
+    let mut compared = 0;
+    for round in 0..200u64 {
+        let sample: [u32; 8] = std::array::from_fn(|_| (next() >> 48) as u32);
+        let scramble: [u64; 8] = std::array::from_fn(|_| next());
+        let group = round % 40;
+        let one = sobol_groups8::<1>(&sample, &scramble, group);
+        let two = sobol_groups8::<2>(&sample, &scramble, group);
+        for level in Level::ALL.into_iter().filter(|l| l.available()) {
+            let bits = |v: f32| v.to_bits();
+            let got1 = sobol_groups8_at::<1>(level, &sample, &scramble, group);
+            let got2 = sobol_groups8_at::<2>(level, &sample, &scramble, group);
+            assert_eq!(
+                got1.map(|g| g.map(|d| d.map(bits))),
+                one.map(|g| g.map(|d| d.map(bits)))
+            );
+            assert_eq!(
+                got2.map(|g| g.map(|d| d.map(bits))),
+                two.map(|g| g.map(|d| d.map(bits)))
+            );
+            compared += 1;
+        }
+    }
+    assert!(compared >= 200);
+}

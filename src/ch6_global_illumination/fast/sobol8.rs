@@ -57,19 +57,8 @@ pub fn sobol_groups8<const G: usize>(
     pixel_scramble: &[u64; 8],
     group: u64,
 ) -> [[[f32; 8]; 4]; G] {
+    let (seed, rev) = sobol_indices8::<G>(sample, pixel_scramble, group);
     let t = byte_tables();
-    let mut seed = [[0u32; 8]; G];
-    let mut rev = [[0u32; 8]; G];
-    for g in 0..G {
-        for j in 0..8 {
-            seed[g][j] = mix64(pixel_scramble[j] ^ (group + g as u64)) as u32;
-        }
-    }
-    for g in 0..G {
-        for j in 0..8 {
-            rev[g][j] = owen_scramble_rev(sample[j].reverse_bits(), hash(seed[g][j] ^ 0x79c68e4a));
-        }
-    }
     let mut sobol = [[[0u32; 8]; 4]; G];
     for g in 0..G {
         for j in 0..8 {
@@ -82,6 +71,45 @@ pub fn sobol_groups8<const G: usize>(
             }
         }
     }
+    sobol_finish8(&sobol, &seed)
+}
+
+/// The first steps of [`sobol_groups8`]: each group's scramble seed per
+/// path, and each path's shuffled sample index in that group (reversed
+/// bits), `[g][j]`.
+// Lane loops index several arrays by lane, on purpose (vector code).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+pub fn sobol_indices8<const G: usize>(
+    sample: &[u32; 8],
+    pixel_scramble: &[u64; 8],
+    group: u64,
+) -> ([[u32; 8]; G], [[u32; 8]; G]) {
+    let mut seed = [[0u32; 8]; G];
+    let mut rev = [[0u32; 8]; G];
+    for g in 0..G {
+        for j in 0..8 {
+            seed[g][j] = mix64(pixel_scramble[j] ^ (group + g as u64)) as u32;
+        }
+    }
+    for g in 0..G {
+        for j in 0..8 {
+            rev[g][j] = owen_scramble_rev(sample[j].reverse_bits(), hash(seed[g][j] ^ 0x79c68e4a));
+        }
+    }
+    (seed, rev)
+}
+
+/// The last steps of [`sobol_groups8`]: the Sobol points `sobol[g][d][j]`
+/// (reversed bits) scrambled with their groups' seeds and turned into
+/// numbers in [0, 1).
+// Lane loops index several arrays by lane, on purpose (vector code).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+pub fn sobol_finish8<const G: usize>(
+    sobol: &[[[u32; 8]; 4]; G],
+    seed: &[[u32; 8]; G],
+) -> [[[f32; 8]; 4]; G] {
     let mut out = [[[0.0f32; 8]; 4]; G];
     for g in 0..G {
         for d in 0..4 {
@@ -91,6 +119,31 @@ pub fn sobol_groups8<const G: usize>(
         }
     }
     out
+}
+
+/// The Sobol point of dimensions 0..4 as eight-entry tables, for look-ups
+/// with a vector permute: table `c` holds, for each value v of three bits
+/// of a reversed index (bits 16 + 3c .. 16 + 3c + 3; the last one only
+/// bit 31), the XOR of those bits' direction numbers. A point is the XOR
+/// of six look-ups, the same bits as the byte tables' two.
+pub fn chunk_tables() -> &'static [[[u32; 8]; 4]; 6] {
+    static TABLES: std::sync::OnceLock<[[[u32; 8]; 4]; 6]> = std::sync::OnceLock::new();
+    TABLES.get_or_init(|| {
+        let mut t = [[[0u32; 8]; 4]; 6];
+        for (c, table) in t.iter_mut().enumerate() {
+            let shift = 16 + 3 * c as u32;
+            for v in 0..8u32 {
+                // Bits past 31 do not exist: the last table's upper half
+                // repeats its lower.
+                let bits = if shift + 3 > 32 { v & 1 } else { v };
+                let point: [u32; 4] = sobol_burley::parts::sobol_int4_rev(bits << shift, 0).into();
+                for d in 0..4 {
+                    table[d][v as usize] = point[d];
+                }
+            }
+        }
+        t
+    })
 }
 
 /// For each byte of a reversed sample index (bits 31..24, then 23..16;

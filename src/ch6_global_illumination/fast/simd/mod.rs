@@ -280,6 +280,10 @@ pub fn sobol_groups8_at<const G: usize>(
     }
 }
 
+/// [`sobol_groups8`](super::sobol8::sobol_groups8) with the Sobol point
+/// looked up by vector permutes ([`chunk_tables`](super::sobol8::chunk_tables)):
+/// eight lanes' look-ups of a dimension in six permutes, where the byte
+/// tables take two scalar loads per lane and a transpose. The same bits.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn sobol_groups8_avx2<const G: usize>(
@@ -287,7 +291,31 @@ unsafe fn sobol_groups8_avx2<const G: usize>(
     pixel_scramble: &[u64; 8],
     group: u64,
 ) -> [[[f32; 8]; 4]; G] {
-    super::sobol8::sobol_groups8(sample, pixel_scramble, group)
+    use std::arch::x86_64::*;
+    let (seed, rev) = super::sobol8::sobol_indices8::<G>(sample, pixel_scramble, group);
+    let t = super::sobol8::chunk_tables();
+    let mut sobol = [[[0u32; 8]; 4]; G];
+    for g in 0..G {
+        // SAFETY: the CPU has AVX2 (the caller checked), and every load
+        // and store reads or writes a whole `[u32; 8]`.
+        unsafe {
+            let r = _mm256_loadu_si256(rev[g].as_ptr().cast());
+            let mut acc = [_mm256_setzero_si256(); 4];
+            for (c, table) in t.iter().enumerate() {
+                // A permute reads the low three bits of each lane's index.
+                let index = _mm256_srlv_epi32(r, _mm256_set1_epi32(16 + 3 * c as i32));
+                for d in 0..4 {
+                    let entries = _mm256_loadu_si256(table[d].as_ptr().cast());
+                    let v = _mm256_permutevar8x32_epi32(entries, index);
+                    acc[d] = _mm256_xor_si256(acc[d], v);
+                }
+            }
+            for d in 0..4 {
+                _mm256_storeu_si256(sobol[g][d].as_mut_ptr().cast(), acc[d]);
+            }
+        }
+    }
+    super::sobol8::sobol_finish8(&sobol, &seed)
 }
 
 /// [`independent8`](super::sobol8::independent8) with `level`'s
