@@ -2,17 +2,18 @@
 //! round of paths leave the same eye through the same pixel, so they open
 //! the same nodes and leaves of the tree: one traversal for all eight,
 //! with one ray per lane, does each box and triangle test once for the
-//! eight where the one-ray `Bvh8::closest_with` does it eight times, and makes its
-//! branches once.
+//! eight where the one-ray `Bvh8::closest_with` does it eight times, and
+//! makes its branches once.
 //!
 //! Each lane runs the one-ray test's arithmetic in its order (the slab
 //! test, the watertight test with the ray's own shear, pbrt-v4's error
 //! bound), so a ray's hit is the one the one-ray traversal finds: the
 //! nearest trusted hit, t, u and v to the bit. Two things send a ray back
-//! to the one-ray traversal: eight rays whose largest direction component
-//! is not on the same axis (the test's permutation differs), and a lane
-//! the one-ray test would hand to its exact fallback (an edge function
-//! exactly zero, or a t too small to trust). A tie (two triangles at
+//! to the one-ray traversal: eight rays whose largest direction components
+//! are not on the same axis (the test's permutation differs) or whose
+//! directions differ in sign on some axis (the slab test's near and far
+//! sides differ), and a lane the one-ray test would hand to its exact
+//! fallback (an edge function exactly zero, or a t too small to trust). A tie (two triangles at
 //! exactly the same t, which only coincident surfaces give) may go to
 //! another of the tied triangles than the one-ray order picks.
 
