@@ -121,16 +121,147 @@ pub(super) struct Hits8 {
     pub(super) v: [f32; W],
 }
 
+/// One lane of the watertight test's first half: a triangle's corners
+/// (coordinates on the ray's permuted axes: `px[vertex]`, ...) moved into
+/// the frame of a ray with permuted origin `ko` and shear `s`, the edge
+/// functions, and whether the ray can hit it in (0, t_max). The one-ray
+/// test's arithmetic in its order, so that a loop over lanes (triangles
+/// or rays) gives the same bits whichever way it runs.
+pub(super) struct FrontLane {
+    pub(super) x: [f32; 3],
+    pub(super) y: [f32; 3],
+    /// The corners' z, sheared (times sz).
+    pub(super) z: [f32; 3],
+    pub(super) e: [f32; 3],
+    pub(super) det: f32,
+    /// t times det.
+    pub(super) ts: f32,
+    pub(super) candidate: bool,
+    /// An edge function is exactly zero (the one-triangle test decides).
+    pub(super) zero: bool,
+}
+
+/// Eight lanes' [`FrontLane`]s stored by field (`x[vertex][lane]`, ...),
+/// the form whose lane loops become vector instructions.
+#[derive(Default)]
+pub(super) struct Fronts {
+    pub(super) x: [[f32; W]; 3],
+    pub(super) y: [[f32; W]; 3],
+    pub(super) z: [[f32; W]; 3],
+    pub(super) e: [[f32; W]; 3],
+    pub(super) det: [f32; W],
+    pub(super) ts: [f32; W],
+    pub(super) candidate: [bool; W],
+    pub(super) zero: [bool; W],
+}
+
+impl Fronts {
+    /// Stores lane `j`.
+    #[inline(always)]
+    pub(super) fn set(&mut self, j: usize, f: &FrontLane) {
+        for c in 0..3 {
+            (self.x[c][j], self.y[c][j], self.z[c][j]) = (f.x[c], f.y[c], f.z[c]);
+            self.e[c][j] = f.e[c];
+        }
+        (self.det[j], self.ts[j]) = (f.det, f.ts);
+        (self.candidate[j], self.zero[j]) = (f.candidate, f.zero);
+    }
+
+    /// Lane `j` again.
+    #[inline(always)]
+    pub(super) fn get(&self, j: usize) -> FrontLane {
+        let at = |v: &[[f32; W]; 3]| [v[0][j], v[1][j], v[2][j]];
+        FrontLane {
+            x: at(&self.x),
+            y: at(&self.y),
+            z: at(&self.z),
+            e: at(&self.e),
+            det: self.det[j],
+            ts: self.ts[j],
+            candidate: self.candidate[j],
+            zero: self.zero[j],
+        }
+    }
+}
+
+// ANCHOR: front_lane
+#[inline(always)]
+pub(super) fn front_lane(
+    (px, py, pz): ([f32; 3], [f32; 3], [f32; 3]),
+    ([ox, oy, oz], [sx, sy, sz]): ([f32; 3], [f32; 3]),
+    t_max: f32,
+) -> FrontLane {
+    // Translate, permute and shear each vertex (a, b, c).
+    let (z0, z1, z2) = (pz[0] - oz, pz[1] - oz, pz[2] - oz);
+    let (x0, x1, x2) = (
+        (px[0] - ox) + sx * z0,
+        (px[1] - ox) + sx * z1,
+        (px[2] - ox) + sx * z2,
+    );
+    let (y0, y1, y2) = (
+        (py[0] - oy) + sy * z0,
+        (py[1] - oy) + sy * z1,
+        (py[2] - oy) + sy * z2,
+    );
+    // The edge functions.
+    let e0 = x1 * y2 - y1 * x2;
+    let e1 = x2 * y0 - y2 * x0;
+    let e2 = x0 * y1 - y0 * x1;
+    let zero = (e0 == 0.0) | (e1 == 0.0) | (e2 == 0.0);
+    let neg = (e0 < 0.0) | (e1 < 0.0) | (e2 < 0.0);
+    let pos = (e0 > 0.0) | (e1 > 0.0) | (e2 > 0.0);
+    let d = e0 + e1 + e2;
+    let (z0, z1, z2) = (z0 * sz, z1 * sz, z2 * sz);
+    let t_scaled = e0 * z0 + e1 * z1 + e2 * z2;
+    let (lo, hi) = (0.0 * d, t_max * d);
+    let in_neg = (d < 0.0) & (t_scaled < lo) & (t_scaled >= hi);
+    let in_pos = (d > 0.0) & (t_scaled > lo) & (t_scaled <= hi);
+    let finite = d.abs() < f32::INFINITY;
+    FrontLane {
+        x: [x0, x1, x2],
+        y: [y0, y1, y2],
+        z: [z0, z1, z2],
+        e: [e0, e1, e2],
+        det: d,
+        ts: t_scaled,
+        candidate: !(neg & pos) & finite & (in_neg | in_pos),
+        zero,
+    }
+}
+// ANCHOR_END: front_lane
+
+/// One lane of the second half, for a lane that can hit ([`FrontLane`]'s
+/// numbers, read back from wherever a lane loop keeps them): t, 1/det,
+/// and whether pbrt-v4's bound on the rounding error of t trusts it.
+// ANCHOR: trust_lane
+#[inline(always)]
+pub(super) fn trust_lane(f: &FrontLane) -> (f32, f32, bool) {
+    let g = gamma;
+    let max3 = |v: &[f32; 3]| v[0].abs().max(v[1].abs()).max(v[2].abs());
+    let inv_det = 1.0 / f.det;
+    let t = f.ts * inv_det;
+    let (max_zt, max_xt, max_yt) = (max3(&f.z), max3(&f.x), max3(&f.y));
+    let delta_z = g(3) * max_zt;
+    let delta_x = g(5) * (max_xt + max_zt);
+    let delta_y = g(5) * (max_yt + max_zt);
+    let delta_e = 2.0 * (g(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+    let max_e = max3(&f.e);
+    let delta_t =
+        3.0 * (g(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs();
+    (t, inv_det, t > delta_t)
+}
+// ANCHOR_END: trust_lane
+
 /// The watertight test on a leaf's eight triangles in (0, t_max), lane
-/// by lane in the order of the four-wide test. One loop without branches
-/// (bitwise `&` and `|` on the comparisons, no early exit), which the
-/// compiler turns into vector instructions.
+/// by lane ([`front_lane`], [`trust_lane`]) in the order of the four-wide
+/// test. One loop without branches (bitwise `&` and `|` on the
+/// comparisons, no early exit), which the compiler turns into vector
+/// instructions.
 // ANCHOR: leaf8
+#[allow(clippy::needless_range_loop)] // lane loops, on purpose
 #[inline(always)]
 pub(super) fn leaf_test(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
     let (px, py, pz) = (&leaf.p[r.k[0]], &leaf.p[r.k[1]], &leaf.p[r.k[2]]);
-    let [ox, oy, oz] = r.ko;
-    let [sx, sy, sz] = r.s;
     let mut h = Hits8 {
         hit: 0,
         check: 0,
@@ -141,68 +272,27 @@ pub(super) fn leaf_test(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
     // First the edge functions and which lanes can hit at all; the
     // division and the error bound only when one can (most leaves a ray
     // enters hold no hit).
-    let mut e = [[0.0f32; W]; 3];
-    let (mut xs, mut ys, mut zs) = ([[0.0f32; W]; 3], [[0.0f32; W]; 3], [[0.0f32; W]; 3]);
-    let (mut det, mut ts) = ([0.0f32; W], [0.0f32; W]);
-    let (mut candidate, mut any_zero) = ([false; W], [false; W]);
+    let mut f = Fronts::default();
     for i in 0..W {
-        // Translate, permute and shear each vertex (a, b, c).
-        let (z0, z1, z2) = (pz[0][i] - oz, pz[1][i] - oz, pz[2][i] - oz);
-        let (x0, x1, x2) = (
-            (px[0][i] - ox) + sx * z0,
-            (px[1][i] - ox) + sx * z1,
-            (px[2][i] - ox) + sx * z2,
+        let tri = (
+            [px[0][i], px[1][i], px[2][i]],
+            [py[0][i], py[1][i], py[2][i]],
+            [pz[0][i], pz[1][i], pz[2][i]],
         );
-        let (y0, y1, y2) = (
-            (py[0][i] - oy) + sy * z0,
-            (py[1][i] - oy) + sy * z1,
-            (py[2][i] - oy) + sy * z2,
-        );
-        // The edge functions.
-        let e0 = x1 * y2 - y1 * x2;
-        let e1 = x2 * y0 - y2 * x0;
-        let e2 = x0 * y1 - y0 * x1;
-        any_zero[i] = (e0 == 0.0) | (e1 == 0.0) | (e2 == 0.0);
-        let neg = (e0 < 0.0) | (e1 < 0.0) | (e2 < 0.0);
-        let pos = (e0 > 0.0) | (e1 > 0.0) | (e2 > 0.0);
-        let d = e0 + e1 + e2;
-        let (z0, z1, z2) = (z0 * sz, z1 * sz, z2 * sz);
-        let t_scaled = e0 * z0 + e1 * z1 + e2 * z2;
-        let (lo, hi) = (0.0 * d, t_max * d);
-        let in_neg = (d < 0.0) & (t_scaled < lo) & (t_scaled >= hi);
-        let in_pos = (d > 0.0) & (t_scaled > lo) & (t_scaled <= hi);
-        let finite = d.abs() < f32::INFINITY;
-        candidate[i] = !(neg & pos) & finite & (in_neg | in_pos);
-        (e[0][i], e[1][i], e[2][i]) = (e0, e1, e2);
-        (xs[0][i], xs[1][i], xs[2][i]) = (x0, x1, x2);
-        (ys[0][i], ys[1][i], ys[2][i]) = (y0, y1, y2);
-        (zs[0][i], zs[1][i], zs[2][i]) = (z0, z1, z2);
-        (det[i], ts[i]) = (d, t_scaled);
+        f.set(i, &front_lane(tri, (r.ko, r.s), t_max));
     }
-    let (candidates, zeros) = (mask(candidate), mask(any_zero));
+    let (candidates, zeros) = (mask(f.candidate), mask(f.zero));
     if candidates == 0 {
         h.check = zeros;
         return h;
     }
-    let g = gamma;
     let mut trusted = [false; W];
-    let max3 = |v: &[[f32; W]; 3], i: usize| v[0][i].abs().max(v[1][i].abs()).max(v[2][i].abs());
     for i in 0..W {
-        let inv_det = 1.0 / det[i];
-        let t = ts[i] * inv_det;
-        // pbrt-v4's bound on the rounding error of t.
-        let (max_zt, max_xt, max_yt) = (max3(&zs, i), max3(&xs, i), max3(&ys, i));
-        let delta_z = g(3) * max_zt;
-        let delta_x = g(5) * (max_xt + max_zt);
-        let delta_y = g(5) * (max_yt + max_zt);
-        let delta_e = 2.0 * (g(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
-        let max_e = max3(&e, i);
-        let delta_t =
-            3.0 * (g(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs();
-        trusted[i] = t > delta_t;
+        let (t, inv_det, trust) = trust_lane(&f.get(i));
+        trusted[i] = trust;
         h.t[i] = t;
-        h.u[i] = e[1][i] * inv_det;
-        h.v[i] = e[2][i] * inv_det;
+        h.u[i] = f.e[1][i] * inv_det;
+        h.v[i] = f.e[2][i] * inv_det;
     }
     let trusted = mask(trusted);
     h.hit = candidates & trusted & !zeros;

@@ -21,14 +21,10 @@
 #![allow(clippy::needless_range_loop)]
 
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::triangle::{gamma, Hit};
+use crate::ch3_ray_triangle::triangle::Hit;
 
 use super::bvh8::Bvh8;
-use super::lanes::{RayData, FAR_STRETCH, LEAF, W};
-
-/// Most stack entries a packet traversal keeps (deeper trees go one ray at
-/// a time).
-const STACK: usize = 64;
+use super::lanes::{front_lane, trust_lane, Fronts, RayData, FAR_STRETCH, LEAF, W};
 
 /// Eight rays' numbers, by lane: the slab test's origin and 1/direction,
 /// the watertight test's permuted origin and shear; the direction signs
@@ -107,22 +103,6 @@ impl Packet {
     }
 }
 
-/// The first half of the triangle test for eight rays: the corners in
-/// each ray's frame (x, y and the sheared z), the edge functions, det and
-/// the scaled t, and which rays can hit and which have an edge function
-/// exactly zero.
-#[derive(Default)]
-struct Front {
-    x: [[f32; W]; 3],
-    y: [[f32; W]; 3],
-    z: [[f32; W]; 3],
-    e: [[f32; W]; 3],
-    det: [f32; W],
-    ts: [f32; W],
-    candidate: [bool; W],
-    zero: [bool; W],
-}
-
 /// Whether eight rays go through the tree together in
 /// `closest8` (the same permutation and direction signs), rather than
 /// one at a time.
@@ -139,20 +119,19 @@ struct Best {
 }
 
 /// The closest hits of eight `rays` in (0, ∞), into `out` (eight
-/// entries), as `Bvh8::closest_with` finds them.
+/// entries), as `Bvh8::closest_with` finds them; `stack` holds at least
+/// [`Bvh8::stack_size`] entries (a group pushes every child it enters, at
+/// most eight at a node and seven left at each node above it, which that
+/// bound covers).
 #[inline(always)]
-pub(super) fn closest8(bvh: &Bvh8, rays: &[Ray], out: &mut [Option<Hit>]) {
-    let one_by_one = |out: &mut [Option<Hit>], lanes: u32| {
-        let stack = &mut vec![(0u32, 0f32); bvh.stack_size()];
-        for (j, ray) in rays.iter().enumerate().filter(|(j, _)| lanes >> j & 1 != 0) {
-            out[j] = bvh.closest_with(&RayData::new(ray), f32::INFINITY, stack);
-        }
-    };
-    let packet = (bvh.stack_size() <= STACK)
-        .then(|| Packet::new(rays))
-        .flatten();
-    let Some(p) = packet else {
-        return one_by_one(out, 0xff);
+pub(super) fn closest8(
+    bvh: &Bvh8,
+    rays: &[Ray],
+    out: &mut [Option<Hit>],
+    stack: &mut [(u32, f32)],
+) {
+    let Some(p) = Packet::new(rays) else {
+        return one_by_one(bvh, rays, out, 0xff, stack);
     };
     let mut best = Best {
         t: [f32::INFINITY; W],
@@ -164,7 +143,6 @@ pub(super) fn closest8(bvh: &Bvh8, rays: &[Ray], out: &mut [Option<Hit>]) {
     let mut redo = 0u32;
     // Subtrees to visit, each with the nearest distance at which a lane
     // enters its box.
-    let mut stack = [(0u32, 0f32); STACK];
     let mut depth = 0;
     let mut at = bvh.root;
     loop {
@@ -210,7 +188,7 @@ pub(super) fn closest8(bvh: &Bvh8, rays: &[Ray], out: &mut [Option<Hit>]) {
                     });
                 }
                 if redo != 0 {
-                    one_by_one(out, redo);
+                    one_by_one(bvh, rays, out, redo, stack);
                 }
                 return;
             }
@@ -220,6 +198,19 @@ pub(super) fn closest8(bvh: &Bvh8, rays: &[Ray], out: &mut [Option<Hit>]) {
                 break;
             }
         }
+    }
+}
+
+/// The one-ray traversal for the rays of `lanes` (a bit per ray).
+fn one_by_one(
+    bvh: &Bvh8,
+    rays: &[Ray],
+    out: &mut [Option<Hit>],
+    lanes: u32,
+    stack: &mut [(u32, f32)],
+) {
+    for (j, ray) in rays.iter().enumerate().filter(|(j, _)| lanes >> j & 1 != 0) {
+        out[j] = bvh.closest_with(&RayData::new(ray), f32::INFINITY, stack);
     }
 }
 
@@ -295,75 +286,38 @@ fn largest(v: [f32; W]) -> f32 {
 /// (0, its nearest hit so far)), in lane order with a later triangle
 /// winning a tie, as the one-ray leaf test picks: updates `best`, and
 /// returns the lanes that the one-ray test's exact fallback must decide.
+/// Each lane runs the one-ray test's halves ([`front_lane`],
+/// [`trust_lane`]) with triangle i and its own ray.
 #[inline(always)]
 fn leaf(p: &Packet, bvh: &Bvh8, l: usize, best: &mut Best) -> u32 {
     let leaf = &bvh.leaves[l];
     let (px, py, pz) = (&leaf.p[p.k[0]], &leaf.p[p.k[1]], &leaf.p[p.k[2]]);
-    let g = gamma;
     let mut check = [false; W];
     for i in 0..W {
         let triangle = bvh.original[l * W + i];
         if triangle == u32::MAX {
             continue;
         }
-        // The first half of `leaf_test`'s arithmetic, for triangle i and
-        // each ray j: the edge functions and which rays can hit at all.
-        let mut f = Front::default();
+        let tri = (
+            [px[0][i], px[1][i], px[2][i]],
+            [py[0][i], py[1][i], py[2][i]],
+            [pz[0][i], pz[1][i], pz[2][i]],
+        );
+        let mut f = Fronts::default();
         for j in 0..W {
-            let [ox, oy, oz] = [p.ko[0][j], p.ko[1][j], p.ko[2][j]];
-            let [sx, sy, sz] = [p.s[0][j], p.s[1][j], p.s[2][j]];
-            let t_max = best.t[j];
-            let (z0, z1, z2) = (pz[0][i] - oz, pz[1][i] - oz, pz[2][i] - oz);
-            let (x0, x1, x2) = (
-                (px[0][i] - ox) + sx * z0,
-                (px[1][i] - ox) + sx * z1,
-                (px[2][i] - ox) + sx * z2,
+            let ray = (
+                [p.ko[0][j], p.ko[1][j], p.ko[2][j]],
+                [p.s[0][j], p.s[1][j], p.s[2][j]],
             );
-            let (y0, y1, y2) = (
-                (py[0][i] - oy) + sy * z0,
-                (py[1][i] - oy) + sy * z1,
-                (py[2][i] - oy) + sy * z2,
-            );
-            let e0 = x1 * y2 - y1 * x2;
-            let e1 = x2 * y0 - y2 * x0;
-            let e2 = x0 * y1 - y0 * x1;
-            let any_zero = (e0 == 0.0) | (e1 == 0.0) | (e2 == 0.0);
-            let neg = (e0 < 0.0) | (e1 < 0.0) | (e2 < 0.0);
-            let pos = (e0 > 0.0) | (e1 > 0.0) | (e2 > 0.0);
-            let d = e0 + e1 + e2;
-            let (z0, z1, z2) = (z0 * sz, z1 * sz, z2 * sz);
-            let t_scaled = e0 * z0 + e1 * z1 + e2 * z2;
-            let (lo, hi) = (0.0 * d, t_max * d);
-            let in_neg = (d < 0.0) & (t_scaled < lo) & (t_scaled >= hi);
-            let in_pos = (d > 0.0) & (t_scaled > lo) & (t_scaled <= hi);
-            let finite = d.abs() < f32::INFINITY;
-            f.candidate[j] = !(neg & pos) & finite & (in_neg | in_pos);
-            check[j] |= any_zero;
-            f.zero[j] = any_zero;
-            (f.e[0][j], f.e[1][j], f.e[2][j]) = (e0, e1, e2);
-            (f.x[0][j], f.x[1][j], f.x[2][j]) = (x0, x1, x2);
-            (f.y[0][j], f.y[1][j], f.y[2][j]) = (y0, y1, y2);
-            (f.z[0][j], f.z[1][j], f.z[2][j]) = (z0, z1, z2);
-            (f.det[j], f.ts[j]) = (d, t_scaled);
+            f.set(j, &front_lane(tri, ray, best.t[j]));
+            check[j] |= f.zero[j];
         }
         if !f.candidate.iter().any(|&c| c) {
             continue;
         }
-        // The second half, where a ray can hit: t, and whether pbrt-v4's
-        // error bound trusts it.
+        // The second half, where a ray can hit.
         for j in 0..W {
-            let max3 = |v: &[[f32; W]; 3]| v[0][j].abs().max(v[1][j].abs()).max(v[2][j].abs());
-            let inv_det = 1.0 / f.det[j];
-            let t = f.ts[j] * inv_det;
-            let (max_zt, max_xt, max_yt) = (max3(&f.z), max3(&f.x), max3(&f.y));
-            let delta_z = g(3) * max_zt;
-            let delta_x = g(5) * (max_xt + max_zt);
-            let delta_y = g(5) * (max_yt + max_zt);
-            let delta_e = 2.0 * (g(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
-            let max_e = max3(&f.e);
-            let delta_t =
-                3.0 * (g(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs();
-            let trusted = t > delta_t;
+            let (t, inv_det, trusted) = trust_lane(&f.get(j));
             let candidate = f.candidate[j];
             let hit = candidate & trusted & !f.zero[j];
             check[j] |= candidate & !trusted;

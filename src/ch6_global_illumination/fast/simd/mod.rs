@@ -103,10 +103,10 @@ pub fn closest_packets(bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option<Hit>>) {
 #[inline(always)]
 fn closest_packets_lanes(bvh: &Bvh8, rays: &[Ray], hits: &mut [Option<Hit>]) {
     let eights = rays.len() / 8 * 8;
-    for (r, h) in rays[..eights].chunks_exact(8).zip(hits.chunks_exact_mut(8)) {
-        super::packet::closest8(bvh, r, h);
-    }
     let stack = &mut vec![(0u32, 0f32); bvh.stack_size()];
+    for (r, h) in rays[..eights].chunks_exact(8).zip(hits.chunks_exact_mut(8)) {
+        super::packet::closest8(bvh, r, h, stack);
+    }
     for (ray, hit) in rays[eights..].iter().zip(&mut hits[eights..]) {
         *hit = bvh.closest_with(&RayData::new(ray), f32::INFINITY, stack);
     }
