@@ -339,6 +339,7 @@ fn the_lanes_truncation_is_rusts_cast() {
 
 #[test]
 fn eight_paths_numbers_are_the_samplers_bit_for_bit() {
+    use raystep::ch6_global_illumination::fast::simd::independent8_at;
     use raystep::ch6_global_illumination::fast::sobol8::{
         independent8, sobol_group8, sobol_groups8,
     };
@@ -369,7 +370,18 @@ fn eight_paths_numbers_are_the_samplers_bit_for_bit() {
                     SamplerKind::Independent => {
                         let prefix =
                             std::array::from_fn(|j| samplers[j].independent_prefix().unwrap());
-                        independent8(&prefix, first)
+                        let lanes = independent8(&prefix, first);
+                        // Every SIMD path (AVX-512's multiplies 64-bit
+                        // lanes in one instruction) gives the same bits.
+                        for level in Level::ALL.into_iter().filter(|l| l.available()) {
+                            let at = independent8_at(level, &prefix, first);
+                            assert_eq!(
+                                at.map(|d| d.map(f32::to_bits)),
+                                lanes.map(|d| d.map(f32::to_bits)),
+                                "{level:?}"
+                            );
+                        }
+                        lanes
                     }
                 };
                 for (j, s) in samplers.iter().enumerate() {
