@@ -11,6 +11,7 @@
 //! readable engine's.
 
 use glam::Vec3;
+use obvhs::aabb::Aabb;
 use obvhs::bvh2::Bvh2;
 use obvhs::BvhBuildParams;
 
@@ -53,18 +54,87 @@ pub struct Bvh8 {
 /// more than the boxes' padding, does not enter). Larger scenes have
 /// no such leaf; a flat scene (no volume) is left as it is.
 fn open_rooms(bvh2: &Bvh2, counts: &mut [u32]) {
-    let volume = |n: usize| {
-        let d = bvh2.nodes[n].aabb.max - bvh2.nodes[n].aabb.min;
-        d.x * d.y * d.z
-    };
-    let whole = volume(0);
+    let whole = volume(&bvh2.nodes[0].aabb);
     for (n, count) in counts.iter_mut().enumerate() {
-        if (2..=LEAF_SIZE as u32).contains(count) && volume(n) > 0.5 * whole {
+        if (2..=LEAF_SIZE as u32).contains(count) && volume(&bvh2.nodes[n].aabb) > 0.5 * whole {
             *count = LEAF_SIZE as u32 + 1;
         }
     }
 }
 // ANCHOR_END: open_rooms
+
+/// The volume of `b`.
+fn volume(b: &Aabb) -> f32 {
+    let d = b.max - b.min;
+    d.x * d.y * d.z
+}
+
+/// The box around triangles `ids` (their padded boxes).
+fn bounds(ids: &[u32], boxes: &[Aabb]) -> Aabb {
+    let mut b = Aabb::INVALID;
+    for &i in ids {
+        b = b.union(&boxes[i as usize]);
+    }
+    b
+}
+
+// ANCHOR: pack_leaves
+/// A better way to put triangles `ids` (more than one leaf's worth, at
+/// most a node's) into leaves than the binary tree's, whose leaves have
+/// boxes of half-area `area` in all: `None` if there is none.
+///
+/// A ray tests a leaf when it enters the leaf's box, which happens about
+/// in proportion to the box's area, so the best leaves are those whose
+/// areas add up to the least. The binary tree splits a box's twelve
+/// triangles into two leaves of four sides each, both as big as the box,
+/// and a ray that meets the box tests both. Sorted along an axis (by
+/// their boxes' centres), the same triangles split into the bottom, the
+/// four sides and the top: a ray that meets the box tests the sides and
+/// only the flat top or bottom it crosses. This finds, for each axis, the
+/// runs of at most [`LEAF_SIZE`] consecutive triangles whose boxes' areas
+/// add up to the least (a shortest path over the sorted list), and keeps
+/// the best axis if it beats the binary tree's leaves by a tenth. A leaf
+/// whose box would hold more than `room` (half the tree's volume) is not
+/// allowed, for the reason [`open_rooms`] gives.
+fn pack_leaves(ids: &[u32], boxes: &[Aabb], area: f32, room: f32) -> Option<Vec<Vec<u32>>> {
+    let mut best: Option<(f32, Vec<Vec<u32>>)> = None;
+    for axis in 0..3 {
+        let mut sorted = ids.to_vec();
+        let centre = |i: &u32| boxes[*i as usize].center()[axis];
+        sorted.sort_by(|a, b| centre(a).total_cmp(&centre(b)));
+        // cost[k]: the least area of leaves holding the first k triangles,
+        // the last leaf starting at from[k].
+        let n = sorted.len();
+        let mut cost = vec![f32::INFINITY; n + 1];
+        let mut from = vec![0; n + 1];
+        cost[0] = 0.0;
+        for end in 1..=n {
+            for start in end.saturating_sub(LEAF_SIZE)..end {
+                let b = bounds(&sorted[start..end], boxes);
+                if end - start > 1 && volume(&b) > room {
+                    continue;
+                }
+                let c = cost[start] + b.half_area();
+                if c < cost[end] {
+                    (cost[end], from[end]) = (c, start);
+                }
+            }
+        }
+        let mut groups = Vec::new();
+        let mut end = n;
+        while end > 0 {
+            groups.push(sorted[from[end]..end].to_vec());
+            end = from[end];
+        }
+        groups.reverse();
+        let fits = cost[n].is_finite() && groups.len() <= W;
+        if fits && best.as_ref().is_none_or(|(c, _)| cost[n] < *c) {
+            best = Some((cost[n], groups));
+        }
+    }
+    best.filter(|(c, _)| *c < 0.9 * area).map(|(_, g)| g)
+}
+// ANCHOR_END: pack_leaves
 
 impl Bvh8 {
     /// Builds the tree over `tris` (`None` for an empty list): the same
@@ -79,7 +149,8 @@ impl Bvh8 {
             max_prims_per_leaf: 1,
             ..BvhBuildParams::medium_build()
         };
-        let bvh2 = build_guarded(&padded_boxes(tris), params);
+        let boxes = padded_boxes(tris);
+        let bvh2 = build_guarded(&boxes, params);
         let mut counts = vec![0u32; bvh2.nodes.len()];
         count_triangles(&bvh2, 0, &mut counts);
         open_rooms(&bvh2, &mut counts);
@@ -96,7 +167,8 @@ impl Bvh8 {
                 Level::Portable
             },
         };
-        b.root = b.collapse(&bvh2, &counts, 0, tris, 1);
+        let room = 0.5 * volume(&bvh2.nodes[0].aabb);
+        b.root = b.collapse((&bvh2, &counts, &boxes, room), 0, tris, 1);
         Some(b)
     }
 
@@ -139,14 +211,13 @@ impl Bvh8 {
 
     fn collapse(
         &mut self,
-        bvh2: &Bvh2,
-        counts: &[u32],
+        (bvh2, counts, boxes, room): (&Bvh2, &[u32], &[Aabb], f32),
         n: usize,
         tris: &[[Vec3; 3]],
         level: usize,
     ) -> u32 {
         if counts[n] as usize <= LEAF_SIZE {
-            return self.leaf(bvh2, n, tris);
+            return self.leaf(&triangles_under(bvh2, n), tris);
         }
         self.levels = self.levels.max(level);
         let children = open_children(bvh2, counts, n, W, LEAF_SIZE);
@@ -156,21 +227,37 @@ impl Bvh8 {
             max: [[f32::NEG_INFINITY; W]; 3],
             child: [u32::MAX; W],
         });
-        for (lane, &c) in children.iter().enumerate() {
-            let b = bvh2.nodes[c].aabb;
-            let child = self.collapse(bvh2, counts, c, tris, level + 1);
-            let node = &mut self.nodes[index];
+        let set = |b: &mut Self, lane: usize, child: u32, aabb: Aabb| {
+            let node = &mut b.nodes[index];
             node.child[lane] = child;
             for axis in 0..3 {
-                node.min[axis][lane] = b.min[axis];
-                node.max[axis][lane] = b.max[axis];
+                node.min[axis][lane] = aabb.min[axis];
+                node.max[axis][lane] = aabb.max[axis];
             }
+        };
+        let leaves_only = children.iter().all(|&c| counts[c] as usize <= LEAF_SIZE);
+        if leaves_only {
+            let area: f32 = children
+                .iter()
+                .map(|&c| bvh2.nodes[c].aabb.half_area())
+                .sum();
+            let ids = triangles_under(bvh2, n);
+            if let Some(groups) = pack_leaves(&ids, boxes, area, room) {
+                for (lane, group) in groups.iter().enumerate() {
+                    let child = self.leaf(group, tris);
+                    set(self, lane, child, bounds(group, boxes));
+                }
+                return index as u32;
+            }
+        }
+        for (lane, &c) in children.iter().enumerate() {
+            let child = self.collapse((bvh2, counts, boxes, room), c, tris, level + 1);
+            set(self, lane, child, bvh2.nodes[c].aabb);
         }
         index as u32
     }
 
-    fn leaf(&mut self, bvh2: &Bvh2, n: usize, tris: &[[Vec3; 3]]) -> u32 {
-        let ids = triangles_under(bvh2, n);
+    fn leaf(&mut self, ids: &[u32], tris: &[[Vec3; 3]]) -> u32 {
         let mut leaf = Leaf8 {
             p: [[[f32::NAN; W]; 3]; 3],
         };
