@@ -260,9 +260,13 @@ impl Shade<'_> {
                     out.add(Some(k), light);
                 }
             }
-            if finish(lane, it, k, (&*o, j)) {
-                next.push(i);
-            }
+            // Whether a path goes on is a coin flip to the branch
+            // predictor once roulette plays: its ray and path are written
+            // either way, and kept or dropped by a count (dropping the last
+            // entry of a list is no branch).
+            next.push(i);
+            let goes_on = usize::from(finish(lane, it, k, (&*o, j)));
+            next.truncate(next.len() + goes_on - 1);
         }
     }
 }
@@ -374,12 +378,10 @@ fn gather(
     lesson_light
 }
 
-/// Writes lane `j`'s path back: `false` where it ends.
+/// Writes lane `j`'s path back: `false` where it ends (then what was
+/// written is never read).
 fn finish(lane: &mut Lane, it: &Interaction, k: u32, (o, j): (&Out8, usize)) -> bool {
     let v3 = |a: &[[f32; L]; 3]| Vec3::new(a[0][j], a[1][j], a[2][j]);
-    if !o.valid[j] || !o.step[j] || !o.survives[j] {
-        return false;
-    }
     let path = &mut lane.path;
     path.beta = v3(&o.beta);
     path.k = Some(k);
@@ -387,14 +389,11 @@ fn finish(lane: &mut Lane, it: &Interaction, k: u32, (o, j): (&Out8, usize)) -> 
     path.from_pdf = o.pdf[j];
     path.from_p = it.p;
     path.from_n = v3(&o.n_side);
-    if !o.next_ok[j] {
-        return false;
-    }
     lane.ray = Ray {
         origin: v3(&o.next_o),
         dir: v3(&o.next_d),
     };
-    true
+    o.valid[j] & o.step[j] & o.survives[j] & o.next_ok[j]
 }
 
 /// What `World::intersect` makes of a hit the tree found (a scene without
