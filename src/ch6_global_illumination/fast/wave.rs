@@ -150,27 +150,23 @@ pub fn trace_paths<C: Contributions>(
                 layers: &mut outs[lane.out as usize],
                 stats,
             };
-            let Some(hit) = hit else {
+            let Some(it) = hit.map(|hit| interaction(world, hit)) else {
                 let sky = sky_emission(world, lane.ray.dir, &lane.path);
                 out.add_sky(&lane.path, lane.ray.dir, sky);
                 continue;
             };
-            // Built where it is kept: built elsewhere and copied here, the
-            // copy's wide loads waited on the narrow stores that built it.
-            its.push(interaction(world, *hit));
-            let it = its.last().expect("just pushed");
             // Most surfaces emit nothing: no call to find that out.
             let emitted = match emissive[it.material] {
-                true => surface_emission(world, it, -lane.ray.dir, &lane.path),
+                true => surface_emission(world, &it, -lane.ray.dir, &lane.path),
                 false => None,
             };
-            out.add_emitted(&lane.path, it, emitted);
+            out.add_emitted(&lane.path, &it, emitted);
             if over_limit {
                 out.stats.cut += u64::from(settings.max_bounces.is_none());
-                its.pop();
                 continue;
             }
             ids.push(i);
+            its.push(it);
             if ids.len() == L {
                 let round = (k, roulette, &mut next, &mut shadows);
                 shade.eight(&mut lanes, (&ids, &its), round, outs, stats);

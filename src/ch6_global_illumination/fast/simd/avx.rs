@@ -67,13 +67,11 @@ fn enter_avx(r: &Splat, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
     {
         let mut t_near = _mm256_setzero_ps();
         let mut t_far = _mm256_set1_ps(t_max);
-        // The near and far planes by index, not by a branch on the
-        // direction's signs: a bounce ray's signs are random, and the
-        // branches' mispredictions cost more than the node test.
-        let planes = [&node.min, &node.max];
         for axis in 0..3 {
-            let n = r.negative[axis] as usize;
-            let (near, far) = (&planes[n][axis], &planes[1 - n][axis]);
+            let (near, far) = match r.negative[axis] {
+                true => (&node.max[axis], &node.min[axis]),
+                false => (&node.min[axis], &node.max[axis]),
+            };
             let (o, inv) = (r.o[axis], r.inv[axis]);
             t_near = _mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(load(near), o), inv), t_near);
             t_far = _mm256_min_ps(_mm256_mul_ps(_mm256_sub_ps(load(far), o), inv), t_far);
