@@ -323,14 +323,12 @@ unsafe fn sobol_groups8_avx2<const G: usize>(
 #[inline]
 pub fn independent8_at(level: Level, prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
     match level {
-        // SAFETY: `level.available()` checked that this CPU has AVX-512
-        // and the rest of the list.
-        #[cfg(target_arch = "x86_64")]
-        Level::Avx512 if level.available() => unsafe { independent8_avx512(prefix, first) },
         // SAFETY: `level.available()` checked that this CPU has AVX2, all
         // the function needs.
         #[cfg(target_arch = "x86_64")]
-        Level::Avx2 if level.available() => unsafe { independent8_avx2(prefix, first) },
+        Level::Avx2 | Level::Avx512 if level.available() => unsafe {
+            independent8_avx2(prefix, first)
+        },
         _ => super::sobol8::independent8(prefix, first),
     }
 }
@@ -338,15 +336,6 @@ pub fn independent8_at(level: Level, prefix: &[u64; 8], first: u64) -> [[f32; 8]
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
 unsafe fn independent8_avx2(prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
-    super::sobol8::independent8(prefix, first)
-}
-
-/// [`independent8`](super::sobol8::independent8) compiled for AVX-512,
-/// whose DQ extension multiplies 64-bit lanes in one instruction (AVX2
-/// builds each of the hash's products from three 32-bit ones).
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx512bw,avx512dq,avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-unsafe fn independent8_avx512(prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
     super::sobol8::independent8(prefix, first)
 }
 
