@@ -109,10 +109,12 @@ fn pack_leaves(ids: &[u32], boxes: &[Aabb], area: f32, room: f32) -> Option<Vec<
         let mut from = vec![0; n + 1];
         cost[0] = 0.0;
         for end in 1..=n {
-            for start in end.saturating_sub(LEAF_SIZE)..end {
-                let b = bounds(&sorted[start..end], boxes);
+            // The last leaf grown backwards from `end`, a triangle at a time.
+            let mut b = Aabb::INVALID;
+            for start in (end.saturating_sub(LEAF_SIZE)..end).rev() {
+                b = b.union(&boxes[sorted[start] as usize]);
                 if end - start > 1 && volume(&b) > room {
-                    continue;
+                    break;
                 }
                 let c = cost[start] + b.half_area();
                 if c < cost[end] {
