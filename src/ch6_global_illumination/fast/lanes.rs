@@ -79,7 +79,7 @@ impl<'a> RayData<'a> {
 
 /// Bit i set where lane i is true.
 #[inline(always)]
-fn mask(b: [bool; W]) -> u32 {
+pub(super) fn mask(b: [bool; W]) -> u32 {
     let mut bits = [0u32; W];
     for i in 0..W {
         bits[i] = (b[i] as u32) << i;

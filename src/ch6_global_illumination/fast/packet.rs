@@ -24,7 +24,7 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Hit;
 
 use super::bvh8::Bvh8;
-use super::lanes::{front_lane, trust_lane, Fronts, RayData, FAR_STRETCH, LEAF, W};
+use super::lanes::{front_lane, mask, trust_lane, Fronts, RayData, FAR_STRETCH, LEAF, W};
 
 /// Eight rays' numbers, by lane: the slab test's origin and 1/direction,
 /// the watertight test's permuted origin and shear; the direction signs
@@ -328,9 +328,5 @@ fn leaf(p: &Packet, bvh: &Bvh8, l: usize, best: &mut Best) -> u32 {
             best.triangle[j] = if take { triangle } else { best.triangle[j] };
         }
     }
-    let mut bits = 0u32;
-    for j in 0..W {
-        bits |= u32::from(check[j]) << j;
-    }
-    bits
+    mask(check)
 }
