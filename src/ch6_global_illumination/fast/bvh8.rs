@@ -54,14 +54,20 @@ pub struct Bvh8 {
 /// more than the boxes' padding, does not enter). Larger scenes have
 /// no such leaf; a flat scene (no volume) is left as it is.
 fn open_rooms(bvh2: &Bvh2, counts: &mut [u32]) {
-    let whole = volume(&bvh2.nodes[0].aabb);
+    let room = room(bvh2);
     for (n, count) in counts.iter_mut().enumerate() {
-        if (2..=LEAF_SIZE as u32).contains(count) && volume(&bvh2.nodes[n].aabb) > 0.5 * whole {
+        if (2..=LEAF_SIZE as u32).contains(count) && volume(&bvh2.nodes[n].aabb) > room {
             *count = LEAF_SIZE as u32 + 1;
         }
     }
 }
 // ANCHOR_END: open_rooms
+
+/// A leaf whose box holds more than this volume (half the whole tree's)
+/// is a room.
+fn room(bvh2: &Bvh2) -> f32 {
+    0.5 * volume(&bvh2.nodes[0].aabb)
+}
 
 /// The volume of `b`.
 fn volume(b: &Aabb) -> f32 {
@@ -94,8 +100,8 @@ fn bounds(ids: &[u32], boxes: &[Aabb]) -> Aabb {
 /// runs of at most [`LEAF_SIZE`] consecutive triangles whose boxes' areas
 /// add up to the least (a shortest path over the sorted list), and keeps
 /// the best axis if it beats the binary tree's leaves by a tenth. A leaf
-/// whose box would hold more than `room` (half the tree's volume) is not
-/// allowed, for the reason [`open_rooms`] gives.
+/// whose box would hold more than `room` ([`room`]) is not allowed, for
+/// the reason [`open_rooms`] gives.
 fn pack_leaves(ids: &[u32], boxes: &[Aabb], area: f32, room: f32) -> Option<Vec<Vec<u32>>> {
     let mut best: Option<(f32, Vec<Vec<u32>>)> = None;
     for axis in 0..3 {
@@ -169,8 +175,7 @@ impl Bvh8 {
                 Level::Portable
             },
         };
-        let room = 0.5 * volume(&bvh2.nodes[0].aabb);
-        b.root = b.collapse((&bvh2, &counts, &boxes, room), 0, tris, 1);
+        b.root = b.collapse((&bvh2, &counts, &boxes, room(&bvh2)), 0, tris, 1);
         Some(b)
     }
 
