@@ -79,7 +79,6 @@ struct Lane {
 /// light it carries if nothing blocks it and where that light goes. (A
 /// shadow ray whose two ends meet adds its light at once; one without an
 /// origin, a surface point that is not finite, is blocked.)
-#[derive(Default)]
 struct Shadows {
     rays: Vec<(Ray, f32)>,
     light: Vec<(u32, Vec3)>,
@@ -108,7 +107,11 @@ pub fn trace_paths<C: Contributions>(
     stats.paths += lanes.len() as u64;
     // The hits of up to eight paths waiting to be shaded together.
     let (mut ids, mut its) = (Vec::with_capacity(L), Vec::with_capacity(L));
-    let mut shadows = Shadows::default();
+    // At most one shadow ray per path per round: room for all from the start.
+    let mut shadows = Shadows {
+        rays: Vec::with_capacity(lanes.len()),
+        light: Vec::with_capacity(lanes.len()),
+    };
     // A round's rays and what the tree answers for them.
     let mut rays: Vec<Ray> = Vec::with_capacity(lanes.len());
     let mut found: Vec<Option<Hit>> = Vec::with_capacity(lanes.len());
