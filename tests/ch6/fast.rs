@@ -537,3 +537,48 @@ fn the_sobol_lanes_are_the_same_bits_on_every_simd_path() {
     }
     assert!(compared >= 200);
 }
+
+#[test]
+fn numbers_made_only_where_wanted_are_the_same_bits_and_the_rest_zero() {
+    use raystep::ch6_global_illumination::fast::simd::{
+        independent8_wanted_at, sobol_groups8_wanted_at,
+    };
+    use raystep::ch6_global_illumination::fast::sobol8::{independent8, sobol_groups8};
+    let mut h = 0x0123_4567_89ab_cdefu64;
+    let mut next = || {
+        h ^= h << 13;
+        h ^= h >> 7;
+        h ^= h << 17;
+        h
+    };
+    let mut compared = 0;
+    for round in 0..100u64 {
+        let sample: [u32; 8] = std::array::from_fn(|_| (next() >> 48) as u32);
+        let scramble: [u64; 8] = std::array::from_fn(|_| next());
+        let wanted = (next() & 0xff) as u8;
+        let first = 4 + 8 * (round % 20);
+        let all = sobol_groups8::<2>(&sample, &scramble, first / 4);
+        let all_independent = independent8(&scramble, first);
+        for level in Level::ALL.into_iter().filter(|l| l.available()) {
+            let some =
+                sobol_groups8_wanted_at::<2>(level, &sample, &scramble, first / 4, wanted.into());
+            let some_independent = independent8_wanted_at(level, &scramble, first, wanted);
+            for d in 0..8 {
+                let (g, dd) = (d / 4, d % 4);
+                let on = wanted >> d & 1 == 1;
+                for j in 0..8 {
+                    let want = if on { all[g][dd][j] } else { 0.0 };
+                    assert_eq!(
+                        some[g][dd][j].to_bits(),
+                        want.to_bits(),
+                        "{level:?} {d} {j}"
+                    );
+                    let want = if on { all_independent[d][j] } else { 0.0 };
+                    assert_eq!(some_independent[d][j].to_bits(), want.to_bits());
+                }
+            }
+            compared += 1;
+        }
+    }
+    assert!(compared >= 100);
+}

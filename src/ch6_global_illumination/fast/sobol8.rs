@@ -57,6 +57,22 @@ pub fn sobol_groups8<const G: usize>(
     pixel_scramble: &[u64; 8],
     group: u64,
 ) -> [[[f32; 8]; 4]; G] {
+    sobol_groups8_wanted(sample, pixel_scramble, group, u32::MAX)
+}
+
+/// [`sobol_groups8`] of only the dimensions whose bits are set in
+/// `wanted` (bit 4g + d for dimension d of group g); the others are 0.
+/// The same bits where wanted: a path vertex of a diffuse scene draws
+/// eight numbers and uses five or six of them.
+// Lane loops index several arrays by lane, on purpose (vector code).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+pub fn sobol_groups8_wanted<const G: usize>(
+    sample: &[u32; 8],
+    pixel_scramble: &[u64; 8],
+    group: u64,
+    wanted: u32,
+) -> [[[f32; 8]; 4]; G] {
     let (seed, rev) = sobol_indices8::<G>(sample, pixel_scramble, group);
     let t = byte_tables();
     let mut sobol = [[[0u32; 8]; 4]; G];
@@ -71,7 +87,7 @@ pub fn sobol_groups8<const G: usize>(
             }
         }
     }
-    sobol_finish8(&sobol, &seed)
+    sobol_finish8(&sobol, &seed, wanted)
 }
 
 /// The first steps of [`sobol_groups8`]: each group's scramble seed per
@@ -102,17 +118,22 @@ pub fn sobol_indices8<const G: usize>(
 
 /// The last steps of [`sobol_groups8`]: the Sobol points `sobol[g][d][j]`
 /// (reversed bits) scrambled with their groups' seeds and turned into
-/// numbers in [0, 1).
+/// numbers in [0, 1); only the dimensions `wanted` (bit 4g + d), the
+/// others left 0.
 // Lane loops index several arrays by lane, on purpose (vector code).
 #[allow(clippy::needless_range_loop)]
 #[inline(always)]
 pub fn sobol_finish8<const G: usize>(
     sobol: &[[[u32; 8]; 4]; G],
     seed: &[[u32; 8]; G],
+    wanted: u32,
 ) -> [[[f32; 8]; 4]; G] {
     let mut out = [[[0.0f32; 8]; 4]; G];
     for g in 0..G {
         for d in 0..4 {
+            if wanted >> (4 * g + d) & 1 == 0 {
+                continue;
+            }
             for j in 0..8 {
                 out[g][d][j] = owen_dim(sobol[g][d][j], seed[g][j].wrapping_mul(0x9c8f2d3b), d);
             }
@@ -171,8 +192,20 @@ pub fn byte_tables() -> &'static [[[u32; 4]; 256]; 2] {
 #[allow(clippy::needless_range_loop)]
 #[inline(always)]
 pub fn independent8(prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
+    independent8_wanted(prefix, first, u8::MAX)
+}
+
+/// [`independent8`] of only the dimensions whose bits are set in
+/// `wanted` (bit d for dimension `first + d`); the others are 0.
+// Lane loops index several arrays by lane, on purpose (vector code).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+pub fn independent8_wanted(prefix: &[u64; 8], first: u64, wanted: u8) -> [[f32; 8]; 8] {
     let mut out = [[0.0f32; 8]; 8];
     for d in 0..8 {
+        if wanted >> d & 1 == 0 {
+            continue;
+        }
         let dim = (first + d as u64).wrapping_mul(0xd6e8_feb8_6659_fd93);
         for j in 0..8 {
             let h = mix64(prefix[j] ^ dim);

@@ -123,6 +123,7 @@ pub fn trace_paths<C: Contributions>(
         level,
         input: Box::default(),
         o: Box::default(),
+        choose: !matches!(world.lights.lights.as_slice(), [Light::Area(_)]),
     };
     // The paths still going (indices into `lanes`, which never move), in
     // order, and those that go on past this round.
@@ -204,7 +205,14 @@ struct Shade<'a> {
     level: Level,
     input: Box<In8>,
     o: Box<Out8>,
+    /// Whether the lanes read the number that chooses a light (dimension 0
+    /// of a vertex): not where the scene has one area light.
+    choose: bool,
 }
+
+/// The numbers of a vertex every diffuse path reads: the light sample's
+/// two (dimensions 1 and 2) and the next direction's (4 and 5).
+const WANTED: u8 = 0b0011_0110;
 
 impl Shade<'_> {
     /// Shades lanes `ids` (up to eight) at their hits `its`, vertex `k`:
@@ -219,7 +227,11 @@ impl Shade<'_> {
         stats: &mut PathStats,
     ) {
         let (world, input, o) = (self.world, &mut *self.input, &mut *self.o);
-        input.u = numbers(self.level, lanes, ids, k);
+        // The numbers the lanes read (a Lambertian vertex leaves the lobe's
+        // and the eighth unread, the light's choice where there is one
+        // area light, roulette's before it plays): only those are made.
+        let wanted = WANTED | u8::from(self.choose) | u8::from(roulette) << 6;
+        input.u = numbers(self.level, lanes, ids, k, wanted);
         let lesson_light = gather((world, self.level), lanes, (ids, its), roulette, input);
         super::simd::shade8_at(self.level, input, o);
         for (j, (&i, it)) in ids.iter().zip(its).enumerate() {
@@ -272,20 +284,27 @@ impl Shade<'_> {
 
 /// The eight numbers of vertex `k` of lanes `ids` (unused lanes repeat the
 /// first), `u[d][lane]`, computed eight paths at a time (one path at a
-/// time where Sobol points and independent numbers mix).
+/// time where Sobol points and independent numbers mix); only the
+/// dimensions `wanted` (bit d), the others 0 (the mixed case makes all).
 #[allow(clippy::needless_range_loop)]
-fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32) -> [[f32; L]; 8] {
+fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32, wanted: u8) -> [[f32; L]; 8] {
     let first = 4 + 8 * k as u64;
     let lane = |j: usize| &lanes[ids[if j < ids.len() { j } else { 0 }] as usize];
     let mut u = [[0.0; L]; 8];
     if let Some((sample, scramble)) = sobol_lanes(|j| &lane(j).sampler) {
-        let [a, b] = super::simd::sobol_groups8_at(level, &sample, &scramble, first / 4);
+        let [a, b] = super::simd::sobol_groups8_wanted_at(
+            level,
+            &sample,
+            &scramble,
+            first / 4,
+            u32::from(wanted),
+        );
         u[..4].copy_from_slice(&a);
         u[4..].copy_from_slice(&b);
     } else if (0..L).all(|j| lane(j).sampler.independent_prefix().is_some()) {
         let prefix: [u64; L] =
             std::array::from_fn(|j| lane(j).sampler.independent_prefix().unwrap_or(0));
-        u = super::simd::independent8_at(level, &prefix, first);
+        u = super::simd::independent8_wanted_at(level, &prefix, first, wanted);
     } else {
         // Sobol points and, past the tables, independent numbers mixed.
         for j in 0..L {

@@ -269,14 +269,27 @@ pub fn sobol_groups8_at<const G: usize>(
     pixel_scramble: &[u64; 8],
     group: u64,
 ) -> [[[f32; 8]; 4]; G] {
+    sobol_groups8_wanted_at(level, sample, pixel_scramble, group, u32::MAX)
+}
+
+/// [`sobol_groups8_wanted`](super::sobol8::sobol_groups8_wanted) (only the
+/// dimensions `wanted`) with `level`'s instructions.
+#[inline]
+pub fn sobol_groups8_wanted_at<const G: usize>(
+    level: Level,
+    sample: &[u32; 8],
+    pixel_scramble: &[u64; 8],
+    group: u64,
+    wanted: u32,
+) -> [[[f32; 8]; 4]; G] {
     match level {
         // SAFETY: `level.available()` checked that this CPU has AVX2, all
         // the function needs.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 | Level::Avx512 if level.available() => unsafe {
-            sobol_groups8_avx2(sample, pixel_scramble, group)
+            sobol_groups8_avx2(sample, pixel_scramble, group, wanted)
         },
-        _ => super::sobol8::sobol_groups8(sample, pixel_scramble, group),
+        _ => super::sobol8::sobol_groups8_wanted(sample, pixel_scramble, group, wanted),
     }
 }
 
@@ -290,6 +303,7 @@ unsafe fn sobol_groups8_avx2<const G: usize>(
     sample: &[u32; 8],
     pixel_scramble: &[u64; 8],
     group: u64,
+    wanted: u32,
 ) -> [[[f32; 8]; 4]; G] {
     use std::arch::x86_64::*;
     let (seed, rev) = super::sobol8::sobol_indices8::<G>(sample, pixel_scramble, group);
@@ -315,28 +329,40 @@ unsafe fn sobol_groups8_avx2<const G: usize>(
             }
         }
     }
-    super::sobol8::sobol_finish8(&sobol, &seed)
+    super::sobol8::sobol_finish8(&sobol, &seed, wanted)
 }
 
 /// [`independent8`](super::sobol8::independent8) with `level`'s
 /// instructions (the same bits on every path).
 #[inline]
 pub fn independent8_at(level: Level, prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
+    independent8_wanted_at(level, prefix, first, u8::MAX)
+}
+
+/// [`independent8_wanted`](super::sobol8::independent8_wanted) (only the
+/// dimensions `wanted`) with `level`'s instructions.
+#[inline]
+pub fn independent8_wanted_at(
+    level: Level,
+    prefix: &[u64; 8],
+    first: u64,
+    wanted: u8,
+) -> [[f32; 8]; 8] {
     match level {
         // SAFETY: `level.available()` checked that this CPU has AVX2, all
         // the function needs.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 | Level::Avx512 if level.available() => unsafe {
-            independent8_avx2(prefix, first)
+            independent8_avx2(prefix, first, wanted)
         },
-        _ => super::sobol8::independent8(prefix, first),
+        _ => super::sobol8::independent8_wanted(prefix, first, wanted),
     }
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-unsafe fn independent8_avx2(prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
-    super::sobol8::independent8(prefix, first)
+unsafe fn independent8_avx2(prefix: &[u64; 8], first: u64, wanted: u8) -> [[f32; 8]; 8] {
+    super::sobol8::independent8_wanted(prefix, first, wanted)
 }
 
 /// Entries of a traversal stack kept on the call stack: a small one for
