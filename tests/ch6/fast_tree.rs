@@ -214,6 +214,15 @@ fn camera_rays_eight_at_a_time_find_the_one_ray_hits() {
             }
         }
     }
+    // Eights from nearby origins too (a lens, or a ray leaving a surface):
+    // the group's box test then works with a range of origins.
+    let spread: Vec<_> = rays
+        .iter()
+        .map(|r| raystep::ch3_ray_triangle::ray::Ray {
+            origin: r.origin + 0.02 * glam::Vec3::new(next() - 0.5, next() - 0.5, next() - 0.5),
+            dir: r.dir,
+        })
+        .collect();
     let mut shuffled = rays.clone();
     for i in (1..shuffled.len()).rev() {
         let j = (next() * i as f32) as usize;
@@ -237,7 +246,7 @@ fn camera_rays_eight_at_a_time_find_the_one_ray_hits() {
     for level in Level::ALL.into_iter().filter(|l| l.available()) {
         let world = Engine::Fast.world_at(&scene, level);
         let tree = raystep::ch6_global_illumination::fast::wave::engine_tree(&world).unwrap();
-        for rays in [&rays, &shuffled] {
+        for rays in [&rays, &spread, &shuffled] {
             let (mut want, mut got) = (Vec::new(), Vec::new());
             simd::closest_all(Level::Portable, portable, rays, &mut want);
             simd::closest_packets(tree, rays, &mut got);

@@ -36,6 +36,10 @@ struct Packet {
     k: [usize; 3],
     ko: [[f32; W]; 3],
     s: [[f32; W]; 3],
+    /// Per axis the smallest and largest origin and 1/direction of the
+    /// eight: what [`enter`] tests the node's boxes with.
+    o_range: [(f32, f32); 3],
+    inv_range: [(f32, f32); 3],
 }
 
 impl Packet {
@@ -80,6 +84,8 @@ impl Packet {
             k,
             ko: [o[k[0]], o[k[1]], o[k[2]]],
             s: [[0.0; W]; 3],
+            o_range: [(0.0, 0.0); 3],
+            inv_range: [(0.0, 0.0); 3],
         };
         for a in 0..3 {
             for j in 0..W {
@@ -92,6 +98,10 @@ impl Packet {
                 };
                 p.inv[a][j] = 1.0 / safe;
             }
+        }
+        for a in 0..3 {
+            p.o_range[a] = (smallest(p.o[a]), largest(p.o[a]));
+            p.inv_range[a] = (smallest(p.inv[a]), largest(p.inv[a]));
         }
         for j in 0..W {
             let (dx, dy, dz) = (d[k[0]][j], d[k[1]][j], d[k[2]][j]);
@@ -148,17 +158,12 @@ pub(super) fn closest8(
     loop {
         if at & LEAF == 0 {
             let node = &bvh.nodes[at as usize];
+            let (entered, nears) = enter(&p, largest(best.t), node);
             // The entered children, nearest last.
             let mut order = [(0u32, 0f32); W];
             let mut count = 0;
-            for c in 0..W {
-                if node.child[c] == u32::MAX {
-                    continue;
-                }
-                let near = enter(&p, &best.t, node, c);
-                if near == f32::INFINITY {
-                    continue;
-                }
+            for c in (0..W).filter(|&c| entered >> c & 1 != 0) {
+                let near = nears[c];
                 let mut i = count;
                 while i > 0 && order[i - 1].1 < near {
                     order[i] = order[i - 1];
@@ -214,34 +219,45 @@ fn one_by_one(
     }
 }
 
-/// The slab test of child `c` of `node` for the eight lanes, each against
-/// (0, its nearest hit so far): the nearest distance at which a lane
-/// enters the box, or ∞ where none does.
+/// The slab test of a node's eight boxes for the eight rays at once, each
+/// box against (0, `t_far`) (`t_far` the farthest of the rays' nearest
+/// hits so far): the mask of children some ray may enter, and a distance
+/// no ray enters each before. Rather than each ray, the test takes the
+/// range of the eight origins and of the eight 1/directions per axis: a
+/// ray's distance to a plane, (plane - o) / d, lies between the smallest
+/// and the largest of the four products the ranges' ends give (rounding
+/// keeps that order, as it never reverses a comparison), so a box no
+/// product lets in is missed by every ray. The eight rays of a pixel's
+/// samples are nearly one ray, and this one test does the work of eight.
 // ANCHOR: packet_enter
 #[inline(always)]
-fn enter(p: &Packet, t_best: &[f32; W], node: &super::lanes::Node8, c: usize) -> f32 {
+fn enter(p: &Packet, t_far: f32, node: &super::lanes::Node8) -> (u32, [f32; W]) {
     let mut t_near = [0.0f32; W];
-    let mut t_far = *t_best;
+    let mut t_far = [t_far; W];
     for axis in 0..3 {
-        let (lo, hi) = (node.min[axis][c], node.max[axis][c]);
+        let (lo, hi) = (&node.min[axis], &node.max[axis]);
         let (near, far) = if p.negative[axis] { (hi, lo) } else { (lo, hi) };
-        for j in 0..W {
-            // `max` and `min` as selects (a NaN keeps the old value, as
-            // `f32::max` does): one instruction each.
-            let (a, b) = (
-                (near - p.o[axis][j]) * p.inv[axis][j],
-                (far - p.o[axis][j]) * p.inv[axis][j],
-            );
-            t_near[j] = if a > t_near[j] { a } else { t_near[j] };
-            t_far[j] = if b < t_far[j] { b } else { t_far[j] };
+        let ((o0, o1), (i0, i1)) = (p.o_range[axis], p.inv_range[axis]);
+        for c in 0..W {
+            // The four ends of (plane - o) · inv for the near plane and
+            // the far plane; the smallest and the largest, as selects.
+            let (a0, a1) = (near[c] - o1, near[c] - o0);
+            let (b0, b1) = (far[c] - o1, far[c] - o0);
+            let [p0, p1, p2, p3] = [a0 * i0, a0 * i1, a1 * i0, a1 * i1];
+            let [q0, q1, q2, q3] = [b0 * i0, b0 * i1, b1 * i0, b1 * i1];
+            let min = |x: f32, y: f32| if y < x { y } else { x };
+            let max = |x: f32, y: f32| if y > x { y } else { x };
+            let enters = min(min(p0, p1), min(p2, p3));
+            let leaves = max(max(q0, q1), max(q2, q3));
+            t_near[c] = max(t_near[c], enters);
+            t_far[c] = min(t_far[c], leaves);
         }
     }
-    let mut near = [f32::INFINITY; W];
-    for j in 0..W {
-        let entered = t_near[j] <= t_far[j] * FAR_STRETCH;
-        near[j] = if entered { t_near[j] } else { f32::INFINITY };
+    let mut entered = [false; W];
+    for c in 0..W {
+        entered[c] = node.child[c] != u32::MAX && t_near[c] <= t_far[c] * FAR_STRETCH;
     }
-    smallest(near)
+    (mask(entered), t_near)
 }
 // ANCHOR_END: packet_enter
 
