@@ -1,14 +1,16 @@
 //! Camera rays eight at a time. The eight samples of a pixel that start a
 //! round of paths leave the same eye through the same pixel, so they open
-//! the same nodes and leaves of the tree: one traversal for all eight,
-//! with one ray per lane, does each box and triangle test once for the
-//! eight where the one-ray `Bvh8::closest_with` does it eight times, and
-//! makes its branches once.
+//! the same nodes and leaves of the tree: one traversal for all eight
+//! tests a node's boxes once against the range of the eight rays
+//! (`enter`), and each triangle once with one ray per lane, where the
+//! one-ray `Bvh8::closest_with` does both eight times, and makes its
+//! branches once.
 //!
-//! Each lane runs the one-ray test's arithmetic in its order (the slab
-//! test, the watertight test with the ray's own shear, pbrt-v4's error
-//! bound), so a ray's hit is the one the one-ray traversal finds: the
-//! nearest trusted hit, t, u and v to the bit. Two things send a ray back
+//! The box test opens every box some ray of the eight enters. At the
+//! leaves each lane runs the one-ray test's arithmetic in its order (the
+//! watertight test with the ray's own shear, pbrt-v4's error bound), so a
+//! ray's hit is the one the one-ray traversal finds: the nearest trusted
+//! hit, t, u and v to the bit. Two things send a ray back
 //! to the one-ray traversal: eight rays whose largest direction components
 //! are not on the same axis (the test's permutation differs) or whose
 //! directions differ in sign on some axis (the slab test's near and far
@@ -26,20 +28,17 @@ use crate::ch3_ray_triangle::triangle::Hit;
 use super::bvh8::Bvh8;
 use super::lanes::{front_lane, mask, trust_lane, Fronts, RayData, FAR_STRETCH, LEAF, W};
 
-/// Eight rays' numbers, by lane: the slab test's origin and 1/direction,
-/// the watertight test's permuted origin and shear; the direction signs
-/// and the permutation are the same for all eight.
+/// Eight rays' numbers: per axis the smallest and largest origin and
+/// 1/direction of the eight (what [`enter`] tests the node's boxes with),
+/// and by lane the watertight test's permuted origin and shear; the
+/// direction signs and the permutation are the same for all eight.
 struct Packet {
-    o: [[f32; W]; 3],
-    inv: [[f32; W]; 3],
+    o_range: [(f32, f32); 3],
+    inv_range: [(f32, f32); 3],
     negative: [bool; 3],
     k: [usize; 3],
     ko: [[f32; W]; 3],
     s: [[f32; W]; 3],
-    /// Per axis the smallest and largest origin and 1/direction of the
-    /// eight: what [`enter`] tests the node's boxes with.
-    o_range: [(f32, f32); 3],
-    inv_range: [(f32, f32); 3],
 }
 
 impl Packet {
@@ -77,16 +76,7 @@ impl Packet {
         }
         const PERMUTATION: [[usize; 3]; 3] = [[1, 2, 0], [2, 0, 1], [0, 1, 2]];
         let k = PERMUTATION[kz[0] as usize];
-        let mut p = Packet {
-            o,
-            inv: [[0.0; W]; 3],
-            negative: [sign[0][0], sign[1][0], sign[2][0]],
-            k,
-            ko: [o[k[0]], o[k[1]], o[k[2]]],
-            s: [[0.0; W]; 3],
-            o_range: [(0.0, 0.0); 3],
-            inv_range: [(0.0, 0.0); 3],
-        };
+        let mut inv = [[0.0f32; W]; 3];
         for a in 0..3 {
             for j in 0..W {
                 // `BoxRay`: tiny components kept finite.
@@ -96,13 +86,17 @@ impl Packet {
                 } else {
                     x
                 };
-                p.inv[a][j] = 1.0 / safe;
+                inv[a][j] = 1.0 / safe;
             }
         }
-        for a in 0..3 {
-            p.o_range[a] = (smallest(p.o[a]), largest(p.o[a]));
-            p.inv_range[a] = (smallest(p.inv[a]), largest(p.inv[a]));
-        }
+        let mut p = Packet {
+            o_range: o.map(|v| (smallest(v), largest(v))),
+            inv_range: inv.map(|v| (smallest(v), largest(v))),
+            negative: [sign[0][0], sign[1][0], sign[2][0]],
+            k,
+            ko: [o[k[0]], o[k[1]], o[k[2]]],
+            s: [[0.0; W]; 3],
+        };
         for j in 0..W {
             let (dx, dy, dz) = (d[k[0]][j], d[k[1]][j], d[k[2]][j]);
             p.s[0][j] = -dx / dz;

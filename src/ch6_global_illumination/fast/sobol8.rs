@@ -49,8 +49,6 @@ pub fn sobol_group8(sample: &[u32; 8], pixel_scramble: &[u64; 8], group: u64) ->
 /// (the seed's hash, the index shuffle, the scramble), so one group alone
 /// keeps the processor waiting on them; the groups' chains are
 /// independent, and computed side by side they overlap.
-// Lane loops index several arrays by lane, on purpose (vector code).
-#[allow(clippy::needless_range_loop)]
 #[inline(always)]
 pub fn sobol_groups8<const G: usize>(
     sample: &[u32; 8],
@@ -188,8 +186,6 @@ pub fn byte_tables() -> &'static [[[u32; 4]; 256]; 2] {
 /// Dimensions `first .. first + 8` of eight paths' independent numbers
 /// (`prefix[j]`: each path's shared hash): `out[d][j]`, the same bits as
 /// [`dimension_random`](crate::core::sampling::dimension_random).
-// Lane loops index several arrays by lane, on purpose (vector code).
-#[allow(clippy::needless_range_loop)]
 #[inline(always)]
 pub fn independent8(prefix: &[u64; 8], first: u64) -> [[f32; 8]; 8] {
     independent8_wanted(prefix, first, u8::MAX)
