@@ -44,6 +44,21 @@ thread_local! {
 }
 
 impl Work {
+    /// Counts as a student's process reported them (the grader's replay).
+    pub fn counted(box_tests: u64, triangle_tests: u64, shrinks: u64, last_t_max: f32) -> Work {
+        Work {
+            box_tests,
+            triangle_tests,
+            shrinks,
+            last_t_max,
+        }
+    }
+
+    /// The `t_max` of the last triangle test.
+    pub fn last_t_max(&self) -> f32 {
+        self.last_t_max
+    }
+
     /// The calls counted on this thread so far.
     pub fn now() -> Work {
         WORK.with(|w| w.get())
@@ -58,6 +73,20 @@ impl Work {
             last_t_max: self.last_t_max,
         }
     }
+}
+
+/// Adds `done`, work that a student's code did in its own process (the
+/// grader's replay of its transcript, `grading::bridge`), to this
+/// thread's counts: the counts still only grow.
+pub(crate) fn credit(done: Work) {
+    WORK.with(|w| {
+        let mut work = w.get();
+        work.box_tests += done.box_tests;
+        work.triangle_tests += done.triangle_tests;
+        work.shrinks += done.shrinks;
+        work.last_t_max = done.last_t_max;
+        w.set(work);
+    });
 }
 
 /// Counts one slab test.

@@ -248,7 +248,7 @@ pub fn write_atomically(
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         create_folder(dir)?;
     }
-    let tmp = sibling(path, "tmp");
+    let tmp = fresh_temporary(path)?;
     let mut temps = temporaries();
     if STOPPING.load(Ordering::SeqCst) {
         return Err(Error::Usage(
@@ -355,6 +355,31 @@ impl OutputSet {
 /// A hidden name beside `path` for this process's `kind` of file
 /// (`.1234.tmp7-image.png`): a temporary, or the copy of a file a set is
 /// replacing. The extension stays last, for encoders that look at it.
+/// A new, empty temporary file next to `path`, created here (never one
+/// that was there: a link planted at a guessed name is not written
+/// through), with a name no one can guess.
+fn fresh_temporary(path: &Path) -> Result<PathBuf> {
+    use std::hash::{BuildHasher, Hasher};
+    for _ in 0..16 {
+        let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+        h.write_u64(COUNTER.load(Ordering::Relaxed));
+        let tmp = sibling(path, &format!("tmp{:016x}.", h.finish()));
+        match std::fs::OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .open(&tmp)
+        {
+            Ok(_) => return Ok(tmp),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(Error::io(path, e)),
+        }
+    }
+    Err(Error::Usage(format!(
+        "{}: cannot create a temporary file beside it",
+        path.display()
+    )))
+}
+
 fn sibling(path: &Path, kind: &str) -> PathBuf {
     let name = path
         .file_name()

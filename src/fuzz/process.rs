@@ -171,6 +171,7 @@ pub fn run_one(
             status,
             stdout,
             stderr,
+            ..
         } => (status, stdout, stderr),
         Ran::TimedOut { .. } => {
             return (Class::Hang, format!("over {:?}", limits.timeout));

@@ -1,14 +1,24 @@
-//! Building the exercises crate (`raystep-exercises`, `chapters/`) for the
-//! grader: the files that do not compile are found from the compiler's
-//! messages, left out of the build (`RAYSTEP_BROKEN`, read by the crate's
-//! `build.rs`), and reported with those messages, while the rest is built.
+//! Building the student's exercise files for the grader. The grader
+//! copies each file, by content, into a folder of its own named by a hash
+//! of all of them (`<target>/raystep-grade/<hash>/`), with the list of
+//! modules the exercises crate (`src/grading/crates/student`) includes,
+//! and builds the student's process, `raystep-grade-child`, from its own
+//! crates: nothing of the student's but the exercise files is built or
+//! run, and a file's date never decides whether it is built again (its
+//! content does). A file that uses what an exercise may not
+//! ([`crate::grading::source_rules`]) or that does not compile is replaced
+//! by its shipped stub and reported with the compiler's messages, while
+//! the others are built.
 
 use std::collections::BTreeMap;
+use std::hash::Hasher;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::atomic::AtomicBool;
 
 use crate::grading::child::{run_limited, Ran};
+use crate::grading::shipped::{Stub, STUBS};
+use crate::grading::source_rules::refusals;
 
 /// The repository root (where `Cargo.toml` and `chapters/` are).
 pub fn root() -> PathBuf {
@@ -24,17 +34,17 @@ pub fn exercises_dir() -> PathBuf {
         .unwrap_or_else(|| root().join("chapters"))
 }
 
-/// What building the exercises crate gave.
+/// What building the student's process gave.
 #[derive(Debug)]
 pub struct Built {
-    /// The `grade-student` binary.
+    /// The `raystep-grade-child` binary.
     pub runner: PathBuf,
-    /// Exercises left out because they do not compile, with the
-    /// compiler's messages about them.
+    /// Exercises left out (their shipped stub built instead), with why:
+    /// the compiler's messages, or what the file may not use.
     pub broken: BTreeMap<String, String>,
 }
 
-/// Where the exercises crate is built: a target folder and a profile.
+/// Where the student's process is built: a target folder and a profile.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Place {
     /// The target folder (`target/`).
@@ -60,25 +70,139 @@ impl Place {
         })
     }
 
-    /// The `grade-student` binary a build here makes.
+    /// The `raystep-grade-child` binary a build here makes.
     pub fn runner(&self) -> PathBuf {
         let profile = if self.release { "release" } else { "debug" };
-        self.target
-            .join(profile)
-            .join(format!("grade-student{}", std::env::consts::EXE_SUFFIX))
+        self.target.join(profile).join(format!(
+            "raystep-grade-child{}",
+            std::env::consts::EXE_SUFFIX
+        ))
     }
 }
 
-/// Builds `raystep-exercises` with the exercise files under `dir`, beside
-/// the running program ([`Place::current`]); see [`build_exercises_in`].
+/// Builds the student's process with the exercise files under `dir`,
+/// beside the running program ([`Place::current`]); see
+/// [`build_exercises_in`].
 pub fn build_exercises(dir: &Path) -> Result<Built, String> {
     build_exercises_in(dir, &Place::current()?, None)
 }
 
-/// Builds `raystep-exercises` with the exercise files under `dir` at
-/// `place`; an exercise whose file (or whose call in the crate's table)
-/// draws a compiler error is left out (`RAYSTEP_BROKEN`) and the crate
-/// rebuilt. Setting `cancel` stops cargo and returns an error.
+/// The files the exercises crate is built from: each exercise's text (the
+/// student's, or the shipped stub where it is left out), by id.
+fn texts(dir: &Path, broken: &mut BTreeMap<String, String>) -> Vec<(Stub, String)> {
+    STUBS
+        .iter()
+        .map(|stub| {
+            let path = stub.path_in(dir);
+            let id = stub.id();
+            let text = match std::fs::read(&path) {
+                Err(e) => {
+                    broken
+                        .entry(id.clone())
+                        .or_insert_with(|| format!("cannot read {}: {e}", path.display()));
+                    String::new()
+                }
+                Ok(bytes) => match String::from_utf8(bytes) {
+                    Ok(t) => t,
+                    Err(_) => {
+                        broken
+                            .entry(id.clone())
+                            .or_insert_with(|| format!("{} is not UTF-8 text", path.display()));
+                        String::new()
+                    }
+                },
+            };
+            if !broken.contains_key(&id) {
+                let refused = refusals(&text);
+                if !refused.is_empty() {
+                    let shown = format!("{}/exercises/{}.rs", stub.folder, stub.name);
+                    let lines: Vec<String> = refused
+                        .iter()
+                        .map(|r| {
+                            format!(
+                                "error: {shown}:{}: your file may not use {}",
+                                r.line, r.what
+                            )
+                        })
+                        .collect();
+                    broken.insert(id.clone(), lines.join("\n") + "\n");
+                }
+            }
+            let text = if broken.contains_key(&id) {
+                stub.text.to_string()
+            } else {
+                text
+            };
+            (*stub, text)
+        })
+        .collect()
+}
+
+/// Writes the exercise files `files` and the module list into a folder
+/// named by their hash under `root` (kept if it is there already, written
+/// whole or not at all otherwise); returns the module list's path.
+fn write_sources(root: &Path, files: &[(Stub, String)]) -> Result<PathBuf, String> {
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    for (stub, text) in files {
+        h.write(stub.folder.as_bytes());
+        h.write(stub.name.as_bytes());
+        h.write(text.as_bytes());
+        h.write_u8(0);
+    }
+    let dir = root.join(format!("{:016x}", h.finish()));
+    let modules = dir.join("modules.rs");
+    if modules.is_file() {
+        return Ok(modules);
+    }
+    let io =
+        |e: std::io::Error| format!("cannot write the grader's copy in {}: {e}", root.display());
+    std::fs::create_dir_all(root).map_err(io)?;
+    let tmp = root.join(format!("tmp-{}-{:016x}", std::process::id(), h.finish()));
+    let _ = std::fs::remove_dir_all(&tmp);
+    let mut list = String::from("// Written by the grader: the exercise files, as copied.\n");
+    let mut chapter = "";
+    for (stub, text) in files {
+        let ch = stub.folder.split('-').next().unwrap_or(stub.folder);
+        if ch != chapter {
+            if !chapter.is_empty() {
+                list += "}\n";
+            }
+            list += &format!("pub mod {ch} {{\n");
+            chapter = ch;
+        }
+        let file = tmp
+            .join(stub.folder)
+            .join("exercises")
+            .join(format!("{}.rs", stub.name));
+        std::fs::create_dir_all(file.parent().unwrap_or(&tmp)).map_err(io)?;
+        std::fs::write(&file, text).map_err(io)?;
+        let final_path = dir
+            .join(stub.folder)
+            .join("exercises")
+            .join(format!("{}.rs", stub.name));
+        list += &format!(
+            "    #[path = {:?}]\n    pub mod {};\n",
+            final_path.display().to_string(),
+            stub.name
+        );
+    }
+    list += "}\n";
+    std::fs::write(tmp.join("modules.rs"), list).map_err(io)?;
+    match std::fs::rename(&tmp, &dir) {
+        Ok(()) => Ok(modules),
+        // Another grader wrote the same folder first: the same content.
+        Err(_) if modules.is_file() => {
+            let _ = std::fs::remove_dir_all(&tmp);
+            Ok(modules)
+        }
+        Err(e) => Err(io(e)),
+    }
+}
+
+/// Builds the student's process with the exercise files under `dir` at
+/// `place`; an exercise whose file draws a compiler error is replaced by
+/// its stub and the crate rebuilt. Setting `cancel` stops cargo and
+/// returns an error.
 pub fn build_exercises_in(
     dir: &Path,
     place: &Place,
@@ -88,8 +212,11 @@ pub fn build_exercises_in(
     let dir = dir
         .canonicalize()
         .map_err(|e| format!("{}: {e}", dir.display()))?;
+    let sources = place.target.join("raystep-grade");
     let mut broken: BTreeMap<String, String> = BTreeMap::new();
-    for _round in 0..6 {
+    for _round in 0..STUBS.len() + 1 {
+        let files = texts(&dir, &mut broken);
+        let modules = write_sources(&sources, &files)?;
         let mut cmd = Command::new(&cargo);
         cmd.args([
             "build",
@@ -97,17 +224,13 @@ pub fn build_exercises_in(
             "--color",
             "never",
             "-p",
-            "raystep-exercises",
+            "raystep-grade-child",
         ])
-        .args(["--bin", "grade-student", "--manifest-path"])
+        .arg("--manifest-path")
         .arg(root().join("Cargo.toml"))
         .arg("--target-dir")
         .arg(&place.target)
-        .env("RAYSTEP_EXERCISES_DIR", &dir)
-        .env(
-            "RAYSTEP_BROKEN",
-            broken.keys().cloned().collect::<Vec<_>>().join(","),
-        );
+        .env("RAYSTEP_GRADE_MODULES", &modules);
         if place.release {
             cmd.arg("--release");
         }
@@ -120,6 +243,7 @@ pub fn build_exercises_in(
             let runner = place.runner();
             return Ok(Built { runner, broken });
         }
+        let copies = sources.display().to_string();
         let (found, other) = attribute_errors(&stderr);
         let new: Vec<_> = found
             .into_iter()
@@ -135,9 +259,32 @@ pub fn build_exercises_in(
                 }
             ));
         }
-        broken.extend(new);
+        for (id, message) in new {
+            // Name the student's file, not the grader's copy of it.
+            broken.insert(id, strip_copies(&message, &copies));
+        }
     }
     Err("the exercises still do not compile after leaving out the broken files".into())
+}
+
+/// `message` with the grader's copies' folder (`…/raystep-grade/<hash>/`)
+/// taken out of its paths, which then start at the chapter folder.
+fn strip_copies(message: &str, copies: &str) -> String {
+    message
+        .lines()
+        .map(|line| match line.find(copies) {
+            Some(i) => {
+                let rest = &line[i + copies.len()..];
+                // Past `/<hash>/`.
+                let rest = rest.trim_start_matches('/');
+                let rest = rest.split_once('/').map_or(rest, |(_, r)| r);
+                format!("{}{rest}", &line[..i])
+            }
+            None => line.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+        + "\n"
 }
 
 /// Splits cargo's error output into messages and assigns each to the

@@ -20,6 +20,9 @@ pub enum Ran {
         status: ExitStatus,
         /// What it wrote to standard output.
         stdout: String,
+        /// The same, as bytes (the student's process writes its transcript
+        /// there).
+        raw: Vec<u8>,
         /// What it wrote to standard error.
         stderr: String,
     },
@@ -34,26 +37,31 @@ pub enum Ran {
     Cancelled,
 }
 
-/// The most a child may write to standard output and standard error
-/// together before it is stopped: 4 MiB (a check's own output is a few
-/// hundred bytes; a student's debugging prints rarely reach this).
+/// The most a child may write to standard error before it is stopped:
+/// 4 MiB (a check's own output is a few hundred bytes; a student's
+/// debugging prints rarely reach this).
 pub const OUTPUT_LIMIT: usize = 4 << 20;
+
+/// The most a child may write to standard output: 1 GiB (the student's
+/// process writes the transcript of its calls there, up to some tens of
+/// MiB for chapter 6's capstone).
+pub const TRANSCRIPT_LIMIT: usize = 1 << 30;
 
 /// Both outputs of a child, read on two threads into one budget.
 struct Outputs {
     stdout: Arc<Mutex<Vec<u8>>>,
     stderr: Arc<Mutex<Vec<u8>>>,
-    total: Arc<AtomicUsize>,
+    out_total: Arc<AtomicUsize>,
+    err_total: Arc<AtomicUsize>,
     done: mpsc::Receiver<()>,
 }
 
 impl Outputs {
     fn start(child: &mut Child) -> Outputs {
-        let total = Arc::new(AtomicUsize::new(0));
         let (tx, done) = mpsc::channel();
-        let read = |mut r: Box<dyn Read + Send>| {
+        let read = |mut r: Box<dyn Read + Send>, total: &Arc<AtomicUsize>, limit: usize| {
             let buf = Arc::new(Mutex::new(Vec::new()));
-            let (into, total, tx) = (Arc::clone(&buf), Arc::clone(&total), tx.clone());
+            let (into, total, tx) = (Arc::clone(&buf), Arc::clone(total), tx.clone());
             std::thread::spawn(move || {
                 let mut chunk = [0u8; 8192];
                 while let Ok(n) = r.read(&mut chunk) {
@@ -62,7 +70,7 @@ impl Outputs {
                     }
                     // Past the limit, keep draining (so the writer is not
                     // blocked before it is stopped) but store nothing.
-                    if total.fetch_add(n, Ordering::Relaxed) + n <= OUTPUT_LIMIT {
+                    if total.fetch_add(n, Ordering::Relaxed) + n <= limit {
                         lock(&into).extend_from_slice(&chunk[..n]);
                     }
                 }
@@ -70,24 +78,35 @@ impl Outputs {
             });
             buf
         };
-        let stdout = read(Box::new(child.stdout.take().expect("piped")));
-        let stderr = read(Box::new(child.stderr.take().expect("piped")));
+        let (out_total, err_total) = (Arc::new(AtomicUsize::new(0)), Arc::new(AtomicUsize::new(0)));
+        let stdout = read(
+            Box::new(child.stdout.take().expect("piped")),
+            &out_total,
+            TRANSCRIPT_LIMIT,
+        );
+        let stderr = read(
+            Box::new(child.stderr.take().expect("piped")),
+            &err_total,
+            OUTPUT_LIMIT,
+        );
         Outputs {
             stdout,
             stderr,
-            total,
+            out_total,
+            err_total,
             done,
         }
     }
 
     fn too_much(&self) -> bool {
-        self.total.load(Ordering::Relaxed) > OUTPUT_LIMIT
+        self.out_total.load(Ordering::Relaxed) > TRANSCRIPT_LIMIT
+            || self.err_total.load(Ordering::Relaxed) > OUTPUT_LIMIT
     }
 
     /// What was read so far, after waiting up to `wait` for both pipes to
     /// close (a grandchild that left the process group may hold them open
     /// for ever: we do not wait for it).
-    fn collect(&self, wait: Duration) -> (String, String) {
+    fn collect(&self, wait: Duration) -> (Vec<u8>, String) {
         let until = Instant::now() + wait;
         for _ in 0..2 {
             let left = until.saturating_duration_since(Instant::now());
@@ -95,8 +114,8 @@ impl Outputs {
                 break;
             }
         }
-        let text = |b: &Arc<Mutex<Vec<u8>>>| String::from_utf8_lossy(&lock(b)).into_owned();
-        (text(&self.stdout), text(&self.stderr))
+        let err = String::from_utf8_lossy(&lock(&self.stderr)).into_owned();
+        (std::mem::take(&mut *lock(&self.stdout)), err)
     }
 }
 
@@ -107,7 +126,8 @@ fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
 /// Runs `cmd` in a process group of its own, with `input` on its standard
 /// input (then closed) and both outputs captured, until it exits; stops
 /// the whole group after `timeout`, as soon as `cancel` is set, or when it
-/// writes more than [`OUTPUT_LIMIT`]. The caller never waits longer than
+/// writes more than [`OUTPUT_LIMIT`] to standard error or
+/// [`TRANSCRIPT_LIMIT`] to standard output. The caller never waits longer than
 /// that, nor for pipes that something the child started keeps open. Used
 /// for `cargo build` and for every `grade-student` process.
 pub fn run_limited(
@@ -137,13 +157,14 @@ pub fn run_limited(
         if let Some(status) = child.try_wait()? {
             // Whatever the child started and left in its group goes too.
             kill_group(child.id());
-            let (stdout, stderr) = outputs.collect(Duration::from_millis(500));
+            let (raw, stderr) = outputs.collect(Duration::from_millis(500));
             if outputs.too_much() {
                 return Ok(Ran::TooMuchOutput);
             }
             return Ok(Ran::Exited {
                 status,
-                stdout,
+                stdout: String::from_utf8_lossy(&raw).into_owned(),
+                raw,
                 stderr,
             });
         }

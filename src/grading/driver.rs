@@ -10,12 +10,11 @@ use std::time::Duration;
 
 use clap::Parser;
 
-use crate::core::film::write_atomically;
 use crate::core::format::format_count;
 use crate::core::text::escape_keep_newlines;
 use crate::grading::build::{build_exercises, exercises_dir};
 use crate::grading::exercise::{Check, Exercise, Outcome};
-use crate::grading::process::{reference, run_student, sandbox_gaps};
+use crate::grading::process::{fresh_seed, reference, run_student, sandbox_gaps};
 use crate::grading::sandbox::{become_subreaper, kill_orphans};
 use crate::grading::{all, hints};
 use crate::grading::{remove_failure_images, shipped};
@@ -45,6 +44,10 @@ struct GradeCli {
     /// The time limit of one exercise, in seconds.
     #[arg(long, value_name = "SECONDS", default_value_t = 5.0, value_parser = parse_timeout)]
     timeout: f64,
+    /// The seed of the inputs the checks draw: a new one every run unless
+    /// given (to replay a run exactly).
+    #[arg(long, value_name = "N")]
+    seed: Option<u64>,
     /// Where images of failed image checks (and the hints seen) go.
     #[arg(long, value_name = "DIR", default_value = "out/grade")]
     out: PathBuf,
@@ -97,8 +100,8 @@ pub fn grade_main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    if let Err(e) = std::fs::create_dir_all(&cli.out) {
-        eprintln!("error: cannot create {}: {e}", cli.out.display());
+    if let Err(e) = crate::grading::safe_out::ensure_dir(&cli.out) {
+        eprintln!("error: {e}");
         return ExitCode::from(2);
     }
     let mut stdout = std::io::stdout();
@@ -118,10 +121,7 @@ pub fn grade_main() -> ExitCode {
             live,
         )
     } else {
-        say(
-            &mut stdout,
-            "building your exercises (the raystep-exercises crate)...\n",
-        );
+        say(&mut stdout, "building your exercises...\n");
         let dir = cli.exercises.clone().unwrap_or_else(exercises_dir);
         let built = match build_exercises(&dir) {
             Ok(b) => b,
@@ -137,7 +137,7 @@ pub fn grade_main() -> ExitCode {
                 format_count(exercises.len(), "exercise")
             ),
         );
-        let gaps = sandbox_gaps(&built.runner, &cli.out);
+        let gaps = sandbox_gaps(&built.runner);
         if !gaps.is_empty() {
             say(
                 &mut stdout,
@@ -149,6 +149,7 @@ pub fn grade_main() -> ExitCode {
             );
         }
         let timeout = Duration::from_secs_f64(cli.timeout);
+        let seed = cli.seed.unwrap_or_else(fresh_seed);
         // What a student's code starts and detaches comes back to us when
         // its parent dies, and is stopped after each exercise.
         become_subreaper();
@@ -157,7 +158,7 @@ pub fn grade_main() -> ExitCode {
             &mut |ex| {
                 let graded = match built.broken.get(&ex.id()) {
                     Some(message) => (Outcome::DoesNotCompile(message.clone()), Vec::new()),
-                    None => run_student(&built.runner, ex, &cli.out, timeout),
+                    None => run_student(&built.runner, ex, &cli.out, timeout, seed),
                 };
                 kill_orphans();
                 graded
@@ -197,15 +198,7 @@ pub fn grade_main() -> ExitCode {
 /// refusing a `path` that exists and is not a regular file (a FIFO would
 /// block the write for ever, a link could point anywhere).
 pub fn write_results(path: &std::path::Path, text: &str) -> Result<(), String> {
-    if let Ok(meta) = std::fs::symlink_metadata(path) {
-        if !meta.file_type().is_file() {
-            return Err("it exists and is not a regular file".into());
-        }
-    }
-    write_atomically(path, |tmp| {
-        std::fs::write(tmp, text).map_err(|e| e.to_string())
-    })
-    .map_err(|e| e.to_string())
+    crate::grading::safe_out::write(path, text.as_bytes())
 }
 
 /// `grade --restore chN/name`: the shipped file back in place, the

@@ -1,27 +1,25 @@
 //! The student's capstone, rendered live: what the terminal UI's student
 //! mode runs in a thread of its own, here without any terminal so that
-//! it can be tested. [`live_student`] builds the exercises crate as the
-//! grader does ([`build_exercises_in`]), then runs `grade-student render
-//! chN` in a process of its own under a time limit (as `chN --student`
-//! does), and reads back the student's image and the reference. Every
+//! it can be tested. [`live_student`] builds the student's process as the
+//! grader does ([`build_exercises_in`]), then grades the capstone with it
+//! under a time limit (as `chN --student` does: the student's code runs
+//! there, the picture is made here from its answers), and reads back the
+//! student's image and the reference. Every
 //! way this can go wrong (no cargo, a compile error, the stub's `todo!()`,
 //! a panic, a loop that never ends) is a [`LiveError`] with a one-line
 //! status, never a panic. [`exercise_stamp`] tells the UI when the
 //! chapter's exercise files changed.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, SystemTime};
 
 use crate::core::film::Film;
 use crate::core::warp_test::Drawn;
 use crate::grading::build::{build_exercises_in, Place};
-use crate::grading::child::{crash_message, last_progress, run_limited, Ran};
-use crate::grading::exercise::Exercise;
-use crate::grading::process::too_much_output;
-use crate::grading::runner::{Handshake, CAPSTONES, WARP_HEADER};
-use crate::grading::PROGRESS_ENV;
+use crate::grading::exercise::{Exercise, Outcome};
+use crate::grading::process::{capstone_images, in_student_process};
+use crate::grading::runner::{replay_warp, Request, CAPSTONES};
 
 /// The student's capstone image beside the reference.
 #[derive(Clone, Debug)]
@@ -230,93 +228,44 @@ pub fn live_student_with(
         let message = message.clone();
         return Err(LiveError::DoesNotCompile { id, message });
     }
-    std::fs::create_dir_all(&opts.out)
-        .map_err(|e| LiveError::Build(format!("cannot create {}: {e}", opts.out.display())))?;
     rendering();
-    let mut cmd = Command::new(&built.runner);
-    cmd.args(["render", &format!("ch{chapter}")])
-        .arg(&opts.out)
-        .env(PROGRESS_ENV, "1");
-    let panicked = |message: String| LiveError::Panicked {
-        id: id.clone(),
-        message,
-    };
-    let handshake = Handshake::new(opts.timeout);
-    let (status, stdout, stderr) = run_student_code(
-        &mut cmd,
-        &handshake.line(),
-        (&built.runner, &id),
-        opts,
-        cancel,
-        &last_progress,
-    )?;
-    let Some(verdict) = handshake.verdict_in(&stdout) else {
-        return Err(panicked(crash_message(&status, &stderr)));
-    };
-    match verdict.outcome.as_str() {
-        "not_implemented" => {
+    let (outcome, files) = capstone_images(&built.runner, &ex, &opts.out, opts.timeout, cancel);
+    let check = match outcome {
+        Outcome::Passed(c) | Outcome::Failed(c) => c,
+        Outcome::NotImplemented => {
             let file = ex.file.to_string();
             return Err(LiveError::NotStarted { id, file });
         }
-        "passed" | "failed" => {}
-        _ => return Err(panicked(verdict.detail)),
-    }
+        Outcome::TimedOut { seconds, doing } => {
+            return Err(LiveError::TimedOut { id, seconds, doing })
+        }
+        Outcome::Panicked(m) if m == "cancelled" => return Err(LiveError::Build(m)),
+        Outcome::Panicked(message) | Outcome::DoesNotCompile(message) => {
+            return Err(LiveError::Panicked { id, message })
+        }
+    };
     let read = |i: usize| {
-        let path = verdict.images.get(i).ok_or("the render wrote no images")?;
+        let path = files.get(i).ok_or("the render wrote no images")?;
         Film::read_png(path).map_err(|e| e.to_string())
     };
     match (read(0), read(1)) {
         (Ok(student), Ok(reference)) => Ok(StudentRender {
-            matches: verdict.outcome == "passed",
-            detail: verdict.detail,
+            matches: check.passed(),
+            detail: check.detail,
             id,
             student,
             reference,
         }),
-        (Err(e), _) | (_, Err(e)) => Err(panicked(format!("cannot read the images: {e}"))),
+        (Err(e), _) | (_, Err(e)) => Err(LiveError::Panicked {
+            id,
+            message: format!("cannot read the images: {e}"),
+        }),
     }
 }
 
-/// Runs the student's code (`cmd`: the exercises' `runner`, for exercise
-/// `id`) under the time limit, handing it `input`: its exit status and
-/// output, or the [`LiveError`] for a runner that cannot start, a cancel,
-/// too much output or the time limit (`doing` says what it was doing, from
-/// what it wrote to standard error).
-fn run_student_code(
-    cmd: &mut Command,
-    input: &[u8],
-    (runner, id): (&Path, &str),
-    opts: &LiveOptions,
-    cancel: Option<&AtomicBool>,
-    doing: &dyn Fn(&str) -> String,
-) -> Result<(std::process::ExitStatus, String, String), LiveError> {
-    match run_limited(cmd, input, Some(opts.timeout), cancel) {
-        Err(e) => Err(LiveError::Build(format!(
-            "cannot start {}: {e}",
-            runner.display()
-        ))),
-        Ok(Ran::Cancelled) => Err(LiveError::Build("cancelled".into())),
-        Ok(Ran::TooMuchOutput) => Err(LiveError::Panicked {
-            id: id.to_string(),
-            message: too_much_output(),
-        }),
-        Ok(Ran::TimedOut { stderr }) => Err(LiveError::TimedOut {
-            id: id.to_string(),
-            seconds: opts.timeout.as_secs_f64(),
-            doing: doing(&stderr),
-        }),
-        Ok(Ran::Exited {
-            status,
-            stdout,
-            stderr,
-        }) => Ok((status, stdout, stderr)),
-    }
-}
-
-/// Builds the exercises and has the student's sampling routine `id` (an
-/// entry of the exercises crate's `warps()`, e.g. `ch5/cosine_hemisphere`)
-/// draw `draws` directions in a sandboxed process under the time limit;
-/// the counts, or why not.
+/// Builds the exercises and has the student's sampling routine `id`
+/// (exercise 5.2, `ch5/cosine_hemisphere`) draw `draws` directions in its
+/// sandboxed process under the time limit; the counts, or why not.
 pub fn live_warp(
     id: &str,
     draws: usize,
@@ -326,41 +275,39 @@ pub fn live_warp(
 ) -> Result<Drawn, LiveError> {
     let ex = crate::grading::all()
         .into_iter()
-        .find(|e| e.id() == id)
-        .ok_or_else(|| LiveError::Build(format!("no exercise {id}")))?;
+        .find(|e| e.id() == id && id == "ch5/cosine_hemisphere")
+        .ok_or_else(|| LiveError::Build(format!("no sampling routine {id}")))?;
     let built =
         build_exercises_in(&opts.exercises, &opts.place, cancel).map_err(LiveError::Build)?;
     if let Some(message) = built.broken.get(id) {
         let (id, message) = (id.to_string(), message.clone());
         return Err(LiveError::DoesNotCompile { id, message });
     }
-    let out = opts.out.join("warp");
-    std::fs::create_dir_all(&out)
-        .map_err(|e| LiveError::Build(format!("cannot create {}: {e}", out.display())))?;
-    let mut cmd = Command::new(&built.runner);
-    cmd.args(["warp", id])
-        .arg(&out)
-        .args([draws.to_string(), seed.to_string()]);
+    let request = Request::Warp { draws, seed };
     let panicked = |message: String| LiveError::Panicked {
         id: id.to_string(),
         message,
     };
-    let (status, stdout, stderr) =
-        run_student_code(&mut cmd, b"", (&built.runner, id), opts, cancel, &|_| {
-            "drawing directions".to_string()
-        })?;
-    let first = stdout.lines().next().unwrap_or("");
-    if first == "not_implemented" {
-        let (id, file) = (id.to_string(), ex.file.to_string());
-        return Err(LiveError::NotStarted { id, file });
-    }
-    if let Some(message) = first.strip_prefix("panicked: ") {
-        return Err(panicked(message.to_string()));
-    }
-    match stdout.strip_prefix(WARP_HEADER) {
-        Some(rest) => Drawn::from_text(rest)
-            .ok_or_else(|| panicked("its draws could not be read back".into())),
-        None => Err(panicked(crash_message(&status, &stderr))),
+    let transcript = match in_student_process(&built.runner, &request, opts.timeout, cancel) {
+        Ok(t) => t,
+        Err(Outcome::TimedOut { seconds, .. }) => {
+            return Err(LiveError::TimedOut {
+                id: id.to_string(),
+                seconds,
+                doing: "drawing directions".into(),
+            })
+        }
+        Err(Outcome::Panicked(m)) if m == "cancelled" => return Err(LiveError::Build(m)),
+        Err(Outcome::Panicked(m)) => return Err(panicked(m)),
+        Err(other) => return Err(panicked(format!("{other:?}"))),
+    };
+    match replay_warp(transcript, draws, seed) {
+        Ok(drawn) => Ok(drawn),
+        Err(m) if m == "not_implemented" => Err(LiveError::NotStarted {
+            id: id.to_string(),
+            file: ex.file.to_string(),
+        }),
+        Err(m) => Err(panicked(m.trim_start_matches("panicked: ").to_string())),
     }
 }
 

@@ -16,6 +16,7 @@
 //! and never hangs. When a check compares images and fails, the student's
 //! image, the reference and their difference are written to `out/grade/`.
 
+pub mod bridge;
 pub mod build;
 pub mod child;
 pub mod driver;
@@ -25,8 +26,13 @@ pub mod hints;
 pub mod live;
 pub mod process;
 pub mod runner;
+pub mod safe_out;
 pub mod sandbox;
+pub mod seccomp;
 pub mod shipped;
+pub mod source_rules;
+pub mod students;
+pub mod wire;
 
 pub use driver::grade_main;
 pub use exercise::{Check, Exercise, Outcome, Symptom};
@@ -58,6 +64,35 @@ pub fn run(ex: &Exercise) -> Outcome {
 
 /// Where the first panic of a check happened (`file:line:column`).
 static PANIC_AT: Mutex<Option<String>> = Mutex::new(None);
+
+thread_local! {
+    /// The seed of the inputs a check draws, new for every grading run
+    /// (see [`run_seed`]).
+    static RUN_SEED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
+/// Sets the seed of the inputs this thread's checks draw: the grader
+/// draws one per run, and the student's process and the grader's replay
+/// use the same one.
+pub fn set_run_seed(seed: u64) {
+    RUN_SEED.with(|s| s.set(seed));
+}
+
+/// The seed of the inputs this thread's checks draw (0 unless set: raystep's
+/// own tests are reproducible).
+pub fn run_seed() -> u64 {
+    RUN_SEED.with(|s| s.get())
+}
+
+/// Records `at` as where the first panic of the running check happened,
+/// unless one is recorded already (a replayed panic of the student's code
+/// happened in the student's file, not where the replay raises it).
+pub(crate) fn note_panic_at(at: String) {
+    PANIC_AT
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .get_or_insert(at);
+}
 
 /// A panic's message (`"panicked"` when it carries no text).
 pub fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
@@ -108,7 +143,7 @@ pub fn run_check(check: fn() -> Check) -> Outcome {
 
 /// A source path from its chapter folder (`ch3-ray-triangle/exercises/…`)
 /// or from `src/`, whichever it is under; else as it is.
-fn short_path(file: &str) -> String {
+pub(crate) fn short_path(file: &str) -> String {
     let file = file.replace('\\', "/");
     let parts: Vec<&str> = file.split('/').collect();
     match parts.iter().rposition(|p| *p == "exercises" || *p == "src") {
@@ -130,6 +165,10 @@ pub fn write_failure_images(ex: &Exercise, check: &Check, dir: &Path) -> Result<
         dir.join(format!("{stem}-reference.png")),
         dir.join(format!("{stem}-diff.png")),
     ];
+    safe_out::ensure_dir(dir).map_err(crate::core::error::Error::Usage)?;
+    for f in &files {
+        safe_out::refuse_in_way(f).map_err(crate::core::error::Error::Usage)?;
+    }
     candidate.write_png(&files[0])?;
     reference.write_png(&files[1])?;
     let legend = format!("student - reference: blue -{DIFF_SCALE}, black 0, red +{DIFF_SCALE}");

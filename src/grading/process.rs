@@ -1,31 +1,82 @@
-//! The grader's side of running a student's code: each check in a
-//! `grade-student` process of its own, stopped at a time limit, its
-//! verdict read back; and `chN --student`, which renders a chapter's
-//! capstone with the student's code.
+//! The grader's side of running a student's code: each exercise's
+//! [`Request`] answered by the student's process (`raystep-grade-child`)
+//! under a time limit, its transcript replayed in this process, where the
+//! verdict is made ([`crate::grading::runner::replay_check`]); and
+//! `chN --student`, which renders a chapter's capstone with the student's
+//! code.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, ExitCode, Stdio};
-use std::time::{Duration, Instant};
+use std::process::{Command, ExitCode};
+use std::sync::atomic::AtomicBool;
+use std::time::Duration;
 
 use crate::grading::build::{build_exercises, exercises_dir};
 use crate::grading::child::{crash_message, last_progress, run_limited, Ran, OUTPUT_LIMIT};
-use crate::grading::exercise::{Exercise, Outcome};
-use crate::grading::runner::Handshake;
-use crate::grading::sandbox::{kill_group, own_group};
+use crate::grading::exercise::{Check, Exercise, Outcome};
+use crate::grading::runner::{replay_check, Request};
 use crate::grading::{run, write_failure_images, PROGRESS_ENV};
+
+/// A seed for one grading run's drawn inputs, different every run (not
+/// printed: a student cannot learn the inputs in advance).
+pub fn fresh_seed() -> u64 {
+    use std::hash::{BuildHasher, Hasher};
+    let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+    h.write_u128(
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_nanos()),
+    );
+    h.write_u32(std::process::id());
+    h.finish()
+}
+
+/// Runs `request` in the student's process `runner` under `timeout` (or
+/// until `cancel` is set): its transcript, or the outcome that ended it
+/// (a crash, the time limit, too much output).
+pub fn in_student_process(
+    runner: &Path,
+    request: &Request,
+    timeout: Duration,
+    cancel: Option<&AtomicBool>,
+) -> Result<Vec<u8>, Outcome> {
+    let mut cmd = Command::new(runner);
+    // Nothing of the grader's environment reaches the student's code.
+    cmd.env_clear().env(PROGRESS_ENV, "1");
+    match run_limited(&mut cmd, request.line().as_bytes(), Some(timeout), cancel) {
+        Err(e) => Err(Outcome::Panicked(format!(
+            "could not start {}: {e}",
+            runner.display()
+        ))),
+        Ok(Ran::TimedOut { stderr }) => Err(Outcome::TimedOut {
+            seconds: timeout.as_secs_f64(),
+            doing: last_progress(&stderr),
+        }),
+        Ok(Ran::TooMuchOutput) => Err(Outcome::Panicked(too_much_output())),
+        Ok(Ran::Cancelled) => Err(Outcome::Panicked("cancelled".into())),
+        Ok(Ran::Exited {
+            status,
+            raw,
+            stderr,
+            ..
+        }) => {
+            if status.success() && !raw.is_empty() {
+                Ok(raw)
+            } else {
+                Err(Outcome::Panicked(crash_message(&status, &stderr)))
+            }
+        }
+    }
+}
 
 /// `chN --student`: builds the exercises, then renders chapter N's
 /// capstone scene with the student's code beside the reference and their
 /// difference, into `out/student/` (under a one-minute limit).
 pub fn student_main(chapter: u32) -> ExitCode {
-    let Some((_, name)) = crate::grading::runner::CAPSTONES
-        .iter()
-        .find(|(c, _)| *c == chapter)
-    else {
+    let Some(ex) = crate::grading::live::capstone(chapter) else {
         eprintln!("chapter {chapter} has no capstone to render yet");
         return ExitCode::from(2);
     };
-    eprintln!("building your exercises (the raystep-exercises crate)...");
+    eprintln!("building your exercises...");
     let built = match build_exercises(&exercises_dir()) {
         Ok(b) => b,
         Err(e) => {
@@ -33,44 +84,76 @@ pub fn student_main(chapter: u32) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let id = format!("ch{chapter}/{name}");
+    let id = ex.id();
     if let Some(m) = built.broken.get(&id) {
         eprintln!("{id} does not compile:\n{m}");
         return ExitCode::from(1);
     }
     let out = PathBuf::from("out/student");
-    let mut cmd = Command::new(&built.runner);
-    cmd.args(["render", &format!("ch{chapter}")])
-        .arg(&out)
-        .stdin(Stdio::null());
-    own_group(&mut cmd);
-    let mut child = match cmd.spawn() {
-        Ok(c) => c,
-        Err(e) => {
-            eprintln!("error: could not start {}: {e}", built.runner.display());
-            return ExitCode::from(2);
+    let (outcome, _) = capstone_images(&built.runner, &ex, &out, Duration::from_secs(60), None);
+    match outcome {
+        Outcome::Passed(c) | Outcome::Failed(c) => {
+            let verdict = if c.passed() {
+                "matches the reference"
+            } else {
+                "differs from the reference"
+            };
+            println!("your {id} {verdict}: {}", c.detail);
+            ExitCode::SUCCESS
         }
+        Outcome::NotImplemented => {
+            println!("{id} is not started: replace the todo!() in {}", ex.file);
+            ExitCode::from(1)
+        }
+        other => {
+            println!("{id}: {other:?}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+/// Grades capstone `ex` with the student's process `runner` and writes
+/// the student's image, the reference and their difference into `out`
+/// whether it passes or not (the live view and `chN --student` show them);
+/// the outcome (its check without the images) and the files written.
+pub fn capstone_images(
+    runner: &Path,
+    ex: &Exercise,
+    out: &Path,
+    timeout: Duration,
+    cancel: Option<&AtomicBool>,
+) -> (Outcome, Vec<PathBuf>) {
+    let seed = fresh_seed();
+    let request = Request::Check { id: ex.id(), seed };
+    let transcript = match in_student_process(runner, &request, timeout, cancel) {
+        Ok(t) => t,
+        Err(outcome) => return (outcome, Vec::new()),
     };
-    let start = Instant::now();
-    loop {
-        match child.try_wait() {
-            Ok(Some(status)) => {
-                kill_group(child.id());
-                return ExitCode::from(u8::try_from(status.code().unwrap_or(1)).unwrap_or(1));
-            }
-            Ok(None) if start.elapsed() > Duration::from_secs(60) => {
-                kill_group(child.id());
-                let _ = child.kill();
-                let _ = child.wait();
-                eprintln!("your {id} ran for a minute and was stopped: does a loop never end?");
-                return ExitCode::from(1);
-            }
-            Ok(None) => std::thread::sleep(Duration::from_millis(10)),
-            Err(e) => {
-                eprintln!("error: {e}");
-                return ExitCode::from(2);
-            }
+    let outcome = replay_check(&ex.id(), transcript, seed);
+    let (Outcome::Passed(c) | Outcome::Failed(c)) = &outcome else {
+        return (outcome, Vec::new());
+    };
+    let passed = c.passed();
+    let written = crate::grading::safe_out::ensure_dir(out)
+        .and_then(|_| write_failure_images(ex, c, out).map_err(|e| e.to_string()));
+    let strip = |c: &Check| Check {
+        images: None,
+        ..c.clone()
+    };
+    match written {
+        Ok(files) => {
+            let c = strip(c);
+            let outcome = if passed {
+                Outcome::Passed(c)
+            } else {
+                Outcome::Failed(c)
+            };
+            (outcome, files)
         }
+        Err(e) => (
+            Outcome::Panicked(format!("could not write the images: {e}")),
+            Vec::new(),
+        ),
     }
 }
 
@@ -85,40 +168,37 @@ pub fn reference(ex: &Exercise, out: &Path) -> (Outcome, Vec<PathBuf>) {
     (outcome, images)
 }
 
-/// Runs the student's check of `ex` in a `grade-student` process, stopping
-/// it after `timeout`; the outcome and the images the check wrote.
+/// Grades the student's `ex`: its check's calls answered by the
+/// student's process `runner` (stopped after `timeout`), the verdict
+/// made here on the inputs drawn from `seed`; the outcome and the images
+/// written for a failed image check (into `out`, never through a link).
 pub fn run_student(
     runner: &Path,
     ex: &Exercise,
     out: &Path,
     timeout: Duration,
+    seed: u64,
 ) -> (Outcome, Vec<PathBuf>) {
-    let mut cmd = Command::new(runner);
-    cmd.arg(ex.id()).arg(out).env(PROGRESS_ENV, "1");
-    let handshake = Handshake::new(timeout);
-    match run_limited(&mut cmd, &handshake.line(), Some(timeout), None) {
-        Err(e) => {
-            let m = format!("could not start {}: {e}", runner.display());
-            (Outcome::Panicked(m), Vec::new())
+    let request = Request::Check { id: ex.id(), seed };
+    let transcript = match in_student_process(runner, &request, timeout, None) {
+        Ok(t) => t,
+        Err(outcome) => return (outcome, Vec::new()),
+    };
+    match replay_check(&ex.id(), transcript, seed) {
+        Outcome::Failed(c) => {
+            let (images, note) = match write_failure_images(ex, &c, out) {
+                Ok(files) => (files, String::new()),
+                Err(e) => (Vec::new(), format!(" (could not write images: {e})")),
+            };
+            let c = Check {
+                images: None,
+                detail: c.detail + &note,
+                ..c
+            };
+            (Outcome::Failed(c), images)
         }
-        Ok(Ran::TimedOut { stderr }) => {
-            let seconds = timeout.as_secs_f64();
-            let doing = last_progress(&stderr);
-            (Outcome::TimedOut { seconds, doing }, Vec::new())
-        }
-        Ok(Ran::TooMuchOutput) => (Outcome::Panicked(too_much_output()), Vec::new()),
-        Ok(Ran::Cancelled) => (Outcome::Panicked("cancelled".into()), Vec::new()),
-        Ok(Ran::Exited {
-            status,
-            stdout,
-            stderr,
-        }) => match handshake.verdict_in(&stdout) {
-            Some(v) => (v.outcome(ex), v.images),
-            None => (
-                Outcome::Panicked(crash_message(&status, &stderr)),
-                Vec::new(),
-            ),
-        },
+        Outcome::Passed(c) => (Outcome::Passed(Check { images: None, ..c }), Vec::new()),
+        other => (other, Vec::new()),
     }
 }
 
@@ -130,15 +210,23 @@ pub fn too_much_output() -> String {
     )
 }
 
-/// What the sandbox of `grade-student` (built at `runner`) cannot enforce
-/// on this system, one phrase each: empty where everything holds. Asked
-/// of a `grade-student` process of its own, since the limits, once set,
-/// stay with the process that set them.
-pub fn sandbox_gaps(runner: &Path, scratch: &Path) -> Vec<String> {
-    let mut cmd = Command::new(runner);
-    cmd.arg(crate::grading::runner::SANDBOX_CHECK).arg(scratch);
-    match run_limited(&mut cmd, b"", Some(Duration::from_secs(10)), None) {
-        Ok(Ran::Exited { stdout, .. }) => stdout.lines().map(str::to_string).collect(),
-        _ => vec!["its check did not run".into()],
+/// What the sandbox of the student's process (built at `runner`) cannot
+/// enforce on this system, one phrase each: empty where everything holds.
+/// Asked of a process of its own, since the sandbox, once closed, stays
+/// with the process that closed it.
+pub fn sandbox_gaps(runner: &Path) -> Vec<String> {
+    match in_student_process(
+        runner,
+        &Request::SandboxCheck,
+        Duration::from_secs(10),
+        None,
+    ) {
+        Ok(text) => String::from_utf8_lossy(&text)
+            .lines()
+            .skip(1)
+            .filter(|l| !l.is_empty())
+            .map(str::to_string)
+            .collect(),
+        Err(_) => vec!["its check did not run".into()],
     }
 }

@@ -1,15 +1,16 @@
 //! What keeps a student's code in its box while it is graded: resource
-//! limits and a write-only-here rule on the `grade-student` process, its
+//! limits, no file system and no new process, thread or socket for the
+//! `raystep-grade-child` process, its
 //! own process group so that the grader can stop it and everything it
 //! started, and (in the `grade` command) a sweep for the processes it left
 //! running detached (through the `nix` crate's safe wrappers of the
 //! system calls).
 //!
 //! On other systems than Unix the limits are skipped and only the child
-//! itself is killed; on Linux kernels without Landlock the write rule is
-//! skipped. [`Limits::apply`] says which held.
-
-use std::path::Path;
+//! itself is killed; on Linux kernels without Landlock the file-system
+//! rule is skipped, and off Linux on x86-64, AArch64 or RISC-V the
+//! system-call rule ([`crate::grading::seccomp`]). [`Limits::confine`]
+//! says which held, and the grader prints it.
 
 /// The limits of one `grade-student` process.
 #[derive(Clone, Copy, Debug)]
@@ -25,21 +26,23 @@ pub struct Limits {
 impl Limits {
     /// For a check with a time limit of `timeout` seconds: 4 GiB of address
     /// space (the largest check, chapter 6's, stays under 1 GiB), CPU time
-    /// for every core over the whole limit and a second more, and files of
-    /// up to 64 MiB (a failure image is a few hundred KiB).
+    /// for every core over the whole limit and a second more, and no file
+    /// written (the process sends its transcript through a pipe).
     pub fn for_timeout(timeout: f64) -> Limits {
         let cores = std::thread::available_parallelism().map_or(1, |n| n.get()) as f64;
         Limits {
             memory: 4 << 30,
             cpu_seconds: (timeout * cores).ceil() as u64 + 1,
-            file_size: 64 << 20,
+            file_size: 0,
         }
     }
 
-    /// Applies the limits to this process, and lets it write only under
-    /// `out` (and to `/dev/null`). Returns what could not be enforced, one
+    /// Closes this process (the student's) into its sandbox: the
+    /// resource limits, no file system at all (Landlock: no file opened,
+    /// read or written from now on), and no new process, thread or socket
+    /// (seccomp). Returns what could not be enforced on this system, one
     /// phrase each (empty when everything holds).
-    pub fn apply(&self, out: &Path) -> Vec<String> {
+    pub fn confine(&self) -> Vec<String> {
         let mut missing = Vec::new();
         #[cfg(unix)]
         {
@@ -58,27 +61,24 @@ impl Limits {
         }
         #[cfg(not(unix))]
         missing.push("resource limits (not on this system)".into());
-        if let Err(e) = restrict_writes(out) {
-            missing.push(format!("the write rule ({e})"));
+        if let Err(e) = close_file_system() {
+            missing.push(format!("the file-system rule ({e})"));
+        }
+        if let Err(e) = crate::grading::seccomp::forbid_escapes() {
+            missing.push(format!("the system-call rule ({e})"));
         }
         missing
     }
 }
 
-/// Lets this process (and what it starts) write only beneath `out` and to
-/// `/dev/null`, through Landlock. Reading stays allowed everywhere.
+/// Lets this process open no file from now on (reading or writing),
+/// through Landlock; what it has open stays usable.
 #[cfg(target_os = "linux")]
-fn restrict_writes(out: &Path) -> Result<(), String> {
-    use landlock::{
-        path_beneath_rules, AccessFs, Ruleset, RulesetAttr, RulesetCreatedAttr, RulesetStatus, ABI,
-    };
-    let abi = ABI::V3;
-    let write = AccessFs::from_write(abi);
+fn close_file_system() -> Result<(), String> {
+    use landlock::{Access, AccessFs, Ruleset, RulesetAttr, RulesetStatus, ABI};
     let status = Ruleset::default()
-        .handle_access(write)
+        .handle_access(AccessFs::from_all(ABI::V3))
         .and_then(|r| r.create())
-        .and_then(|r| r.add_rules(path_beneath_rules([out], write)))
-        .and_then(|r| r.add_rules(path_beneath_rules(["/dev/null"], write)))
         .and_then(|r| r.restrict_self())
         .map_err(|e| e.to_string())?;
     match status.ruleset {
@@ -88,7 +88,7 @@ fn restrict_writes(out: &Path) -> Result<(), String> {
 }
 
 #[cfg(not(target_os = "linux"))]
-fn restrict_writes(_out: &Path) -> Result<(), String> {
+fn close_file_system() -> Result<(), String> {
     Err("only on Linux".into())
 }
 

@@ -11,13 +11,38 @@ use crate::core::film::Film;
 use crate::grading::exercise::Check;
 use crate::scene::Scene;
 
+/// The scenes of `scenes/` the checks draw.
+pub const SCENES: [&str; 4] = [
+    "cornell-box.toml",
+    "interpenetrating.toml",
+    "railroad.toml",
+    "sdf-shapes.toml",
+];
+
+/// The scenes read so far, by name: the student's process reads them all
+/// ([`preload`]) before its sandbox closes the file system.
+static LOADED: std::sync::Mutex<Vec<(String, Scene)>> = std::sync::Mutex::new(Vec::new());
+
+/// Reads every scene of [`SCENES`] now.
+pub fn preload() {
+    for name in SCENES {
+        let _ = scene(name);
+    }
+}
+
 /// A scene of `scenes/`, for a check (panics name the file: a broken
 /// repository, not a student's error).
 pub fn scene(name: &str) -> Scene {
+    let mut loaded = LOADED.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some((_, s)) = loaded.iter().find(|(n, _)| n == name) {
+        return s.clone();
+    }
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("scenes")
         .join(name);
-    Scene::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+    let s = Scene::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    loaded.push((name.to_string(), s.clone()));
+    s
 }
 
 /// Compares two images of the same size: a pixel differs when a channel

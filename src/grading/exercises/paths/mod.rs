@@ -89,6 +89,12 @@ pub fn tally() -> Tally {
     TALLY.with(|t| t.get())
 }
 
+/// Sets this thread's tally to what a student's process counted (the
+/// grader's replay of its transcript).
+pub(crate) fn set_tally(tally: Tally) {
+    TALLY.with(|t| t.set(tally));
+}
+
 fn count(f: impl FnOnce(&mut Tally)) {
     TALLY.with(|t| {
         let mut v = t.get();
@@ -153,6 +159,12 @@ impl PathScene {
     /// Whether a path ran into [`BOUNCE_BUDGET`] in this scene.
     pub fn ran_away(&self) -> bool {
         self.ran_away.load(Ordering::Relaxed)
+    }
+
+    /// Marks the scene as run away when a student's process saw it so
+    /// (the grader's replay of its transcript).
+    pub(crate) fn note_ran_away(&self, ran_away: bool) {
+        self.ran_away.fetch_or(ran_away, Ordering::Relaxed);
     }
 
     fn world_hit(world: &World, ray: &Ray) -> Option<Hit> {

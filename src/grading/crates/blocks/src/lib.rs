@@ -1,0 +1,114 @@
+//! The building blocks an exercise may use: what the shipped stubs import,
+//! under the same paths (`raystep::ch3_ray_triangle::ray::Ray`), and
+//! nothing else of raystep. The exercises crate sees raystep only through
+//! this crate, so an exercise cannot call raystep's own solution of
+//! itself: `camera.project` (exercise 1.1) and `ReadableBvh::closest`
+//! (exercise 3.4) are not here, and neither is the grader.
+
+#![forbid(unsafe_code)]
+
+/// Chapter 1's blocks.
+pub mod ch1_projection {
+    /// The camera of capstone 1.
+    pub mod camera {
+        use glam::{Vec2, Vec3};
+
+        /// A pinhole camera, as capstone 1 is handed it: the map from the
+        /// world to camera space and the map from the image plane to
+        /// raster pixels (not the projection itself, which is exercise 1.1).
+        #[derive(Clone, Copy)]
+        pub struct Camera<'a> {
+            inner: &'a raystep::ch1_projection::camera::Camera,
+        }
+
+        impl<'a> Camera<'a> {
+            /// The blocks of raystep's camera `inner`.
+            pub fn of(inner: &'a raystep::ch1_projection::camera::Camera) -> Camera<'a> {
+                Camera { inner }
+            }
+
+            /// A world point in camera space (pinhole at the origin,
+            /// looking down -z).
+            pub fn to_camera(&self, p_world: Vec3) -> Vec3 {
+                self.inner.to_camera(p_world)
+            }
+
+            /// A point of the image plane z = -1 in raster pixels.
+            pub fn raster_from_image_plane(&self, uv: Vec2) -> Vec2 {
+                self.inner.raster_from_image_plane(uv)
+            }
+
+            /// The picture's width in pixels.
+            pub fn width(&self) -> u32 {
+                self.inner.width
+            }
+
+            /// The picture's height in pixels.
+            pub fn height(&self) -> u32 {
+                self.inner.height
+            }
+        }
+    }
+}
+
+/// Chapter 3's blocks.
+pub mod ch3_ray_triangle {
+    /// A ray.
+    pub mod ray {
+        pub use raystep::ch3_ray_triangle::ray::Ray;
+    }
+
+    /// The watertight ray-triangle test and its hit.
+    pub mod triangle {
+        pub use raystep::ch3_ray_triangle::triangle::{intersect_watertight, Hit};
+    }
+
+    /// The tree of exercise 3.4.
+    pub mod readable_bvh {
+        use glam::Vec3;
+        pub use raystep::ch3_ray_triangle::readable_bvh::{Aabb, Node, NodeKind};
+
+        /// A binary BVH as exercise 3.4 walks it: `nodes[0]` is the root
+        /// (an empty tree has no nodes); a leaf holds the triangles
+        /// `order[first .. first + count]`, indices into `tris`.
+        #[derive(Clone, Copy)]
+        pub struct ReadableBvh<'a> {
+            /// The nodes, the root first.
+            pub nodes: &'a [Node],
+            /// The leaves' triangles, as indices into `tris`.
+            pub order: &'a [u32],
+            /// The triangles.
+            pub tris: &'a [[Vec3; 3]],
+        }
+
+        impl<'a> ReadableBvh<'a> {
+            /// The blocks of raystep's tree `tree`.
+            pub fn of(tree: &'a raystep::ch3_ray_triangle::readable_bvh::ReadableBvh) -> Self {
+                ReadableBvh {
+                    nodes: &tree.nodes,
+                    order: &tree.order,
+                    tris: &tree.tris,
+                }
+            }
+        }
+    }
+}
+
+/// Chapter 4's blocks.
+pub mod ch4_implicit_surfaces {
+    /// The march's settings.
+    pub mod march {
+        pub use raystep::ch4_implicit_surfaces::march::March;
+    }
+}
+
+/// Chapter 6's capstone's scene, under the path the stub names.
+pub mod grading {
+    /// The exercises' blocks.
+    pub mod exercises {
+        /// Capstone 6's scene.
+        pub mod paths {
+            pub use raystep::grading::exercises::paths::{Hit, LightSample, PathScene};
+        }
+    }
+}

@@ -1,0 +1,195 @@
+//! The values that cross between the grader and the process that runs a
+//! student's code, as bytes: each value written as its bits (a float's
+//! exact bits, so that a NaN or a -0 arrives as it left), in a fixed
+//! order, with nothing else. The grader reads back only values of the
+//! types it asked for; a byte string that does not decode is an error,
+//! never a value.
+
+use glam::{DVec3, Mat4, Vec2, Vec3};
+
+/// A value that can be written to bytes and read back exactly.
+pub trait Wire: Sized {
+    /// Appends this value's bytes to `out`.
+    fn put(&self, out: &mut Vec<u8>);
+    /// Reads one value from the front of `input`, advancing it; `None` when
+    /// the bytes do not hold one.
+    fn get(input: &mut &[u8]) -> Option<Self>;
+}
+
+/// The bytes of `value`.
+pub fn to_bytes<T: Wire>(value: &T) -> Vec<u8> {
+    let mut out = Vec::new();
+    value.put(&mut out);
+    out
+}
+
+/// `value` read from exactly `bytes` (nothing left over).
+pub fn from_bytes<T: Wire>(mut bytes: &[u8]) -> Option<T> {
+    let v = T::get(&mut bytes)?;
+    bytes.is_empty().then_some(v)
+}
+
+fn take<'a>(input: &mut &'a [u8], n: usize) -> Option<&'a [u8]> {
+    if input.len() < n {
+        return None;
+    }
+    let (head, rest) = input.split_at(n);
+    *input = rest;
+    Some(head)
+}
+
+macro_rules! wire_number {
+    ($($t:ty),*) => {$(
+        impl Wire for $t {
+            fn put(&self, out: &mut Vec<u8>) {
+                out.extend_from_slice(&self.to_le_bytes());
+            }
+            fn get(input: &mut &[u8]) -> Option<Self> {
+                let bytes = take(input, std::mem::size_of::<$t>())?;
+                Some(<$t>::from_le_bytes(bytes.try_into().ok()?))
+            }
+        }
+    )*};
+}
+wire_number!(u8, u32, u64, f32, f64);
+
+impl Wire for bool {
+    fn put(&self, out: &mut Vec<u8>) {
+        out.push(u8::from(*self));
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        match u8::get(input)? {
+            0 => Some(false),
+            1 => Some(true),
+            _ => None,
+        }
+    }
+}
+
+impl Wire for usize {
+    fn put(&self, out: &mut Vec<u8>) {
+        (*self as u64).put(out);
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        usize::try_from(u64::get(input)?).ok()
+    }
+}
+
+impl Wire for String {
+    fn put(&self, out: &mut Vec<u8>) {
+        self.as_bytes().to_vec().put(out);
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        String::from_utf8(Vec::<u8>::get(input)?).ok()
+    }
+}
+
+impl Wire for Vec2 {
+    fn put(&self, out: &mut Vec<u8>) {
+        self.to_array().put(out);
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        Some(Vec2::from_array(<[f32; 2]>::get(input)?))
+    }
+}
+
+impl Wire for Vec3 {
+    fn put(&self, out: &mut Vec<u8>) {
+        self.to_array().put(out);
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        Some(Vec3::from_array(<[f32; 3]>::get(input)?))
+    }
+}
+
+impl Wire for DVec3 {
+    fn put(&self, out: &mut Vec<u8>) {
+        self.to_array().put(out);
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        Some(DVec3::from_array(<[f64; 3]>::get(input)?))
+    }
+}
+
+impl Wire for Mat4 {
+    fn put(&self, out: &mut Vec<u8>) {
+        self.to_cols_array().put(out);
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        Some(Mat4::from_cols_array(&<[f32; 16]>::get(input)?))
+    }
+}
+
+impl<T: Wire, const N: usize> Wire for [T; N] {
+    fn put(&self, out: &mut Vec<u8>) {
+        self.iter().for_each(|v| v.put(out));
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        let items: Vec<T> = (0..N).map(|_| T::get(input)).collect::<Option<_>>()?;
+        items.try_into().ok()
+    }
+}
+
+impl<T: Wire> Wire for Vec<T> {
+    fn put(&self, out: &mut Vec<u8>) {
+        self.len().put(out);
+        self.iter().for_each(|v| v.put(out));
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        let n = usize::get(input)?;
+        // Every value takes at least one byte: a length beyond what is
+        // left is a broken string, not a reason to allocate.
+        if n > input.len() {
+            return None;
+        }
+        (0..n).map(|_| T::get(input)).collect()
+    }
+}
+
+impl<T: Wire> Wire for Option<T> {
+    fn put(&self, out: &mut Vec<u8>) {
+        match self {
+            None => out.push(0),
+            Some(v) => {
+                out.push(1);
+                v.put(out);
+            }
+        }
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        match u8::get(input)? {
+            0 => Some(None),
+            1 => Some(Some(T::get(input)?)),
+            _ => None,
+        }
+    }
+}
+
+impl Wire for () {
+    fn put(&self, _out: &mut Vec<u8>) {}
+    fn get(_input: &mut &[u8]) -> Option<Self> {
+        Some(())
+    }
+}
+
+macro_rules! wire_tuple {
+    ($($name:ident),+) => {
+        impl<$($name: Wire),+> Wire for ($($name,)+) {
+            #[allow(non_snake_case)]
+            fn put(&self, out: &mut Vec<u8>) {
+                let ($($name,)+) = self;
+                $($name.put(out);)+
+            }
+            fn get(input: &mut &[u8]) -> Option<Self> {
+                Some(($($name::get(input)?,)+))
+            }
+        }
+    };
+}
+wire_tuple!(A);
+wire_tuple!(A, B);
+wire_tuple!(A, B, C);
+wire_tuple!(A, B, C, D);
+wire_tuple!(A, B, C, D, E);
+wire_tuple!(A, B, C, D, E, F);
+wire_tuple!(A, B, C, D, E, F, G);
