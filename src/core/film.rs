@@ -248,13 +248,15 @@ pub fn write_atomically(
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         create_folder(dir)?;
     }
-    let tmp = fresh_temporary(path)?;
+    // The temporary is made and listed under the list's lock, so that a
+    // signal's handler (which takes it) sees every one made.
     let mut temps = temporaries();
     if STOPPING.load(Ordering::SeqCst) {
         return Err(Error::Usage(
             "interrupted: no more files are written".into(),
         ));
     }
+    let tmp = fresh_temporary(path)?;
     temps.push(tmp.clone());
     let result = write(&tmp).map_err(|message| Error::Image {
         path: path.to_path_buf(),

@@ -45,7 +45,7 @@ pub enum Mode {
 }
 
 thread_local! {
-    static MODE: RefCell<Mode> = RefCell::new(Mode::Direct);
+    static MODE: RefCell<Mode> = const { RefCell::new(Mode::Direct) };
 }
 
 /// Where the last panic in this process happened (`file:line:column`),
@@ -110,12 +110,23 @@ fn recording() -> bool {
     MODE.with(|m| matches!(*m.borrow(), Mode::Record(_)))
 }
 
-fn append(bytes: &[u8]) {
+/// Lets `write` append to the transcript being recorded.
+fn append(write: impl FnOnce(&mut Vec<u8>)) {
     MODE.with(|m| {
         if let Mode::Record(out) = &mut *m.borrow_mut() {
-            out.extend_from_slice(bytes);
+            write(out);
         }
     });
+}
+
+/// Appends `value`'s bytes behind their length (what `Vec<u8>::get`
+/// reads back), without a buffer of their own.
+fn put_framed(out: &mut Vec<u8>, value: &impl Wire) {
+    let at = out.len();
+    out.extend_from_slice(&[0; 8]);
+    value.put(out);
+    let n = (out.len() - at - 8) as u64;
+    out[at..at + 8].copy_from_slice(&n.to_le_bytes());
 }
 
 /// What the grader's replay found wrong with a transcript: the student's
@@ -149,8 +160,11 @@ pub struct Side<'a> {
     pub record: Box<dyn FnOnce() -> Vec<u8> + 'a>,
     /// In replay: account what was counted; `false` when the bytes do not
     /// decode.
-    pub replay: Box<dyn FnOnce(&[u8]) -> bool + 'a>,
+    pub replay: Credit<'a>,
 }
+
+/// How a replay accounts counted work (see [`Side::replay`]).
+pub type Credit<'a> = Box<dyn FnOnce(&[u8]) -> bool + 'a>;
 
 impl Side<'_> {
     /// Nothing besides the answer.
@@ -194,16 +208,19 @@ pub fn call<R: Wire>(
 }
 
 fn record_call<R: Wire>(args: &impl Wire, side: Side<'_>, run: impl FnOnce() -> R) -> R {
-    let mut head = vec![START];
-    to_bytes(args).put(&mut head);
-    append(&head);
+    append(|out| {
+        out.push(START);
+        put_framed(out, args);
+    });
     *LAST_PANIC_AT.lock().unwrap_or_else(|e| e.into_inner()) = None;
     match catch_unwind(AssertUnwindSafe(run)) {
         Ok(r) => {
-            let mut tail = vec![RETURNED];
-            to_bytes(&r).put(&mut tail);
-            (side.record)().put(&mut tail);
-            append(&tail);
+            let counted = (side.record)();
+            append(|out| {
+                out.push(RETURNED);
+                put_framed(out, &r);
+                counted.put(out);
+            });
             r
         }
         Err(payload) => {
@@ -213,10 +230,11 @@ fn record_call<R: Wire>(args: &impl Wire, side: Side<'_>, run: impl FnOnce() -> 
                 .unwrap_or_else(|e| e.into_inner())
                 .take()
                 .unwrap_or_default();
-            let mut tail = vec![PANICKED];
-            message.put(&mut tail);
-            at.put(&mut tail);
-            append(&tail);
+            append(|out| {
+                out.push(PANICKED);
+                message.put(out);
+                at.put(out);
+            });
             resume_unwind(payload)
         }
     }
@@ -229,10 +247,12 @@ pub fn callback<A: Wire, R: Wire>(slot: u8, arg: A, f: impl FnOnce(&A) -> R) -> 
         return f(&arg);
     }
     let r = f(&arg);
-    let mut entry = vec![CALLBACK, slot];
-    to_bytes(&arg).put(&mut entry);
-    to_bytes(&r).put(&mut entry);
-    append(&entry);
+    append(|out| {
+        out.push(CALLBACK);
+        out.push(slot);
+        put_framed(out, &arg);
+        put_framed(out, &r);
+    });
     r
 }
 

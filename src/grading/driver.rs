@@ -106,6 +106,7 @@ pub fn grade_main() -> ExitCode {
     }
     let mut stdout = std::io::stdout();
     let live = stdout.is_terminal();
+    let seed = cli.seed.unwrap_or_else(fresh_seed);
     let results = if cli.reference {
         say(
             &mut stdout,
@@ -116,7 +117,7 @@ pub fn grade_main() -> ExitCode {
         );
         grade_stream(
             &exercises,
-            &mut |ex| reference(ex, &cli.out),
+            &mut |ex| reference(ex, &cli.out, seed),
             &mut stdout,
             live,
         )
@@ -149,7 +150,6 @@ pub fn grade_main() -> ExitCode {
             );
         }
         let timeout = Duration::from_secs_f64(cli.timeout);
-        let seed = cli.seed.unwrap_or_else(fresh_seed);
         // What a student's code starts and detaches comes back to us when
         // its parent dies, and is stopped after each exercise.
         become_subreaper();

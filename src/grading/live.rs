@@ -17,9 +17,10 @@ use std::time::{Duration, SystemTime};
 use crate::core::film::Film;
 use crate::core::warp_test::Drawn;
 use crate::grading::build::{build_exercises_in, Place};
-use crate::grading::exercise::{Exercise, Outcome};
+use crate::grading::exercise::Outcome;
 use crate::grading::process::{capstone_images, in_student_process};
-use crate::grading::runner::{replay_warp, Request, CAPSTONES};
+pub use crate::grading::runner::capstone;
+use crate::grading::runner::{replay_warp, Request};
 
 /// The student's capstone image beside the reference.
 #[derive(Clone, Debug)]
@@ -193,14 +194,6 @@ impl LiveOptions {
     }
 }
 
-/// Chapter N's capstone exercise.
-pub fn capstone(chapter: u32) -> Option<Exercise> {
-    let (_, name) = CAPSTONES.iter().find(|(c, _)| *c == chapter)?;
-    crate::grading::all()
-        .into_iter()
-        .find(|e| e.chapter == chapter && e.name == *name)
-}
-
 /// Builds the exercises and renders chapter `chapter`'s capstone with the
 /// student's code, as `chN --student` does; the two images, or why not.
 /// Setting `cancel` stops the build or the render soon after.
@@ -288,7 +281,9 @@ pub fn live_warp(
         id: id.to_string(),
         message,
     };
-    let transcript = match in_student_process(&built.runner, &request, opts.timeout, cancel) {
+    let transcript = match in_student_process(&built.runner, &request, opts.timeout, cancel)
+        .map_err(|outcome| *outcome)
+    {
         Ok(t) => t,
         Err(Outcome::TimedOut { seconds, .. }) => {
             return Err(LiveError::TimedOut {

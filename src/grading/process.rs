@@ -38,21 +38,19 @@ pub fn in_student_process(
     request: &Request,
     timeout: Duration,
     cancel: Option<&AtomicBool>,
-) -> Result<Vec<u8>, Outcome> {
+) -> Result<Vec<u8>, Box<Outcome>> {
     let mut cmd = Command::new(runner);
     // Nothing of the grader's environment reaches the student's code.
     cmd.env_clear().env(PROGRESS_ENV, "1");
-    match run_limited(&mut cmd, request.line().as_bytes(), Some(timeout), cancel) {
-        Err(e) => Err(Outcome::Panicked(format!(
-            "could not start {}: {e}",
-            runner.display()
-        ))),
-        Ok(Ran::TimedOut { stderr }) => Err(Outcome::TimedOut {
+    let ran = run_limited(&mut cmd, request.line().as_bytes(), Some(timeout), cancel);
+    let outcome = match ran {
+        Err(e) => Outcome::Panicked(format!("could not start {}: {e}", runner.display())),
+        Ok(Ran::TimedOut { stderr }) => Outcome::TimedOut {
             seconds: timeout.as_secs_f64(),
             doing: last_progress(&stderr),
-        }),
-        Ok(Ran::TooMuchOutput) => Err(Outcome::Panicked(too_much_output())),
-        Ok(Ran::Cancelled) => Err(Outcome::Panicked("cancelled".into())),
+        },
+        Ok(Ran::TooMuchOutput) => Outcome::Panicked(too_much_output()),
+        Ok(Ran::Cancelled) => Outcome::Panicked("cancelled".into()),
         Ok(Ran::Exited {
             status,
             raw,
@@ -60,19 +58,19 @@ pub fn in_student_process(
             ..
         }) => {
             if status.success() && !raw.is_empty() {
-                Ok(raw)
-            } else {
-                Err(Outcome::Panicked(crash_message(&status, &stderr)))
+                return Ok(raw);
             }
+            Outcome::Panicked(crash_message(&status, &stderr))
         }
-    }
+    };
+    Err(Box::new(outcome))
 }
 
 /// `chN --student`: builds the exercises, then renders chapter N's
 /// capstone scene with the student's code beside the reference and their
 /// difference, into `out/student/` (under a one-minute limit).
 pub fn student_main(chapter: u32) -> ExitCode {
-    let Some(ex) = crate::grading::live::capstone(chapter) else {
+    let Some(ex) = crate::grading::runner::capstone(chapter) else {
         eprintln!("chapter {chapter} has no capstone to render yet");
         return ExitCode::from(2);
     };
@@ -90,7 +88,7 @@ pub fn student_main(chapter: u32) -> ExitCode {
         return ExitCode::from(1);
     }
     let out = PathBuf::from("out/student");
-    let (outcome, _) = capstone_images(&built.runner, &ex, &out, Duration::from_secs(60), None);
+    let (outcome, files) = capstone_images(&built.runner, &ex, &out, Duration::from_secs(60), None);
     match outcome {
         Outcome::Passed(c) | Outcome::Failed(c) => {
             let verdict = if c.passed() {
@@ -99,6 +97,9 @@ pub fn student_main(chapter: u32) -> ExitCode {
                 "differs from the reference"
             };
             println!("your {id} {verdict}: {}", c.detail);
+            for f in &files {
+                println!("wrote {}", f.display());
+            }
             ExitCode::SUCCESS
         }
         Outcome::NotImplemented => {
@@ -127,7 +128,7 @@ pub fn capstone_images(
     let request = Request::Check { id: ex.id(), seed };
     let transcript = match in_student_process(runner, &request, timeout, cancel) {
         Ok(t) => t,
-        Err(outcome) => return (outcome, Vec::new()),
+        Err(outcome) => return (*outcome, Vec::new()),
     };
     let outcome = replay_check(&ex.id(), transcript, seed);
     let (Outcome::Passed(c) | Outcome::Failed(c)) = &outcome else {
@@ -159,7 +160,8 @@ pub fn capstone_images(
 
 /// Grades raystep's reference solution of `ex` in this process; images of
 /// a failed image check go to `out`.
-pub fn reference(ex: &Exercise, out: &Path) -> (Outcome, Vec<PathBuf>) {
+pub fn reference(ex: &Exercise, out: &Path, seed: u64) -> (Outcome, Vec<PathBuf>) {
+    crate::grading::set_run_seed(seed);
     let outcome = run(ex);
     let images = match &outcome {
         Outcome::Failed(c) => write_failure_images(ex, c, out).unwrap_or_default(),
@@ -182,7 +184,7 @@ pub fn run_student(
     let request = Request::Check { id: ex.id(), seed };
     let transcript = match in_student_process(runner, &request, timeout, None) {
         Ok(t) => t,
-        Err(outcome) => return (outcome, Vec::new()),
+        Err(outcome) => return (*outcome, Vec::new()),
     };
     match replay_check(&ex.id(), transcript, seed) {
         Outcome::Failed(c) => {

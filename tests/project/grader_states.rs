@@ -94,6 +94,13 @@ fn some_broken_the_rest_still_pass() {
         "mis_weight",
         "pub fn mis_weight(pdf_f: f64, pdf_g: f64) -> f64 {\n    let mut x = pdf_f;\n    loop { x = x * 0.5 + pdf_g; if x.is_nan() { return x; } }\n}\n",
     );
+    // A `main` of its own (12. of the grader issue's list: it broke the
+    // link of every exercise): this file is left out, the others graded.
+    write(
+        "ch4-sphere-tracing",
+        "sphere_sdf",
+        "use glam::Vec3;\n#[no_mangle]\nfn main() {}\npub fn sphere_sdf(p: Vec3, center: Vec3, radius: f32) -> f32 {\n    (p - center).length() - radius\n}\n",
+    );
     let (code, text) = grade(&dir, "states-broken-out");
     assert_eq!(code, Some(1), "{text}");
     assert!(
@@ -109,8 +116,35 @@ fn some_broken_the_rest_still_pass() {
         line(&text, "ch6/mis_weight").contains("timed out"),
         "{text}"
     );
+    assert!(
+        line(&text, "ch4/sphere_sdf").contains("does not compile"),
+        "{text}"
+    );
     let n = grading::all().len();
-    assert!(text.contains(&format!("{} of {n} passed", n - 3)), "{text}");
+    assert!(text.contains(&format!("{} of {n} passed", n - 4)), "{text}");
+}
+
+/// Case 8 of the grader issue's list: the shipped stubs unpacked over
+/// solved files with old dates (as tar, unzip or `cp -p` leave them) are graded
+/// as the stubs they are: the grader builds by content, not by date.
+#[test]
+fn stubs_with_old_dates_are_graded_as_stubs() {
+    let dir = solved("states-dates");
+    let (code, text) = grade(&dir, "states-dates-out");
+    let n = grading::all().len();
+    assert!(text.contains(&format!("{n} of {n} passed")), "{text}");
+    assert_eq!(code, Some(0), "{text}");
+    let old = std::time::SystemTime::UNIX_EPOCH + std::time::Duration::from_secs(946_684_800);
+    for stub in shipped::STUBS {
+        let path = stub.path_in(&dir);
+        std::fs::write(&path, stub.text).unwrap();
+        let file = std::fs::File::options().write(true).open(&path).unwrap();
+        file.set_modified(old).unwrap();
+    }
+    let (code, text) = grade(&dir, "states-dates-out");
+    assert_eq!(code, Some(1), "{text}");
+    assert!(text.contains(&format!("0 of {n} passed")), "{text}");
+    assert_eq!(text.matches("not started").count(), n, "{text}");
 }
 
 /// No test reads or builds the exercise files a student edits: they go

@@ -4,6 +4,7 @@
 //! with overwhelming probability; the numbers are seeded, so a grade is
 //! repeatable).
 
+use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::worst_of;
 use crate::core::sampling::random;
 use crate::grading::exercise::{Check, Exercise, Symptom};
@@ -208,11 +209,31 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         )
     }));
     let constant = f(&|_| 2.5, -1.0, 3.0, &[0.1, 0.7]);
-    let (error, detail) = if (constant - 10.0).abs() > 1e-9 {
+    let (mut error, mut detail) = if (constant - 10.0).abs() > 1e-9 {
         (1.0, format!("∫₋₁³ 2.5 dx = 10, got {constant}"))
     } else {
         (error, detail)
     };
+    // Drawn intervals (anywhere, any width from 10⁻³ to 10³, either
+    // order) and a drawn constant, from drawn numbers: exact up to rounding.
+    let mut draws = Draws::new(61);
+    let drawn = worst_drawn((0..draws.count(20, 60)).map(|_| {
+        draws.next_case();
+        let a = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
+        let width = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
+        let c = (draws.sign() * draws.decades(-2.0, 2.0)) as f64;
+        let u: Vec<f64> = (0..draws.count(1, 16))
+            .map(|_| draws.unit() as f64)
+            .collect();
+        let b = a + width;
+        let got = f(&|_| c, a, b, &u);
+        let want = c * (b - a);
+        (
+            (got - want).abs() / want.abs() * 1e3,
+            format!("∫ from {a} to {b} of the constant {c} = {want}, got {got}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
     // Off by (b − a): the constant 1 on [0, 2] comes out as 1, not 2.
     let unit = f(&|_| 1.0, 0.0, 2.0, &[0.25, 0.75]);
     Check {
@@ -229,28 +250,47 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
 pub fn check_russian_roulette(f: RouletteFn) -> Check {
     let n = 10_000;
     let mut symptom = None;
-    let (error, detail) = worst_of([(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0)].into_iter().map(
-        |(value, q): (f64, f64)| {
-            let outs: Vec<f64> = (0..n).map(|i| f(value, q, (i as f64 + 0.5) / n as f64)).collect();
-            let mean = outs.iter().sum::<f64>() / n as f64;
-            let killed = outs.iter().filter(|o| **o == 0.0).count() as f64 / n as f64;
-            let (bias, fraction) = ((mean - value).abs() / value, (killed - (1.0 - q)).abs());
-            if fraction > 2e-3 {
-                symptom = Some(ROULETTE_WRONG_FRACTION);
-            } else if bias > 2e-3 && symptom.is_none() {
-                symptom = Some(ROULETTE_BIASED);
-            }
-            let err = bias.max(fraction);
-            (
-                err,
-                format!(
-                    "value {value}, q {q}: mean {mean:.4} (want {value}), {:.1}% ended (want {:.1}%)",
-                    100.0 * killed,
-                    100.0 * (1.0 - q)
-                ),
-            )
-        },
-    ));
+    // The hand cases, then drawn ones: values over six decades (and of
+    // either sign), survival probabilities from 0.01 to 1.
+    let mut draws = Draws::new(62);
+    let mut cases = vec![(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0)];
+    for _ in 0..draws.count(3, 6) {
+        draws.next_case();
+        let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
+        // A whole number of the 10,000 evenly spaced u survive: the mean
+        // is then exact.
+        let q = if draws.unit() < 0.2 {
+            1.0
+        } else {
+            (draws.decades(-2.0, 0.0) as f64 * 1e4).round().max(1.0) / 1e4
+        };
+        cases.push((value, q));
+    }
+    let (error, detail) = worst_of(cases.into_iter().map(|(value, q): (f64, f64)| {
+        let outs: Vec<f64> = (0..n)
+            .map(|i| f(value, q, (i as f64 + 0.5) / n as f64))
+            .collect();
+        let mean = outs.iter().sum::<f64>() / n as f64;
+        let killed = outs.iter().filter(|o| **o == 0.0).count() as f64 / n as f64;
+        let (bias, fraction) = (
+            (mean - value).abs() / value.abs(),
+            (killed - (1.0 - q)).abs(),
+        );
+        if fraction > 2e-3 {
+            symptom = Some(ROULETTE_WRONG_FRACTION);
+        } else if bias > 2e-3 && symptom.is_none() {
+            symptom = Some(ROULETTE_BIASED);
+        }
+        let err = bias.max(fraction);
+        (
+            err,
+            format!(
+                "value {value}, q {q}: mean {mean:.4} (want {value}), {:.1}% ended (want {:.1}%)",
+                100.0 * killed,
+                100.0 * (1.0 - q)
+            ),
+        )
+    }));
     Check {
         error,
         tolerance: 2e-3,
@@ -272,6 +312,7 @@ pub fn check_mis_weight(f: WeightFn) -> Check {
         (4.0, 0.0, 1.0),
         (1e200, 1e199, 1.0 / 1.01),
         (1e-200, 1e-199, 1.0 / 101.0),
+        (0.0, 0.0, 0.0),
     ];
     let (mut error, mut detail) = worst_of(cases.into_iter().map(|(a, b, want)| {
         let got = f(a, b);
@@ -280,6 +321,32 @@ pub fn check_mis_weight(f: WeightFn) -> Check {
             format!("pdf_f {a:e}, pdf_g {b:e}: got {got}, expected {want}"),
         )
     }));
+    // Drawn densities over 400 decades, a tenth of them 0, in a number of
+    // calls that changes from run to run.
+    let mut draws = Draws::new(63);
+    let n = draws.count(500, 3000);
+    let drawn = worst_drawn((0..n).map(|_| {
+        draws.next_case();
+        let density = |d: &mut Draws| {
+            if d.unit() < 0.1 {
+                0.0
+            } else {
+                10f64.powf(d.range(-200.0, 200.0) as f64)
+            }
+        };
+        let (a, b) = (density(&mut draws), density(&mut draws));
+        let want = if a == 0.0 {
+            0.0
+        } else {
+            1.0 / (1.0 + (b / a).powi(2))
+        };
+        let got = f(a, b);
+        (
+            (got - want).abs(),
+            format!("pdf_f {a:e}, pdf_g {b:e}: got {got}, expected {want}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
     // The MIS estimate: one sample from each strategy per estimate.
     let estimates: Vec<f64> = (0..4000u64)
         .map(|i| {

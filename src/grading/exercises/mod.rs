@@ -14,6 +14,7 @@ pub mod ch3;
 pub mod ch4;
 pub mod ch5;
 pub mod ch6;
+pub mod draws;
 pub mod images;
 pub mod paths;
 

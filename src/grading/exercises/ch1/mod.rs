@@ -8,6 +8,7 @@ use crate::ch1_projection::camera::{
 };
 use crate::ch1_projection::wireframe::draw_scene;
 use crate::grading::exercise::{Check, Exercise, Symptom};
+use crate::grading::exercises::draws::Draws;
 use crate::scene::Material;
 
 pub mod edges;
@@ -134,6 +135,25 @@ pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
                 Some(Vec2::new(x / -z, (1.0 - x) / -z)),
             ));
         }
+    }
+    // Drawn points: depths from 10⁻³ to 10⁴ in front, sideways up to ten
+    // times the depth, and points on or behind the camera's plane; the
+    // image worked out in f64.
+    let mut draws = Draws::new(11);
+    for _ in 0..draws.count(200, 1000) {
+        draws.next_case();
+        let depth = draws.decades(-3.0, 4.0);
+        let side = draws.in_square() * depth * draws.decades(-2.0, 1.0);
+        let p = match draws.count(0, 9) {
+            0 => Vec3::new(side.x, side.y, 0.0),
+            1 => Vec3::new(side.x, side.y, depth),
+            _ => Vec3::new(side.x, side.y, -depth),
+        };
+        let want = (p.z < 0.0).then(|| {
+            let (x, y, z) = (p.x as f64, p.y as f64, p.z as f64);
+            Vec2::new((x / -z) as f32, (y / -z) as f32)
+        });
+        cases.push((p, want));
     }
     let mut worst = (0.0f64, String::from("all cases match"));
     // The mistakes it can name: every image the negative of the right one

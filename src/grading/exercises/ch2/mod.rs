@@ -5,6 +5,7 @@ use glam::{Vec2, Vec3, Vec3Swizzles};
 
 use crate::ch2_rasterization::{depth, edge, triangle};
 use crate::grading::exercise::{Check, Exercise, Symptom};
+use crate::grading::exercises::draws::{fold_drawn, worst_drawn, Draws};
 
 mod common;
 pub mod model;
@@ -198,7 +199,57 @@ pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
     if !check.passed() && flipped {
         return check.with_symptom(EDGE_SIGN);
     }
-    check
+    let (mut error, mut detail) = (check.error, check.detail.clone());
+    // Drawn edges from 10⁻³ to 10³ long, up to 10³ times that from the
+    // origin: E to 10⁻⁵ of |b - a|·|p - a| (what rounding allows), and
+    // exactly 0 at a, at b and on a horizontal or vertical edge.
+    let mut draws = Draws::new(21);
+    let drawn = worst_drawn((0..draws.count(300, 1500)).map(|_| {
+        draws.next_case();
+        let scale = draws.decades(-3.0, 3.0);
+        let place = draws.place_for(scale, 3.0).truncate();
+        let (a, mut b) = (
+            place + draws.in_square() * scale,
+            place + draws.in_square() * scale,
+        );
+        let mut p = place + draws.in_square() * scale;
+        match draws.count(0, 5) {
+            0 => p = a,
+            1 => p = b,
+            2 => {
+                b.y = a.y;
+                p.y = a.y;
+            }
+            3 => {
+                b.x = a.x;
+                p.x = a.x;
+            }
+            _ => {}
+        }
+        let (ab, ap) = ((b - a).as_dvec2(), (p - a).as_dvec2());
+        let want = ab.perp_dot(ap);
+        let got = f(a, b, p);
+        let size = ab.length() * ap.length();
+        let err = if want == 0.0 {
+            if got == 0.0 {
+                0.0
+            } else {
+                f64::INFINITY
+            }
+        } else {
+            (got as f64 - want).abs() / size
+        };
+        (
+            err,
+            format!("a = {a}, b = {b}, p = {p}: got {got}, expected {want}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
+    Check {
+        error,
+        detail,
+        ..check
+    }
 }
 
 /// Compares barycentric coordinates with hand values and checks that they
@@ -232,6 +283,33 @@ pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check
         let p = pi * phi.x + pj * phi.y + pk * phi.z;
         cases.push((pi, pj, pk, p, Some(phi)));
     }
+    // Drawn well-shaped triangles from 10⁻³ to 10³ across, up to 10³ times
+    // that from the origin, either winding, points in and around them;
+    // φ worked out in f64 from the f32 corners.
+    let mut draws = Draws::new(22);
+    for _ in 0..draws.count(200, 800) {
+        draws.next_case();
+        let scale = draws.decades(-3.0, 3.0);
+        let place = draws.place_for(scale, 3.0).truncate();
+        let (pi, pj, pk) = (
+            place + draws.in_square() * scale,
+            place + draws.in_square() * scale,
+            place + draws.in_square() * scale,
+        );
+        let p = place + draws.in_square() * scale * 1.5;
+        let (i, j, k, q) = (pi.as_dvec2(), pj.as_dvec2(), pk.as_dvec2(), p.as_dvec2());
+        let area = (j - i).perp_dot(k - i);
+        let longest = (j - i).length().max((k - i).length()).max((k - j).length());
+        if area.abs() < 0.05 * longest * longest {
+            continue;
+        }
+        let phi = Vec3::new(
+            ((k - j).perp_dot(q - j) / area) as f32,
+            ((i - k).perp_dot(q - k) / area) as f32,
+            ((j - i).perp_dot(q - i) / area) as f32,
+        );
+        cases.push((pi, pj, pk, p, Some(phi)));
+    }
     // The mistakes it can name: φ that are right but belong to other
     // corners, or right up to a common factor (not divided by the area).
     let (mut permuted, mut scaled, mut some) = (true, true, false);
@@ -253,8 +331,13 @@ pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check
     let check = worst_of(
         cases.into_iter().map(|(pi, pj, pk, p, want)| {
             let got = f(pi, pj, pk, p);
+            // Absolute to 1e-5 near the triangle; relative to the largest φ
+            // far from it (where φ grows with the distance, and so does
+            // its rounding).
             let err = match (got, want) {
-                (Some(g), Some(w)) => (g - w).abs().max_element() as f64,
+                (Some(g), Some(w)) => {
+                    ((g - w).abs().max_element() / w.abs().max_element().max(1.0)) as f64
+                }
                 (None, None) => 0.0,
                 _ => f64::INFINITY,
             };
@@ -308,6 +391,37 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
             1.0,
             format!("buffer ends as {buffer:?}, expected {expected:?}"),
         ));
+    }
+    // A drawn run of tests on a drawn buffer: depths over twelve decades,
+    // ties, zeros, infinities and NaNs, as many as the run draws.
+    let mut draws = Draws::new(23);
+    let size = draws.count(1, 64);
+    let (mut theirs, mut ours) = (vec![inf; size], vec![inf; size]);
+    for step in 0..draws.count(200, 2000) {
+        draws.next_case();
+        let index = draws.count(0, size - 1);
+        let z = match draws.count(0, 9) {
+            0 => ours[index],
+            1 => f32::NAN,
+            2 => inf,
+            3 => 0.0,
+            _ => draws.decades(-6.0, 6.0),
+        };
+        let want = z < ours[index];
+        if want {
+            ours[index] = z;
+        }
+        let got = f(&mut theirs, index, z);
+        if got != want || theirs[index].to_bits() != ours[index].to_bits() {
+            fails.push((
+                1.0,
+                format!(
+                    "drawn step {step}: depth_test(index {index}, z {z}) returned {got} and left {}, expected {want} and {}",
+                    theirs[index], ours[index]
+                ),
+            ));
+            break;
+        }
     }
     let check = worst_of(fails.into_iter(), 0.0, "every step matches");
     if check.passed() {

@@ -12,16 +12,40 @@ use crate::ch1_projection::camera::Camera;
 use crate::ch2_rasterization::triangle::rasterize_triangle;
 use crate::core::film::Film;
 use crate::grading::exercise::Check;
+use crate::grading::exercises::draws::Draws;
 use crate::grading::exercises::images;
 
-/// A slanted quad, as a floor seen at a shallow angle: depth 1 m at the
-/// bottom, 8 m at the top, a different colour at every corner; its two
-/// triangles have opposite windings.
+/// A slanted quad, as a floor seen at a shallow angle: a different colour
+/// at every corner; its two triangles have opposite windings. The first
+/// is the hand-made one (depth 1 m at the bottom, 8 m at the top); the
+/// second is drawn for the run: its depths from 10⁻² to 10² m, the far
+/// edge up to 100 times farther, and colours of any brightness from 0 to
+/// 10 (radiance, not a display colour: nothing is clamped).
 fn slanted() -> Vec<([Vec3; 3], [Vec3; 3])> {
     let (nl, nr) = (Vec3::new(2.3, 46.1, 1.0), Vec3::new(61.7, 45.4, 1.0));
     let (fr, fl) = (Vec3::new(39.6, 4.2, 8.0), Vec3::new(23.8, 5.3, 8.0));
     let (r, g, b, k) = (Vec3::X, Vec3::Y, Vec3::Z, Vec3::new(0.9, 0.9, 0.1));
-    vec![([nl, nr, fr], [r, g, b]), ([nl, fl, fr], [r, k, b])]
+    let mut quads = vec![([nl, nr, fr], [r, g, b]), ([nl, fl, fr], [r, k, b])];
+    let mut draws = Draws::new(24);
+    let near = draws.decades(-2.0, 2.0);
+    let far = near * draws.decades(0.0, 2.0);
+    let at = |v: Vec3, z: f32| Vec3::new(v.x, v.y, z);
+    let (nl, nr, fr, fl) = (at(nl, near), at(nr, near), at(fr, far), at(fl, far));
+    let mut colour = || {
+        let channel = |d: &mut Draws| match d.count(0, 4) {
+            0 => 0.0,
+            _ => d.decades(-2.0, 1.0),
+        };
+        Vec3::new(
+            channel(&mut draws),
+            channel(&mut draws),
+            channel(&mut draws),
+        )
+    };
+    let (r, g, b, k) = (colour(), colour(), colour(), colour());
+    quads.push(([nl, nr, fr], [r, g, b]));
+    quads.push(([nl, fl, fr], [r, k, b]));
+    quads
 }
 
 /// Clause 4: the depth stored and the colour drawn at every covered

@@ -5,6 +5,7 @@ use crate::ch3_ray_triangle::triangle;
 use crate::grading::exercise::Exercise;
 
 mod bvh;
+mod bvh_deep;
 mod bvh_symptoms;
 mod triangle_checks;
 pub use bvh::*;

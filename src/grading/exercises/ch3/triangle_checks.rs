@@ -6,8 +6,8 @@ use glam::Vec3;
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
-use crate::core::sampling::random;
 use crate::grading::exercise::{Check, Symptom};
+use crate::grading::exercises::draws::{d as d64, length64, Draws};
 use crate::grading::exercises::worst;
 
 /// Barycentric (u, v).
@@ -46,7 +46,7 @@ fn uv_f64(p: Vec3, tri: [Vec3; 3]) -> Option<Uv> {
 /// Relative error of `got` against `want`, infinite when one is missing.
 fn rel(got: Option<f32>, want: Option<f32>) -> f64 {
     match (got, want) {
-        (Some(g), Some(w)) => ((g - w).abs() / w.abs().max(1.0)) as f64,
+        (Some(g), Some(w)) => ((g - w).abs() / w.abs().max(f32::MIN_POSITIVE)) as f64,
         (None, None) => 0.0,
         _ => f64::INFINITY,
     }
@@ -124,7 +124,7 @@ fn near(g: f32, w: f32) -> bool {
 /// closed form t = (c - N·o) / (N·d) worked in f64 here (not against
 /// raystep's `ray_plane`, which would check the reference against itself).
 pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
-    let mut cases: Vec<(Vec3, Vec3, Vec3, f32, Option<f32>)> = vec![
+    let cases: Vec<(Vec3, Vec3, Vec3, f32, Option<f32>)> = vec![
         // The plane z = -2, a ray down -z from the origin: t = 2.
         (Vec3::ZERO, -Vec3::Z, Vec3::Z, -2.0, Some(2.0)),
         // The plane x + y = 4 (N = (1, 1, 0), c = 4), ray along +x from (1, 1, 0): t = 2.
@@ -140,34 +140,67 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
         // Parallel: no t.
         (Vec3::ZERO, Vec3::X, Vec3::Y, 1.0, None),
     ];
-    for i in 0..200u64 {
-        let r = |d| random(31, i, 0, d) * 2.0 - 1.0;
+    // Drawn rays and planes: at scales from 10⁻³ to 10³, up to 100 times
+    // their size from the origin, N and d of any length from 10⁻² to 10².
+    let mut draws = Draws::new(31);
+    let mut drawn = Vec::new();
+    for _ in 0..draws.count(200, 800) {
+        draws.next_case();
+        let scale = draws.decades(-3.0, 3.0);
+        let place = draws.place_for(scale, 2.0);
         let (o, d, n) = (
-            Vec3::new(r(0), r(1), r(2)) * 3.0,
-            Vec3::new(r(3), r(4), r(5)),
-            Vec3::new(r(6), r(7), r(8)),
+            place + draws.in_cube() * 3.0 * scale,
+            draws.direction() * draws.decades(-2.0, 2.0),
+            draws.direction() * draws.decades(-2.0, 2.0),
         );
-        if n.dot(d).abs() > 0.1 {
-            let c = r(9);
+        if n.normalize().dot(d.normalize()).abs() > 0.1 {
+            let c = n.dot(place + draws.in_cube() * scale);
             let f64s = |v: Vec3| v.as_dvec3();
             let t = (c as f64 - f64s(n).dot(f64s(o))) / f64s(n).dot(f64s(d));
-            cases.push((o, d, n, c, Some(t as f32)));
+            drawn.push((o, d, n, c, t));
         }
     }
+    // A drawn case's t is known to what the f32 inputs allow: the error of
+    // c - N·o is a few roundings of |c| + |N||o|, which divided by |N·d|
+    // is the scale T of t's rounding. Its error counts relative to
+    // |t| or T/100, whichever is larger.
+    let drawn = drawn.into_iter().map(|(o, d, n, c, t)| {
+        let scale = (c.abs() as f64 + length64(n) * length64(o)) / d64(n).dot(d64(d)).abs();
+        let got = f(o, d, n, c);
+        let err = match got {
+            Some(g) => (g as f64 - t).abs() / t.abs().max(scale * 1e-2),
+            None => f64::INFINITY,
+        };
+        let symptom = got
+            .filter(|g| near(-g, t as f32) && !near(*g, t as f32))
+            .map(|_| PLANE_SIGN);
+        (
+            err,
+            format!("o {o}, d {d}, N {n}, c {c}: got {got:?}, expected Some({t}) (a drawn case)"),
+            symptom,
+        )
+    });
     check(
-        cases.into_iter().map(|(o, d, n, c, want)| {
-            let got = f(o, d, n, c);
-            let symptom = match (got, want) {
-                (Some(g), Some(w)) if w != 0.0 && !near(g, w) && near(-g, w) => Some(PLANE_SIGN),
-                (Some(_), None) => Some(PARALLEL),
-                _ => None,
-            };
-            (
-                rel(got, want),
-                format!("o {o}, d {d}, N {n}, c {c}: got {got:?}, expected {want:?}"),
-                symptom,
-            )
-        }),
+        cases
+            .into_iter()
+            .map(|(o, d, n, c, want)| {
+                let got = f(o, d, n, c);
+                let symptom = match (got, want) {
+                    (Some(g), Some(w)) if w != 0.0 && !near(g, w) && near(-g, w) => {
+                        Some(PLANE_SIGN)
+                    }
+                    (Some(_), None) => Some(PARALLEL),
+                    _ => None,
+                };
+                (
+                    rel(got, want),
+                    format!("o {o}, d {d}, N {n}, c {c}: got {got:?}, expected {want:?}"),
+                    symptom,
+                )
+            })
+            .collect::<Vec<_>>()
+            .into_iter()
+            .chain(drawn),
         1e-4,
     )
 }
@@ -192,15 +225,28 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
             None,
         ),
     ];
-    for i in 0..300u64 {
-        let r = |d| random(32, i, 0, d) * 2.0 - 1.0;
+    // Drawn triangles from 10⁻³ to 10³ across, up to 10³ times their size
+    // from the origin, and points in and around them.
+    let mut draws = Draws::new(32);
+    for _ in 0..draws.count(300, 900) {
+        draws.next_case();
+        let scale = draws.decades(-3.0, 3.0);
+        let place = draws.place_for(scale, 3.0);
         let t = [
-            Vec3::new(r(0), r(1), r(2)),
-            Vec3::new(r(3), r(4), r(5)),
-            Vec3::new(r(6), r(7), r(8)),
+            place + draws.in_cube() * scale,
+            place + draws.in_cube() * scale,
+            place + draws.in_cube() * scale,
         ];
-        let (u, v) = (r(9) * 0.8 + 0.3, r(10) * 0.8 + 0.3);
+        let (u, v) = (draws.range(-0.5, 1.1), draws.range(-0.5, 1.1));
         let p = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
+        // Only well-shaped triangles: on a sliver, rounding decides.
+        let sides = (t[1] - t[0])
+            .length()
+            .max((t[2] - t[0]).length())
+            .max((t[2] - t[1]).length());
+        if (t[1] - t[0]).cross(t[2] - t[0]).length() < 0.05 * sides * sides {
+            continue;
+        }
         // Skip points right on an edge, where rounding decides.
         if u.abs().min(v.abs()).min((1.0 - u - v).abs()) > 1e-3 {
             cases.push((p, t, uv_f64(p, t)));
@@ -268,16 +314,23 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
             None,
         ),
     ];
-    for i in 0..300u64 {
-        let r = |d| random(33, i, 0, d) * 2.0 - 1.0;
+    // Drawn triangles and rays: from 10⁻³ (millimetre triangles) to 10³
+    // across, up to 10⁴ times their size from the origin, d of any length.
+    let mut draws = Draws::new(33);
+    for _ in 0..draws.count(300, 900) {
+        draws.next_case();
+        let scale = draws.decades(-3.0, 3.0);
+        let place = draws.place_for(scale, 4.0);
+        let at = |q: Vec3| place + q * scale;
         let t = [
-            Vec3::new(r(0), r(1), r(2) - 3.0),
-            Vec3::new(r(3), r(4), r(5) - 3.0),
-            Vec3::new(r(6), r(7), r(8) - 3.0),
+            at(draws.in_cube() + Vec3::new(0.0, 0.0, -3.0)),
+            at(draws.in_cube() + Vec3::new(0.0, 0.0, -3.0)),
+            at(draws.in_cube() + Vec3::new(0.0, 0.0, -3.0)),
         ];
         let (o, d) = (
-            Vec3::new(r(9), r(10), r(11)) * 0.5,
-            Vec3::new(r(12), r(13), -2.0),
+            at(draws.in_cube() * 0.5),
+            Vec3::new(draws.range(-1.0, 1.0), draws.range(-1.0, 1.0), -2.0)
+                * draws.decades(-2.0, 2.0),
         );
         let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
         let n = triangle::unit_normal(t).unwrap_or(Vec3::ZERO);
@@ -298,7 +351,7 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
         cases.into_iter().map(|(o, d, t, want)| {
             let got = f(o, d, t);
             let err = match (got, want) {
-                (Some(g), Some(w)) => ((g.0 - w.0).abs() / w.0.abs().max(1.0))
+                (Some(g), Some(w)) => ((g.0 - w.0).abs() / w.0.abs())
                     .max((g.1 - w.1).abs())
                     .max((g.2 - w.2).abs()) as f64,
                 (None, None) => 0.0,

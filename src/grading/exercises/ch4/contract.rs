@@ -150,6 +150,13 @@ fn far_half_wall(p: Vec3) -> f32 {
     0.5 * (p.z - 6000.0)
 }
 
+/// A wall 6,000 m up seen from near the world's origin: ε must be taken
+/// where the march is (5.7e-3 there), not at the ray's origin (1e-4),
+/// which a march so far away never reaches before it lands on the wall.
+fn far_ahead_wall(p: Vec3) -> f32 {
+    0.5 * (6000.0 - p.z)
+}
+
 /// A wall at z = 0 whose function overstates the distance by a hair: the
 /// first step from z = 1 lands 2^-16 behind it, within ε, where the
 /// gradient points away from a viewer above.
@@ -212,6 +219,21 @@ pub fn cases() -> Vec<Case> {
             down(6001.0),
             m,
         ),
+        {
+            // From a drawn point near the world's origin.
+            let mut draws = crate::grading::exercises::draws::Draws::new(42);
+            let origin = Vec3::new(draws.range(-5.0, 5.0), draws.range(-5.0, 5.0), draws.range(0.0, 5.0));
+            case(
+                "a wall 6,000 m away seen from near the world's origin (max_distance = 10,000)",
+                Clause::ScaledEpsilon,
+                far_ahead_wall,
+                (origin, Vec3::Z),
+                March {
+                    max_distance: 10_000.0,
+                    ..m
+                },
+            )
+        },
         case(
             "a wall whose distance overstates by 2^-16: the first step lands just behind it",
             Clause::Normal,

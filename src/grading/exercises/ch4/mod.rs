@@ -2,6 +2,7 @@
 
 use glam::Vec3;
 
+use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::images;
 use super::worst_of;
 use crate::ch3_ray_triangle::ray::Ray;
@@ -142,13 +143,31 @@ pub fn check_sphere_sdf(f: SdfFn) -> Check {
         (Vec3::new(0.0, 0.0, -10.0), Vec3::ZERO, 1.0, 9.0),
         (Vec3::new(2.0, 3.0, 6.0), Vec3::new(0.0, 0.0, 0.0), 1.0, 6.0), // |(2, 3, 6)| = 7
     ];
-    let (error, detail) = worst_of(cases.into_iter().map(|(p, c, r, want)| {
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(p, c, r, want)| {
         let got = f(p, c, r);
         (
             (got - want).abs() as f64,
             format!("p {p}, centre {c}, radius {r}: got {got}, expected {want}"),
         )
     }));
+    // Drawn spheres from 10⁻³ to 10³ across, up to 10³ times that from the
+    // origin, points inside, on and outside: to 10⁻⁵ of the radius and
+    // the distance to the centre (what rounding allows).
+    let mut draws = Draws::new(41);
+    let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
+        draws.next_case();
+        let r = draws.decades(-3.0, 3.0);
+        let c = draws.place_for(r, 3.0);
+        let p = c + draws.direction() * r * draws.range(0.0, 3.0);
+        let to = (p - c).as_dvec3().length();
+        let want = to - r as f64;
+        let got = f(p, c, r);
+        (
+            (got as f64 - want).abs() / (r as f64 + to),
+            format!("p {p}, centre {c}, radius {r}: got {got}, expected {want}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
     // 1.5 inside a sphere of radius 2; 5 from its centre, 3 outside.
     let inside = f(Vec3::new(1.5, 2.0, 3.0), c, 2.0);
     let outside = f(Vec3::new(4.0, 6.0, 3.0), c, 2.0);

@@ -10,6 +10,7 @@ use std::f32::consts::FRAC_1_PI;
 
 use glam::{Vec2, Vec3};
 
+use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::worst_of;
 use crate::ch5_reflection::light::area::solid_angle_pdf;
 use crate::ch5_reflection::material::lambert::Lambertian;
@@ -120,7 +121,7 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
         (d(0.0, 0.0, 1.0), d(0.0, 0.0, -1.0), Vec3::ZERO),
         (d(1.0, 0.0, -0.2), d(0.3, 0.3, 0.8), Vec3::ZERO),
     ];
-    let (error, detail) = worst_of(cases.into_iter().map(|(wo, wi, want)| {
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(wo, wi, want)| {
         let got = f(rho, wo, wi);
         let err = if want == Vec3::ZERO {
             got.abs().max_element() as f64
@@ -129,6 +130,43 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
         };
         (err, format!("ωo {wo}, ωi {wi}: got {got}, expected {want}"))
     }));
+    // Drawn albedos (a channel may be 0 or 1) and directions, grazing ones
+    // (|z| down to 10⁻⁶) among them.
+    let mut draws = Draws::new(51);
+    let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
+        draws.next_case();
+        let channel = |d: &mut Draws| match d.count(0, 5) {
+            0 => 0.0,
+            1 => 1.0,
+            _ => d.unit(),
+        };
+        let rho = Vec3::new(
+            channel(&mut draws),
+            channel(&mut draws),
+            channel(&mut draws),
+        );
+        let dir = |d: &mut Draws| {
+            let mut w = d.direction();
+            if d.unit() < 0.3 {
+                w.z = d.sign() * d.decades(-6.0, -1.0);
+                w = w.normalize();
+            }
+            w
+        };
+        let (wo, wi) = (dir(&mut draws), dir(&mut draws));
+        let want = if (wo.z > 0.0) == (wi.z > 0.0) && wo.z != 0.0 && wi.z != 0.0 {
+            rho * FRAC_1_PI
+        } else {
+            Vec3::ZERO
+        };
+        let got = f(rho, wo, wi);
+        let err = (got - want).abs().max_element() as f64 / (FRAC_1_PI as f64);
+        (
+            err,
+            format!("ρ {rho}, ωo {wo}, ωi {wi}: got {got}, expected {want}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
     Check {
         error,
         tolerance: 1e-5,
@@ -221,7 +259,7 @@ pub fn check_point_light(f: PointFn) -> Check {
         // Behind the surface: nothing.
         (Vec3::new(0.0, 0.0, -1.0), Vec3::ZERO, Vec3::Z, Vec3::ZERO),
     ];
-    let (error, detail) = worst_of(cases.into_iter().map(|(light, p, n, want)| {
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(light, p, n, want)| {
         let got = f(i, light, p, n);
         let err = if want == Vec3::ZERO {
             got.abs().max_element() as f64
@@ -233,6 +271,37 @@ pub fn check_point_light(f: PointFn) -> Check {
             format!("light at {light}, p {p}, n {n}: got {got}, expected {want}"),
         )
     }));
+    // Drawn lights and surfaces: distances from 10⁻³ to 10³, up to 10³
+    // times that from the origin, intensities over six decades; E worked
+    // out in f64.
+    let mut draws = Draws::new(52);
+    let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
+        draws.next_case();
+        let scale = draws.decades(-3.0, 3.0);
+        let p = draws.place_for(scale, 3.0);
+        let light = p + draws.direction() * scale;
+        let n = draws.direction();
+        let intensity =
+            Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(-3.0, 3.0);
+        let to = (light - p).as_dvec3();
+        let cos = n.as_dvec3().dot(to) / to.length();
+        let want = (intensity.as_dvec3() * cos.max(0.0) / to.length_squared()).as_vec3();
+        let got = f(intensity, light, p, n);
+        let err = if cos <= 1e-3 {
+            // Behind, or so grazing that rounding decides: only a value
+            // of the right size.
+            ((got - want).abs().max_element() / (intensity.max_element() / (scale * scale) * 1e-3))
+                as f64
+                * 1e-4
+        } else {
+            rel(got, want)
+        };
+        (
+            err,
+            format!("I {intensity}, light at {light}, p {p}, n {n}: got {got}, expected {want}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
     Check {
         error,
         tolerance: 1e-4,
@@ -260,7 +329,7 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
         // Edge-on: no area shows.
         (1.0, Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::Z, 0.0),
     ];
-    let (error, detail) = worst_of(cases.into_iter().map(|(pdf, x, y, n, want)| {
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(pdf, x, y, n, want)| {
         let got = f(pdf, x, y, n);
         let err = if want == 0.0 {
             got.abs() as f64
@@ -272,6 +341,50 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
             format!("pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}"),
         )
     }));
+    // Drawn points and lights: distances from 10⁻³ to 10³, up to 10³ times
+    // that from the origin, either face, pdfs over six decades, and lights
+    // seen exactly edge-on.
+    let mut draws = Draws::new(53);
+    let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
+        draws.next_case();
+        let scale = draws.decades(-3.0, 3.0);
+        let x = draws.place_for(scale, 3.0);
+        let axis = draws.count(0, 2);
+        let mut offset = draws.direction();
+        let mut n = draws.direction();
+        if draws.unit() < 0.15 {
+            // Edge-on: the light's normal and the way to it on two
+            // different axes.
+            offset = Vec3::ZERO;
+            offset[axis] = draws.sign();
+            n = Vec3::ZERO;
+            n[(axis + 1) % 3] = draws.sign();
+        }
+        let y = x + offset * scale;
+        let pdf = draws.decades(-3.0, 3.0);
+        let to = (y - x).as_dvec3();
+        let cos = (n.as_dvec3().dot(to) / to.length()).abs();
+        let want = if cos == 0.0 {
+            0.0
+        } else {
+            pdf as f64 * to.length_squared() / cos
+        };
+        let got = f(pdf, x, y, n);
+        let err = if want == 0.0 {
+            f64::from(got.abs())
+        } else if cos < 1e-3 {
+            // So grazing that rounding decides: only a value of the right
+            // size.
+            (f64::from(got) - want).abs() / want * 1e-4
+        } else {
+            (f64::from(got) - want).abs() / want
+        };
+        (
+            err,
+            format!("pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
     Check {
         error,
         tolerance: 1e-4,

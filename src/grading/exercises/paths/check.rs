@@ -1,7 +1,8 @@
 //! How the path capstone is graded, clause by clause of its contract
 //! (the stub's doc), and the symptoms the check recognises.
 //!
-//! 1. The closed furnace ([`PathScene::furnace`], albedo 0.85): every ray
+//! 1. The closed furnace ([`PathScene::furnace`], its albedo and emission
+//!    drawn for each grading run, [`furnace_of_run`]): every ray
 //!    sees Le / (1 − ρ), nothing escapes, and the only noise is the
 //!    roulette's. 200,000 paths; the mean must be within 5 standard
 //!    errors of the answer per channel (the standard error measured from
@@ -212,6 +213,31 @@ pub fn trace_furnace(f: PathFn, scene: &PathScene, n: u64, seed: u64) -> Furnace
 /// The furnace run `r` of `f`: (error against a tolerance of 5, what was seen,
 /// the symptom).
 pub fn judge_furnace(f: PathFn, r: &FurnaceRun, n: u64) -> (f64, String, Option<Symptom>) {
+    judge_furnace_of(f, r, n, (FURNACE_ALBEDO, FURNACE_LE))
+}
+
+/// The furnace of this grading run: its albedo from 0.6 to 0.9 and its
+/// emission from 0.2 to 2 per channel, drawn from the run's seed (a
+/// solution cannot recognise the furnace by fixed numbers and answer it in
+/// closed form).
+pub fn furnace_of_run() -> (f32, Vec3) {
+    let mut draws = crate::grading::exercises::draws::Draws::new(64);
+    let albedo = draws.range(0.6, 0.9);
+    let le = Vec3::new(
+        draws.range(0.2, 2.0),
+        draws.range(0.2, 2.0),
+        draws.range(0.2, 2.0),
+    );
+    (albedo, le)
+}
+
+/// [`judge_furnace`] for the furnace of albedo and emission `(albedo, le)`.
+pub fn judge_furnace_of(
+    f: PathFn,
+    r: &FurnaceRun,
+    n: u64,
+    (albedo, furnace_le): (f32, Vec3),
+) -> (f64, String, Option<Symptom>) {
     let t = r.tally;
     let bad = 1e9;
     if t.over_budget {
@@ -252,8 +278,8 @@ pub fn judge_furnace(f: PathFn, r: &FurnaceRun, n: u64) -> (f64, String, Option<
     let m = n as f64;
     let mean = r.sum / m;
     let var = ((r.sum_sq / m - mean * mean) * (m / (m - 1.0))).max(DVec3::ZERO);
-    let rho = FURNACE_ALBEDO as f64;
-    let le = FURNACE_LE.as_dvec3();
+    let rho = albedo as f64;
+    let le = furnace_le.as_dvec3();
     let want = le / (1.0 - rho);
     let se = (var / m).max(DVec3::splat(1e-12)).powf(0.5);
     let z = ((mean - want).abs() / se).max_element();
@@ -280,8 +306,8 @@ pub fn judge_furnace(f: PathFn, r: &FurnaceRun, n: u64) -> (f64, String, Option<
     } else if fits(le + 2.0 * rho * want) {
         // Emission counted twice, or each light sample doubled: the
         // furnace without emission at bounced hits tells them apart.
-        let scene = PathScene::furnace_without_bounce_emission(FURNACE_ALBEDO, FURNACE_LE);
-        let again = trace_furnace(f, &scene, n / 4, 612);
+        let scene = PathScene::furnace_without_bounce_emission(albedo, furnace_le);
+        let again = trace_furnace(f, &scene, n / 4, 612 ^ crate::grading::run_seed());
         let mean = again.sum / (n / 4) as f64;
         if ((mean - want) / want).abs().max_element() < 0.05 {
             Some(DOUBLE_EMISSION)
@@ -361,9 +387,10 @@ fn cornell(f: PathFn) -> Check {
 /// The capstone: the closed furnace, then the Cornell box (see the
 /// module's doc). The error is the larger z of the two (5 passes).
 pub fn check_path_radiance(f: PathFn) -> Check {
-    let scene = PathScene::furnace(FURNACE_ALBEDO, FURNACE_LE);
-    let furnace = trace_furnace(f, &scene, FURNACE_PATHS, 611);
-    let (fz, fdetail, fsymptom) = judge_furnace(f, &furnace, FURNACE_PATHS);
+    let (albedo, le) = furnace_of_run();
+    let scene = PathScene::furnace(albedo, le);
+    let furnace = trace_furnace(f, &scene, FURNACE_PATHS, 611 ^ crate::grading::run_seed());
+    let (fz, fdetail, fsymptom) = judge_furnace_of(f, &furnace, FURNACE_PATHS, (albedo, le));
     let box_check = cornell(f);
     let error = fz.max(box_check.error);
     let (detail, symptom) = if fz > 5.0 {

@@ -24,8 +24,9 @@
 //! many as you like, in any order.
 //!
 //! Contract (what the grader checks):
-//! * unbiased: in a closed furnace (the inside of a sphere, albedo 0.85,
-//!   emitting Le everywhere: every ray sees Le / (1 − ρ)) the mean of
+//! * unbiased: in a closed furnace (the inside of a sphere of albedo ρ,
+//!   emitting Le everywhere, both drawn anew for every grading run: every
+//!   ray sees Le / (1 − ρ)) the mean of
 //!   200,000 paths is within 5 standard errors (about 1%) of the answer,
 //!   and in the Cornell box each 8 × 8 block agrees with the reference
 //!   within 5 standard errors;

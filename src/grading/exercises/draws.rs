@@ -1,0 +1,153 @@
+//! Inputs a check draws across an exercise's whole contract, new for every
+//! grading run: the run's seed ([`crate::grading::run_seed`]) is not
+//! printed, so a solution cannot be fitted to them, and how many are drawn
+//! changes too (a function right only for its first N calls meets more
+//! than N). Scales from 10⁻³ to 10³, places far from the origin, grazing
+//! and degenerate cases: what the hand cases cannot all cover.
+//!
+//! Every draw is a function of (run seed, check, draw, dimension), so the
+//! student's process and the grader's replay draw the same inputs.
+
+use glam::{DVec3, Vec2, Vec3};
+
+use crate::core::sampling::random;
+use crate::grading::run_seed;
+
+/// The drawn inputs of one check.
+pub struct Draws {
+    seed: u64,
+    case: u64,
+    dim: u64,
+}
+
+impl Draws {
+    /// The draws of the check named by `salt` in this run.
+    pub fn new(salt: u64) -> Draws {
+        let seed = run_seed()
+            .wrapping_mul(0x9e37_79b9_7f4a_7c15)
+            .rotate_left(17)
+            ^ salt.wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        Draws {
+            seed,
+            case: 0,
+            dim: 0,
+        }
+    }
+
+    /// Moves on to the next case (its numbers start afresh).
+    pub fn next_case(&mut self) {
+        self.case += 1;
+        self.dim = 0;
+    }
+
+    /// A uniform number in [0, 1).
+    pub fn unit(&mut self) -> f32 {
+        self.dim += 1;
+        random(self.seed, self.case, 0, self.dim)
+    }
+
+    /// A uniform number in [lo, hi).
+    pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * self.unit()
+    }
+
+    /// A whole number in [lo, hi].
+    pub fn count(&mut self, lo: usize, hi: usize) -> usize {
+        (lo + (self.unit() * (hi - lo + 1) as f32) as usize).min(hi)
+    }
+
+    /// 10^u with u uniform in [lo, hi): a scale spread evenly over its
+    /// decades.
+    pub fn decades(&mut self, lo: f32, hi: f32) -> f32 {
+        10f32.powf(self.range(lo, hi))
+    }
+
+    /// ±1.
+    pub fn sign(&mut self) -> f32 {
+        if self.unit() < 0.5 {
+            -1.0
+        } else {
+            1.0
+        }
+    }
+
+    /// A point in the cube [-1, 1]³.
+    pub fn in_cube(&mut self) -> Vec3 {
+        Vec3::new(
+            self.range(-1.0, 1.0),
+            self.range(-1.0, 1.0),
+            self.range(-1.0, 1.0),
+        )
+    }
+
+    /// A point in the square [-1, 1]².
+    pub fn in_square(&mut self) -> Vec2 {
+        Vec2::new(self.range(-1.0, 1.0), self.range(-1.0, 1.0))
+    }
+
+    /// A unit direction, uniform on the sphere.
+    pub fn direction(&mut self) -> Vec3 {
+        let z = self.range(-1.0, 1.0);
+        let phi = std::f32::consts::TAU * self.unit();
+        let r = (1.0 - z * z).max(0.0).sqrt();
+        Vec3::new(r * phi.cos(), r * phi.sin(), z)
+    }
+
+    /// Where a drawn scene sits: the origin in a quarter of the cases, else
+    /// up to 10^`decades` away along a random direction.
+    pub fn place(&mut self, decades: f32) -> Vec3 {
+        if self.unit() < 0.25 {
+            return Vec3::ZERO;
+        }
+        let d = self.direction();
+        d * self.decades(0.0, decades)
+    }
+}
+
+impl Draws {
+    /// Where a drawn object of size `scale` sits: the origin in a quarter
+    /// of the cases, else up to `10^decades · scale` away (far enough that
+    /// a solution which loses precision there fails, near enough that the
+    /// rounding of the coordinates themselves leaves the answer well
+    /// defined).
+    pub fn place_for(&mut self, scale: f32, decades: f32) -> Vec3 {
+        if self.unit() < 0.25 {
+            return Vec3::ZERO;
+        }
+        let d = self.direction();
+        d * scale * self.decades(0.0, decades)
+    }
+}
+
+/// The length of a vector computed in f64 (no overflow, no rounding of
+/// note).
+pub fn length64(v: Vec3) -> f64 {
+    v.as_dvec3().length()
+}
+
+/// `v` in f64.
+pub fn d(v: Vec3) -> DVec3 {
+    v.as_dvec3()
+}
+
+/// The worst of the drawn cases: `cases` gives (error, what) for each,
+/// a NaN error counting as infinite; (0, "") when none is above 0.
+pub fn worst_drawn(cases: impl Iterator<Item = (f64, String)>) -> (f64, String) {
+    let mut worst = (0.0f64, String::new());
+    for (e, what) in cases {
+        let e = if e.is_nan() { f64::INFINITY } else { e };
+        if e > worst.0 {
+            worst = (e, what);
+        }
+    }
+    worst
+}
+
+/// Folds a drawn worst case into a check's (error, detail): the larger
+/// error wins, and the drawn case's detail says it was drawn.
+pub fn fold_drawn(error: &mut f64, detail: &mut String, drawn: (f64, String)) {
+    if drawn.0 > *error || (drawn.0.is_nan() && !error.is_nan()) {
+        *error = drawn.0;
+        *detail = format!("{} (a drawn case)", drawn.1);
+    }
+}
