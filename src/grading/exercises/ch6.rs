@@ -254,16 +254,18 @@ pub fn check_russian_roulette(f: RouletteFn) -> Check {
     // either sign), survival probabilities from 0.01 to 1.
     let mut draws = Draws::new(62);
     let mut cases = vec![(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0)];
-    for _ in 0..draws.count(3, 6) {
+    for k in 0..draws.count(4, 8) {
         draws.next_case();
         let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
-        // A whole number of the 10,000 evenly spaced u survive: the mean
-        // is then exact.
-        let q = if draws.unit() < 0.2 {
-            1.0
-        } else {
-            (draws.decades(-2.0, 0.0) as f64 * 1e4).round().max(1.0) / 1e4
+        // The first from 0.01 to 0.05, where paths rarely survive. A
+        // whole number of the 10,000 evenly spaced u survive: the mean is
+        // then exact.
+        let q = match k {
+            0 => draws.decades(-2.0, -1.3),
+            _ if draws.unit() < 0.2 => 1.0,
+            _ => draws.decades(-2.0, 0.0),
         };
+        let q = (q as f64 * 1e4).round().max(1.0) / 1e4;
         cases.push((value, q));
     }
     let (error, detail) = worst_of(cases.into_iter().map(|(value, q): (f64, f64)| {

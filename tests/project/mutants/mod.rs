@@ -10,6 +10,22 @@ pub mod ch3;
 pub mod ch4;
 pub mod ch5;
 pub mod ch6;
+pub mod fresh;
+
+/// Runs `check` once under each of `seeds` (the seed of the inputs the
+/// checks draw, as a grading run sets it), on this thread; each seed with
+/// what the check found.
+pub fn under_seeds(seeds: &[u64], check: impl Fn() -> Check) -> Vec<(u64, Check)> {
+    let found = seeds
+        .iter()
+        .map(|&seed| {
+            raystep::grading::set_run_seed(seed);
+            (seed, check())
+        })
+        .collect();
+    raystep::grading::set_run_seed(0);
+    found
+}
 
 /// Runs `f` in a child process (this test binary again, running only the
 /// test `name`), for tests that trip raystep's reference guard: what the

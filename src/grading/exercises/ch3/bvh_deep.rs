@@ -18,24 +18,25 @@ pub(super) fn deep_chain() -> (ReadableBvh, Vec<(Ray, String)>) {
     let hit = draws.count(n / 2, n - 1);
     let spacing = draws.decades(-2.0, 1.0);
     let size = spacing * 0.4;
-    let place = draws.place_for(spacing * n as f32, 1.0);
+    let place = draws.place_for(size, 2.0);
     // Triangle i at depth n - i along -z: the deeper in the chain, the
-    // nearer; all but one beside the rays' line.
+    // nearer. All but one are corners whose boxes the rays enter (so that
+    // a traversal keeps every leaf for later) and whose triangles they
+    // pass by; the rays hit the one centred on them.
     let tris: Vec<[Vec3; 3]> = (0..n)
         .map(|i| {
-            let side = if i == hit {
-                0.0
-            } else if i % 2 == 0 {
-                3.0 * size
+            let c = place + Vec3::new(0.0, 0.0, -((n - i) as f32) * spacing);
+            let at = |x: f32, y: f32| c + Vec3::new(x, y, 0.0) * size;
+            let mirror = if i % 2 == 0 { 1.0 } else { -1.0 };
+            if i == hit {
+                [at(-1.0, -1.0), at(1.0, -1.0), at(0.0, 1.0)]
             } else {
-                -3.0 * size
-            };
-            let c = place + Vec3::new(side, 0.0, -((n - i) as f32) * spacing);
-            [
-                c + Vec3::new(-size, -size, 0.0),
-                c + Vec3::new(size, -size, 0.0),
-                c + Vec3::new(0.0, size, 0.0),
-            ]
+                [
+                    at(-2.0 * mirror, -2.0),
+                    at(2.0 * mirror, -2.0),
+                    at(2.0 * mirror, 0.5),
+                ]
+            }
         })
         .collect();
     // Inner node i (0 ≤ i < n - 1) at index i, leaf i at n - 1 + i.

@@ -141,7 +141,7 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
         (Vec3::ZERO, Vec3::X, Vec3::Y, 1.0, None),
     ];
     // Drawn rays and planes: at scales from 10⁻³ to 10³, up to 100 times
-    // their size from the origin, N and d of any length from 10⁻² to 10².
+    // their size from the origin, N and d of any length from 10⁻³ to 10³.
     let mut draws = Draws::new(31);
     let mut drawn = Vec::new();
     for _ in 0..draws.count(200, 800) {
@@ -150,9 +150,19 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
         let place = draws.place_for(scale, 2.0);
         let (o, d, n) = (
             place + draws.in_cube() * 3.0 * scale,
-            draws.direction() * draws.decades(-2.0, 2.0),
-            draws.direction() * draws.decades(-2.0, 2.0),
+            draws.direction() * draws.decades(-3.0, 3.0),
+            draws.direction() * draws.decades(-3.0, 3.0),
         );
+        // A sixth of the cases with N and d both short: Nᵀd far below
+        // any absolute threshold, and nothing parallel about it.
+        let (d, n) = if draws.unit() < 1.0 / 6.0 {
+            (
+                d.normalize() * draws.decades(-4.0, -2.5),
+                n.normalize() * draws.decades(-4.0, -2.5),
+            )
+        } else {
+            (d, n)
+        };
         if n.normalize().dot(d.normalize()).abs() > 0.1 {
             let c = n.dot(place + draws.in_cube() * scale);
             let f64s = |v: Vec3| v.as_dvec3();
@@ -230,7 +240,12 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
     let mut draws = Draws::new(32);
     for _ in 0..draws.count(300, 900) {
         draws.next_case();
-        let scale = draws.decades(-3.0, 3.0);
+        // A sixth of the cases at a millimetre and below.
+        let scale = if draws.unit() < 1.0 / 6.0 {
+            draws.decades(-3.5, -2.5)
+        } else {
+            draws.decades(-3.0, 3.0)
+        };
         let place = draws.place_for(scale, 3.0);
         let t = [
             place + draws.in_cube() * scale,
@@ -319,7 +334,12 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
     let mut draws = Draws::new(33);
     for _ in 0..draws.count(300, 900) {
         draws.next_case();
-        let scale = draws.decades(-3.0, 3.0);
+        // A sixth of the cases at a millimetre and below.
+        let scale = if draws.unit() < 1.0 / 6.0 {
+            draws.decades(-3.5, -2.5)
+        } else {
+            draws.decades(-3.0, 3.0)
+        };
         let place = draws.place_for(scale, 4.0);
         let at = |q: Vec3| place + q * scale;
         let t = [
