@@ -61,7 +61,7 @@ const PANICKED: u8 = b'P';
 const END: u8 = b'E';
 
 /// Runs `f` with this thread recording (the student's process): returns
-/// the transcript of its calls, ended by [`END`] whether `f` returned or
+/// the transcript of its calls, ended by its end mark whether `f` returned or
 /// panicked (a panic of the student's code is in the transcript).
 pub fn record(f: impl FnOnce()) -> Vec<u8> {
     MODE.with(|m| *m.borrow_mut() = Mode::Record(Vec::new()));

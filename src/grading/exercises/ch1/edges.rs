@@ -11,6 +11,7 @@ use crate::ch1_projection::wireframe::{clip_to_near, NEAR};
 use crate::core::draw;
 use crate::core::film::Film;
 use crate::grading::exercise::{Check, Symptom};
+use crate::grading::exercises::draws::{fold_drawn, worst_drawn, Draws};
 use crate::grading::exercises::images;
 
 /// The capstone's candidate: a world-space edge to its two raster ends.
@@ -135,10 +136,60 @@ fn clauses(f: EdgeFn) -> Check {
             symptom,
         };
     }
+    // Drawn edges: near planes from 10⁻² to 3, ends from the pinhole to
+    // 100 times the near distance in front or behind, in every
+    // combination; left out are ends within 10⁻³ of the plane, where
+    // rounding decides the side, and edges almost parallel to it.
+    let mut draws = Draws::new(13);
+    let drawn = worst_drawn((0..draws.count(200, 800)).filter_map(|_| {
+        draws.next_case();
+        let near = draws.decades(-2.0, 0.5);
+        let end = |d: &mut Draws| {
+            let z = -near * d.sign() * d.decades(-1.0, 2.0);
+            let side = d.in_square() * z.abs() * d.range(0.0, 1.5);
+            Vec3::new(side.x, side.y, z)
+        };
+        let (a, b) = (end(&mut draws), end(&mut draws));
+        let (da, db) = (a.z + near, b.z + near);
+        if da.abs().min(db.abs()) < 1e-3 * near || (da - db).abs() < 0.2 * da.abs().max(db.abs()) {
+            return None;
+        }
+        let (got, want) = (f(&camera, a, b, near), reference_edge(&camera, a, b, near));
+        // A cut's rounding grows with the edge's length over the near
+        // distance (100 pixels per unit of the image plane): within a few
+        // f32 roundings of that, or 1e-5 relative, whichever is larger.
+        let rounding =
+            100.0 * 4.0 * f32::EPSILON as f64 * (a.length() + b.length()) as f64 / near as f64;
+        let off = |g: Vec2, w: Vec2| {
+            let d = (g - w).length() as f64;
+            let allowed = 1e-5 * (w.length() as f64).max(1.0) + rounding;
+            if d.is_nan() {
+                f64::INFINITY
+            } else {
+                d / allowed * 1e-5
+            }
+        };
+        let err = match (got, want) {
+            (Some(g), Some(w)) => off(g.0, w.0).max(off(g.1, w.1)),
+            (None, None) => 0.0,
+            _ => f64::INFINITY,
+        };
+        Some((
+            err,
+            format!(
+                "the edge from {a} to {b}, near = {near} (camera at the origin looking down -z, \
+                 200 x 200 pixels): gave {}, the reference {}",
+                show(got),
+                show(want)
+            ),
+        ))
+    }));
+    let (mut error, mut detail) = (0.0, "every clause case matches".to_string());
+    fold_drawn(&mut error, &mut detail, drawn);
     Check {
-        error: 0.0,
+        error,
         tolerance: 1e-5,
-        detail: "every clause case matches".into(),
+        detail,
         images: None,
         symptom: None,
     }

@@ -243,6 +243,50 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
             );
         }
     }
+    // Drawn cameras: scenes from 10⁻² to 10² across, up to 100 times that
+    // from the origin, `up` of any length and at least 17° from the view.
+    // The axes to 1e-4; the translation to 1e-4 of the eye's distance
+    // from the origin (what rounding allows there).
+    let mut draws = Draws::new(12);
+    for _ in 0..draws.count(50, 200) {
+        draws.next_case();
+        let size = draws.decades(-2.0, 2.0);
+        let eye = draws.place_for(size, 2.0) + draws.in_cube() * size;
+        let view = draws.direction();
+        let target = eye + view * size * draws.range(0.5, 3.0);
+        let up = draws.direction() * draws.decades(-2.0, 2.0);
+        if up.normalize().cross(view).length() < 0.3 {
+            continue;
+        }
+        let Some(want) = camera_from_world_look_at(eye, target, up) else {
+            continue;
+        };
+        let got = f(eye, target, up);
+        let scale = eye.length().max(1.0) as f64;
+        let (g, w) = (got.to_cols_array(), want.to_cols_array());
+        let err = (0..16)
+            .map(|k| {
+                let d = (g[k] - w[k]).abs() as f64;
+                // Entries 12..15 are the translation column.
+                if (12..15).contains(&k) {
+                    d / scale
+                } else {
+                    d
+                }
+            })
+            .fold(
+                0.0,
+                |a: f64, d| if d.is_nan() { f64::INFINITY } else { a.max(d) },
+            );
+        if err > worst.0 {
+            worst = (
+                err,
+                format!(
+                    "eye {eye}, target {target}, up {up} (a drawn camera): got {got:?}, expected {want:?}"
+                ),
+            );
+        }
+    }
     // The picture: the tetrahedron through the candidate and the reference.
     let desc = CameraDesc {
         eye: glam::DVec3::new(3.0, 2.0, 4.0),

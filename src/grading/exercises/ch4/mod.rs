@@ -237,6 +237,46 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
             format!("ray from {o} along {d}: got {got:?}, expected {want:?}"),
         )
     }));
+    // Drawn spheres from 10⁻² to 10² across, up to 100 times that from the
+    // origin, ε a ten-thousandth of the radius, rays towards them (a hit
+    // within 2ε/cos θ of the true one) and away (a miss).
+    let (mut error, mut detail) = (error, detail);
+    let mut draws = Draws::new(43);
+    let drawn = worst_drawn((0..draws.count(20, 60)).map(|_| {
+        draws.next_case();
+        let r = draws.decades(-2.0, 2.0);
+        let centre = draws.place_for(r, 2.0);
+        let from = draws.direction();
+        let origin = centre + from * r * draws.range(1.5, 10.0);
+        let towards = (centre + draws.in_cube() * r * 0.5 - origin).normalize();
+        let dir = if draws.unit() < 0.2 { -towards } else { towards };
+        let eps = r * 1e-4;
+        let sdf = move |p: Vec3| (p - centre).length() - r;
+        // The true hit, in f64.
+        let (o, d, c) = (origin.as_dvec3(), dir.as_dvec3(), centre.as_dvec3());
+        let oc = o - c;
+        let b = oc.dot(d);
+        let disc = b * b - (oc.length_squared() - (r as f64).powi(2));
+        let want = (disc > 0.0 && -b - disc.sqrt() > 0.0).then(|| {
+            let t = -b - disc.sqrt();
+            let cos = ((o + d * t - c).normalize().dot(-d)).max(1e-3);
+            (t, 2.0 * eps as f64 / cos)
+        });
+        let got = f(&sdf, origin, dir, eps, 4096, 200.0 * r);
+        let err = match (got, want) {
+            (Some(g), Some((w, slack))) => ((g as f64 - w).abs() - slack).max(0.0) / r as f64,
+            (None, None) => 0.0,
+            _ => f64::INFINITY,
+        };
+        (
+            err,
+            format!(
+                "a sphere of radius {r} at {centre}, ray from {origin} along {dir} (ε = {eps}):                  got {got:?}, expected {:?}",
+                want.map(|w| w.0)
+            ),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
     // The step budget is respected: a ray passing 5e-5 above the sphere
     // counts as a hit with ε = 1e-4, but not within 3 steps from 40 away
     // (it creeps along the silhouette).
@@ -323,13 +363,34 @@ pub fn check_gradient_normal(f: NormalFn) -> Check {
         (&torus, Vec3::new(0.0, 0.5, 2.0), Vec3::Y),
         (&torus, Vec3::new(-2.5, 0.0, 0.0), -Vec3::X),
     ];
-    let (error, detail) = worst_of(cases.into_iter().map(|(sdf, p, want)| {
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(sdf, p, want)| {
         let got = f(sdf, p, 1e-3);
         (
             (got - want).length() as f64,
             format!("at {p}: got {got}, expected {want}"),
         )
     }));
+    // Drawn spheres from 10⁻² to 10² across, up to 10 times that from the
+    // origin, points near their surface, h from 10⁻³ to 10⁻² of the radius,
+    // against the reference's central differences (the same h: the same
+    // truncation, and rounding far below the tolerance).
+    let mut draws = Draws::new(44);
+    let drawn = worst_drawn((0..draws.count(50, 200)).map(|_| {
+        draws.next_case();
+        let r = draws.decades(-2.0, 2.0);
+        let centre = draws.place_for(r, 1.0);
+        let out = draws.direction();
+        let p = centre + out * r * draws.range(0.9, 1.1);
+        let h = r * draws.decades(-3.0, -2.0);
+        let sdf = move |q: Vec3| (q - centre).length() - r;
+        let want = gradient_central(&sdf, p, h).normalize();
+        let got = f(&sdf, p, h);
+        (
+            (got - want).length() as f64,
+            format!("a sphere of radius {r} at {centre}, at {p} with h = {h}: got {got}, expected {want}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
     let length = f(&sphere, Vec3::new(3.0, 0.0, 0.0), 1e-3).length();
     // A NaN length is not unit length either.
     let unit = (length - 1.0).abs() <= 1e-2;

@@ -383,7 +383,13 @@ fn same_picture(student: Film, reference: Film) -> Check {
 /// The capstone (see the module's doc): the hand-worked cases, then the
 /// Cornell box with the same light points as the reference.
 pub fn check_direct_light(f: DirectFn) -> Check {
-    let (error, detail, symptom) = hand_cases(f);
+    // The hand cases name the mistake; the drawn ones count when those
+    // all pass.
+    let (mut error, mut detail, symptom) = hand_cases(f);
+    if error <= 1e-4 {
+        let drawn = super::drawn::drawn_cases(f);
+        crate::grading::exercises::draws::fold_drawn(&mut error, &mut detail, drawn);
+    }
     let student = cornell(f, 32);
     let reference = cornell(reference_direct, 32);
     let picture = same_picture(student.mean, reference.mean);

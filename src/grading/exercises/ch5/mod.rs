@@ -2,6 +2,7 @@
 //! in `direct.rs`).
 
 mod direct;
+mod drawn;
 mod symptoms;
 pub use direct::*;
 pub use symptoms::*;
@@ -183,9 +184,11 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
 /// sample is not even a direction on the hemisphere.
 pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
     let n = 40_000u64;
+    // The numbers are new for every grading run.
+    let seed = 55 ^ crate::grading::run_seed().wrapping_mul(0x9e37_79b9_7f4a_7c15);
     let (mut sx, mut sy, mut sz, mut low) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for i in 0..n {
-        let u = Vec2::new(random(55, i, 0, 0), random(55, i, 0, 1));
+        let u = Vec2::new(random(seed, i, 0, 0), random(seed, i, 0, 1));
         let (w, pdf) = f(u);
         if !((w.length() - 1.0).abs() < 1e-4 && w.z >= -1e-6) {
             return Check {

@@ -1,0 +1,71 @@
+//! Capstone 5's drawn cases: a shading point and a light point anywhere,
+//! at any scale, each facing any way, the light's area, emission and the
+//! albedo drawn too, and a fifth of them blocked. The answer is the
+//! estimator's closed form worked out in f64; cases where a cosine is so
+//! small that rounding decides its sign are left out.
+
+use std::cell::Cell;
+use std::f64::consts::PI;
+
+use glam::Vec3;
+
+use super::direct::DirectFn;
+use crate::grading::exercises::draws::{worst_drawn, Draws};
+
+/// The worst drawn case of `f`: (error relative to what the light would
+/// bring facing p, what it was).
+pub(super) fn drawn_cases(f: DirectFn) -> (f64, String) {
+    let mut draws = Draws::new(54);
+    worst_drawn((0..draws.count(100, 400)).filter_map(|_| {
+        draws.next_case();
+        let s = draws.decades(-2.0, 2.0);
+        let p = draws.place_for(s, 2.0);
+        let n = draws.direction();
+        let y = p + draws.direction() * s * draws.range(0.5, 5.0);
+        let n_light = draws.direction();
+        let area = s * s * draws.decades(-2.0, 1.0);
+        let le = Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(-1.0, 2.0);
+        let rho = Vec3::new(draws.unit(), draws.unit(), draws.unit());
+        let blocked = draws.unit() < 0.2;
+        let to = (y - p).as_dvec3();
+        let d2 = to.length_squared();
+        let wi = to / d2.sqrt();
+        let (cos, cos_l) = (n.as_dvec3().dot(wi), -n_light.as_dvec3().dot(wi));
+        if cos.abs() < 1e-3 || cos_l.abs() < 1e-3 {
+            return None;
+        }
+        let facing = (rho * le).as_dvec3() / PI * area as f64 / d2;
+        let want = if cos > 0.0 && cos_l > 0.0 && !blocked {
+            facing * cos * cos_l
+        } else {
+            glam::DVec3::ZERO
+        };
+        let asked_other = Cell::new(false);
+        let visible = |a: Vec3, b: Vec3| {
+            if a != p || b != y {
+                asked_other.set(true);
+            }
+            !blocked
+        };
+        let got = f(p, n, rho, y, n_light, area, le, &visible).as_dvec3();
+        let scale = facing.max_element().max(f64::MIN_POSITIVE);
+        let err = if asked_other.get() {
+            f64::INFINITY
+        } else {
+            (got - want).abs().max_element() / scale
+        };
+        Some((
+            err,
+            format!(
+                "p {p}, n {n}, ρ {rho}, y {y}, n_light {n_light}, A {area}, Le {le}{}: got {got}, \
+                 expected {want}{}",
+                if blocked { ", blocked" } else { "" },
+                if asked_other.get() {
+                    " (visible was asked about another segment than p → y)"
+                } else {
+                    ""
+                }
+            ),
+        ))
+    }))
+}
