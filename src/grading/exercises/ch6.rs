@@ -89,7 +89,7 @@ pub fn exercises() -> Vec<Exercise> {
             hints: [
                 "slide \"Monte-Carlo path tracing\" and book \"Russian roulette\": one path per sample, a light sample at every surface (direct light) and one sampled direction (indirect light); only roulette ends a path in a closed room, and a survivor carries more.",
                 "1. the first hit (none: black) and the emission seen there, L = hit.emitted; throughput β = 1. 2. loop: (a) a light sample: if cos θ = n·wi > 0 and the shadow ray is clear, L += β · f · Le · cos θ / pdf, with f = ρ/π; (b) a cosine direction: β *= f · cos θ / pdf; (c) after a bounce or two, roulette: q = min(1, max β) (or capped at 0.95), end the path when rng() ≥ q, else β /= q; (d) the next hit (none: stop). Never add the emission a bounce finds: the light sample counted it.",
-                "L = hit.emitted; β = 1; loop { if let Some(ls) = sample_light: if cos > 0 && unoccluded { L += β (ρ/π) ls.le cos / ls.pdf }; (wi, pdf) = sample_cosine; β *= (ρ/π) cos / pdf; after 2 bounces q = min(max(β), 0.95): if rng() >= q break, β /= q; hit = next_hit(wi) else break }",
+                "L = hit.emitted; β = 1; loop { if let Some(ls) = sample_light: if cos > 0 && unoccluded { L += β (ρ/π) ls.li cos / ls.pdf }; (wi, pdf) = sample_cosine; β *= (ρ/π) cos / pdf; after 2 bounces q = min(max(β), 0.95): if rng() >= q break, β /= q; hit = next_hit(wi) else break }",
             ],
             symptoms: &super::paths::SYMPTOMS,
             reference: || super::paths::check_path_radiance(super::paths::reference_path),

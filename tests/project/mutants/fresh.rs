@@ -285,3 +285,111 @@ fn the_correct_alternatives_and_references_pass_under_every_seed() {
         passes(&ex.id(), ex.reference);
     }
 }
+
+/// Clause: twice the signed area; this one normalises the edge first.
+fn edge_normalised(a: Vec2, b: Vec2, p: Vec2) -> f32 {
+    (b - a).normalize().perp_dot(p - a)
+}
+
+/// Clause: central differences with step h; this one steps forward.
+fn normal_forward(sdf: &dyn Fn(Vec3) -> f32, p: Vec3, h: f32) -> Vec3 {
+    let f = sdf(p);
+    Vec3::new(
+        sdf(p + Vec3::X * h) - f,
+        sdf(p + Vec3::Y * h) - f,
+        sdf(p + Vec3::Z * h) - f,
+    )
+    .normalize()
+}
+
+/// Clause: with step h as given; this one always steps 1e-3.
+fn normal_fixed_h(sdf: &dyn Fn(Vec3) -> f32, p: Vec3, _h: f32) -> Vec3 {
+    let h = 1e-3;
+    Vec3::new(
+        sdf(p + Vec3::X * h) - sdf(p - Vec3::X * h),
+        sdf(p + Vec3::Y * h) - sdf(p - Vec3::Y * h),
+        sdf(p + Vec3::Z * h) - sdf(p - Vec3::Z * h),
+    )
+    .normalize()
+}
+
+/// Clause: ε scaled to the point the march has reached; this one takes
+/// it at the ray's origin, once (the lecture's loop otherwise).
+fn trace_eps_at_origin(
+    sdf: &dyn Fn(Vec3) -> f32,
+    o: Vec3,
+    d: Vec3,
+    m: &raystep::ch4_implicit_surfaces::march::March,
+) -> Option<(f32, Vec3)> {
+    let eps = m.epsilon_at(o);
+    let mut t = 0.0f32;
+    let mut steps = 0;
+    loop {
+        let p = o + t * d;
+        let f = sdf(p);
+        steps += 1;
+        if f.abs() < eps {
+            let h = m.epsilon_at(p).max(1e-4);
+            let g = Vec3::new(
+                sdf(p + Vec3::X * h) - sdf(p - Vec3::X * h),
+                sdf(p + Vec3::Y * h) - sdf(p - Vec3::Y * h),
+                sdf(p + Vec3::Z * h) - sdf(p - Vec3::Z * h),
+            );
+            let n = g.try_normalize().unwrap_or(-d);
+            return Some((t, if n.dot(d) > 0.0 { -n } else { n }));
+        }
+        if t > m.max_distance || steps >= m.max_steps {
+            return None;
+        }
+        t += f;
+    }
+}
+
+/// Clause: ρ/π, the BRDF alone; this one folds in the cosine.
+fn lambert_with_cosine(rho: Vec3, wo: Vec3, wi: Vec3) -> Vec3 {
+    if (wo.z > 0.0) == (wi.z > 0.0) {
+        rho * std::f32::consts::FRAC_1_PI * wi.z.abs()
+    } else {
+        Vec3::ZERO
+    }
+}
+
+/// Clause: uniform on [a, b]; this one forgets to start at a.
+fn mc_from_zero(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64 {
+    let sum: f64 = u.iter().map(|u| f(u * b)).sum();
+    sum / u.len() as f64 * (b - a)
+}
+
+/// Clause: the power heuristic; this one squares the balance heuristic.
+fn mis_squared_balance(f: f64, g: f64) -> f64 {
+    if f == 0.0 {
+        0.0
+    } else {
+        (f / (f + g)).powi(2)
+    }
+}
+
+#[test]
+fn more_fresh_mutants_fail_under_every_seed() {
+    fails("a normalised edge", || {
+        ch2::check_edge_function(edge_normalised)
+    });
+    fails("forward differences", || {
+        ch4::check_gradient_normal(normal_forward)
+    });
+    fails("a fixed difference step", || {
+        ch4::check_gradient_normal(normal_fixed_h)
+    });
+    fails("ε taken at the ray's origin", || {
+        ch4::check_trace_scene(trace_eps_at_origin)
+    });
+    fails("the BRDF times the cosine", || {
+        ch5::check_lambert_brdf(lambert_with_cosine)
+    });
+    fails("x from 0, not from a", || {
+        ch6::check_mc_integral(mc_from_zero)
+    });
+    fails("the balance heuristic squared", || {
+        ch6::check_mis_weight(mis_squared_balance)
+    });
+}

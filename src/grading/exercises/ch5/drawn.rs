@@ -9,12 +9,14 @@ use std::f64::consts::PI;
 
 use glam::Vec3;
 
-use super::direct::DirectFn;
 use crate::grading::exercises::draws::{worst_drawn, Draws};
+
+/// Capstone 5's signature (the checks' `DirectFn`).
+type Direct = fn(Vec3, Vec3, Vec3, Vec3, Vec3, f32, Vec3, &dyn Fn(Vec3, Vec3) -> bool) -> Vec3;
 
 /// The worst drawn case of `f`: (error relative to what the light would
 /// bring facing p, what it was).
-pub(super) fn drawn_cases(f: DirectFn) -> (f64, String) {
+pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
     let mut draws = Draws::new(54);
     worst_drawn((0..draws.count(100, 400)).filter_map(|_| {
         draws.next_case();
