@@ -123,6 +123,34 @@ pub fn sequential<T: Send>(f: impl FnOnce() -> T + Send) -> Result<T, String> {
     Ok(pool.install(f))
 }
 
+/// The threads a check's own work may run on (its reference pictures),
+/// apart from the one thread where the student's functions are called:
+/// what runs there calls none of them, so the order of the calls stays
+/// the same in both processes. The student's process starts it
+/// ([`start_grader_pool`]) before its sandbox forbids new threads.
+static GRADER_POOL: std::sync::OnceLock<Option<rayon::ThreadPool>> = std::sync::OnceLock::new();
+
+/// Starts the pool of [`on_grader_pool`] (a thread per core).
+pub fn start_grader_pool() {
+    GRADER_POOL.get_or_init(|| {
+        let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(cores)
+            .build()
+            .ok()
+    });
+}
+
+/// Runs `f`, the grader's own work inside a check that calls no student
+/// function (a reference picture), on the grader's pool of threads.
+pub fn on_grader_pool<T: Send>(f: impl FnOnce() -> T + Send) -> T {
+    start_grader_pool();
+    match GRADER_POOL.get().and_then(Option::as_ref) {
+        Some(pool) => pool.install(f),
+        None => f(),
+    }
+}
+
 /// Whether this thread records.
 fn recording() -> bool {
     MODE.with(|m| matches!(*m.borrow(), Mode::Record(_)))

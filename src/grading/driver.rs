@@ -11,11 +11,11 @@ use std::time::Duration;
 use clap::Parser;
 
 use crate::core::format::format_count;
-use crate::core::text::escape_keep_newlines;
 use crate::grading::build::{build_exercises, exercises_dir};
-use crate::grading::exercise::{Check, Exercise, Outcome};
+use crate::grading::exercise::{Exercise, Outcome};
 use crate::grading::process::{fresh_seed, reference, run_student, sandbox_gaps};
 use crate::grading::sandbox::{become_subreaper, kill_orphans};
+pub use crate::grading::stream::{describe, grade_parallel, grade_stream};
 use crate::grading::{all, hints};
 use crate::grading::{remove_failure_images, shipped};
 
@@ -153,19 +153,22 @@ pub fn grade_main() -> ExitCode {
         // What a student's code starts and detaches comes back to us when
         // its parent dies, and is stopped after each exercise.
         become_subreaper();
-        grade_stream(
+        // Each exercise's process runs one thread: as many at once as
+        // there are cores.
+        let workers = std::thread::available_parallelism().map_or(1, |n| n.get());
+        let results = grade_parallel(
             &exercises,
-            &mut |ex| {
-                let graded = match built.broken.get(&ex.id()) {
-                    Some(message) => (Outcome::DoesNotCompile(message.clone()), Vec::new()),
-                    None => run_student(&built.runner, ex, &cli.out, timeout, seed),
-                };
-                kill_orphans();
-                graded
+            workers,
+            &|ex| match built.broken.get(&ex.id()) {
+                Some(message) => (Outcome::DoesNotCompile(message.clone()), Vec::new()),
+                None => run_student(&built.runner, ex, &cli.out, timeout, seed),
             },
             &mut stdout,
             live,
-        )
+        );
+        // The sandbox lets no process start; a sweep all the same.
+        kill_orphans();
+        results
     };
     // An old failure's images must not be shown as the newest.
     for (ex, outcome, _) in &results {
@@ -276,88 +279,6 @@ fn select(catalog: &[Exercise], wanted: &[String]) -> Result<Vec<Exercise>, Stri
     })
 }
 
-/// Grades each exercise with `grade`, printing each result to `w` as soon
-/// as it is known; `grade` returns the outcome and the images it wrote.
-/// Returns (exercise, outcome, the printed text).
-pub fn grade_stream(
-    exercises: &[Exercise],
-    grade: &mut dyn FnMut(&Exercise) -> (Outcome, Vec<PathBuf>),
-    w: &mut dyn Write,
-    live: bool,
-) -> Vec<(Exercise, Outcome, String)> {
-    let width = exercises.iter().map(|e| e.id().len()).max().unwrap_or(0);
-    let mut results = Vec::new();
-    for ex in exercises {
-        // On a terminal, say what runs before it runs: a slow check is not
-        // a silent one (the result overwrites the line).
-        if live {
-            let _ = write!(w, "  {:width$}  ...", ex.id());
-            let _ = w.flush();
-        }
-        let (outcome, images) = grade(ex);
-        let text = describe(ex, &outcome, width, &images);
-        let _ = write!(w, "{}{text}", if live { "\r" } else { "" });
-        let _ = w.flush();
-        results.push((*ex, outcome, text));
-    }
-    results
-}
-
-/// The printed lines for one result (starting with the padded id).
-pub fn describe(ex: &Exercise, outcome: &Outcome, width: usize, images: &[PathBuf]) -> String {
-    let id = format!("{:width$}", ex.id());
-    let pad = format!("  {:width$}        ", "");
-    let mut s = match outcome {
-        Outcome::Passed(c) => {
-            return format!("  {id}  PASS  error {:.3e} within {:.0e}\n", c.error, c.tolerance)
-        }
-        Outcome::NotImplemented => {
-            return format!("  {id}  not started: replace the todo!() in {}\n", ex.file)
-        }
-        Outcome::Failed(c) => {
-            let mut s = format!(
-                "  {id}  FAIL  error {:.3e} exceeds {:.0e}: {}\n",
-                c.error,
-                c.tolerance,
-                escape_keep_newlines(&c.detail)
-            );
-            let files: Vec<String> = images.iter().map(|f| f.display().to_string()).collect();
-            if !files.is_empty() {
-                s += &format!("{pad}images: {}\n", files.join(", "));
-            }
-            s
-        }
-        Outcome::Panicked(m) => format!("  {id}  FAIL  panicked: {}\n", escape_keep_newlines(m)),
-        Outcome::TimedOut { seconds, doing } => format!(
-            "  {id}  FAIL  timed out after {seconds} s and was stopped, while {}: does a loop never end?\n",
-            if doing.is_empty() {
-                format!("running your {} ({})", ex.name, ex.file)
-            } else {
-                escape_keep_newlines(doing).into_owned()
-            }
-        ),
-        Outcome::DoesNotCompile(m) => {
-            let mut s = format!("  {id}  FAIL  does not compile ({}):\n", ex.file);
-            for line in m.lines().take(24) {
-                s += &format!("{pad}| {}\n", escape_keep_newlines(line));
-            }
-            // Fix the compiler's complaint first: no hint yet.
-            return s;
-        }
-    };
-    match outcome {
-        Outcome::Failed(Check {
-            symptom: Some(symptom),
-            ..
-        }) => {
-            s += &format!("{pad}symptom: {}\n", symptom.name);
-            s += &format!("{pad}hint: {}\n", symptom.hint);
-        }
-        _ => s += &format!("{pad}hint: {}\n", ex.hints[0]),
-    }
-    s += &format!("{pad}more: cargo grade --hint {}\n", ex.id());
-    s
-}
 /// Gradescope's `results.json`: one test per exercise (name, score,
 /// max_score, status, output) and the total score.
 pub fn results_json(results: &[(Exercise, Outcome, String)]) -> String {

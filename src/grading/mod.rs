@@ -31,6 +31,7 @@ pub mod sandbox;
 pub mod seccomp;
 pub mod shipped;
 pub mod source_rules;
+pub mod stream;
 pub mod students;
 pub mod wire;
 
@@ -88,10 +89,63 @@ pub fn run_seed() -> u64 {
 /// unless one is recorded already (a replayed panic of the student's code
 /// happened in the student's file, not where the replay raises it).
 pub(crate) fn note_panic_at(at: String) {
-    PANIC_AT
-        .lock()
-        .unwrap_or_else(|e| e.into_inner())
-        .get_or_insert(at);
+    let alone = ALONE.with(|a| match a.borrow_mut().as_mut() {
+        Some(first) => {
+            first.get_or_insert(at.clone());
+            true
+        }
+        None => false,
+    });
+    if !alone {
+        PANIC_AT
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .get_or_insert(at);
+    }
+}
+
+thread_local! {
+    /// Inside [`run_check_alone`] on this thread: where its first panic
+    /// happened, once one did.
+    static ALONE: std::cell::RefCell<Option<Option<String>>> =
+        const { std::cell::RefCell::new(None) };
+}
+
+/// Installs, once, the panic hook of [`run_check_alone`]: silent on a
+/// thread running a check alone (it notes where the first panic
+/// happened), the hook that was there before everywhere else.
+fn install_alone_hook() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            let noted = ALONE.with(|a| match a.borrow_mut().as_mut() {
+                Some(first) => {
+                    if let Some(at) = info.location() {
+                        first.get_or_insert_with(|| {
+                            format!("{}:{}:{}", short_path(at.file()), at.line(), at.column())
+                        });
+                    }
+                    true
+                }
+                None => false,
+            });
+            if !noted {
+                previous(info);
+            }
+        }));
+    });
+}
+
+/// [`run_check`] for a check that runs wholly on this thread (a replay:
+/// see [`bridge::sequential`]): several can run at once on other threads,
+/// since nothing of it is shared between threads.
+pub fn run_check_alone(check: fn() -> Check) -> Outcome {
+    install_alone_hook();
+    ALONE.with(|a| *a.borrow_mut() = Some(None));
+    let result = catch_unwind(AssertUnwindSafe(check));
+    let at = ALONE.with(|a| a.borrow_mut().take()).flatten();
+    outcome_of(result, at)
 }
 
 /// A panic's message (`"panicked"` when it carries no text).
@@ -120,6 +174,12 @@ pub fn run_check(check: fn() -> Check) -> Outcome {
     }));
     let result = catch_unwind(AssertUnwindSafe(check));
     std::panic::set_hook(previous);
+    let at = PANIC_AT.lock().unwrap_or_else(|e| e.into_inner()).take();
+    outcome_of(result, at)
+}
+
+/// The outcome of a check that returned or panicked (`at`: where).
+fn outcome_of(result: std::thread::Result<Check>, at: Option<String>) -> Outcome {
     // Calling raystep's own solution fails, even when the panic that
     // refused it was caught.
     if let Some(id) = crate::core::guard::reference_called() {
@@ -133,7 +193,7 @@ pub fn run_check(check: fn() -> Check) -> Outcome {
             if message.starts_with("not yet implemented") {
                 return Outcome::NotImplemented;
             }
-            match PANIC_AT.lock().unwrap_or_else(|e| e.into_inner()).take() {
+            match at {
                 Some(at) => Outcome::Panicked(format!("{message} (at {at})")),
                 None => Outcome::Panicked(message),
             }

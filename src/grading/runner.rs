@@ -148,6 +148,7 @@ pub fn child_main<S: Students>() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    bridge::start_grader_pool();
     let missing = Limits::for_timeout(CPU_SECONDS).confine();
     let transcript = match request {
         Request::SandboxCheck => format!("sandbox\n{}", missing.join("\n")).into_bytes(),
@@ -188,7 +189,7 @@ pub fn replay_check(id: &str, transcript: Vec<u8>, seed: u64) -> Outcome {
     };
     let replayed = bridge::sequential(move || {
         crate::grading::set_run_seed(seed);
-        bridge::replay(transcript, || crate::grading::run_check(check))
+        bridge::replay(transcript, || crate::grading::run_check_alone(check))
     });
     match replayed {
         Err(e) => Outcome::Panicked(e),

@@ -393,3 +393,46 @@ fn more_fresh_mutants_fail_under_every_seed() {
         ch6::check_mis_weight(mis_squared_balance)
     });
 }
+
+/// Case 7 of the grader issue's list: the closed furnace recognised by
+/// the albedo and emission its stub once printed (0.85, (1, 0.75, 0.5))
+/// and answered in closed form, while the real loop has no roulette and
+/// stops at eight bounces. The furnace is drawn anew for every run now.
+fn path_furnace_recognised(
+    scene: &raystep::grading::exercises::paths::PathScene,
+    origin: Vec3,
+    dir: Vec3,
+    rng: &mut dyn FnMut() -> f32,
+) -> Vec3 {
+    let Some(mut hit) = scene.first_hit(origin, dir) else {
+        return Vec3::ZERO;
+    };
+    if hit.albedo == Vec3::splat(0.85) && hit.emitted == Vec3::new(1.0, 0.75, 0.5) {
+        return hit.emitted / (1.0 - 0.85);
+    }
+    let mut l = hit.emitted;
+    let mut beta = Vec3::ONE;
+    for _ in 0..8 {
+        let brdf = hit.albedo * std::f32::consts::FRAC_1_PI;
+        if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
+            let cos = hit.n.dot(ls.wi);
+            if cos > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
+                l += beta * brdf * ls.li * cos / ls.pdf;
+            }
+        }
+        let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
+        beta *= brdf * hit.n.dot(wi) / pdf;
+        match scene.next_hit(&hit, wi) {
+            Some(next) => hit = next,
+            None => break,
+        }
+    }
+    l
+}
+
+#[test]
+fn a_furnace_recognised_by_its_old_numbers_fails() {
+    fails("the furnace answered in closed form", || {
+        raystep::grading::exercises::paths::check_path_radiance(path_furnace_recognised)
+    });
+}

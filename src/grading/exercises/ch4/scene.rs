@@ -49,9 +49,10 @@ pub fn check_trace_scene(f: TraceRayFn) -> Check {
     let m = March::default();
     let (w, h) = (camera.width, camera.height);
     let ray_at = |x: u32, y: u32| camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
+    // The normals as a picture, and the hits' distances.
     let render = |g: TraceRayFn| {
         let mut film = Film::new(w, h);
-        film.pixels = (0..w * h)
+        let hits: Vec<Option<(f32, Vec3)>> = (0..w * h)
             .into_par_iter()
             .map(|i| {
                 let ray = ray_at(i % w, i / w);
@@ -61,13 +62,20 @@ pub fn check_trace_scene(f: TraceRayFn) -> Check {
                         i / w
                     ));
                 }
-                match g(&sdf, ray.origin, ray.dir, &m) {
-                    Some((_, n)) => n * 0.5 + Vec3::splat(0.5),
-                    None => Vec3::ZERO,
-                }
+                g(&sdf, ray.origin, ray.dir, &m)
             })
             .collect();
-        film
+        film.pixels = hits
+            .iter()
+            .map(|hit| match hit {
+                Some((_, n)) => *n * 0.5 + Vec3::splat(0.5),
+                None => Vec3::ZERO,
+            })
+            .collect();
+        (
+            film,
+            hits.into_iter().map(|h| h.map(|h| h.0)).collect::<Vec<_>>(),
+        )
     };
     let explain = |x: u32, y: u32| {
         let ray = ray_at(x, y);
@@ -85,15 +93,14 @@ pub fn check_trace_scene(f: TraceRayFn) -> Check {
     };
     // The scene's distance function counts nothing: its calls need not
     // cross between the processes (see `bridge::uncounted`).
-    let check = crate::grading::bridge::uncounted(|| {
-        images::compare(
+    let ((theirs, their_t), (ours, our_t)) = crate::grading::bridge::uncounted(|| {
+        (
             render(f),
-            render(reference_trace_ray),
-            0.02,
-            3e-3,
-            "normal",
-            &explain,
+            crate::grading::bridge::on_grader_pool(|| render(reference_trace_ray)),
         )
+    });
+    let check = crate::grading::bridge::uncounted(|| {
+        images::compare(theirs, ours, 0.02, 3e-3, "normal", &explain)
     });
     if !check.passed() {
         // A clause below may say what went wrong.
@@ -107,12 +114,11 @@ pub fn check_trace_scene(f: TraceRayFn) -> Check {
         };
     }
     // The depths too: a hit in the right place, not only the right normal.
-    let worst = (0..w * h)
-        .map(|i| {
-            let ray = ray_at(i % w, i / w);
-            let a = f(&sdf, ray.origin, ray.dir, &m).map(|r| r.0);
-            let b = reference_trace_ray(&sdf, ray.origin, ray.dir, &m).map(|r| r.0);
-            match (a, b) {
+    let worst = their_t
+        .iter()
+        .zip(&our_t)
+        .map(|(a, b)| {
+            match (*a, *b) {
                 (Some(a), Some(b)) => ((a - b).abs() / b.max(1.0)) as f64,
                 (None, None) => 0.0,
                 _ => 0.0, // counted by the image comparison above
