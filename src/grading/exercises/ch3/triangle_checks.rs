@@ -240,12 +240,7 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
     let mut draws = Draws::new(32);
     for _ in 0..draws.count(300, 900) {
         draws.next_case();
-        // A sixth of the cases at a millimetre and below.
-        let scale = if draws.unit() < 1.0 / 6.0 {
-            draws.decades(-3.5, -2.5)
-        } else {
-            draws.decades(-3.0, 3.0)
-        };
+        let scale = draws.triangle_scale();
         let place = draws.place_for(scale, 3.0);
         let t = [
             place + draws.in_cube() * scale,
@@ -334,12 +329,7 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
     let mut draws = Draws::new(33);
     for _ in 0..draws.count(300, 900) {
         draws.next_case();
-        // A sixth of the cases at a millimetre and below.
-        let scale = if draws.unit() < 1.0 / 6.0 {
-            draws.decades(-3.5, -2.5)
-        } else {
-            draws.decades(-3.0, 3.0)
-        };
+        let scale = draws.triangle_scale();
         let place = draws.place_for(scale, 4.0);
         let at = |q: Vec3| place + q * scale;
         let t = [
