@@ -42,10 +42,11 @@ pub enum Ran {
 /// debugging prints rarely reach this).
 pub const OUTPUT_LIMIT: usize = 4 << 20;
 
-/// The most a child may write to standard output: 1 GiB (the student's
-/// process writes the transcript of its calls there, up to some tens of
-/// MiB for chapter 6's capstone).
-pub const TRANSCRIPT_LIMIT: usize = 1 << 30;
+/// The most a child may write to standard output: 256 MiB (the student's
+/// process writes the transcript of its calls there: 18 MiB for chapter
+/// 6's capstone, the largest; a student's code that calls its callbacks
+/// without end is stopped here or at the time limit).
+pub const TRANSCRIPT_LIMIT: usize = 256 << 20;
 
 /// Both outputs of a child, read on two threads into one budget.
 struct Outputs {
