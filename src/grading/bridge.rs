@@ -177,7 +177,7 @@ fn put_framed(out: &mut Vec<u8>, value: &impl Wire) {
 
 /// What the grader's replay found wrong with a transcript: the student's
 /// process answered something else than it was asked, or stopped early.
-fn mismatch(what: &str) -> ! {
+pub(crate) fn mismatch(what: &str) -> ! {
     std::panic::panic_any(format!(
         "the grader could not replay your code's answers ({what}); \
          nothing your code printed or did outside its answers counts"

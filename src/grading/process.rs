@@ -66,6 +66,23 @@ pub fn in_student_process(
     Err(Box::new(outcome))
 }
 
+/// Exercise `ex`'s check: its calls answered by the student's process
+/// `runner` (stopped after `timeout` or when `cancel` is set), the verdict
+/// made here on the inputs drawn from `seed`.
+fn graded(
+    runner: &Path,
+    ex: &Exercise,
+    timeout: Duration,
+    seed: u64,
+    cancel: Option<&AtomicBool>,
+) -> Outcome {
+    let request = Request::Check { id: ex.id(), seed };
+    match in_student_process(runner, &request, timeout, cancel) {
+        Ok(transcript) => replay_check(&ex.id(), transcript, seed),
+        Err(outcome) => *outcome,
+    }
+}
+
 /// `chN --student`: builds the exercises, then renders chapter N's
 /// capstone scene with the student's code beside the reference and their
 /// difference, into `out/student/` (under a one-minute limit).
@@ -124,13 +141,7 @@ pub fn capstone_images(
     timeout: Duration,
     cancel: Option<&AtomicBool>,
 ) -> (Outcome, Vec<PathBuf>) {
-    let seed = fresh_seed();
-    let request = Request::Check { id: ex.id(), seed };
-    let transcript = match in_student_process(runner, &request, timeout, cancel) {
-        Ok(t) => t,
-        Err(outcome) => return (*outcome, Vec::new()),
-    };
-    let outcome = replay_check(&ex.id(), transcript, seed);
+    let outcome = graded(runner, ex, timeout, fresh_seed(), cancel);
     let (Outcome::Passed(c) | Outcome::Failed(c)) = &outcome else {
         return (outcome, Vec::new());
     };
@@ -181,12 +192,7 @@ pub fn run_student(
     timeout: Duration,
     seed: u64,
 ) -> (Outcome, Vec<PathBuf>) {
-    let request = Request::Check { id: ex.id(), seed };
-    let transcript = match in_student_process(runner, &request, timeout, None) {
-        Ok(t) => t,
-        Err(outcome) => return (*outcome, Vec::new()),
-    };
-    match replay_check(&ex.id(), transcript, seed) {
+    match graded(runner, ex, timeout, seed, None) {
         Outcome::Failed(c) => {
             let (images, note) = match write_failure_images(ex, &c, out) {
                 Ok(files) => (files, String::new()),

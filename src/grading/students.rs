@@ -244,7 +244,7 @@ fn depth_test<S: Students>(depth: &mut [f32], index: usize, z: f32) -> bool {
         (passed, changes(&before, depth))
     });
     if !apply(depth, &changed) {
-        std::panic::panic_any("the grader could not replay your code's answers".to_string());
+        bridge::mismatch("a changed entry lies outside the buffer");
     }
     passed
 }
@@ -271,7 +271,7 @@ fn rasterize<S: Students>(
         (changes(&depth_before, depth), changes(&image_before, image))
     });
     if !(apply(depth, &dz) && apply(image, &dc)) {
-        std::panic::panic_any("the grader could not replay your code's answers".to_string());
+        bridge::mismatch("a changed entry lies outside the buffer");
     }
 }
 

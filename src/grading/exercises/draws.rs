@@ -8,7 +8,7 @@
 //! Every draw is a function of (run seed, check, draw, dimension), so the
 //! student's process and the grader's replay draw the same inputs.
 
-use glam::{DVec3, Vec2, Vec3};
+use glam::{Vec2, Vec3};
 
 use crate::core::sampling::random;
 use crate::grading::run_seed;
@@ -93,18 +93,6 @@ impl Draws {
         Vec3::new(r * phi.cos(), r * phi.sin(), z)
     }
 
-    /// Where a drawn scene sits: the origin in a quarter of the cases, else
-    /// up to 10^`decades` away along a random direction.
-    pub fn place(&mut self, decades: f32) -> Vec3 {
-        if self.unit() < 0.25 {
-            return Vec3::ZERO;
-        }
-        let d = self.direction();
-        d * self.decades(0.0, decades)
-    }
-}
-
-impl Draws {
     /// Where a drawn object of size `scale` sits: the origin in a quarter
     /// of the cases, else up to `10^decades · scale` away (far enough that
     /// a solution which loses precision there fails, near enough that the
@@ -117,9 +105,7 @@ impl Draws {
         let d = self.direction();
         d * scale * self.decades(0.0, decades)
     }
-}
 
-impl Draws {
     /// A triangle's size: from 10⁻³ to 10³, and in a sixth of the cases
     /// at a millimetre and below (where an absolute ε shows).
     pub fn triangle_scale(&mut self) -> f32 {
@@ -129,17 +115,6 @@ impl Draws {
             self.decades(-3.0, 3.0)
         }
     }
-}
-
-/// The length of a vector computed in f64 (no overflow, no rounding of
-/// note).
-pub fn length64(v: Vec3) -> f64 {
-    v.as_dvec3().length()
-}
-
-/// `v` in f64.
-pub fn d(v: Vec3) -> DVec3 {
-    v.as_dvec3()
 }
 
 /// The worst of the drawn cases: `cases` gives (error, what) for each,

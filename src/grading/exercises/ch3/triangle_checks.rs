@@ -7,7 +7,7 @@ use glam::Vec3;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
 use crate::grading::exercise::{Check, Symptom};
-use crate::grading::exercises::draws::{d as d64, length64, Draws};
+use crate::grading::exercises::draws::Draws;
 use crate::grading::exercises::worst;
 
 /// Barycentric (u, v).
@@ -175,7 +175,8 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
     // is the scale T of t's rounding. Its error counts relative to
     // |t| or T/100, whichever is larger.
     let drawn = drawn.into_iter().map(|(o, d, n, c, t)| {
-        let scale = (c.abs() as f64 + length64(n) * length64(o)) / d64(n).dot(d64(d)).abs();
+        let (n64, o64) = (n.as_dvec3(), o.as_dvec3());
+        let scale = (c.abs() as f64 + n64.length() * o64.length()) / n64.dot(d.as_dvec3()).abs();
         let got = f(o, d, n, c);
         let err = match got {
             Some(g) => (g as f64 - t).abs() / t.abs().max(scale * 1e-2),

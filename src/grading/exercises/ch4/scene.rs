@@ -93,14 +93,11 @@ pub fn check_trace_scene(f: TraceRayFn) -> Check {
     };
     // The scene's distance function counts nothing: its calls need not
     // cross between the processes (see `bridge::uncounted`).
-    let ((theirs, their_t), (ours, our_t)) = crate::grading::bridge::uncounted(|| {
-        (
-            render(f),
-            crate::grading::bridge::on_grader_pool(|| render(reference_trace_ray)),
-        )
-    });
-    let check = crate::grading::bridge::uncounted(|| {
-        images::compare(theirs, ours, 0.02, 3e-3, "normal", &explain)
+    let (check, their_t, our_t) = crate::grading::bridge::uncounted(|| {
+        let (theirs, their_t) = render(f);
+        let (ours, our_t) = crate::grading::bridge::on_grader_pool(|| render(reference_trace_ray));
+        let check = images::compare(theirs, ours, 0.02, 3e-3, "normal", &explain);
+        (check, their_t, our_t)
     });
     if !check.passed() {
         // A clause below may say what went wrong.
