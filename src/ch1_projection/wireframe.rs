@@ -19,7 +19,6 @@ pub const NEAR: f32 = 1e-3;
 // ANCHOR: clip_near
 pub fn clip_to_near(a: Vec3, b: Vec3, near: f32) -> Option<(Vec3, Vec3)> {
     // Signed distances past the near plane: ≤ 0 means in front of it.
-    crate::core::guard::reference("ch1/draw_edges"); // ANCHOR: guard (off the listing)
     let (da, db) = (a.z + near, b.z + near);
     let cut = |from: Vec3, to: Vec3, d_from: f32, d_to: f32| {
         // The point where the distance is zero, placed exactly on the plane.

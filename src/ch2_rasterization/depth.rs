@@ -8,7 +8,6 @@
 /// depend on drawing order.)
 // ANCHOR: depth_test
 pub fn depth_test(depth: &mut [f32], index: usize, z: f32) -> bool {
-    crate::core::guard::reference("ch2/depth_test"); // ANCHOR: guard (off the listing)
     if z < depth[index] {
         depth[index] = z;
         true

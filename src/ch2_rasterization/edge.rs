@@ -25,7 +25,6 @@ pub const SUBPIXEL: i64 = 1 << SUBPIXEL_BITS;
 /// left of a→b in a y-up frame (to the right on a y-down raster).
 // ANCHOR: edge_function
 pub fn edge_function(a: Vec2, b: Vec2, p: Vec2) -> f32 {
-    crate::core::guard::reference("ch2/edge_function"); // ANCHOR: guard (off the listing)
     (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)
 }
 // ANCHOR_END: edge_function
@@ -35,7 +34,6 @@ pub fn edge_function(a: Vec2, b: Vec2, p: Vec2) -> f32 {
 /// has no area (then no such coordinates exist).
 // ANCHOR: barycentric
 pub fn barycentric(pi: Vec2, pj: Vec2, pk: Vec2, p: Vec2) -> Option<Vec3> {
-    crate::core::guard::reference("ch2/barycentric"); // ANCHOR: guard (off the listing)
     let area = edge_function(pi, pj, pk);
     if area == 0.0 || !area.is_finite() {
         return None;

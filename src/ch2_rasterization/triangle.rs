@@ -22,7 +22,6 @@ pub fn rasterize_triangle(
     depth: &mut [f32],
     image: &mut [Vec3],
 ) {
-    crate::core::guard::reference("ch2/rasterize_triangle"); // ANCHOR: guard (off the listing)
     let (mut v, mut colors) = (v, colors);
     let area = edge_function(v[0].truncate(), v[1].truncate(), v[2].truncate());
     // No area (or a NaN corner): nothing is inside.

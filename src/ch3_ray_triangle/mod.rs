@@ -10,7 +10,6 @@
 //! | ray-mesh intersection: the naive loop over every triangle, and the bounding volume hierarchy of the `obvhs` crate | [`obvhs_bvh`] |
 //! | the hierarchical approach, written to be read: a median-split BVH and its front-to-back traversal | [`readable_bvh`] |
 //! | building the BVH without going quadratic on coincident or tiny triangles | [`bvh_robust`] |
-//! | how much a traversal did: boxes and triangles tested, counted for the grader | [`work`] |
 //! | the BVH in the four-wide layout the shading chapters trace, and the collapse it shares with chapter 6's eight-wide one | [`wide_bvh`], [`wide_build`] |
 //! | what is traced and what a first hit shows (depth, normal, barycentrics) | [`geometry`], [`render`] |
 //! | leaving a surface without hitting it again | [`spawn`] |
@@ -21,6 +20,9 @@
 //! | error against run time: anti-aliasing, naive loop against the BVH | [`studies`] |
 //! | stiff cases: parallel rays, edges and vertices, far and tiny triangles | [`stability`] |
 //! | the speed benchmark (`ch3 --bench`) | [`bench`](mod@bench) |
+//! | tree builds on hostile geometry (`ch3 --bench hostile`) | [`hostile`] |
+
+#![forbid(unsafe_code)]
 
 pub mod agreement;
 pub mod bench;
@@ -41,4 +43,3 @@ pub mod triangle;
 pub mod watertight_fast;
 pub mod wide_build;
 pub mod wide_bvh;
-pub mod work;

@@ -117,7 +117,6 @@ impl Trace {
 // ANCHOR: sphere_trace
 pub fn sphere_trace(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March) -> Trace {
     // One evaluation at the origin tells inside from outside.
-    crate::core::guard::reference("ch4/sphere_trace"); // ANCHOR: guard (off the listing)
     let (mut trace, s, f0) = Trace::start(f, ray);
     let mut d = s * f0; // distance bound, positive on the ray's side
     loop {

@@ -6,7 +6,6 @@ use glam::Vec3;
 /// ∇f by central differences: six evaluations, error O(h²).
 // ANCHOR: gradient_central
 pub fn gradient_central(f: &dyn Fn(Vec3) -> f32, p: Vec3, h: f32) -> Vec3 {
-    crate::core::guard::reference("ch4/gradient_normal"); // ANCHOR: guard (off the listing)
     let dx = Vec3::new(h, 0.0, 0.0);
     let dy = Vec3::new(0.0, h, 0.0);
     let dz = Vec3::new(0.0, 0.0, h);

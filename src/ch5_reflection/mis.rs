@@ -21,7 +21,6 @@ pub fn balance_heuristic(f: f32, g: f32) -> f32 {
 /// usually lowers variance further. Safe for huge pdfs (no f² overflow).
 // ANCHOR: power_heuristic
 pub fn power_heuristic(f: f32, g: f32) -> f32 {
-    crate::core::guard::reference("ch6/mis_weight"); // ANCHOR: guard (off the listing)
     if f.is_infinite() {
         return 1.0;
     }

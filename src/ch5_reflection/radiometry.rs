@@ -79,7 +79,6 @@ pub fn polygon_irradiance(p: DVec3, n: DVec3, vertices: &[DVec3], le: f64) -> f6
 /// inverse-square law times Lambert's cosine).
 // ANCHOR: point_irradiance
 pub fn point_irradiance(i: f64, r: f64, cos_theta: f64) -> f64 {
-    crate::core::guard::reference("ch5/point_light"); // ANCHOR: guard (off the listing)
     i * cos_theta.max(0.0) / (r * r)
 }
 // ANCHOR_END: point_irradiance

@@ -55,7 +55,6 @@ pub fn concentric_disk(u: Vec2) -> Vec2 {
 /// a uniform point on the disk, lifted to the hemisphere).
 // ANCHOR: cosine_hemisphere
 pub fn cosine_hemisphere(u: Vec2) -> Vec3 {
-    crate::core::guard::reference("ch5/cosine_hemisphere"); // ANCHOR: guard (off the listing)
     let d = concentric_disk(u);
     let z = (1.0 - d.length_squared()).max(0.0).sqrt();
     Vec3::new(d.x, d.y, z)

@@ -9,7 +9,6 @@ pub mod error;
 pub mod figure;
 pub mod film;
 pub mod format;
-pub mod guard;
 pub mod plot;
 pub mod preview;
 pub mod report;

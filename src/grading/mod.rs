@@ -1,24 +1,29 @@
 //! Grading students' solutions.
 //!
 //! Each chapter ships exercise files (`chapters/chN-…/exercises/*.rs`) whose
-//! bodies are `todo!()` with `// TODO` notes. They are a crate of their own,
-//! `raystep-exercises` (`chapters/Cargo.toml`), which the grader builds:
-//! an edit rebuilds only that crate, and a file that does not compile is
-//! left out of the build and reported, while the others are graded. A
-//! chapter's manifest ([`exercises`]) lists, for each file, hints in three
-//! tiers and a check that measures a candidate against raystep's own
-//! reference with a tolerance.
+//! bodies are `todo!()` with `// TODO` notes. The grader copies them into
+//! `target/raystep-grade/<hash>/` and builds them into crates of its own
+//! (`src/grading/crates/`: `student` holds the files and sees raystep only
+//! through `blocks`, the building blocks the stubs name; `child` is the
+//! process that runs them). A file that breaks the rules
+//! ([`source_rules`]) or does not compile is replaced by its stub and
+//! reported, while the others are graded. A chapter's manifest
+//! ([`exercises`]) lists, for each file, hints in three tiers and a check
+//! that measures a candidate against raystep's own reference with a
+//! tolerance.
 //!
-//! `cargo run --release --bin grade` ([`driver`]) builds the exercises,
-//! then runs every check in a process of its own ([`runner`]) under a time
-//! limit, and prints each result as it finishes. A `todo!()`, a panic, a
-//! crash or a loop that never ends are reported: the grader never crashes
-//! and never hangs. When a check compares images and fails, the student's
-//! image, the reference and their difference are written to `out/grade/`.
+//! `cargo grade` ([`driver`]) runs each check in the student's process,
+//! which records every call of the student's code ([`bridge`]); the verdict
+//! is made in the grader's own process, which replays that record
+//! ([`process`], [`runner`]). A `todo!()`, a panic, a crash or a loop that
+//! never ends are reported: the grader never crashes and never hangs. When
+//! a check compares images and fails, the student's image, the reference
+//! and their difference are written to `out/grade/`.
 
 pub mod bridge;
 pub mod build;
 pub mod child;
+pub mod counted;
 pub mod driver;
 pub mod exercise;
 pub mod exercises;
@@ -34,6 +39,7 @@ pub mod source_rules;
 pub mod stream;
 pub mod students;
 pub mod wire;
+pub mod work;
 
 pub use driver::grade_main;
 pub use exercise::{Check, Exercise, Outcome, Symptom};
@@ -180,11 +186,6 @@ pub fn run_check(check: fn() -> Check) -> Outcome {
 
 /// The outcome of a check that returned or panicked (`at`: where).
 fn outcome_of(result: std::thread::Result<Check>, at: Option<String>) -> Outcome {
-    // Calling raystep's own solution fails, even when the panic that
-    // refused it was caught.
-    if let Some(id) = crate::core::guard::reference_called() {
-        return Outcome::Panicked(crate::core::guard::message(id));
-    }
     match result {
         Ok(check) if check.passed() => Outcome::Passed(check),
         Ok(check) => Outcome::Failed(check),

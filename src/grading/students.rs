@@ -13,14 +13,14 @@ use glam::{Mat4, Vec2, Vec3};
 
 use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::readable_bvh::ReadableBvh;
 use crate::ch3_ray_triangle::triangle::Hit;
-use crate::ch3_ray_triangle::work::{self, Work};
 use crate::ch4_implicit_surfaces::march::March;
 use crate::grading::bridge::{self, no_callbacks, Side};
+use crate::grading::counted::ReadableBvh;
 use crate::grading::exercise::Check;
 use crate::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6, paths};
 use crate::grading::wire::{from_bytes, to_bytes, Wire};
+use crate::grading::work::{self, Work};
 
 /// The exercise functions, with the grader's types.
 #[allow(missing_docs, clippy::too_many_arguments)]

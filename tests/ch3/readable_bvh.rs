@@ -190,7 +190,8 @@ fn a_quarter_million_coincident_centroids_build_in_n_log_n() {
 
 #[test]
 fn the_traversal_exercise_passes_the_reference_and_fails_wrong_traversals() {
-    let check = check_bvh_traversal(closest_hit);
+    use raystep::grading::counted::{self, ReadableBvh};
+    let check = check_bvh_traversal(counted::closest_hit);
     assert!(check.passed(), "{check:?}");
     // Both depth views come with every verdict (`ch3 --student` shows them).
     assert!(check.images.is_some());
@@ -236,9 +237,55 @@ fn the_traversal_exercise_passes_the_reference_and_fails_wrong_traversals() {
     );
     assert!(check.images.is_some());
     // Ignoring t_max.
-    let check = check_bvh_traversal(|b, r, _| closest_hit(b, r, f32::INFINITY));
+    let check = check_bvh_traversal(|b, r, _| counted::closest_hit(b, r, f32::INFINITY));
     assert!(
         !check.passed() && check.detail.contains("t_max"),
         "{check:?}"
     );
+}
+
+/// The grader measures the work a traversal may do against the book's
+/// traversal run over the counted blocks (`grading::counted`): that copy
+/// is the lesson's function line for line, and finds the same hits.
+#[test]
+fn the_counted_traversal_is_the_books_line_for_line() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let read = |f: &str| std::fs::read_to_string(root.join(f)).unwrap();
+    let body = |text: &str, from: &str| -> Vec<String> {
+        let start = text.find(from).unwrap_or_else(|| panic!("no `{from}`"));
+        let rest = &text[start..];
+        let end = rest.find("\n}\n").expect("the function's end");
+        rest[..end].lines().map(|l| l.trim().to_string()).collect()
+    };
+    let signature = "pub fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {";
+    let lesson = body(&read("src/ch3_ray_triangle/readable_bvh.rs"), signature);
+    let counted = body(&read("src/grading/counted.rs"), signature);
+    assert!(lesson.len() > 30, "{lesson:?}");
+    assert_eq!(lesson, counted);
+    // And the same hits, with work counted only for the counted blocks.
+    use raystep::grading::counted;
+    use raystep::grading::work::Work;
+    let tris = soup(300);
+    let lesson_tree = ReadableBvh::build(&tris);
+    let tree = counted::ReadableBvh::of(&lesson_tree);
+    for i in 0..500 {
+        let r = |d| random(77, i, 0, d) * 2.0 - 1.0;
+        let Ok(ray) = Ray::new(
+            Vec3::new(r(0), r(1), r(2)) * 2.0,
+            Vec3::new(r(3), r(4), r(5)),
+        ) else {
+            continue;
+        };
+        let before = Work::now();
+        let want = closest_hit(&lesson_tree, &ray, f32::INFINITY);
+        assert_eq!(
+            Work::now().since(before).box_tests,
+            0,
+            "the lesson counts nothing"
+        );
+        let got = counted::closest_hit(&tree, &ray, f32::INFINITY);
+        let work = Work::now().since(before);
+        assert_eq!(format!("{got:?}"), format!("{want:?}"));
+        assert!(work.box_tests > 0);
+    }
 }

@@ -90,13 +90,15 @@ fn hostile_files() -> Vec<(&'static str, &'static str, String)> {
              pub fn rasterize_triangle(v: [Vec3; 3], colors: [Vec3; 3], width: u32, height: u32, depth: &mut [f32], image: &mut [Vec3]) {}\n"
                 .into(),
         ),
-        // 2. raystep's own solution inside the guard's escape hatch.
+        // 2. raystep's own solution, named by its path in raystep: the
+        // student's crate sees only the building blocks, so it does not
+        // compile.
         (
             "ch3-ray-triangle",
             "ray_plane",
             "use glam::Vec3;\n\
              pub fn ray_plane(o: Vec3, d: Vec3, n: Vec3, c: f32) -> Option<f32> {\n\
-             raystep::core::guard::grader(|| raystep::ch3_ray_triangle::triangle::ray_plane(o, d, n, c))\n}\n"
+             raystep::ch3_ray_triangle::triangle::ray_plane(o, d, n, c)\n}\n"
                 .into(),
         ),
         // A panic message that would clear the grader's terminal and set
@@ -257,7 +259,7 @@ fn hostile_exercises_fail_and_leave_nothing_behind() {
     refused("ch1/project_point", "may not use `extern`");
     refused("ch1/draw_edges", "may not use `std` other than as a path");
     refused("ch2/depth_test", "may not use `std::process`");
-    refused("ch3/ray_plane", "`core` in `raystep`");
+    refused("ch3/ray_plane", "`ray_plane`");
     refused("ch3/moller_trumbore", "may not use `std::thread`");
     refused("ch3/bvh_traversal", "may not use `std::thread`");
     refused("ch4/sphere_sdf", "no_mangle");

@@ -39,7 +39,6 @@ pub struct AreaLight {
 /// the light shows no area at all.
 // ANCHOR: solid_angle_pdf
 pub fn solid_angle_pdf(pdf_area: f32, dist: f32, cos_light: f32) -> f32 {
-    crate::core::guard::reference("ch5/area_pdf"); // ANCHOR: guard (off the listing)
     let c = cos_light.abs();
     if c <= 0.0 {
         return 0.0;

@@ -19,7 +19,6 @@ impl Lambertian {
     /// f = ρ/π when ωi and ωo are on the same side, else 0.
     // ANCHOR: lambert_f
     pub fn f(&self, wo: Vec3, wi: Vec3) -> Vec3 {
-        crate::core::guard::reference("ch5/lambert_brdf"); // ANCHOR: guard (off the listing)
         if same_hemisphere(wo, wi) {
             self.rho * FRAC_1_PI
         } else {

@@ -2,8 +2,7 @@
 //! and name its mistake) and correct alternatives (each must pass).
 
 use glam::{Mat4, Vec2, Vec3};
-use raystep::ch1_projection::camera::{camera_from_world_look_at, project_pinhole, Camera};
-use raystep::ch1_projection::wireframe::clip_to_near;
+use raystep::ch1_projection::camera::{camera_from_world_look_at, Camera};
 use raystep::grading::exercise::{Check, Symptom};
 use raystep::grading::exercises::ch1;
 
@@ -259,22 +258,4 @@ fn projection_and_look_at_mutants_name_their_mistake() {
     });
     expect(check, ch1::NOT_UNIT, "not unit");
     assert!(ch1::check_look_at(look).passed());
-}
-
-#[test]
-fn calling_the_references_is_refused() {
-    super::refused_in_a_child(
-        concat!(module_path!(), "::calling_the_references_is_refused"),
-        &[
-            ("ch1/project_point", &|| {
-                let _ = project_pinhole(Vec3::NEG_Z);
-            }),
-            ("ch1/look_at", &|| {
-                let _ = camera_from_world_look_at(Vec3::Z, Vec3::ZERO, Vec3::Y);
-            }),
-            ("ch1/draw_edges", &|| {
-                let _ = clip_to_near(Vec3::NEG_Z, -Vec3::Z * 2.0, 0.1);
-            }),
-        ],
-    );
 }

@@ -454,36 +454,6 @@ fn the_model_without_mistakes_is_the_reference() {
 }
 
 #[test]
-fn calling_the_references_is_refused() {
-    use raystep::ch2_rasterization::{depth, edge};
-    let draw = || {
-        let mut d = vec![f32::INFINITY; 4];
-        let mut i = vec![Vec3::ZERO; 4];
-        let v = [
-            Vec3::new(0.0, 0.0, 1.0),
-            Vec3::new(2.0, 0.0, 1.0),
-            Vec3::new(0.0, 2.0, 1.0),
-        ];
-        rasterize_triangle(v, [Vec3::ONE; 3], 2, 2, &mut d, &mut i)
-    };
-    super::refused_in_a_child(
-        concat!(module_path!(), "::calling_the_references_is_refused"),
-        &[
-            ("ch2/rasterize_triangle", &draw),
-            ("ch2/edge_function", &|| {
-                let _ = edge::edge_function(Vec2::ZERO, Vec2::X, Vec2::Y);
-            }),
-            ("ch2/barycentric", &|| {
-                let _ = edge::barycentric(Vec2::ZERO, Vec2::X, Vec2::Y, Vec2::ONE);
-            }),
-            ("ch2/depth_test", &|| {
-                let _ = depth::depth_test(&mut [1.0], 0, 0.5);
-            }),
-        ],
-    );
-}
-
-#[test]
 fn small_exercise_mutants_name_their_mistake() {
     use raystep::ch2_rasterization::edge;
     // The cross product the other way round.

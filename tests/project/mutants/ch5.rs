@@ -177,32 +177,6 @@ fn correct_alternatives_pass() {
     assert!(check.images.is_some());
 }
 
-#[test]
-fn calling_the_reference_is_refused() {
-    super::in_child(
-        "project::mutants::ch5::calling_the_reference_is_refused",
-        || {
-            let got = std::panic::catch_unwind(|| {
-                raystep::core::guard::student(|| {
-                    ch5::reference_direct(
-                        Vec3::ZERO,
-                        Vec3::Z,
-                        Vec3::ONE,
-                        Vec3::Z,
-                        -Vec3::Z,
-                        1.0,
-                        Vec3::ONE,
-                        &|_, _| true,
-                    )
-                })
-            });
-            let err = got.expect_err("the guard lets it through");
-            let msg = err.downcast_ref::<String>().cloned().unwrap_or_default();
-            assert!(msg.contains("ch5/direct_light"), "{msg}");
-        },
-    );
-}
-
 // The smaller exercises' common mistakes.
 
 #[test]

@@ -303,40 +303,6 @@ fn the_check_names_every_symptom_it_can_return() {
     }
 }
 
-#[test]
-fn calling_the_reference_is_refused() {
-    super::in_child(
-        "project::mutants::ch6::calling_the_reference_is_refused",
-        || {
-            let scene = PathScene::furnace(0.5, Vec3::ONE);
-            let got = std::panic::catch_unwind(|| {
-                raystep::core::guard::student(|| {
-                    paths::reference_path(&scene, Vec3::ZERO, Vec3::Z, &mut || 0.5)
-                })
-            });
-            let err = got.expect_err("the guard lets it through");
-            let msg = err.downcast_ref::<String>().cloned().unwrap_or_default();
-            assert!(msg.contains("ch6/path_radiance"), "{msg}");
-        },
-    );
-}
-
-#[test]
-fn the_scene_building_blocks_run_inside_a_students_call() {
-    // sample_light and sample_cosine use chapter 5's lights and warps,
-    // whose references are guarded: a student's loop must not trip them.
-    super::in_child(
-        "project::mutants::ch6::the_scene_building_blocks_run_inside_a_students_call",
-        || {
-            let check = check_path_radiance(|s, o, d, r| {
-                raystep::core::guard::student(|| roulette_first(s, o, d, r))
-            });
-            assert!(check.passed(), "{}", check.detail);
-            assert_eq!(raystep::core::guard::reference_called(), None);
-        },
-    );
-}
-
 // The smaller exercises' common mistakes.
 
 #[test]

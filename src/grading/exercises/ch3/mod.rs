@@ -1,6 +1,5 @@
 //! Chapter 3's exercises and how each is graded.
 
-use crate::ch3_ray_triangle::readable_bvh;
 use crate::ch3_ray_triangle::triangle;
 use crate::grading::exercise::Exercise;
 
@@ -88,7 +87,7 @@ pub fn exercises() -> Vec<Exercise> {
                  then near",
             ],
             symptoms: SYMPTOMS,
-            reference: || check_bvh_traversal(readable_bvh::closest_hit),
+            reference: || check_bvh_traversal(crate::grading::counted::closest_hit),
         },
     ]
 }

@@ -25,7 +25,6 @@ pub fn reference_trace_ray(
     d: Vec3,
     m: &March,
 ) -> Option<(f32, Vec3)> {
-    crate::core::guard::reference("ch4/trace_scene"); // ANCHOR: guard (off the listing)
     let ray = Ray::new(o, d).ok()?;
     let t = march::sphere_trace(f, &ray, m).hit()?;
     let p = ray.at(t);

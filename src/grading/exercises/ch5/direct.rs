@@ -49,7 +49,6 @@ pub fn reference_direct(
     le: Vec3,
     visible: &dyn Fn(Vec3, Vec3) -> bool,
 ) -> Vec3 {
-    crate::core::guard::reference("ch5/direct_light"); // ANCHOR: guard (off the listing)
     let to = y - p;
     let d2 = to.length_squared();
     let wi = to / d2.sqrt();

@@ -20,7 +20,6 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch5_reflection::material::Frame;
 use crate::ch5_reflection::warp::cosine_hemisphere;
 use crate::ch5_reflection::world::World;
-use crate::core::guard;
 
 mod check;
 mod furnace;
@@ -117,9 +116,8 @@ pub struct PathScene {
 }
 
 /// The scene's building blocks run raystep's own code (lights, sampling,
-/// tracing) inside the student's `path_radiance`: each runs as the
-/// grader's ([`guard::grader`]), so only the student's own calls of a
-/// reference trip the guard.
+/// tracing) for the student's `path_radiance`; the student's crate sees
+/// only these methods, not the code behind them.
 impl PathScene {
     /// The scene of `scene` (its first light is the one sampled).
     pub fn new(scene: &crate::scene::Scene) -> PathScene {
@@ -190,10 +188,13 @@ impl PathScene {
         if self.ran_away() {
             return None;
         }
-        Self::found(guard::grader(|| match &self.inner {
-            Inner::World(w) => Self::world_hit(w, &Ray::new(origin, dir).ok()?),
-            Inner::Furnace(f) => f.hit(origin, dir.try_normalize()?),
-        }))
+        let hit = match &self.inner {
+            Inner::World(w) => Ray::new(origin, dir)
+                .ok()
+                .and_then(|r| Self::world_hit(w, &r)),
+            Inner::Furnace(f) => dir.try_normalize().and_then(|d| f.hit(origin, d)),
+        };
+        Self::found(hit)
     }
 
     /// The next surface when the path leaves `at` along the unit `wi`.
@@ -210,10 +211,11 @@ impl PathScene {
             self.ran_away.fetch_or(over, Ordering::Relaxed);
             return None;
         }
-        Self::found(guard::grader(|| match &self.inner {
-            Inner::World(w) => Self::world_hit(w, &w.spawn(at.p, at.n, wi)?),
+        let hit = match &self.inner {
+            Inner::World(w) => w.spawn(at.p, at.n, wi).and_then(|r| Self::world_hit(w, &r)),
             Inner::Furnace(f) => f.next(at, wi),
-        }))
+        };
+        Self::found(hit)
     }
 
     /// A point on the light drawn from the two numbers `u` (in [0, 1)),
@@ -221,10 +223,14 @@ impl PathScene {
     /// the light cannot be seen from that side.
     pub fn sample_light(&self, at: &Hit, u: Vec2) -> Option<LightSample> {
         count(|t| t.light_samples += 1);
-        let s = guard::grader(|| match &self.inner {
-            Inner::World(w) => w.lights.lights.first()?.sample_li(at.p, at.n, u),
+        let s = match &self.inner {
+            Inner::World(w) => w
+                .lights
+                .lights
+                .first()
+                .and_then(|l| l.sample_li(at.p, at.n, u)),
             Inner::Furnace(f) => f.sample_light(at, u),
-        });
+        };
         if s.is_some() {
             count(|t| t.lights_found += 1);
         }
@@ -234,17 +240,17 @@ impl PathScene {
     /// Whether a shadow ray from `at` along `wi` reaches `dist` unblocked.
     pub fn unoccluded(&self, at: &Hit, wi: Vec3, dist: f32) -> bool {
         count(|t| t.shadow_rays += 1);
-        guard::grader(|| match &self.inner {
+        match &self.inner {
             Inner::World(w) => w.unoccluded(at.p, at.n, wi, dist),
             // Nothing inside the sphere: every point of it sees every other.
             Inner::Furnace(_) => true,
-        })
+        }
     }
 
     /// A direction about `at.n` with density cos θ / π, from `u`: the
     /// direction and its density.
     pub fn sample_cosine(&self, at: &Hit, u: Vec2) -> (Vec3, f32) {
-        let local = guard::grader(|| cosine_hemisphere(u));
+        let local = cosine_hemisphere(u);
         (
             Frame::from_normal(at.n).to_world(local),
             local.z * FRAC_1_PI,
@@ -264,7 +270,6 @@ pub fn reference_path(
     dir: Vec3,
     rng: &mut dyn FnMut() -> f32,
 ) -> Vec3 {
-    crate::core::guard::reference("ch6/path_radiance"); // ANCHOR: guard (off the listing)
     let Some(mut hit) = scene.first_hit(origin, dir) else {
         return Vec3::ZERO;
     };

@@ -10,9 +10,9 @@
 use glam::{Mat4, Vec2, Vec3};
 use raystep::ch1_projection::camera::Camera;
 use raystep::ch3_ray_triangle::ray::Ray;
-use raystep::ch3_ray_triangle::readable_bvh::ReadableBvh;
 use raystep::ch3_ray_triangle::triangle::Hit;
 use raystep::ch4_implicit_surfaces::march::March;
+use raystep::grading::counted::ReadableBvh;
 use raystep::grading::exercises::paths::PathScene;
 use raystep::grading::students::Students;
 use raystep_grade_blocks as blocks;
@@ -60,8 +60,7 @@ impl Students for Student {
         student::ch3::moller_trumbore::moller_trumbore(o, d, tri)
     }
     fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
-        let bvh = blocks::ch3_ray_triangle::readable_bvh::ReadableBvh::of(bvh);
-        student::ch3::bvh_traversal::closest_hit(&bvh, ray, t_max)
+        student::ch3::bvh_traversal::closest_hit(bvh, ray, t_max)
     }
     fn sphere_sdf(p: Vec3, center: Vec3, radius: f32) -> f32 {
         student::ch4::sphere_sdf::sphere_sdf(p, center, radius)
