@@ -11,25 +11,26 @@ pub fn all() -> Vec<&'static dyn Chapter> {
         &crate::ch3_ray_triangle::stage::DEFAULT,
         &crate::ch4_implicit_surfaces::stage::DEFAULT,
         &crate::ch5_reflection::stage::DEFAULT,
-        &crate::ch6_global_illumination::stage::DEFAULT,
+        &FAST_CH6,
     ]
 }
 
 /// [`all`], with chapter 6 traced by the lesson's readable engine when
 /// `readable` (`--engine readable`; the images agree to the last bits of
-/// a sine, see [`crate::ch6_global_illumination::fast`]).
+/// a sine, see [`crate::fast`]).
 pub fn with_engine(readable: bool) -> Vec<&'static dyn Chapter> {
     let mut chapters = all();
     if readable {
-        chapters[5] = &READABLE_CH6;
+        chapters[5] = &crate::ch6_global_illumination::stage::DEFAULT;
     }
     chapters
 }
 
-/// Chapter 6's defaults traced by the lesson's readable engine.
-const READABLE_CH6: crate::ch6_global_illumination::stage::GlobalIllumination =
+/// Chapter 6's defaults traced by the fast engine: the one place the front
+/// ends' engine is chosen (the chapter's own default is the lesson's).
+const FAST_CH6: crate::ch6_global_illumination::stage::GlobalIllumination =
     crate::ch6_global_illumination::stage::GlobalIllumination {
-        engine: crate::ch6_global_illumination::fast::Engine::Readable,
+        engine: crate::fast::FAST,
         ..crate::ch6_global_illumination::stage::DEFAULT
     };
 

@@ -53,7 +53,7 @@
 
 // No unsafe code, except in the one module that calls the fast engine's
 // vector code compiled for the CPU's instructions
-// (`ch6_global_illumination::fast::simd`, which gives its safety argument).
+// (`fast::simd`, which gives its safety argument).
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -65,6 +65,7 @@ pub mod ch5_reflection;
 pub mod ch6_global_illumination;
 pub mod chapters;
 pub mod core;
+pub mod fast;
 pub mod fuzz;
 pub mod grading;
 pub mod scene;

@@ -11,13 +11,13 @@ use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
 use raystep::ch6_global_illumination::annotate::annotate_references;
-use raystep::ch6_global_illumination::bench;
-use raystep::ch6_global_illumination::fast::Engine;
+use raystep::ch6_global_illumination::engine::EngineChoice;
 use raystep::ch6_global_illumination::integrator::{roulette_cannot_end, Strategy, SAFETY_BOUNCES};
 use raystep::ch6_global_illumination::reference::{make_reference, reference_dir};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::stage::{GlobalIllumination, DEFAULT};
 use raystep::core::run::{exit_code, init_threads, run_on, CommonArgs};
+use raystep::fast::bench;
 use raystep::{Error, Result};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -127,8 +127,8 @@ fn main() -> ExitCode {
     stage.path.rr_min_bounce = cli.rr_after;
     stage.spp_per_pass = cli.spp_per_pass;
     stage.engine = match cli.engine {
-        EngineArg::Fast => Engine::Fast,
-        EngineArg::Readable => Engine::Readable,
+        EngineArg::Fast => raystep::fast::FAST,
+        EngineArg::Readable => EngineChoice::READABLE,
     };
     stage.layers = !cli.final_only;
     stage.spp_figure = cli.spp_figure;
@@ -165,8 +165,14 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
     if cli.make_reference {
         init_threads(common.threads)?;
         let scene = common.load_sized_scene()?;
-        let (meta, files) =
-            make_reference(&stage.path, stage.sampler, &scene, common.spp, common.seed)?;
+        let (meta, files) = make_reference(
+            stage.engine,
+            &stage.path,
+            stage.sampler,
+            &scene,
+            common.spp,
+            common.seed,
+        )?;
         let list: String = files
             .iter()
             .map(|f| format!("    {}\n", f.display()))

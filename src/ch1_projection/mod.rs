@@ -13,6 +13,8 @@
 //! | error against run time: f32 projection vs exact pixels | [`studies`] |
 //! | stiff cases: behind the camera, fov near 0° and 180°, far coordinates | [`stability`] |
 
+#![forbid(unsafe_code)]
+
 pub mod camera;
 pub mod perspective;
 pub mod report;

@@ -15,9 +15,15 @@
 //! | the views | [`views`] |
 //! | exact coverage, the anti-aliasing reference | [`exact`] |
 //! | one triangle start to finish, readable (exercise 2.4) | [`triangle`] |
-//! | the chapter boundary and report | [`stage`] |
+//! | the whole pipeline for one frame: setup, coverage, depth, resolve | [`frame`] |
+//! | the manifold and boundary checks of a mesh | [`mesh_check`] |
+//! | the chapter boundary | [`stage`] |
+//! | what the chapter prints | [`report`] |
 //! | the report's studies | [`studies`] |
+//! | stiff cases: slivers, shared edges, the near plane, z-fighting, huge coordinates | [`stability`] |
 //! | the speed benchmark (`ch2 --bench`) | [`bench`](mod@bench) |
+
+#![forbid(unsafe_code)]
 
 pub mod bench;
 pub mod checker;

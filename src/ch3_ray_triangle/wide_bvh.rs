@@ -52,7 +52,7 @@ pub struct WideBvh {
     root: u32,
     /// Inner-node levels on the longest root-to-leaf path; a query's stack
     /// never holds more than 3 per level, plus one.
-    levels: usize,
+    depth: usize,
     /// Leaves: four triangles each, in SIMD lanes. Unused lanes and
     /// zero-area triangles hold NaN vertices, which the test rejects.
     leaves: Vec<Tri4>,
@@ -138,7 +138,7 @@ impl WideBvh {
             leaves: Vec::new(),
             tris: Vec::new(),
             original: Vec::new(),
-            levels: 0,
+            depth: 0,
         };
         wide.root = wide.collapse(&bvh2, &counts, 0, tris, 1);
         Some(wide)
@@ -155,8 +155,8 @@ impl WideBvh {
     }
 
     /// How many levels of inner nodes the deepest leaf sits below.
-    pub fn levels(&self) -> usize {
-        self.levels
+    pub fn depth(&self) -> usize {
+        self.depth
     }
 
     /// Makes binary node `n` into a child reference: a leaf if its
@@ -175,7 +175,7 @@ impl WideBvh {
         if counts[n] as usize <= LANES {
             return self.leaf(bvh2, n, tris);
         }
-        self.levels = self.levels.max(level);
+        self.depth = self.depth.max(level);
         let children = open_children(bvh2, counts, n, 4, LANES);
         let index = self.nodes.len();
         self.nodes.push(Node4 {
@@ -338,7 +338,7 @@ impl WideBvh {
     /// anew for every query would have to be zeroed every time.)
     #[inline(always)]
     fn with_stack<R>(&self, query: impl FnOnce(&mut [(u32, f32)]) -> R) -> R {
-        let needed = 3 * self.levels + 1;
+        let needed = 3 * self.depth + 1;
         if needed <= ON_STACK {
             STACK.with_borrow_mut(|stack| query(stack))
         } else {

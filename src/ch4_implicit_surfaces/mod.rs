@@ -17,6 +17,8 @@
 //! | error against run time: sphere tracing, over-relaxed, fixed step | [`studies`] |
 //! | stiff cases: grazing rays, thin shells, far objects, bounds that are not distances | [`stability`] |
 
+#![forbid(unsafe_code)]
+
 pub mod bounds;
 pub mod distance;
 pub mod eikonal;

@@ -7,7 +7,7 @@
 //! | radiometry: flux, irradiance, Lambert's law, solid angle, radiance | [`radiometry`] |
 //! | types of light: directional, point, spot, area | [`light`] |
 //! | the BRDF: ideal diffuse, glossy, perfect mirror | [`material`] |
-//! | turning uniform numbers into directions, with their densities | [`warp`] |
+//! | turning uniform numbers into directions, with their densities | [`warp`], checked by [`warp_test`] |
 //! | the reflection equation, estimated at one point (uniform, BSDF and light sampling, MIS) | [`direct`] |
 //! | what the estimator tells a listener: its counts and each term it adds | [`shading_events`] |
 //! | several strategies at once: multiple importance sampling | [`mis`] |
@@ -16,9 +16,12 @@
 //! | what the scene decides first: can anything cast a shadow? | [`shadowing`] |
 //! | one pixel's sample, light by light, heard through the estimator's notes (the inspect mode's story) | [`light_terms`] |
 //! | the chapter as a stage | [`stage`] |
+//! | names of surfaces and lights for tables and panels | [`names`] |
 //! | what the chapter prints | [`report`] |
 //! | error against run time for the four strategies | [`studies`], drawn by [`crate::core::plot`] |
 //! | stiff cases: grazing light, tiny bright lights, mirror-like lobes | [`stability`], [`stiff_scenes`] |
+
+#![forbid(unsafe_code)]
 
 pub mod direct;
 pub mod light;

@@ -39,8 +39,7 @@ pub struct Interaction {
 }
 
 /// The two ray queries over the scene's triangles, for a BVH other than
-/// chapter 3's four-wide one to answer them: chapter 6's fast engine
-/// plugs its eight-wide tree in here ([`World::queries`]).
+/// chapter 3's four-wide one to answer them ([`World::queries`]).
 pub trait RayQueries: Send + Sync {
     /// The closest hit in (0, t_max); `Hit::triangle` indexes
     /// [`World::triangles`].
@@ -49,12 +48,6 @@ pub trait RayQueries: Send + Sync {
     fn occluded(&self, ray: &Ray, t_max: f32) -> bool;
     /// What it is, for reports ("8 wide, 12 nodes, ...").
     fn describe(&self) -> String;
-    /// The queries' own type, for a caller that knows it and can do more
-    /// with it (chapter 6's fast engine finds its tree here and then traces
-    /// paths in waves); `None` by default.
-    fn as_any(&self) -> Option<&dyn std::any::Any> {
-        None
-    }
 }
 
 /// A [`RayQueries`] as [`World`] holds it (a world stays safe to use
@@ -85,7 +78,7 @@ pub struct World {
     /// `unoccluded` trace through; `None` for a scene without meshes.
     pub wide: Option<WideBvh>,
     /// Another BVH over the same triangles that answers the ray queries
-    /// instead of `wide` (chapter 6's fast engine); `None`: `wide` does.
+    /// instead of `wide` (a faster engine's tree); `None`: `wide` does.
     pub queries: Option<Box<Queries>>,
     /// The unit outward (winding) normal of each triangle.
     pub normals: Vec<Vec3>,

@@ -7,31 +7,12 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use crate::ch1_projection::camera::Camera;
-use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::render;
-use crate::ch5_reflection::world::World;
 use crate::core::film::Film;
 
-use super::integrator::{trace_path, PathSettings, PathStats};
+use super::engine::{PassSpec, PathEngine, RowSums};
+use super::integrator::{PathSettings, PathStats};
 use super::layers::LAYER_SLOTS;
-use super::sampler::{PathSampler, SamplerKind};
-
-/// The random numbers and the camera ray of sample `sample` of pixel
-/// (`x`, `y`): the first two numbers place the ray in the pixel, the path
-/// goes on with the rest. Anything that wants to trace the very sample a
-/// render traced starts here.
-pub fn camera_sample(
-    camera: &Camera,
-    kind: SamplerKind,
-    seed: u64,
-    x: usize,
-    y: usize,
-    sample: u32,
-) -> (PathSampler, Ray) {
-    render::camera_sample(camera, (x as u32, y as u32), |pixel| {
-        PathSampler::new(kind, seed, pixel, sample as u64)
-    })
-}
+use super::sampler::SamplerKind;
 
 /// Sums over the samples taken so far.
 #[derive(Clone, Debug)]
@@ -68,13 +49,14 @@ impl Accumulator {
         }
     }
 
-    /// Traces samples `first .. first + count` of every pixel, rows in
-    /// parallel. The result does not depend on the number of threads: each
-    /// pixel's samples are added in order by one thread.
+    /// Traces samples `first .. first + count` of every pixel with
+    /// `engine`, rows in parallel. The result does not depend on the
+    /// number of threads: each pixel's samples are added in order by one
+    /// thread.
     // ANCHOR: render_pass
     pub fn add_samples(
         &mut self,
-        world: &World,
+        engine: &dyn PathEngine,
         camera: &Camera,
         settings: &PathSettings,
         sampler: SamplerKind,
@@ -82,60 +64,36 @@ impl Accumulator {
         count: u32,
     ) {
         let w = self.width as usize;
-        let first = self.samples;
+        let pass = PassSpec {
+            camera,
+            settings,
+            sampler: (sampler, seed),
+            first: self.samples,
+            count,
+        };
         let mut layer_rows: Vec<Option<&mut [[Vec3; LAYER_SLOTS]]>> = match &mut self.layers {
             Some(l) => l.chunks_mut(w).map(Some).collect(),
             None => (0..self.height).map(|_| None).collect(),
         };
-        let wave = super::fast::wave::engine_tree(world)
-            .filter(|_| super::fast::wave::supports(world, settings));
-
         let stats = self
             .sum
             .par_chunks_mut(w)
             .zip(self.sum_sq.par_chunks_mut(w))
             .zip(layer_rows.par_iter_mut())
             .enumerate()
-            .map(|(y, ((sum, sum_sq), layer_row))| {
+            .map(|(y, ((sum, sum_sq), layers))| {
                 let mut stats = PathStats::default();
-                if let Some(tree) = wave {
-                    let frame = (world, tree, camera, settings, (sampler, seed));
-                    let samples = (y, first, count);
-                    match layer_row.as_deref_mut() {
-                        Some(row) => wave_row(frame, samples, (sum, sum_sq, row), &mut stats),
-                        None => wave_row(frame, samples, (sum, sum_sq, &mut []), &mut stats),
-                    }
-                    return stats;
-                }
-                for x in 0..w {
-                    for s in first..first + count {
-                        let (mut sampler, ray) = camera_sample(camera, sampler, seed, x, y, s);
-                        let l = match layer_row.as_deref_mut() {
-                            Some(row) => {
-                                let mut layers = [Vec3::ZERO; LAYER_SLOTS];
-                                trace_path(
-                                    world,
-                                    ray,
-                                    &mut sampler,
-                                    settings,
-                                    &mut layers,
-                                    &mut stats,
-                                );
-                                for (acc, v) in row[x].iter_mut().zip(layers) {
-                                    *acc += v;
-                                }
-                                layers.iter().sum()
-                            }
-                            None => {
-                                let mut l = Vec3::ZERO;
-                                trace_path(world, ray, &mut sampler, settings, &mut l, &mut stats);
-                                l
-                            }
-                        };
-                        sum[x] += l;
-                        sum_sq[x] += l * l;
-                    }
-                }
+                let layers = layers.take();
+                engine.trace_row(
+                    &pass,
+                    RowSums {
+                        y,
+                        sum,
+                        sum_sq,
+                        layers,
+                    },
+                    &mut stats,
+                );
                 stats
             })
             .reduce(PathStats::default, |mut a, b| {
@@ -227,63 +185,4 @@ pub fn downsample(film: &Film, factor: u32) -> Film {
         }
     }
     out
-}
-
-/// One row's samples through the fast engine's wavefront loop, a few
-/// thousand paths at a time; each pixel's samples are then added in order,
-/// as the one-path-at-a-time loop adds them. With layers (`layers` one
-/// entry per pixel) each path keeps its light per layer; without (`layers`
-/// empty), one sum.
-fn wave_row(
-    (world, tree, camera, settings, (sampler, seed)): (
-        &World,
-        &super::fast::bvh8::Bvh8,
-        &Camera,
-        &PathSettings,
-        (SamplerKind, u64),
-    ),
-    (y, first, count): (usize, u32, u32),
-    (sum, sum_sq, layers): (&mut [Vec3], &mut [Vec3], &mut [[Vec3; LAYER_SLOTS]]),
-    stats: &mut PathStats,
-) {
-    let per_pixel = count as usize;
-    let chunk = (4096 / per_pixel).max(1);
-    for x0 in (0..sum.len()).step_by(chunk) {
-        let x1 = (x0 + chunk).min(sum.len());
-        let starts = || {
-            let pixels = (x0..x1, y);
-            super::fast::starts::camera_starts(
-                camera,
-                tree.level(),
-                (sampler, seed),
-                pixels,
-                (first, count),
-            )
-            .into_iter()
-        };
-        let n = (x1 - x0) * per_pixel;
-        if layers.is_empty() {
-            let mut outs = vec![Vec3::ZERO; n];
-            super::fast::wave::trace_paths(world, tree, starts(), settings, &mut outs, stats);
-            for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
-                for l in ls {
-                    sum[x] += *l;
-                    sum_sq[x] += *l * *l;
-                }
-            }
-        } else {
-            let mut outs = vec![[Vec3::ZERO; LAYER_SLOTS]; n];
-            super::fast::wave::trace_paths(world, tree, starts(), settings, &mut outs, stats);
-            for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
-                for path in ls {
-                    for (acc, v) in layers[x].iter_mut().zip(path) {
-                        *acc += *v;
-                    }
-                    let l: Vec3 = path.iter().sum();
-                    sum[x] += l;
-                    sum_sq[x] += l * l;
-                }
-            }
-        }
-    }
 }

@@ -8,11 +8,11 @@ use crate::core::plot::{LogLogPlot, Look};
 use crate::core::report::ErrorTime;
 
 use super::accumulate::Accumulator;
+use super::engine::PathEngine;
 use super::integrator::PathSettings;
 use super::layers::{LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
 use super::sampler::SamplerKind;
 use crate::ch1_projection::camera::Camera;
-use crate::ch5_reflection::world::World;
 
 /// The "up to k bounces" images of the lecture's sequence.
 pub const STRIP_BOUNCES: [u32; 6] = [0, 1, 2, 4, 8, 16];
@@ -84,7 +84,7 @@ pub fn layer_figures(acc: &Accumulator, stem: &str) -> Vec<Figure> {
 pub fn spp_figure(
     path: &PathSettings,
     sampler: SamplerKind,
-    (world, camera): (&World, &Camera),
+    (engine, camera): (&dyn PathEngine, &Camera),
     seed: u64,
     max: u32,
     stem: &str,
@@ -94,7 +94,7 @@ pub fn spp_figure(
     let mut spp = 1;
     while spp <= max.max(1) {
         let count = spp - acc.samples;
-        acc.add_samples(world, camera, path, sampler, seed, count);
+        acc.add_samples(engine, camera, path, sampler, seed, count);
         let mut f = acc.mean();
         f.scrub_nonfinite();
         films.push((f, format!("{spp} spp")));

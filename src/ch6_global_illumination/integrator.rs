@@ -70,7 +70,7 @@ pub struct PathSettings {
 
 impl PathSettings {
     /// The largest bounce count a path gathers.
-    pub(super) fn bounce_limit(&self) -> u32 {
+    pub fn bounce_limit(&self) -> u32 {
         self.max_bounces
             .unwrap_or(SAFETY_BOUNCES)
             .min(SAFETY_BOUNCES)
@@ -180,27 +180,29 @@ pub fn trace_path(
 
 /// A path under way: how it is traced, its throughput, and what the
 /// emission its current ray finds must know about the vertex it left.
-pub(super) struct Path {
+pub struct Path {
     strategy: Strategy,
     /// Whether vertices sample lights (then emission that a sampled
     /// direction finds is weighted against light sampling).
     samples_lights: bool,
     /// The throughput β.
-    pub(super) beta: Vec3,
+    pub beta: Vec3,
     /// The bounce count of light the current ray finds (`None`: the camera
     /// ray, whose emitters are layer E).
-    pub(super) k: Option<u32>,
+    pub k: Option<u32>,
     /// Whether the vertex the ray left is a delta (the camera counts as one).
-    pub(super) from_delta: bool,
+    pub from_delta: bool,
     /// The pdf of the ray's direction there.
-    pub(super) from_pdf: f32,
-    /// That vertex's position and its normal on the path's side.
-    pub(super) from_p: Vec3,
-    pub(super) from_n: Vec3,
+    pub from_pdf: f32,
+    /// That vertex's position.
+    pub from_p: Vec3,
+    /// That vertex's normal on the path's side.
+    pub from_n: Vec3,
 }
 
 impl Path {
-    pub(super) fn from_camera(ray: &Ray, strategy: Strategy, world: &World) -> Path {
+    /// A path that starts with the camera ray `ray`.
+    pub fn from_camera(ray: &Ray, strategy: Strategy, world: &World) -> Path {
         Path {
             strategy,
             samples_lights: strategy.samples_lights() && !world.lights.is_empty(),
@@ -234,7 +236,7 @@ impl Path {
 /// on it with `u_light`, and cast a shadow ray. `None` when there is no
 /// light or the BSDF does not reflect towards the sample.
 // ANCHOR: direct_light
-pub(super) fn direct_light(
+pub fn direct_light(
     world: &World,
     v: &Vertex,
     u_choose: f32,
@@ -279,7 +281,7 @@ pub(super) fn direct_light(
 
 /// The environment's radiance along `dir`, where a ray escaped, with its
 /// weight against light sampling; `None` where it is black.
-pub(super) fn sky_emission(world: &World, dir: Vec3, path: &Path) -> Option<(Vec3, f32)> {
+pub fn sky_emission(world: &World, dir: Vec3, path: &Path) -> Option<(Vec3, f32)> {
     let lights = &world.lights;
     let le = lights.environment_radiance(dir);
     if le == Vec3::ZERO {
@@ -298,7 +300,7 @@ pub(super) fn sky_emission(world: &World, dir: Vec3, path: &Path) -> Option<(Vec
 
 /// What the surface at `it` emits towards `wo` (back along the ray), with
 /// its weight against light sampling; `None` where it emits nothing.
-pub(super) fn surface_emission(
+pub fn surface_emission(
     world: &World,
     it: &Interaction,
     wo: Vec3,
@@ -321,16 +323,18 @@ pub(super) fn surface_emission(
 
 /// Where one path's contributions go, with its counts; every addition is
 /// also told to a listener ([`Contributions::note`]).
-pub(super) struct PathOut<'a, C: Contributions> {
-    pub(super) layers: &'a mut C,
-    pub(super) stats: &'a mut PathStats,
+pub struct PathOut<'a, C: Contributions> {
+    /// Where its light goes.
+    pub layers: &'a mut C,
+    /// Its counts.
+    pub stats: &'a mut PathStats,
 }
 
 impl<C: Contributions> PathOut<'_, C> {
     /// Adds `c` to the layer of bounce count `k` unless it is NaN or
     /// infinite (then counts it).
     #[inline(always)]
-    pub(super) fn add(&mut self, k: Option<u32>, c: Vec3) {
+    pub fn add(&mut self, k: Option<u32>, c: Vec3) {
         if c.is_finite() {
             self.layers.add_to(slot_of(k), c);
         } else {
@@ -339,7 +343,7 @@ impl<C: Contributions> PathOut<'_, C> {
     }
 
     /// The sky found by an escaped ray.
-    pub(super) fn add_sky(&mut self, path: &Path, dir: Vec3, sky: Option<(Vec3, f32)>) {
+    pub fn add_sky(&mut self, path: &Path, dir: Vec3, sky: Option<(Vec3, f32)>) {
         let Some((le, weight)) = sky else {
             return;
         };
@@ -354,12 +358,7 @@ impl<C: Contributions> PathOut<'_, C> {
     }
 
     /// A surface reached, and what it emits towards the path.
-    pub(super) fn add_emitted(
-        &mut self,
-        path: &Path,
-        it: &Interaction,
-        emitted: Option<(Vec3, f32)>,
-    ) {
+    pub fn add_emitted(&mut self, path: &Path, it: &Interaction, emitted: Option<(Vec3, f32)>) {
         self.layers.note(PathEvent::Hit {
             it,
             beta: path.beta,
@@ -377,7 +376,7 @@ impl<C: Contributions> PathOut<'_, C> {
     }
 
     /// A light sample's contribution to bounce count `k`.
-    pub(super) fn add_direct(&mut self, k: u32, direct: Option<DirectLight>) {
+    pub fn add_direct(&mut self, k: u32, direct: Option<DirectLight>) {
         let Some(d) = direct else {
             return;
         };

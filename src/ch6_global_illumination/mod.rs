@@ -12,18 +12,20 @@
 //! | where a path's random numbers come from (independent, Sobol) | [`sampler`] |
 //! | one path written down vertex by vertex, for a pixel one asks about | [`path_events`], [`path_record`] |
 //! | direct, one-bounce, two-bounce … global illumination: the layers | [`accumulate`], [`figures`] |
+//! | what traces a pass: the lesson's path loop, or the engine a front end chose | [`engine`] |
 //! | the converged answer and the statistical image test | [`reference`](mod@reference), [`annotate`] |
 //! | scenes whose answer is known (furnace, Cornell box) | [`scenes`] |
 //! | the chapter as a stage | [`stage`] |
+//! | what happened at this pixel: one path written down for the inspector | [`inspect`] |
 //! | what the chapter prints | [`report`] |
 //! | error against run time: every estimator with both samplers | [`studies`] |
 //! | stiff cases: a bright furnace, a tiny light, total internal reflection | [`stability`] |
-//! | the speed benchmark (`ch6 --bench`) | [`bench`](mod@bench) |
+
+#![forbid(unsafe_code)]
 
 pub mod accumulate;
 pub mod annotate;
-pub mod bench;
-pub mod fast;
+pub mod engine;
 pub mod figures;
 pub mod inspect;
 pub mod integrator;

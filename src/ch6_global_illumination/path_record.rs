@@ -13,7 +13,7 @@ use crate::ch1_projection::camera::Camera;
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::world::World;
 
-use super::accumulate::camera_sample;
+use super::engine::camera_sample;
 use super::integrator::{trace_path, PathSettings, PathStats};
 use super::layers::{Contributions, LAYER_SLOTS};
 pub use super::path_events::{DirectLight, Emission, PathEvent, Scatter};

@@ -28,7 +28,7 @@ use crate::core::film::{write_atomically, Film};
 use crate::scene::Scene;
 
 use super::accumulate::{downsample, Accumulator};
-use super::fast::Engine;
+use super::engine::EngineChoice;
 use super::integrator::PathSettings;
 use super::sampler::SamplerKind;
 use crate::ch1_projection::camera::Camera;
@@ -370,6 +370,7 @@ pub fn film_mean(f: &Film) -> Vec3 {
 /// text file of every setting and the command that remakes it; returns that
 /// text and the files written.
 pub fn make_reference(
+    engine: EngineChoice,
     path: &PathSettings,
     sampler: SamplerKind,
     scene: &Scene,
@@ -380,11 +381,11 @@ pub fn make_reference(
     let spp = spp.max(1);
     let t = Instant::now();
     let mut acc = Accumulator::new(scene.camera.width, scene.camera.height, false);
-    let world = Engine::default().world(scene);
+    let engine = engine.make(scene);
     let chunk = 256;
     while acc.samples < spp {
         let count = chunk.min(spp - acc.samples);
-        acc.add_samples(&world, &camera, path, sampler, seed, count);
+        acc.add_samples(&*engine, &camera, path, sampler, seed, count);
         eprint!("\rreference: {}/{spp} spp", acc.samples);
     }
     eprintln!();

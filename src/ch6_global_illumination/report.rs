@@ -6,12 +6,12 @@
 use glam::Vec3;
 
 use super::accumulate::Accumulator;
+use super::engine::PathEngine;
 use super::integrator::{PathSettings, Strategy};
 use super::layers::{LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND};
 use super::sampler::SamplerKind;
 use super::stability::stability_cases;
 use super::studies::{error_against_time, strategy_table};
-use crate::ch5_reflection::world::World;
 use crate::core::format::{format_count, format_number, format_seconds};
 use crate::core::report::{Report, Table};
 use crate::core::stage::Settings;
@@ -32,8 +32,9 @@ pub struct ReportInputs<'a> {
     pub layers: bool,
     /// The sums so far.
     pub acc: &'a Accumulator,
-    /// The world and the seconds it took to build, once built.
-    pub world: Option<&'a (World, f64)>,
+    /// The engine that traced the paths (and its world) and the seconds
+    /// it took to build, once built.
+    pub world: Option<(&'a dyn PathEngine, f64)>,
     /// Seconds spent rendering passes.
     pub seconds: f64,
     /// RMSE against the stored reference and the reference's size.
@@ -150,7 +151,8 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
 fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
     let (scene, world) = (r.scene, r.world);
     let (b, l) = (&mut report.built, &mut report.left_out);
-    match world.and_then(|(w, s)| w.mesh_queries().map(|q| (w, q, *s))) {
+    let world = world.map(|(e, s)| (e.world(), s));
+    match world.and_then(|(w, s)| w.mesh_queries().map(|q| (w, q, s))) {
         Some((w, q, s)) => b.push(format!(
             "{} over {} triangles; world built in {}",
             q.describe(),
@@ -159,21 +161,10 @@ fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
         )),
         None => l.push("BVH: the scene has no meshes".into()),
     }
-    if let Some((w, _)) = world {
-        let path = &r.path;
-        match super::fast::wave::engine_tree(w) {
-            Some(_) if super::fast::wave::supports(w, path) => b.push(
-                "the fast engine's wavefront loop: paths extended a bounce at a time, eight hits \
-                 shaded at once"
-                    .into(),
-            ),
-            Some(_) => l.push(
-                "the wavefront loop: it covers diffuse surfaces with MIS and no SDFs; the \
-                 lesson's path loop runs instead"
-                    .into(),
-            ),
-            None => {}
-        }
+    if let Some((engine, _)) = r.world {
+        let (built, left_out) = engine.notes(&r.path);
+        b.extend(built);
+        l.extend(left_out);
     }
     if scene.sdfs.is_empty() {
         l.push("sphere tracing: the scene has no SDFs".into());

@@ -136,7 +136,7 @@ impl PathSampler {
     /// The eight numbers of dimensions `first .. first + 8` (`first` a
     /// multiple of four), the same bits [`PathSampler::get1`] would give
     /// them: what one path vertex draws, for a loop that draws them all at
-    /// once ([`super::fast::wave`]).
+    /// once (the fast engine's wavefront).
     pub fn eight_at(&self, first: u64) -> [f32; 8] {
         debug_assert!(first.is_multiple_of(4));
         match self.sobol_index() {
@@ -178,8 +178,7 @@ pub fn sobol_group(sample: u64, pixel_scramble: u64, group: u64) -> [f32; 4] {
 /// replaced by two table lookups: the point is linear in the index's bits,
 /// so the XOR of the directions of each byte's bits can be stored once for
 /// all 256 values of each of the index's two bytes. Every other step is
-/// the crate's, the last ones ([`owen_finish_lanes`](super::fast::lanes::owen_finish_lanes))
-/// in integer lanes the CPU's
+/// the crate's, the last ones ([`owen_finish`]) in integer lanes the CPU's
 /// vector instructions run, so the numbers are the same bits as
 /// [`sobol_group`]'s (a test compares them); this is what the path tracer
 /// calls.
@@ -189,12 +188,68 @@ pub fn sobol_group_by_table(sample: u64, pixel_scramble: u64, group: u64) -> [f3
     let seed = mix64(pixel_scramble ^ group) as u32;
     // The crate's `sample_4d(sample, 0, seed)`, step by step.
     let rev = owen_scramble_rev((sample as u32).reverse_bits(), hash(seed ^ 0x79c68e4a));
-    let t = super::fast::sobol8::byte_tables();
+    let t = byte_tables();
     let (hi, lo) = (
         t[0][(rev >> 24) as usize],
         t[1][((rev >> 16) & 0xff) as usize],
     );
     let sobol = std::array::from_fn(|d| hi[d] ^ lo[d]);
-    super::fast::simd::owen_finish(sobol, seed)
+    owen_finish(sobol, seed)
 }
 // ANCHOR_END: sobol_by_table
+
+/// For each byte of a reversed sample index (bits 31..24, then 23..16;
+/// the crate uses the top 16), the XOR of the direction numbers of its set
+/// bits, for all 256 values: dimension set 0's Sobol point of any index is
+/// then `t[0][top byte] ^ t[1][next byte]`.
+pub fn byte_tables() -> &'static [[[u32; 4]; 256]; 2] {
+    static TABLES: std::sync::OnceLock<Box<[[[u32; 4]; 256]; 2]>> = std::sync::OnceLock::new();
+    TABLES.get_or_init(|| {
+        let mut t = Box::new([[[0u32; 4]; 256]; 2]);
+        for (k, table) in t.iter_mut().enumerate() {
+            for (b, entry) in table.iter_mut().enumerate() {
+                let rev = (b as u32) << (24 - 8 * k);
+                *entry = sobol_burley::parts::sobol_int4_rev(rev, 0).into();
+            }
+        }
+        t
+    })
+}
+
+/// The crate's per-dimension scramble constants of dimension set 0.
+const DIMENSION: [u32; 4] = [0x912f69ba, 0x174f18ab, 0x691e72ca, 0xb40cc1b8];
+
+/// The last steps of the crate's `sample_4d` for dimension `d` of a Sobol
+/// point `n` (reversed bits), with `s` the seed times the crate's
+/// multiplier: the Owen scramble with the dimension's own seed, the bits
+/// put back in order, the conversion to [0, 1).
+#[inline(always)]
+pub fn owen_dim(mut n: u32, s: u32, d: usize) -> f32 {
+    // The crate's `hash_int4` of the dimension's scramble seed.
+    let mut h = s ^ DIMENSION[d] ^ 0xe6fe3beb;
+    h ^= h >> 16;
+    h = h.wrapping_mul(0x7feb352d);
+    h ^= h >> 15;
+    h = h.wrapping_mul(0x846ca68b);
+    h ^= h >> 16;
+    // Its `owen_scramble_int4_rev`.
+    n ^= n.wrapping_mul(0x3d20adea);
+    n = n.wrapping_add(h);
+    n = n.wrapping_mul((h >> 16) | 1);
+    n ^= n.wrapping_mul(0x05526c56);
+    n ^= n.wrapping_mul(0x53a22864);
+    let n = n.reverse_bits();
+    let u = f32::from_bits((n >> 9) | 0x3f800000) - 1.0;
+    u.min(1.0 - f32::EPSILON / 2.0)
+}
+
+/// The last steps of the crate's `sample_4d` on a Sobol point's four
+/// dimensions (reversed bits): the Owen scramble with a seed per dimension,
+/// the bits put back in order, the conversion to [0, 1). Written lane by
+/// lane in integers, so that the compiler can run the four lanes in one
+/// vector register, and any width gives the same bits.
+#[inline(always)]
+pub fn owen_finish(sobol: [u32; 4], seed: u32) -> [f32; 4] {
+    let s = seed.wrapping_mul(0x9c8f2d3b);
+    std::array::from_fn(|d| owen_dim(sobol[d], s, d))
+}

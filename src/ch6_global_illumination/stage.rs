@@ -16,7 +16,7 @@ use std::time::Instant;
 use glam::Vec3;
 
 use super::accumulate::{downsample, Accumulator};
-use super::fast::Engine;
+use super::engine::{EngineChoice, PathEngine};
 use super::figures::{layer_figures, spp_figure, strategy_plot};
 use super::inspect::table_lines;
 use super::integrator::{PathSettings, Strategy};
@@ -99,7 +99,7 @@ pub struct GlobalIllumination {
     /// Samples per pixel in one progressive pass.
     pub spp_per_pass: u32,
     /// Which engine traces the paths (the same images either way).
-    pub engine: Engine,
+    pub engine: EngineChoice,
     /// Keep per-bounce layers (off when only the final image is wanted).
     pub layers: bool,
     /// Also write the spp-doubling figure up to this many samples per
@@ -109,7 +109,9 @@ pub struct GlobalIllumination {
 
 /// The settings `ch6` and the front ends use unless told otherwise: the
 /// best estimator and sampler (MIS with Owen-scrambled Sobol numbers), 16
-/// bounces, 4 spp per pass, with layers.
+/// bounces, 4 spp per pass, with layers, traced by the lesson's engine.
+/// The front ends choose the engine (the fast one unless told `--engine
+/// readable`: `crate::chapters`, `ch6`'s command line).
 pub const DEFAULT: GlobalIllumination = GlobalIllumination {
     path: PathSettings {
         strategy: Strategy::Mis,
@@ -118,7 +120,7 @@ pub const DEFAULT: GlobalIllumination = GlobalIllumination {
     },
     sampler: SamplerKind::Sobol,
     spp_per_pass: 4,
-    engine: Engine::Fast,
+    engine: EngineChoice::READABLE,
     layers: true,
     spp_figure: None,
 };
@@ -184,7 +186,7 @@ pub struct PathTracingRender {
     scene: Arc<Scene>,
     camera: Camera,
     settings: Settings,
-    world: Option<(World, f64)>,
+    world: Option<(Box<dyn PathEngine>, f64)>,
     /// The sums so far.
     pub acc: Accumulator,
     seconds: f64,
@@ -249,7 +251,7 @@ impl PathTracingRender {
 
     /// The world the passes trace in, once the first pass has built it.
     pub fn world(&self) -> Option<&World> {
-        self.world.as_ref().map(|(w, _)| w)
+        self.world.as_ref().map(|(e, _)| e.world())
     }
 
     /// The camera.
@@ -341,16 +343,16 @@ impl Render for PathTracingRender {
         let started = *self.started.get_or_insert_with(Instant::now);
         if self.world.is_none() {
             let t = Instant::now();
-            let world = self.stage.engine.world(&self.scene);
-            self.world = Some((world, t.elapsed().as_secs_f64()));
+            let engine = self.stage.engine.make(&self.scene);
+            self.world = Some((engine, t.elapsed().as_secs_f64()));
         }
         let spp = self.settings.spp.max(1);
         if self.acc.samples < spp {
             let count = self.pass_size(self.acc.samples).min(spp - self.acc.samples);
             let t = Instant::now();
-            let (world, _) = self.world.as_ref().expect("built above");
+            let (engine, _) = self.world.as_ref().expect("built above");
             self.acc.add_samples(
-                world,
+                &**engine,
                 &self.camera,
                 &self.stage.path,
                 self.stage.sampler,
@@ -419,7 +421,7 @@ impl Render for PathTracingRender {
             sampler: self.stage.sampler,
             layers: self.stage.layers,
             acc: &self.acc,
-            world: self.world.as_ref(),
+            world: self.world.as_ref().map(|(e, s)| (&**e, *s)),
             seconds: self.seconds,
             reference_rmse: self.reference_rmse().map(|e| {
                 let (r, _) = self.reference.as_ref().expect("an RMSE needs a reference");
@@ -433,11 +435,11 @@ impl Render for PathTracingRender {
         });
         let stem = output_stem(6, &self.scene.name);
         let mut figures = layer_figures(&self.acc, &stem);
-        if let (Some(max), Some(world)) = (self.stage.spp_figure, self.world()) {
+        if let (Some(max), Some((engine, _))) = (self.stage.spp_figure, &self.world) {
             figures.push(spp_figure(
                 &self.stage.path,
                 self.stage.sampler,
-                (world, &self.camera),
+                (&**engine, &self.camera),
                 self.settings.seed,
                 max,
                 &stem,

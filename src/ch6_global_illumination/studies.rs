@@ -13,14 +13,15 @@ use crate::core::report::{ErrorTime, Measurement, Table};
 use crate::scene::Scene;
 
 use super::accumulate::Accumulator;
-use super::fast::Engine;
+use super::engine::EngineChoice;
 use super::integrator::{PathSettings, Strategy};
 use super::reference::StoredReference;
 use super::sampler::SamplerKind;
 use super::scenes;
 
-/// Renders `spp` samples per pixel of `scene` in one go with the default
-/// engine: (sums, seconds).
+/// Renders `spp` samples per pixel of `scene` in one go with the lesson's
+/// engine: (sums, seconds). The studies compare estimators and samplers
+/// on this one engine, so that a difference in time is the estimator's.
 pub fn render(
     scene: &Scene,
     path: &PathSettings,
@@ -29,13 +30,20 @@ pub fn render(
     seed: u64,
     layers: bool,
 ) -> (Accumulator, f64) {
-    render_with(Engine::default(), scene, path, sampler, (spp, seed), layers)
+    render_with(
+        EngineChoice::READABLE,
+        scene,
+        path,
+        sampler,
+        (spp, seed),
+        layers,
+    )
 }
 
 /// [`render`] with `engine` (`spp_seed`: samples per pixel and seed); the
 /// time includes building the engine's world.
 pub fn render_with(
-    engine: Engine,
+    engine: EngineChoice,
     scene: &Scene,
     path: &PathSettings,
     sampler: SamplerKind,
@@ -43,9 +51,9 @@ pub fn render_with(
     layers: bool,
 ) -> (Accumulator, f64) {
     let t = Instant::now();
-    let world = engine.world(scene);
+    let engine = engine.make(scene);
     let mut acc = Accumulator::new(scene.camera.width, scene.camera.height, layers);
-    acc.add_samples(&world, &Camera::of(scene), path, sampler, seed, spp);
+    acc.add_samples(&*engine, &Camera::of(scene), path, sampler, seed, spp);
     (acc, t.elapsed().as_secs_f64())
 }
 
@@ -60,14 +68,14 @@ fn series(
     max_spp: u32,
     error_of: &dyn Fn(&Accumulator) -> f64,
 ) {
-    let world = Engine::default().world(scene);
+    let engine = EngineChoice::READABLE.make(scene);
     let camera = Camera::of(scene);
     let mut acc = Accumulator::new(camera.width, camera.height, false);
     let mut seconds = 0.0;
     let mut spp = 1;
     while spp <= max_spp {
         let t = Instant::now();
-        acc.add_samples(&world, &camera, path, sampler, 7, spp - acc.samples);
+        acc.add_samples(&*engine, &camera, path, sampler, 7, spp - acc.samples);
         seconds += t.elapsed().as_secs_f64();
         et.rows.push(Measurement {
             series: name.to_string(),

@@ -11,21 +11,24 @@ use crate::ch5_reflection::warp::{uniform_hemisphere, UNIFORM_HEMISPHERE_PDF};
 use crate::ch5_reflection::world::{Interaction, World};
 
 /// A surface point a path reached, with its BSDF in its local frame.
-pub(super) struct Vertex<'a> {
-    pub(super) it: &'a Interaction,
-    pub(super) bsdf: &'a Bsdf,
-    pub(super) frame: Frame,
+pub struct Vertex<'a> {
+    /// The surface point.
+    pub it: &'a Interaction,
+    /// Its BSDF.
+    pub bsdf: &'a Bsdf,
+    /// Its local frame (z the shading normal).
+    pub frame: Frame,
     /// Towards where the path came from, local.
-    pub(super) wo: Vec3,
+    pub wo: Vec3,
     /// The normal on the side the path arrived from.
-    pub(super) n_side: Vec3,
+    pub n_side: Vec3,
     /// Whether the BSDF is a delta (mirror, glass).
-    pub(super) delta: bool,
+    pub delta: bool,
 }
 
 impl<'a> Vertex<'a> {
     /// `None` for a ray exactly in the surface's plane.
-    pub(super) fn at(world: &'a World, it: &'a Interaction, wo_world: Vec3) -> Option<Vertex<'a>> {
+    pub fn at(world: &'a World, it: &'a Interaction, wo_world: Vec3) -> Option<Vertex<'a>> {
         let bsdf = &world.bsdfs[it.material];
         let frame = Frame::from_normal(it.n);
         let wo = frame.to_local(wo_world);
@@ -45,16 +48,20 @@ impl<'a> Vertex<'a> {
 
 /// A sampled next direction (local) with the BSDF value, pdf and the
 /// throughput's factor f cos θ / pdf.
-pub(super) struct Step {
-    pub(super) wi: Vec3,
-    pub(super) f: Vec3,
-    pub(super) weight: Vec3,
-    pub(super) pdf: f32,
+pub struct Step {
+    /// The direction, local.
+    pub wi: Vec3,
+    /// The BSDF's value for it.
+    pub f: Vec3,
+    /// f cos θ / pdf.
+    pub weight: Vec3,
+    /// Its density.
+    pub pdf: f32,
 }
 
 impl Step {
     /// The step as a path event, with the throughput after it.
-    pub(super) fn event(&self, v: &Vertex, beta: Vec3) -> PathEvent<'static> {
+    pub fn event(&self, v: &Vertex, beta: Vec3) -> PathEvent<'static> {
         PathEvent::Scatter(Scatter {
             wi: v.frame.to_world(self.wi),
             f: self.f,
@@ -70,12 +77,7 @@ impl Step {
 /// uniform strategy, from the BSDF otherwise (and always for a delta BSDF,
 /// whose one direction a uniform one never finds). `None` ends the path.
 // ANCHOR: sample_direction
-pub(super) fn sample_direction(
-    v: &Vertex,
-    u_lobe: f32,
-    u_dir: Vec2,
-    strategy: Strategy,
-) -> Option<Step> {
+pub fn sample_direction(v: &Vertex, u_lobe: f32, u_dir: Vec2, strategy: Strategy) -> Option<Step> {
     let step = if strategy == Strategy::Uniform && !v.delta {
         let mut wi = uniform_hemisphere(u_dir);
         wi.z = wi.z.copysign(v.wo.z);

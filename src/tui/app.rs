@@ -1,7 +1,9 @@
 //! The UI's state and the messages that change it; the change itself is
 //! [`update`](super::update::update), a pure function from (state, message)
-//! to the next state. Nothing here touches the terminal, the clock or the
-//! disk.
+//! to the next state. Nothing here touches the terminal or the clock, and
+//! only [`App::reload_if_changed`] looks at the disk: the event loop calls
+//! it to learn (from their modification times) whether scene files
+//! changed.
 
 use std::borrow::Cow;
 use std::collections::BTreeMap;

@@ -1,29 +1,35 @@
-//! The fast engine (`ch6_global_illumination::fast`): the same bytes as
-//! the readable engine on every shipped scene, on every SIMD path this CPU
-//! has; the table-driven Sobol numbers equal the crate's; `unsafe` code
-//! only in the one module that argues for it.
+//! The fast engine (`fast`) on every shipped scene: the same bytes on
+//! every SIMD path this CPU has; the same bytes as the lesson's engine
+//! where it runs the lesson's path loop, and the same paths up to the last
+//! bits of a sine where it runs the wavefront (its polynomial sine); the
+//! table-driven Sobol numbers equal the crate's; `unsafe` code only in the
+//! one module that argues for it.
 
 use std::path::Path;
 
 use raystep::ch1_projection::camera::Camera;
 use raystep::ch6_global_illumination::accumulate::Accumulator;
-use raystep::ch6_global_illumination::fast::level::Level;
-use raystep::ch6_global_illumination::fast::{wave, Engine};
+use raystep::ch6_global_illumination::engine::{PathEngine, PathLoop};
 use raystep::ch6_global_illumination::integrator::{PathSettings, Strategy};
 use raystep::ch6_global_illumination::sampler::{sobol_group, sobol_group_by_table, SamplerKind};
+use raystep::fast::level::Level;
+use raystep::fast::{wave, FastEngine};
 use raystep::scene::Scene;
 
+/// The fast engine with `level`'s instructions, or (`None`) the lesson's.
 fn render(
     scene: &Scene,
-    engine: Engine,
-    level: Level,
+    level: Option<Level>,
     path: &PathSettings,
     sampler: SamplerKind,
 ) -> Accumulator {
-    let world = engine.world_at(scene, level);
+    let engine: Box<dyn PathEngine> = match level {
+        Some(level) => Box::new(FastEngine::at(scene, level)),
+        None => Box::new(PathLoop::new(scene)),
+    };
     let camera = Camera::of(scene);
     let mut acc = Accumulator::new(camera.width, camera.height, true);
-    acc.add_samples(&world, &camera, path, sampler, 3, 2);
+    acc.add_samples(&*engine, &camera, path, sampler, 3, 2);
     acc
 }
 
@@ -78,12 +84,12 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
                 strategy,
                 ..PathSettings::default()
             };
-            let readable = render(scene, Engine::Readable, Level::Portable, &path, sampler);
+            let readable = render(scene, None, &path, sampler);
             assert!(readable.stats.rays > 0, "{}", scene.name);
-            let waves = wave::supports(&Engine::Fast.world(scene), &path);
-            let first = render(scene, Engine::Fast, Level::Portable, &path, sampler);
+            let waves = wave::supports(FastEngine::new(scene).world(), &path);
+            let first = render(scene, Some(Level::Portable), &path, sampler);
             for &level in &levels {
-                let fast = render(scene, Engine::Fast, level, &path, sampler);
+                let fast = render(scene, Some(level), &path, sampler);
                 let what = format!(
                     "{} {} {} on {}",
                     scene.name,
@@ -135,8 +141,9 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
 fn a_level_the_cpu_lacks_falls_back_to_portable() {
     let scene = Scene::builtin();
     for level in Level::ALL {
-        let world = Engine::Fast.world_at(&scene, level);
-        assert!(world.queries.is_some());
+        let engine = FastEngine::at(&scene, level);
+        assert!(engine.world().queries.is_some());
+        assert!(engine.tree().is_some_and(|t| t.level().available()));
     }
     assert!(Level::Portable.available());
 }
@@ -188,13 +195,25 @@ fn unsafe_code_lives_in_one_module() {
     assert_eq!(
         found,
         [
-            "ch6_global_illumination/fast/simd/avx.rs",
-            "ch6_global_illumination/fast/simd/mod.rs",
-            "ch6_global_illumination/fast/simd/numbers.rs"
+            "fast/simd/avx.rs",
+            "fast/simd/mod.rs",
+            "fast/simd/numbers.rs"
         ]
     );
     let lib = std::fs::read_to_string(src.join("lib.rs")).unwrap();
     assert!(lib.contains("#![deny(unsafe_code)]"));
+    // Each chapter forbids it outright (no `allow` can switch it back on).
+    for chapter in [
+        "ch1_projection",
+        "ch2_rasterization",
+        "ch3_ray_triangle",
+        "ch4_implicit_surfaces",
+        "ch5_reflection",
+        "ch6_global_illumination",
+    ] {
+        let m = std::fs::read_to_string(src.join(chapter).join("mod.rs")).unwrap();
+        assert!(m.contains("#![forbid(unsafe_code)]"), "{chapter}");
+    }
 }
 
 #[test]
@@ -217,8 +236,8 @@ fn the_engine_flag_chooses_the_tree_chapter_6_traces() {
 }
 
 #[test]
-fn the_owen_scramble_is_the_crates_on_every_simd_path() {
-    use raystep::ch6_global_illumination::fast::simd::owen_finish_at;
+fn the_owen_scramble_is_the_crates() {
+    use raystep::ch6_global_illumination::sampler::owen_finish;
     use sobol_burley::parts::{hash_int4, owen_scramble_int4_rev, Int4};
     let mut x = 0x2545_f491_4f6c_dd1du64;
     for _ in 0..20_000 {
@@ -247,15 +266,8 @@ fn the_owen_scramble_is_the_crates_on_every_simd_path() {
             .reverse_bits()
             .to_f32_norm()
             .map(|u| u.min(1.0 - f32::EPSILON / 2.0));
-        for level in Level::ALL {
-            let got = owen_finish_at(level, sobol, seed);
-            assert_eq!(
-                got.map(f32::to_bits),
-                expected.map(f32::to_bits),
-                "{}",
-                level.name()
-            );
-        }
+        let got = owen_finish(sobol, seed);
+        assert_eq!(got.map(f32::to_bits), expected.map(f32::to_bits));
     }
 }
 
@@ -263,7 +275,7 @@ fn the_owen_scramble_is_the_crates_on_every_simd_path() {
 fn the_lanes_offsets_are_chapter_3s_bit_for_bit() {
     use glam::Vec3;
     use raystep::ch3_ray_triangle::spawn::{offset_origin, stop_distance};
-    use raystep::ch6_global_illumination::fast::shade8;
+    use raystep::fast::shade8;
     let mut values = vec![
         0.0f32,
         -0.0,
@@ -307,7 +319,7 @@ fn the_lanes_offsets_are_chapter_3s_bit_for_bit() {
 
 #[test]
 fn the_lanes_truncation_is_rusts_cast() {
-    use raystep::ch6_global_illumination::fast::shade8::truncate;
+    use raystep::fast::shade8::truncate;
     let specials = [
         0.0f32,
         -0.0,
@@ -340,11 +352,9 @@ fn the_lanes_truncation_is_rusts_cast() {
 
 #[test]
 fn eight_paths_numbers_are_the_samplers_bit_for_bit() {
-    use raystep::ch6_global_illumination::fast::simd::independent8_at;
-    use raystep::ch6_global_illumination::fast::sobol8::{
-        independent8, sobol_group8, sobol_groups8,
-    };
     use raystep::ch6_global_illumination::sampler::PathSampler;
+    use raystep::fast::simd::independent8_at;
+    use raystep::fast::sobol8::{independent8, sobol_group8, sobol_groups8};
     for kind in [SamplerKind::Sobol, SamplerKind::Independent] {
         for (pixel0, sample0) in [(0u64, 0u64), (12_345, 63), (7, 4_000)] {
             let samplers: Vec<PathSampler> = (0..8u64)
@@ -404,8 +414,8 @@ fn eight_paths_numbers_are_the_samplers_bit_for_bit() {
 fn the_lanes_triangle_pick_and_its_corners_are_the_lights() {
     use glam::Vec3;
     use raystep::ch5_reflection::light::area::AreaLight;
-    use raystep::ch6_global_illumination::fast::pick8::{fill_light8, pick8, MAX_TRIANGLES};
-    use raystep::ch6_global_illumination::fast::shade8::In8;
+    use raystep::fast::pick8::{fill_light8, pick8, MAX_TRIANGLES};
+    use raystep::fast::shade8::In8;
     let light = |areas: &[f32]| {
         let cdf: Vec<f32> = areas
             .iter()
@@ -503,8 +513,8 @@ fn the_lanes_triangle_pick_and_its_corners_are_the_lights() {
 
 #[test]
 fn the_sobol_lanes_are_the_same_bits_on_every_simd_path() {
-    use raystep::ch6_global_illumination::fast::simd::sobol_groups8_at;
-    use raystep::ch6_global_illumination::fast::sobol8::sobol_groups8;
+    use raystep::fast::simd::sobol_groups8_at;
+    use raystep::fast::sobol8::sobol_groups8;
     // Sample indices across the tables' range (every bit of the shuffled
     // index in play), pixels and groups of all sizes.
     let mut h = 0x2545_f491_4f6c_dd1du64;
@@ -541,10 +551,8 @@ fn the_sobol_lanes_are_the_same_bits_on_every_simd_path() {
 
 #[test]
 fn numbers_made_only_where_wanted_are_the_same_bits_and_the_rest_zero() {
-    use raystep::ch6_global_illumination::fast::simd::{
-        independent8_wanted_at, sobol_groups8_wanted_at,
-    };
-    use raystep::ch6_global_illumination::fast::sobol8::{independent8, sobol_groups8};
+    use raystep::fast::simd::{independent8_wanted_at, sobol_groups8_wanted_at};
+    use raystep::fast::sobol8::{independent8, sobol_groups8};
     let mut h = 0x0123_4567_89ab_cdefu64;
     let mut next = || {
         h ^= h << 13;

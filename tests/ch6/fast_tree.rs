@@ -8,8 +8,8 @@ use glam::Vec3;
 use crate::common;
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch5_reflection::world::RayQueries;
-use raystep::ch6_global_illumination::fast::bvh8::Bvh8;
-use raystep::ch6_global_illumination::fast::level::Level;
+use raystep::fast::bvh8::Bvh8;
+use raystep::fast::level::Level;
 
 #[test]
 fn every_simd_path_finds_the_portable_hits_on_edges_and_vertices() {
@@ -189,7 +189,7 @@ fn shadow_rays_end_outside_the_lights_box_wherever_the_scene_sits() {
 fn camera_rays_eight_at_a_time_find_the_one_ray_hits() {
     use raystep::ch1_projection::camera::Camera;
     use raystep::ch3_ray_triangle::triangle::Hit;
-    use raystep::ch6_global_illumination::fast::{packet, simd, Engine};
+    use raystep::fast::{packet, simd, FastEngine};
     use raystep::scene::Scene;
     let bits =
         |h: &Option<Hit>| h.map(|h| (h.t.to_bits(), h.u.to_bits(), h.v.to_bits(), h.triangle));
@@ -241,14 +241,14 @@ fn camera_rays_eight_at_a_time_find_the_one_ray_hits() {
         .filter(|r| !packet::together(r))
         .count();
     assert!(apart * 2 >= shuffled.len() / 8, "{apart}");
-    let world = Engine::Fast.world_at(&scene, Level::Portable);
-    let portable = raystep::ch6_global_illumination::fast::wave::engine_tree(&world).unwrap();
+    let engine = FastEngine::at(&scene, Level::Portable);
+    let portable = engine.tree().unwrap();
     for level in Level::ALL.into_iter().filter(|l| l.available()) {
-        let world = Engine::Fast.world_at(&scene, level);
-        let tree = raystep::ch6_global_illumination::fast::wave::engine_tree(&world).unwrap();
+        let engine = FastEngine::at(&scene, level);
+        let tree = engine.tree().unwrap();
         for rays in [&rays, &spread, &shuffled] {
             let (mut want, mut got) = (Vec::new(), Vec::new());
-            simd::closest_all(Level::Portable, portable, rays, &mut want);
+            simd::closest_all(portable, rays, &mut want);
             simd::closest_packets(tree, rays, &mut got);
             assert_eq!(got.len(), rays.len());
             let misses = want.iter().filter(|h| h.is_none()).count();
@@ -348,5 +348,52 @@ fn a_boxs_twelve_triangles_go_into_its_sides_and_two_flat_faces() {
     assert!(
         hits > 300 && edges < hits / 2,
         "{hits} hits, {edges} on edges"
+    );
+}
+
+/// The SIMD queries take the instructions from the tree, never from their
+/// caller, and a tree is built only for instructions the CPU has: one
+/// asked for AVX2 or AVX-512 on a CPU without them (pretended here) is
+/// built for the portable path, and answers as the one built for this
+/// CPU's best.
+#[test]
+fn a_tree_asked_for_instructions_the_cpu_lacks_is_built_for_the_portable_ones() {
+    use raystep::fast::simd;
+    let tris: Vec<[Vec3; 3]> = (0..40)
+        .map(|i| {
+            let x = i as f32 * 0.25;
+            [
+                Vec3::new(x, 0.0, 1.0 + x),
+                Vec3::new(x + 1.0, 0.0, 1.0),
+                Vec3::new(x, 1.0, 1.5),
+            ]
+        })
+        .collect();
+    let rays: Vec<Ray> = (0..200)
+        .filter_map(|i| {
+            let d = Vec3::new((i % 20) as f32 * 0.03 + 0.1, (i / 20) as f32 * 0.05, 1.0);
+            Ray::new(Vec3::new(0.0, 0.3, -1.0), d.normalize()).ok()
+        })
+        .collect();
+    let best = Bvh8::build(&tris, simd::best()).expect("a tree");
+    let (mut want, mut got) = (Vec::new(), Vec::new());
+    simd::closest_all(&best, &rays, &mut want);
+    assert!(want.iter().filter(|h| h.is_some()).count() > 50);
+    for level in Level::ALL {
+        let lacking = [Level::Avx2, Level::Avx512];
+        let tree = Level::pretend_lacking(&lacking, || Bvh8::build(&tris, level)).expect("a tree");
+        assert_eq!(tree.level(), Level::Portable, "asked for {level:?}");
+        simd::closest_all(&tree, &rays, &mut got);
+        assert_eq!(format!("{got:?}"), format!("{want:?}"));
+        // Without pretending, each tree is built for `level` if the CPU
+        // has it, else for the portable path: never for a level it lacks.
+        let tree = Bvh8::build(&tris, level).expect("a tree");
+        assert!(tree.level().available());
+        assert_eq!(tree.level() == level, level.available());
+    }
+    // The pretence ends with the closure.
+    assert_eq!(
+        Bvh8::build(&tris, simd::best()).expect("a tree").level(),
+        simd::best()
     );
 }

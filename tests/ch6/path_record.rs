@@ -8,6 +8,7 @@ use glam::Vec3;
 use raystep::ch1_projection::camera::Camera;
 use raystep::ch5_reflection::world::World;
 use raystep::ch6_global_illumination::accumulate::Accumulator;
+use raystep::ch6_global_illumination::engine::{PathEngine, PathLoop};
 use raystep::ch6_global_illumination::integrator::{PathSettings, Strategy};
 use raystep::ch6_global_illumination::path_record::{record_path, PathEnd, PathRecord};
 use raystep::ch6_global_illumination::sampler::SamplerKind;
@@ -22,7 +23,7 @@ fn close(a: Vec3, b: Vec3, rel: f32) -> bool {
 /// What the render's pass adds to every pixel for sample `sample` alone,
 /// with layers.
 fn render_sample(
-    world: &World,
+    engine: &PathLoop,
     camera: &Camera,
     path: &PathSettings,
     kind: SamplerKind,
@@ -30,23 +31,24 @@ fn render_sample(
 ) -> Accumulator {
     let mut acc = Accumulator::new(camera.width, camera.height, true);
     acc.samples = sample;
-    acc.add_samples(world, camera, path, kind, SEED, 1);
+    acc.add_samples(engine, camera, path, kind, SEED, 1);
     acc
 }
 
 /// Checks every pixel of a `step`-spaced grid for samples `samples`;
 /// returns the records for the caller's own checks.
 fn check_scene(scene: &Scene, path: PathSettings, kind: SamplerKind) -> Vec<PathRecord> {
-    let world = World::new(scene);
+    let engine = PathLoop::new(scene);
+    let world = engine.world();
     let camera = Camera::of(scene);
     let mut records = Vec::new();
     for sample in [0u32, 1, 7] {
-        let acc = render_sample(&world, &camera, &path, kind, sample);
+        let acc = render_sample(&engine, &camera, &path, kind, sample);
         let layers = acc.layers.as_ref().unwrap();
         for y in (1..camera.height).step_by(5) {
             for x in (2..camera.width).step_by(5) {
                 let i = (y * camera.width + x) as usize;
-                let r = record_path(&world, &camera, &path, kind, SEED, (x, y), sample);
+                let r = record_path(world, &camera, &path, kind, SEED, (x, y), sample);
                 let rendered = acc.sum[i];
                 let sum = r.contributions_sum();
                 assert!(

@@ -277,7 +277,7 @@ fn every_term_used_inside_the_reports_is_in_the_glossary() {
     for bench in [
         "src/ch2_rasterization/bench.rs",
         "src/ch3_ray_triangle/bench.rs",
-        "src/ch6_global_illumination/bench.rs",
+        "src/fast/bench.rs",
     ] {
         corpus += &std::fs::read_to_string(root().join(bench)).unwrap();
     }

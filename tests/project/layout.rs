@@ -255,6 +255,11 @@ enum Place {
     Lesson(u32),
     /// Chapter N's stage, report, studies, stability or bench.
     Harness(u32),
+    /// The fast engine (`fast/`): answers chapter 6's engine questions
+    /// with the lessons' formulas; the only module with `unsafe` code. It
+    /// may use the chapters, and only the front ends (and itself) may use
+    /// it: no chapter knows it exists.
+    Fast,
     /// The terminal UI (`tui/`): drives the chapters through the stage
     /// boundary only (`core::stage`), so it may use core/, scene/, the
     /// chapter list and the grader's student mode, and no chapter's files.
@@ -284,6 +289,9 @@ fn place(file: &str) -> Place {
     if first == "tui" {
         return Place::Ui;
     }
+    if first == "fast" {
+        return Place::Fast;
+    }
     if let Some(n) = first
         .strip_prefix("ch")
         .and_then(|r| r.split('_').next())
@@ -305,6 +313,9 @@ fn allowed(from: Place, to: Place) -> bool {
     use Place::*;
     match (from, to) {
         (Top, _) => true,
+        (Fast, Top | Ui) => false,
+        (Fast, _) => true,
+        (_, Fast) => false,
         (Ui, Core | Scene | Ui | Top) => true,
         (Ui, Lesson(_) | Harness(_)) => false,
         (_, Top | Ui) => false,
@@ -659,4 +670,57 @@ fn blank_comments_and_strings(text: &str) -> String {
         }
     }
     String::from_utf8_lossy(&out).into_owned()
+}
+
+/// Every `mod.rs` whose doc has a file table (`//! | … |`) lists every
+/// module its folder declares, as `[`name`]` or `(mod@name)`: a reader
+/// who starts from the table finds every file.
+#[test]
+fn every_mod_table_lists_every_module() {
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut missing = Vec::new();
+    let mut tables = 0;
+    let mut stack = vec![src.clone()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let p = entry.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+                continue;
+            }
+            if p.file_name().is_none_or(|n| n != "mod.rs") {
+                continue;
+            }
+            let text = std::fs::read_to_string(&p).unwrap();
+            let table: String = text
+                .lines()
+                .filter(|l| l.starts_with("//! |"))
+                .collect::<Vec<_>>()
+                .join("\n");
+            if table.is_empty() {
+                continue;
+            }
+            tables += 1;
+            for line in text.lines() {
+                let decl = line
+                    .trim()
+                    .strip_prefix("pub mod ")
+                    .or_else(|| line.trim().strip_prefix("mod "));
+                let Some(name) = decl.and_then(|d| d.strip_suffix(';')) else {
+                    continue;
+                };
+                let listed = table.contains(&format!("[`{name}`]"))
+                    || table.contains(&format!("(mod@{name})"));
+                if !listed {
+                    let file = p.strip_prefix(&src).unwrap().display().to_string();
+                    missing.push(format!("{file}: {name}"));
+                }
+            }
+        }
+    }
+    assert!(tables >= 6, "{tables} tables");
+    assert!(
+        missing.is_empty(),
+        "modules missing from their table: {missing:#?}"
+    );
 }

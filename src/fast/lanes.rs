@@ -12,8 +12,6 @@ use crate::ch3_ray_triangle::triangle::gamma;
 use crate::ch3_ray_triangle::watertight_fast::WatertightRay;
 use crate::ch3_ray_triangle::wide_bvh::BoxRay;
 
-use super::sobol8::owen_dim;
-
 /// Children per node and triangles per leaf.
 pub const W: usize = 8;
 /// Most triangles in a leaf.
@@ -300,14 +298,3 @@ pub(super) fn leaf_test(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
     h
 }
 // ANCHOR_END: leaf8
-
-/// The last steps of the crate's `sample_4d` on a Sobol point's four
-/// dimensions (reversed bits): the Owen scramble with a seed per dimension,
-/// the bits put back in order, the conversion to [0, 1). Written lane by
-/// lane in integers, so that the compiler can run the four lanes in one
-/// vector register, and any width gives the same bits.
-#[inline(always)]
-pub fn owen_finish_lanes(sobol: [u32; 4], seed: u32) -> [f32; 4] {
-    let s = seed.wrapping_mul(0x9c8f2d3b);
-    std::array::from_fn(|d| owen_dim(sobol[d], s, d))
-}

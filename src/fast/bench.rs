@@ -29,14 +29,14 @@ use crate::core::report::Table;
 use crate::core::sampling::Sampler;
 use crate::scene::Scene;
 
-use super::accumulate::downsample;
-use super::fast::bvh8::Bvh8;
-use super::fast::Engine;
-use super::integrator::PathSettings;
-use super::reference::StoredReference;
-use super::sampler::SamplerKind;
-use super::studies::render_with;
+use super::bvh8::Bvh8;
 use crate::ch5_reflection::world::RayQueries;
+use crate::ch6_global_illumination::accumulate::downsample;
+use crate::ch6_global_illumination::engine::EngineChoice;
+use crate::ch6_global_illumination::integrator::PathSettings;
+use crate::ch6_global_illumination::reference::StoredReference;
+use crate::ch6_global_illumination::sampler::SamplerKind;
+use crate::ch6_global_illumination::studies::render_with;
 
 /// Runs the benchmark and returns its table.
 pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table> {
@@ -65,7 +65,7 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
             "noise from variance",
         ],
     );
-    let runs = [Engine::Fast, Engine::Readable]
+    let runs = [super::FAST, EngineChoice::READABLE]
         .into_iter()
         .flat_map(|e| [(e, SamplerKind::Independent), (e, SamplerKind::Sobol)]);
     for (engine, sampler) in runs {
@@ -93,7 +93,7 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
         let (full, full_eff) = e(full);
         let (down, down_eff) = e(down);
         t.row(vec![
-            format!("{} {}", engine.name(), sampler.name()),
+            format!("{} {}", engine.name, sampler.name()),
             format!("{secs:.3}"),
             format_number(acc.stats.paths as f64 / secs),
             format!(
@@ -182,7 +182,7 @@ pub fn query_bench() -> Table {
     let (Some(bvh), Some(wide), Some(eight)) = (
         Bvh::build(tris),
         &world.wide,
-        Bvh8::build(tris, super::fast::simd::best()),
+        Bvh8::build(tris, super::simd::best()),
     ) else {
         return t;
     };
@@ -285,13 +285,17 @@ pub fn scenes_bench(spp: u32, path: &PathSettings) -> crate::core::error::Result
         let camera = Camera::of(&scene);
         let mut rate = [0.0; 2];
         let mut build = [String::new(), String::new()];
-        for (i, engine) in [Engine::Fast, Engine::Readable].into_iter().enumerate() {
+        for (i, engine) in [super::FAST, EngineChoice::READABLE]
+            .into_iter()
+            .enumerate()
+        {
             let t0 = Instant::now();
-            let world = engine.world(&scene);
+            let engine = engine.make(&scene);
             build[i] = crate::core::format::format_seconds(t0.elapsed().as_secs_f64());
-            let mut acc = super::accumulate::Accumulator::new(128, 128, false);
+            let mut acc =
+                crate::ch6_global_illumination::accumulate::Accumulator::new(128, 128, false);
             let t1 = Instant::now();
-            acc.add_samples(&world, &camera, path, SamplerKind::Sobol, 1, spp);
+            acc.add_samples(&*engine, &camera, path, SamplerKind::Sobol, 1, spp);
             rate[i] = acc.stats.paths as f64 / t1.elapsed().as_secs_f64();
         }
         t.row(vec![

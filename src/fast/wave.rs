@@ -60,12 +60,6 @@ pub fn supports(world: &World, settings: &PathSettings) -> bool {
         && world.bsdfs.iter().all(|b| matches!(b, Bsdf::Lambertian(_)))
 }
 
-/// The fast engine's tree, if `world`'s ray queries are answered by it
-/// (the fast engine built it): then chapter 6 traces paths in waves.
-pub fn engine_tree(world: &World) -> Option<&Bvh8> {
-    world.mesh_queries()?.as_any()?.downcast_ref::<Bvh8>()
-}
-
 /// One path under way.
 struct Lane {
     ray: Ray,
@@ -143,7 +137,7 @@ pub fn trace_paths<C: Contributions>(
             // Camera rays: eight samples of a pixel leave together.
             super::simd::closest_packets(tree, &rays, &mut found);
         } else {
-            super::simd::closest_all(level, tree, &rays, &mut found);
+            super::simd::closest_all(tree, &rays, &mut found);
         }
         shadows.rays.clear();
         shadows.light.clear();
@@ -185,7 +179,7 @@ pub fn trace_paths<C: Contributions>(
             its.clear();
         }
         // 3. Shadow rays.
-        super::simd::occluded_all(level, tree, &shadows.rays, &mut blocked);
+        super::simd::occluded_all(tree, &shadows.rays, &mut blocked);
         for (&(i, light), _) in shadows.light.iter().zip(&blocked).filter(|(_, b)| !**b) {
             let mut out = PathOut {
                 layers: &mut outs[i as usize],

@@ -28,23 +28,23 @@ use crate::scene::{Limits, Scene};
 
 /// Scene files the mutations start from.
 pub const SCENE_SEEDS: &[&str] = &[
-    include_str!("../scenes/cornell-box.toml"),
-    include_str!("../scenes/cornell-glass.toml"),
-    include_str!("../scenes/lights-gallery.toml"),
-    include_str!("../scenes/brdf-row.toml"),
-    include_str!("../scenes/lambert-sphere.toml"),
-    include_str!("../scenes/tetrahedron.toml"),
-    include_str!("../scenes/sdf-shapes.toml"),
-    include_str!("../scenes/sdf-lit.toml"),
-    include_str!("../scenes/sdf-lipschitz.toml"),
-    include_str!("../scenes/interpenetrating.toml"),
-    include_str!("../scenes/railroad.toml"),
+    include_str!("../../scenes/cornell-box.toml"),
+    include_str!("../../scenes/cornell-glass.toml"),
+    include_str!("../../scenes/lights-gallery.toml"),
+    include_str!("../../scenes/brdf-row.toml"),
+    include_str!("../../scenes/lambert-sphere.toml"),
+    include_str!("../../scenes/tetrahedron.toml"),
+    include_str!("../../scenes/sdf-shapes.toml"),
+    include_str!("../../scenes/sdf-lit.toml"),
+    include_str!("../../scenes/sdf-lipschitz.toml"),
+    include_str!("../../scenes/interpenetrating.toml"),
+    include_str!("../../scenes/railroad.toml"),
 ];
 
 /// OBJ meshes the mutations start from.
 pub const OBJ_SEEDS: &[&str] = &[
-    include_str!("../scenes/meshes/cornell-box/large-box.obj"),
-    include_str!("../scenes/meshes/cornell-box/light.obj"),
+    include_str!("../../scenes/meshes/cornell-box/large-box.obj"),
+    include_str!("../../scenes/meshes/cornell-box/light.obj"),
     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvn 0 0 1\nf 1/1/1 2/2/1 3/2/1 4/1/1\n",
     "o a\nv -1 0 -1\nv 1 0 -1\nv 0 1 1\ng b\nv 0 -1 0\nf 1 2 3\nf -1 -2 -3\nf 1 2 4\n",
 ];

@@ -22,35 +22,42 @@ use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch5_reflection::world::RayQueries;
 
 use super::bvh8::Bvh8;
-use super::lanes::{owen_finish_lanes, RayData};
+use super::lanes::RayData;
 use super::level::Level;
 use super::shade8::{self, In8, Out8};
 use crate::ch5_reflection::light::area::AreaLight;
 
-/// The closest hit of `ray` in (0, t_max) with `level`'s instructions.
+/// The closest hit of `ray` in (0, t_max), with the instructions the
+/// tree was built for ([`Bvh8::level`]).
+///
+/// Every dispatcher of this file that takes a tree reads the level from
+/// the tree, never from its caller: `Bvh8::level` is a private field that
+/// only `Bvh8::build` sets, to a level [`Level::available`] said this CPU
+/// has, so no argument can send a CPU instructions it lacks.
 #[inline]
-pub fn closest(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    match level {
-        // SAFETY: a `Bvh8` holds only levels `Level::available` said this
-        // CPU has (`Bvh8::build` checks), and the function needs nothing
-        // else than those instructions.
+pub fn closest(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
+    match bvh.level() {
+        // SAFETY: `bvh.level()` is AVX-512 only if `Bvh8::build` found
+        // that this CPU has every feature `closest_avx512` enables (the
+        // list `Level::available` asks for), and the function needs
+        // nothing else.
         #[cfg(target_arch = "x86_64")]
         Level::Avx512 => unsafe { closest_avx512(bvh, ray, t_max) },
-        // SAFETY: as above.
+        // SAFETY: as above, for AVX2 and `closest_avx2`'s features.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { closest_avx2(bvh, ray, t_max) },
         _ => closest_lanes(bvh, ray, t_max),
     }
 }
 
-/// Whether anything is hit in (0, t_max), with `level`'s instructions.
+/// Whether anything is hit in (0, t_max), with the tree's instructions.
 #[inline]
-pub fn occluded(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    match level {
-        // SAFETY: as in `closest`.
+pub fn occluded(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
+    match bvh.level() {
+        // SAFETY: as in `closest`: the level is the tree's.
         #[cfg(target_arch = "x86_64")]
         Level::Avx512 => unsafe { occluded_avx512(bvh, ray, t_max) },
-        // SAFETY: as in `closest`.
+        // SAFETY: as in `closest`: the level is the tree's.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { occluded_avx2(bvh, ray, t_max) },
         _ => occluded_lanes(bvh, ray, t_max),
@@ -59,16 +66,16 @@ pub fn occluded(level: Level, bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
 
 /// [`closest`] in (0, ∞) for each of a round's `rays`, `hits[i]` for
 /// `rays[i]` (`hits` is emptied first): one dispatch and one traversal
-/// stack for the whole round, and the loop compiled with `level`'s
+/// stack for the whole round, and the loop compiled with the tree's
 /// instructions, so the per-ray call and set-up costs stay out of it.
-pub fn closest_all(level: Level, bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option<Hit>>) {
+pub fn closest_all(bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option<Hit>>) {
     hits.clear();
     let stack = &mut vec![(0u32, 0f32); bvh.stack_size()];
-    match level {
-        // SAFETY: as in `closest`.
+    match bvh.level() {
+        // SAFETY: as in `closest`: the level is the tree's.
         #[cfg(target_arch = "x86_64")]
         Level::Avx512 => unsafe { closest_all_avx512(bvh, rays, stack, hits) },
-        // SAFETY: as in `closest`.
+        // SAFETY: as in `closest`: the level is the tree's.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { closest_all_avx2(bvh, rays, stack, hits) },
         _ => {
@@ -88,12 +95,10 @@ pub fn closest_packets(bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option<Hit>>) {
     hits.clear();
     hits.resize(rays.len(), None);
     match bvh.level() {
-        // SAFETY: a `Bvh8` holds only levels `Level::available` said this
-        // CPU has (`Bvh8::build` checks), and the function needs nothing
-        // else than those instructions.
+        // SAFETY: as in `closest`: the level is the tree's.
         #[cfg(target_arch = "x86_64")]
         Level::Avx512 => unsafe { closest_packets_avx512(bvh, rays, hits) },
-        // SAFETY: as above.
+        // SAFETY: as in `closest`: the level is the tree's.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { closest_packets_avx2(bvh, rays, hits) },
         _ => closest_packets_lanes(bvh, rays, hits),
@@ -127,14 +132,14 @@ unsafe fn closest_packets_avx512(bvh: &Bvh8, rays: &[Ray], hits: &mut [Option<Hi
 /// [`occluded`] for each of a round's shadow rays `(ray, t_max)`,
 /// `blocked[i]` for `rays[i]` (`blocked` is emptied first), as
 /// [`closest_all`] does it.
-pub fn occluded_all(level: Level, bvh: &Bvh8, rays: &[(Ray, f32)], blocked: &mut Vec<bool>) {
+pub fn occluded_all(bvh: &Bvh8, rays: &[(Ray, f32)], blocked: &mut Vec<bool>) {
     blocked.clear();
     let stack = &mut vec![(0u32, 0f32); bvh.stack_size()];
-    match level {
-        // SAFETY: as in `closest`.
+    match bvh.level() {
+        // SAFETY: as in `closest`: the level is the tree's.
         #[cfg(target_arch = "x86_64")]
         Level::Avx512 => unsafe { occluded_all_avx512(bvh, rays, stack, blocked) },
-        // SAFETY: as in `closest`.
+        // SAFETY: as in `closest`: the level is the tree's.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { occluded_all_avx2(bvh, rays, stack, blocked) },
         _ => {
@@ -148,21 +153,30 @@ pub fn occluded_all(level: Level, bvh: &Bvh8, rays: &[(Ray, f32)], blocked: &mut
 
 impl RayQueries for Bvh8 {
     fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
-        closest(self.level, self, ray, t_max)
+        closest(self, ray, t_max)
     }
     fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
-        occluded(self.level, self, ray, t_max)
+        occluded(self, ray, t_max)
     }
     fn describe(&self) -> String {
         format!(
             "the fast engine's BVH, 8 wide ({} nodes, {} leaves; {} instructions)",
             self.nodes.len(),
             self.leaves.len(),
-            self.level.name()
+            self.level().name()
         )
     }
-    fn as_any(&self) -> Option<&dyn std::any::Any> {
-        Some(self)
+}
+
+impl RayQueries for std::sync::Arc<Bvh8> {
+    fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        closest(self, ray, t_max)
+    }
+    fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
+        occluded(self, ray, t_max)
+    }
+    fn describe(&self) -> String {
+        Bvh8::describe(self)
     }
 }
 
@@ -170,32 +184,6 @@ impl RayQueries for Bvh8 {
 pub fn best() -> Level {
     static BEST: std::sync::OnceLock<Level> = std::sync::OnceLock::new();
     *BEST.get_or_init(Level::detect)
-}
-
-/// [`owen_finish_lanes`] with the widest instructions this CPU has.
-#[inline]
-pub fn owen_finish(sobol: [u32; 4], seed: u32) -> [f32; 4] {
-    owen_finish_at(best(), sobol, seed)
-}
-
-/// [`owen_finish_lanes`] with `level`'s instructions (the portable path if
-/// this CPU lacks them).
-#[inline]
-pub fn owen_finish_at(level: Level, sobol: [u32; 4], seed: u32) -> [f32; 4] {
-    match level {
-        // SAFETY: only where `Level::available` says the CPU has AVX2.
-        #[cfg(target_arch = "x86_64")]
-        Level::Avx2 | Level::Avx512 if level.available() => unsafe {
-            owen_finish_avx2(sobol, seed)
-        },
-        _ => owen_finish_lanes(sobol, seed),
-    }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma,bmi1,bmi2,lzcnt,popcnt")]
-unsafe fn owen_finish_avx2(sobol: [u32; 4], seed: u32) -> [f32; 4] {
-    owen_finish_lanes(sobol, seed)
 }
 
 /// One vertex of eight paths ([`shade8::shade8`]) with `level`'s

@@ -6,34 +6,8 @@
 
 use sobol_burley::parts::{hash, owen_scramble_rev};
 
+use crate::ch6_global_illumination::sampler::{byte_tables, owen_dim};
 use crate::core::sampling::mix64;
-
-/// The crate's per-dimension scramble constants of dimension set 0.
-const DIMENSION: [u32; 4] = [0x912f69ba, 0x174f18ab, 0x691e72ca, 0xb40cc1b8];
-
-/// The last steps of the crate's `sample_4d` for dimension `d` of a Sobol
-/// point `n` (reversed bits), with `s` the seed times the crate's
-/// multiplier: the Owen scramble with the dimension's own seed, the bits
-/// put back in order, the conversion to [0, 1).
-#[inline(always)]
-pub fn owen_dim(mut n: u32, s: u32, d: usize) -> f32 {
-    // The crate's `hash_int4` of the dimension's scramble seed.
-    let mut h = s ^ DIMENSION[d] ^ 0xe6fe3beb;
-    h ^= h >> 16;
-    h = h.wrapping_mul(0x7feb352d);
-    h ^= h >> 15;
-    h = h.wrapping_mul(0x846ca68b);
-    h ^= h >> 16;
-    // Its `owen_scramble_int4_rev`.
-    n ^= n.wrapping_mul(0x3d20adea);
-    n = n.wrapping_add(h);
-    n = n.wrapping_mul((h >> 16) | 1);
-    n ^= n.wrapping_mul(0x05526c56);
-    n ^= n.wrapping_mul(0x53a22864);
-    let n = n.reverse_bits();
-    let u = f32::from_bits((n >> 9) | 0x3f800000) - 1.0;
-    u.min(1.0 - f32::EPSILON / 2.0)
-}
 
 /// Dimensions 4 `group` .. 4 `group` + 4 of Sobol samples `sample[j]` in
 /// pixels with scramble seeds `pixel_scramble[j]`, for eight paths j:
@@ -159,24 +133,6 @@ pub fn chunk_tables() -> &'static [[[u32; 8]; 4]; 6] {
                 for d in 0..4 {
                     table[d][v as usize] = point[d];
                 }
-            }
-        }
-        t
-    })
-}
-
-/// For each byte of a reversed sample index (bits 31..24, then 23..16;
-/// the crate uses the top 16), the XOR of the direction numbers of its set
-/// bits, for all 256 values: dimension set 0's Sobol point of any index is
-/// then `t[0][top byte] ^ t[1][next byte]`.
-pub fn byte_tables() -> &'static [[[u32; 4]; 256]; 2] {
-    static TABLES: std::sync::OnceLock<Box<[[[u32; 4]; 256]; 2]>> = std::sync::OnceLock::new();
-    TABLES.get_or_init(|| {
-        let mut t = Box::new([[[0u32; 4]; 256]; 2]);
-        for (k, table) in t.iter_mut().enumerate() {
-            for (b, entry) in table.iter_mut().enumerate() {
-                let rev = (b as u32) << (24 - 8 * k);
-                *entry = sobol_burley::parts::sobol_int4_rev(rev, 0).into();
             }
         }
         t

@@ -33,13 +33,15 @@ pub struct Bvh8 {
     pub(super) leaves: Vec<Leaf8>,
     pub(super) root: u32,
     /// Inner-node levels on the longest root-to-leaf path.
-    levels: usize,
+    depth: usize,
     /// The triangles one by one (`tris[8 l + lane]`) for the rare lanes.
     tris: Vec<SoaTriangle>,
     /// `original[8 l + lane]`: the triangle's index in the build list.
     pub(super) original: Vec<u32>,
-    /// Which vector instructions the queries use.
-    pub(super) level: Level,
+    /// Which vector instructions the queries use: private, and set only by
+    /// [`Bvh8::build`] to a level this CPU has ([`super::simd`]'s
+    /// dispatchers rely on it).
+    level: Level,
 }
 
 // ANCHOR: open_rooms
@@ -166,14 +168,10 @@ impl Bvh8 {
             nodes: Vec::new(),
             leaves: Vec::new(),
             root: 0,
-            levels: 0,
+            depth: 0,
             tris: Vec::new(),
             original: Vec::new(),
-            level: if level.available() {
-                level
-            } else {
-                Level::Portable
-            },
+            level: level.or_portable(),
         };
         b.root = b.collapse((&bvh2, &counts, &boxes, room(&bvh2)), 0, tris, 1);
         Some(b)
@@ -202,8 +200,8 @@ impl Bvh8 {
     }
 
     /// Inner-node levels on the longest path.
-    pub fn levels(&self) -> usize {
-        self.levels
+    pub fn depth(&self) -> usize {
+        self.depth
     }
 
     /// The vector instructions its queries use.
@@ -213,7 +211,7 @@ impl Bvh8 {
 
     /// Entries a traversal stack needs.
     pub fn stack_size(&self) -> usize {
-        (W - 1) * self.levels + 1
+        (W - 1) * self.depth + 1
     }
 
     fn collapse(
@@ -226,7 +224,7 @@ impl Bvh8 {
         if counts[n] as usize <= LEAF_SIZE {
             return self.leaf(&triangles_under(bvh2, n), tris);
         }
-        self.levels = self.levels.max(level);
+        self.depth = self.depth.max(level);
         let children = open_children(bvh2, counts, n, W, LEAF_SIZE);
         let index = self.nodes.len();
         self.nodes.push(Node8 {

@@ -1,6 +1,11 @@
 //! Which vector instructions the fast engine's ray queries use, chosen
 //! at run time.
 
+thread_local! {
+    /// Levels [`Level::pretend_lacking`] hides on this thread (a bit each).
+    static LACKING: std::cell::Cell<u8> = const { std::cell::Cell::new(0) };
+}
+
 /// A set of vector instructions.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Level {
@@ -30,6 +35,34 @@ impl Level {
     pub fn available(self) -> bool {
         static HAS: std::sync::OnceLock<[bool; 3]> = std::sync::OnceLock::new();
         HAS.get_or_init(|| Level::ALL.map(Level::ask_cpu))[self as usize]
+    }
+
+    /// This level if the CPU has it (and [`Level::pretend_lacking`] does
+    /// not hide it on this thread), else the portable one: what a tree is
+    /// built for.
+    pub fn or_portable(self) -> Level {
+        let hidden = LACKING.with(|l| l.get()) >> self as u8 & 1 == 1;
+        match self.available() && !hidden {
+            true => self,
+            false => Level::Portable,
+        }
+    }
+
+    /// Runs `f` as if this CPU lacked `levels`, for what [`Level::or_portable`]
+    /// decides on this thread: how a test sees that a tree asked for
+    /// instructions the CPU lacks is built for the portable ones. It can
+    /// only take levels away, never claim one the CPU lacks.
+    pub fn pretend_lacking<R>(levels: &[Level], f: impl FnOnce() -> R) -> R {
+        let mask = levels.iter().fold(0u8, |m, l| m | 1 << *l as u8);
+        let before = LACKING.with(|l| l.replace(l.get() | mask));
+        struct Restore(u8);
+        impl Drop for Restore {
+            fn drop(&mut self) {
+                LACKING.with(|l| l.set(self.0));
+            }
+        }
+        let _restore = Restore(before);
+        f()
     }
 
     /// Whether this CPU has the level's instructions, asked of the CPU.

@@ -1,0 +1,193 @@
+//! Making it fast: the engine `ch6`, `raystep` and the terminal UI use
+//! unless told `--engine readable`. It lives beside the chapters, not in
+//! them: it answers chapter 6's [`PathEngine`] questions, and no lesson
+//! file imports it. This module and its [`simd`] dispatch are the only
+//! place with `unsafe` code.
+//!
+//! Two things change. What answers the ray queries: the readable engine
+//! asks chapter 3's tree, collapsed four-wide, with glam's four-lane
+//! vectors; the fast engine asks an eight-wide tree ([`bvh8`]) whose box
+//! and triangle tests run over eight lanes at once, compiled for the
+//! widest vector instructions the CPU has ([`simd`]). Both compute each
+//! lane with the same arithmetic in the same order, so they find the same
+//! hits. And the path loop: on diffuse scenes with MIS (the benchmark's)
+//! the fast engine extends thousands of paths a bounce at a time and
+//! shades their hits eight at once ([`wave`], [`shade8`]), with the
+//! lesson's formulas and the lesson's random numbers, so it follows the
+//! same paths as the lesson's
+//! [`trace_path`](crate::ch6_global_illumination::integrator::trace_path) to the last bits of a
+//! sine; elsewhere it runs `trace_path` itself over the eight-wide tree
+//! and makes the readable engine's images byte for byte. A test checks
+//! both, and that the fast engine makes the same bytes on every SIMD path.
+//!
+//! Scenes with SDFs are marched as chapter 4 teaches either way; only
+//! their triangles go through the eight-wide tree.
+
+pub mod bench;
+pub mod bvh8;
+pub mod lanes;
+pub mod level;
+pub mod packet;
+pub mod pick8;
+pub mod shade8;
+#[allow(unsafe_code)]
+pub mod simd;
+pub mod sobol8;
+pub mod starts;
+pub mod wave;
+
+use std::sync::Arc;
+
+use glam::Vec3;
+
+use crate::ch5_reflection::world::{Queries, World};
+use crate::ch6_global_illumination::engine::{
+    trace_row, EngineChoice, PassSpec, PathEngine, RowSums,
+};
+use crate::ch6_global_illumination::integrator::{PathSettings, PathStats};
+use crate::ch6_global_illumination::layers::LAYER_SLOTS;
+use crate::scene::Scene;
+
+use bvh8::Bvh8;
+use level::Level;
+
+/// The fast engine, as a front end chooses it (`--engine fast`, the
+/// default of `ch6`, `raystep` and the terminal UI).
+pub const FAST: EngineChoice = EngineChoice {
+    name: "fast",
+    make: |scene| Box::new(FastEngine::new(scene)),
+};
+
+/// The engine a front end names on its command line: `fast` or
+/// `readable`.
+pub fn choice(name: &str) -> Option<EngineChoice> {
+    [FAST, EngineChoice::READABLE]
+        .into_iter()
+        .find(|e| e.name == name)
+}
+
+/// The fast engine: the world's ray queries answered by the eight-wide
+/// tree, and the wavefront loop for the scenes it covers
+/// ([`wave::supports`]); elsewhere the lesson's row loop over that tree.
+pub struct FastEngine {
+    world: World,
+    /// The world's tree (`None`: no triangles), shared with the world's
+    /// queries.
+    tree: Option<Arc<Bvh8>>,
+}
+
+impl FastEngine {
+    /// The fast engine for `scene`, with the CPU's best instructions.
+    pub fn new(scene: &Scene) -> FastEngine {
+        FastEngine::at(scene, simd::best())
+    }
+
+    /// The fast engine for `scene` with `level`'s instructions (the
+    /// portable ones if this CPU lacks them).
+    pub fn at(scene: &Scene, level: Level) -> FastEngine {
+        let mut tree = None;
+        let world = World::with_queries(scene, |tris| {
+            let built = Arc::new(Bvh8::build(tris, level)?);
+            tree = Some(built.clone());
+            Some(Box::new(built) as Box<Queries>)
+        });
+        FastEngine { world, tree }
+    }
+
+    /// Its eight-wide tree, if the scene has triangles.
+    pub fn tree(&self) -> Option<&Bvh8> {
+        self.tree.as_deref()
+    }
+
+    /// The tree, if the wavefront loop traces `settings`' paths here.
+    fn wave_tree(&self, settings: &PathSettings) -> Option<&Bvh8> {
+        self.tree()
+            .filter(|_| wave::supports(&self.world, settings))
+    }
+}
+
+impl PathEngine for FastEngine {
+    fn world(&self) -> &World {
+        &self.world
+    }
+
+    fn trace_row(&self, pass: &PassSpec, row: RowSums<'_>, stats: &mut PathStats) {
+        match self.wave_tree(pass.settings) {
+            Some(tree) => wave_row(&self.world, tree, pass, row, stats),
+            None => trace_row(&self.world, pass, row, stats),
+        }
+    }
+
+    fn notes(&self, settings: &PathSettings) -> (Vec<String>, Vec<String>) {
+        match (self.tree(), self.wave_tree(settings)) {
+            (_, Some(_)) => (
+                vec![
+                    "the fast engine's wavefront loop: paths extended a bounce at a time, eight \
+                     hits shaded at once"
+                        .into(),
+                ],
+                Vec::new(),
+            ),
+            (Some(_), None) => (
+                Vec::new(),
+                vec![
+                    "the wavefront loop: it covers diffuse surfaces with MIS and no SDFs; the \
+                     lesson's path loop runs instead"
+                        .into(),
+                ],
+            ),
+            (None, None) => (Vec::new(), Vec::new()),
+        }
+    }
+}
+
+/// One row's samples through the wavefront loop, a few thousand paths at
+/// a time; each pixel's samples are then added in order, as the
+/// one-path-at-a-time loop adds them. With layers each path keeps its
+/// light per layer; without, one sum.
+fn wave_row(world: &World, tree: &Bvh8, pass: &PassSpec, row: RowSums<'_>, stats: &mut PathStats) {
+    let RowSums {
+        y,
+        sum,
+        sum_sq,
+        mut layers,
+    } = row;
+    let per_pixel = pass.count as usize;
+    let chunk = (4096 / per_pixel).max(1);
+    for x0 in (0..sum.len()).step_by(chunk) {
+        let x1 = (x0 + chunk).min(sum.len());
+        let starts = || {
+            let pixels = (x0..x1, y);
+            let samples = (pass.first, pass.count);
+            starts::camera_starts(pass.camera, tree.level(), pass.sampler, pixels, samples)
+                .into_iter()
+        };
+        let n = (x1 - x0) * per_pixel;
+        match layers.as_deref_mut() {
+            None => {
+                let mut outs = vec![Vec3::ZERO; n];
+                wave::trace_paths(world, tree, starts(), pass.settings, &mut outs, stats);
+                for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
+                    for l in ls {
+                        sum[x] += *l;
+                        sum_sq[x] += *l * *l;
+                    }
+                }
+            }
+            Some(layers) => {
+                let mut outs = vec![[Vec3::ZERO; LAYER_SLOTS]; n];
+                wave::trace_paths(world, tree, starts(), pass.settings, &mut outs, stats);
+                for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
+                    for path in ls {
+                        for (acc, v) in layers[x].iter_mut().zip(path) {
+                            *acc += *v;
+                        }
+                        let l: Vec3 = path.iter().sum();
+                        sum[x] += l;
+                        sum_sq[x] += l * l;
+                    }
+                }
+            }
+        }
+    }
+}
