@@ -186,13 +186,13 @@ impl Estimator {
     ) -> Vec3 {
         let Some(it) = world.intersect(ray) else {
             let sky = world.lights.environment_radiance(ray.dir);
-            c.note(ShadingEvent::Escaped { sky }); // ANCHOR: note (off the listing)
+            c.note(ShadingEvent::Escaped { sky }); // tell a listener (the inspector)
             return sky;
         };
         let wo = -ray.dir;
         let bsdf = &world.bsdfs[it.material];
         let mut l = world.emitted(&it, wo);
-        c.note(ShadingEvent::hit(l, bsdf.is_delta())); // ANCHOR: note (off the listing)
+        c.note(ShadingEvent::hit(l, bsdf.is_delta())); // tell a listener (the inspector)
         if bsdf.is_delta() {
             // An ideal mirror: follow its one direction, a bounded number of times.
             if depth >= self.max_mirror_bounces {
@@ -270,7 +270,7 @@ impl Estimator {
             return None;
         }
         if !self.visible(at, ls.wi, ls.dist, c) {
-            c.note(ShadingEvent::shadowed(i)); // ANCHOR: note (off the listing)
+            c.note(ShadingEvent::shadowed(i)); // tell a listener (the inspector)
             return None; // in shadow
         }
         let weight = if light.is_delta() || self.strategy == Strategy::Light {
@@ -279,7 +279,7 @@ impl Estimator {
             power_heuristic(ls.pdf, at.bsdf.pdf(at.wo_local, wi_local))
         };
         let term = finite(f * ls.li * cos * (weight / ls.pdf), c);
-        c.note(ShadingEvent::light(i, term, weight)); // ANCHOR: note (off the listing)
+        c.note(ShadingEvent::light(i, term, weight)); // tell a listener (the inspector)
         term
     }
     // ANCHOR_END: light_term
@@ -321,7 +321,7 @@ impl Estimator {
             1.0
         };
         let term = finite(f * le * cos * (weight / pdf), c);
-        c.note(ShadingEvent::found(light, term, weight)); // ANCHOR: note (off the listing)
+        c.note(ShadingEvent::found(light, term, weight)); // tell a listener (the inspector)
         term
     }
     // ANCHOR_END: direction_term

@@ -157,13 +157,13 @@ pub fn trace_path(
             break;
         };
         path.scatter(&v, k, &step);
-        out.layers.note(step.event(&v, path.beta)); // ANCHOR: note (off the listing)
+        out.layers.note(step.event(&v, path.beta)); // tell a listener (the inspector)
 
         // 4. Russian roulette: survive with probability q, then divide by q.
         if k + 1 >= settings.rr_min_bounce {
             let q = path.beta.max_element().min(1.0);
             let dies = sampler.get1() >= q;
-            out.layers.note(PathEvent::Roulette { q, survived: !dies }); // ANCHOR: note (off the listing)
+            out.layers.note(PathEvent::Roulette { q, survived: !dies }); // tell a listener (the inspector)
             if dies {
                 break;
             }

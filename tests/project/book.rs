@@ -259,3 +259,56 @@ fn the_colon_check_catches_a_listing_that_moved() {
     let at_the_end = "And then:\n";
     assert_eq!(colon_problems("p", at_the_end).len(), 1);
 }
+
+/// The book's listings and the files agree line for line: mdBook drops
+/// every line that names an anchor, so a line of code may never carry
+/// one (that hid grader guards and counters from the listings once). A
+/// line that mentions `ANCHOR` must be an anchor marker and nothing else.
+#[test]
+fn no_code_line_is_hidden_from_a_listing() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut hidden = Vec::new();
+    let mut markers = 0;
+    let mut stack = vec![root.join("src"), root.join("chapters")];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let p = entry.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+                continue;
+            }
+            if p.extension().is_none_or(|e| e != "rs") {
+                continue;
+            }
+            let text = std::fs::read_to_string(&p).unwrap();
+            for (i, line) in text.lines().enumerate() {
+                if !line.contains("ANCHOR") {
+                    continue;
+                }
+                let t = line.trim();
+                let name = t
+                    .strip_prefix("// ANCHOR: ")
+                    .or_else(|| t.strip_prefix("// ANCHOR_END: "));
+                match name {
+                    Some(n)
+                        if !n.is_empty()
+                            && n.chars()
+                                .all(|c| c.is_alphanumeric() || c == '_' || c == '-') =>
+                    {
+                        markers += 1
+                    }
+                    _ => hidden.push(format!(
+                        "{}:{}: {t}",
+                        p.strip_prefix(root).unwrap().display(),
+                        i + 1
+                    )),
+                }
+            }
+        }
+    }
+    assert!(markers > 100, "{markers} anchor markers");
+    assert!(
+        hidden.is_empty(),
+        "lines hidden from the book's listings: {hidden:#?}"
+    );
+}
