@@ -12,7 +12,8 @@ use crate::ch3_ray_triangle::triangle::gamma;
 use crate::ch3_ray_triangle::watertight_fast::WatertightRay;
 use crate::ch3_ray_triangle::wide_bvh::BoxRay;
 
-/// Children per node and triangles per leaf.
+/// The lane width: children per node, triangles per leaf, paths shaded
+/// together.
 pub const W: usize = 8;
 /// Most triangles in a leaf.
 pub(super) const LEAF_SIZE: usize = 8;

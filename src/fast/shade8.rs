@@ -19,8 +19,24 @@ use std::f32::consts::{FRAC_1_PI, PI};
 
 use crate::ch3_ray_triangle::spawn::{FLOAT_SCALE, INT_SCALE, ORIGIN, STOP_SCALE};
 
-/// Lanes shaded together.
-pub const L: usize = 8;
+use super::lanes::W;
+
+/// A vertex's random numbers by name: where each sits in [`In8::u`], in
+/// the order the lesson's `trace_path` draws them.
+pub mod dim {
+    /// Which light to sample.
+    pub const CHOOSE: usize = 0;
+    /// The point on that light (two numbers).
+    pub const LIGHT: [usize; 2] = [1, 2];
+    /// Which lobe of the BSDF (a diffuse vertex leaves it unread).
+    pub const LOBE: usize = 3;
+    /// The next direction (two numbers).
+    pub const DIRECTION: [usize; 2] = [4, 5];
+    /// Russian roulette.
+    pub const ROULETTE: usize = 6;
+    /// Numbers per vertex (the last one unread).
+    pub const PER_VERTEX: usize = 8;
+}
 
 /// What the lanes read: per lane the ray, the hit, the material, the
 /// throughput, the vertex's random numbers and the light sample's
@@ -29,32 +45,31 @@ pub const L: usize = 8;
 #[derive(Default)]
 pub struct In8 {
     /// The ray's unit direction.
-    pub d: [[f32; L]; 3],
+    pub d: [[f32; W]; 3],
     /// The hit point.
-    pub p: [[f32; L]; 3],
+    pub p: [[f32; W]; 3],
     /// The surface's unit outward normal.
-    pub n: [[f32; L]; 3],
+    pub n: [[f32; W]; 3],
     /// The diffuse reflectance ρ.
-    pub rho: [[f32; L]; 3],
+    pub rho: [[f32; W]; 3],
     /// The throughput β on arrival.
-    pub beta: [[f32; L]; 3],
-    /// The vertex's eight numbers: u_choose, u_light (2), u_lobe, u_dir
-    /// (2), u_roulette and one unused, as the lesson's loop draws them.
-    pub u: [[f32; L]; 8],
+    pub beta: [[f32; W]; 3],
+    /// The vertex's numbers, `u[dim][lane]` (see [`dim`]).
+    pub u: [[f32; W]; dim::PER_VERTEX],
     /// The chosen light triangle's corners a, b, c: `tri[corner][axis]`.
-    pub tri: [[[f32; L]; 3]; 3],
+    pub tri: [[[f32; W]; 3]; 3],
     /// Its unit normal.
-    pub n_light: [[f32; L]; 3],
+    pub n_light: [[f32; W]; 3],
     /// The position inside the chosen triangle, rescaled from u_light.x.
-    pub ux: [f32; L],
+    pub ux: [f32; W],
     /// 1 / the light's area.
-    pub inv_area: [f32; L],
+    pub inv_area: [f32; W],
     /// The probability of having chosen that light.
-    pub p_choose: [f32; L],
+    pub p_choose: [f32; W],
     /// The light's radiance.
-    pub le: [[f32; L]; 3],
+    pub le: [[f32; W]; 3],
     /// Whether the light emits from both faces.
-    pub two_sided: [bool; L],
+    pub two_sided: [bool; W],
     /// Whether roulette is played at this vertex.
     pub roulette: bool,
 }
@@ -63,43 +78,37 @@ pub struct In8 {
 #[derive(Default)]
 pub struct Out8 {
     /// wo.z ≠ 0: the ray is not in the surface's plane.
-    pub valid: [bool; L],
+    pub valid: [bool; W],
     /// The normal on the side the path arrived from.
-    pub n_side: [[f32; L]; 3],
+    pub n_side: [[f32; W]; 3],
     /// A shadow ray is cast (the light sample exists and f ≠ 0).
-    pub shadow: [bool; L],
-    /// The unit direction to the light's point (world).
-    pub wi_light: [[f32; L]; 3],
-    /// The distance to it.
-    pub dist: [f32; L],
+    pub shadow: [bool; W],
     /// The light it brings if nothing blocks it: β f Li |cos| w / pdf.
-    pub contribution: [[f32; L]; 3],
+    pub contribution: [[f32; W]; 3],
     /// A next direction exists (pdf > 0, weight finite and non-zero).
-    pub step: [bool; L],
-    /// The next direction (world).
-    pub dir: [[f32; L]; 3],
+    pub step: [bool; W],
     /// Its pdf.
-    pub pdf: [f32; L],
+    pub pdf: [f32; W],
     /// β after the step and roulette.
-    pub beta: [[f32; L]; 3],
+    pub beta: [[f32; W]; 3],
     /// Whether the path survived roulette.
-    pub survives: [bool; L],
+    pub survives: [bool; W],
     /// Whether the next ray exists (`World::spawn` gives one).
-    pub next_ok: [bool; L],
+    pub next_ok: [bool; W],
     /// Its origin, off the surface.
-    pub next_o: [[f32; L]; 3],
+    pub next_o: [[f32; W]; 3],
     /// Its unit direction.
-    pub next_d: [[f32; L]; 3],
+    pub next_d: [[f32; W]; 3],
     /// Whether the shadow ray must be traced (area lights)...
-    pub shadow_trace: [bool; L],
+    pub shadow_trace: [bool; W],
     /// ... or its ends meet, so nothing blocks it (neither: blocked).
-    pub shadow_free: [bool; L],
+    pub shadow_free: [bool; W],
     /// The shadow ray's origin.
-    pub shadow_o: [[f32; L]; 3],
+    pub shadow_o: [[f32; W]; 3],
     /// Its unit direction.
-    pub shadow_d: [[f32; L]; 3],
+    pub shadow_d: [[f32; W]; 3],
     /// How far it is traced.
-    pub shadow_t: [f32; L],
+    pub shadow_t: [f32; W],
 }
 
 /// Cosine and sine of φ in [-π/4, π/4] (Cephes' minimax polynomials,
@@ -120,7 +129,7 @@ pub fn sin_cos_quarter(phi: f32) -> (f32, f32) {
 /// branches.
 #[inline(always)]
 pub fn shade8(x: &In8, o: &mut Out8) {
-    for j in 0..L {
+    for j in 0..W {
         let (nx, ny, nz) = (x.n[0][j], x.n[1][j], x.n[2][j]);
         // Frame::from_normal (Duff et al.).
         let sign = 1.0f32.copysign(nz);
@@ -153,7 +162,7 @@ pub fn shade8(x: &In8, o: &mut Out8) {
         // The light sample: a uniform point y on the chosen triangle.
         let sq = x.ux[j].sqrt();
         let b1 = 1.0 - sq;
-        let b2 = x.u[2][j] * sq;
+        let b2 = x.u[dim::LIGHT[1]][j] * sq;
         let b0 = 1.0 - b1 - b2;
         let mut to = [0.0; 3];
         for a in 0..3 {
@@ -201,15 +210,13 @@ pub fn shade8(x: &In8, o: &mut Out8) {
         };
         let cos_i = wil[2].abs();
         for a in 0..3 {
-            o.wi_light[a][j] = wi[a];
             o.contribution[a][j] = beta[a] * f[a] * x.le[a][j] * cos_i * (weight / pdf);
         }
-        o.dist[j] = dist;
 
         // ANCHOR: next_direction
         // The next direction: cosine-weighted (concentric disk, lifted).
-        let ox = 2.0 * x.u[4][j] - 1.0;
-        let oy = 2.0 * x.u[5][j] - 1.0;
+        let ox = 2.0 * x.u[dim::DIRECTION[0]][j] - 1.0;
+        let oy = 2.0 * x.u[dim::DIRECTION[1]][j] - 1.0;
         let wide = ox.abs() > oy.abs();
         let (r_disk, ratio) = if wide { (ox, oy / ox) } else { (oy, ox / oy) };
         let (cphi, sphi) = sin_cos_quarter(0.25 * PI * ratio);
@@ -232,9 +239,7 @@ pub fn shade8(x: &In8, o: &mut Out8) {
         o.step[j] = o.valid[j] & (step_pdf > 0.0) & rho_ok;
         // ANCHOR_END: next_direction
         o.pdf[j] = step_pdf;
-        for a in 0..3 {
-            o.dir[a][j] = s[a] * dx + t[a] * dy + n[a] * z;
-        }
+        let dir: [f32; 3] = std::array::from_fn(|a| s[a] * dx + t[a] * dy + n[a] * z);
         // Throughput and Russian roulette.
         let nb = [
             beta[0] * x.rho[0][j],
@@ -242,7 +247,7 @@ pub fn shade8(x: &In8, o: &mut Out8) {
             beta[2] * x.rho[2][j],
         ];
         let q = max_element(nb).min(1.0);
-        let dies = x.roulette & (x.u[6][j] >= q);
+        let dies = x.roulette & (x.u[dim::ROULETTE][j] >= q);
         o.survives[j] = !dies;
         for a in 0..3 {
             o.beta[a][j] = if x.roulette { nb[a] / q } else { nb[a] };
@@ -250,7 +255,7 @@ pub fn shade8(x: &In8, o: &mut Out8) {
 
         // The two rays leaving this vertex, as `World::spawn` and
         // `World::unoccluded` make them.
-        let next = spawn(p, n, [o.dir[0][j], o.dir[1][j], o.dir[2][j]]);
+        let next = spawn(p, n, dir);
         o.next_ok[j] = next.ok;
         for a in 0..3 {
             o.next_o[a][j] = next.origin[a];

@@ -8,8 +8,8 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::render::camera_sample;
 use crate::ch6_global_illumination::sampler::{PathSampler, SamplerKind};
 
+use super::lanes::W;
 use super::level::Level;
-use super::shade8::L;
 
 /// The camera rays and samplers of samples `first .. first + count` of
 /// pixels `xs` of row `y`, in that order: what chapter 6's `camera_sample`
@@ -26,7 +26,7 @@ pub fn camera_starts(
     (xs, y): (std::ops::Range<usize>, usize),
     (first, count): (u32, u32),
 ) -> Vec<(Ray, PathSampler)> {
-    if count < L as u32 {
+    if count < W as u32 {
         return across_pixels(camera, level, (kind, seed), (xs, y), (first, count));
     }
     let mut starts = Vec::with_capacity(xs.len() * count as usize);
@@ -36,17 +36,17 @@ pub fn camera_starts(
             |sampler: PathSampler| camera_sample(camera, (x as u32, y as u32), |_| sampler);
         let mut s = first;
         while s < first + count {
-            if s + L as u32 > first + count {
+            if s + W as u32 > first + count {
                 // The last few samples of the pixel.
                 let (sampler, ray) = one_by_one(PathSampler::new(kind, seed, pixel, s as u64));
                 starts.push((ray, sampler));
                 s += 1;
                 continue;
             }
-            let samplers: [PathSampler; L] =
+            let samplers: [PathSampler; W] =
                 std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
-            s += L as u32;
-            eight_starts((camera, level), ([x; L], y), samplers, &mut starts);
+            s += W as u32;
+            eight_starts((camera, level), ([x; W], y), samplers, &mut starts);
         }
     }
     starts
@@ -76,13 +76,13 @@ fn across_pixels(
     };
     let mut left = total;
     while left > 0 {
-        if left < L {
+        if left < W {
             // The last few.
             starts.extend(all.by_ref().map(one_by_one));
             break;
         }
-        left -= L;
-        let at: [(usize, u32); L] = std::array::from_fn(|_| all.next().unwrap_or((0, 0)));
+        left -= W;
+        let at: [(usize, u32); W] = std::array::from_fn(|_| all.next().unwrap_or((0, 0)));
         eight_starts(
             (camera, level),
             (at.map(|(x, _)| x), y),
@@ -100,8 +100,8 @@ fn across_pixels(
 #[inline(always)]
 fn eight_starts(
     (camera, level): (&Camera, Level),
-    (xs, y): ([usize; L], usize),
-    samplers: [PathSampler; L],
+    (xs, y): ([usize; W], usize),
+    samplers: [PathSampler; W],
     starts: &mut Vec<(Ray, PathSampler)>,
 ) {
     let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
@@ -126,8 +126,8 @@ fn eight_starts(
 /// [`sobol_groups8_at`](super::simd::sobol_groups8_at) needs to draw for them.
 pub(super) fn sobol_lanes<'a>(
     sampler: impl Fn(usize) -> &'a PathSampler,
-) -> Option<([u32; L], [u64; L])> {
-    let index: [Option<u32>; L] = std::array::from_fn(|j| sampler(j).sobol_index());
+) -> Option<([u32; W], [u64; W])> {
+    let index: [Option<u32>; W] = std::array::from_fn(|j| sampler(j).sobol_index());
     index.iter().all(Option::is_some).then(|| {
         let sample = std::array::from_fn(|j| index[j].unwrap_or(0));
         (sample, std::array::from_fn(|j| sampler(j).pixel_scramble()))

@@ -46,8 +46,9 @@ use crate::ch6_global_illumination::sampler::PathSampler;
 use crate::ch6_global_illumination::vertex::Vertex;
 
 use super::bvh8::Bvh8;
+use super::lanes::W;
 use super::level::Level;
-use super::shade8::{In8, Out8, L};
+use super::shade8::{dim, In8, Out8};
 use super::starts::sobol_lanes;
 
 /// Whether the wavefront loop renders `world` with `settings` exactly as
@@ -78,9 +79,61 @@ struct Shadows {
     light: Vec<(u32, Vec3)>,
 }
 
+/// What a round of the loop keeps in its queues (allocated once, for as
+/// many paths as start).
+struct Queues {
+    /// The paths still going (indices into `lanes`, which never move), in
+    /// order.
+    live: Vec<u32>,
+    /// Those that go on past this round.
+    next: Vec<u32>,
+    /// The live paths' rays, and the closest hit the tree found for each.
+    rays: Vec<Ray>,
+    found: Vec<Option<Hit>>,
+    /// The hits of up to eight paths waiting to be shaded together.
+    ids: Vec<u32>,
+    its: Vec<Interaction>,
+    /// The round's shadow rays, and which of them something blocks.
+    shadows: Shadows,
+    blocked: Vec<bool>,
+}
+
+impl Queues {
+    fn new(n: usize) -> Queues {
+        Queues {
+            live: (0..n as u32).collect(),
+            next: Vec::with_capacity(n),
+            rays: Vec::with_capacity(n),
+            found: Vec::with_capacity(n),
+            ids: Vec::with_capacity(W),
+            its: Vec::with_capacity(W),
+            // At most one shadow ray per path per round.
+            shadows: Shadows {
+                rays: Vec::with_capacity(n),
+                light: Vec::with_capacity(n),
+            },
+            blocked: Vec::with_capacity(n),
+        }
+    }
+}
+
+/// One round: the bounce count k of the light its vertices scatter, and
+/// what the settings say about it.
+#[derive(Clone, Copy)]
+struct Round {
+    k: u32,
+    /// Whether Russian roulette plays at its vertices.
+    roulette: bool,
+    /// Whether its paths end at the bounce limit instead (and whether
+    /// those count as cut, without `--max-bounces`).
+    over_limit: bool,
+    count_cut: bool,
+}
+
 /// Traces one path per (camera ray, sampler) of `starts`, adding path i's
 /// light to `outs[i]` (which must hold one entry per start): one sum, or
-/// one per bounce layer.
+/// one per bounce layer. Each round extends every live path by one
+/// bounce, in three phases: closest hits, shading, shadow rays.
 pub fn trace_paths<C: Contributions>(
     world: &World,
     tree: &Bvh8,
@@ -99,96 +152,101 @@ pub fn trace_paths<C: Contributions>(
         })
         .collect();
     stats.paths += lanes.len() as u64;
-    // The hits of up to eight paths waiting to be shaded together.
-    let (mut ids, mut its) = (Vec::with_capacity(L), Vec::with_capacity(L));
-    // At most one shadow ray per path per round: room for all from the start.
-    let mut shadows = Shadows {
-        rays: Vec::with_capacity(lanes.len()),
-        light: Vec::with_capacity(lanes.len()),
-    };
-    // A round's rays and what the tree answers for them.
-    let mut rays: Vec<Ray> = Vec::with_capacity(lanes.len());
-    let mut found: Vec<Option<Hit>> = Vec::with_capacity(lanes.len());
-    let mut blocked: Vec<bool> = Vec::with_capacity(lanes.len());
-    let level = tree.level();
-    let emissive: Vec<bool> = world.materials.iter().map(|m| m.is_emissive()).collect();
-    let mut shade = Shade {
-        world,
-        level,
-        input: Box::default(),
-        o: Box::default(),
-        choose: !matches!(world.lights.lights.as_slice(), [Light::Area(_)]),
-    };
-    // The paths still going (indices into `lanes`, which never move), in
-    // order, and those that go on past this round.
-    let mut live: Vec<u32> = (0..lanes.len() as u32).collect();
-    let mut next: Vec<u32> = Vec::with_capacity(lanes.len());
+    let mut shade = Shade::new(world, tree.level());
+    let mut q = Queues::new(lanes.len());
     let mut k = 0u32;
-    while !live.is_empty() {
-        // 1. Closest hits; emission found; paths that leave or end. Every
-        //    eight hits to shade are shaded at once (2.), while they are
-        //    near: each path's light is still added in the lesson's order.
-        stats.rays += live.len() as u64;
-        let over_limit = k > settings.bounce_limit();
-        let roulette = k + 1 >= settings.rr_min_bounce;
-        rays.clear();
-        rays.extend(live.iter().map(|&i| lanes[i as usize].ray));
-        if k == 0 {
-            // Camera rays: eight samples of a pixel leave together.
-            super::simd::closest_packets(tree, &rays, &mut found);
-        } else {
-            super::simd::closest_all(tree, &rays, &mut found);
-        }
-        shadows.rays.clear();
-        shadows.light.clear();
-        next.clear();
-        for (&i, hit) in live.iter().zip(&found) {
-            let lane = &lanes[i as usize];
-            let mut out = PathOut {
-                layers: &mut outs[lane.out as usize],
-                stats,
-            };
-            let Some(it) = hit.map(|hit| interaction(world, hit)) else {
-                let sky = sky_emission(world, lane.ray.dir, &lane.path);
-                out.add_sky(&lane.path, lane.ray.dir, sky);
-                continue;
-            };
-            // Most surfaces emit nothing: no call to find that out.
-            let emitted = match emissive[it.material] {
-                true => surface_emission(world, &it, -lane.ray.dir, &lane.path),
-                false => None,
-            };
-            out.add_emitted(&lane.path, &it, emitted);
-            if over_limit {
-                out.stats.cut += u64::from(settings.max_bounces.is_none());
-                continue;
-            }
-            ids.push(i);
-            its.push(it);
-            if ids.len() == L {
-                let round = (k, roulette, &mut next, &mut shadows);
-                shade.eight(&mut lanes, (&ids, &its), round, outs, stats);
-                ids.clear();
-                its.clear();
-            }
-        }
-        if !ids.is_empty() {
-            let round = (k, roulette, &mut next, &mut shadows);
-            shade.eight(&mut lanes, (&ids, &its), round, outs, stats);
-            ids.clear();
-            its.clear();
-        }
-        // 3. Shadow rays.
-        super::simd::occluded_all(tree, &shadows.rays, &mut blocked);
-        for (&(i, light), _) in shadows.light.iter().zip(&blocked).filter(|(_, b)| !**b) {
-            let mut out = PathOut {
-                layers: &mut outs[i as usize],
-                stats,
-            };
-            out.add(Some(k), light);
-        }
-        std::mem::swap(&mut live, &mut next);
+    while !q.live.is_empty() {
+        let round = Round {
+            k,
+            roulette: k + 1 >= settings.rr_min_bounce,
+            over_limit: k > settings.bounce_limit(),
+            count_cut: settings.max_bounces.is_none(),
+        };
+        stats.rays += q.live.len() as u64;
+        closest_hits(tree, &lanes, k, &mut q);
+        shade_hits(&mut shade, &mut lanes, round, &mut q, outs, stats);
+        trace_shadows(tree, k, &mut q, outs, stats);
+        std::mem::swap(&mut q.live, &mut q.next);
         k += 1;
+    }
+}
+
+/// Phase 1: the closest hit of every live path's ray, the first round's
+/// camera rays eight at a time (eight samples of a pixel leave together).
+fn closest_hits(tree: &Bvh8, lanes: &[Lane], k: u32, q: &mut Queues) {
+    q.rays.clear();
+    q.rays.extend(q.live.iter().map(|&i| lanes[i as usize].ray));
+    match k {
+        0 => super::simd::closest_packets(tree, &q.rays, &mut q.found),
+        _ => super::simd::closest_all(tree, &q.rays, &mut q.found),
+    }
+}
+
+/// Phase 2: what each path found (the sky, or a surface and what it
+/// emits), the paths that end there, and the rest shaded eight at a time
+/// while their hits are near, so each path's light is still added in the
+/// lesson's order.
+fn shade_hits<C: Contributions>(
+    shade: &mut Shade,
+    lanes: &mut [Lane],
+    round: Round,
+    q: &mut Queues,
+    outs: &mut [C],
+    stats: &mut PathStats,
+) {
+    let world = shade.world;
+    q.shadows.rays.clear();
+    q.shadows.light.clear();
+    q.next.clear();
+    for n in 0..q.live.len() {
+        let (i, hit) = (q.live[n], q.found[n]);
+        let lane = &lanes[i as usize];
+        let mut out = PathOut {
+            layers: &mut outs[lane.out as usize],
+            stats,
+        };
+        let Some(it) = hit.map(|hit| interaction(world, hit)) else {
+            let sky = sky_emission(world, lane.ray.dir, &lane.path);
+            out.add_sky(&lane.path, lane.ray.dir, sky);
+            continue;
+        };
+        // Most surfaces emit nothing: no call to find that out.
+        let emitted = match shade.emissive[it.material] {
+            true => surface_emission(world, &it, -lane.ray.dir, &lane.path),
+            false => None,
+        };
+        out.add_emitted(&lane.path, &it, emitted);
+        if round.over_limit {
+            out.stats.cut += u64::from(round.count_cut);
+            continue;
+        }
+        q.ids.push(i);
+        q.its.push(it);
+        if q.ids.len() == W {
+            shade.eight(lanes, round, q, outs, stats);
+        }
+    }
+    if !q.ids.is_empty() {
+        shade.eight(lanes, round, q, outs, stats);
+    }
+}
+
+/// Phase 3: the round's shadow rays, and the light of those nothing
+/// blocks.
+fn trace_shadows<C: Contributions>(
+    tree: &Bvh8,
+    k: u32,
+    q: &mut Queues,
+    outs: &mut [C],
+    stats: &mut PathStats,
+) {
+    super::simd::occluded_all(tree, &q.shadows.rays, &mut q.blocked);
+    for (&(i, light), _) in q.shadows.light.iter().zip(&q.blocked).filter(|(_, b)| !**b) {
+        let mut out = PathOut {
+            layers: &mut outs[i as usize],
+            stats,
+        };
+        out.add(Some(k), light);
     }
 }
 
@@ -202,33 +260,57 @@ struct Shade<'a> {
     /// Whether the lanes read the number that chooses a light (dimension 0
     /// of a vertex): not where the scene has one area light.
     choose: bool,
+    /// Which materials emit.
+    emissive: Vec<bool>,
 }
 
 /// The numbers of a vertex every diffuse path reads: the light sample's
-/// two (dimensions 1 and 2) and the next direction's (4 and 5).
-const WANTED: u8 = 0b0011_0110;
+/// two and the next direction's two (bit d for dimension d).
+const WANTED: u8 =
+    1 << dim::LIGHT[0] | 1 << dim::LIGHT[1] | 1 << dim::DIRECTION[0] | 1 << dim::DIRECTION[1];
 
-impl Shade<'_> {
-    /// Shades lanes `ids` (up to eight) at their hits `its`, vertex `k`:
-    /// their shadow rays go to `shadows` and the paths that go on to
-    /// `next`, in order.
+impl<'a> Shade<'a> {
+    fn new(world: &'a World, level: Level) -> Shade<'a> {
+        Shade {
+            world,
+            level,
+            input: Box::default(),
+            o: Box::default(),
+            choose: !matches!(world.lights.lights.as_slice(), [Light::Area(_)]),
+            emissive: world.materials.iter().map(|m| m.is_emissive()).collect(),
+        }
+    }
+
+    /// Shades the waiting lanes `q.ids` (up to eight) at their hits
+    /// `q.its` and empties that queue: their shadow rays go to
+    /// `q.shadows` and the paths that go on to `q.next`, in order.
     fn eight<C: Contributions>(
         &mut self,
         lanes: &mut [Lane],
-        (ids, its): (&[u32], &[Interaction]),
-        (k, roulette, next, shadows): (u32, bool, &mut Vec<u32>, &mut Shadows),
+        round: Round,
+        q: &mut Queues,
         outs: &mut [C],
         stats: &mut PathStats,
     ) {
         let (world, input, o) = (self.world, &mut *self.input, &mut *self.o);
+        let Queues {
+            ids,
+            its,
+            next,
+            shadows,
+            ..
+        } = q;
+        let k = round.k;
         // The numbers the lanes read (a Lambertian vertex leaves the lobe's
         // and the eighth unread, the light's choice where there is one
         // area light, roulette's before it plays): only those are made.
-        let wanted = WANTED | u8::from(self.choose) | u8::from(roulette) << 6;
+        let wanted = WANTED
+            | u8::from(self.choose) << dim::CHOOSE
+            | u8::from(round.roulette) << dim::ROULETTE;
         input.u = numbers(self.level, lanes, ids, k, wanted);
-        let lesson_light = gather((world, self.level), lanes, (ids, its), roulette, input);
+        let lesson_light = gather(world, self.level, lanes, ids, its, round.roulette, input);
         super::simd::shade8_at(self.level, input, o);
-        for (j, (&i, it)) in ids.iter().zip(its).enumerate() {
+        for (j, (&i, it)) in ids.iter().zip(its.iter()).enumerate() {
             let lane = &mut lanes[i as usize];
             if lesson_light[j] {
                 // A point, spot, directional or sky light: the lesson's
@@ -239,8 +321,9 @@ impl Shade<'_> {
                         stats,
                     };
                     let u = &input.u;
-                    let u_light = Vec2::new(u[1][j], u[2][j]);
-                    let direct = direct_light(world, &v, u[0][j], u_light, &lane.path, out.stats);
+                    let u_light = Vec2::new(u[dim::LIGHT[0]][j], u[dim::LIGHT[1]][j]);
+                    let direct =
+                        direct_light(world, &v, u[dim::CHOOSE][j], u_light, &lane.path, out.stats);
                     out.add_direct(k, direct);
                 }
             }
@@ -248,7 +331,7 @@ impl Shade<'_> {
                 // The light sample's shadow ray: traced after the round,
                 // or decided now.
                 stats.rays += 1;
-                let v3 = |a: &[[f32; L]; 3]| Vec3::new(a[0][j], a[1][j], a[2][j]);
+                let v3 = |a: &[[f32; W]; 3]| Vec3::new(a[0][j], a[1][j], a[2][j]);
                 let light = v3(&o.contribution);
                 if o.shadow_trace[j] {
                     let ray = Ray {
@@ -270,9 +353,11 @@ impl Shade<'_> {
             // either way, and kept or dropped by a count (dropping the last
             // entry of a list is no branch).
             next.push(i);
-            let goes_on = usize::from(finish(lane, it, k, (&*o, j)));
+            let goes_on = usize::from(finish(lane, it, k, o, j));
             next.truncate(next.len() + goes_on - 1);
         }
+        ids.clear();
+        its.clear();
     }
 }
 
@@ -281,10 +366,16 @@ impl Shade<'_> {
 /// time where Sobol points and independent numbers mix); only the
 /// dimensions `wanted` (bit d), the others 0 (the mixed case makes all).
 #[allow(clippy::needless_range_loop)]
-fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32, wanted: u8) -> [[f32; L]; 8] {
+fn numbers(
+    level: Level,
+    lanes: &[Lane],
+    ids: &[u32],
+    k: u32,
+    wanted: u8,
+) -> [[f32; W]; dim::PER_VERTEX] {
     let first = 4 + 8 * k as u64;
     let lane = |j: usize| &lanes[ids[if j < ids.len() { j } else { 0 }] as usize];
-    let mut u = [[0.0; L]; 8];
+    let mut u = [[0.0; W]; dim::PER_VERTEX];
     if let Some((sample, scramble)) = sobol_lanes(|j| &lane(j).sampler) {
         let [a, b] = super::simd::sobol_groups8_wanted_at(
             level,
@@ -295,13 +386,13 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32, wanted: u8) -> [[f
         );
         u[..4].copy_from_slice(&a);
         u[4..].copy_from_slice(&b);
-    } else if (0..L).all(|j| lane(j).sampler.independent_prefix().is_some()) {
-        let prefix: [u64; L] =
+    } else if (0..W).all(|j| lane(j).sampler.independent_prefix().is_some()) {
+        let prefix: [u64; W] =
             std::array::from_fn(|j| lane(j).sampler.independent_prefix().unwrap_or(0));
         u = super::simd::independent8_wanted_at(level, &prefix, first, wanted);
     } else {
         // Sobol points and, past the tables, independent numbers mixed.
-        for j in 0..L {
+        for j in 0..W {
             let v = lane(j).sampler.eight_at(first);
             for d in 0..8 {
                 u[d][j] = v[d];
@@ -318,15 +409,17 @@ fn numbers(level: Level, lanes: &[Lane], ids: &[u32], k: u32, wanted: u8) -> [[f
 /// light instead (the lanes' shadow ray for them is not used).
 #[allow(clippy::needless_range_loop)]
 fn gather(
-    (world, level): (&World, Level),
+    world: &World,
+    level: Level,
     lanes: &[Lane],
-    (ids, hits): (&[u32], &[Interaction]),
+    ids: &[u32],
+    hits: &[Interaction],
     roulette: bool,
     x: &mut In8,
-) -> [bool; L] {
+) -> [bool; W] {
     x.roulette = roulette;
-    let mut lesson_light = [false; L];
-    for j in 0..L {
+    let mut lesson_light = [false; W];
+    for j in 0..W {
         let jj = if j < ids.len() { j } else { 0 };
         let lane = &lanes[ids[jj] as usize];
         let it = &hits[jj];
@@ -352,9 +445,9 @@ fn gather(
     // The lights, then the triangles on them, each a short loop of its own:
     // a pick is a chain of dependent steps (count, load, divide), and the
     // processor overlaps eight independent chains only when they are near.
-    let mut area = [None; L];
-    for j in 0..L {
-        let (i, p_choose) = world.lights.choose(x.u[0][j]).expect("a light");
+    let mut area = [None; W];
+    for j in 0..W {
+        let (i, p_choose) = world.lights.choose(x.u[dim::CHOOSE][j]).expect("a light");
         x.p_choose[j] = p_choose;
         match &lights[i] {
             Light::Area(light) => area[j] = Some(light),
@@ -373,7 +466,7 @@ fn gather(
     }
     for (j, light) in area.into_iter().enumerate() {
         let Some(light) = light else { continue };
-        let (t, ux) = light.pick(x.u[1][j]);
+        let (t, ux) = light.pick(x.u[dim::LIGHT[0]][j]);
         x.ux[j] = ux;
         for (c, corner) in light.triangles[t].iter().enumerate() {
             for a in 0..3 {
@@ -392,8 +485,8 @@ fn gather(
 
 /// Writes lane `j`'s path back: `false` where it ends (then what was
 /// written is never read).
-fn finish(lane: &mut Lane, it: &Interaction, k: u32, (o, j): (&Out8, usize)) -> bool {
-    let v3 = |a: &[[f32; L]; 3]| Vec3::new(a[0][j], a[1][j], a[2][j]);
+fn finish(lane: &mut Lane, it: &Interaction, k: u32, o: &Out8, j: usize) -> bool {
+    let v3 = |a: &[[f32; W]; 3]| Vec3::new(a[0][j], a[1][j], a[2][j]);
     let path = &mut lane.path;
     path.beta = v3(&o.beta);
     path.k = Some(k);
