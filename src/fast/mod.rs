@@ -25,6 +25,8 @@
 
 pub mod bench;
 pub mod bvh8;
+pub mod gather8;
+pub mod lane_rays;
 pub mod lanes;
 pub mod level;
 pub mod packet;

@@ -17,8 +17,7 @@
 
 use std::f32::consts::{FRAC_1_PI, PI};
 
-use crate::ch3_ray_triangle::spawn::{FLOAT_SCALE, INT_SCALE, ORIGIN, STOP_SCALE};
-
+use super::lane_rays::{max_element, shadow_ray, spawn};
 use super::lanes::W;
 
 /// A vertex's random numbers by name: where each sits in [`In8::u`], in
@@ -124,144 +123,37 @@ pub fn sin_cos_quarter(phi: f32) -> (f32, f32) {
 // ANCHOR_END: sin_cos_quarter
 
 /// One vertex of eight paths (into `o`, every field of every lane
-/// written): frame, light sample, MIS, next direction,
-/// roulette. Each line is one pass over the lanes with selects in place of
-/// branches.
+/// written), step by step as the lesson's `trace_path` takes them: the
+/// frame, the light sample with its MIS weight, the next direction,
+/// roulette, and the two rays that leave. Each step is one pass over the
+/// lanes with selects in place of branches (the steps are inlined into
+/// one loop, which the compiler turns into vector instructions).
 #[inline(always)]
 pub fn shade8(x: &In8, o: &mut Out8) {
     for j in 0..W {
-        let (nx, ny, nz) = (x.n[0][j], x.n[1][j], x.n[2][j]);
-        // Frame::from_normal (Duff et al.).
-        let sign = 1.0f32.copysign(nz);
-        let a = -1.0 / (sign + nz);
-        let b = nx * ny * a;
-        let s = [1.0 + sign * nx * nx * a, sign * b, -sign * nx];
-        let t = [b, sign + ny * ny * a, -ny];
-        let n = [nx, ny, nz];
-        let local = |v: [f32; 3]| {
-            [
-                v[0] * s[0] + v[1] * s[1] + v[2] * s[2],
-                v[0] * t[0] + v[1] * t[1] + v[2] * t[2],
-                v[0] * n[0] + v[1] * n[1] + v[2] * n[2],
-            ]
-        };
-        let wo = local([-x.d[0][j], -x.d[1][j], -x.d[2][j]]);
-        o.valid[j] = wo[2] != 0.0;
-        let flip = if wo[2] > 0.0 { 1.0 } else { -1.0 };
+        let v = LaneVertex::at(x, j);
+        o.valid[j] = v.wo[2] != 0.0;
+        let flip = if v.wo[2] > 0.0 { 1.0 } else { -1.0 };
         for a in 0..3 {
-            o.n_side[a][j] = n[a] * flip;
+            o.n_side[a][j] = v.n[a] * flip;
         }
-        let p = [x.p[0][j], x.p[1][j], x.p[2][j]];
-        let beta = [x.beta[0][j], x.beta[1][j], x.beta[2][j]];
-        let f_rho = [
-            x.rho[0][j] * FRAC_1_PI,
-            x.rho[1][j] * FRAC_1_PI,
-            x.rho[2][j] * FRAC_1_PI,
-        ];
-
-        // The light sample: a uniform point y on the chosen triangle.
-        let sq = x.ux[j].sqrt();
-        let b1 = 1.0 - sq;
-        let b2 = x.u[dim::LIGHT[1]][j] * sq;
-        let b0 = 1.0 - b1 - b2;
-        let mut to = [0.0; 3];
+        let light = light_sample(x, j, &v);
+        o.shadow[j] = o.valid[j] & light.cast;
         for a in 0..3 {
-            let y = b0 * x.tri[0][a][j] + b1 * x.tri[1][a][j] + b2 * x.tri[2][a][j];
-            to[a] = y - p[a];
+            o.contribution[a][j] = light.contribution[a];
         }
-        let dist = (to[0] * to[0] + to[1] * to[1] + to[2] * to[2]).sqrt();
-        let nl = [x.n_light[0][j], x.n_light[1][j], x.n_light[2][j]];
-        let wi = [to[0] / dist, to[1] / dist, to[2] / dist];
-        let cos_l = nl[0] * wi[0] + nl[1] * wi[1] + nl[2] * wi[2];
-        let faces = x.two_sided[j] | (nl[0] * -wi[0] + nl[1] * -wi[1] + nl[2] * -wi[2] > 0.0);
-        let c = cos_l.abs();
-        let pdf_area = x.inv_area[j] * dist * dist / c;
-        let pdf_light = if (c > 0.0) & (pdf_area.abs() < f32::INFINITY) {
-            pdf_area
-        } else {
-            0.0
-        };
-        let li_nonzero = faces & ((x.le[0][j] != 0.0) | (x.le[1][j] != 0.0) | (x.le[2][j] != 0.0));
-        let has_sample = (dist > 0.0)
-            & (dist < f32::INFINITY)
-            & ((nl[0] != 0.0) | (nl[1] != 0.0) | (nl[2] != 0.0))
-            & (pdf_light > 0.0)
-            & li_nonzero;
-        let wil = local(wi);
-        let same = wo[2] * wil[2] > 0.0;
-        let f = if same { f_rho } else { [0.0; 3] };
-        let f_nonzero = (f[0] != 0.0) | (f[1] != 0.0) | (f[2] != 0.0);
-        o.shadow[j] = o.valid[j] & has_sample & f_nonzero;
-        let pdf = pdf_light * x.p_choose[j];
-        let bsdf_pdf = if same {
-            wil[2].abs().max(0.0) * FRAC_1_PI
-        } else {
-            0.0
-        };
-        let r = bsdf_pdf / pdf;
-        // The power heuristic: 1 for an infinite pdf, 0 for NaN or ≤ 0.
-        let heuristic = 1.0 / (1.0 + r * r);
-        let weight = if pdf == f32::INFINITY {
-            1.0
-        } else if pdf > 0.0 {
-            heuristic
-        } else {
-            0.0
-        };
-        let cos_i = wil[2].abs();
-        for a in 0..3 {
-            o.contribution[a][j] = beta[a] * f[a] * x.le[a][j] * cos_i * (weight / pdf);
-        }
-
-        // ANCHOR: next_direction
-        // The next direction: cosine-weighted (concentric disk, lifted).
-        let ox = 2.0 * x.u[dim::DIRECTION[0]][j] - 1.0;
-        let oy = 2.0 * x.u[dim::DIRECTION[1]][j] - 1.0;
-        let wide = ox.abs() > oy.abs();
-        let (r_disk, ratio) = if wide { (ox, oy / ox) } else { (oy, ox / oy) };
-        let (cphi, sphi) = sin_cos_quarter(0.25 * PI * ratio);
-        // θ = φ (wide) or π/2 − φ: cos θ and sin θ swap.
-        let (cos_t, sin_t) = if wide { (cphi, sphi) } else { (sphi, cphi) };
-        let zero = (ox == 0.0) & (oy == 0.0);
-        let dx = if zero { 0.0 } else { r_disk * cos_t };
-        let dy = if zero { 0.0 } else { r_disk * sin_t };
-        let z = (1.0 - (dx * dx + dy * dy)).max(0.0).sqrt();
-        let z = if wo[2] < 0.0 { -z } else { z };
-        let step_pdf = if wo[2] * z > 0.0 {
-            z.abs().max(0.0) * FRAC_1_PI
-        } else {
-            0.0
-        };
-        let rho_ok = ((x.rho[0][j] != 0.0) | (x.rho[1][j] != 0.0) | (x.rho[2][j] != 0.0))
-            & (x.rho[0][j].abs() < f32::INFINITY)
-            & (x.rho[1][j].abs() < f32::INFINITY)
-            & (x.rho[2][j].abs() < f32::INFINITY);
-        o.step[j] = o.valid[j] & (step_pdf > 0.0) & rho_ok;
-        // ANCHOR_END: next_direction
-        o.pdf[j] = step_pdf;
-        let dir: [f32; 3] = std::array::from_fn(|a| s[a] * dx + t[a] * dy + n[a] * z);
-        // Throughput and Russian roulette.
-        let nb = [
-            beta[0] * x.rho[0][j],
-            beta[1] * x.rho[1][j],
-            beta[2] * x.rho[2][j],
-        ];
-        let q = max_element(nb).min(1.0);
-        let dies = x.roulette & (x.u[dim::ROULETTE][j] >= q);
-        o.survives[j] = !dies;
-        for a in 0..3 {
-            o.beta[a][j] = if x.roulette { nb[a] / q } else { nb[a] };
-        }
+        let dir = next_direction(x, j, &v, o);
+        roulette(x, j, &v, o);
 
         // The two rays leaving this vertex, as `World::spawn` and
         // `World::unoccluded` make them.
-        let next = spawn(p, n, dir);
+        let next = spawn(v.p, v.n, dir);
         o.next_ok[j] = next.ok;
         for a in 0..3 {
             o.next_o[a][j] = next.origin[a];
             o.next_d[a][j] = next.dir[a];
         }
-        let shadow = shadow_ray(p, n, wi, dist);
+        let shadow = shadow_ray(v.p, v.n, light.wi, light.dist);
         o.shadow_trace[j] = shadow.ray.ok;
         o.shadow_free[j] = shadow.free;
         o.shadow_t[j] = shadow.t_max;
@@ -272,161 +164,180 @@ pub fn shade8(x: &In8, o: &mut Out8) {
     }
 }
 
-/// glam's `Vec3::max_element`, in its order.
-#[inline(always)]
-fn max_element(v: [f32; 3]) -> f32 {
-    let max = |a: f32, b: f32| if a > b { a } else { b };
-    max(v[0], max(v[1], v[2]))
+/// Lane `j`'s vertex: the local frame of `Frame::from_normal` (Duff et
+/// al.), the direction back along the ray in it, and what the steps read.
+struct LaneVertex {
+    s: [f32; 3],
+    t: [f32; 3],
+    n: [f32; 3],
+    /// Towards where the path came from, local.
+    wo: [f32; 3],
+    p: [f32; 3],
+    beta: [f32; 3],
+    /// The Lambertian BRDF ρ / π.
+    f_rho: [f32; 3],
 }
 
-/// Chapter 3's [`offset_origin`](crate::ch3_ray_triangle::spawn::offset_origin)
-/// for one coordinate, with a select in place of its early return (a test
-/// checks that the bits agree).
-#[inline(always)]
-pub fn offset_coordinate(p: f32, n: f32) -> f32 {
-    let near = p + FLOAT_SCALE * n;
-    let ulps = truncate(INT_SCALE * n);
-    let ulps = if p < 0.0 { ulps.wrapping_neg() } else { ulps };
-    let far = f32::from_bits((p.to_bits() as i32).wrapping_add(ulps) as u32);
-    if p.abs() < ORIGIN {
-        near
-    } else {
-        far
+impl LaneVertex {
+    #[inline(always)]
+    fn at(x: &In8, j: usize) -> LaneVertex {
+        let (nx, ny, nz) = (x.n[0][j], x.n[1][j], x.n[2][j]);
+        let sign = 1.0f32.copysign(nz);
+        let a = -1.0 / (sign + nz);
+        let b = nx * ny * a;
+        let mut v = LaneVertex {
+            s: [1.0 + sign * nx * nx * a, sign * b, -sign * nx],
+            t: [b, sign + ny * ny * a, -ny],
+            n: [nx, ny, nz],
+            wo: [0.0; 3],
+            p: [x.p[0][j], x.p[1][j], x.p[2][j]],
+            beta: [x.beta[0][j], x.beta[1][j], x.beta[2][j]],
+            f_rho: [
+                x.rho[0][j] * FRAC_1_PI,
+                x.rho[1][j] * FRAC_1_PI,
+                x.rho[2][j] * FRAC_1_PI,
+            ],
+        };
+        v.wo = v.local([-x.d[0][j], -x.d[1][j], -x.d[2][j]]);
+        v
+    }
+
+    /// A world vector in the local frame.
+    #[inline(always)]
+    fn local(&self, v: [f32; 3]) -> [f32; 3] {
+        let (s, t, n) = (self.s, self.t, self.n);
+        [
+            v[0] * s[0] + v[1] * s[1] + v[2] * s[2],
+            v[0] * t[0] + v[1] * t[1] + v[2] * t[2],
+            v[0] * n[0] + v[1] * n[1] + v[2] * n[2],
+        ]
     }
 }
 
-/// `x as i32`: x rounded towards zero, saturated to the `i32` range,
-/// NaN giving 0. Written with integer steps on the bits (exponent and
-/// mantissa, two shifts, selects), because the compiler turns Rust's
-/// saturating cast into one scalar conversion per lane, and these steps
-/// into vector instructions. A test checks it against `as i32`.
+/// A lane's light sample: the direction and distance to the point drawn
+/// on the chosen triangle, whether a shadow ray is cast, and the light it
+/// brings if nothing blocks it.
+struct LaneLight {
+    wi: [f32; 3],
+    dist: f32,
+    cast: bool,
+    /// β f Li |cos| w / pdf.
+    contribution: [f32; 3],
+}
+
+/// The light sample of `AreaLight::sample_li` (a uniform point on the
+/// chosen triangle) and its MIS weight against the BSDF (the power
+/// heuristic).
 #[inline(always)]
-pub fn truncate(x: f32) -> i32 {
-    let bits = x.to_bits();
-    let exponent = ((bits >> 23) & 0xff) as i32 - 127;
-    let mantissa = (bits & 0x7f_ffff) | 0x80_0000;
-    // |x| = mantissa · 2^(exponent - 23); below 1 the right shift of 31
-    // leaves nothing.
-    let right = (23 - exponent).clamp(0, 31) as u32;
-    let left = (exponent - 23).clamp(0, 7) as u32;
-    let magnitude = ((mantissa >> right) << left) as i32;
-    let negative = (bits >> 31) != 0;
-    let value = if negative {
-        magnitude.wrapping_neg()
+fn light_sample(x: &In8, j: usize, v: &LaneVertex) -> LaneLight {
+    let p = v.p;
+    let sq = x.ux[j].sqrt();
+    let b1 = 1.0 - sq;
+    let b2 = x.u[dim::LIGHT[1]][j] * sq;
+    let b0 = 1.0 - b1 - b2;
+    let mut to = [0.0; 3];
+    for a in 0..3 {
+        let y = b0 * x.tri[0][a][j] + b1 * x.tri[1][a][j] + b2 * x.tri[2][a][j];
+        to[a] = y - p[a];
+    }
+    let dist = (to[0] * to[0] + to[1] * to[1] + to[2] * to[2]).sqrt();
+    let nl = [x.n_light[0][j], x.n_light[1][j], x.n_light[2][j]];
+    let wi = [to[0] / dist, to[1] / dist, to[2] / dist];
+    let cos_l = nl[0] * wi[0] + nl[1] * wi[1] + nl[2] * wi[2];
+    let faces = x.two_sided[j] | (nl[0] * -wi[0] + nl[1] * -wi[1] + nl[2] * -wi[2] > 0.0);
+    let c = cos_l.abs();
+    let pdf_area = x.inv_area[j] * dist * dist / c;
+    let pdf_light = if (c > 0.0) & (pdf_area.abs() < f32::INFINITY) {
+        pdf_area
     } else {
-        magnitude
+        0.0
     };
-    let saturated = if negative { i32::MIN } else { i32::MAX };
-    let nan = exponent == 128 && (bits & 0x7f_ffff) != 0;
-    let out = if exponent >= 31 { saturated } else { value };
-    if nan {
-        0
+    let li_nonzero = faces & ((x.le[0][j] != 0.0) | (x.le[1][j] != 0.0) | (x.le[2][j] != 0.0));
+    let has_sample = (dist > 0.0)
+        & (dist < f32::INFINITY)
+        & ((nl[0] != 0.0) | (nl[1] != 0.0) | (nl[2] != 0.0))
+        & (pdf_light > 0.0)
+        & li_nonzero;
+    let wil = v.local(wi);
+    let same = v.wo[2] * wil[2] > 0.0;
+    let f = if same { v.f_rho } else { [0.0; 3] };
+    let f_nonzero = (f[0] != 0.0) | (f[1] != 0.0) | (f[2] != 0.0);
+    let pdf = pdf_light * x.p_choose[j];
+    let bsdf_pdf = if same {
+        wil[2].abs().max(0.0) * FRAC_1_PI
     } else {
-        out
+        0.0
+    };
+    let r = bsdf_pdf / pdf;
+    // The power heuristic: 1 for an infinite pdf, 0 for NaN or ≤ 0.
+    let heuristic = 1.0 / (1.0 + r * r);
+    let weight = if pdf == f32::INFINITY {
+        1.0
+    } else if pdf > 0.0 {
+        heuristic
+    } else {
+        0.0
+    };
+    let cos_i = wil[2].abs();
+    LaneLight {
+        wi,
+        dist,
+        cast: has_sample & f_nonzero,
+        contribution: std::array::from_fn(|a| {
+            v.beta[a] * f[a] * x.le[a][j] * cos_i * (weight / pdf)
+        }),
     }
 }
 
-/// Chapter 3's [`stop_distance`](crate::ch3_ray_triangle::spawn::stop_distance),
-/// with a select.
+/// The next direction, cosine-weighted (`cosine_hemisphere`), into
+/// `o.step` and `o.pdf`; returns it in world space.
 #[inline(always)]
-pub fn stop_distance(y: [f32; 3]) -> f32 {
-    let m = max_element([y[0].abs(), y[1].abs(), y[2].abs()]);
-    let ulp = f32::from_bits(m.to_bits().wrapping_add(1)) - m;
-    STOP_SCALE
-        * if m < ORIGIN {
-            FLOAT_SCALE
-        } else {
-            INT_SCALE * ulp
-        }
+fn next_direction(x: &In8, j: usize, v: &LaneVertex, o: &mut Out8) -> [f32; 3] {
+    let wo = v.wo;
+    // ANCHOR: next_direction
+    // The next direction: cosine-weighted (concentric disk, lifted).
+    let ox = 2.0 * x.u[dim::DIRECTION[0]][j] - 1.0;
+    let oy = 2.0 * x.u[dim::DIRECTION[1]][j] - 1.0;
+    let wide = ox.abs() > oy.abs();
+    let (r_disk, ratio) = if wide { (ox, oy / ox) } else { (oy, ox / oy) };
+    let (cphi, sphi) = sin_cos_quarter(0.25 * PI * ratio);
+    // θ = φ (wide) or π/2 − φ: cos θ and sin θ swap.
+    let (cos_t, sin_t) = if wide { (cphi, sphi) } else { (sphi, cphi) };
+    let zero = (ox == 0.0) & (oy == 0.0);
+    let dx = if zero { 0.0 } else { r_disk * cos_t };
+    let dy = if zero { 0.0 } else { r_disk * sin_t };
+    let z = (1.0 - (dx * dx + dy * dy)).max(0.0).sqrt();
+    let z = if wo[2] < 0.0 { -z } else { z };
+    let step_pdf = if wo[2] * z > 0.0 {
+        z.abs().max(0.0) * FRAC_1_PI
+    } else {
+        0.0
+    };
+    let rho_ok = ((x.rho[0][j] != 0.0) | (x.rho[1][j] != 0.0) | (x.rho[2][j] != 0.0))
+        & (x.rho[0][j].abs() < f32::INFINITY)
+        & (x.rho[1][j].abs() < f32::INFINITY)
+        & (x.rho[2][j].abs() < f32::INFINITY);
+    o.step[j] = o.valid[j] & (step_pdf > 0.0) & rho_ok;
+    // ANCHOR_END: next_direction
+    o.pdf[j] = step_pdf;
+    let (s, t, n) = (v.s, v.t, v.n);
+    std::array::from_fn(|a| s[a] * dx + t[a] * dy + n[a] * z)
 }
 
-/// A ray as `Ray::from_unit` makes it, for one lane; `ok` is false where
-/// it gives `None`.
-#[derive(Clone, Copy)]
-pub struct LaneRay {
-    /// Whether there is a ray.
-    pub ok: bool,
-    /// Its origin.
-    pub origin: [f32; 3],
-    /// Its unit direction.
-    pub dir: [f32; 3],
-}
-
-/// `Ray::from_unit(origin, dir)`: `dir` as it is when its length is 1 to
-/// within 10⁻⁵, else normalised (`Ray::new`); no ray for an origin that is
-/// not finite or a direction that cannot be normalised.
+/// Throughput and Russian roulette: β times f cos / pdf (ρ for a
+/// cosine-sampled Lambertian step), then survive with q = min(max β, 1).
 #[inline(always)]
-fn from_unit(origin: [f32; 3], dir: [f32; 3]) -> LaneRay {
-    let len2 = dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2];
-    let finite = (origin[0].abs() < f32::INFINITY)
-        & (origin[1].abs() < f32::INFINITY)
-        & (origin[2].abs() < f32::INFINITY);
-    let unit = (len2 - 1.0).abs() <= 1e-5;
-    let rcp = 1.0 / len2.sqrt();
-    let normalisable = (rcp < f32::INFINITY) & (rcp > 0.0);
-    LaneRay {
-        ok: finite & (unit | normalisable),
-        origin,
-        dir: [
-            if unit { dir[0] } else { dir[0] * rcp },
-            if unit { dir[1] } else { dir[1] * rcp },
-            if unit { dir[2] } else { dir[2] * rcp },
-        ],
-    }
-}
-
-/// `World::spawn(p, n, dir)` without SDFs: the origin moved off the
-/// surface to the side `dir` leaves into.
-#[inline(always)]
-fn spawn(p: [f32; 3], n: [f32; 3], dir: [f32; 3]) -> LaneRay {
-    let back = n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2] < 0.0;
-    let s = if back { -1.0 } else { 1.0 };
-    let origin = [
-        offset_coordinate(p[0], n[0] * s),
-        offset_coordinate(p[1], n[1] * s),
-        offset_coordinate(p[2], n[2] * s),
+fn roulette(x: &In8, j: usize, v: &LaneVertex, o: &mut Out8) {
+    let beta = v.beta;
+    let nb = [
+        beta[0] * x.rho[0][j],
+        beta[1] * x.rho[1][j],
+        beta[2] * x.rho[2][j],
     ];
-    from_unit(origin, dir)
-}
-
-/// The shadow ray of `World::unoccluded(p, n, wi, dist)` without SDFs:
-/// `ray.ok` when it must be traced (to `t_max`), `free` when the two ends
-/// meet and nothing can lie between; neither: blocked (no origin).
-struct ShadowRay {
-    ray: LaneRay,
-    t_max: f32,
-    free: bool,
-}
-
-#[inline(always)]
-fn shadow_ray(p: [f32; 3], n: [f32; 3], wi: [f32; 3], dist: f32) -> ShadowRay {
-    let spawned = spawn(p, n, wi);
-    let y = [
-        p[0] + wi[0] * dist,
-        p[1] + wi[1] * dist,
-        p[2] + wi[2] * dist,
-    ];
-    let back = stop_distance(y);
-    let to = [
-        y[0] - wi[0] * back - spawned.origin[0],
-        y[1] - wi[1] * back - spawned.origin[1],
-        y[2] - wi[2] * back - spawned.origin[2],
-    ];
-    let t_max = (to[0] * to[0] + to[1] * to[1] + to[2] * to[2]).sqrt();
-    let finite = t_max.abs() < f32::INFINITY;
-    let infinite = !finite;
-    let ahead = (t_max > 0.0) & (to[0] * wi[0] + to[1] * wi[1] + to[2] * wi[2] > 0.0);
-    let aimed = from_unit(
-        spawned.origin,
-        [to[0] / t_max, to[1] / t_max, to[2] / t_max],
-    );
-    let ray = if infinite { spawned } else { aimed };
-    ShadowRay {
-        ray: LaneRay {
-            ok: spawned.ok & (infinite | (ahead & aimed.ok)),
-            ..ray
-        },
-        t_max: if infinite { f32::INFINITY } else { t_max },
-        free: spawned.ok & !infinite & !(ahead & aimed.ok),
+    let q = max_element(nb).min(1.0);
+    let dies = x.roulette & (x.u[dim::ROULETTE][j] >= q);
+    o.survives[j] = !dies;
+    for a in 0..3 {
+        o.beta[a][j] = if x.roulette { nb[a] / q } else { nb[a] };
     }
 }

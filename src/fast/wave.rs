@@ -46,10 +46,10 @@ use crate::ch6_global_illumination::sampler::PathSampler;
 use crate::ch6_global_illumination::vertex::Vertex;
 
 use super::bvh8::Bvh8;
+use super::gather8::{gather, numbers, Lane};
 use super::lanes::W;
 use super::level::Level;
 use super::shade8::{dim, In8, Out8};
-use super::starts::sobol_lanes;
 
 /// Whether the wavefront loop renders `world` with `settings` exactly as
 /// the lesson's loop would (in distribution): MIS, diffuse surfaces, at
@@ -59,15 +59,6 @@ pub fn supports(world: &World, settings: &PathSettings) -> bool {
         && world.sdfs.is_empty()
         && !world.lights.lights.is_empty()
         && world.bsdfs.iter().all(|b| matches!(b, Bsdf::Lambertian(_)))
-}
-
-/// One path under way.
-struct Lane {
-    ray: Ray,
-    path: Path,
-    sampler: PathSampler,
-    /// Where its light goes (index into the output).
-    out: u32,
 }
 
 /// A round's shadow rays to trace (ray and `t_max`), and beside each the
@@ -85,33 +76,36 @@ struct Queues {
     /// The paths still going (indices into `lanes`, which never move), in
     /// order.
     live: Vec<u32>,
-    /// Those that go on past this round.
-    next: Vec<u32>,
+    /// What leaves this round: the paths that go on, and shadow rays.
+    leaving: Leaving,
     /// The live paths' rays, and the closest hit the tree found for each.
     rays: Vec<Ray>,
     found: Vec<Option<Hit>>,
-    /// The hits of up to eight paths waiting to be shaded together.
-    ids: Vec<u32>,
-    its: Vec<Interaction>,
-    /// The round's shadow rays, and which of them something blocks.
-    shadows: Shadows,
+    /// Which of the round's shadow rays something blocks.
     blocked: Vec<bool>,
+}
+
+/// What leaves a round's shading: the paths that go on past it (in
+/// order), and its shadow rays.
+struct Leaving {
+    next: Vec<u32>,
+    shadows: Shadows,
 }
 
 impl Queues {
     fn new(n: usize) -> Queues {
         Queues {
             live: (0..n as u32).collect(),
-            next: Vec::with_capacity(n),
+            leaving: Leaving {
+                next: Vec::with_capacity(n),
+                // At most one shadow ray per path per round.
+                shadows: Shadows {
+                    rays: Vec::with_capacity(n),
+                    light: Vec::with_capacity(n),
+                },
+            },
             rays: Vec::with_capacity(n),
             found: Vec::with_capacity(n),
-            ids: Vec::with_capacity(W),
-            its: Vec::with_capacity(W),
-            // At most one shadow ray per path per round.
-            shadows: Shadows {
-                rays: Vec::with_capacity(n),
-                light: Vec::with_capacity(n),
-            },
             blocked: Vec::with_capacity(n),
         }
     }
@@ -166,7 +160,7 @@ pub fn trace_paths<C: Contributions>(
         closest_hits(tree, &lanes, k, &mut q);
         shade_hits(&mut shade, &mut lanes, round, &mut q, outs, stats);
         trace_shadows(tree, k, &mut q, outs, stats);
-        std::mem::swap(&mut q.live, &mut q.next);
+        std::mem::swap(&mut q.live, &mut q.leaving.next);
         k += 1;
     }
 }
@@ -195,11 +189,10 @@ fn shade_hits<C: Contributions>(
     stats: &mut PathStats,
 ) {
     let world = shade.world;
-    q.shadows.rays.clear();
-    q.shadows.light.clear();
-    q.next.clear();
-    for n in 0..q.live.len() {
-        let (i, hit) = (q.live[n], q.found[n]);
+    q.leaving.shadows.rays.clear();
+    q.leaving.shadows.light.clear();
+    q.leaving.next.clear();
+    for (&i, hit) in q.live.iter().zip(&q.found) {
         let lane = &lanes[i as usize];
         let mut out = PathOut {
             layers: &mut outs[lane.out as usize],
@@ -220,14 +213,14 @@ fn shade_hits<C: Contributions>(
             out.stats.cut += u64::from(round.count_cut);
             continue;
         }
-        q.ids.push(i);
-        q.its.push(it);
-        if q.ids.len() == W {
-            shade.eight(lanes, round, q, outs, stats);
+        shade.ids.push(i);
+        shade.its.push(it);
+        if shade.ids.len() == W {
+            shade.eight(lanes, round, &mut q.leaving, outs, stats);
         }
     }
-    if !q.ids.is_empty() {
-        shade.eight(lanes, round, q, outs, stats);
+    if !shade.ids.is_empty() {
+        shade.eight(lanes, round, &mut q.leaving, outs, stats);
     }
 }
 
@@ -240,8 +233,15 @@ fn trace_shadows<C: Contributions>(
     outs: &mut [C],
     stats: &mut PathStats,
 ) {
-    super::simd::occluded_all(tree, &q.shadows.rays, &mut q.blocked);
-    for (&(i, light), _) in q.shadows.light.iter().zip(&q.blocked).filter(|(_, b)| !**b) {
+    super::simd::occluded_all(tree, &q.leaving.shadows.rays, &mut q.blocked);
+    for (&(i, light), _) in q
+        .leaving
+        .shadows
+        .light
+        .iter()
+        .zip(&q.blocked)
+        .filter(|(_, b)| !**b)
+    {
         let mut out = PathOut {
             layers: &mut outs[i as usize],
             stats,
@@ -262,6 +262,9 @@ struct Shade<'a> {
     choose: bool,
     /// Which materials emit.
     emissive: Vec<bool>,
+    /// The hits of up to eight paths waiting to be shaded together.
+    ids: Vec<u32>,
+    its: Vec<Interaction>,
 }
 
 /// The numbers of a vertex every diffuse path reads: the light sample's
@@ -278,28 +281,25 @@ impl<'a> Shade<'a> {
             o: Box::default(),
             choose: !matches!(world.lights.lights.as_slice(), [Light::Area(_)]),
             emissive: world.materials.iter().map(|m| m.is_emissive()).collect(),
+            ids: Vec::with_capacity(W),
+            its: Vec::with_capacity(W),
         }
     }
 
-    /// Shades the waiting lanes `q.ids` (up to eight) at their hits
-    /// `q.its` and empties that queue: their shadow rays go to
-    /// `q.shadows` and the paths that go on to `q.next`, in order.
+    /// Shades the waiting lanes `ids` (up to eight) at their hits `its`
+    /// and empties that queue: their shadow rays and the paths that go on
+    /// (in order) go to `leaving`.
     fn eight<C: Contributions>(
         &mut self,
         lanes: &mut [Lane],
         round: Round,
-        q: &mut Queues,
+        leaving: &mut Leaving,
         outs: &mut [C],
         stats: &mut PathStats,
     ) {
         let (world, input, o) = (self.world, &mut *self.input, &mut *self.o);
-        let Queues {
-            ids,
-            its,
-            next,
-            shadows,
-            ..
-        } = q;
+        let (ids, its) = (&mut self.ids, &mut self.its);
+        let Leaving { next, shadows } = leaving;
         let k = round.k;
         // The numbers the lanes read (a Lambertian vertex leaves the lobe's
         // and the eighth unread, the light's choice where there is one
@@ -359,128 +359,6 @@ impl<'a> Shade<'a> {
         ids.clear();
         its.clear();
     }
-}
-
-/// The eight numbers of vertex `k` of lanes `ids` (unused lanes repeat the
-/// first), `u[d][lane]`, computed eight paths at a time (one path at a
-/// time where Sobol points and independent numbers mix); only the
-/// dimensions `wanted` (bit d), the others 0 (the mixed case makes all).
-#[allow(clippy::needless_range_loop)]
-fn numbers(
-    level: Level,
-    lanes: &[Lane],
-    ids: &[u32],
-    k: u32,
-    wanted: u8,
-) -> [[f32; W]; dim::PER_VERTEX] {
-    let first = 4 + 8 * k as u64;
-    let lane = |j: usize| &lanes[ids[if j < ids.len() { j } else { 0 }] as usize];
-    let mut u = [[0.0; W]; dim::PER_VERTEX];
-    if let Some((sample, scramble)) = sobol_lanes(|j| &lane(j).sampler) {
-        let [a, b] = super::simd::sobol_groups8_wanted_at(
-            level,
-            &sample,
-            &scramble,
-            first / 4,
-            u32::from(wanted),
-        );
-        u[..4].copy_from_slice(&a);
-        u[4..].copy_from_slice(&b);
-    } else if (0..W).all(|j| lane(j).sampler.independent_prefix().is_some()) {
-        let prefix: [u64; W] =
-            std::array::from_fn(|j| lane(j).sampler.independent_prefix().unwrap_or(0));
-        u = super::simd::independent8_wanted_at(level, &prefix, first, wanted);
-    } else {
-        // Sobol points and, past the tables, independent numbers mixed.
-        for j in 0..W {
-            let v = lane(j).sampler.eight_at(first);
-            for d in 0..8 {
-                u[d][j] = v[d];
-            }
-        }
-    }
-    u
-}
-
-/// Reads lanes `ids` (with their hits) into the eight-lane arrays `x`,
-/// beside the numbers already there; unused lanes repeat the first one.
-/// Returns which lanes chose a light that is not an area light: their
-/// light fields are left as they were, and the lesson's code samples that
-/// light instead (the lanes' shadow ray for them is not used).
-#[allow(clippy::needless_range_loop)]
-fn gather(
-    world: &World,
-    level: Level,
-    lanes: &[Lane],
-    ids: &[u32],
-    hits: &[Interaction],
-    roulette: bool,
-    x: &mut In8,
-) -> [bool; W] {
-    x.roulette = roulette;
-    let mut lesson_light = [false; W];
-    for j in 0..W {
-        let jj = if j < ids.len() { j } else { 0 };
-        let lane = &lanes[ids[jj] as usize];
-        let it = &hits[jj];
-        let Bsdf::Lambertian(b) = &world.bsdfs[it.material] else {
-            unreachable!("the wavefront loop only runs on diffuse scenes");
-        };
-        for a in 0..3 {
-            x.d[a][j] = lane.ray.dir[a];
-            x.p[a][j] = it.p[a];
-            x.n[a][j] = it.n[a];
-            x.rho[a][j] = b.rho[a];
-            x.beta[a][j] = lane.path.beta[a];
-        }
-    }
-    // One area light, or eight lanes that chose the same one: its
-    // triangles picked in the lanes.
-    let lights = &world.lights.lights;
-    if let [Light::Area(light)] = lights.as_slice() {
-        if super::simd::fill_light8_at(level, light, world.lights.choose_pdf(0), x) {
-            return lesson_light;
-        }
-    }
-    // The lights, then the triangles on them, each a short loop of its own:
-    // a pick is a chain of dependent steps (count, load, divide), and the
-    // processor overlaps eight independent chains only when they are near.
-    let mut area = [None; W];
-    for j in 0..W {
-        let (i, p_choose) = world.lights.choose(x.u[dim::CHOOSE][j]).expect("a light");
-        x.p_choose[j] = p_choose;
-        match &lights[i] {
-            Light::Area(light) => area[j] = Some(light),
-            _ => lesson_light[j] = true,
-        }
-    }
-    // The triangle, as `AreaLight::sample_li` picks it.
-    let same = area.iter().all(|a| match (a, area[0]) {
-        (Some(a), Some(first)) => std::ptr::eq(*a, first),
-        _ => false,
-    });
-    if let Some(light) = area[0].filter(|_| same) {
-        if super::simd::fill_light8_at(level, light, x.p_choose[0], x) {
-            return lesson_light;
-        }
-    }
-    for (j, light) in area.into_iter().enumerate() {
-        let Some(light) = light else { continue };
-        let (t, ux) = light.pick(x.u[dim::LIGHT[0]][j]);
-        x.ux[j] = ux;
-        for (c, corner) in light.triangles[t].iter().enumerate() {
-            for a in 0..3 {
-                x.tri[c][a][j] = corner[a];
-            }
-        }
-        for a in 0..3 {
-            x.n_light[a][j] = light.normals[t][a];
-            x.le[a][j] = light.le[a];
-        }
-        x.inv_area[j] = light.inv_area;
-        x.two_sided[j] = light.two_sided;
-    }
-    lesson_light
 }
 
 /// Writes lane `j`'s path back: `false` where it ends (then what was

@@ -275,7 +275,7 @@ fn the_owen_scramble_is_the_crates() {
 fn the_lanes_offsets_are_chapter_3s_bit_for_bit() {
     use glam::Vec3;
     use raystep::ch3_ray_triangle::spawn::{offset_origin, stop_distance};
-    use raystep::fast::shade8;
+    use raystep::fast::lane_rays;
     let mut values = vec![
         0.0f32,
         -0.0,
@@ -303,7 +303,7 @@ fn the_lanes_offsets_are_chapter_3s_bit_for_bit() {
         let n = normals[i % normals.len()];
         let want = offset_origin(Vec3::splat(p), Vec3::splat(n)).x;
         assert_eq!(
-            shade8::offset_coordinate(p, n).to_bits(),
+            lane_rays::offset_coordinate(p, n).to_bits(),
             want.to_bits(),
             "{p} {n}"
         );
@@ -313,13 +313,17 @@ fn the_lanes_offsets_are_chapter_3s_bit_for_bit() {
             -values[(i * 13) % values.len()],
         ];
         let want = stop_distance(Vec3::from_array(y));
-        assert_eq!(shade8::stop_distance(y).to_bits(), want.to_bits(), "{y:?}");
+        assert_eq!(
+            lane_rays::stop_distance(y).to_bits(),
+            want.to_bits(),
+            "{y:?}"
+        );
     }
 }
 
 #[test]
 fn the_lanes_truncation_is_rusts_cast() {
-    use raystep::fast::shade8::truncate;
+    use raystep::fast::lane_rays::truncate;
     let specials = [
         0.0f32,
         -0.0,
