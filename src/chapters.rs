@@ -3,11 +3,12 @@
 
 use crate::core::stage::Chapter;
 
-/// All chapters, in order.
+/// All chapters, in order: each chapter's `stage::DEFAULT`, chapter 6
+/// with the fast engine.
 pub fn all() -> Vec<&'static dyn Chapter> {
     vec![
-        &crate::ch1_projection::stage::Projection,
-        &crate::ch2_rasterization::stage::RASTERIZATION,
+        &crate::ch1_projection::stage::DEFAULT,
+        &crate::ch2_rasterization::stage::DEFAULT,
         &crate::ch3_ray_triangle::stage::DEFAULT,
         &crate::ch4_implicit_surfaces::stage::DEFAULT,
         &crate::ch5_reflection::stage::DEFAULT,

@@ -9,5 +9,5 @@ fn main() -> std::process::ExitCode {
     if std::env::args().any(|a| a == "--student") {
         return raystep::grading::process::student_main(1);
     }
-    raystep::core::run::chapter_main(&raystep::ch1_projection::stage::Projection)
+    raystep::core::run::chapter_main(&raystep::ch1_projection::stage::DEFAULT)
 }

@@ -36,6 +36,9 @@ pub const VIEWS: &[View] = &[
 /// Chapter 1 as a stage.
 pub struct Projection;
 
+/// Chapter 1 for the chapter list (it has no options).
+pub const DEFAULT: Projection = Projection;
+
 impl Chapter for Projection {
     fn info(&self) -> ChapterInfo {
         ChapterInfo::new(1, "projection", "Projection: the pinhole camera", VIEWS)

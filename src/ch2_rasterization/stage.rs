@@ -24,7 +24,7 @@ pub struct Rasterization {
 }
 
 /// Chapter 2 with its default options, for the chapter list.
-pub static RASTERIZATION: Rasterization = Rasterization {
+pub const DEFAULT: Rasterization = Rasterization {
     cull_back_faces: false,
 };
 

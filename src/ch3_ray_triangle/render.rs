@@ -30,7 +30,7 @@ pub fn sample_position(x: u32, y: u32, width: u32, spp: u32, seed: u64, sample: 
 /// Where in pixel (`x`, `y`) a sample lies: the pixel's corner moved by
 /// the sample's next two numbers.
 fn jittered((x, y): (u32, u32), sampler: &mut impl SampleNumbers) -> Vec2 {
-    Vec2::new(x as f32, y as f32) + sampler.next_pair()
+    Vec2::new(x as f32, y as f32) + sampler.next2()
 }
 
 /// The sampler and the camera ray of one sample of pixel (`x`, `y`): the

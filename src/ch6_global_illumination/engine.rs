@@ -144,7 +144,9 @@ pub struct EngineChoice {
 }
 
 impl EngineChoice {
-    /// The lesson's engine ([`PathLoop`]).
+    /// The lesson's engine ([`PathLoop`], `--engine readable`): chapter
+    /// 5's world, whose queries chapter 3's four-wide tree answers (not
+    /// the binary tree of exercise 3.4), and [`trace_path`].
     pub const READABLE: EngineChoice = EngineChoice {
         name: "readable",
         make: |scene| Box::new(PathLoop::new(scene)),

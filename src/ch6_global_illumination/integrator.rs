@@ -145,14 +145,14 @@ pub fn trace_path(
         };
 
         // 2. Direct light: sample a light and cast a shadow ray.
-        let (u_choose, u_light) = (sampler.get1(), sampler.get2());
+        let (u_choose, u_light) = (sampler.next(), sampler.next2());
         if path.samples_lights && !v.delta {
             let direct = direct_light(world, &v, u_choose, u_light, &path, out.stats);
             out.add_direct(k, direct);
         }
 
         // 3. Indirect light: sample the next direction (BSDF or uniform).
-        let (u_lobe, u_dir) = (sampler.get1(), sampler.get2());
+        let (u_lobe, u_dir) = (sampler.next(), sampler.next2());
         let Some(step) = sample_direction(&v, u_lobe, u_dir, path.strategy) else {
             break;
         };
@@ -162,7 +162,7 @@ pub fn trace_path(
         // 4. Russian roulette: survive with probability q, then divide by q.
         if k + 1 >= settings.rr_min_bounce {
             let q = path.beta.max_element().min(1.0);
-            let dies = sampler.get1() >= q;
+            let dies = sampler.next() >= q;
             out.layers.note(PathEvent::Roulette { q, survived: !dies }); // tell a listener (the inspector)
             if dies {
                 break;

@@ -55,8 +55,8 @@ pub struct PathSampler {
 const SOBOL_MAX_SAMPLES: u64 = 1 << 16;
 
 impl crate::core::sampling::SampleNumbers for PathSampler {
-    fn next_pair(&mut self) -> Vec2 {
-        self.get2()
+    fn next2(&mut self) -> Vec2 {
+        PathSampler::next2(self)
     }
 }
 
@@ -104,9 +104,10 @@ impl PathSampler {
         self.pixel_scramble
     }
 
-    /// The next number in [0, 1).
+    /// The next number in [0, 1). (Not an iterator: it never ends.)
     #[inline]
-    pub fn get1(&mut self) -> f32 {
+    #[allow(clippy::should_implement_trait)]
+    pub fn next(&mut self) -> f32 {
         let d = self.dimension;
         self.dimension += 1;
         match self.kind {
@@ -128,13 +129,13 @@ impl PathSampler {
 
     /// The next two numbers.
     #[inline]
-    pub fn get2(&mut self) -> Vec2 {
-        let x = self.get1();
-        Vec2::new(x, self.get1())
+    pub fn next2(&mut self) -> Vec2 {
+        let x = self.next();
+        Vec2::new(x, self.next())
     }
 
     /// The eight numbers of dimensions `first .. first + 8` (`first` a
-    /// multiple of four), the same bits [`PathSampler::get1`] would give
+    /// multiple of four), the same bits [`PathSampler::next`] would give
     /// them: what one path vertex draws, for a loop that draws them all at
     /// once (the fast engine's wavefront).
     pub fn eight_at(&self, first: u64) -> [f32; 8] {

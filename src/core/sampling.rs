@@ -84,11 +84,11 @@ impl Sampler {
 /// [`Sampler`] or chapter 6's `PathSampler`.
 pub trait SampleNumbers {
     /// The next two numbers in [0, 1).
-    fn next_pair(&mut self) -> glam::Vec2;
+    fn next2(&mut self) -> glam::Vec2;
 }
 
 impl SampleNumbers for Sampler {
-    fn next_pair(&mut self) -> glam::Vec2 {
-        self.next2()
+    fn next2(&mut self) -> glam::Vec2 {
+        Sampler::next2(self)
     }
 }

@@ -13,7 +13,7 @@ fn sobol_numbers_are_the_crates_one_dimension_at_a_time() {
             let scramble = mix64(p.pixel_scramble() ^ (d / 4)) as u32;
             let one = sobol_burley::sample(sample as u32, (d % 4) as u32, scramble)
                 .min(1.0 - f32::EPSILON / 2.0);
-            assert_eq!(p.get1(), one, "sample {sample}, dimension {d}");
+            assert_eq!(p.next(), one, "sample {sample}, dimension {d}");
         }
     }
 }
@@ -23,9 +23,9 @@ fn independent_numbers_are_exactly_sampling_random() {
     for d in 0..40 {
         let mut p = PathSampler::new(SamplerKind::Independent, 5, 77, 3);
         for _ in 0..d {
-            p.get1();
+            p.next();
         }
-        assert_eq!(p.get1(), raystep::core::sampling::random(5, 77, 3, d));
+        assert_eq!(p.next(), raystep::core::sampling::random(5, 77, 3, d));
     }
 }
 
@@ -42,8 +42,8 @@ fn both_samplers_are_uniform_and_sobol_is_more_even() {
             let mut sum = 0.0f64;
             for s in 0..256 {
                 let mut p = PathSampler::new(kind, 3, pixel, s);
-                p.get2();
-                let u = p.get2();
+                p.next2();
+                let u = p.next2();
                 assert!((0.0..1.0).contains(&u.x) && (0.0..1.0).contains(&u.y));
                 sum += (u.x * u.y) as f64;
             }
