@@ -11,7 +11,7 @@ use super::app::{App, Msg};
 /// how to quit and close first, so a short terminal that cuts the list
 /// still shows them.
 pub const KEYS: &[(&str, &str)] = &[
-    ("q  Ctrl-C", "quit"),
+    ("q  Ctrl-C", "quit (Ctrl-Z suspends, `fg` brings it back)"),
     (
         "Esc",
         "close what is open: help, path, inspect, grade, student",

@@ -33,6 +33,7 @@ pub mod query;
 pub mod scenes;
 pub mod screen;
 pub mod shown;
+pub mod signals;
 pub mod state;
 pub mod stats;
 pub mod student;
@@ -50,7 +51,10 @@ use std::sync::OnceLock;
 use std::thread::ThreadId;
 use std::time::{Duration, Instant};
 
-use crossterm::event::{self, DisableMouseCapture, EnableMouseCapture, Event};
+use crossterm::event::{
+    self, DisableBracketedPaste, DisableMouseCapture, EnableBracketedPaste, EnableMouseCapture,
+    Event, KeyCode, KeyModifiers,
+};
 use crossterm::execute;
 use crossterm::terminal::{
     disable_raw_mode, enable_raw_mode, EnterAlternateScreen, LeaveAlternateScreen,
@@ -70,9 +74,11 @@ pub fn color_allowed() -> bool {
     std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
 }
 
-/// Whether the main binary should open the UI: stdout is a terminal.
+/// Whether the main binary should open the UI: stdout is a terminal that
+/// can draw one (`TERM=dumb` cannot: it gets the headless summary, as a
+/// pipe does).
 pub fn should_open() -> bool {
-    std::io::stdout().is_terminal()
+    std::io::stdout().is_terminal() && std::env::var("TERM").map_or(true, |t| t != "dumb")
 }
 
 /// Set this environment variable to make the UI panic after its first
@@ -87,16 +93,32 @@ pub const TEST_ERROR: &str = "RAYSTEP_TUI_TEST_ERROR";
 /// The thread that owns the terminal; panics elsewhere leave it alone.
 static UI_THREAD: OnceLock<ThreadId> = OnceLock::new();
 
-/// Puts the terminal back: raw mode and mouse reports off, main screen,
-/// cursor shown. Harmless when the terminal is already restored.
+/// Puts the terminal back: raw mode, mouse reports and bracketed paste
+/// off, main screen, cursor shown. Harmless when the terminal is already
+/// restored.
 pub fn restore_terminal() {
     let _ = disable_raw_mode();
     let _ = execute!(
         std::io::stdout(),
+        DisableBracketedPaste,
         DisableMouseCapture,
         LeaveAlternateScreen,
         crossterm::cursor::Show
     );
+}
+
+/// Takes the terminal for the UI: raw mode, the alternate screen, mouse
+/// reports, bracketed paste (a paste arrives as one event, never as keys),
+/// cursor hidden.
+fn take_terminal() -> std::io::Result<()> {
+    enable_raw_mode()?;
+    execute!(
+        std::io::stdout(),
+        EnterAlternateScreen,
+        EnableMouseCapture,
+        EnableBracketedPaste,
+        crossterm::cursor::Hide
+    )
 }
 
 /// Installs a panic hook that restores the terminal before printing a
@@ -239,14 +261,9 @@ fn run_app(
     report: &mut Option<String>,
 ) -> std::io::Result<Option<last::Last>> {
     install_panic_hook();
-    enable_raw_mode()?;
+    let signals = signals::Signals::install(restore_terminal);
     let _restore = Restore;
-    execute!(
-        std::io::stdout(),
-        EnterAlternateScreen,
-        EnableMouseCapture,
-        crossterm::cursor::Hide
-    )?;
+    take_terminal()?;
     // Asked once, before crossterm reads keys.
     let chosen = graphics::pick(launch.graphics);
     (app.graphics, app.font) = (chosen.graphics, chosen.font);
@@ -257,7 +274,7 @@ fn run_app(
     let mut rates = stats::Rates::new(Instant::now(), out.count());
     let mut terminal = Terminal::new(CrosstermBackend::new(out))?;
     terminal.clear()?;
-    let last = event_loop(&mut terminal, app, &mut rates);
+    let last = event_loop(&mut terminal, app, &mut rates, signals.as_ref());
     *report = launch.stats.then(|| rates.report());
     last
 }
@@ -266,6 +283,7 @@ fn event_loop(
     terminal: &mut stats::Term,
     mut app: App,
     rates: &mut stats::Rates,
+    signals: Option<&signals::Signals>,
 ) -> std::io::Result<Option<last::Last>> {
     let worker = Worker::spawn();
     let size = terminal.size()?;
@@ -295,6 +313,10 @@ fn event_loop(
     let mut painter = painter::Painter::for_process(app.graphics);
     loop {
         rates.tick(Instant::now());
+        while let Some(signal) = signals.and_then(|s| s.try_recv()) {
+            answer_signal(signal, terminal, &mut painter)?;
+            dirty = true;
+        }
         if checked.elapsed() >= Duration::from_secs(1) {
             checked = Instant::now();
             dirty |= app.reload_if_changed();
@@ -421,6 +443,18 @@ fn event_loop(
         };
         if event::poll(timeout)? {
             match event::read()? {
+                Event::Key(key)
+                    if key.code == KeyCode::Char('z')
+                        && key.modifiers.contains(KeyModifiers::CONTROL) =>
+                {
+                    // Ctrl-Z, a key in raw mode: suspend as TSTP would.
+                    answer_signal(signals::Signal::Suspend, terminal, &mut painter)?;
+                    dirty = true;
+                }
+                Event::Paste(_) => {
+                    app = update(app, Msg::Pasted);
+                    dirty = true;
+                }
                 Event::Key(key) => {
                     if let Some(msg) = keys::msg_for_key(&app, key) {
                         app = update(app, msg);
@@ -449,4 +483,34 @@ fn event_loop(
             rates.busy();
         }
     }
+}
+
+/// Answers a signal between two frames: gives the terminal back and exits,
+/// or gives it back and stops until continued, or takes it again after a
+/// stop (and repaints everything, the screen's content being lost).
+fn answer_signal(
+    signal: signals::Signal,
+    terminal: &mut stats::Term,
+    painter: &mut painter::Painter,
+) -> std::io::Result<()> {
+    match signal {
+        signals::Signal::Exit(code) => {
+            restore_terminal();
+            crate::core::film::remove_temporaries_and_exit(code)
+        }
+        signals::Signal::Suspend => {
+            restore_terminal();
+            signals::stop_here();
+            resume(terminal, painter)
+        }
+        signals::Signal::Continued => resume(terminal, painter),
+    }
+}
+
+/// Takes the terminal back after a stop and clears what the next frame
+/// must redraw.
+fn resume(terminal: &mut stats::Term, painter: &mut painter::Painter) -> std::io::Result<()> {
+    take_terminal()?;
+    terminal.clear()?;
+    painter.invalidate(terminal.backend_mut())
 }

@@ -130,6 +130,8 @@ pub enum Msg {
     Tick(std::time::Duration),
     /// A report from the render worker.
     Progress(Progress),
+    /// Text was pasted (bracketed paste): never read as keys.
+    Pasted,
 }
 
 impl Msg {

@@ -255,6 +255,9 @@ fn step(mut app: App, msg: Msg) -> App {
                 app.message = "nothing to save yet".into();
             }
         }
+        Msg::Pasted => {
+            app.message = "paste ignored: the UI takes keys one at a time".into();
+        }
         Msg::Saved(result) => {
             app.save_requested = false;
             app.message = match result {

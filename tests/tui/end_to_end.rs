@@ -14,12 +14,12 @@ use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
 /// A private tmux server (its own socket), killed on drop.
-struct Tmux {
+pub(super) struct Tmux {
     socket: String,
 }
 
 impl Tmux {
-    fn run(&self, args: &[&str]) -> Output {
+    pub(super) fn run(&self, args: &[&str]) -> Output {
         Command::new("tmux")
             .args(["-L", &self.socket, "-f", "/dev/null"])
             .args(args)
@@ -27,28 +27,28 @@ impl Tmux {
             .expect("running tmux")
     }
 
-    fn capture(&self) -> String {
+    pub(super) fn capture(&self) -> String {
         String::from_utf8_lossy(&self.run(&["capture-pane", "-p", "-t", "t"]).stdout).into_owned()
     }
 
-    fn flag(&self, name: &str) -> String {
+    pub(super) fn flag(&self, name: &str) -> String {
         let f = format!("#{{{name}}}");
         String::from_utf8_lossy(&self.run(&["display-message", "-p", "-t", "t", &f]).stdout)
             .trim()
             .to_string()
     }
 
-    fn keys(&self, keys: &str) {
+    pub(super) fn keys(&self, keys: &str) {
         self.run(&["send-keys", "-t", "t", "-l", keys]);
     }
 
-    fn key(&self, key: &str) {
+    pub(super) fn key(&self, key: &str) {
         self.run(&["send-keys", "-t", "t", key]);
     }
 
     /// Polls every 30 ms until `ok` holds for the screen, or fails after
     /// `secs` seconds showing the screen.
-    fn wait(&self, what: &str, secs: u64, ok: impl Fn(&Tmux, &str) -> bool) -> String {
+    pub(super) fn wait(&self, what: &str, secs: u64, ok: impl Fn(&Tmux, &str) -> bool) -> String {
         let start = Instant::now();
         loop {
             let screen = self.capture();
@@ -122,7 +122,7 @@ fn say_skipped(reason: &str) {
 /// named after `name`, once its prompt is up. The one gate of every tmux
 /// test ([`tmux_plan`]): `None` without tmux (the test is skipped, and says
 /// so on the terminal), and a failure without tmux under `CI`.
-fn shell(name: &str) -> Option<(Tmux, PathBuf)> {
+pub(super) fn shell(name: &str) -> Option<(Tmux, PathBuf)> {
     match tmux_plan(tmux_available(), std::env::var_os("CI").is_some()) {
         TmuxPlan::Run => {}
         TmuxPlan::Skip => {

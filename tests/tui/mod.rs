@@ -9,6 +9,7 @@ mod graphics;
 mod inspect;
 mod layout_and_keys;
 mod painter;
+mod signals;
 mod sizes_and_keys;
 mod warp;
 mod zoom;
