@@ -140,7 +140,7 @@ pub struct EngineChoice {
     /// A short name for tables and messages.
     pub name: &'static str,
     /// Builds the engine's world for a scene.
-    pub make: fn(&Scene) -> Box<dyn PathEngine>,
+    pub build: fn(&Scene) -> Box<dyn PathEngine>,
 }
 
 impl EngineChoice {
@@ -149,12 +149,12 @@ impl EngineChoice {
     /// the binary tree of exercise 3.4), and [`trace_path`].
     pub const READABLE: EngineChoice = EngineChoice {
         name: "readable",
-        make: |scene| Box::new(PathLoop::new(scene)),
+        build: |scene| Box::new(PathLoop::new(scene)),
     };
 
     /// The engine for `scene`.
     pub fn make(&self, scene: &Scene) -> Box<dyn PathEngine> {
-        (self.make)(scene)
+        (self.build)(scene)
     }
 }
 

@@ -57,7 +57,7 @@ use level::Level;
 /// default of `ch6`, `raystep` and the terminal UI).
 pub const FAST: EngineChoice = EngineChoice {
     name: "fast",
-    make: |scene| Box::new(FastEngine::new(scene)),
+    build: |scene| Box::new(FastEngine::new(scene)),
 };
 
 /// The engine a front end names on its command line: `fast` or
