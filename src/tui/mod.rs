@@ -39,6 +39,7 @@ pub mod stats;
 pub mod student;
 pub mod student_update;
 pub mod target;
+pub mod terminal;
 pub mod update;
 pub mod view;
 pub mod warp;
@@ -47,22 +48,15 @@ pub mod zoom;
 
 use std::io::IsTerminal;
 use std::path::PathBuf;
-use std::sync::OnceLock;
-use std::thread::ThreadId;
 use std::time::{Duration, Instant};
 
-use crossterm::event::{
-    self, DisableBracketedPaste, DisableMouseCapture, EnableBracketedPaste, EnableMouseCapture,
-    Event, KeyCode, KeyModifiers,
-};
-use crossterm::execute;
-use crossterm::terminal::{
-    disable_raw_mode, enable_raw_mode, EnterAlternateScreen, LeaveAlternateScreen,
-};
+use crossterm::event::{self, Event, KeyCode, KeyModifiers};
 use ratatui::backend::CrosstermBackend;
 use ratatui::Terminal;
 
 use app::{App, Msg};
+pub use terminal::restore_terminal;
+use terminal::{answer_signal, install_panic_hook, take_terminal, Restore};
 use update::{save, update};
 use worker::{Purpose, Worker};
 
@@ -89,61 +83,6 @@ pub const TEST_PANIC: &str = "RAYSTEP_TUI_TEST_PANIC";
 /// error after its first frame (the end-to-end test checks that the
 /// terminal is restored before the error is printed).
 pub const TEST_ERROR: &str = "RAYSTEP_TUI_TEST_ERROR";
-
-/// The thread that owns the terminal; panics elsewhere leave it alone.
-static UI_THREAD: OnceLock<ThreadId> = OnceLock::new();
-
-/// Puts the terminal back: raw mode, mouse reports and bracketed paste
-/// off, main screen, cursor shown. Harmless when the terminal is already
-/// restored.
-pub fn restore_terminal() {
-    let _ = disable_raw_mode();
-    let _ = execute!(
-        std::io::stdout(),
-        DisableBracketedPaste,
-        DisableMouseCapture,
-        LeaveAlternateScreen,
-        crossterm::cursor::Show
-    );
-}
-
-/// Takes the terminal for the UI: raw mode, the alternate screen, mouse
-/// reports, bracketed paste (a paste arrives as one event, never as keys),
-/// cursor hidden.
-fn take_terminal() -> std::io::Result<()> {
-    enable_raw_mode()?;
-    execute!(
-        std::io::stdout(),
-        EnterAlternateScreen,
-        EnableMouseCapture,
-        EnableBracketedPaste,
-        crossterm::cursor::Hide
-    )
-}
-
-/// Installs a panic hook that restores the terminal before printing a
-/// panic of the UI thread. Panics of other threads (a stage panicking in
-/// the render worker, or in rayon under it) are not printed over the UI:
-/// the worker catches them and the UI shows the message.
-fn install_panic_hook() {
-    let _ = UI_THREAD.set(std::thread::current().id());
-    let previous = std::panic::take_hook();
-    std::panic::set_hook(Box::new(move |info| {
-        if Some(&std::thread::current().id()) == UI_THREAD.get() {
-            restore_terminal();
-            previous(info);
-        }
-    }));
-}
-
-/// Restores the terminal when dropped, so an early `?` return restores too.
-struct Restore;
-
-impl Drop for Restore {
-    fn drop(&mut self) {
-        restore_terminal();
-    }
-}
 
 /// What the main binary's flags ask the UI to open with.
 #[derive(Clone, Debug, Default)]
@@ -483,34 +422,4 @@ fn event_loop(
             rates.busy();
         }
     }
-}
-
-/// Answers a signal between two frames: gives the terminal back and exits,
-/// or gives it back and stops until continued, or takes it again after a
-/// stop (and repaints everything, the screen's content being lost).
-fn answer_signal(
-    signal: signals::Signal,
-    terminal: &mut stats::Term,
-    painter: &mut painter::Painter,
-) -> std::io::Result<()> {
-    match signal {
-        signals::Signal::Exit(code) => {
-            restore_terminal();
-            crate::core::film::remove_temporaries_and_exit(code)
-        }
-        signals::Signal::Suspend => {
-            restore_terminal();
-            signals::stop_here();
-            resume(terminal, painter)
-        }
-        signals::Signal::Continued => resume(terminal, painter),
-    }
-}
-
-/// Takes the terminal back after a stop and clears what the next frame
-/// must redraw.
-fn resume(terminal: &mut stats::Term, painter: &mut painter::Painter) -> std::io::Result<()> {
-    take_terminal()?;
-    terminal.clear()?;
-    painter.invalidate(terminal.backend_mut())
 }
