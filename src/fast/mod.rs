@@ -60,14 +60,6 @@ pub const FAST: EngineChoice = EngineChoice {
     build: |scene| Box::new(FastEngine::new(scene)),
 };
 
-/// The engine a front end names on its command line: `fast` or
-/// `readable`.
-pub fn choice(name: &str) -> Option<EngineChoice> {
-    [FAST, EngineChoice::READABLE]
-        .into_iter()
-        .find(|e| e.name == name)
-}
-
 /// The fast engine: the world's ray queries answered by the eight-wide
 /// tree, and the wavefront loop for the scenes it covers
 /// ([`wave::supports`]); elsewhere the lesson's row loop over that tree.

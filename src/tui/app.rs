@@ -121,6 +121,9 @@ pub struct App {
     /// scene index): the scene list marks those scenes, and switching
     /// chapters avoids them.
     pub refusals: BTreeMap<(usize, usize), String>,
+    /// Whether the current scene came with a chapter switch (not picked in
+    /// this chapter): a refusal then moves the chapter to a scene it takes.
+    pub scene_came_with_chapter: bool,
     /// Which chapters have been shown in this run (a chapter's own scene,
     /// [`ChapterInfo::scene`](crate::core::stage::ChapterInfo::scene), is
     /// chosen only the first time).
@@ -187,6 +190,7 @@ impl App {
             traces: 0,
             story: None,
             refusals: BTreeMap::new(),
+            scene_came_with_chapter: false,
             opened: Vec::new(),
             screen: Rect::new(0, 0, 80, 24),
             panel_scroll: 0,
@@ -403,6 +407,7 @@ impl App {
                 self.opened.resize(index + 1, false);
             }
             self.opened[index] = true;
+            self.scene_came_with_chapter = true;
             self.restart();
         }
     }
@@ -432,6 +437,7 @@ impl App {
     pub(super) fn select_scene(&mut self, index: usize) {
         if index < self.scenes.len() && index != self.scene {
             self.scene = index;
+            self.scene_came_with_chapter = false;
             self.restart();
         }
     }

@@ -59,4 +59,32 @@ impl App {
         }
         (0..self.scenes.len()).find(|i| self.problem_in(index, *i).is_none())
     }
+
+    /// The current chapter refused the current scene (`message`): known
+    /// from now on. If the scene came with a switch to this chapter (the
+    /// user did not pick it here), the chapter moves to the first scene it
+    /// is not known to refuse, and says so: switching chapters never
+    /// leaves one on a scene it refuses while another may work.
+    pub fn refused(&mut self, message: String) {
+        let (chapter, refused) = (self.chapter, self.scene);
+        self.refusals.insert((chapter, refused), message);
+        if !self.scene_came_with_chapter {
+            return;
+        }
+        let other = (0..self.scenes.len()).find(|i| self.problem_in(chapter, *i).is_none());
+        if let Some(i) = other {
+            self.scene = i;
+            self.restart();
+            let name = |i: usize| {
+                self.scenes.get(i).map_or(String::new(), |e| {
+                    crate::core::text::escape(e.stem()).into_owned()
+                })
+            };
+            self.message = format!(
+                "this chapter cannot render {}: opened {} instead",
+                name(refused),
+                name(i)
+            );
+        }
+    }
 }

@@ -333,11 +333,9 @@ fn step(mut app: App, msg: Msg) -> App {
         Msg::Progress(p) if p.generation() == app.generation => match p {
             Progress::State(s) => app.snapshot = Some(*s),
             Progress::Failed { message, .. } => app.failure = Some(message),
-            Progress::Refused { message, .. } => {
-                // Known from now on: the scene list marks it, and this
-                // chapter is not opened on it again while others work.
-                app.refusals.insert((app.chapter, app.scene), message);
-            }
+            // Known from now on: the scene list marks it, and this chapter
+            // is not opened on it again while others work.
+            Progress::Refused { message, .. } => app.refused(message),
             Progress::Inspected {
                 purpose: Purpose::Trace,
                 result,

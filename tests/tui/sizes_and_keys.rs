@@ -679,3 +679,62 @@ fn chapters_5_and_6_render_sdfs_and_refuse_only_a_dark_scene() {
         assert!(why.to_string().contains("needs light"), "{why}");
     }
 }
+
+/// What the worker does with the current job's start: a refusal comes
+/// back as `Progress::Refused`.
+fn start_or_refuse(mut app: App) -> App {
+    app.read_scene_now();
+    let Some(job) = app.job() else {
+        return app;
+    };
+    match job.chapter.start(job.scene.clone(), &job.settings) {
+        Ok(_) => app,
+        Err(e) => update(
+            app,
+            Msg::Progress(Progress::Refused {
+                generation: job.generation,
+                message: e.to_string(),
+            }),
+        ),
+    }
+}
+
+/// Chapter 4 opens on `sdf-shapes`; chapters 5, 6 and 1, switched to from
+/// there, learn only when they start that they refuse it: each then moves
+/// to a scene it takes and says so, as the book promises. A scene the user
+/// picks in a chapter stays picked, refused or not.
+#[test]
+fn a_chapter_switched_onto_a_scene_it_refuses_moves_to_one_it_takes() {
+    let mut app = start_or_refuse(update(real_app(), Msg::ChapterNumber(4)));
+    let sdf = find(&app, "sdf-shapes");
+    assert_eq!(app.scene, sdf);
+    for n in [5, 6, 1] {
+        app = update(app, Msg::ChapterNumber(4));
+        app = send(app, &[Msg::SwitchFocus]);
+        while app.scene != sdf {
+            app = update(app, Msg::Down);
+        }
+        app = send(app, &[Msg::SwitchFocus]);
+        assert_eq!(app.scene, sdf, "chapter 4 on sdf-shapes");
+        app = start_or_refuse(update(app, Msg::ChapterNumber(n)));
+        assert_eq!(app.current_chapter().unwrap().info().number, n);
+        assert_ne!(app.scene, sdf, "chapter {n} stayed on a scene it refuses");
+        assert!(
+            app.message.contains("opened"),
+            "chapter {n}: {}",
+            app.message
+        );
+        assert!(
+            app.problem().is_none() && app.job().is_some(),
+            "chapter {n}"
+        );
+    }
+    // Picked in chapter 1 itself: the refusal is shown, the pick stays.
+    let mut app = send(app, &[Msg::SwitchFocus]);
+    while app.scene != sdf {
+        app = update(app, Msg::Down);
+    }
+    let app = start_or_refuse(app);
+    assert_eq!(app.scene, sdf);
+    assert!(app.problem().is_some());
+}
