@@ -172,23 +172,15 @@ fn the_table_driven_sobol_numbers_are_the_crates() {
 fn unsafe_code_lives_in_one_module() {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut found = Vec::new();
-    let mut stack = vec![src.clone()];
-    while let Some(dir) = stack.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap() {
-            let p = entry.unwrap().path();
-            if p.is_dir() {
-                stack.push(p);
-            } else if p.extension().is_some_and(|e| e == "rs") {
-                let text = std::fs::read_to_string(&p).unwrap();
-                let code: String = text
-                    .lines()
-                    .filter(|l| !l.trim_start().starts_with("//"))
-                    .collect::<Vec<_>>()
-                    .join("\n");
-                if code.contains("unsafe {") || code.contains("unsafe fn") {
-                    found.push(p.strip_prefix(&src).unwrap().display().to_string());
-                }
-            }
+    for p in crate::common::files_under(&src, "rs") {
+        let text = std::fs::read_to_string(&p).unwrap();
+        let code: String = text
+            .lines()
+            .filter(|l| !l.trim_start().starts_with("//"))
+            .collect::<Vec<_>>()
+            .join("\n");
+        if code.contains("unsafe {") || code.contains("unsafe fn") {
+            found.push(p.strip_prefix(&src).unwrap().display().to_string());
         }
     }
     found.sort();

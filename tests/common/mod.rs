@@ -137,3 +137,21 @@ pub fn box_faces(lo: Vec3, hi: Vec3) -> Vec<[Vec3; 3]> {
         .flat_map(|q| [[c(q[0]), c(q[1]), c(q[2])], [c(q[0]), c(q[2]), c(q[3])]])
         .collect()
 }
+
+/// Every file under `dir` whose name ends in `.{ext}`, sorted.
+pub fn files_under(dir: &Path, ext: &str) -> Vec<PathBuf> {
+    let mut found = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let p = entry.unwrap().path();
+            if p.is_dir() {
+                stack.push(p);
+            } else if p.extension().is_some_and(|e| e == ext) {
+                found.push(p);
+            }
+        }
+    }
+    found.sort();
+    found
+}

@@ -269,40 +269,32 @@ fn no_code_line_is_hidden_from_a_listing() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut hidden = Vec::new();
     let mut markers = 0;
-    let mut stack = vec![root.join("src"), root.join("chapters")];
-    while let Some(dir) = stack.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap() {
-            let p = entry.unwrap().path();
-            if p.is_dir() {
-                stack.push(p);
+    let files = [root.join("src"), root.join("chapters")]
+        .iter()
+        .flat_map(|d| crate::common::files_under(d, "rs"))
+        .collect::<Vec<_>>();
+    for p in files {
+        let text = std::fs::read_to_string(&p).unwrap();
+        for (i, line) in text.lines().enumerate() {
+            if !line.contains("ANCHOR") {
                 continue;
             }
-            if p.extension().is_none_or(|e| e != "rs") {
-                continue;
-            }
-            let text = std::fs::read_to_string(&p).unwrap();
-            for (i, line) in text.lines().enumerate() {
-                if !line.contains("ANCHOR") {
-                    continue;
-                }
-                let t = line.trim();
-                let name = t
-                    .strip_prefix("// ANCHOR: ")
-                    .or_else(|| t.strip_prefix("// ANCHOR_END: "));
-                match name {
-                    Some(n)
-                        if !n.is_empty()
-                            && n.chars()
-                                .all(|c| c.is_alphanumeric() || c == '_' || c == '-') =>
-                    {
-                        markers += 1
-                    }
-                    _ => hidden.push(format!(
-                        "{}:{}: {t}",
-                        p.strip_prefix(root).unwrap().display(),
-                        i + 1
-                    )),
-                }
+            let t = line.trim();
+            let name = t
+                .strip_prefix("// ANCHOR: ")
+                .or_else(|| t.strip_prefix("// ANCHOR_END: "));
+            let marker = name.is_some_and(|n| {
+                !n.is_empty()
+                    && n.chars()
+                        .all(|c| c.is_alphanumeric() || c == '_' || c == '-')
+            });
+            match marker {
+                true => markers += 1,
+                false => hidden.push(format!(
+                    "{}:{}: {t}",
+                    p.strip_prefix(root).unwrap().display(),
+                    i + 1
+                )),
             }
         }
     }

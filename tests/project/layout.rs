@@ -680,41 +680,33 @@ fn every_mod_table_lists_every_module() {
     let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut missing = Vec::new();
     let mut tables = 0;
-    let mut stack = vec![src.clone()];
-    while let Some(dir) = stack.pop() {
-        for entry in std::fs::read_dir(&dir).unwrap() {
-            let p = entry.unwrap().path();
-            if p.is_dir() {
-                stack.push(p);
+    for p in crate::common::files_under(&src, "rs") {
+        if p.file_name().is_none_or(|n| n != "mod.rs") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&p).unwrap();
+        let table: String = text
+            .lines()
+            .filter(|l| l.starts_with("//! |"))
+            .collect::<Vec<_>>()
+            .join("\n");
+        if table.is_empty() {
+            continue;
+        }
+        tables += 1;
+        for line in text.lines() {
+            let decl = line
+                .trim()
+                .strip_prefix("pub mod ")
+                .or_else(|| line.trim().strip_prefix("mod "));
+            let Some(name) = decl.and_then(|d| d.strip_suffix(';')) else {
                 continue;
-            }
-            if p.file_name().is_none_or(|n| n != "mod.rs") {
-                continue;
-            }
-            let text = std::fs::read_to_string(&p).unwrap();
-            let table: String = text
-                .lines()
-                .filter(|l| l.starts_with("//! |"))
-                .collect::<Vec<_>>()
-                .join("\n");
-            if table.is_empty() {
-                continue;
-            }
-            tables += 1;
-            for line in text.lines() {
-                let decl = line
-                    .trim()
-                    .strip_prefix("pub mod ")
-                    .or_else(|| line.trim().strip_prefix("mod "));
-                let Some(name) = decl.and_then(|d| d.strip_suffix(';')) else {
-                    continue;
-                };
-                let listed = table.contains(&format!("[`{name}`]"))
-                    || table.contains(&format!("(mod@{name})"));
-                if !listed {
-                    let file = p.strip_prefix(&src).unwrap().display().to_string();
-                    missing.push(format!("{file}: {name}"));
-                }
+            };
+            let listed =
+                table.contains(&format!("[`{name}`]")) || table.contains(&format!("(mod@{name})"));
+            if !listed {
+                let file = p.strip_prefix(&src).unwrap().display().to_string();
+                missing.push(format!("{file}: {name}"));
             }
         }
     }
