@@ -431,7 +431,7 @@ impl Drop for OutputSet {
     }
 }
 
-/// For a SIGINT/SIGTERM handler: waits for the write in progress, removes
+/// For a signal handler (INT, TERM, HUP; the TUI's too): waits for the write in progress, removes
 /// every temporary file of this process and exits with `code`. No file is
 /// renamed into place afterwards.
 pub fn remove_temporaries_and_exit(code: i32) -> ! {

@@ -130,7 +130,7 @@ pub fn max_threads() -> usize {
 }
 
 /// Sets the size of rayon's global pool (once per process), and installs
-/// the SIGINT/SIGTERM clean-up ([`clean_up_on_signals`]): every headless
+/// the signal clean-up ([`clean_up_on_signals`]): every headless
 /// entry point calls this first.
 pub fn init_threads(threads: Option<usize>) -> Result<()> {
     if let Some(n) = threads {
@@ -338,17 +338,19 @@ pub fn run_on(chapter: &dyn Chapter, scene: Scene, common: &CommonArgs) -> Resul
     )
 }
 
-/// From now on SIGINT and SIGTERM let the file being written finish,
-/// remove every temporary file and exit with 130 or 143, so an interrupted
+/// From now on SIGINT, SIGTERM and SIGHUP (the terminal closed) let the
+/// file being written finish, remove every temporary file and exit with
+/// 130, 143 or 129, so an interrupted
 /// run leaves no debris and no partial set of outputs. Once per process;
 /// nothing on platforms without signals.
 pub fn clean_up_on_signals() {
     #[cfg(unix)]
     {
-        use signal_hook::consts::{SIGINT, SIGTERM};
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
         static ONCE: std::sync::Once = std::sync::Once::new();
         ONCE.call_once(|| {
-            let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM]) else {
+            let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP])
+            else {
                 return;
             };
             std::thread::spawn(move || {
@@ -375,7 +377,7 @@ pub fn exit_code<T>(result: Result<T>) -> ExitCode {
 }
 
 /// What a run that a signal interrupted returns: nothing, because the
-/// signal's handler exits the process with 130 or 143 once it has removed
+/// signal's handler exits the process with 128 + the signal once it has removed
 /// the temporaries ([`clean_up_on_signals`]); the main thread must not
 /// return first with an exit status of its own.
 pub fn stop_code() -> ExitCode {

@@ -355,7 +355,7 @@ fn an_output_set_appears_whole_or_not_at_all() {
     assert_eq!(temporaries_on_disk(), 0);
 }
 
-/// SIGTERM and SIGINT at many moments of a ch6 run (which writes an image,
+/// SIGTERM, SIGINT and SIGHUP at many moments of a ch6 run (which writes an image,
 /// an EXR and a dozen layer files): afterwards there is never a temporary
 /// file, and the set of outputs is either complete or absent.
 #[cfg(unix)]
@@ -404,7 +404,7 @@ fn interrupted_runs_leave_all_outputs_or_none_and_no_temporaries() {
         let out = dir.join(format!("run{k}"));
         let mut child = run(&out);
         std::thread::sleep(duration * k as u32 / 14);
-        let signal = if k % 2 == 0 { "-TERM" } else { "-INT" };
+        let signal = ["-TERM", "-INT", "-HUP"][k as usize % 3];
         let _ = Command::new("kill")
             .args([signal, &child.id().to_string()])
             .status();
