@@ -182,12 +182,14 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
     init_threads(common.threads)?;
     let scene = common.load_scene()?;
     // Said before the render, which may take hours.
-    if stage.path.max_bounces.is_none() && roulette_cannot_end(&scene) {
+    // (With --unlimited, or a --max-bounces at or past the safety limit.)
+    if stage.path.bounce_limit() >= SAFETY_BOUNCES && roulette_cannot_end(&scene) {
         eprintln!(
             "warning: every surface of {} reflects all the light it receives \
              (reflectance 1 or glass): Russian roulette cannot end these paths, only \
              leaving the scene can; in a closed scene each runs to the safety limit \
-             of {SAFETY_BOUNCES} bounces. Lower a reflectance or drop --unlimited.",
+             of {SAFETY_BOUNCES} bounces. Lower a reflectance, or drop --unlimited or \
+             the large --max-bounces.",
             scene.name
         );
     }

@@ -153,6 +153,27 @@ fn a_scene_that_reflects_everything_is_said_to_defeat_roulette() {
         .unwrap();
     let err = String::from_utf8_lossy(&run.stderr);
     assert!(err.contains("roulette cannot end these paths"), "{err}");
+    // A bounce limit at or past the safety limit is the same as none.
+    let run = std::process::Command::new(env!("CARGO_BIN_EXE_ch6"))
+        .args([
+            "--max-bounces",
+            "4294967295",
+            "--spp",
+            "1",
+            "--width",
+            "4",
+            "--height",
+            "4",
+            "--final-only",
+            "--scene",
+        ])
+        .arg(&file)
+        .arg("--out")
+        .arg(dir.join("out2"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&run.stderr);
+    assert!(err.contains("roulette cannot end these paths"), "{err}");
 }
 
 #[test]
