@@ -19,6 +19,18 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
+/// `println!` that never panics: when stdout is closed (`fuzz | head`),
+/// the program ends quietly with 141, the status of a process a broken
+/// pipe ends.
+macro_rules! say {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        if writeln!(std::io::stdout(), $($arg)*).is_err() {
+            std::process::exit(141);
+        }
+    }};
+}
+
 use raystep::fuzz::process::{child_main, run_one, CaseLimits, Report};
 use raystep::fuzz::tree::structured_case;
 use raystep::fuzz::{case, run_case, run_index, run_range, Tally, SLOW_SECONDS};
@@ -74,7 +86,7 @@ fn main() -> ExitCode {
     if let Some(i) = one {
         let c = case(seed, i);
         let head = |t: &str| -> String { t.chars().take(4000).collect() };
-        println!(
+        say!(
             "--- scene ({} bytes; chapter index {}) ---\n{}\n--- obj ({} bytes) ---\n{}",
             c.scene.len(),
             c.chapter,
@@ -84,7 +96,7 @@ fn main() -> ExitCode {
         );
         let t = Instant::now();
         let result = run_case(&c);
-        println!(
+        say!(
             "--- {:?} in {:.3} s",
             result.map(|_| "rendered"),
             t.elapsed().as_secs_f64()
@@ -122,15 +134,15 @@ fn main() -> ExitCode {
         );
     }
     let secs = began.elapsed().as_secs_f64();
-    println!(
+    say!(
         "fuzz: seed {seed}, cases {start}..{}: {} clean errors, {} successes, {} panics, {} slow (> 1 s) under load, {} still slow run alone (slowest re-run {:.3} s, case {}); slowest under load {:.3} s (case {}); {secs:.0} s, {:.0} cases/s",
         start + cases, total.errors, total.successes, total.panics, total.slow, slow_alone.len(), slowest_alone.0, slowest_alone.1, total.slowest.0, total.slowest.1, total.cases as f64 / secs
     );
     if !slow_alone.is_empty() {
-        println!("slow even alone: {slow_alone:?}");
+        say!("slow even alone: {slow_alone:?}");
     }
     if !total.bad.is_empty() {
-        println!(
+        say!(
             "panicking or slow cases (re-run with --case N): {:?}",
             total.bad
         );
@@ -172,7 +184,7 @@ fn run_structured(
     if let Some(i) = one {
         let c = structured_case(seed, i);
         let head = |t: &str| -> String { t.chars().take(4000).collect() };
-        println!(
+        say!(
             "--- edits: {}\n--- chapter index {}, {}x{}, {} spp\n--- scene ({} bytes) ---\n{}\n--- obj ({} bytes) ---\n{}",
             c.edits.join("; "),
             c.case.chapter,
@@ -186,7 +198,7 @@ fn run_structured(
         );
         let t = Instant::now();
         let (class, detail) = run_one(&exe, seed, i, limits, None);
-        println!(
+        say!(
             "--- {} in {:.3} s: {detail}",
             class.label(),
             t.elapsed().as_secs_f64()
@@ -212,7 +224,7 @@ fn run_structured(
         1000,
         &progress,
     );
-    println!(
+    say!(
         "fuzz --structured: seed {seed}, cases {start}..{}, {jobs} at a time, limits {:?} and {} MiB: {}",
         start + cases,
         limits.timeout,
@@ -220,7 +232,7 @@ fn run_structured(
         r.summary()
     );
     for (i, class, detail) in &r.findings {
-        println!(
+        say!(
             "{}: case {i}: {detail}\n  replay: {}",
             class.label(),
             replay(seed, *i, limits)

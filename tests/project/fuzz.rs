@@ -170,3 +170,23 @@ fn structured_cases_are_reproducible_and_varied() {
         assert!(objs.contains(odd), "no OBJ with {odd:?}");
     }
 }
+
+/// `fuzz | head` closes stdout early: the harness ends quietly (status
+/// 141, as a broken pipe ends a process) instead of panicking.
+#[cfg(unix)]
+#[test]
+fn a_closed_stdout_ends_the_harness_without_a_panic() {
+    use std::process::{Command, Stdio};
+    let mut child = Command::new(fuzz_exe())
+        .args(["--cases", "400", "--threads", "1"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Close the reading end before the harness prints anything.
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(!err.contains("panicked"), "{err}");
+    assert_eq!(out.status.code(), Some(141), "{err}");
+}
