@@ -62,10 +62,22 @@ impl CameraDesc {
             .try_normalize()
             .and_then(|back| up.cross(back).try_normalize());
         if frame.is_none() {
-            return Err(bad(format!(
-                "`eye` {} and `target` {} must differ and `up` {} must not be parallel to the view direction",
-                self.eye, self.target, self.up
-            )));
+            let why = if self.eye == self.target {
+                format!("`eye` and `target` must differ, both are {}", self.eye)
+            } else if (eye - target).try_normalize().is_none() {
+                format!(
+                    "`eye` {} and `target` {} are too close to tell apart in f32 (they give \
+                     no view direction); move them further apart",
+                    self.eye, self.target
+                )
+            } else {
+                format!(
+                    "`up` {} must not be parallel to the view direction from `eye` {} to \
+                     `target` {}",
+                    self.up, self.eye, self.target
+                )
+            };
+            return Err(bad(why));
         }
         Ok(())
     }

@@ -125,9 +125,10 @@ pub fn parse_node(t: &Table, at: &str, top: bool) -> Result<Sdf, ParseError> {
         },
         "plane" => {
             let n = vec("normal", Vec3::Y)?;
-            let normal = n
-                .try_normalize()
-                .ok_or_else(|| err("normal", "must not be the zero vector".into()))?;
+            let normal = n.try_normalize().ok_or_else(|| {
+                let values = n.as_dvec3().to_array();
+                err("normal", crate::scene::validate::direction_problem(&values))
+            })?;
             Sdf::Plane {
                 normal,
                 offset: num("offset", 0.0)?,

@@ -49,11 +49,23 @@ pub fn light(values: &[f64]) -> Result<(), String> {
 pub fn direction(values: &[f64; 3]) -> Result<(), String> {
     within(values, MAX_COORDINATE)?;
     if DVec3::from(*values).as_vec3().try_normalize().is_none() {
-        return Err(format!(
-            "must not be the zero vector (a direction at least {MIN_LENGTH:e} long in f32), got {values:?}"
-        ));
+        return Err(direction_problem(values));
     }
     Ok(())
+}
+
+/// Why `values` has no direction: the zero vector, or a vector too short
+/// for f32 to normalise (its squared length underflows), said as such.
+pub fn direction_problem(values: &[f64; 3]) -> String {
+    if values.iter().all(|v| *v == 0.0) {
+        return format!("must not be the zero vector, got {values:?}");
+    }
+    let length = DVec3::from(*values).length();
+    format!(
+        "is too short to give a direction in f32 (length {length:e}; a direction must be \
+         long enough that its squared length does not underflow in f32: about 1e-22 or \
+         more), got {values:?}"
+    )
 }
 
 /// The key (relative to `lights[i]`) and reason of the first problem with

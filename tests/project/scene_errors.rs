@@ -353,3 +353,48 @@ fn zero_samples_or_preview_width_is_a_usage_error_in_every_chapter() {
         }
     }
 }
+
+/// Round 4's misleading messages: a direction that is not zero but too
+/// short for f32 is not called the zero vector, and an eye and a target
+/// that differ only beyond f32's precision are not told to differ.
+#[test]
+fn short_directions_and_f32_equal_cameras_are_named_for_what_they_are() {
+    let m = load_error(
+        "short-axis",
+        "[[objects]]\nshape = \"box\"\nrotate = { axis = [1e-30, 0, 0], degrees = 3 }\n",
+        &[],
+    );
+    assert_mentions(&m, &["objects[0].rotate.axis", "too short", "1e-30"]);
+    assert!(!m.contains("zero vector"), "{m}");
+    let m = load_error(
+        "short-normal",
+        "[[sdfs]]\ntype = \"plane\"\nnormal = [0, 1e-30, 0]\n[[lights]]\ntype = \"point\"\nposition = [0, 2, 0]\nintensity = [1, 1, 1]\n",
+        &[],
+    );
+    assert_mentions(&m, &["normal", "too short"]);
+    let camera = |eye: &str, target: &str, up: &str| {
+        format!(
+            "[camera]\neye = {eye}\ntarget = {target}\nup = {up}\n[[objects]]\nshape = \"box\"\n"
+        )
+    };
+    let m = load_error(
+        "same-eye",
+        &camera("[0, 0, 1]", "[0, 0, 1]", "[0, 1, 0]"),
+        &[],
+    );
+    assert_mentions(&m, &["`eye` and `target` must differ"]);
+    let m = load_error(
+        "f32-eye",
+        &camera("[0, 0, 1]", "[0, 0, 1.00000001]", "[0, 1, 0]"),
+        &[],
+    );
+    assert_mentions(&m, &["too close to tell apart in f32"]);
+    assert!(!m.contains("must differ"), "{m}");
+    let m = load_error(
+        "parallel-up",
+        &camera("[0, 0, 1]", "[0, 0, 0]", "[0, 0, 2]"),
+        &[],
+    );
+    assert_mentions(&m, &["`up`", "parallel"]);
+    assert!(!m.contains("must differ"), "{m}");
+}
