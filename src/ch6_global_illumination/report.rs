@@ -34,7 +34,7 @@ pub struct ReportInputs<'a> {
     pub acc: &'a Accumulator,
     /// The engine that traced the paths (and its world) and the seconds
     /// it took to build, once built.
-    pub world: Option<(&'a dyn PathEngine, f64)>,
+    pub engine: Option<(&'a dyn PathEngine, f64)>,
     /// Seconds spent rendering passes.
     pub seconds: f64,
     /// RMSE against the stored reference and the reference's size.
@@ -149,9 +149,9 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
 
 /// Requirement 3: what the scene made the stage build, and leave out.
 fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
-    let (scene, world) = (r.scene, r.world);
+    let scene = r.scene;
     let (b, l) = (&mut report.built, &mut report.left_out);
-    let world = world.map(|(e, s)| (e.world(), s));
+    let world = r.engine.map(|(e, s)| (e.world(), s));
     match world.and_then(|(w, s)| w.mesh_queries().map(|q| (w, q, s))) {
         Some((w, q, s)) => b.push(format!(
             "{} over {} triangles; world built in {}",
@@ -161,7 +161,7 @@ fn built_and_left_out(report: &mut Report, r: &ReportInputs) {
         )),
         None => l.push("BVH: the scene has no meshes".into()),
     }
-    if let Some((engine, _)) = r.world {
+    if let Some((engine, _)) = r.engine {
         let (built, left_out) = engine.notes(&r.path);
         b.extend(built);
         l.extend(left_out);

@@ -186,7 +186,8 @@ pub struct PathTracingRender {
     scene: Arc<Scene>,
     camera: Camera,
     settings: Settings,
-    world: Option<(Box<dyn PathEngine>, f64)>,
+    /// The engine (with its world) and its build time, once a pass built it.
+    engine: Option<(Box<dyn PathEngine>, f64)>,
     /// The sums so far.
     pub acc: Accumulator,
     seconds: f64,
@@ -207,7 +208,7 @@ impl PathTracingRender {
             acc: Accumulator::new(w, h, stage.layers),
             scene,
             settings: settings.clone(),
-            world: None,
+            engine: None,
             seconds: 0.0,
             started: None,
             reference,
@@ -251,7 +252,7 @@ impl PathTracingRender {
 
     /// The world the passes trace in, once the first pass has built it.
     pub fn world(&self) -> Option<&World> {
-        self.world.as_ref().map(|(e, _)| e.world())
+        self.engine.as_ref().map(|(e, _)| e.world())
     }
 
     /// The camera.
@@ -341,16 +342,16 @@ impl PathTracingRender {
 impl Render for PathTracingRender {
     fn pass(&mut self) -> Pass {
         let started = *self.started.get_or_insert_with(Instant::now);
-        if self.world.is_none() {
+        if self.engine.is_none() {
             let t = Instant::now();
             let engine = self.stage.engine.make(&self.scene);
-            self.world = Some((engine, t.elapsed().as_secs_f64()));
+            self.engine = Some((engine, t.elapsed().as_secs_f64()));
         }
         let spp = self.settings.spp.max(1);
         if self.acc.samples < spp {
             let count = self.pass_size(self.acc.samples).min(spp - self.acc.samples);
             let t = Instant::now();
-            let (engine, _) = self.world.as_ref().expect("built above");
+            let (engine, _) = self.engine.as_ref().expect("built above");
             self.acc.add_samples(
                 &**engine,
                 &self.camera,
@@ -421,7 +422,7 @@ impl Render for PathTracingRender {
             sampler: self.stage.sampler,
             layers: self.stage.layers,
             acc: &self.acc,
-            world: self.world.as_ref().map(|(e, s)| (&**e, *s)),
+            engine: self.engine.as_ref().map(|(e, s)| (&**e, *s)),
             seconds: self.seconds,
             reference_rmse: self.reference_rmse().map(|e| {
                 let (r, _) = self.reference.as_ref().expect("an RMSE needs a reference");
@@ -435,7 +436,7 @@ impl Render for PathTracingRender {
         });
         let stem = output_stem(6, &self.scene.name);
         let mut figures = layer_figures(&self.acc, &stem);
-        if let (Some(max), Some((engine, _))) = (self.stage.spp_figure, &self.world) {
+        if let (Some(max), Some((engine, _))) = (self.stage.spp_figure, &self.engine) {
             figures.push(spp_figure(
                 &self.stage.path,
                 self.stage.sampler,

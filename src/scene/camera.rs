@@ -58,28 +58,23 @@ impl CameraDesc {
         }
         check_resolution(self.width, self.height)?;
         let (eye, target, up) = (self.eye.as_vec3(), self.target.as_vec3(), self.up.as_vec3());
-        let frame = (eye - target)
-            .try_normalize()
-            .and_then(|back| up.cross(back).try_normalize());
-        if frame.is_none() {
-            let why = if self.eye == self.target {
+        let back = (eye - target).try_normalize();
+        let why = match back {
+            _ if self.eye == self.target => {
                 format!("`eye` and `target` must differ, both are {}", self.eye)
-            } else if (eye - target).try_normalize().is_none() {
-                format!(
-                    "`eye` {} and `target` {} are too close to tell apart in f32 (they give \
-                     no view direction); move them further apart",
-                    self.eye, self.target
-                )
-            } else {
-                format!(
-                    "`up` {} must not be parallel to the view direction from `eye` {} to \
-                     `target` {}",
-                    self.up, self.eye, self.target
-                )
-            };
-            return Err(bad(why));
-        }
-        Ok(())
+            }
+            None => format!(
+                "`eye` {} and `target` {} are too close to tell apart in f32 (they give no \
+                 view direction); move them further apart",
+                self.eye, self.target
+            ),
+            Some(back) if up.cross(back).try_normalize().is_none() => format!(
+                "`up` {} must not be parallel to the view direction from `eye` {} to `target` {}",
+                self.up, self.eye, self.target
+            ),
+            Some(_) => return Ok(()),
+        };
+        Err(bad(why))
     }
 
     /// The same description at another image size (checked).

@@ -136,44 +136,39 @@ fn a_scene_that_reflects_everything_is_said_to_defeat_roulette() {
         "[[materials]]\nname = \"white\"\nreflectance = [1, 1, 1]\n\n[[objects]]\nshape = \"box\"\nmaterial = \"white\"\n",
     )
     .unwrap();
-    let run = std::process::Command::new(env!("CARGO_BIN_EXE_ch6"))
-        .args([
-            "--unlimited",
-            "--width",
-            "4",
-            "--height",
-            "4",
-            "--final-only",
-            "--scene",
-        ])
-        .arg(&file)
-        .arg("--out")
-        .arg(dir.join("out"))
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&run.stderr);
-    assert!(err.contains("roulette cannot end these paths"), "{err}");
-    // A bounce limit at or past the safety limit is the same as none.
-    let run = std::process::Command::new(env!("CARGO_BIN_EXE_ch6"))
-        .args([
-            "--max-bounces",
-            "4294967295",
-            "--spp",
-            "1",
-            "--width",
-            "4",
-            "--height",
-            "4",
-            "--final-only",
-            "--scene",
-        ])
-        .arg(&file)
-        .arg("--out")
-        .arg(dir.join("out2"))
-        .output()
-        .unwrap();
-    let err = String::from_utf8_lossy(&run.stderr);
-    assert!(err.contains("roulette cannot end these paths"), "{err}");
+    // Warned before anything renders (this scene has no light, so the
+    // run then stops): with --unlimited, and with a bounce limit at or
+    // past the safety limit, which is the same as none.
+    let warning = |limit: &[&str], out: &str| {
+        let run = std::process::Command::new(env!("CARGO_BIN_EXE_ch6"))
+            .args(limit)
+            .args([
+                "--spp",
+                "1",
+                "--width",
+                "4",
+                "--height",
+                "4",
+                "--final-only",
+                "--scene",
+            ])
+            .arg(&file)
+            .arg("--out")
+            .arg(dir.join(out))
+            .output()
+            .unwrap();
+        String::from_utf8_lossy(&run.stderr).into_owned()
+    };
+    for (limit, out) in [
+        (&["--unlimited"][..], "out"),
+        (&["--max-bounces", "4294967295"][..], "out2"),
+    ] {
+        let err = warning(limit, out);
+        assert!(
+            err.contains("roulette cannot end these paths"),
+            "{limit:?}: {err}"
+        );
+    }
 }
 
 #[test]
