@@ -37,7 +37,10 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     if let Some(only) = cli.bench {
         if only == "hostile" {
-            print!("{}", hostile_builds(1.0).to_text());
+            print!(
+                "{}",
+                hostile_builds(&[10_000, 100_000, 1_000_000]).to_text()
+            );
             return ExitCode::SUCCESS;
         }
         let only = (!only.is_empty()).then_some(only.as_str());

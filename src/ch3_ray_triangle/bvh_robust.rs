@@ -1,250 +1,274 @@
-//! Building a BVH that stays O(n log n) on hostile input.
+//! The binary tree every triangle BVH of chapters 3 to 6 starts from:
+//! built top-down with binned surface area heuristic (SAH) splits, in
+//! O(n log n) time on any input.
 //!
-//! obvhs builds with PLOC: sort the boxes along a Morton curve, then merge
-//! neighbours that are each other's cheapest partner (the smallest union
-//! surface area). When many candidate costs are *equal* the merges stall to
-//! about one per sweep and the build turns quadratic. Equal costs come from
-//! two kinds of input:
+//! obvhs' own builder (PLOC) merges neighbours bottom-up and turns
+//! quadratic whenever many merge costs tie: coincident, collapsed, fanned or
+//! overlapping triangles. A top-down build has no such failure: each level
+//! of the tree looks at every triangle a constant number of times, so only
+//! the number of levels needs a bound, and it gets three:
 //!
-//! * geometry so small (or so large) that box areas underflow (or overflow)
-//!   in f32: a sphere of radius 1e-30 has every surface area exactly 0;
-//! * many triangles in (almost) the same place: N copies of one face, a
-//!   polygon fan whose corners repeat, a shape scaled to nothing inside a
-//!   normal scene.
+//! * split planes are chosen among [`BINS`] bins spanning the centroids'
+//!   range, the bin of a centroid computed in f64 *relative* to that range,
+//!   so a scene 1e-38 wide, one at +1e12 and one 1 wide split alike;
+//! * when every centroid of a node is the same point (copies of one
+//!   triangle), the node is split in halves by index;
+//! * below depth [`SAH_DEPTH`] (reached only by a chain of lopsided SAH
+//!   splits) every split is at the median centroid.
 //!
-//! The guard answers each: boxes are scaled by a power of two (exact in
-//! floating point, so the tree is the one the unscaled boxes would give)
-//! into a range where areas neither underflow nor overflow; and large groups
-//! of triangles that would tie anyway (bit-identical boxes, or boxes in one
-//! tiny cell whose areas underflow) are built as *one* box, then split in
-//! halves by index (an object split) into a balanced subtree. Scenes with
-//! neither problem get obvhs' tree untouched.
-
-use std::time::Duration;
+//! So no tree is deeper than [`SAH_DEPTH`] + log₂ n + 1, and the build takes
+//! O(n log n) whatever the triangles are.
 
 use glam::Vec3A;
 use obvhs::aabb::Aabb;
-use obvhs::bvh2::builder::build_bvh2;
 use obvhs::bvh2::node::Bvh2Node;
 use obvhs::bvh2::Bvh2;
 use obvhs::BvhBuildParams;
 
-/// Groups of at least this many triangles whose boxes fall in one cell are
-/// built as a single box. Smaller ties cost PLOC little.
-pub const CLUSTER_MIN: usize = 32;
-/// Cells are 2⁻³² of the scene's extent along each axis.
-const CELLS_PER_AXIS: f64 = 4_294_967_296.0;
-/// Extents in [2⁻²⁰, 2⁶⁰] need no scaling: their areas are far from f32's
-/// limits (2⁻¹⁴⁹ and 2¹²⁸).
-const SAFE_EXPONENTS: std::ops::RangeInclusive<i32> = -20..=60;
-/// Other scenes are scaled to an extent of 2⁴⁰: areas up to 2⁸⁰, with as
-/// much room below for small triangles as the unscaled range leaves.
-const TARGET_EXPONENT: i32 = 40;
-/// A cell group whose (scaled) area is below this is about to underflow:
-/// its members' costs tie.
-const TINY_AREA: f32 = 1e-30;
-
-/// A binary BVH over `boxes` (non-empty) with obvhs' PLOC builder and
-/// `params`, guarded against the inputs that make PLOC quadratic (see the
-/// module documentation). Leaves hold at most `params.max_prims_per_leaf`
-/// boxes; `primitive_indices` index `boxes`.
-pub fn build_guarded(boxes: &[Aabb], params: BvhBuildParams) -> Bvh2 {
-    let mut total = Aabb::empty();
-    for b in boxes {
-        total = total.union(b);
-    }
-    let scale = power_of_two_scale(&total);
-    let clusters = clusters(boxes, &total, scale);
-    if scale == 1.0 && clusters.iter().all(|c| c.len() == 1) {
-        return build_bvh2(boxes, params, &mut Duration::default());
-    }
-    // One build box per cluster (a singleton is its own cluster), scaled.
-    let build_boxes: Vec<Aabb> = clusters
-        .iter()
-        .map(|members| {
-            let mut b = Aabb::empty();
-            for &m in members {
-                b = b.union(&boxes[m as usize]);
-            }
-            Aabb::new(b.min * scale, b.max * scale)
-        })
-        .collect();
-    let coarse = build_bvh2(&build_boxes, params, &mut Duration::default());
-    expand(
-        &coarse,
-        &clusters,
-        boxes,
-        params.max_prims_per_leaf.max(1) as usize,
-    )
-}
-
-/// 1 when the extent is in the safe range, else the power of two that
-/// scales it to about 2⁴⁰.
-fn power_of_two_scale(total: &Aabb) -> f32 {
-    let extent = (total.max - total.min).max_element();
-    if !(extent.is_finite() && extent > 0.0) {
-        return 1.0;
-    }
-    let exponent = extent.log2().round() as i32;
-    if SAFE_EXPONENTS.contains(&exponent) {
-        return 1.0;
-    }
-    // Keep the largest coordinate finite after scaling.
-    let largest = total.min.abs().max(total.max.abs()).max_element();
-    let mut k = TARGET_EXPONENT - exponent;
-    while k > 0 && !(largest * 2f32.powi(k)).is_finite() {
-        k -= 1;
-    }
-    2f32.powi(k)
-}
-
-/// The boxes grouped into clusters: every run of at least [`CLUSTER_MIN`]
-/// bit-identical boxes, and every group of at least [`CLUSTER_MIN`] boxes
-/// whose corners fall in one cell (2⁻³² of the scene per axis) and whose
-/// union's area, scaled, is below [`TINY_AREA`]. Every other box is a
-/// cluster of its own. Clusters come in the boxes' order (by first
-/// member), so the result is deterministic.
-fn clusters(boxes: &[Aabb], total: &Aabb, scale: f32) -> Vec<Vec<u32>> {
-    let mut in_cluster = vec![u32::MAX; boxes.len()];
-    let mut big: Vec<Vec<u32>> = Vec::new();
-    let mut take = |run: &[u32], in_cluster: &mut Vec<u32>| {
-        for &i in run {
-            in_cluster[i as usize] = big.len() as u32;
-        }
-        let mut members = run.to_vec();
-        members.sort_unstable();
-        big.push(members);
-    };
-    // Exact duplicates.
-    let bits = |b: &Aabb| {
-        let (lo, hi) = (b.min.to_array(), b.max.to_array());
-        [lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]].map(f32::to_bits)
-    };
+/// Bins per axis for the SAH split.
+pub const BINS: usize = 16;
+/// Below this depth every split is a median split.
+pub const SAH_DEPTH: usize = 40;
+/// A binary BVH over `boxes` (non-empty): leaves hold at most
+/// `params.max_prims_per_leaf` boxes (at least one; a node that small
+/// becomes a leaf unless a split is cheaper by SAH, a node visit costing
+/// `params.collapse_traversal_cost` box tests), and `primitive_indices`
+/// index `boxes`. Children always come after their parent.
+pub fn build_tree(boxes: &[Aabb], params: &BvhBuildParams) -> Bvh2 {
+    let max_leaf = (params.max_prims_per_leaf as usize).clamp(1, 255);
+    let traversal = params.collapse_traversal_cost as f64;
+    // Half of each corner, added: no overflow near f32::MAX.
+    let centres: Vec<Vec3A> = boxes.iter().map(|b| b.min * 0.5 + b.max * 0.5).collect();
     let mut order: Vec<u32> = (0..boxes.len() as u32).collect();
-    order.sort_by_key(|&i| (bits(&boxes[i as usize]), i));
-    for run in order.chunk_by(|a, b| bits(&boxes[*a as usize]) == bits(&boxes[*b as usize])) {
-        if run.len() >= CLUSTER_MIN {
-            take(run, &mut in_cluster);
-        }
-    }
-    // Tiny cells.
-    let lo = total.min.as_dvec3();
-    let size = (total.max.as_dvec3() - lo).max(glam::DVec3::splat(f64::MIN_POSITIVE));
-    let cell = |p: Vec3A| -> [u64; 3] {
-        let q = (p.as_dvec3() - lo) / size * CELLS_PER_AXIS;
-        q.to_array().map(|c| c.clamp(0.0, CELLS_PER_AXIS) as u64)
-    };
-    let key = |i: u32| {
-        let b = &boxes[i as usize];
-        (cell(b.min), cell(b.max))
-    };
-    let mut rest: Vec<u32> = order
-        .into_iter()
-        .filter(|&i| in_cluster[i as usize] == u32::MAX)
-        .collect();
-    rest.sort_by_key(|&i| (key(i), i));
-    for run in rest.chunk_by(|a, b| key(*a) == key(*b)) {
-        if run.len() < CLUSTER_MIN {
-            continue;
-        }
-        let mut union = Aabb::empty();
-        for &i in run {
-            union = union.union(&boxes[i as usize]);
-        }
-        let area = Aabb::new(union.min * scale, union.max * scale).half_area();
-        if area < TINY_AREA {
-            take(run, &mut in_cluster);
-        }
-    }
-    let mut out = Vec::new();
-    let mut emitted = vec![false; big.len()];
-    for (i, &c) in in_cluster.iter().enumerate() {
-        if c == u32::MAX {
-            out.push(vec![i as u32]);
-        } else if !emitted[c as usize] {
-            emitted[c as usize] = true;
-            out.push(std::mem::take(&mut big[c as usize]));
-        }
-    }
-    out
-}
-
-/// What still has to be written into a node of the new tree.
-enum Job {
-    /// A node of the coarse tree.
-    Coarse(usize),
-    /// A list of original boxes, split in halves until each leaf is small.
-    List(Vec<u32>),
-}
-
-/// The coarse tree (over clusters) rewritten over the original boxes:
-/// every leaf with more than `max_leaf` boxes becomes a balanced subtree
-/// (halves by index), and every node box is recomputed from the original,
-/// unscaled boxes.
-fn expand(coarse: &Bvh2, clusters: &[Vec<u32>], boxes: &[Aabb], max_leaf: usize) -> Bvh2 {
     let mut nodes = vec![Bvh2Node::default()];
-    let mut prims: Vec<u32> = Vec::with_capacity(boxes.len());
-    let mut depth_max = 0;
-    let mut jobs = vec![(Job::Coarse(0), 0usize, 0usize)];
-    while let Some((job, at, depth)) = jobs.pop() {
-        depth_max = depth_max.max(depth);
-        let list = match job {
-            Job::Coarse(n) => {
-                let node = &coarse.nodes[n];
-                if node.is_leaf() {
-                    let range = node.first_index..node.first_index + node.prim_count;
-                    range
-                        .flat_map(|k| {
-                            clusters[coarse.primitive_indices[k as usize] as usize].iter()
-                        })
-                        .copied()
-                        .collect()
-                } else {
-                    let c = nodes.len();
-                    nodes.extend([Bvh2Node::default(); 2]);
-                    nodes[at].first_index = c as u32;
-                    nodes[at].prim_count = 0;
-                    let first = node.first_index as usize;
-                    jobs.push((Job::Coarse(first + 1), c + 1, depth + 1));
-                    jobs.push((Job::Coarse(first), c, depth + 1));
-                    continue;
-                }
-            }
-            Job::List(list) => list,
+    let mut deepest = 0;
+    // (node, first item, end of items, depth)
+    let mut jobs = vec![(0usize, 0usize, boxes.len(), 0usize)];
+    while let Some((at, lo, hi, depth)) = jobs.pop() {
+        deepest = deepest.max(depth);
+        let items = &mut order[lo..hi];
+        let mut bounds = Aabb::empty();
+        let mut spread = Aabb::empty();
+        for &i in items.iter() {
+            bounds = bounds.union(&boxes[i as usize]);
+            spread.extend(centres[i as usize]);
+        }
+        nodes[at].aabb = bounds;
+        let node = Node {
+            traversal,
+            boxes,
+            centres: &centres,
+            bounds: &bounds,
+            spread: &spread,
         };
-        if list.len() <= max_leaf {
-            nodes[at].first_index = prims.len() as u32;
-            nodes[at].prim_count = list.len() as u32;
-            prims.extend(list);
-        } else {
-            let c = nodes.len();
-            nodes.extend([Bvh2Node::default(); 2]);
-            nodes[at].first_index = c as u32;
-            nodes[at].prim_count = 0;
-            let (left, right) = list.split_at(list.len() / 2);
-            jobs.push((Job::List(right.to_vec()), c + 1, depth + 1));
-            jobs.push((Job::List(left.to_vec()), c, depth + 1));
-        }
-    }
-    // Children always come after their parent: fit boxes bottom-up.
-    for n in (0..nodes.len()).rev() {
-        let node = nodes[n];
-        let mut b = Aabb::empty();
-        if node.prim_count > 0 {
-            for k in node.first_index..node.first_index + node.prim_count {
-                b = b.union(&boxes[prims[k as usize] as usize]);
+        match node.split(items, depth, max_leaf) {
+            None => {
+                nodes[at].first_index = lo as u32;
+                nodes[at].prim_count = items.len() as u32;
             }
-        } else {
-            let c = node.first_index as usize;
-            b = nodes[c].aabb.union(&nodes[c + 1].aabb);
+            Some(left) => {
+                let c = nodes.len();
+                nodes.extend([Bvh2Node::default(); 2]);
+                nodes[at].first_index = c as u32;
+                nodes[at].prim_count = 0;
+                jobs.push((c + 1, lo + left, hi, depth + 1));
+                jobs.push((c, lo, lo + left, depth + 1));
+            }
         }
-        nodes[n].aabb = b;
     }
     Bvh2 {
         nodes,
-        primitive_indices: prims,
+        primitive_indices: order,
         children_are_ordered_after_parents: true,
-        max_depth: (depth_max + 2).max(obvhs::bvh2::DEFAULT_MAX_STACK_DEPTH),
+        max_depth: (deepest + 2).max(obvhs::bvh2::DEFAULT_MAX_STACK_DEPTH),
         ..Bvh2::default()
+    }
+}
+
+/// One node being split: its boxes' bounds and its centroids' bounds.
+struct Node<'a> {
+    traversal: f64,
+    boxes: &'a [Aabb],
+    centres: &'a [Vec3A],
+    bounds: &'a Aabb,
+    spread: &'a Aabb,
+}
+
+/// A box's half surface area, in f64 (no underflow at 1e-30, no overflow
+/// at 1e30).
+fn half_area(b: &Aabb) -> f64 {
+    let d = (b.max - b.min).as_dvec3().max(glam::DVec3::ZERO);
+    d.x * d.y + d.y * d.z + d.z * d.x
+}
+
+impl Node<'_> {
+    /// Reorders `items` into a left and a right child and returns how many
+    /// go left, or `None` to make a leaf.
+    fn split(&self, items: &mut [u32], depth: usize, max_leaf: usize) -> Option<usize> {
+        let n = items.len();
+        let lo = self.spread.min.as_dvec3();
+        let extent = self.spread.max.as_dvec3() - lo;
+        let axis = (0..3)
+            .max_by(|&a, &b| extent[a].total_cmp(&extent[b]))
+            .unwrap_or(0);
+        if extent[axis].is_nan() || extent[axis] <= 0.0 {
+            // All centroids at one point: halves by index.
+            return (n > max_leaf).then_some(n / 2);
+        }
+        if depth >= SAH_DEPTH {
+            let key = |i: &u32| self.centres[*i as usize][axis];
+            items.select_nth_unstable_by(n / 2, |a, b| key(a).total_cmp(&key(b)).then(a.cmp(b)));
+            return Some(n / 2);
+        }
+        let bin = |i: u32, axis: usize| -> usize {
+            let c = self.centres[i as usize][axis] as f64;
+            let k = (c - lo[axis]) / extent[axis] * BINS as f64;
+            (k as usize).min(BINS - 1)
+        };
+        // The cheapest plane over all axes: (cost, axis, bins left of it).
+        let mut best: Option<(f64, usize, usize)> = None;
+        for a in (0..3).filter(|&a| extent[a] > 0.0) {
+            let mut bins = [(Aabb::empty(), 0usize); BINS];
+            for &i in items.iter() {
+                let k = bin(i, a);
+                bins[k].0 = bins[k].0.union(&self.boxes[i as usize]);
+                bins[k].1 += 1;
+            }
+            // Right-hand sums, from the last bin down.
+            let mut right = [(0.0, 0usize); BINS];
+            let (mut b, mut count) = (Aabb::empty(), 0);
+            for k in (1..BINS).rev() {
+                b = b.union(&bins[k].0);
+                count += bins[k].1;
+                right[k] = (half_area(&b), count);
+            }
+            let (mut b, mut count) = (Aabb::empty(), 0);
+            for k in 1..BINS {
+                b = b.union(&bins[k - 1].0);
+                count += bins[k - 1].1;
+                let (area_r, count_r) = right[k];
+                if count == 0 || count_r == 0 {
+                    continue;
+                }
+                let cost = half_area(&b) * count as f64 + area_r * count_r as f64;
+                if best.is_none_or(|(c, _, _)| cost < c) {
+                    best = Some((cost, a, k));
+                }
+            }
+        }
+        // The lowest and highest centroid on `axis` fall in its first and
+        // last bins, so there is always a plane.
+        let (cost, a, k) = best?;
+        let area = half_area(self.bounds);
+        if n <= max_leaf && n as f64 * area <= self.traversal * area + cost {
+            return None;
+        }
+        // Partition in place: bins below k to the front.
+        let mut left = 0;
+        for j in 0..n {
+            if bin(items[j], a) < k {
+                items.swap(left, j);
+                left += 1;
+            }
+        }
+        Some(left)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn boxes_of(points: &[[f32; 3]], size: f32) -> Vec<Aabb> {
+        points
+            .iter()
+            .map(|p| {
+                let p = Vec3A::from_array(*p);
+                Aabb::new(p - size, p + size)
+            })
+            .collect()
+    }
+
+    /// Every box reaches exactly one leaf, every node's box holds its
+    /// children's, and the depth is within the documented bound.
+    fn check(boxes: &[Aabb], max_leaf: usize) -> Bvh2 {
+        let params = BvhBuildParams {
+            max_prims_per_leaf: max_leaf as u32,
+            ..BvhBuildParams::medium_build()
+        };
+        let t = build_tree(boxes, &params);
+        let mut seen = vec![0; boxes.len()];
+        let mut stack = vec![(0usize, 0usize)];
+        let mut deepest = 0;
+        while let Some((n, d)) = stack.pop() {
+            deepest = deepest.max(d);
+            let node = t.nodes[n];
+            if node.prim_count > 0 {
+                assert!(node.prim_count as usize <= max_leaf.max(1));
+                for k in node.first_index..node.first_index + node.prim_count {
+                    let i = t.primitive_indices[k as usize] as usize;
+                    seen[i] += 1;
+                    let b = boxes[i];
+                    assert!(node.aabb.min.cmple(b.min).all() && node.aabb.max.cmpge(b.max).all());
+                }
+            } else {
+                let c = node.first_index as usize;
+                assert!(c > n, "children after their parent");
+                for child in [c, c + 1] {
+                    let b = t.nodes[child].aabb;
+                    assert!(node.aabb.min.cmple(b.min).all() && node.aabb.max.cmpge(b.max).all());
+                    stack.push((child, d + 1));
+                }
+            }
+        }
+        assert!(seen.iter().all(|&s| s == 1), "every box in one leaf");
+        let bound = SAH_DEPTH + (boxes.len() as f64).log2().ceil() as usize + 1;
+        assert!(deepest <= bound, "depth {deepest} > {bound}");
+        t
+    }
+
+    #[test]
+    fn one_box_is_a_leaf() {
+        let t = check(&boxes_of(&[[1.0, 2.0, 3.0]], 0.5), 1);
+        assert_eq!(t.nodes.len(), 1);
+    }
+
+    #[test]
+    fn copies_of_one_box_split_in_halves() {
+        let t = check(&boxes_of(&[[0.0; 3]; 1000], 1.0), 1);
+        assert_eq!(t.nodes.len(), 1999);
+        assert!(t.max_depth <= obvhs::bvh2::DEFAULT_MAX_STACK_DEPTH.max(12));
+    }
+
+    /// Centroids at 2^-k along x: every SAH split peels off one box, so
+    /// the tree would be n deep without the median below `SAH_DEPTH`.
+    #[test]
+    fn a_geometric_row_stays_shallow() {
+        let points: Vec<[f32; 3]> = (0..2000).map(|k| [0.5f32.powi(k / 20), 0.0, 0.0]).collect();
+        check(&boxes_of(&points, 1e-9), 1);
+    }
+
+    #[test]
+    fn scale_and_place_give_the_same_tree() {
+        let points: Vec<[f32; 3]> = (0..500)
+            .map(|k| {
+                let a = k as f32 * 0.37;
+                [a.sin(), a.cos() * 0.5, (k % 7) as f32 * 0.1]
+            })
+            .collect();
+        let shape = |t: &Bvh2| -> Vec<(u32, u32)> {
+            t.nodes
+                .iter()
+                .map(|n| (n.prim_count, n.first_index))
+                .collect()
+        };
+        let unit = check(&boxes_of(&points, 0.01), 2);
+        // Powers of two: exact in floating point.
+        for s in [2f32.powi(-100), 2f32.powi(60)] {
+            let scaled: Vec<[f32; 3]> = points.iter().map(|p| p.map(|c| c * s)).collect();
+            let t = check(&boxes_of(&scaled, 0.01 * s), 2);
+            assert_eq!(shape(&t), shape(&unit), "scaled by {s:e}");
+            assert_eq!(t.primitive_indices, unit.primitive_indices);
+        }
     }
 }

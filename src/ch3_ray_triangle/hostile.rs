@@ -1,10 +1,13 @@
-//! The BVH builds on hostile geometry, as a benchmark (`ch3 --bench
-//! hostile`): collapsed spheres away from the origin and many overlapping
-//! triangles, each built into both BVHs and timed against an ordinary mesh
-//! of as many triangles, with a budget of [`BUDGET`] times that. A build
-//! that splits badly degrades towards n² and shows here as a ratio in the
-//! hundreds; the tests check only that every case is here and builds
-//! (speed lives in benchmarks, not in timed tests).
+//! The BVH builds on the worst shapes we could construct, as a benchmark
+//! (`ch3 --bench hostile`): collapsed spheres (to a point, or flat along
+//! one axis, away from the origin), a fan-triangulated convex polygon,
+//! slivers, zero-area triangles, overlapping triangles and copies of one
+//! triangle, each built into both BVHs at 10⁴, 10⁵ and 10⁶ triangles. The
+//! table gives each case's growth exponent from 10⁵ to 10⁶ (1 for n, about
+//! 1.1 for n log n, 2 for a quadratic build) and its time per triangle
+//! against an ordinary mesh, with a budget of [`BUDGET`] times that. The
+//! tests check only that every case is here and builds (speed lives in
+//! benchmarks, not in timed tests).
 
 use std::time::Instant;
 
@@ -58,34 +61,91 @@ pub fn overlapping(n: usize) -> Vec<[Vec3; 3]> {
         .collect()
 }
 
-/// The cases: (name, triangles), at `scale` (1.0: the benchmark's
-/// sizes; smaller for tests).
-pub fn cases(scale: f64) -> Vec<(String, Vec<[Vec3; 3]>)> {
-    let rings = ((256.0 * scale.sqrt()) as u32).max(4);
-    let n = ((100_000.0 * scale) as usize).max(16);
+/// `n` triangles fanned from the first corner of a convex polygon of
+/// `n + 2` corners on the unit circle (what the OBJ loader makes of one
+/// `f` line with that many corners).
+pub fn fan(n: usize) -> Vec<[Vec3; 3]> {
+    let corner = |k: usize| {
+        let a = std::f32::consts::TAU * k as f32 / (n + 2) as f32;
+        Vec3::new(a.cos(), a.sin(), 0.0)
+    };
+    (1..=n)
+        .map(|k| [corner(0), corner(k), corner(k + 1)])
+        .collect()
+}
+
+/// `n` needles ten units long and 1e-6 wide, side by side 2e-6 apart.
+pub fn slivers(n: usize) -> Vec<[Vec3; 3]> {
+    (0..n)
+        .map(|k| {
+            let y = k as f32 * 2e-6;
+            [
+                Vec3::new(0.0, y, 0.0),
+                Vec3::new(10.0, y, 0.0),
+                Vec3::new(10.0, y + 1e-6, 0.0),
+            ]
+        })
+        .collect()
+}
+
+/// `n` zero-area triangles: three points on a random line each.
+pub fn zero_area(n: usize) -> Vec<[Vec3; 3]> {
+    (0..n as u64)
+        .map(|i| {
+            let u = |d| random(11, 0, i, d) * 2.0 - 1.0;
+            let a = Vec3::new(u(0), u(1), u(2));
+            let d = Vec3::new(u(3), u(4), u(5));
+            [a, a + d, a + 2.0 * d]
+        })
+        .collect()
+}
+
+/// A sphere of about `n` triangles with one axis multiplied by `squash`.
+fn squashed(n: usize, centre: Vec3, axis: usize, squash: f32) -> Vec<[Vec3; 3]> {
+    let rings = ((n as f64 / 4.0).sqrt() as u32).max(2);
+    let mut scale = Vec3::ONE;
+    scale[axis] = squash;
+    sphere(Vec3::ZERO, 1.0, rings, 2 * rings)
+        .into_iter()
+        .map(|t| t.map(|p| p * scale + centre))
+        .collect()
+}
+
+/// The cases at about `n` triangles each: (name, triangles). The first is
+/// the ordinary mesh the others are measured against.
+pub fn cases(n: usize) -> Vec<(String, Vec<[Vec3; 3]>)> {
+    let rings = ((n as f64 / 4.0).sqrt() as u32).max(2);
+    let round = |c: Vec3, r: f32| sphere(c, r, rings, 2 * rings);
     vec![
         (
             "ordinary sphere, r 1 at the origin".into(),
-            sphere(Vec3::ZERO, 1.0, rings, 2 * rings),
+            round(Vec3::ZERO, 1.0),
         ),
         (
-            "collapsed sphere, r 1e-30 at (1000, 1000, 1000)".into(),
-            sphere(Vec3::splat(1000.0), 1e-30, rings, 2 * rings),
+            "sphere collapsed to a point, r 1e-30 at (1000, 1000, 1000)".into(),
+            round(Vec3::splat(1000.0), 1e-30),
         ),
         (
-            "collapsed sphere, r 1e-6 at (0.5, 0.5, -3)".into(),
-            sphere(Vec3::new(0.5, 0.5, -3.0), 1e-6, rings, 2 * rings),
+            "sphere below f32's spacing, r 1e-4 at (1e6, 1e6, 1e6)".into(),
+            round(Vec3::splat(1e6), 1e-4),
         ),
         (
-            "collapsed sphere, r 1e-4 at (1e6, 1e6, 1e6), below f32's spacing there".into(),
-            sphere(Vec3::splat(1e6), 1e-4, rings, 2 * rings),
+            "sphere flat in x (x 1e-38) at (0, 1000, 1000)".into(),
+            squashed(n, Vec3::new(0.0, 1000.0, 1000.0), 0, 1e-38),
         ),
         (
-            format!("{n} overlapping triangles through one point"),
+            "sphere flat in z (z 1e-20) at (-3e4, 7, 2e5)".into(),
+            squashed(n, Vec3::new(-3e4, 7.0, 2e5), 2, 1e-20),
+        ),
+        ("convex polygon, fan-triangulated".into(), fan(n)),
+        ("slivers 1e-6 wide".into(), slivers(n)),
+        ("zero-area triangles".into(), zero_area(n)),
+        (
+            "overlapping triangles through one point".into(),
             overlapping(n),
         ),
         (
-            format!("{n} copies of one triangle"),
+            "copies of one triangle".into(),
             vec![[Vec3::ZERO, Vec3::X, Vec3::Y]; n],
         ),
     ]
@@ -100,29 +160,57 @@ fn build_seconds(tris: &[[Vec3; 3]]) -> f64 {
     start.elapsed().as_secs_f64()
 }
 
-/// The table: each case's build against an ordinary mesh's per triangle.
-pub fn hostile_builds(scale: f64) -> Table {
+/// The table: each case built at every size in `sizes` (ascending), its
+/// growth exponent between the last two, and its time per triangle at the
+/// largest against the ordinary mesh's.
+pub fn hostile_builds(sizes: &[usize]) -> Table {
+    let mut columns: Vec<String> = vec!["case".into()];
+    columns.extend(
+        sizes
+            .iter()
+            .map(|n| format!("build at {}", format_number(*n as f64))),
+    );
+    columns.extend([
+        "growth exponent".into(),
+        "vs ordinary".into(),
+        "within budget".into(),
+    ]);
+    let columns: Vec<&str> = columns.iter().map(String::as_str).collect();
     let mut t = Table::new(
         &format!(
-            "BVH builds on hostile geometry (both BVHs; budget {BUDGET}x an ordinary \
-             mesh per triangle)"
+            "BVH builds on the worst shapes (both BVHs; growth exponent of time in n between \
+             the two largest sizes; budget {BUDGET}x an ordinary mesh per triangle)"
         ),
-        &["case", "triangles", "build", "vs ordinary", "within budget"],
+        &columns,
     );
-    let cases = cases(scale);
-    let mut ordinary = None;
-    for (name, tris) in &cases {
-        let seconds = build_seconds(tris);
-        let per = seconds / tris.len() as f64;
-        let base = *ordinary.get_or_insert(per);
-        let ratio = per / base;
-        t.row(vec![
-            name.clone(),
-            tris.len().to_string(),
-            format_seconds(seconds),
+    let per_size: Vec<Vec<(String, usize, f64)>> = sizes
+        .iter()
+        .map(|&n| {
+            cases(n)
+                .into_iter()
+                .map(|(name, tris)| (name, tris.len(), build_seconds(&tris)))
+                .collect()
+        })
+        .collect();
+    let largest = per_size.last().expect("at least one size");
+    let ordinary = largest[0].2 / largest[0].1 as f64;
+    for (c, (name, count, seconds)) in largest.iter().enumerate() {
+        let mut row = vec![name.clone()];
+        row.extend(per_size.iter().map(|cases| format_seconds(cases[c].2)));
+        let exponent = match per_size.len() {
+            1 => "-".to_string(),
+            k => {
+                let (n0, t0) = (per_size[k - 2][c].1 as f64, per_size[k - 2][c].2);
+                format_number((seconds / t0).ln() / (*count as f64 / n0).ln())
+            }
+        };
+        let ratio = seconds / *count as f64 / ordinary;
+        row.extend([
+            exponent,
             format!("{}x", format_number(ratio)),
             if ratio <= BUDGET { "yes" } else { "NO" }.into(),
         ]);
+        t.row(row);
     }
     t
 }

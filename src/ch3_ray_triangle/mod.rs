@@ -9,7 +9,7 @@
 //! | the same watertight test, rearranged for speed | [`watertight_fast`] |
 //! | ray-mesh intersection: the naive loop over every triangle, and the bounding volume hierarchy of the `obvhs` crate | [`obvhs_bvh`] |
 //! | the hierarchical approach, written to be read: a median-split BVH and its front-to-back traversal | [`readable_bvh`] |
-//! | building the BVH without going quadratic on coincident or tiny triangles | [`bvh_robust`] |
+//! | building the binary BVH top-down by SAH, O(n log n) on any triangles | [`bvh_robust`] |
 //! | the BVH in the four-wide layout the shading chapters trace, and the collapse it shares with chapter 6's eight-wide one | [`wide_bvh`], [`wide_build`] |
 //! | what is traced and what a first hit shows (depth, normal, barycentrics) | [`geometry`], [`render`] |
 //! | leaving a surface without hitting it again | [`spawn`] |

@@ -25,7 +25,7 @@ use obvhs::ray::{Ray as ORay, RayHit};
 use obvhs::triangle::Triangle as OTriangle;
 use obvhs::BvhBuildParams;
 
-use crate::ch3_ray_triangle::bvh_robust::build_guarded;
+use crate::ch3_ray_triangle::bvh_robust::build_tree;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{Hit, Intersector};
 use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, WatertightRay};
@@ -80,16 +80,20 @@ pub fn occluded_naive(tris: &[[Vec3; 3]], ray: &Ray, t_max: f32, x: Intersector)
         .any(|tri| x.intersect(ray, *tri, 0.0, t_max).is_some())
 }
 
-/// How much each triangle's box grows, relative to its coordinates (2⁻²⁰).
+/// How much each triangle's box grows, relative to its largest coordinate
+/// (2⁻²⁰).
 pub const BOX_PADDING: f32 = 1.0 / 1_048_576.0;
 
-/// The corners (min, max) of a triangle's box, padded by [`BOX_PADDING`]
-/// of its coordinates: the one padding of every BVH's boxes (obvhs' here,
-/// the readable BVH's `Aabb::around`).
+/// The corners (min, max) of a triangle's box, padded on every axis by
+/// [`BOX_PADDING`] of its largest coordinate: the one padding of every
+/// BVH's boxes (obvhs' here, the readable BVH's `Aabb::around`). The slab
+/// test's rounding grows with the size of the points it works on, whatever
+/// the axis: a fan's sliver from (1, 0) to (-1, 6e-5) needs the y padding
+/// of a point at 1, not of one at 6e-5.
 pub fn padded_bounds(tri: &[Vec3; 3]) -> (Vec3, Vec3) {
     let lo = tri[0].min(tri[1]).min(tri[2]);
     let hi = tri[0].max(tri[1]).max(tri[2]);
-    let pad = lo.abs().max(hi.abs()) * BOX_PADDING + f32::MIN_POSITIVE;
+    let pad = lo.abs().max(hi.abs()).max_element() * BOX_PADDING + f32::MIN_POSITIVE;
     (lo - pad, hi + pad)
 }
 
@@ -127,10 +131,10 @@ impl Bvh {
         // slab test rounds, and a ray aimed exactly at a vertex or an edge
         // (which lie on the faces of their triangles' boxes) could otherwise
         // be culled a box too early, undoing the watertight test.
-        // The guard keeps the build O(n log n) on coincident and tiny
-        // triangles (see `bvh_robust`); other scenes get obvhs' own tree.
+        // The tree is built top-down by SAH in O(n log n) on any triangles
+        // (see `bvh_robust`); obvhs traverses it.
         let boxes = padded_boxes(tris);
-        let bvh = build_guarded(&boxes, BvhBuildParams::medium_build());
+        let bvh = build_tree(&boxes, &BvhBuildParams::medium_build());
         // obvhs reports hits as positions in `primitive_indices`: store the
         // triangles in that order so the hot loop needs no indirection.
         let original = bvh.primitive_indices.clone();
@@ -150,6 +154,22 @@ impl Bvh {
     /// How many nodes the hierarchy has.
     pub fn node_count(&self) -> usize {
         self.bvh.nodes.len()
+    }
+
+    /// How many levels the binary tree has below its root (0 for a root
+    /// that is a leaf).
+    pub fn depth(&self) -> usize {
+        let mut deepest = 0;
+        let mut stack = vec![(0usize, 0usize)];
+        while let Some((n, d)) = stack.pop() {
+            deepest = deepest.max(d);
+            let node = &self.bvh.nodes[n];
+            if node.prim_count == 0 {
+                let c = node.first_index as usize;
+                stack.extend([(c, d + 1), (c + 1, d + 1)]);
+            }
+        }
+        deepest
     }
 
     /// How many triangles it holds.

@@ -15,7 +15,7 @@ use glam::{Vec3, Vec3A, Vec4};
 use obvhs::bvh2::Bvh2;
 use obvhs::BvhBuildParams;
 
-use crate::ch3_ray_triangle::bvh_robust::build_guarded;
+use crate::ch3_ray_triangle::bvh_robust::build_tree;
 use crate::ch3_ray_triangle::obvhs_bvh::padded_boxes;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{gamma, Hit};
@@ -129,7 +129,7 @@ impl WideBvh {
             max_prims_per_leaf: 1,
             ..BvhBuildParams::medium_build()
         };
-        let bvh2 = build_guarded(&padded_boxes(tris), params);
+        let bvh2 = build_tree(&padded_boxes(tris), &params);
         let mut counts = vec![0u32; bvh2.nodes.len()];
         count_triangles(&bvh2, 0, &mut counts);
         let mut wide = WideBvh {

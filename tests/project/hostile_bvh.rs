@@ -1,9 +1,8 @@
 //! Issue 20, item 1: the BVH build stays fast on coincident, tiny and
 //! repeated triangles, and the trees it builds answer like the naive loop.
 
-use std::time::Instant;
-
 use glam::Vec3;
+use raystep::ch3_ray_triangle::bvh_robust::SAH_DEPTH;
 use raystep::ch3_ray_triangle::obvhs_bvh::{closest_naive, Bvh, Triangles};
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch3_ray_triangle::triangle::Intersector;
@@ -20,37 +19,22 @@ fn scene_triangles(text: &str) -> Vec<[Vec3; 3]> {
     Triangles::from_meshes(&scene.meshes).tris
 }
 
-/// Seconds to build both BVHs over an ordinary mesh of 81,920 triangles
-/// (a unit sphere): the yardstick for the hostile ones, measured in the
-/// same (debug, possibly loaded) process.
-fn yardstick() -> f64 {
-    static SECONDS: std::sync::OnceLock<f64> = std::sync::OnceLock::new();
-    *SECONDS.get_or_init(measure_ordinary)
-}
-
-fn measure_ordinary() -> f64 {
-    let tris = scene_triangles("[[objects]]\nshape = \"sphere\"\nsubdivisions = 6\n");
-    let start = Instant::now();
-    let _ = Bvh::build(&tris).unwrap();
-    let _ = WideBvh::build(&tris).unwrap();
-    start.elapsed().as_secs_f64()
-}
-
-/// Builds both BVHs and checks they take about as long as an ordinary mesh
-/// of as many triangles (the quadratic build took 6 to 20 s on these, a
-/// hundred times more; in release the guarded builds take well under a
-/// second), and that both agree with the naive loop on rays through the
-/// geometry.
+/// Builds both BVHs and checks that neither is deeper than the bound
+/// that makes a top-down build O(n log n) (`SAH_DEPTH` + log2 n + 1: every
+/// level touches each triangle a constant number of times), and that both
+/// agree with the naive loop on rays through the geometry. (Speed itself
+/// is `ch3 --bench hostile`'s to show, at three sizes.)
 fn check(name: &str, tris: &[[Vec3; 3]], expect_hits: bool) {
     assert!(tris.len() <= 100_000);
-    let start = Instant::now();
     let bvh = Bvh::build(tris).unwrap();
     let wide = WideBvh::build(tris).unwrap();
-    let seconds = start.elapsed().as_secs_f64();
-    let ordinary = yardstick();
+    let bound = SAH_DEPTH + (tris.len() as f64).log2().ceil() as usize + 1;
     assert!(
-        seconds < 4.0 * ordinary + 0.25,
-        "{name}: building took {seconds:.2} s, an ordinary mesh {ordinary:.2} s"
+        bvh.depth() <= bound && wide.depth() <= bound,
+        "{name}: {} triangles, depth {} (binary) and {} (wide), bound {bound}",
+        tris.len(),
+        bvh.depth(),
+        wide.depth()
     );
     assert_eq!(bvh.triangle_count(), tris.len(), "{name}");
     let lo = tris.iter().flatten().fold(Vec3::MAX, |a, b| a.min(*b));
@@ -68,12 +52,22 @@ fn check(name: &str, tris: &[[Vec3; 3]], expect_hits: bool) {
         let naive = closest_naive(tris, &ray, f32::INFINITY, Intersector::Watertight);
         let b = bvh.closest(&ray, f32::INFINITY, Intersector::Watertight);
         let w = wide.closest(&ray, f32::INFINITY);
-        assert_eq!(
-            naive.map(|h| h.t),
-            b.map(|h| h.t),
-            "{name}: ray {k}, binary"
+        // Two coincident faces (a sphere flattened to nothing has its two
+        // halves in one plane) may be hit an ulp apart, and which of them
+        // the interval test keeps depends on the order they are tried in.
+        let same = |x: Option<f32>, y: Option<f32>| match (x, y) {
+            (Some(x), Some(y)) => (x - y).abs() <= 4.0 * f32::EPSILON * x.abs(),
+            (x, y) => x.is_none() && y.is_none(),
+        };
+        let t = naive.map(|h| h.t);
+        assert!(
+            same(t, b.map(|h| h.t)),
+            "{name}: ray {k}, binary {b:?}, naive {naive:?}"
         );
-        assert_eq!(naive.map(|h| h.t), w.map(|h| h.t), "{name}: ray {k}, wide");
+        assert!(
+            same(t, w.map(|h| h.t)),
+            "{name}: ray {k}, wide {w:?}, naive {naive:?}"
+        );
         hits += naive.is_some() as u32;
     }
     // At 1e-30 the intersection arithmetic underflows: nothing is hit,
@@ -133,33 +127,69 @@ fn a_normal_mesh_still_builds_and_agrees() {
     check("unit sphere", &tris, true);
 }
 
-/// `ch3 --bench hostile` has every case of the issue (collapsed spheres
-/// away from the origin, 10^5 overlapping triangles at full size), and
-/// each builds into trees that answer like the naive loop; how long they
-/// take is the benchmark's to say, not a test's.
+/// `ch3 --bench hostile` has every shape of the issue (collapsed spheres
+/// to a point and flat along an axis away from the origin, a fan, slivers,
+/// zero-area, overlapping and copied triangles), and each builds into
+/// shallow trees that answer like the naive loop.
 #[test]
 fn the_hostile_build_benchmark_has_every_case_and_each_builds() {
     use raystep::ch3_ray_triangle::hostile::{cases, hostile_builds};
-    let full: Vec<(String, usize)> = cases(1.0).into_iter().map(|(n, t)| (n, t.len())).collect();
-    assert!(full
-        .iter()
-        .any(|(n, _)| n.contains("collapsed sphere, r 1e-30 at (1000, 1000, 1000)")));
-    assert!(full
-        .iter()
-        .any(|(n, c)| n.contains("overlapping") && *c == 100_000));
-    assert!(full.iter().all(|(_, c)| *c >= 100_000), "{full:?}");
-    let table = hostile_builds(0.002);
-    let text = table.to_text();
+    let names: Vec<String> = cases(16).into_iter().map(|(n, _)| n).collect();
+    for shape in [
+        "collapsed to a point",
+        "flat in x",
+        "flat in z",
+        "fan",
+        "slivers",
+        "zero-area",
+        "overlapping",
+        "copies",
+    ] {
+        assert!(
+            names.iter().any(|n| n.contains(shape)),
+            "{shape}: {names:?}"
+        );
+    }
+    let text = hostile_builds(&[500, 2000]).to_text();
     assert_eq!(
-        text.matches(" yes").count() + text.matches(" NO").count(),
-        6,
+        text.matches("growth exponent:").count(),
+        names.len(),
         "{text}"
     );
-    for (name, tris) in cases(0.002) {
+    for (name, tris) in cases(20_000) {
         // At r 1e-30 the arithmetic underflows, and at 1e6 a radius of
         // 1e-4 is below f32's spacing (the sphere is one point): nothing
-        // is hit. Every other case is hit by rays aimed at its middle.
+        // is hit; nor are zero-area triangles. Every other case is hit by
+        // rays aimed at its middle.
         let point = name.contains("1e-30") || name.contains("below f32's spacing");
-        check(&name, &tris, !point);
+        check(&name, &tris, !point && !name.contains("zero-area"));
     }
+}
+
+/// Round 4's reproducers at their sizes: the sphere flat in x (x times
+/// 2e-38, near the smallest the scene accepts) at (0, 1000, 1000) with 20,480 triangles (more than 120 s to
+/// build before), and one convex polygon of 50,000 corners (25 s).
+#[test]
+fn round_four_shapes_build_shallow_trees() {
+    let flat = scene_triangles(
+        "[camera]\neye = [0, 1000, 1010]\ntarget = [0, 1000, 1000]\n\
+         [[objects]]\nshape = \"sphere\"\nsubdivisions = 5\nscale = [2e-38, 1, 1]\n\
+         translate = [0, 1000, 1000]\n",
+    );
+    assert_eq!(flat.len(), 20_480);
+    check("sphere flat in x", &flat, true);
+    let mut obj = String::new();
+    for k in 0..50_000 {
+        let a = std::f64::consts::TAU * k as f64 / 50_000.0;
+        obj.push_str(&format!("v {} {} 0\n", a.cos(), a.sin()));
+    }
+    obj.push('f');
+    for k in 1..=50_000 {
+        obj.push_str(&format!(" {k}"));
+    }
+    obj.push('\n');
+    let mesh = parse_obj(&obj, "polygon.obj").unwrap();
+    let tris = Triangles::from_meshes(&[mesh]).tris;
+    assert_eq!(tris.len(), 49_998);
+    check("polygon of 50,000 corners", &tris, true);
 }
