@@ -263,15 +263,64 @@ fn start(job: Job, results: &Sender<Progress>) -> Option<Current> {
     }
 }
 
-/// The worker thread: each job renders in a thread of its own
-/// ([`render_jobs`]), so a new job starts at once even while the old one
-/// is in the middle of a long pass (a huge scene's first pass can take
-/// minutes). The old thread is told to stop by closing its channel: it
-/// notices after its pass, and what it sends then carries its old
-/// generation, which the UI drops. Commands for the current job are passed
-/// on to its thread.
+/// The threads one job renders on: a rayon pool of its own, so the rows of
+/// a new job never queue behind the rows of the pass it replaced (in one
+/// shared pool they did: a pool's threads finish the tasks they hold
+/// before they take new ones).
+struct JobPool {
+    pool: rayon::ThreadPool,
+    /// The pool's threads, as the kernel knows them (Linux).
+    #[cfg(target_os = "linux")]
+    threads: Arc<std::sync::Mutex<Vec<rustix::thread::Pid>>>,
+}
+
+impl JobPool {
+    /// As many threads as the global pool (`--threads`, else one per core).
+    fn new() -> Option<JobPool> {
+        let builder = rayon::ThreadPoolBuilder::new()
+            .num_threads(rayon::current_num_threads())
+            .thread_name(|i| format!("{THREAD_NAME}-{i}"));
+        #[cfg(target_os = "linux")]
+        {
+            let threads = Arc::new(std::sync::Mutex::new(Vec::new()));
+            let seen = threads.clone();
+            let builder = builder.start_handler(move |_| {
+                if let Ok(mut t) = seen.lock() {
+                    t.push(rustix::thread::gettid());
+                }
+            });
+            builder.build().ok().map(|pool| JobPool { pool, threads })
+        }
+        #[cfg(not(target_os = "linux"))]
+        builder.build().ok().map(|pool| JobPool { pool })
+    }
+
+    /// The job was replaced: its pass goes on until it ends (a pass cannot
+    /// be interrupted), but at the lowest priority (nice 19), so the new
+    /// job has the cores. Elsewhere than on Linux the two share them.
+    fn demote(&self) {
+        #[cfg(target_os = "linux")]
+        if let Ok(threads) = self.threads.lock() {
+            for &tid in threads.iter() {
+                // Lowering a thread's own process's priority needs no
+                // privilege; if it fails the jobs just share the cores.
+                let _ = rustix::process::setpriority_process(Some(tid), 19);
+            }
+        }
+    }
+}
+
+/// The worker thread: each job renders in a thread and a thread pool of
+/// its own ([`render_jobs`], [`JobPool`]), so a new job starts at once
+/// even while the old one is in the middle of a long pass (a huge scene's
+/// first pass can take minutes). The old job is told to stop by closing
+/// its channel, and its pool is demoted to the lowest priority: it notices
+/// after its pass, and what it sends then carries its old generation,
+/// which the UI drops. Commands for the current job are passed on to its
+/// thread.
 fn work(commands: Receiver<Command>, results: Sender<Progress>) {
-    let mut current: Option<(u64, Sender<Command>, JoinHandle<()>)> = None;
+    type Running = (u64, Sender<Command>, JoinHandle<()>, Arc<JobPool>);
+    let mut current: Option<Running> = None;
     let mut stopping: Vec<JoinHandle<()>> = Vec::new();
     for command in commands.iter() {
         match command {
@@ -280,23 +329,31 @@ fn work(commands: Receiver<Command>, results: Sender<Progress>) {
                 let generation = job.generation;
                 let _ = tx.send(Command::Start(job));
                 let to_ui = results.clone();
-                let spawned = std::thread::Builder::new()
-                    .name(THREAD_NAME.into())
-                    .spawn(move || render_jobs(rx, to_ui));
-                let Ok(handle) = spawned else {
+                let spawned = JobPool::new().map(Arc::new).and_then(|pool| {
+                    let own = pool.clone();
+                    std::thread::Builder::new()
+                        .name(THREAD_NAME.into())
+                        .spawn(move || own.pool.install(|| render_jobs(rx, to_ui)))
+                        .ok()
+                        .map(|thread| (thread, pool))
+                });
+                let Some((handle, pool)) = spawned else {
                     let _ = results.send(Progress::Failed {
                         generation,
                         message: "cannot start a render thread".into(),
                     });
                     continue;
                 };
-                if let Some((_, old, thread)) = current.replace((generation, tx, handle)) {
+                if let Some((_, old, thread, old_pool)) =
+                    current.replace((generation, tx, handle, pool))
+                {
                     drop(old);
+                    old_pool.demote();
                     stopping.push(thread);
                 }
             }
             other => {
-                if let Some((generation, tx, _)) = &current {
+                if let Some((generation, tx, _, _)) = &current {
                     if other.generation() == Some(*generation) {
                         let _ = tx.send(other);
                     }
@@ -306,7 +363,7 @@ fn work(commands: Receiver<Command>, results: Sender<Progress>) {
         stopping.retain(|t| !t.is_finished());
     }
     // The UI is gone: stop the current job after its pass and wait for it.
-    if let Some((_, tx, thread)) = current {
+    if let Some((_, tx, thread, _)) = current {
         drop(tx);
         let _ = thread.join();
     }

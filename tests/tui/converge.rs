@@ -502,3 +502,95 @@ fn a_new_render_does_not_wait_for_the_old_ones_pass() {
     RELEASE.store(true, std::sync::atomic::Ordering::SeqCst);
     worker.stop();
 }
+
+/// Chapter 6 as it is, except that its passes say when they start and end.
+struct Watched(&'static dyn Chapter);
+
+/// When the watched render's first pass started and ended.
+static REAL_PASS: std::sync::Mutex<(Option<Instant>, Option<Instant>)> =
+    std::sync::Mutex::new((None, None));
+
+impl Chapter for Watched {
+    fn info(&self) -> ChapterInfo {
+        self.0.info()
+    }
+    fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
+        Ok(Box::new(WatchedRender(self.0.start(scene, settings)?)))
+    }
+}
+
+struct WatchedRender(Box<dyn Render>);
+
+impl Render for WatchedRender {
+    fn pass(&mut self) -> Pass {
+        REAL_PASS.lock().unwrap().0.get_or_insert_with(Instant::now);
+        let pass = self.0.pass();
+        REAL_PASS.lock().unwrap().1.get_or_insert_with(Instant::now);
+        pass
+    }
+    fn snapshot(&self) -> raystep::core::stage::Snapshot {
+        self.0.snapshot()
+    }
+    fn report(&self) -> Report {
+        self.0.report()
+    }
+}
+
+/// The same with the real renderer and the real pools (issue 48):
+/// chapter 6's first pass over the Cornell box at 1600x1600 takes seconds;
+/// a small render started while it runs is done before that pass is half
+/// way. With one rayon pool for both, the small render's rows queued
+/// behind the big pass's and its picture came only at the pass's end.
+/// (Times of one run compared with each other, with a margin of ten: the
+/// order of events, not a speed target.)
+#[test]
+fn a_new_scene_does_not_wait_for_the_old_ones_real_pass() {
+    let ch6 = *raystep::chapters::all().last().unwrap();
+    assert_eq!(ch6.info().number, 6);
+    let watched: &'static Watched = Box::leak(Box::new(Watched(ch6)));
+    let cornell = Scene::load(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/cornell-box.toml"
+    )))
+    .unwrap();
+    let worker = Worker::spawn();
+    let job = |generation, size, chapter: &'static dyn Chapter| {
+        let mut scene = cornell.clone();
+        (scene.camera.width, scene.camera.height) = (size, size);
+        Job {
+            generation,
+            chapter,
+            scene: Arc::new(scene),
+            settings: Settings::default(),
+            variant: 0,
+            target: Some(Target {
+                spp: 4,
+                noise: None,
+            }),
+        }
+    };
+    worker.start(job(1, 1600, watched));
+    let started = loop {
+        if let Some(t) = REAL_PASS.lock().unwrap().0 {
+            break t;
+        }
+        std::thread::sleep(Duration::from_millis(1));
+    };
+    // Let the big pass spread over the pool's threads.
+    std::thread::sleep(Duration::from_millis(50));
+    worker.start(job(2, 24, ch6));
+    until_done(&worker, 2);
+    let new_done = Instant::now();
+    // The old pass goes on (at the lowest priority); wait for its end.
+    let ended = loop {
+        if let Some(t) = REAL_PASS.lock().unwrap().1 {
+            break t;
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    };
+    let (waited, pass) = (new_done - started, ended - started);
+    assert!(
+        waited < pass / 2,
+        "the new render was done {waited:?} into the old pass, which took {pass:?}"
+    );
+}
