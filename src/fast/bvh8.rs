@@ -15,7 +15,7 @@ use obvhs::aabb::Aabb;
 use obvhs::bvh2::Bvh2;
 use obvhs::BvhBuildParams;
 
-use crate::ch3_ray_triangle::bvh_robust::build_guarded;
+use crate::ch3_ray_triangle::bvh_robust::build_tree;
 use crate::ch3_ray_triangle::obvhs_bvh::padded_boxes;
 use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch3_ray_triangle::watertight_fast::SoaTriangle;
@@ -160,7 +160,7 @@ impl Bvh8 {
             ..BvhBuildParams::medium_build()
         };
         let boxes = padded_boxes(tris);
-        let bvh2 = build_guarded(&boxes, params);
+        let bvh2 = build_tree(&boxes, &params);
         let mut counts = vec![0u32; bvh2.nodes.len()];
         count_triangles(&bvh2, 0, &mut counts);
         open_rooms(&bvh2, &mut counts);

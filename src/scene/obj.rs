@@ -219,8 +219,9 @@ fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
                         return Err(err(
                             line,
                             format!(
-                                "a concave polygon of {} vertices: a fan of \
-                                 triangles would cover the wrong area; split it into triangles",
+                                "a concave or self-intersecting polygon of {} vertices: \
+                                 a fan of triangles would cover the wrong area; split it into \
+                                 triangles",
                                 rest.len()
                             ),
                         ));
@@ -259,27 +260,51 @@ fn check_obj(text: &str, file: &str, max_triangles: usize) -> Result<()> {
     Ok(())
 }
 
-/// Whether a polygon's corners turn the same way all round (about its
-/// Newell normal): then the fan from its first corner covers it exactly.
-/// Collinear corners count as turning either way.
+/// Whether a polygon is convex, so that the fan from its first corner
+/// covers it exactly: its corners turn the same way all round (about its
+/// Newell normal, collinear corners counting as either way) and turn once
+/// round, not twice (a pentagram turns the same way at every corner). A
+/// bow-tie's two halves cancel in the Newell normal: a polygon whose
+/// normal vanishes is convex only if all its corners are on one line (a
+/// zero-area face, harmless).
 fn is_convex(corners: &[Vec3]) -> bool {
     let n = corners.len();
-    let normal = (0..n).fold(Vec3::ZERO, |acc, i| {
-        let (a, b) = (corners[i], corners[(i + 1) % n]);
-        acc + Vec3::new(
+    let p: Vec<glam::DVec3> = corners.iter().map(|c| c.as_dvec3()).collect();
+    let normal = (0..n).fold(glam::DVec3::ZERO, |acc, i| {
+        let (a, b) = (p[i], p[(i + 1) % n]);
+        acc + glam::DVec3::new(
             (a.y - b.y) * (a.z + b.z),
             (a.z - b.z) * (a.x + b.x),
             (a.x - b.x) * (a.y + b.y),
         )
     });
-    let scale = corners
+    let scale = p
         .iter()
-        .map(|p| (*p - corners[0]).length_squared())
-        .fold(0.0f32, f32::max);
-    (0..n).all(|i| {
-        let (a, b, c) = (corners[i], corners[(i + 1) % n], corners[(i + 2) % n]);
-        (b - a).cross(c - b).dot(normal) >= -1e-6 * scale * normal.length()
-    })
+        .map(|q| (*q - p[0]).length_squared())
+        .fold(0.0f64, f64::max);
+    let turns = |i: usize| {
+        let (a, b, c) = (p[i], p[(i + 1) % n], p[(i + 2) % n]);
+        (b - a, c - b)
+    };
+    if normal.length() <= 1e-6 * scale {
+        return (0..n).all(|i| {
+            let (e1, e2) = turns(i);
+            e1.cross(e2).length() <= 1e-6 * scale
+        });
+    }
+    let unit = normal.normalize();
+    let mut turning = 0.0;
+    for i in 0..n {
+        let (e1, e2) = turns(i);
+        let cross = e1.cross(e2).dot(unit);
+        if cross < -1e-6 * scale {
+            return false;
+        }
+        if e1 != glam::DVec3::ZERO && e2 != glam::DVec3::ZERO {
+            turning += cross.atan2(e1.dot(e2));
+        }
+    }
+    turning < 3.0 * std::f64::consts::PI
 }
 
 /// One face corner `v`, `v/vt`, `v//vn` or `v/vt/vn`: every index given is

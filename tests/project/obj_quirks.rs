@@ -41,3 +41,50 @@ fn convex_polygons_are_fanned_and_concave_ones_refused_with_their_line() {
     let turned = "v 0 0 0\nv 2 1 0\nv 0 2 0\nv 1 1 0\nf 4 1 2 3\n";
     assert!(parse_obj(turned, "arrow.obj").is_err());
 }
+
+/// Issue 48: a bow-tie quad (its two halves cancel in the Newell normal)
+/// and a pentagram (it turns the same way at every corner, twice round)
+/// were accepted and fanned over the wrong area; a convex polygon given in
+/// either winding, a degenerate one on a line, and a convex one of many
+/// corners still are accepted.
+#[test]
+fn self_intersecting_polygons_are_refused() {
+    let corners = |points: &[(f64, f64)]| {
+        let mut obj = String::new();
+        for (x, y) in points {
+            obj.push_str(&format!("v {x} {y} 0.5\n"));
+        }
+        obj.push('f');
+        for k in 1..=points.len() {
+            obj.push_str(&format!(" {k}"));
+        }
+        obj.push('\n');
+        obj
+    };
+    let refused = |points: &[(f64, f64)]| {
+        let m = parse_obj(&corners(points), "p.obj").unwrap_err().to_string();
+        assert!(m.contains("self-intersecting"), "{points:?}: {m}");
+    };
+    refused(&[(0.0, 0.0), (1.0, 1.0), (1.0, 0.0), (0.0, 1.0)]);
+    refused(&[(0.0, 0.0), (3.0, 1.0), (3.0, 0.0), (0.0, 1.0)]);
+    let star: Vec<(f64, f64)> = (0..5)
+        .map(|k| {
+            let a = std::f64::consts::TAU * (2 * k) as f64 / 5.0;
+            (a.cos(), a.sin())
+        })
+        .collect();
+    refused(&star);
+    let mut square = vec![(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+    assert_eq!(parse_obj(&corners(&square), "q.obj").unwrap().triangles.len(), 2);
+    square.reverse();
+    assert_eq!(parse_obj(&corners(&square), "q.obj").unwrap().triangles.len(), 2);
+    let line = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (3.0, 0.0)];
+    assert_eq!(parse_obj(&corners(&line), "l.obj").unwrap().triangles.len(), 2);
+    let round: Vec<(f64, f64)> = (0..1000)
+        .map(|k| {
+            let a = std::f64::consts::TAU * k as f64 / 1000.0;
+            (a.cos(), a.sin())
+        })
+        .collect();
+    assert_eq!(parse_obj(&corners(&round), "r.obj").unwrap().triangles.len(), 998);
+}
