@@ -164,6 +164,8 @@ impl Chapter for GlobalIllumination {
             progressive: true,
             radiance: true,
             bounces: self.layers,
+            // The figure renders 1, 2, 4, ... samples into one accumulator.
+            extra_spp: self.spp_figure.map_or(0, |max| 1 << max.max(1).ilog2()),
             ..ChapterInfo::new(
                 6,
                 "global-illumination",

@@ -176,7 +176,7 @@ pub fn run_headless(
 ) -> Result<RunSummary> {
     let info = chapter.info();
     let scene = sized(scene, settings.width, settings.height)?;
-    check_samples(&scene, settings.spp, info.radiance)?;
+    check_samples(&scene, settings.spp.saturating_add(info.extra_spp), info.radiance)?;
     let stem = output_stem(info.number, &scene.name);
     let start = Instant::now();
     let mut render = chapter.start(Arc::new(scene), settings)?;
@@ -278,7 +278,8 @@ pub fn write_outputs(
 
 /// Refuses more than [`MAX_SAMPLES`] samples, and warns (on stderr, with a
 /// rough time estimate) above [`WARN_SAMPLES`]; the pass counter shows the
-/// progress. Only chapters that sample radiance take `spp`.
+/// progress. Only chapters that sample radiance take `spp` (the settings'
+/// and the stage's [`ChapterInfo::extra_spp`] together).
 fn check_samples(scene: &Scene, spp: u32, samples_radiance: bool) -> Result<()> {
     let pixels = scene.camera.width as u64 * scene.camera.height as u64;
     let spp = if samples_radiance { spp as u64 } else { 1 };

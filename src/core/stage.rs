@@ -193,6 +193,10 @@ pub struct ChapterInfo {
     /// objects): a front end opens the chapter there the first time, if
     /// its list has that scene.
     pub scene: Option<&'static str>,
+    /// Samples per pixel a headless run renders besides the settings'
+    /// `spp` (chapter 6's spp-doubling figure), counted by the sample limit
+    /// and warning.
+    pub extra_spp: u32,
 }
 
 impl ChapterInfo {
@@ -215,6 +219,7 @@ impl ChapterInfo {
             radiance: false,
             bounces: false,
             scene: None,
+            extra_spp: 0,
         }
     }
 

@@ -451,6 +451,33 @@ fn too_many_samples_are_refused_before_anything_renders() {
     assert!(!dir.exists());
 }
 
+/// Issue 48: chapter 6's `--spp-figure N` renders up to N more samples
+/// per pixel; they count towards the sample limit and warning. (The scene
+/// has no light, so a run that passes the check stops right after it.)
+#[test]
+fn the_spp_figure_counts_towards_the_sample_limit_and_warning() {
+    let dir = common::temp_dir("hostile-spp-figure");
+    let file = dir.join("dark.toml");
+    std::fs::write(&file, "[[objects]]\nshape = \"box\"\n").unwrap();
+    let run = |size: &str, out: &str| {
+        let run = Command::new(env!("CARGO_BIN_EXE_ch6"))
+            .args(["--spp", "1", "--spp-figure", "1000000", "--final-only"])
+            .args(["--width", size, "--height", size, "--scene"])
+            .arg(&file)
+            .arg("--out")
+            .arg(dir.join(out))
+            .output()
+            .unwrap();
+        String::from_utf8_lossy(&run.stderr).into_owned()
+    };
+    // 4096^2 pixels x (1 + 524,288) samples: past 2^40.
+    let refused = run("4096", "big");
+    assert!(refused.contains("2^40") && refused.contains("524289 samples per pixel"), "{refused}");
+    // 64^2 x 524,289: past the warning's 2^30.
+    let warned = run("64", "small");
+    assert!(warned.contains("warning: ") && warned.contains("524289 per pixel"), "{warned}");
+}
+
 /// Found by the fuzzer: chapter 5's "can anything cast a shadow?" test
 /// compared every vertex with every face, seconds for a sphere of 81,920
 /// triangles and a minute for the largest one a scene may ask for. Above a
