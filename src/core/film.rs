@@ -247,6 +247,7 @@ pub fn write_atomically(
 ) -> Result<()> {
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         create_folder(dir)?;
+        super::stale::sweep_once(dir);
     }
     // The temporary is made and listed under the list's lock, so that a
     // signal's handler (which takes it) sees every one made.

@@ -15,6 +15,7 @@ pub mod report;
 pub mod run;
 pub mod sampling;
 pub mod stage;
+pub mod stale;
 pub mod strip;
 pub mod style;
 pub mod table;

@@ -176,7 +176,11 @@ pub fn run_headless(
 ) -> Result<RunSummary> {
     let info = chapter.info();
     let scene = sized(scene, settings.width, settings.height)?;
-    check_samples(&scene, settings.spp.saturating_add(info.extra_spp), info.radiance)?;
+    check_samples(
+        &scene,
+        settings.spp.saturating_add(info.extra_spp),
+        info.radiance,
+    )?;
     let stem = output_stem(info.number, &scene.name);
     let start = Instant::now();
     let mut render = chapter.start(Arc::new(scene), settings)?;

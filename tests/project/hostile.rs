@@ -424,6 +424,65 @@ fn interrupted_runs_leave_all_outputs_or_none_and_no_temporaries() {
     eprintln!("interrupted runs: {whole} complete sets, {none} without outputs");
 }
 
+/// Issue 48: temporaries of a run killed with SIGKILL (no handler runs)
+/// stayed in the output folder for good. The next run into that folder
+/// removes those of processes that no longer run, and leaves a live
+/// process's temporaries and every other file.
+#[test]
+fn temporaries_of_killed_runs_are_swept_by_the_next_run() {
+    let dir = common::temp_dir("hostile-stale");
+    let out = dir.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    // A real run killed in the middle of a long pass: its temporaries may
+    // or may not exist yet, so one more, named as its would be, is added.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_ch6"))
+        .args([
+            "--spp", "100000", "--width", "64", "--height", "64", "--out",
+        ])
+        .arg(&out)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let killed = child.id();
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let stale = out.join(format!(
+        ".{killed}.tmp0123456789abcdef.0-ch6-cornell-box.png"
+    ));
+    let stale_copy = out.join(format!(".{killed}.old1-ch6-cornell-box.exr"));
+    // This test process runs: its temporary stays.
+    let live = out.join(format!(
+        ".{}.tmp00000000000000ff.2-x.png",
+        std::process::id()
+    ));
+    let other = out.join(".notes");
+    for f in [&stale, &stale_copy, &live, &other] {
+        std::fs::write(f, "x").unwrap();
+    }
+    let run = Command::new(env!("CARGO_BIN_EXE_ch1"))
+        .args(["--width", "8", "--height", "8", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let left: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('.'))
+        .collect();
+    assert!(live.exists() && other.exists(), "{left:?}");
+    assert!(
+        left.iter().all(|n| !n.starts_with(&format!(".{killed}."))),
+        "{left:?}"
+    );
+}
+
 #[test]
 fn too_many_samples_are_refused_before_anything_renders() {
     let dir = common::temp_dir("hostile-samples").join("out");
@@ -472,10 +531,16 @@ fn the_spp_figure_counts_towards_the_sample_limit_and_warning() {
     };
     // 4096^2 pixels x (1 + 524,288) samples: past 2^40.
     let refused = run("4096", "big");
-    assert!(refused.contains("2^40") && refused.contains("524289 samples per pixel"), "{refused}");
+    assert!(
+        refused.contains("2^40") && refused.contains("524289 samples per pixel"),
+        "{refused}"
+    );
     // 64^2 x 524,289: past the warning's 2^30.
     let warned = run("64", "small");
-    assert!(warned.contains("warning: ") && warned.contains("524289 per pixel"), "{warned}");
+    assert!(
+        warned.contains("warning: ") && warned.contains("524289 per pixel"),
+        "{warned}"
+    );
 }
 
 /// Found by the fuzzer: chapter 5's "can anything cast a shadow?" test

@@ -120,7 +120,10 @@ fn a_face_that_runs_round_a_triangle_33_333_times_is_refused() {
     }
     obj.push('\n');
     let m = parse_obj(&obj, "fan.obj").unwrap_err().to_string();
-    assert!(m.contains("fan.obj:4:") && m.contains("self-intersecting"), "{m}");
+    assert!(
+        m.contains("fan.obj:4:") && m.contains("self-intersecting"),
+        "{m}"
+    );
 }
 
 #[test]

@@ -62,7 +62,9 @@ fn self_intersecting_polygons_are_refused() {
         obj
     };
     let refused = |points: &[(f64, f64)]| {
-        let m = parse_obj(&corners(points), "p.obj").unwrap_err().to_string();
+        let m = parse_obj(&corners(points), "p.obj")
+            .unwrap_err()
+            .to_string();
         assert!(m.contains("self-intersecting"), "{points:?}: {m}");
     };
     refused(&[(0.0, 0.0), (1.0, 1.0), (1.0, 0.0), (0.0, 1.0)]);
@@ -75,16 +77,37 @@ fn self_intersecting_polygons_are_refused() {
         .collect();
     refused(&star);
     let mut square = vec![(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
-    assert_eq!(parse_obj(&corners(&square), "q.obj").unwrap().triangles.len(), 2);
+    assert_eq!(
+        parse_obj(&corners(&square), "q.obj")
+            .unwrap()
+            .triangles
+            .len(),
+        2
+    );
     square.reverse();
-    assert_eq!(parse_obj(&corners(&square), "q.obj").unwrap().triangles.len(), 2);
+    assert_eq!(
+        parse_obj(&corners(&square), "q.obj")
+            .unwrap()
+            .triangles
+            .len(),
+        2
+    );
     let line = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (3.0, 0.0)];
-    assert_eq!(parse_obj(&corners(&line), "l.obj").unwrap().triangles.len(), 2);
+    assert_eq!(
+        parse_obj(&corners(&line), "l.obj").unwrap().triangles.len(),
+        2
+    );
     let round: Vec<(f64, f64)> = (0..1000)
         .map(|k| {
             let a = std::f64::consts::TAU * k as f64 / 1000.0;
             (a.cos(), a.sin())
         })
         .collect();
-    assert_eq!(parse_obj(&corners(&round), "r.obj").unwrap().triangles.len(), 998);
+    assert_eq!(
+        parse_obj(&corners(&round), "r.obj")
+            .unwrap()
+            .triangles
+            .len(),
+        998
+    );
 }
