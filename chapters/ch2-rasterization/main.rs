@@ -37,7 +37,7 @@ fn main() -> ExitCode {
     if std::env::args().any(|a| a == "--student") {
         return raystep::grading::process::student_main(2);
     }
-    let cli = Cli::parse();
+    let cli: Cli = raystep::core::run::parse_args();
     if cli.bench {
         let bunny = Scene::load(&PathBuf::from("scenes/bunny.toml")).ok();
         let table = run_bench(bunny, &[1, 2], cli.bench_triangles);

@@ -34,7 +34,7 @@ fn main() -> ExitCode {
     if std::env::args().any(|a| a == "--student") {
         return raystep::grading::process::student_main(3);
     }
-    let cli = Cli::parse();
+    let cli: Cli = raystep::core::run::parse_args();
     if let Some(only) = cli.bench {
         if only == "hostile" {
             print!(

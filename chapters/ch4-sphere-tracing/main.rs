@@ -71,7 +71,7 @@ fn main() -> ExitCode {
     if std::env::args().any(|a| a == "--student") {
         return raystep::grading::process::student_main(4);
     }
-    let cli = Cli::parse();
+    let cli: Cli = raystep::core::run::parse_args();
     let stage = SphereTracing {
         march: March {
             epsilon: cli.epsilon,

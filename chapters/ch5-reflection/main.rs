@@ -46,7 +46,7 @@ fn main() -> ExitCode {
     if std::env::args().any(|a| a == "--student") {
         return raystep::grading::process::student_main(5);
     }
-    let cli = Cli::parse();
+    let cli: Cli = raystep::core::run::parse_args();
     let stage = Reflection {
         strategy: match cli.strategy {
             StrategyArg::Uniform => Strategy::Uniform,

@@ -111,7 +111,7 @@ fn main() -> ExitCode {
     if std::env::args().any(|a| a == "--student") {
         return raystep::grading::process::student_main(6);
     }
-    let cli = Cli::parse();
+    let cli: Cli = raystep::core::run::parse_args();
     let mut stage = DEFAULT;
     stage.path.strategy = match cli.estimator {
         EstimatorArg::Uniform => Strategy::Uniform,

@@ -90,7 +90,7 @@ fn scenes_folder(s: &str) -> Result<PathBuf, String> {
 fn main() -> ExitCode {
     #[cfg(feature = "tui")]
     let started = std::time::Instant::now();
-    let cli = Cli::parse();
+    let cli: Cli = raystep::core::run::parse_args();
     if cli.bench_ui {
         #[cfg(feature = "tui")]
         {

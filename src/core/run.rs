@@ -315,9 +315,37 @@ fn sized(scene: Scene, width: Option<u32>, height: Option<u32>) -> Result<Scene>
     }
 }
 
+/// The command line as `T`, or the process ends with clap's message (a
+/// bad flag or value, `--help`, `--version`) and its exit code. clap
+/// quotes the arguments as given, and a file name may hold escape
+/// sequences (`--scene dir/*.toml` picks up every name in a folder): the
+/// message is printed without clap's colours and with every control
+/// character escaped.
+pub fn parse_args<T: Parser>() -> T {
+    match T::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // The message of the same arguments with their control
+            // characters written out (`\u{1b}`), so that they show instead
+            // of acting on the terminal or vanishing with clap's colours.
+            let shown = std::env::args_os().map(|a| escape(&a.to_string_lossy()).into_owned());
+            let e = T::try_parse_from(shown).err().unwrap_or(e);
+            let text = e.render().to_string();
+            let text = escape_keep_newlines(&text);
+            // A closed stream is no reason to panic: the exit code says it.
+            let _ = if e.use_stderr() {
+                std::io::stderr().lock().write_all(text.as_bytes())
+            } else {
+                std::io::stdout().lock().write_all(text.as_bytes())
+            };
+            std::process::exit(e.exit_code())
+        }
+    }
+}
+
 /// The whole `main` of a chapter binary.
 pub fn chapter_main(chapter: &dyn Chapter) -> ExitCode {
-    let cli = ChapterCli::parse();
+    let cli: ChapterCli = parse_args();
     exit_code(run_with(chapter, &cli.common))
 }
 

@@ -69,7 +69,7 @@ fn parse_timeout(text: &str) -> Result<f64, String> {
 
 /// The whole `main` of the `grade` binary.
 pub fn grade_main() -> ExitCode {
-    let cli = GradeCli::parse();
+    let cli: GradeCli = crate::core::run::parse_args();
     let catalog = all();
     if let Some(id) = &cli.hint {
         let Some(ex) = catalog.iter().find(|e| &e.id() == id) else {

@@ -325,6 +325,31 @@ fn control_characters_never_reach_the_terminal() {
     assert!(stderr.contains("\\u{1b}[2J"), "{stderr:?}");
 }
 
+/// Issue 48: clap's own messages quote the arguments as given; a second
+/// file name from `--scene dir/*.toml`, or a bad value, printed raw escape
+/// sequences. Every binary's message now shows them written out.
+#[test]
+fn command_line_errors_show_control_characters_written_out() {
+    let hostile = "b\u{1b}[31mred\u{1b}]0;title\u{7}.toml";
+    for (bin, args) in [
+        (
+            env!("CARGO_BIN_EXE_ch1"),
+            vec!["--scene", "a.toml", hostile],
+        ),
+        (env!("CARGO_BIN_EXE_ch6"), vec!["--width", "\u{1b}[2J"]),
+        (env!("CARGO_BIN_EXE_raystep"), vec!["--\u{1b}[?1049h"]),
+    ] {
+        let out = Command::new(bin).args(&args).output().unwrap();
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !stderr.chars().any(|c| c.is_control() && c != '\n'),
+            "{stderr:?}"
+        );
+        assert!(stderr.contains("\\u{1b}["), "{args:?}: {stderr:?}");
+    }
+}
+
 #[test]
 fn an_output_set_appears_whole_or_not_at_all() {
     let dir = common::temp_dir("hostile-set");
