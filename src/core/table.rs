@@ -2,6 +2,10 @@
 //! that does not fit puts its widest column under each row, or prints one
 //! block per row.
 
+use std::borrow::Cow;
+
+use crate::core::text::{shorten, NAME_CHARS};
+
 /// A titled table of text cells.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Table {
@@ -23,8 +27,16 @@ impl Table {
         }
     }
 
-    /// Appends a row.
+    /// Appends a row. A cell longer than [`NAME_CHARS`] (a name from a
+    /// scene file) is cut to that: a report stays readable and small.
     pub fn row(&mut self, cells: Vec<String>) {
+        let cells = cells
+            .into_iter()
+            .map(|c| match shorten(&c, NAME_CHARS) {
+                Cow::Borrowed(_) => c,
+                Cow::Owned(short) => short,
+            })
+            .collect();
         self.rows.push(cells);
     }
 

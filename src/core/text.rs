@@ -39,6 +39,23 @@ pub fn escape_keep_newlines(s: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
+/// Characters of a name a report shows in full; a longer one (a scene or
+/// OBJ file may name an object with megabytes) is cut.
+pub const NAME_CHARS: usize = 96;
+
+/// `s` if it has at most `max` characters; else its first `max - 24` and
+/// how many there were (`abc… (1000000 characters)`).
+pub fn shorten(s: &str, max: usize) -> Cow<'_, str> {
+    match s.char_indices().nth(max) {
+        None => Cow::Borrowed(s),
+        Some(_) => {
+            let keep = max.saturating_sub(24).max(1);
+            let cut = s.char_indices().nth(keep).map_or(s.len(), |(i, _)| i);
+            Cow::Owned(format!("{}… ({} characters)", &s[..cut], s.chars().count()))
+        }
+    }
+}
+
 fn needs_escape(c: char) -> bool {
     c.is_control()
         || matches!(c, '\u{2028}' | '\u{2029}' | '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')

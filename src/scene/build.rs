@@ -15,6 +15,7 @@ use super::{
     MAX_EXPONENT,
 };
 use crate::core::error::{Error, Result};
+use crate::core::text::{shorten, NAME_CHARS};
 
 /// Turns a TOML or serde error into one that gives the line and, for an
 /// unknown key, the closest known one.
@@ -114,6 +115,7 @@ pub(super) fn build(
     // Materials: checked, then kept only if an object uses them.
     let mut declared = Vec::new();
     for (i, m) in file.materials.iter().enumerate() {
+        check_name(&m.name, &format!("materials[{i}].name")).map_err(|(a, m)| scene_err(a, m))?;
         let at = format!("materials[{i}] (\"{}\")", m.name);
         if declared.iter().any(|d: &Material| d.name == m.name) {
             return Err(scene_err(
@@ -181,6 +183,7 @@ pub(super) fn build(
         mesh.material = use_material(&declared, &mut materials, o.material.as_deref(), &at)
             .map_err(|(a, m)| scene_err(a, m))?;
         if let Some(n) = &o.name {
+            check_name(n, &format!("{at}.name")).map_err(|(a, m)| scene_err(a, m))?;
             mesh.name = n.clone();
         }
         // An area light needs an area: the lights would sample a density
@@ -284,7 +287,10 @@ fn build_sdfs(
             crate::scene::sdf_parse::parse_node(t, &at, true).map_err(|(a, m)| scene_err(a, m))?;
         let name = match t.get("name") {
             None => format!("{} {i}", t["type"].as_str().unwrap_or("sdf")),
-            Some(toml::Value::String(n)) => n.clone(),
+            Some(toml::Value::String(n)) => {
+                check_name(n, &format!("{at}.name")).map_err(|(a, m)| scene_err(a, m))?;
+                n.clone()
+            }
             Some(v) => {
                 return Err(scene_err(
                     format!("{at}.name"),
@@ -324,6 +330,26 @@ fn build_sdfs(
     Ok(out)
 }
 
+/// The most characters a name (of a material, an object or an SDF) may
+/// have: reports and messages print names in full.
+pub const MAX_NAME_CHARS: usize = 256;
+
+/// Refuses a name longer than [`MAX_NAME_CHARS`]: the key `at` and the
+/// message.
+fn check_name(name: &str, at: &str) -> std::result::Result<(), (String, String)> {
+    let n = name.chars().count();
+    if n > MAX_NAME_CHARS {
+        return Err((
+            at.to_string(),
+            format!(
+                "`{}`: a name may have at most {MAX_NAME_CHARS} characters",
+                shorten(name, 40)
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// The index in `used` of the material an object names (the default grey
 /// when it names none), adding it to `used` the first time it is used; or
 /// the key and message of the error when no material has that name.
@@ -343,7 +369,10 @@ fn use_material(
                 let known: Vec<&str> = declared.iter().map(|m| m.name.as_str()).collect();
                 (
                     format!("{at}.material"),
-                    format!("no material named `{wanted}`; declared: {known:?}"),
+                    format!(
+                        "no material named `{}`; declared: {known:?}",
+                        shorten(wanted, NAME_CHARS)
+                    ),
                 )
             })?,
     };

@@ -350,6 +350,41 @@ fn command_line_errors_show_control_characters_written_out() {
     }
 }
 
+/// Issue 48: a 200 MB object name made chapter 1 print 839 MB. Names in
+/// a scene have at most 256 characters (a longer one is refused at its
+/// key, the message quoting its start), an unknown material's name is
+/// quoted cut, and report cells are cut at 96 characters.
+#[test]
+fn names_are_bounded_in_messages_and_reports() {
+    let long = "n".repeat(300_000);
+    for (text, key) in [
+        (format!("[[objects]]\nshape = \"box\"\nname = \"{long}\"\n"), "objects[0].name"),
+        (format!("[[materials]]\nname = \"{long}\"\n"), "materials[0].name"),
+        (format!("[[sdfs]]\ntype = \"sphere\"\nname = \"{long}\"\n"), "sdfs[0].name"),
+        (format!("[[objects]]\nshape = \"box\"\nmaterial = \"{long}\"\n"), "objects[0].material"),
+    ] {
+        let e = parse(&text).unwrap_err();
+        assert!(e.contains(key) && e.contains("300000 characters") && e.len() < 400, "{}", &e[..e.len().min(400)]);
+    }
+    // 250 characters: accepted, and the report's table cuts it.
+    let name = format!("{}END", "m".repeat(247));
+    let dir = common::temp_dir("hostile-names");
+    common::write_files(
+        &dir,
+        &[("named.toml", &format!("[[objects]]\nshape = \"box\"\nname = \"{name}\"\n"))],
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_ch1"))
+        .arg("--scene")
+        .arg(dir.join("named.toml"))
+        .args(["--width", "8", "--height", "8", "--out"])
+        .arg(dir.join("out"))
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("mmm… (250 characters)") && !stdout.contains("END"), "{stdout}");
+}
+
 #[test]
 fn an_output_set_appears_whole_or_not_at_all() {
     let dir = common::temp_dir("hostile-set");
