@@ -11,8 +11,10 @@ use std::process::ExitCode;
 
 use clap::{Parser, ValueEnum};
 use raystep::ch5_reflection::direct::Strategy;
+use raystep::ch5_reflection::shadowing::shadow_work_warning;
 use raystep::ch5_reflection::stage::{Reflection, DEFAULT};
-use raystep::core::run::{exit_code, run_with, CommonArgs};
+use raystep::core::error::Result;
+use raystep::core::run::{exit_code, init_threads, run_on, CommonArgs, RunSummary};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum StrategyArg {
@@ -56,5 +58,17 @@ fn main() -> ExitCode {
         },
         max_mirror_bounces: cli.max_mirror_bounces,
     };
-    exit_code(run_with(&stage, &cli.common))
+    exit_code(run(&stage, &cli.common))
+}
+
+/// Warns about a scene whose shadow rays cost lights x SDFs before the
+/// render (it may take hours), then runs it.
+fn run(stage: &Reflection, common: &CommonArgs) -> Result<RunSummary> {
+    init_threads(common.threads)?;
+    let scene = common.load_sized_scene()?;
+    let samples = scene.camera.width as u64 * scene.camera.height as u64 * common.spp as u64;
+    if let Some(warning) = shadow_work_warning(&scene, samples) {
+        eprintln!("{warning}");
+    }
+    run_on(stage, scene, common)
 }

@@ -46,3 +46,43 @@ fn is_convex(mesh: &Mesh) -> bool {
 
 /// The most triangle-vertex pairs the convexity test looks at.
 const CONVEXITY_WORK: u64 = 50_000_000;
+
+/// Lights times SDF shapes and operations above which a run is warned
+/// about: chapter 5 traces a shadow ray to every light at every sample,
+/// and each marches through every SDF node at every step.
+pub const SHADOW_WORK_WARN: u64 = 4096;
+/// A rough rate for the warning's estimate: SDF node evaluations per
+/// second per core, and the steps a shadow ray takes.
+const NODE_EVALS_PER_CORE_SECOND: f64 = 2e8;
+const STEPS_PER_SHADOW_RAY: f64 = 32.0;
+
+/// The warning for a scene whose shadow rays cost lights × SDF nodes per
+/// sample, with a rough time for `samples` samples, when that product is
+/// at least [`SHADOW_WORK_WARN`].
+pub fn shadow_work_warning(scene: &Scene, samples: u64) -> Option<String> {
+    let emissive = scene
+        .meshes
+        .iter()
+        .filter(|m| scene.materials[m.material].is_emissive())
+        .count();
+    let lights = (scene.lights.len() + emissive) as u64;
+    let nodes: u64 = scene
+        .sdfs
+        .iter()
+        .map(|s| crate::scene::sdf_nodes(&s.sdf) as u64)
+        .sum();
+    let product = lights * nodes;
+    if product < SHADOW_WORK_WARN {
+        return None;
+    }
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get()) as f64;
+    let seconds = samples as f64 * product as f64 * STEPS_PER_SHADOW_RAY
+        / (NODE_EVALS_PER_CORE_SECOND * cores);
+    Some(format!(
+        "warning: {lights} lights x {nodes} SDF shapes and operations: every sample traces \
+         a shadow ray to each light, and each step of it evaluates every SDF node \
+         ({product} evaluations a step); {samples} samples may take about {} \
+         on {cores} cores. Fewer lights or SDFs (or a smaller --spp) cost less.",
+        crate::core::format::format_seconds(seconds)
+    ))
+}

@@ -240,7 +240,7 @@ pub(super) fn build(
 pub const MAX_SDF_NODES: usize = 1024;
 
 /// The shapes and operations in one SDF tree.
-fn sdf_nodes(sdf: &crate::scene::sdf::Sdf) -> usize {
+pub fn sdf_nodes(sdf: &crate::scene::sdf::Sdf) -> usize {
     use crate::scene::sdf::Sdf;
     1 + match sdf {
         Sdf::Union(of) | Sdf::Intersection(of) | Sdf::SmoothUnion { of, .. } => {

@@ -6,7 +6,7 @@
 //! materials. Nothing is built for a section the file does not mention.
 
 mod build;
-pub use build::MAX_SDF_NODES;
+pub use build::{sdf_nodes, MAX_SDF_NODES};
 pub mod camera;
 pub mod content;
 pub mod file;

@@ -358,20 +358,39 @@ fn command_line_errors_show_control_characters_written_out() {
 fn names_are_bounded_in_messages_and_reports() {
     let long = "n".repeat(300_000);
     for (text, key) in [
-        (format!("[[objects]]\nshape = \"box\"\nname = \"{long}\"\n"), "objects[0].name"),
-        (format!("[[materials]]\nname = \"{long}\"\n"), "materials[0].name"),
-        (format!("[[sdfs]]\ntype = \"sphere\"\nname = \"{long}\"\n"), "sdfs[0].name"),
-        (format!("[[objects]]\nshape = \"box\"\nmaterial = \"{long}\"\n"), "objects[0].material"),
+        (
+            format!("[[objects]]\nshape = \"box\"\nname = \"{long}\"\n"),
+            "objects[0].name",
+        ),
+        (
+            format!("[[materials]]\nname = \"{long}\"\n"),
+            "materials[0].name",
+        ),
+        (
+            format!("[[sdfs]]\ntype = \"sphere\"\nname = \"{long}\"\n"),
+            "sdfs[0].name",
+        ),
+        (
+            format!("[[objects]]\nshape = \"box\"\nmaterial = \"{long}\"\n"),
+            "objects[0].material",
+        ),
     ] {
         let e = parse(&text).unwrap_err();
-        assert!(e.contains(key) && e.contains("300000 characters") && e.len() < 400, "{}", &e[..e.len().min(400)]);
+        assert!(
+            e.contains(key) && e.contains("300000 characters") && e.len() < 400,
+            "{}",
+            &e[..e.len().min(400)]
+        );
     }
     // 250 characters: accepted, and the report's table cuts it.
     let name = format!("{}END", "m".repeat(247));
     let dir = common::temp_dir("hostile-names");
     common::write_files(
         &dir,
-        &[("named.toml", &format!("[[objects]]\nshape = \"box\"\nname = \"{name}\"\n"))],
+        &[(
+            "named.toml",
+            &format!("[[objects]]\nshape = \"box\"\nname = \"{name}\"\n"),
+        )],
     );
     let out = Command::new(env!("CARGO_BIN_EXE_ch1"))
         .arg("--scene")
@@ -380,9 +399,61 @@ fn names_are_bounded_in_messages_and_reports() {
         .arg(dir.join("out"))
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(stdout.contains("mmm… (250 characters)") && !stdout.contains("END"), "{stdout}");
+    assert!(
+        stdout.contains("mmm… (250 characters)") && !stdout.contains("END"),
+        "{stdout}"
+    );
+}
+
+/// Issue 48: chapter 5's cost grows with lights x SDF nodes (a shadow ray
+/// per light per sample, every SDF node at every step of it), with no
+/// word. 70 lights x 64 moved spheres (128 nodes) are now warned about, with an estimate,
+/// before anything renders; the shipped SDF scene is not.
+#[test]
+fn chapter_5_warns_about_lights_times_sdfs() {
+    let mut text = String::new();
+    for k in 0..70 {
+        text.push_str(&format!(
+            "[[lights]]\ntype = \"point\"\nposition = [{}, 3, 3]\nintensity = [1, 1, 1]\n",
+            k as f32 * 0.1
+        ));
+    }
+    for k in 0..64 {
+        text.push_str(&format!(
+            "[[sdfs]]\ntype = \"sphere\"\ntranslate = [{}, 0, -2]\nradius = 0.05\n",
+            k as f32 * 0.1 - 3.2
+        ));
+    }
+    let dir = common::temp_dir("hostile-shadow-work");
+    common::write_files(&dir, &[("many.toml", &text)]);
+    let run = |scene: &Path| {
+        let out = Command::new(env!("CARGO_BIN_EXE_ch5"))
+            .arg("--scene")
+            .arg(scene)
+            .args(["--width", "4", "--height", "4", "--out"])
+            .arg(dir.join("out"))
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    let warned = run(&dir.join("many.toml"));
+    assert!(
+        warned.contains("70 lights x 128 SDF shapes") && warned.contains("may take about"),
+        "{warned}"
+    );
+    let shipped = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/sdf-lit.toml");
+    assert!(!run(&shipped).contains("warning"));
 }
 
 #[test]
