@@ -42,6 +42,7 @@ pub const DEFAULT: Projection = Projection;
 impl Chapter for Projection {
     fn info(&self) -> ChapterInfo {
         ChapterInfo::new(1, "projection", "Projection: the pinhole camera", VIEWS)
+            .with_memory(128, 192)
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         crate::core::stage::require_meshes(1, &scene)?;

@@ -36,6 +36,7 @@ impl Chapter for Rasterization {
             "Rasterization: coverage, barycentrics, depth buffer",
             VIEWS,
         )
+        .with_memory(256, 832)
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         crate::core::stage::require_meshes(2, &scene)?;

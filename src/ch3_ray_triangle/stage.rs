@@ -54,6 +54,7 @@ impl Chapter for RayTriangle {
             "Ray-triangle intersection and a BVH",
             VIEWS,
         )
+        .with_memory(224, 272)
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         crate::core::stage::require_meshes(3, &scene)?;

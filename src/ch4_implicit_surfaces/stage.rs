@@ -113,6 +113,7 @@ impl Chapter for SphereTracing {
                 "Implicit surfaces: signed distance functions and sphere tracing",
                 VIEWS,
             )
+            .with_memory(336, 272)
         }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {

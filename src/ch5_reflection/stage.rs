@@ -104,6 +104,7 @@ impl Chapter for Reflection {
                 "Radiometry, lights, BRDFs and the reflection equation",
                 VIEWS,
             )
+            .with_memory(64, 528)
         }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {

@@ -166,12 +166,15 @@ impl Chapter for GlobalIllumination {
             bounces: self.layers,
             // The figure renders 1, 2, 4, ... samples into one accumulator.
             extra_spp: self.spp_figure.map_or(0, |max| 1 << max.max(1).ilog2()),
+            // The per-bounce layers take most of it.
+            bytes_per_pixel: if self.layers { 1280 } else { 128 },
             ..ChapterInfo::new(
                 6,
                 "global-illumination",
                 "Global illumination: Monte Carlo path tracing, bounce by bounce",
                 VIEWS,
             )
+            .with_memory(1280, 544)
         }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {

@@ -9,6 +9,7 @@ pub mod error;
 pub mod figure;
 pub mod film;
 pub mod format;
+pub mod memory;
 pub mod plot;
 pub mod preview;
 pub mod report;

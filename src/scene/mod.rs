@@ -159,6 +159,7 @@ pub fn read_limited(path: &Path, max: u64) -> Result<String> {
     {
         return Err(too_big());
     }
+    crate::core::memory::check_file(path, meta.len())?;
     // In chunks, so that a binary or endless file (`/dev/zero`) is refused
     // at its first NUL byte instead of after the whole limit.
     let mut bytes = Vec::new();

@@ -238,6 +238,7 @@ fn start(job: Job, results: &Sender<Progress>) -> Option<Current> {
         settings.spp = t.spp.max(1);
     }
     let render = catch_unwind(AssertUnwindSafe(|| {
+        crate::core::memory::check(&job.chapter.info(), &job.scene)?;
         job.chapter.start(job.scene.clone(), &settings)
     }));
     match render {

@@ -16,6 +16,7 @@ mod hostile;
 mod hostile_bvh;
 mod layout;
 mod live_student;
+mod memory;
 mod mutants;
 mod non_square;
 mod obj_quirks;

@@ -1,0 +1,114 @@
+//! Issue 48: memory refused before it runs out. Under an address-space
+//! limit (`ulimit -v`, as a course's sandbox or a CI runner sets) a
+//! 16384² image aborted on allocation (exit 134) and so did reading a large
+//! scene; both are now refused with an error that names the limit. Each
+//! chapter's estimate is an upper bound: a run given its estimate (plus
+//! room for what the process had mapped when it checked) completes.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+use raystep::core::memory::{estimate, BASE_BYTES};
+use raystep::scene::Scene;
+
+use crate::common;
+
+/// `bin` with `args` under an address-space limit of `kib` KiB.
+fn limited(kib: u64, bin: &str, args: &[&str], out: &Path) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\""))
+        .arg(bin)
+        .args(args)
+        .arg("--out")
+        .arg(out)
+        .output()
+        .unwrap()
+}
+
+fn bin(chapter: u32) -> &'static str {
+    [
+        env!("CARGO_BIN_EXE_ch1"),
+        env!("CARGO_BIN_EXE_ch2"),
+        env!("CARGO_BIN_EXE_ch3"),
+        env!("CARGO_BIN_EXE_ch4"),
+        env!("CARGO_BIN_EXE_ch5"),
+        env!("CARGO_BIN_EXE_ch6"),
+    ][chapter as usize - 1]
+}
+
+#[test]
+fn a_huge_image_is_refused_under_an_address_space_limit() {
+    let dir = common::temp_dir("memory-huge");
+    for chapter in [3, 6] {
+        let args = ["--width", "16384", "--height", "16384"];
+        let run = limited(4 << 20, bin(chapter), &args, &dir.join("out"));
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(2), "chapter {chapter}: {stderr}");
+        assert!(
+            stderr.contains("16384x16384 pixels") && stderr.contains("address-space limit"),
+            "{stderr}"
+        );
+    }
+    assert!(!dir.join("out").exists());
+}
+
+#[test]
+fn a_large_file_is_refused_before_it_is_read_under_a_limit() {
+    let dir = common::temp_dir("memory-file");
+    // 40 MB of vertices: about 300 MiB to read and parse.
+    let line = "v 0.123456 0.654321 0.777777\n";
+    let obj = format!(
+        "{}v 1 0 0\nv 0 1 0\nf 1 2 3\n",
+        line.repeat(40_000_000 / line.len())
+    );
+    common::write_files(
+        &dir,
+        &[
+            ("big.obj", &obj),
+            ("big.toml", "[[objects]]\nmesh = \"big.obj\"\n"),
+        ],
+    );
+    let scene = dir.join("big.toml");
+    let args = [
+        "--scene",
+        scene.to_str().unwrap(),
+        "--width",
+        "8",
+        "--height",
+        "8",
+    ];
+    let run = limited(200 << 10, bin(1), &args, &dir.join("out"));
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("big.obj: reading this 38 MiB file") && stderr.contains("address-space"),
+        "{stderr}"
+    );
+}
+
+/// Every chapter at 1024x1024 (chapter 6 with its bounce layers, its
+/// largest) completes under its own estimate plus 192 MiB, what the
+/// process has mapped when it checks; an estimate too low would abort.
+#[test]
+fn each_chapters_estimate_is_enough_for_its_run() {
+    let dir = common::temp_dir("memory-enough");
+    let mut scene = Scene::builtin();
+    (scene.camera.width, scene.camera.height) = (1024, 1024);
+    for (k, chapter) in raystep::chapters::all().into_iter().enumerate() {
+        let info = chapter.info();
+        let need = estimate(&info, &scene);
+        assert!(need > BASE_BYTES);
+        let kib = (need + (192 << 20)) >> 10;
+        let args = ["--width", "1024", "--height", "1024", "--spp", "1"];
+        let run = limited(kib, bin(k as u32 + 1), &args, &dir.join(format!("out{k}")));
+        assert!(
+            run.status.success(),
+            "chapter {}: under {} MiB: {:?} {}",
+            k + 1,
+            kib >> 10,
+            run.status,
+            String::from_utf8_lossy(&run.stderr)
+        );
+    }
+}
