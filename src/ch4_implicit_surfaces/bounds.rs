@@ -4,6 +4,7 @@
 use glam::Vec3;
 
 use crate::scene::sdf::Sdf;
+use crate::scene::Scene;
 
 /// An axis-aligned box; `min > max` on some axis means empty.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -121,4 +122,51 @@ pub fn of(sdf: &Sdf) -> Aabb {
         Sdf::Scale { factor, of } => of.bounds().map(|c| c * *factor),
         Sdf::ScaleAxes { factors, of, .. } => of.bounds().map(|c| c * *factors),
     }
+}
+
+/// The reach (eye to the farthest bounded thing, [`reach`]) the
+/// shipped SDF scenes are built around.
+pub const UNIT_REACH: f64 = 9.0;
+
+/// How far the scene reaches from its camera: the distance to the
+/// farthest mesh vertex or corner of a bounded SDF's box (an infinite
+/// plane has none); the viewing distance (eye to target) for a scene
+/// with neither.
+pub fn reach(scene: &Scene) -> f64 {
+    let eye = scene.camera.eye;
+    let mut far = 0.0f64;
+    for o in &scene.sdfs {
+        let b = o.sdf.bounds();
+        if b.is_finite() {
+            for c in [b.min, b.max] {
+                far = far.max((c.as_dvec3() - eye).length());
+            }
+        }
+    }
+    for m in &scene.meshes {
+        for p in &m.positions {
+            far = far.max((p.as_dvec3() - eye).length());
+        }
+    }
+    if far > 0.0 && far.is_finite() {
+        far
+    } else {
+        (scene.camera.target - eye).length()
+    }
+}
+
+/// How large this scene is against the shipped ones, as a power of
+/// four of its [`reach`] over [`UNIT_REACH`]: 1 for every reach
+/// from 4.5 to 18, 4⁵ for a shipped scene scaled by 1,000. Lengths a
+/// renderer fixes in scene units (chapter 4's ε and how far it
+/// marches) are multiplied by it, so a scaled scene gives the same
+/// picture. A power of two is exact in floating point; steps of four
+/// keep every shipped SDF scene at 1.
+pub fn length_unit(scene: &Scene) -> f32 {
+    let reach = reach(scene);
+    if !(reach.is_finite() && reach > 0.0) {
+        return 1.0;
+    }
+    let k = (reach / UNIT_REACH).log(4.0).round().clamp(-60.0, 60.0) as i32;
+    4f64.powi(k) as f32
 }

@@ -45,6 +45,17 @@ impl Default for March {
 }
 
 impl March {
+    /// These settings for a scene `unit` times the size they were chosen
+    /// for ([`length_unit`](super::bounds::length_unit)): ε
+    /// and the distance marched scale with it.
+    pub fn scaled(self, unit: f32) -> March {
+        March {
+            epsilon: self.epsilon * unit,
+            max_distance: self.max_distance * unit,
+            ..self
+        }
+    }
+
     /// The ε used at `p`: the requested ε, or a few f32 spacings of p's
     /// coordinates when those are coarser (far from the origin a point
     /// cannot get closer to the surface than its own rounding).

@@ -118,8 +118,13 @@ impl Chapter for SphereTracing {
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         self.check()?;
+        // ε and the distance marched in the scene's own units.
+        let stage = SphereTracing {
+            march: self.march.scaled(super::bounds::length_unit(&scene)),
+            ..*self
+        };
         Ok(Box::new(SphereTracingRender {
-            stage: *self,
+            stage,
             camera: Camera::new(scene.camera)?,
             scene,
             settings: settings.clone(),

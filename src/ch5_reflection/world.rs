@@ -13,6 +13,7 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::spawn::{offset_origin, stop_distance};
 use crate::ch3_ray_triangle::triangle::unit_normal;
 use crate::ch3_ray_triangle::wide_bvh::WideBvh;
+use crate::ch4_implicit_surfaces::bounds::length_unit;
 use crate::ch4_implicit_surfaces::distance::{scene_distance, SdfObject};
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch4_implicit_surfaces::march::{sphere_trace, March};
@@ -122,7 +123,7 @@ impl World {
             .collect();
         let march = March {
             max_distance: scene_extent(scene),
-            ..March::default()
+            ..March::default().scaled(length_unit(scene))
         };
         World {
             triangles,
@@ -201,7 +202,7 @@ impl World {
                 if best.is_none_or(|b| t < b.t) {
                     let p = ray.at(t);
                     let object = scene_distance(&self.sdfs, p).1;
-                    let h = m.epsilon_at(p).max(1e-4);
+                    let h = m.epsilon_at(p).max(m.epsilon);
                     best = Some(Interaction {
                         t,
                         p,
@@ -316,5 +317,5 @@ fn scene_extent(scene: &Scene) -> f32 {
             far = far.max((*p - eye).length());
         }
     }
-    (2.0 * far).max(100.0)
+    (2.0 * far).max(100.0 * length_unit(scene))
 }

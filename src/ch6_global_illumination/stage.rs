@@ -156,6 +156,8 @@ impl GlobalIllumination {
     }
 }
 
+const TITLE: &str = "Global illumination: Monte Carlo path tracing, bounce by bounce";
+
 impl Chapter for GlobalIllumination {
     fn info(&self) -> ChapterInfo {
         ChapterInfo {
@@ -164,17 +166,10 @@ impl Chapter for GlobalIllumination {
             progressive: true,
             radiance: true,
             bounces: self.layers,
-            // The figure renders 1, 2, 4, ... samples into one accumulator.
+            // The spp figure's samples; the layers take most of the memory.
             extra_spp: self.spp_figure.map_or(0, |max| 1 << max.max(1).ilog2()),
-            // The per-bounce layers take most of it.
-            bytes_per_pixel: if self.layers { 1280 } else { 128 },
-            ..ChapterInfo::new(
-                6,
-                "global-illumination",
-                "Global illumination: Monte Carlo path tracing, bounce by bounce",
-                VIEWS,
-            )
-            .with_memory(1280, 544)
+            ..ChapterInfo::new(6, "global-illumination", TITLE, VIEWS)
+                .with_memory(if self.layers { 1280 } else { 128 }, 544)
         }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {

@@ -1,8 +1,10 @@
 //! Memory refused before it runs out. A run's largest allocations grow
 //! with its pixels (film, layers, views, the encoded outputs) and its
 //! triangles (the mesh, the trees); each chapter states its measured bytes
-//! per pixel and per triangle ([`ChapterInfo::bytes_per_pixel`],
-//! [`ChapterInfo::bytes_per_triangle`]), and [`check`] refuses a run whose
+//! per pixel and per triangle
+//! ([`ChapterInfo::bytes_per_pixel`](crate::core::stage::ChapterInfo::bytes_per_pixel),
+//! [`ChapterInfo::bytes_per_triangle`](crate::core::stage::ChapterInfo::bytes_per_triangle)),
+//! and [`check`] refuses a run whose
 //! estimate exceeds what this process may still get: its address-space
 //! limit (`ulimit -v`, as a course's sandbox or a CI runner sets), its
 //! control group's limit, and the memory the machine has available. A
@@ -10,21 +12,32 @@
 //! the process (exit 134) with no word about why.
 
 use crate::core::error::{Error, Result};
-use crate::core::stage::ChapterInfo;
-use crate::scene::Scene;
 
 /// Address space a run takes besides its pixels and triangles: the
 /// program, its threads' stacks and the allocator's per-thread arenas.
 pub const BASE_BYTES: u64 = 256 << 20;
 
-/// What a run of `info`'s chapter on `scene` (at its size) will allocate,
-/// about, in bytes: an upper bound from measured peaks (see the chapters'
-/// `bytes_per_pixel`).
-pub fn estimate(info: &ChapterInfo, scene: &Scene) -> u64 {
-    let pixels = scene.camera.width as u64 * scene.camera.height as u64;
-    BASE_BYTES
-        .saturating_add(pixels.saturating_mul(info.bytes_per_pixel))
-        .saturating_add((scene.triangle_count() as u64).saturating_mul(info.bytes_per_triangle))
+/// A run's size: what its allocations grow with, and by how much.
+#[derive(Clone, Copy, Debug)]
+pub struct Run {
+    /// Pixels of its image.
+    pub pixels: u64,
+    /// Triangles of its scene.
+    pub triangles: u64,
+    /// Bytes per pixel, at most (the chapter's).
+    pub per_pixel: u64,
+    /// Bytes per triangle, at most (the chapter's).
+    pub per_triangle: u64,
+}
+
+impl Run {
+    /// What the run will allocate, about, in bytes: an upper bound from
+    /// measured peaks.
+    pub fn estimate(&self) -> u64 {
+        BASE_BYTES
+            .saturating_add(self.pixels.saturating_mul(self.per_pixel))
+            .saturating_add(self.triangles.saturating_mul(self.per_triangle))
+    }
 }
 
 /// The most this process may still allocate, and what limits it; `None`
@@ -44,11 +57,12 @@ pub fn available() -> Option<(u64, &'static str)> {
     best
 }
 
-/// Refuses a run of `info`'s chapter on `scene` that would need more than
+/// Refuses `run` (described by `what`, e.g. "chapter 3 on cornell-box
+/// (64x64 pixels, 36 triangles)") when it would need more than
 /// [`available`] gives, naming both and what to lower.
-pub fn check(info: &ChapterInfo, scene: &Scene) -> Result<()> {
-    let need = estimate(info, scene);
-    let Some((have, what)) = available() else {
+pub fn check(what: &str, run: &Run) -> Result<()> {
+    let need = run.estimate();
+    let Some((have, limit)) = available() else {
         return Ok(());
     };
     if need <= have {
@@ -56,13 +70,8 @@ pub fn check(info: &ChapterInfo, scene: &Scene) -> Result<()> {
     }
     let gib = |b: u64| b as f64 / (1u64 << 30) as f64;
     Err(Error::Usage(format!(
-        "chapter {} on {} ({}x{} pixels, {} triangles) needs about {:.1} GiB, more than the \
-         {:.1} GiB left under {what}; lower --width and --height (or use a smaller mesh)",
-        info.number,
-        crate::core::text::escape(&scene.name),
-        scene.camera.width,
-        scene.camera.height,
-        scene.triangle_count(),
+        "{what} needs about {:.1} GiB, more than the {:.1} GiB left under {limit}; lower \
+         --width and --height (or use a smaller mesh)",
         gib(need),
         gib(have),
     )))

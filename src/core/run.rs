@@ -181,7 +181,7 @@ pub fn run_headless(
         settings.spp.saturating_add(info.extra_spp),
         info.radiance,
     )?;
-    crate::core::memory::check(&info, &scene)?;
+    info.check_memory(&scene)?;
     let stem = output_stem(info.number, &scene.name);
     let start = Instant::now();
     let mut render = chapter.start(Arc::new(scene), settings)?;

@@ -242,6 +242,26 @@ impl ChapterInfo {
         }
     }
 
+    /// Refuses a run of this chapter on `scene` that would need more memory
+    /// than this process may still get ([`crate::core::memory`]).
+    pub fn check_memory(&self, scene: &Scene) -> Result<()> {
+        let run = crate::core::memory::Run {
+            pixels: scene.camera.width as u64 * scene.camera.height as u64,
+            triangles: scene.triangle_count() as u64,
+            per_pixel: self.bytes_per_pixel,
+            per_triangle: self.bytes_per_triangle,
+        };
+        let what = format!(
+            "chapter {} on {} ({}x{} pixels, {} triangles)",
+            self.number,
+            crate::core::text::escape(&scene.name),
+            scene.camera.width,
+            scene.camera.height,
+            scene.triangle_count()
+        );
+        crate::core::memory::check(&what, &run)
+    }
+
     /// The variant `settings` asks for, checked against [`Self::variants`]
     /// (the default when it asks for none).
     pub fn variant(&self, settings: &Settings) -> Result<usize> {

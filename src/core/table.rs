@@ -4,7 +4,10 @@
 
 use std::borrow::Cow;
 
-use crate::core::text::{shorten, NAME_CHARS};
+use crate::core::text::shorten;
+
+/// The most characters a table cell shows.
+pub const CELL_CHARS: usize = 1024;
 
 /// A titled table of text cells.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -27,12 +30,12 @@ impl Table {
         }
     }
 
-    /// Appends a row. A cell longer than [`NAME_CHARS`] (a name from a
-    /// scene file) is cut to that: a report stays readable and small.
+    /// Appends a row. A cell longer than [`CELL_CHARS`] is cut to that, so
+    /// that a report stays small whatever a file names things.
     pub fn row(&mut self, cells: Vec<String>) {
         let cells = cells
             .into_iter()
-            .map(|c| match shorten(&c, NAME_CHARS) {
+            .map(|c| match shorten(&c, CELL_CHARS) {
                 Cow::Borrowed(_) => c,
                 Cow::Owned(short) => short,
             })

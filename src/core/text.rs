@@ -39,8 +39,8 @@ pub fn escape_keep_newlines(s: &str) -> Cow<'_, str> {
     Cow::Owned(out)
 }
 
-/// Characters of a name a report shows in full; a longer one (a scene or
-/// OBJ file may name an object with megabytes) is cut.
+/// Characters of a name an error message quotes in full; a longer one is
+/// cut ([`shorten`]).
 pub const NAME_CHARS: usize = 96;
 
 /// `s` if it has at most `max` characters; else its first `max - 24` and

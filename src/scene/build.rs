@@ -105,12 +105,27 @@ pub(super) fn build(
         width: c.width,
         height: c.height,
     };
-    camera.check().map_err(|e| {
+    let camera_err = |e: Error| {
         scene_err(
             "[camera]".into(),
             e.to_string().trim_start_matches("camera: ").into(),
         )
-    })?;
+    };
+    for (name, v) in [("eye", camera.eye), ("target", camera.target)] {
+        validate::position(&v.to_array())
+            .map_err(|why| camera_err(Error::Usage(format!("`{name}` {why}"))))?;
+    }
+    // A scene far from its file's origin is built around its camera, and
+    // its camera checked there (at 1e12, f32 cannot tell eye and target
+    // apart; 5 units from the camera it can).
+    let origin = super::place::origin_for(camera.eye, camera.target);
+    CameraDesc {
+        eye: camera.eye - origin,
+        target: camera.target - origin,
+        ..camera
+    }
+    .check()
+    .map_err(camera_err)?;
 
     // Materials: checked, then kept only if an object uses them.
     let mut declared = Vec::new();
@@ -178,7 +193,12 @@ pub(super) fn build(
     let mut triangles = 0usize;
     for (i, o) in file.objects.iter().enumerate() {
         let at = format!("objects[{i}]");
-        let mut mesh = build_object(o, &at, source, read, limits.max_triangles - triangles)?;
+        let mut mesh = build_object(
+            o,
+            (&at, source, origin),
+            read,
+            limits.max_triangles - triangles,
+        )?;
         triangles += mesh.triangles.len();
         mesh.material = use_material(&declared, &mut materials, o.material.as_deref(), &at)
             .map_err(|(a, m)| scene_err(a, m))?;
@@ -232,7 +252,9 @@ pub(super) fn build(
         materials,
         lights: file.lights,
         sdfs,
-    })
+        origin: glam::DVec3::ZERO,
+    }
+    .moved_to(origin))
 }
 
 /// The most SDF shapes and operations (CSG, transforms) a scene may hold:

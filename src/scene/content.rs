@@ -78,6 +78,7 @@ pub fn content_hash(scene: &Scene) -> String {
         materials,
         lights,
         sdfs,
+        origin,
     } = scene;
     let mut h = Fnv1a(Fnv1a::OFFSET);
     h.text("camera");
@@ -141,6 +142,12 @@ pub fn content_hash(scene: &Scene) -> String {
     for s in sdfs {
         h.text(&format!("{:?}", s.sdf));
         h.u64(s.material as u64);
+    }
+    // Only a scene kept around its camera has an origin (the shipped
+    // scenes' hashes stay as they were).
+    if *origin != glam::DVec3::ZERO {
+        h.text("origin");
+        h.f64s(&origin.to_array());
     }
     format!("{:016x}", h.0)
 }

@@ -101,6 +101,11 @@ pub struct Scene {
     /// Signed distance function objects (chapter 4); empty, and nothing
     /// allocated, when the file has no `[[sdfs]]`.
     pub sdfs: Vec<SdfObject>,
+    /// Where this scene's coordinates start, in the file's: every position
+    /// above is relative to it. Zero, except for a scene far from the
+    /// file's origin, which is kept around its camera
+    /// ([`place::origin_for`]).
+    pub origin: glam::DVec3,
 }
 
 /// Limits on what one load may read and build, so that a huge or endless

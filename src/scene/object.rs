@@ -20,10 +20,10 @@ pub(super) fn check_finite(values: &[f64]) -> std::result::Result<(), &'static s
 }
 
 /// One object: its mesh, generated or read, in world space.
+/// Positions are relative to `origin` (computed in f64, rounded once).
 pub(super) fn build_object(
     o: &ObjectSection,
-    at: &str,
-    source: &str,
+    (at, source, origin): (&str, &str, DVec3),
     read: &MeshReader,
     max_triangles: usize,
 ) -> Result<Mesh> {
@@ -121,7 +121,16 @@ pub(super) fn build_object(
             ),
         ));
     }
-    mesh.transform(&object_transform(o, &err)?);
+    let (m, translate) = object_transform(o, &err)?;
+    if origin == DVec3::ZERO {
+        mesh.transform(&m);
+    } else {
+        // The linear part in f32 as always, the move to `origin` in f64.
+        let shift = translate - origin;
+        for p in &mut mesh.positions {
+            *p = (m.transform_vector3(*p).as_dvec3() + shift).as_vec3();
+        }
+    }
     let limit = MAX_COORDINATE as f32;
     let outside = |p: &Vec3| !(p.is_finite() && p.abs().max_element() <= limit);
     if let Some(i) = mesh.positions.iter().position(outside) {
@@ -137,7 +146,11 @@ pub(super) fn build_object(
 }
 
 /// world_from_object = translate · rotate · scale, or the given matrix.
-fn object_transform(o: &ObjectSection, err: &dyn Fn(&str, String) -> Error) -> Result<Mat4> {
+/// The object's transform, and its translation in f64 as written.
+fn object_transform(
+    o: &ObjectSection,
+    err: &dyn Fn(&str, String) -> Error,
+) -> Result<(Mat4, DVec3)> {
     if let Some(rows) = o.matrix {
         if o.scale.is_some() || o.rotate.is_some() || o.translate.is_some() {
             return Err(err(
@@ -153,7 +166,8 @@ fn object_transform(o: &ObjectSection, err: &dyn Fn(&str, String) -> Error) -> R
         if m.determinant().abs() < 1e-12 {
             return Err(err("matrix", "is singular (it flattens the object)".into()));
         }
-        return Ok(m);
+        let translate = DVec3::new(rows[0][3], rows[1][3], rows[2][3]);
+        return Ok((m, translate));
     }
     let scale = match o.scale {
         None => Vec3::ONE,
@@ -183,9 +197,8 @@ fn object_transform(o: &ObjectSection, err: &dyn Fn(&str, String) -> Error) -> R
     };
     let translate = o.translate.unwrap_or([0.0; 3]);
     validate::position(&translate).map_err(|why| err("translate", why))?;
-    Ok(Mat4::from_scale_rotation_translation(
-        scale,
-        rotation,
-        DVec3::from(translate).as_vec3(),
+    Ok((
+        Mat4::from_scale_rotation_translation(scale, rotation, DVec3::from(translate).as_vec3()),
+        DVec3::from(translate),
     ))
 }

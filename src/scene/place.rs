@@ -13,51 +13,115 @@ use crate::scene::Scene;
 
 impl Scene {
     /// This scene with every position `x` moved to `scale · x + offset`
-    /// (computed in f64, then rounded once). Point and spot intensities
-    /// are multiplied by `scale²`, so that the irradiance they deliver at
-    /// the scaled distances, and so the picture, stays the same; areas,
-    /// radiances and directions are unchanged.
+    /// (computed in f64 from the positions as the file gives them, then
+    /// rounded once, relative to the new [`Scene::origin`]). Point and spot
+    /// intensities are multiplied by `scale²`, so that the irradiance they
+    /// deliver at the scaled distances, and so the picture, stays the same;
+    /// areas, radiances and directions are unchanged.
     pub fn placed(mut self, offset: DVec3, scale: f64) -> Scene {
-        let place = |p: DVec3| p * scale + offset;
+        let old = self.origin;
+        let place = |p: DVec3| (p + old) * scale + offset;
+        let eye = place(self.camera.eye);
+        let target = place(self.camera.target);
+        let origin = origin_for(eye, target);
+        let here = |p: DVec3| place(p) - origin;
         for mesh in &mut self.meshes {
             for p in &mut mesh.positions {
-                *p = place(p.as_dvec3()).as_vec3();
+                *p = here(p.as_dvec3()).as_vec3();
             }
         }
-        self.camera.eye = place(self.camera.eye);
-        self.camera.target = place(self.camera.target);
-        let placed = |p: [f64; 3]| place(DVec3::from_array(p)).to_array();
+        (self.camera.eye, self.camera.target) = (eye - origin, target - origin);
+        let placed = |p: [f64; 3]| here(DVec3::from_array(p)).to_array();
         let brighter = |i: [f64; 3]| i.map(|c| c * scale * scale);
         for light in &mut self.lights {
-            match light {
-                LightSection::Point {
-                    position,
-                    intensity,
-                }
-                | LightSection::Spot {
-                    position,
-                    intensity,
-                    ..
-                } => {
-                    *position = placed(*position);
-                    *intensity = brighter(*intensity);
-                }
-                _ => {}
+            if let LightSection::Point {
+                position,
+                intensity,
+            }
+            | LightSection::Spot {
+                position,
+                intensity,
+                ..
+            } = light
+            {
+                *position = placed(*position);
+                *intensity = brighter(*intensity);
             }
         }
+        // An SDF takes positions relative to the old origin: x here is
+        // ((x + origin - offset) / scale) - old there.
+        let shift = offset + old * scale - origin;
         for object in &mut self.sdfs {
             let shape = std::mem::replace(&mut object.sdf, Sdf::Union(Vec::new()));
             object.sdf = Sdf::Translate {
-                offset: offset.as_vec3(),
+                offset: shift.as_vec3(),
                 of: Box::new(Sdf::Scale {
                     factor: scale as f32,
                     of: Box::new(shape),
                 }),
             };
         }
+        self.origin = origin;
+        self
+    }
+
+    /// The camera, lights and SDFs of a scene whose meshes were built
+    /// relative to `origin` ([`origin_for`]) moved there too.
+    pub(super) fn moved_to(mut self, origin: DVec3) -> Scene {
+        if origin == DVec3::ZERO {
+            return self;
+        }
+        self.camera.eye -= origin;
+        self.camera.target -= origin;
+        let moved = |p: [f64; 3]| (DVec3::from_array(p) - origin).to_array();
+        for light in &mut self.lights {
+            if let LightSection::Point { position, .. } | LightSection::Spot { position, .. } =
+                light
+            {
+                *position = moved(*position);
+            }
+        }
+        for object in &mut self.sdfs {
+            let shape = std::mem::replace(&mut object.sdf, Sdf::Union(Vec::new()));
+            object.sdf = match shape {
+                // Folded into the shape's own move (in f64), so that its
+                // distance is computed near the origin too.
+                Sdf::Translate { offset, of } => Sdf::Translate {
+                    offset: (offset.as_dvec3() - origin).as_vec3(),
+                    of,
+                },
+                other => Sdf::Translate {
+                    offset: (-origin).as_vec3(),
+                    of: Box::new(other),
+                },
+            };
+        }
+        self.origin = origin;
         self
     }
 }
+
+/// Where a scene with this camera keeps its origin: the camera itself when
+/// it is farther from the file's origin than [`FAR`] times its viewing
+/// distance (eye to target), else the file's origin. Far from the origin
+/// f32 spaces its numbers coarsely (at 10⁴, a millimetre apart), and every
+/// hit point, offset and shadow ray would carry that error; near the
+/// camera, where the picture is, they are as fine as at the origin. Every
+/// position is computed in f64 and rounded once, relative to this origin,
+/// so the picture does not depend on where the scene sits. The shipped
+/// scenes are near their origin and are left as they are.
+pub fn origin_for(eye: DVec3, target: DVec3) -> DVec3 {
+    let view = (target - eye).length();
+    if eye.length() > FAR * view {
+        eye
+    } else {
+        DVec3::ZERO
+    }
+}
+
+/// A scene whose camera is farther from the origin than this many times
+/// its viewing distance keeps its origin at the camera ([`origin_for`]).
+pub const FAR: f64 = 8.0;
 
 /// Where the chapters' placement cases put a scene (chapter 6's
 /// `stability::placement`, chapter 5's): every offset of

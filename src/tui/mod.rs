@@ -29,6 +29,7 @@ pub mod msg;
 pub mod painter;
 pub mod picture;
 pub mod placement;
+pub mod pool;
 pub mod query;
 pub mod scenes;
 pub mod screen;

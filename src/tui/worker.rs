@@ -3,10 +3,10 @@
 //! [`SNAPSHOT_EVERY`], and always after the first and the last). The UI
 //! thread never waits for it; it only reads the channel.
 //!
-//! Every job carries a generation number. When a newer job arrives the
-//! worker drops the old render (a pass already running finishes first, but
-//! its result is not sent), and the UI ignores any snapshot whose
-//! generation is not its own, so a stale pass never reaches the screen.
+//! Every job carries a generation number and has its own threads. When a
+//! newer job arrives the old render is dropped (a pass already running
+//! finishes at the lowest priority, its result not sent), and the UI ignores
+//! any snapshot whose generation is not its own.
 //!
 //! A progressive stage ([`ChapterInfo::progressive`](crate::core::stage::ChapterInfo::progressive)) renders to a [`Target`]:
 //! until its own noise estimate is below the target's level, or the sample
@@ -21,6 +21,7 @@ use std::sync::Arc;
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
+use super::pool::JobPool;
 use crate::core::stage::{Chapter, Inspection, Render, Settings};
 use crate::scene::Scene;
 
@@ -52,8 +53,7 @@ pub use super::state::RenderState;
 
 pub use crate::core::film::film_mean;
 
-/// Name of the worker thread (the panic hook uses it).
-pub const THREAD_NAME: &str = "raystep-render";
+pub use super::pool::THREAD_NAME;
 
 /// What the worker reports.
 #[derive(Clone, Debug)]
@@ -238,7 +238,7 @@ fn start(job: Job, results: &Sender<Progress>) -> Option<Current> {
         settings.spp = t.spp.max(1);
     }
     let render = catch_unwind(AssertUnwindSafe(|| {
-        crate::core::memory::check(&job.chapter.info(), &job.scene)?;
+        job.chapter.info().check_memory(&job.scene)?;
         job.chapter.start(job.scene.clone(), &settings)
     }));
     match render {
@@ -264,61 +264,11 @@ fn start(job: Job, results: &Sender<Progress>) -> Option<Current> {
     }
 }
 
-/// The threads one job renders on: a rayon pool of its own, so the rows of
-/// a new job never queue behind the rows of the pass it replaced (in one
-/// shared pool they did: a pool's threads finish the tasks they hold
-/// before they take new ones).
-struct JobPool {
-    pool: rayon::ThreadPool,
-    /// The pool's threads, as the kernel knows them (Linux).
-    #[cfg(target_os = "linux")]
-    threads: Arc<std::sync::Mutex<Vec<rustix::thread::Pid>>>,
-}
-
-impl JobPool {
-    /// As many threads as the global pool (`--threads`, else one per core).
-    fn new() -> Option<JobPool> {
-        let builder = rayon::ThreadPoolBuilder::new()
-            .num_threads(rayon::current_num_threads())
-            .thread_name(|i| format!("{THREAD_NAME}-{i}"));
-        #[cfg(target_os = "linux")]
-        {
-            let threads = Arc::new(std::sync::Mutex::new(Vec::new()));
-            let seen = threads.clone();
-            let builder = builder.start_handler(move |_| {
-                if let Ok(mut t) = seen.lock() {
-                    t.push(rustix::thread::gettid());
-                }
-            });
-            builder.build().ok().map(|pool| JobPool { pool, threads })
-        }
-        #[cfg(not(target_os = "linux"))]
-        builder.build().ok().map(|pool| JobPool { pool })
-    }
-
-    /// The job was replaced: its pass goes on until it ends (a pass cannot
-    /// be interrupted), but at the lowest priority (nice 19), so the new
-    /// job has the cores. Elsewhere than on Linux the two share them.
-    fn demote(&self) {
-        #[cfg(target_os = "linux")]
-        if let Ok(threads) = self.threads.lock() {
-            for &tid in threads.iter() {
-                // Lowering a thread's own process's priority needs no
-                // privilege; if it fails the jobs just share the cores.
-                let _ = rustix::process::setpriority_process(Some(tid), 19);
-            }
-        }
-    }
-}
-
-/// The worker thread: each job renders in a thread and a thread pool of
-/// its own ([`render_jobs`], [`JobPool`]), so a new job starts at once
-/// even while the old one is in the middle of a long pass (a huge scene's
-/// first pass can take minutes). The old job is told to stop by closing
-/// its channel, and its pool is demoted to the lowest priority: it notices
-/// after its pass, and what it sends then carries its old generation,
-/// which the UI drops. Commands for the current job are passed on to its
-/// thread.
+/// The worker thread: each job renders in a thread and a pool of its own
+/// ([`render_jobs`], [`JobPool`]), so a new job starts at once even in an
+/// old one's long pass. The old job's channel closes and its pool drops to
+/// the lowest priority; after its pass it stops (what it sent carries its
+/// generation, which the UI drops). Other commands go to the current job.
 fn work(commands: Receiver<Command>, results: Sender<Progress>) {
     type Running = (u64, Sender<Command>, JoinHandle<()>, Arc<JobPool>);
     let mut current: Option<Running> = None;

@@ -628,8 +628,9 @@ fn the_appendix_statements_match_the_benchmarks() {
             let gain = stage / num(&r["stage, readable watertight"]);
             assert!((1.3..1.9).contains(&gain), "{r:?}");
         }
+        // "the stage is ahead in every row"
         let ratio = num(&r["stage / obvhs"]);
-        assert!((0.8..1.25).contains(&ratio), "{r:?}");
+        assert!((1.0..2.0).contains(&ratio), "{r:?}");
         if r["readable BVH"] != "-" {
             let share = num(&r["readable BVH"]) / stage;
             assert!((0.45..0.8).contains(&share), "{r:?}");
@@ -638,7 +639,7 @@ fn the_appendix_statements_match_the_benchmarks() {
             .split(" / ")
             .map(seconds)
             .collect();
-        assert!(builds[2] < builds[1], "{r:?}");
+        assert!(builds[2] < builds[1] && builds[2] < builds[0], "{r:?}");
     }
     says(
         "making-it-fast.md",
@@ -646,7 +647,7 @@ fn the_appendix_statements_match_the_benchmarks() {
     );
     says(
         "making-it-fast.md",
-        "the ratio stays between about 0.8 and 1.25",
+        "the stage is ahead in every row",
     );
     says(
         "making-it-fast.md",

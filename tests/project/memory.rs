@@ -8,7 +8,7 @@
 use std::path::Path;
 use std::process::{Command, Output};
 
-use raystep::core::memory::{estimate, BASE_BYTES};
+use raystep::core::memory::{Run, BASE_BYTES};
 use raystep::scene::Scene;
 
 use crate::common;
@@ -97,7 +97,13 @@ fn each_chapters_estimate_is_enough_for_its_run() {
     (scene.camera.width, scene.camera.height) = (1024, 1024);
     for (k, chapter) in raystep::chapters::all().into_iter().enumerate() {
         let info = chapter.info();
-        let need = estimate(&info, &scene);
+        let need = Run {
+            pixels: 1024 * 1024,
+            triangles: scene.triangle_count() as u64,
+            per_pixel: info.bytes_per_pixel,
+            per_triangle: info.bytes_per_triangle,
+        }
+        .estimate();
         assert!(need > BASE_BYTES);
         let kib = (need + (192 << 20)) >> 10;
         let args = ["--width", "1024", "--height", "1024", "--spp", "1"];

@@ -21,6 +21,7 @@ mod mutants;
 mod non_square;
 mod obj_quirks;
 mod outputs;
+mod placement;
 mod reports;
 mod sample_limit;
 mod scene_docs;

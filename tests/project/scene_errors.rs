@@ -383,13 +383,27 @@ fn short_directions_and_f32_equal_cameras_are_named_for_what_they_are() {
         &[],
     );
     assert_mentions(&m, &["`eye` and `target` must differ"]);
+    // Apart in f64, not in f32 (the difference underflows).
     let m = load_error(
         "f32-eye",
-        &camera("[0, 0, 1]", "[0, 0, 1.00000001]", "[0, 1, 0]"),
+        &camera("[0, 0, 0]", "[0, 0, 1e-40]", "[0, 1, 0]"),
         &[],
     );
     assert_mentions(&m, &["too close to tell apart in f32"]);
     assert!(!m.contains("must differ"), "{m}");
+    // 1 and 1.00000001 are one number in f32, but the camera is then far
+    // from the origin for its viewing distance: the scene is kept around
+    // it, where the two are 1e-8 apart, and loads.
+    let dir = common::temp_dir("f64-eye");
+    common::write_files(
+        &dir,
+        &[(
+            "scene.toml",
+            &camera("[0, 0, 1]", "[0, 0, 1.00000001]", "[0, 1, 0]"),
+        )],
+    );
+    let scene = Scene::load(&dir.join("scene.toml")).unwrap();
+    assert_eq!(scene.origin, glam::DVec3::Z);
     let m = load_error(
         "parallel-up",
         &camera("[0, 0, 1]", "[0, 0, 0]", "[0, 0, 2]"),

@@ -1,6 +1,7 @@
 //! The tests of single library files, one file here per file in `src/`
 //! (they live outside the library so that `cargo test` compiles it once).
 
+mod bounds;
 mod distance;
 mod hit;
 mod normal;
