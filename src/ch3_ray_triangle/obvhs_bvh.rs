@@ -159,17 +159,7 @@ impl Bvh {
     /// How many levels the binary tree has below its root (0 for a root
     /// that is a leaf).
     pub fn depth(&self) -> usize {
-        let mut deepest = 0;
-        let mut stack = vec![(0usize, 0usize)];
-        while let Some((n, d)) = stack.pop() {
-            deepest = deepest.max(d);
-            let node = &self.bvh.nodes[n];
-            if node.prim_count == 0 {
-                let c = node.first_index as usize;
-                stack.extend([(c, d + 1), (c + 1, d + 1)]);
-            }
-        }
-        deepest
+        crate::ch3_ray_triangle::bvh_robust::depth(&self.bvh)
     }
 
     /// How many triangles it holds.

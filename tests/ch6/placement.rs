@@ -99,7 +99,7 @@ fn the_moved_or_scaled_cornell_box_renders_the_same_in_chapter_5() {
 }
 
 /// A placement row says its worst deviation (`what`) and names the two
-/// placements past f32's reach. (Whether it passed is judged by each
+/// placements past the fixed offset near the origin. (Whether it passed is judged by each
 /// caller on the number itself, not on the row's `ok`.)
 fn says_its_worst_and_where_f32_runs_out(case: &raystep::core::report::StabilityCase, what: &str) {
     assert!(case.measured.contains(what), "{}", case.measured);

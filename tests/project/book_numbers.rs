@@ -633,7 +633,7 @@ fn the_appendix_statements_match_the_benchmarks() {
         assert!((1.0..2.0).contains(&ratio), "{r:?}");
         if r["readable BVH"] != "-" {
             let share = num(&r["readable BVH"]) / stage;
-            assert!((0.45..0.8).contains(&share), "{r:?}");
+            assert!((0.35..0.65).contains(&share), "{r:?}");
         }
         let builds: Vec<f64> = r["build (stage / obvhs / readable)"]
             .split(" / ")
@@ -645,13 +645,10 @@ fn the_appendix_statements_match_the_benchmarks() {
         "making-it-fast.md",
         "the stage is about one and a half times as fast",
     );
+    says("making-it-fast.md", "the stage is ahead in every row");
     says(
         "making-it-fast.md",
-        "the stage is ahead in every row",
-    );
-    says(
-        "making-it-fast.md",
-        "traces at about half to three quarters of the stage's speed",
+        "traces at about two fifths to three fifths of the stage's speed",
     );
 
     // ch6 --bench.
@@ -729,8 +726,9 @@ fn the_appendix_statements_match_the_benchmarks() {
         "The four-wide tree answers more queries per second than the binary tree",
     );
     for q in &queries {
+        // "somewhat more ... not twice as many"
         let gain = num(&q["8-wide (fast)"]) / num(&q["4-wide (readable)"]);
-        assert!((1.0..1.5).contains(&gain), "{q:?}");
+        assert!((1.0..2.0).contains(&gain), "{q:?}");
     }
     says(
         "making-it-fast.md",
