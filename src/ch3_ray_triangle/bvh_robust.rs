@@ -101,7 +101,7 @@ pub const REINSERT_COST: f64 = 4.0;
 /// node's area over the root's, times its primitives for a leaf.
 pub fn sah_cost(t: &Bvh2) -> f64 {
     let root = half_area(&t.nodes[0].aabb);
-    if !(root > 0.0) {
+    if root.is_nan() || root <= 0.0 {
         return 0.0;
     }
     t.nodes
