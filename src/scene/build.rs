@@ -253,8 +253,10 @@ pub(super) fn build(
         lights: file.lights,
         sdfs,
         origin: glam::DVec3::ZERO,
+        unit: 1.0,
     }
-    .moved_to(origin))
+    .moved_to(origin)
+    .normalized())
 }
 
 /// The most SDF shapes and operations (CSG, transforms) a scene may hold:

@@ -79,6 +79,7 @@ pub fn content_hash(scene: &Scene) -> String {
         lights,
         sdfs,
         origin,
+        unit,
     } = scene;
     let mut h = Fnv1a(Fnv1a::OFFSET);
     h.text("camera");
@@ -148,6 +149,10 @@ pub fn content_hash(scene: &Scene) -> String {
     if *origin != glam::DVec3::ZERO {
         h.text("origin");
         h.f64s(&origin.to_array());
+    }
+    if *unit != 1.0 {
+        h.text("unit");
+        h.f64s(&[*unit]);
     }
     format!("{:016x}", h.0)
 }

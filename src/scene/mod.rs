@@ -106,6 +106,10 @@ pub struct Scene {
     /// file's origin, which is kept around its camera
     /// ([`place::origin_for`]).
     pub origin: glam::DVec3,
+    /// How long one unit of this scene is in the file's units: 1, except
+    /// for a tiny scene, which is scaled up by a power of two
+    /// ([`Scene::normalized`]).
+    pub unit: f64,
 }
 
 /// Limits on what one load may read and build, so that a huge or endless

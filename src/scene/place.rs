@@ -17,8 +17,40 @@ impl Scene {
     /// rounded once, relative to the new [`Scene::origin`]). Point and spot
     /// intensities are multiplied by `scale²`, so that the irradiance they
     /// deliver at the scaled distances, and so the picture, stays the same;
-    /// areas, radiances and directions are unchanged.
-    pub fn placed(mut self, offset: DVec3, scale: f64) -> Scene {
+    /// areas, radiances and directions are unchanged. A scene made tiny is
+    /// then scaled up again by a power of two ([`Scene::normalized`]).
+    pub fn placed(self, offset: DVec3, scale: f64) -> Scene {
+        self.transformed(offset, scale).normalized()
+    }
+
+    /// A scene that reaches less than [`TINY`] from its camera (its
+    /// farthest mesh vertex, or its target) scaled up by the power of two
+    /// that brings that reach to between 1 and 2, with [`Scene::unit`]
+    /// saying so. Ray offsets near the origin are fixed lengths (chapter
+    /// 3's `offset_origin` moves a point within 1/32 of it by 1/65536):
+    /// the size of the whole Cornell box scaled by 10⁻⁵. A power of two is
+    /// exact in floating point, so the picture is the one of the scene at
+    /// its own size, as it should be.
+    pub fn normalized(self) -> Scene {
+        let eye = self.camera.eye;
+        let mut reach = (self.camera.target - eye).length();
+        for m in &self.meshes {
+            for p in &m.positions {
+                reach = reach.max((p.as_dvec3() - eye).length());
+            }
+        }
+        if !(reach > 0.0 && reach < TINY) {
+            return self;
+        }
+        let k = (1.0 / reach).log2().floor() as i32;
+        let scale = 2f64.powi(k);
+        let unit = self.unit / scale;
+        let mut scene = self.transformed(DVec3::ZERO, scale);
+        scene.unit = unit;
+        scene
+    }
+
+    fn transformed(mut self, offset: DVec3, scale: f64) -> Scene {
         let old = self.origin;
         let place = |p: DVec3| (p + old) * scale + offset;
         let eye = place(self.camera.eye);
@@ -119,6 +151,10 @@ pub fn origin_for(eye: DVec3, target: DVec3) -> DVec3 {
     }
 }
 
+/// A scene that reaches less than this from its camera is scaled up
+/// ([`Scene::normalized`]).
+pub const TINY: f64 = 1.0 / 16.0;
+
 /// A scene whose camera is farther from the origin than this many times
 /// its viewing distance keeps its origin at the camera ([`origin_for`]).
 pub const FAR: f64 = 8.0;
@@ -143,8 +179,5 @@ pub const PLACEMENTS: [(&str, [f64; 3], f64); 10] = [
     ("x1e-5", [0.0; 3], 1e-5),
 ];
 
-/// How many of [`PLACEMENTS`] are required to match. The rest, the box
-/// scaled by 1e-5, is past the reach of the fixed offset near the origin
-/// (chapter 3's `offset_origin` moves points with |x| < 1/32 by 1/65536,
-/// the size of the whole box there).
-pub const PLACEMENTS_REQUIRED: usize = 9;
+/// How many of [`PLACEMENTS`] are required to match: all.
+pub const PLACEMENTS_REQUIRED: usize = 10;

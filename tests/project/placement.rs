@@ -1,6 +1,6 @@
 //! Issue 48: the picture must not depend on the unit of length or on where
 //! the scene sits. The Cornell box (chapters 3, 5, 6) and the lit SDF scene
-//! (chapters 4, 5, 6) at ×1e-3, ×1e3, +1e4 on every axis, +1e6 and at
+//! (chapters 4, 5, 6) at ×1e-5, ×1e-3, ×1e3, +1e4 on every axis, +1e6 and at
 //! +9.99e11, next to 1e12, the largest coordinate a scene accepts, each compared block by
 //! block (8×8 pixels) with the same scene at the origin.
 //!
@@ -47,6 +47,7 @@ fn blocks(pixels: &[Vec3]) -> Vec<f64> {
 
 fn placements() -> Vec<(&'static str, DVec3, f64)> {
     vec![
+        ("x1e-5", DVec3::ZERO, 1e-5),
         ("x1e-3", DVec3::ZERO, 1e-3),
         ("x1e3", DVec3::ZERO, 1e3),
         ("+1e4", DVec3::splat(1e4), 1.0),
