@@ -44,13 +44,7 @@ pub const SAH_DEPTH: usize = 40;
 /// SAH (a node visit costing `params.collapse_traversal_cost` box tests)
 /// says so. `primitive_indices` index `boxes`.
 pub fn build_tree(boxes: &[Aabb], params: &BvhBuildParams) -> Bvh2 {
-    let mut bvh = top_down(
-        boxes,
-        &BvhBuildParams {
-            max_prims_per_leaf: 1,
-            ..*params
-        },
-    );
+    let mut bvh = top_down(boxes);
     // obvhs' reinsertion moves subtrees to where they cost less (a few
     // percent fewer box tests on ordinary meshes than the greedy top-down
     // tree), but its search prunes by area: where boxes overlap wholesale
@@ -110,9 +104,8 @@ pub fn sah_cost(t: &Bvh2) -> f64 {
         .sum()
 }
 
-fn top_down(boxes: &[Aabb], params: &BvhBuildParams) -> Bvh2 {
-    let max_leaf = (params.max_prims_per_leaf as usize).clamp(1, 255);
-    let traversal = params.collapse_traversal_cost as f64;
+/// The top-down tree, one box per leaf.
+fn top_down(boxes: &[Aabb]) -> Bvh2 {
     // Half of each corner, added: no overflow near f32::MAX.
     let centres: Vec<Vec3A> = boxes.iter().map(|b| b.min * 0.5 + b.max * 0.5).collect();
     let mut order: Vec<u32> = (0..boxes.len() as u32).collect();
@@ -131,13 +124,11 @@ fn top_down(boxes: &[Aabb], params: &BvhBuildParams) -> Bvh2 {
         }
         nodes[at].aabb = bounds;
         let node = Node {
-            traversal,
             boxes,
             centres: &centres,
-            bounds: &bounds,
             spread: &spread,
         };
-        match node.split(items, depth, max_leaf) {
+        match node.split(items, depth) {
             None => {
                 nodes[at].first_index = lo as u32;
                 nodes[at].prim_count = items.len() as u32;
@@ -161,12 +152,11 @@ fn top_down(boxes: &[Aabb], params: &BvhBuildParams) -> Bvh2 {
     }
 }
 
-/// One node being split: its boxes' bounds and its centroids' bounds.
+/// One node being split: the boxes, their centres, and the bounds of the
+/// node's centres.
 struct Node<'a> {
-    traversal: f64,
     boxes: &'a [Aabb],
     centres: &'a [Vec3A],
-    bounds: &'a Aabb,
     spread: &'a Aabb,
 }
 
@@ -180,13 +170,8 @@ fn half_area(b: &Aabb) -> f64 {
 impl Node<'_> {
     /// The exact SAH split of a small node: on each axis with extent, the
     /// boxes sorted by centroid (index breaking ties), and the cheapest cut
-    /// between two of them; `None` when a leaf is cheaper.
-    fn exact_split(
-        &self,
-        items: &mut [u32],
-        extent: &glam::DVec3,
-        max_leaf: usize,
-    ) -> Option<usize> {
+    /// between two of them.
+    fn exact_split(&self, items: &mut [u32], extent: &glam::DVec3) -> Option<usize> {
         let n = items.len();
         let mut best: Option<(f64, usize, usize)> = None;
         let mut right = vec![0.0; n];
@@ -207,19 +192,15 @@ impl Node<'_> {
                 }
             }
         }
-        let (cost, a, k) = best?;
-        let area = half_area(self.bounds);
-        if n <= max_leaf && n as f64 * area <= self.traversal * area + cost {
-            return None;
-        }
+        let (_, a, k) = best?;
         let key = |i: &u32| self.centres[*i as usize][a];
         items.sort_unstable_by(|x, y| key(x).total_cmp(&key(y)).then(x.cmp(y)));
         Some(k)
     }
 
     /// Reorders `items` into a left and a right child and returns how many
-    /// go left, or `None` to make a leaf.
-    fn split(&self, items: &mut [u32], depth: usize, max_leaf: usize) -> Option<usize> {
+    /// go left, or `None` for a leaf (one box).
+    fn split(&self, items: &mut [u32], depth: usize) -> Option<usize> {
         let n = items.len();
         let lo = self.spread.min.as_dvec3();
         let extent = self.spread.max.as_dvec3() - lo;
@@ -228,7 +209,7 @@ impl Node<'_> {
             .unwrap_or(0);
         if extent[axis].is_nan() || extent[axis] <= 0.0 {
             // All centroids at one point: halves by index.
-            return (n > max_leaf).then_some(n / 2);
+            return (n > 1).then_some(n / 2);
         }
         if depth >= SAH_DEPTH {
             let key = |i: &u32| self.centres[*i as usize][axis];
@@ -236,7 +217,7 @@ impl Node<'_> {
             return Some(n / 2);
         }
         if n <= EXACT {
-            return self.exact_split(items, &extent, max_leaf);
+            return self.exact_split(items, &extent);
         }
         let bin = |i: u32, axis: usize| -> usize {
             let c = self.centres[i as usize][axis] as f64;
@@ -276,11 +257,7 @@ impl Node<'_> {
         }
         // The lowest and highest centroid on `axis` fall in its first and
         // last bins, so there is always a plane.
-        let (cost, a, k) = best?;
-        let area = half_area(self.bounds);
-        if n <= max_leaf && n as f64 * area <= self.traversal * area + cost {
-            return None;
-        }
+        let (_, a, k) = best?;
         // Partition in place: bins below k to the front.
         let mut left = 0;
         for j in 0..n {
