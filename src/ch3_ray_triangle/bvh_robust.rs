@@ -110,11 +110,9 @@ fn top_down(boxes: &[Aabb]) -> Bvh2 {
     let centres: Vec<Vec3A> = boxes.iter().map(|b| b.min * 0.5 + b.max * 0.5).collect();
     let mut order: Vec<u32> = (0..boxes.len() as u32).collect();
     let mut nodes = vec![Bvh2Node::default()];
-    let mut deepest = 0;
     // (node, first item, end of items, depth)
     let mut jobs = vec![(0usize, 0usize, boxes.len(), 0usize)];
     while let Some((at, lo, hi, depth)) = jobs.pop() {
-        deepest = deepest.max(depth);
         let items = &mut order[lo..hi];
         let mut bounds = Aabb::empty();
         let mut spread = Aabb::empty();
@@ -147,7 +145,7 @@ fn top_down(boxes: &[Aabb]) -> Bvh2 {
         nodes,
         primitive_indices: order,
         children_are_ordered_after_parents: true,
-        max_depth: (deepest + 2).max(obvhs::bvh2::DEFAULT_MAX_STACK_DEPTH),
+        // `build_tree` sizes the traversal stack once the tree is final.
         ..Bvh2::default()
     }
 }
@@ -160,6 +158,36 @@ struct Node<'a> {
     spread: &'a Aabb,
 }
 
+/// The cheapest cut of a row of groups (their box and how many boxes they
+/// hold) by SAH: its cost and how many groups lie left of it; cuts with
+/// nothing on one side are skipped.
+fn cheapest_cut(groups: &[(Aabb, usize)]) -> Option<(f64, usize)> {
+    let m = groups.len();
+    // Right-hand sums, from the last group down.
+    let mut right = vec![(0.0, 0usize); m];
+    let (mut b, mut count) = (Aabb::empty(), 0);
+    for k in (1..m).rev() {
+        b = b.union(&groups[k].0);
+        count += groups[k].1;
+        right[k] = (half_area(&b), count);
+    }
+    let mut best: Option<(f64, usize)> = None;
+    let (mut b, mut count) = (Aabb::empty(), 0);
+    for k in 1..m {
+        b = b.union(&groups[k - 1].0);
+        count += groups[k - 1].1;
+        let (area_r, count_r) = right[k];
+        if count == 0 || count_r == 0 {
+            continue;
+        }
+        let cost = half_area(&b) * count as f64 + area_r * count_r as f64;
+        if best.is_none_or(|(c, _)| cost < c) {
+            best = Some((cost, k));
+        }
+    }
+    best
+}
+
 /// A box's half surface area, in f64 (no underflow at 1e-30, no overflow
 /// at 1e30).
 fn half_area(b: &Aabb) -> f64 {
@@ -168,33 +196,30 @@ fn half_area(b: &Aabb) -> f64 {
 }
 
 impl Node<'_> {
+    /// Orders boxes by their centre on `axis`, index breaking ties.
+    fn by_centre(&self, axis: usize) -> impl Fn(&u32, &u32) -> std::cmp::Ordering + '_ {
+        move |x, y| {
+            let key = |i: &u32| self.centres[*i as usize][axis];
+            key(x).total_cmp(&key(y)).then(x.cmp(y))
+        }
+    }
+
     /// The exact SAH split of a small node: on each axis with extent, the
-    /// boxes sorted by centroid (index breaking ties), and the cheapest cut
-    /// between two of them.
+    /// boxes sorted by centroid, and the cheapest cut between two of them.
     fn exact_split(&self, items: &mut [u32], extent: &glam::DVec3) -> Option<usize> {
-        let n = items.len();
         let mut best: Option<(f64, usize, usize)> = None;
-        let mut right = vec![0.0; n];
         for a in (0..3).filter(|&a| extent[a] > 0.0) {
-            let key = |i: &u32| self.centres[*i as usize][a];
-            items.sort_unstable_by(|x, y| key(x).total_cmp(&key(y)).then(x.cmp(y)));
-            let mut b = Aabb::empty();
-            for k in (1..n).rev() {
-                b = b.union(&self.boxes[items[k] as usize]);
-                right[k] = half_area(&b);
-            }
-            let mut b = Aabb::empty();
-            for k in 1..n {
-                b = b.union(&self.boxes[items[k - 1] as usize]);
-                let cost = half_area(&b) * k as f64 + right[k] * (n - k) as f64;
+            items.sort_unstable_by(self.by_centre(a));
+            let groups: Vec<(Aabb, usize)> =
+                items.iter().map(|&i| (self.boxes[i as usize], 1)).collect();
+            if let Some((cost, k)) = cheapest_cut(&groups) {
                 if best.is_none_or(|(c, _, _)| cost < c) {
                     best = Some((cost, a, k));
                 }
             }
         }
         let (_, a, k) = best?;
-        let key = |i: &u32| self.centres[*i as usize][a];
-        items.sort_unstable_by(|x, y| key(x).total_cmp(&key(y)).then(x.cmp(y)));
+        items.sort_unstable_by(self.by_centre(a));
         Some(k)
     }
 
@@ -212,8 +237,7 @@ impl Node<'_> {
             return (n > 1).then_some(n / 2);
         }
         if depth >= SAH_DEPTH {
-            let key = |i: &u32| self.centres[*i as usize][axis];
-            items.select_nth_unstable_by(n / 2, |a, b| key(a).total_cmp(&key(b)).then(a.cmp(b)));
+            items.select_nth_unstable_by(n / 2, self.by_centre(axis));
             return Some(n / 2);
         }
         if n <= EXACT {
@@ -233,23 +257,7 @@ impl Node<'_> {
                 bins[k].0 = bins[k].0.union(&self.boxes[i as usize]);
                 bins[k].1 += 1;
             }
-            // Right-hand sums, from the last bin down.
-            let mut right = [(0.0, 0usize); BINS];
-            let (mut b, mut count) = (Aabb::empty(), 0);
-            for k in (1..BINS).rev() {
-                b = b.union(&bins[k].0);
-                count += bins[k].1;
-                right[k] = (half_area(&b), count);
-            }
-            let (mut b, mut count) = (Aabb::empty(), 0);
-            for k in 1..BINS {
-                b = b.union(&bins[k - 1].0);
-                count += bins[k - 1].1;
-                let (area_r, count_r) = right[k];
-                if count == 0 || count_r == 0 {
-                    continue;
-                }
-                let cost = half_area(&b) * count as f64 + area_r * count_r as f64;
+            if let Some((cost, k)) = cheapest_cut(&bins) {
                 if best.is_none_or(|(c, _, _)| cost < c) {
                     best = Some((cost, a, k));
                 }
