@@ -163,7 +163,11 @@ pub fn reach(scene: &Scene) -> f64 {
 /// picture. A power of two is exact in floating point; steps of four
 /// keep every shipped SDF scene at 1.
 pub fn length_unit(scene: &Scene) -> f32 {
-    let reach = reach(scene);
+    unit_of_reach(reach(scene))
+}
+
+/// [`length_unit`] of a scene whose [`reach`] is `reach`.
+pub fn unit_of_reach(reach: f64) -> f32 {
     if !(reach.is_finite() && reach > 0.0) {
         return 1.0;
     }

@@ -13,7 +13,7 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::spawn::{offset_origin, stop_distance};
 use crate::ch3_ray_triangle::triangle::unit_normal;
 use crate::ch3_ray_triangle::wide_bvh::WideBvh;
-use crate::ch4_implicit_surfaces::bounds::length_unit;
+use crate::ch4_implicit_surfaces::bounds::{reach, unit_of_reach};
 use crate::ch4_implicit_surfaces::distance::{scene_distance, SdfObject};
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch4_implicit_surfaces::march::{sphere_trace, March};
@@ -121,9 +121,13 @@ impl World {
             .iter()
             .map(|tri| unit_normal(*tri).unwrap_or(Vec3::Z))
             .collect();
+        // Nothing can be hit beyond twice the reach of the camera to every
+        // mesh vertex and bounded SDF (at least the scaled default).
+        let reach = reach(scene);
+        let unit = unit_of_reach(reach);
         let march = March {
-            max_distance: scene_extent(scene),
-            ..March::default().scaled(length_unit(scene))
+            max_distance: (2.0 * reach as f32).max(100.0 * unit),
+            ..March::default().scaled(unit)
         };
         World {
             triangles,
@@ -299,23 +303,4 @@ impl World {
             _ => None,
         }
     }
-}
-
-/// A distance beyond which nothing can be hit: twice the diagonal of the
-/// box around the camera and every SDF's bounds (at least 100).
-fn scene_extent(scene: &Scene) -> f32 {
-    let eye = scene.camera.eye_f32();
-    let mut far = 0.0f32;
-    for o in &scene.sdfs {
-        let b = o.sdf.bounds();
-        if b.is_finite() {
-            far = far.max((b.min - eye).length()).max((b.max - eye).length());
-        }
-    }
-    for m in &scene.meshes {
-        for p in &m.positions {
-            far = far.max((*p - eye).length());
-        }
-    }
-    (2.0 * far).max(100.0 * length_unit(scene))
 }
