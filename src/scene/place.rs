@@ -160,12 +160,10 @@ pub const TINY: f64 = 1.0 / 16.0;
 pub const FAR: f64 = 8.0;
 
 /// Where the chapters' placement cases put a scene (chapter 6's
-/// `stability::placement`, chapter 5's): every offset of
-/// 1e1 to 1e4 on one axis (y, x, z in turn) and scales 1e-3 to 1e3, which
-/// must render like the box at the origin; then two placements past what
-/// f32 can resolve (1e6 from the origin, where neighbouring values are
-/// 0.06 apart; a box 2e-5 wide, below the fixed offset that spawned rays
-/// use near the origin), reported but not required.
+/// `stability::placement`, chapter 5's): offsets of 1e1 to 1e6 on one axis
+/// (y, x, z in turn) and scales 1e-5 to 1e3. Each must render like the box
+/// at the origin: a far scene is kept around its camera ([`origin_for`]),
+/// a tiny one scaled up ([`Scene::normalized`]).
 pub const PLACEMENTS: [(&str, [f64; 3], f64); 10] = [
     ("+1e1 y", [0.0, 1e1, 0.0], 1.0),
     ("+1e2 x", [1e2, 0.0, 0.0], 1.0),
