@@ -49,6 +49,11 @@ blocks_to_table() {
   ' "$1" > "$2"
 }
 
+# The diagrams (SVG), drawn from the functions that compute each idea, and
+# the wrong pictures (a plausible bug's render beside the right one).
+"$bin/diagrams" --out "$out" > /dev/null
+"$bin/diagrams" --wrong --out "$out" > /dev/null
+
 # Chapter 1: wireframes, depth and points of every shipped scene; the
 # precision study and stiff cases of the tetrahedron (CSV and report).
 for scene in tetrahedron railroad bunny cornell-box; do

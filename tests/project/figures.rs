@@ -8,7 +8,8 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-/// The images (`figures/....png`) the book's pages show.
+/// The images (`figures/....png`) the book's pages show, other than the
+/// wrong pictures and their partners.
 fn images_shown() -> Vec<String> {
     let mut images = Vec::new();
     for entry in std::fs::read_dir(root().join("book/src")).unwrap() {
@@ -20,7 +21,13 @@ fn images_shown() -> Vec<String> {
         for (i, _) in text.match_indices("](figures/") {
             let rest = &text[i + "](figures/".len()..];
             let end = rest.find(')').unwrap();
-            if rest[..end].ends_with(".png") {
+            // Wrong pictures and their partners come from `diagrams`
+            // (checked below), not from a chapter run.
+            let name = &rest[..end];
+            if name.ends_with(".png")
+                && !name.ends_with("-wrong.png")
+                && !name.ends_with("-right.png")
+            {
                 images.push(rest[..end].to_string());
             }
         }
@@ -158,4 +165,130 @@ fn the_script_parser_sees_loops_subfolders_and_reports() {
     assert!(!makes(&runs[0], "ch2-a.png"));
     assert!(!makes(&runs[3], "ch2-checker-floor.png"));
     assert!(makes(&runs[4], "ch2-checker-floor-affine.png"));
+}
+
+/// The `figures/…` files of one kind (`.svg`, `-wrong.png`) the book shows.
+fn shown_ending(ending: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(root().join("book/src")).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "md") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        for (i, _) in text.match_indices("](figures/") {
+            let rest = &text[i + "](figures/".len()..];
+            let end = rest.find(')').unwrap();
+            if rest[..end].ends_with(ending) {
+                out.push(rest[..end].to_string());
+            }
+        }
+    }
+    out.sort();
+    out.dedup();
+    out
+}
+
+/// What `diagrams --list` names: the file of each diagram and wrong or
+/// right picture.
+fn diagram_list() -> Vec<String> {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_diagrams"))
+        .arg("--list")
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| l.split(':').next().unwrap().to_string())
+        .collect()
+}
+
+#[test]
+fn the_diagrams_are_what_the_code_draws_now() {
+    let script = std::fs::read_to_string(root().join("book/figures.sh")).unwrap();
+    assert!(
+        script.contains("\"$bin/diagrams\" --out \"$out\""),
+        "book/figures.sh does not draw the diagrams"
+    );
+    let dir = std::env::temp_dir().join(format!("raystep-diagrams-{}", std::process::id()));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_diagrams"))
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let shown = shown_ending(".svg");
+    assert!(
+        shown.len() >= 15,
+        "the book shows {} diagrams, fewer than 15: {shown:?}",
+        shown.len()
+    );
+    for name in &shown {
+        assert!(
+            name.ends_with("-diagram.svg"),
+            "{name}: a diagram's name ends in -diagram.svg"
+        );
+        let drawn = std::fs::read(dir.join(name)).unwrap_or_else(|_| {
+            panic!("the book shows figures/{name}, which diagrams does not draw")
+        });
+        let committed = std::fs::read(root().join("book/src/figures").join(name))
+            .unwrap_or_else(|_| panic!("figures/{name} is not in book/src/figures"));
+        assert!(
+            drawn == committed,
+            "figures/{name} differs from what diagrams draws now: run bash book/figures.sh"
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn every_chapter_shows_a_wrong_picture_beside_the_right_one() {
+    let script = std::fs::read_to_string(root().join("book/figures.sh")).unwrap();
+    assert!(
+        script.contains("\"$bin/diagrams\" --wrong --out \"$out\""),
+        "book/figures.sh does not render the wrong pictures"
+    );
+    let listed = diagram_list();
+    let wrong = shown_ending("-wrong.png");
+    for n in 1..=6 {
+        assert!(
+            wrong.iter().any(|w| w.starts_with(&format!("ch{n}-"))),
+            "chapter {n} shows no wrong picture: {wrong:?}"
+        );
+    }
+    let pages: Vec<String> = std::fs::read_dir(root().join("book/src"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "md"))
+        .map(|p| std::fs::read_to_string(p).unwrap())
+        .collect();
+    for name in &wrong {
+        let right = name.replace("-wrong.png", "-right.png");
+        for file in [name, &right] {
+            assert!(
+                listed.contains(file),
+                "diagrams --wrong does not render {file}"
+            );
+            assert!(
+                root().join("book/src/figures").join(file).is_file(),
+                "figures/{file} does not exist"
+            );
+        }
+        assert!(
+            pages
+                .iter()
+                .any(|p| p.contains(&format!("(figures/{name})"))
+                    && p.contains(&format!("(figures/{right})"))),
+            "figures/{name} is not shown on the same page as figures/{right}"
+        );
+    }
 }

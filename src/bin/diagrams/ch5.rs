@@ -1,0 +1,10 @@
+//! Chapter 5's diagrams.
+
+use raystep::core::error::Result;
+
+use crate::Diagram;
+
+/// Chapter 5's diagrams, in the order the chapter shows them.
+pub fn diagrams() -> Result<Vec<Diagram>> {
+    Ok(Vec::new())
+}
