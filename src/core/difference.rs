@@ -9,16 +9,30 @@ impl Film {
     /// The signed difference `self − reference` as false colour on the
     /// fixed scale `scale`: red where `self` is brighter, blue where it is
     /// darker (by the channel that differs most), full at ±`scale`, black
-    /// where they match, magenta where `self` is not a number or infinite.
+    /// where they match, green ([`NONFINITE`]) where `self` is not a
+    /// number or infinite.
     pub fn signed_difference(&self, reference: &Film, scale: f32) -> Film {
-        self.signed_by(reference, scale, |d, _| d)
+        self.difference_values(reference).colour_signed(scale)
     }
 
     /// The signed relative difference (`self − reference`) / reference, as
     /// [`Film::signed_difference`] shows it, full at ±`scale` (e.g. 0.5 for
-    /// ±50%); where the reference is darker than 1% of its mean, the
-    /// difference is divided by that 1% instead.
+    /// ±50%); see [`Film::relative_values`].
     pub fn signed_relative(&self, reference: &Film, scale: f32) -> Film {
+        self.relative_values(reference).colour_signed(scale)
+    }
+
+    /// The signed difference `self − reference` per channel, as numbers:
+    /// what a difference view averages before it colours, and what its
+    /// EXR holds. A non-finite pixel of `self` stays non-finite.
+    pub fn difference_values(&self, reference: &Film) -> Film {
+        self.zip_with(reference, |a, b| a - b)
+    }
+
+    /// The signed relative difference (`self − reference`) / reference per
+    /// channel; where the reference is darker than 1% of its mean, the
+    /// difference is divided by that 1% instead.
+    pub fn relative_values(&self, reference: &Film) -> Film {
         let mean = reference
             .pixels
             .iter()
@@ -26,35 +40,56 @@ impl Film {
             .sum::<f64>()
             / (3.0 * reference.pixels.len().max(1) as f64);
         let floor = (0.01 * mean as f32).max(f32::MIN_POSITIVE);
-        self.signed_by(reference, scale, |d, r| d / r.abs().max(Vec3::splat(floor)))
+        self.zip_with(reference, |a, b| (a - b) / b.abs().max(Vec3::splat(floor)))
     }
 
-    fn signed_by(&self, reference: &Film, scale: f32, f: impl Fn(Vec3, Vec3) -> Vec3) -> Film {
-        let mut out = Film::new(self.width, self.height);
-        for ((o, a), b) in out
-            .pixels
-            .iter_mut()
-            .zip(&self.pixels)
-            .zip(&reference.pixels)
-        {
-            let diff = f(*a - *b, *b);
-            if !diff.is_finite() {
-                *o = Vec3::new(1.0, 0.0, 1.0);
-                continue;
-            }
-            let abs = diff.abs();
-            let most = if abs.x >= abs.y && abs.x >= abs.z {
-                diff.x
-            } else if abs.y >= abs.z {
-                diff.y
-            } else {
-                diff.z
-            };
-            *o = signed_colour(most / scale);
+    fn zip_with(&self, reference: &Film, f: impl Fn(Vec3, Vec3) -> Vec3) -> Film {
+        Film {
+            width: self.width,
+            height: self.height,
+            pixels: self
+                .pixels
+                .iter()
+                .zip(&reference.pixels)
+                .map(|(a, b)| f(*a, *b))
+                .collect(),
         }
-        out
+    }
+
+    /// Signed values (a difference, averaged or not) as false colour on
+    /// the scale `scale`: each pixel by the channel that differs most,
+    /// [`signed_colour`] of it over `scale`; a non-finite pixel is
+    /// [`NONFINITE`], a colour no finite value takes.
+    pub fn colour_signed(&self, scale: f32) -> Film {
+        let pixels = self
+            .pixels
+            .iter()
+            .map(|d| {
+                if !d.is_finite() {
+                    return NONFINITE;
+                }
+                let abs = d.abs();
+                let most = if abs.x >= abs.y && abs.x >= abs.z {
+                    d.x
+                } else if abs.y >= abs.z {
+                    d.y
+                } else {
+                    d.z
+                };
+                signed_colour(most / scale)
+            })
+            .collect();
+        Film {
+            width: self.width,
+            height: self.height,
+            pixels,
+        }
     }
 }
+
+/// The colour of a non-finite pixel in a difference: green, which no
+/// finite difference takes (those are red, blue or black).
+pub const NONFINITE: Vec3 = Vec3::new(0.0, 1.0, 0.0);
 
 /// The colour of a signed difference `s` in units of its scale: red for
 /// positive, blue for negative, full at ±1, black at 0.

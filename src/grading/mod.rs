@@ -232,7 +232,9 @@ pub fn write_failure_images(ex: &Exercise, check: &Check, dir: &Path) -> Result<
     }
     candidate.write_png(&files[0])?;
     reference.write_png(&files[1])?;
-    let legend = format!("student - reference: blue -{DIFF_SCALE}, black 0, red +{DIFF_SCALE}");
+    let legend = format!(
+        "student - reference: blue -{DIFF_SCALE}, black 0, red +{DIFF_SCALE}, green NaN or Inf"
+    );
     write_captioned_strip(
         &[(
             &with_legend(&signed_difference(candidate, reference)),
@@ -250,7 +252,7 @@ pub const DIFF_SCALE: f32 = 0.25;
 
 /// The signed difference of two images on the fixed scale [`DIFF_SCALE`]
 /// ([`Film::signed_difference`]): red where the student's image is
-/// brighter, blue where it is darker, black where they match, magenta
+/// brighter, blue where it is darker, black where they match, green
 /// where the student's value is not a number or infinite.
 pub fn signed_difference(candidate: &Film, reference: &Film) -> Film {
     candidate.signed_difference(reference, DIFF_SCALE)

@@ -336,10 +336,7 @@ impl App {
             (None, None) => None,
         };
         if let Some((student, reference)) = pair {
-            return Some(
-                self.compare
-                    .apply(Cow::Borrowed(student), reference, self.exposure),
-            );
+            return Some(self.compare.apply(Cow::Borrowed(student), reference));
         }
         let snap = self.snapshot.as_ref()?;
         let mut film = Cow::Borrowed(snap.views.get(self.view)?);
@@ -353,15 +350,33 @@ impl App {
             .as_ref()
             .filter(|r| (r.width, r.height) == (film.width, film.height));
         match reference {
-            Some(r) if self.view == 0 => Some(self.compare.apply(film, r, self.exposure)),
+            Some(r) if self.view == 0 => Some(self.compare.apply(film, r)),
             _ => Some(film),
         }
+    }
+
+    /// Whether [`App::displayed_ref`] is a signed difference (the grader's
+    /// images, or the main view beside a reference of its size).
+    pub fn shows_signed(&self) -> bool {
+        let main = self.view == 0
+            && self.snapshot.as_ref().is_some_and(|s| {
+                let size = s.views.first().map(|v| (v.width, v.height));
+                s.reference.as_ref().map(|r| (r.width, r.height)) == size
+            });
+        self.compare.is_difference()
+            && (self.grading.is_some() || self.student_render().is_some() || main)
+    }
+
+    /// The colours of `film`, a part of what the preview shows: see
+    /// [`Compare::paint`].
+    pub fn paint(&self, film: &Film) -> Film {
+        self.compare.paint(film, self.shows_signed(), self.exposure)
     }
 
     /// The exposure the preview applies: none to a false-colour difference
     /// (its colours are final; exposure set its scale).
     pub fn display_exposure(&self) -> i32 {
-        if self.compare.is_difference() && self.shows_compare() {
+        if self.shows_signed() {
             0
         } else {
             self.exposure

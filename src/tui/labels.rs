@@ -365,8 +365,13 @@ pub fn hover_text(app: &App) -> Option<String> {
     let film = app.displayed_ref()?;
     (x < film.width && y < film.height).then(|| {
         let v = film.get(x, y);
+        let what = match app.compare {
+            Compare::Difference if app.shows_signed() => "render − reference ",
+            Compare::Relative if app.shows_signed() => "(render − reference) / reference ",
+            _ => "",
+        };
         format!(
-            "pixel ({x}, {y}): {} (under the mouse; click to inspect)",
+            "pixel ({x}, {y}): {what}{} (under the mouse; click to inspect)",
             crate::core::format::rgb(v)
         )
     })

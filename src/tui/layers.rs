@@ -70,8 +70,9 @@ pub enum Compare {
     Render,
     /// The stage's reference.
     Reference,
-    /// render − reference in false colour on a fixed scale
-    /// ([`DIFFERENCE_SCALE`], red brighter, blue darker).
+    /// render − reference, signed; shown in false colour on a fixed scale
+    /// ([`DIFFERENCE_SCALE`], red brighter, blue darker) after it is
+    /// averaged to the screen's size.
     Difference,
     /// (render − reference) / reference, the same way
     /// ([`RELATIVE_SCALE`]).
@@ -139,20 +140,33 @@ impl Compare {
         }
     }
 
-    /// `film` compared with `reference` as this selection shows it.
+    /// `film` compared with `reference` as this selection shows it: for
+    /// the two differences, the signed values (coloured only when drawn,
+    /// by [`Compare::paint`], so that averaging them to the screen's size
+    /// comes first and noise averages out instead of turning purple).
     pub fn apply<'a>(
         self,
         film: std::borrow::Cow<'a, Film>,
         reference: &'a Film,
-        exposure: i32,
     ) -> std::borrow::Cow<'a, Film> {
         use std::borrow::Cow;
-        let (scale, _) = self.scale(exposure);
         match self {
             Compare::Render => film,
             Compare::Reference => Cow::Borrowed(reference),
-            Compare::Difference => Cow::Owned(film.signed_difference(reference, scale)),
-            Compare::Relative => Cow::Owned(film.signed_relative(reference, scale)),
+            Compare::Difference => Cow::Owned(film.difference_values(reference)),
+            Compare::Relative => Cow::Owned(film.relative_values(reference)),
+        }
+    }
+
+    /// The colours of `film`, a part of what this selection shows
+    /// ([`Compare::apply`], averaged to its size on screen or not): a
+    /// signed difference (`signed`) in false colour on its scale at
+    /// `exposure`, anything else exposed by `exposure` stops.
+    pub fn paint(self, film: &Film, signed: bool, exposure: i32) -> Film {
+        if signed && self.is_difference() {
+            film.colour_signed(self.scale(exposure).0)
+        } else {
+            expose(film, exposure)
         }
     }
 

@@ -21,7 +21,7 @@ use ratatui::style::Color;
 use ratatui::widgets::Block;
 use ratatui::Frame;
 
-use super::app::{expose, App};
+use super::app::App;
 use super::picture::Picture;
 use super::placement::{covered, graphics_font, picture_cells, place};
 use super::zoom::{graphics_pixels, Window};
@@ -110,11 +110,21 @@ pub fn request(app: &App, screen: Rect) -> Option<Request> {
         return None;
     };
     let window = Window::of(app, full.width, full.height);
-    let film = window.crop(&full);
-    let cursor = app.inspect.and_then(|p| window.to_window(p));
-    let exposed = expose(&film, app.display_exposure());
-    let raw = RgbImage::from_raw(film.width, film.height, graphics_pixels(&exposed, cursor))?;
+    let mut film = window.crop(&full);
+    let mut cursor = app.inspect.and_then(|p| window.to_window(p));
     let p = place(inner, film.width, film.height, font);
+    if app.shows_signed() && (p.width < film.width || p.height < film.height) {
+        // A signed difference is averaged to its size on screen before it
+        // is coloured: noise then averages out instead of turning purple.
+        let (w, h) = (
+            p.width.min(film.width).max(1),
+            p.height.min(film.height).max(1),
+        );
+        cursor = cursor.map(|(x, y)| (x * w / film.width, y * h / film.height));
+        film = downsample(&film, w, h);
+    }
+    let painted = app.paint(&film);
+    let raw = RgbImage::from_raw(film.width, film.height, graphics_pixels(&painted, cursor))?;
     let filter = if p.width >= film.width {
         image::imageops::FilterType::Nearest
     } else {
@@ -126,8 +136,9 @@ pub fn request(app: &App, screen: Rect) -> Option<Request> {
 
 /// Draws `full` with the exposure into `area`. With a graphics protocol
 /// (and no overlay) the picture's cells are left blank for the painter;
-/// otherwise half blocks, box-filtered to the cells first and exposed
-/// after, so a redraw touches the full-size film once.
+/// otherwise half blocks, box-filtered to the cells first and exposed (or,
+/// for a signed difference, coloured) after, so a redraw touches the
+/// full-size film once.
 pub fn draw_film(app: &App, frame: &mut Frame, full: &Film, area: Rect) {
     let window = Window::of(app, full.width, full.height);
     let cropped;
@@ -147,10 +158,8 @@ pub fn draw_film(app: &App, frame: &mut Frame, full: &Film, area: Rect) {
     if r.width == 0 {
         return;
     }
-    let small = expose(
-        &downsample(film, r.width as u32, r.height as u32 * 2),
-        app.display_exposure(),
-    );
+    // Averaged to the cells first, coloured or exposed after.
+    let small = app.paint(&downsample(film, r.width as u32, r.height as u32 * 2));
     frame.render_widget(
         Picture {
             film: &small,

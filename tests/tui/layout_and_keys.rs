@@ -228,6 +228,11 @@ fn pixel(app: &App) -> Vec3 {
     app.displayed().expect("a picture").pixels[0]
 }
 
+/// The colour the preview gives the first pixel.
+fn painted(app: &App) -> Vec3 {
+    app.paint(&app.displayed().expect("a picture")).pixels[0]
+}
+
 #[test]
 fn bounce_stepping_shows_exactly_k_and_up_to_k_from_the_layers() {
     let app = rendered(app());
@@ -342,9 +347,12 @@ fn compare_cycles_render_reference_difference() {
     assert_eq!(pixel(&app), reference);
     let app = update(app, Msg::CycleCompare);
     assert_eq!(app.compare, Compare::Difference);
-    // render − reference = (0, 0, −0.125): blue, on the fixed scale 0.25.
+    // render − reference = (0, 0, −0.125): the view holds the signed
+    // number (the readout and the EXR show it), and paints it blue, on
+    // the fixed scale 0.25.
     assert_eq!(render - reference, Vec3::new(0.0, 0.0, -0.125));
-    assert_eq!(pixel(&app), Vec3::new(0.0, 0.0, 0.5));
+    assert_eq!(pixel(&app), Vec3::new(0.0, 0.0, -0.125));
+    assert_eq!(painted(&app), Vec3::new(0.0, 0.0, 0.5));
     let legend = |app: &App| {
         control_lines(app)
             .iter()
@@ -358,14 +366,16 @@ fn compare_cycles_render_reference_difference() {
     );
     // A stop of exposure halves the scale (the colours are not brightened).
     let app = update(app, Msg::ExposureUp);
-    assert_eq!(pixel(&app), Vec3::new(0.0, 0.0, 1.0));
+    assert_eq!(painted(&app), Vec3::new(0.0, 0.0, 1.0));
+    assert_eq!(pixel(&app), Vec3::new(0.0, 0.0, -0.125));
     assert_eq!(app.display_exposure(), 0);
     assert!(legend(&app).contains(&"−0.125 blue · 0 · +0.125 red".to_string()));
     let app = update(app, Msg::ExposureReset);
     // Relative: −0.125 / 0.25 = −50%, full blue on the ±50% scale.
     let app = update(app, Msg::CycleCompare);
     assert_eq!(app.compare, Compare::Relative);
-    assert_eq!(pixel(&app), Vec3::new(0.0, 0.0, 1.0));
+    assert_eq!(pixel(&app), Vec3::new(0.0, 0.0, -0.5));
+    assert_eq!(painted(&app), Vec3::new(0.0, 0.0, 1.0));
     assert!(
         legend(&app).contains(&"−50% blue · 0 · +50% red".to_string()),
         "{:?}",
@@ -890,7 +900,7 @@ fn g_shows_the_graders_newest_failure_student_against_reference() {
         ("relative", red),
     ] {
         assert_eq!(app.compare_name(), name);
-        assert_eq!(pixel(&app), colour, "{name}");
+        assert_eq!(painted(&app), colour, "{name}");
         let lines: Vec<String> = control_lines(&app).iter().map(|l| l.to_string()).collect();
         assert!(lines.contains(&format!("compare: {name}")), "{lines:?}");
         assert!(app.save_stem().ends_with(&format!("ch1-pinhole-{name}")));
@@ -993,7 +1003,7 @@ fn x_shows_the_students_capstone_live_and_follows_the_chapter() {
         ("relative", red),
     ] {
         assert_eq!(app.compare_name(), name);
-        assert_eq!(pixel(&app), colour, "{name}");
+        assert_eq!(painted(&app), colour, "{name}");
         assert_eq!(
             app.save_stem(),
             format!("tui-student-ch6-path_radiance-{name}")
