@@ -15,20 +15,32 @@
 //! | [`svg`] | the SVG writer every diagram uses |
 //! | [`ch1`] | chapter 1's diagrams (projection) |
 //! | [`ch2`] | chapter 2's diagrams (rasterization) |
+//! | [`ch2_top_left`] | chapter 2's top-left rule diagram (a pixel grid) |
 //! | [`ch3`] | chapter 3's diagrams (rays, triangles, boxes) |
+//! | [`ch3_bvh`] | chapter 3's BVH diagram (a real tree's boxes) |
 //! | [`ch4`] | chapter 4's diagrams (sphere tracing) |
 //! | [`ch5`] | chapter 5's diagrams (radiometry, lights, BRDFs) |
 //! | [`ch6`] | chapter 6's diagrams (paths) |
-//! | [`wrong`] | the wrong pictures and their right partners |
+//! | [`contour`] | level sets of a function of the plane (chapter 4's slices) |
+//! | [`wrong`] | the wrong pictures and their right partners (chapters 1 and 2) |
+//! | [`wrong_rays`] | chapters 3 and 4's wrong pictures (a leaking triangle test, an implicit sphere that is not a distance) |
+//! | [`wrong_pair`] | what the wrong pictures' modules share (a pair, the scenes, magnifying) |
+//! | [`wrong_light`] | chapters 5 and 6's wrong pictures (shadow acne, the BRDF without 1/π, roulette without 1/q) |
 
 mod ch1;
 mod ch2;
+mod ch2_top_left;
 mod ch3;
+mod ch3_bvh;
 mod ch4;
 mod ch5;
 mod ch6;
+mod contour;
 mod svg;
 mod wrong;
+mod wrong_light;
+mod wrong_pair;
+mod wrong_rays;
 
 use std::path::PathBuf;
 use std::process::ExitCode;

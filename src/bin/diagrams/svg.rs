@@ -289,3 +289,22 @@ impl Svg {
         )
     }
 }
+
+impl Svg {
+    /// Draws what `draw` draws clipped to the world rectangle `rect` =
+    /// `[x0, x1, y0, y1]` (circles that would spill out of a panel).
+    pub fn clipped(&mut self, rect: [f64; 4], draw: impl FnOnce(&mut Svg)) {
+        let id = format!("clip{}", self.body.matches("<clipPath").count());
+        let (a, b) = (self.map((rect[0], rect[3])), self.map((rect[1], rect[2])));
+        let _ = writeln!(
+            self.body,
+            "<clipPath id=\"{id}\"><rect x=\"{:.2}\" y=\"{:.2}\" width=\"{:.2}\" height=\"{:.2}\"/></clipPath>\n<g clip-path=\"url(#{id})\">",
+            a.0,
+            a.1,
+            b.0 - a.0,
+            b.1 - a.1
+        );
+        draw(self);
+        self.body.push_str("</g>\n");
+    }
+}
