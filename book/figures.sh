@@ -26,6 +26,22 @@ section() {
   fi
 }
 
+# part REPORT FROM UPTO OUT: copies the lines of a report from the first
+# that begins with FROM up to, not including, the next that begins with
+# UPTO (to the end when UPTO is empty), for a listing too long to show
+# whole: a page shows it in parts, each a verbatim run of the report.
+part() {
+  awk -v f="$2" -v u="$3" '
+    !on && index($0, f) == 1 { on = 1; print; next }
+    on && u != "" && index($0, u) == 1 { exit }
+    on { print }
+  ' "$1" > "$4"
+  if [ ! -s "$4" ]; then
+    echo "figures.sh: no part starting with '$2' in $1" >&2
+    exit 1
+  fi
+}
+
 # blocks_to_table IN OUT: a report table printed one block per row (too
 # wide for one line, "  - first: value" then "      column: value" lines)
 # as a Markdown table, for a page to include outside a code block.
@@ -60,6 +76,9 @@ for scene in tetrahedron railroad bunny cornell-box; do
   "$bin/ch1" --scene "scenes/$scene.toml" --out "$out" > /dev/null
 done
 "$bin/ch1" --scene scenes/tetrahedron.toml --report --out "$out" > "$out/ch1-tetrahedron-report.txt"
+section "$out/ch1-tetrahedron-report.txt" "Error against run time" "$out/ch1-error-time.txt"
+part "$out/ch1-tetrahedron-report.txt" "Stiff and extreme cases" "  - case: edge with NaN ends" "$out/ch1-stiff-1.txt"
+part "$out/ch1-tetrahedron-report.txt" "  - case: edge with NaN ends" "  wrote " "$out/ch1-stiff-2.txt"
 
 # Chapter 2: every view of the tetrahedron, the interpenetrating scene and
 # the Cornell box at 16 samples per pixel; the anti-aliasing study, stiff
@@ -90,6 +109,10 @@ blocks_to_table "$out/ch3-bench.txt" "$out/ch3-bench.md"
 "$bin/ch4" --scene scenes/sdf-shapes.toml --report --out "$out" > "$out/ch4-sdf-shapes-report.txt"
 section "$out/ch4-sdf-shapes-report.txt" "Error against run time" "$out/ch4-error-time.txt"
 section "$out/ch4-sdf-shapes-report.txt" "Stiff and extreme cases" "$out/ch4-stiff.txt"
+part "$out/ch4-error-time.txt" "Error against run time" "  sphere tracing, budget" "$out/ch4-error-eps.txt"
+part "$out/ch4-error-time.txt" "  sphere tracing, budget" "" "$out/ch4-error-budget.txt"
+part "$out/ch4-stiff.txt" "Stiff and extreme cases" "  - case: sphere 1e5" "$out/ch4-stiff-1.txt"
+part "$out/ch4-stiff.txt" "  - case: sphere 1e5" "" "$out/ch4-stiff-2.txt"
 "$bin/ch4" --scene scenes/sdf-lipschitz.toml --out "$out" > /dev/null
 "$bin/ch4" --scene scenes/sdf-lipschitz.toml --step-factor 0.1 --max-steps 2048 --max-distance 20 --out "$out/ch4-lipschitz-fixed" > /dev/null
 

@@ -129,6 +129,7 @@ pub fn floor_uv(
 /// floor's plane, and (u, v) there follows from the hit point's position in
 /// the quad. `None` where the ray misses the quad.
 // ANCHOR: raycast_uv
+// ANCHOR: raycast_uv_setup
 pub fn raycast_uv(width: u32, height: u32) -> Vec<Option<DVec2>> {
     let cam = checker_camera(width, height);
     let p = camera_space_floor(&cam);
@@ -141,6 +142,8 @@ pub fn raycast_uv(width: u32, height: u32) -> Vec<Option<DVec2>> {
         let whole = (b - a).cross(c - a).dot(n);
         [area(b, c), area(c, a), area(a, b)].map(|x| x / whole)
     };
+    // ANCHOR_END: raycast_uv_setup
+    // ANCHOR: raycast_uv_pixels
     (0..width * height)
         .map(|i| {
             let (x, y) = ((i % width) as f64 + 0.5, (i / width) as f64 + 0.5);
@@ -162,6 +165,7 @@ pub fn raycast_uv(width: u32, height: u32) -> Vec<Option<DVec2>> {
         })
         .collect()
 }
+// ANCHOR_END: raycast_uv_pixels
 // ANCHOR_END: raycast_uv
 
 /// The checkered floor with perspective-correct and affine interpolation,

@@ -81,6 +81,7 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
 
 /// Runs every check on `mesh`.
 // ANCHOR: check_mesh
+// ANCHOR: check_mesh_count
 pub fn check_mesh(mesh: &Mesh) -> MeshCheck {
     let mut check = MeshCheck::default();
     // Edge → the triangles on it, with the direction each walks it.
@@ -105,7 +106,9 @@ pub fn check_mesh(mesh: &Mesh) -> MeshCheck {
     }
     check.vertices = around.len();
     check.edges = edges.len();
+    // ANCHOR_END: check_mesh_count
 
+    // ANCHOR: check_mesh_edges
     // Every edge: one triangle is a boundary, three or more is non-manifold.
     let mut boundary: Vec<[u32; 2]> = Vec::new();
     for (e, tris) in &edges {
@@ -117,7 +120,9 @@ pub fn check_mesh(mesh: &Mesh) -> MeshCheck {
         }
     }
     check.boundary_edges = boundary.len();
+    // ANCHOR_END: check_mesh_edges
 
+    // ANCHOR: check_mesh_vertices
     // Every vertex: its triangles are one fan when they are all connected
     // through edges at the vertex.
     for (&v, tris) in &around {
@@ -145,6 +150,7 @@ pub fn check_mesh(mesh: &Mesh) -> MeshCheck {
     check.boundary_loops = boundary_loops(&boundary);
     check
 }
+// ANCHOR_END: check_mesh_vertices
 // ANCHOR_END: check_mesh
 
 /// Splits the boundary edges into loops: walk from edge to edge, and each

@@ -212,6 +212,7 @@ fn no_triangles() -> (Vec<ScreenTriangle>, SetupStats) {
 /// Sets up one camera-space triangle: near-plane clip, projection, then
 /// [`setup_raster_polygon`].
 // ANCHOR: setup_camera_triangle
+// ANCHOR: setup_camera_triangle_clip
 pub fn setup_camera_triangle(
     cam: &Camera,
     corners: [ClipVertex; 3],
@@ -238,6 +239,8 @@ pub fn setup_camera_triangle(
     if polygon.len() != 3 || polygon[..] != corners[..] {
         stats.clipped_near = 1;
     }
+    // ANCHOR_END: setup_camera_triangle_clip
+    // ANCHOR: setup_camera_triangle_project
     // Project: x, y in pixels, 1/w; attributes divided by w so they are
     // linear on the screen.
     let raster: Vec<ClipVertex> = polygon
@@ -261,6 +264,7 @@ pub fn setup_camera_triangle(
     );
     stats + s
 }
+// ANCHOR_END: setup_camera_triangle_project
 // ANCHOR_END: setup_camera_triangle
 
 /// Sets up a convex raster-space polygon (x, y, 1/w; attributes/w): guard

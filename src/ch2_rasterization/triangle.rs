@@ -14,6 +14,7 @@ use super::edge::edge_function;
 /// index y·width + x). A sample is drawn when it is nearer (z smaller)
 /// than what `depth` holds; it then stores its depth.
 // ANCHOR: rasterize_triangle
+// ANCHOR: rasterize_triangle_area
 pub fn rasterize_triangle(
     v: [Vec3; 3],
     colors: [Vec3; 3],
@@ -34,6 +35,8 @@ pub fn rasterize_triangle(
         v.swap(1, 2);
         colors.swap(1, 2);
     }
+    // ANCHOR_END: rasterize_triangle_area
+    // ANCHOR: rasterize_triangle_box
     let area = area.abs();
     let [a, b, c] = v.map(|p| p.truncate());
     let edges = [(b, c), (c, a), (a, b)];
@@ -47,6 +50,8 @@ pub fn rasterize_triangle(
     let y1 = ((hi.y - 0.5).floor() + 1.0).clamp(0.0, height as f32) as u32;
     // 1/z is linear on the screen, and so is colour/z.
     let inv_z = Vec3::new(1.0 / v[0].z, 1.0 / v[1].z, 1.0 / v[2].z);
+    // ANCHOR_END: rasterize_triangle_box
+    // ANCHOR: rasterize_triangle_loop
     for y in y0..y1 {
         for x in x0..x1 {
             let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
@@ -68,4 +73,5 @@ pub fn rasterize_triangle(
         }
     }
 }
+// ANCHOR_END: rasterize_triangle_loop
 // ANCHOR_END: rasterize_triangle

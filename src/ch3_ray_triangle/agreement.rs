@@ -31,6 +31,7 @@ const MISS: u32 = u32::MAX;
 /// The triangle seen at each pixel centre by chapter 2's rasterizer and by
 /// chapter 3's ray tracer, compared.
 // ANCHOR: agreement
+// ANCHOR: agreement_ids
 pub fn raster_agreement(scene: &Scene, geometry: &Geometry) -> Result<Agreement> {
     let cam = &Camera::of(scene);
     let (w, h) = (cam.width as usize, cam.height as usize);
@@ -58,6 +59,8 @@ pub fn raster_agreement(scene: &Scene, geometry: &Geometry) -> Result<Agreement>
                 .map_or(MISS, |hit| hit.triangle)
         })
         .collect();
+    // ANCHOR_END: agreement_ids
+    // ANCHOR: agreement_edges
     // An edge pixel sees something else than one of its four neighbours.
     let on_edge = |ids: &[u32], i: usize| {
         let (x, y) = (i % w, i / w);
@@ -76,4 +79,5 @@ pub fn raster_agreement(scene: &Scene, geometry: &Geometry) -> Result<Agreement>
             .count(),
     })
 }
+// ANCHOR_END: agreement_edges
 // ANCHOR_END: agreement

@@ -87,6 +87,7 @@ pub fn leak_test(mesh: &Mesh, rays: u64, seed: u64) -> Vec<LeakCount> {
     }
     let centre = mesh.positions.iter().sum::<Vec3>() / mesh.positions.len().max(1) as f32;
     let tri = |t: u32| mesh.triangles[t as usize].map(|i| mesh.positions[i as usize]);
+    // ANCHOR: leak_fold
     // Seen from `o`, is the surface folded at edge (a, b), i.e. do its two
     // triangles lie on the same side of the plane through o, a and b? Then a
     // ray grazing the edge may rightly miss both: such targets are skipped.
@@ -113,12 +114,14 @@ pub fn leak_test(mesh: &Mesh, rays: u64, seed: u64) -> Vec<LeakCount> {
         let (s0, s1) = (side(third(t[0], e)), side(third(t[1], e)));
         s0 * s1 >= 0.0 || s0.abs() < 1e-5 || s1.abs() < 1e-5
     };
+    // ANCHOR_END: leak_fold
     let mut leaks = [0u64; 3];
     let (mut tested, mut attempt) = (0u64, 0u64);
     while tested < rays && attempt < rays * 8 {
         let r = attempt;
         attempt += 1;
         let rnd = |d: u64| random(seed, r, 0, d);
+        // ANCHOR: leak_aim
         // Start near the centre, jittered so no two rays are alike.
         let jitter = Vec3::new(rnd(0), rnd(1), rnd(2)) - 0.5;
         let origin = centre + jitter * 0.02;
@@ -146,6 +149,8 @@ pub fn leak_test(mesh: &Mesh, rays: u64, seed: u64) -> Vec<LeakCount> {
                 folded(origin, e),
             )
         };
+        // ANCHOR_END: leak_aim
+        // ANCHOR: leak_count
         if fold {
             continue;
         }
@@ -159,6 +164,7 @@ pub fn leak_test(mesh: &Mesh, rays: u64, seed: u64) -> Vec<LeakCount> {
                 .any(|&t| x.intersect(&ray, tri(t), 0.0, f32::INFINITY).is_some());
             leaks[k] += u64::from(!hit);
         }
+        // ANCHOR_END: leak_count
     }
     let rays = tested;
     Intersector::ALL

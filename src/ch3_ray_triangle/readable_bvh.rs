@@ -183,6 +183,7 @@ impl ReadableBvh {
 /// finds a median in linear time), so building takes O(N log N) even when
 /// many centroids coincide (ties are split by count like any others).
 // ANCHOR: subdivide
+// ANCHOR: subdivide_leaf
 fn subdivide(
     nodes: &mut Vec<Node>,
     ids: &mut [u32],
@@ -204,6 +205,8 @@ fn subdivide(
     if ids.len() <= MAX_LEAF {
         return index as u32;
     }
+    // ANCHOR_END: subdivide_leaf
+    // ANCHOR: subdivide_split
     // The axis along which the centroids spread most...
     let spread = ids
         .iter()
@@ -229,6 +232,7 @@ fn subdivide(
     nodes[index].kind = NodeKind::Inner { left, right };
     index as u32
 }
+// ANCHOR_END: subdivide_split
 // ANCHOR_END: subdivide
 
 /// The closest hit along `ray` in (0, t_max) through `bvh`, with the
@@ -239,6 +243,7 @@ fn subdivide(
 /// Once a hit at t is found, every box entered beyond t is skipped, both
 /// when it is tested and when it comes off the stack.
 // ANCHOR: closest_hit
+// ANCHOR: closest_hit_stack
 pub fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
     let Some(root) = bvh.nodes.first() else {
         return None; // no triangles, nothing to hit
@@ -256,6 +261,8 @@ pub fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
         if t_enter > t_best {
             continue;
         }
+        // ANCHOR_END: closest_hit_stack
+        // ANCHOR: closest_hit_nodes
         match bvh.nodes[index as usize].kind {
             NodeKind::Leaf { first, count } => {
                 for &id in &bvh.order[first as usize..(first + count) as usize] {
@@ -286,4 +293,5 @@ pub fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
     }
     best
 }
+// ANCHOR_END: closest_hit_nodes
 // ANCHOR_END: closest_hit

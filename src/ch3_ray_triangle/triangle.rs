@@ -122,6 +122,7 @@ pub fn intersect_plane_inside(ray: &Ray, tri: [Vec3; 3], t_min: f32, t_max: f32)
 /// Route 2: the lecture's 3x3 system [e1, e2, -d] (u, v, t)ᵀ = o - p0 with
 /// e1 = p1 - p0, e2 = p2 - p0, solved by Cramer's rule (Möller–Trumbore).
 // ANCHOR: moller_trumbore
+// ANCHOR: moller_trumbore_u
 pub fn intersect_moller_trumbore(
     ray: &Ray,
     [p0, p1, p2]: [Vec3; 3],
@@ -142,6 +143,8 @@ pub fn intersect_moller_trumbore(
     if !(0.0..=1.0).contains(&u) {
         return None;
     }
+    // ANCHOR_END: moller_trumbore_u
+    // ANCHOR: moller_trumbore_vt
     // v = det[e1, s, -d] / det = d · (s x e1) / det.
     let q = s.cross(e1);
     let v = d.dot(q) * inv_det;
@@ -157,6 +160,7 @@ pub fn intersect_moller_trumbore(
         triangle: 0,
     })
 }
+// ANCHOR_END: moller_trumbore_vt
 // ANCHOR_END: moller_trumbore
 
 /// γ(n) = n ε / (1 - n ε), the bound on the relative error of n f32
@@ -169,6 +173,7 @@ pub(crate) const fn gamma(n: i32) -> f32 {
 /// Route 3: the watertight test of Woop, Benthin and Wald (2013), following
 /// pbrt-v4's `IntersectTriangle`, with its conservative check that t > 0.
 // ANCHOR: watertight
+// ANCHOR: watertight_frame
 pub fn intersect_watertight(ray: &Ray, tri: [Vec3; 3], t_min: f32, t_max: f32) -> Option<Hit> {
     let [p0, p1, p2] = tri;
     // A zero-area triangle has no inside.
@@ -193,6 +198,8 @@ pub fn intersect_watertight(ray: &Ray, tri: [Vec3; 3], t_min: f32, t_max: f32) -
     let (kx, ky) = ((kz + 1) % 3, (kz + 2) % 3);
     let perm = |v: Vec3| Vec3::new(v[kx], v[ky], v[kz]);
     let (d, mut a, mut b, mut c) = (perm(ray.dir), perm(a), perm(b), perm(c));
+    // ANCHOR_END: watertight_frame
+    // ANCHOR: watertight_edges
     // ... and shear so the ray points along +z: x and y now measure the
     // distance from the ray in its own 2D frame.
     let (sx, sy, sz) = (-d.x / d.z, -d.y / d.z, 1.0 / d.z);
@@ -220,6 +227,8 @@ pub fn intersect_watertight(ray: &Ray, tri: [Vec3; 3], t_min: f32, t_max: f32) -
     if det == 0.0 || !det.is_finite() {
         return None; // the ray lies in the triangle's plane
     }
+    // ANCHOR_END: watertight_edges
+    // ANCHOR: watertight_distance
     // The scaled distance, compared with the interval before dividing.
     a.z *= sz;
     b.z *= sz;
@@ -248,6 +257,7 @@ pub fn intersect_watertight(ray: &Ray, tri: [Vec3; 3], t_min: f32, t_max: f32) -
         triangle: 0,
     })
 }
+// ANCHOR_END: watertight_distance
 // ANCHOR_END: watertight
 
 /// pbrt-v4's bound on the rounding error of the watertight test's t

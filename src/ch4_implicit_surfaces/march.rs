@@ -126,6 +126,7 @@ impl Trace {
 
 /// Sphere tracing: step by the distance bound until it is below ε.
 // ANCHOR: sphere_trace
+// ANCHOR: sphere_trace_stop
 pub fn sphere_trace(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March) -> Trace {
     // One evaluation at the origin tells inside from outside.
     let (mut trace, s, f0) = Trace::start(f, ray);
@@ -143,6 +144,8 @@ pub fn sphere_trace(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March) -> Trace {
         if trace.steps >= m.max_steps {
             break; // out of budget
         }
+        // ANCHOR_END: sphere_trace_stop
+        // ANCHOR: sphere_trace_step
         // A ball of radius d around p holds no surface: step d (or back,
         // if the last step crossed it and d is negative).
         let t_before = trace.t;
@@ -162,6 +165,7 @@ pub fn sphere_trace(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March) -> Trace {
     }
     trace
 }
+// ANCHOR_END: sphere_trace_step
 // ANCHOR_END: sphere_trace
 
 /// Over-relaxed sphere tracing (after Keinert et al. 2014): step ω·d, and
@@ -169,6 +173,7 @@ pub fn sphere_trace(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March) -> Trace {
 /// (d_prev + d < step), go back, take the safe step, and continue with
 /// ω = 1.
 // ANCHOR: over_relaxed
+// ANCHOR: over_relaxed_back
 pub fn over_relaxed(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March, omega: f32) -> Trace {
     let (mut trace, s, f0) = Trace::start(f, ray);
     let mut omega = omega.max(1.0);
@@ -189,6 +194,8 @@ pub fn over_relaxed(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March, omega: f32) -
             d_prev = d.abs();
             continue;
         }
+        // ANCHOR_END: over_relaxed_back
+        // ANCHOR: over_relaxed_step
         if d.abs() < m.epsilon_at(p) {
             trace.ending = Ending::Hit;
             break;
@@ -209,6 +216,7 @@ pub fn over_relaxed(f: &dyn Fn(Vec3) -> f32, ray: &Ray, m: &March, omega: f32) -
     }
     trace
 }
+// ANCHOR_END: over_relaxed_step
 // ANCHOR_END: over_relaxed
 
 /// The naive march: constant steps Δ until f changes sign, then the zero

@@ -143,6 +143,7 @@ pub fn error_against_time() -> ErrorTime {
         max_distance: 20.0,
         step_factor: 1.0,
     };
+    // ANCHOR: error_time_series
     let mut runs: Vec<(String, String, March, Method)> = Vec::new();
     for eps in [1e-1, 1e-2, 1e-3, 1e-4, 1e-5] {
         let m = March {
@@ -167,6 +168,8 @@ pub fn error_against_time() -> ErrorTime {
         let v = format!("budget {budget}");
         runs.push(("sphere tracing, budget".into(), v, m, Method::Plain));
     }
+    // ANCHOR_END: error_time_series
+    // ANCHOR: error_time_measure
     for delta in [0.2f32, 0.1, 0.05, 0.025, 0.0125] {
         let m = March {
             max_steps: (base.max_distance / delta) as u32 + 2,
@@ -194,4 +197,5 @@ pub fn error_against_time() -> ErrorTime {
     }
     et
 }
+// ANCHOR_END: error_time_measure
 // ANCHOR_END: error_against_time

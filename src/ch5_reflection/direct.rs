@@ -172,6 +172,7 @@ impl Estimator {
     /// Radiance arriving along `ray`: what it hits emits and reflects, or
     /// the environment if it escapes.
     // ANCHOR: radiance
+    // ANCHOR: radiance_hit
     pub fn radiance(&self, world: &World, ray: &Ray, s: &mut Sampler, c: &mut impl Tally) -> Vec3 {
         self.radiance_at_depth(world, ray, s, c, 0)
     }
@@ -189,6 +190,8 @@ impl Estimator {
             c.note(ShadingEvent::Escaped { sky }); // tell a listener (the inspector)
             return sky;
         };
+        // ANCHOR_END: radiance_hit
+        // ANCHOR: radiance_mirror
         let wo = -ray.dir;
         let bsdf = &world.bsdfs[it.material];
         let mut l = world.emitted(&it, wo);
@@ -212,12 +215,14 @@ impl Estimator {
         }
         l + self.reflected(world, &it, wo, s, c)
     }
+    // ANCHOR_END: radiance_mirror
     // ANCHOR_END: radiance
 
     /// The sum over lights of the reflection equation's integral at `it`
     /// towards `wo` (a non-delta BRDF): one term per light sampled, and one
     /// for a sampled direction.
     // ANCHOR: reflected
+    // ANCHOR: reflected_lights
     pub fn reflected(
         &self,
         world: &World,
@@ -242,6 +247,8 @@ impl Estimator {
                 sum += term;
             }
         }
+        // ANCHOR_END: reflected_lights
+        // ANCHOR: reflected_direction
         if extended && self.strategy.samples_directions() {
             // Sample a direction and see what it finds.
             let u = s.next2();
@@ -252,6 +259,7 @@ impl Estimator {
         }
         sum
     }
+    // ANCHOR_END: reflected_direction
     // ANCHOR_END: reflected
 
     /// One sample of light `i`: f L cos θ / pdf, MIS-weighted against a
@@ -287,6 +295,7 @@ impl Estimator {
     /// One direction from the uniform hemisphere or the BRDF: f L cos / pdf
     /// of what it finds, MIS-weighted against light sampling under MIS.
     // ANCHOR: direction_term
+    // ANCHOR: direction_term_sample
     fn direction_term(
         &self,
         at: &ShadingPoint,
@@ -312,6 +321,8 @@ impl Estimator {
         if cos <= 0.0 {
             return None;
         }
+        // ANCHOR_END: direction_term_sample
+        // ANCHOR: direction_term_weight
         // What does the ray see, and how likely was light sampling to
         // find it? Without occluders it can only escape.
         let (light, le, pdf_light) = self.found(at, wi, c)?;
@@ -324,6 +335,7 @@ impl Estimator {
         c.note(ShadingEvent::found(light, term, weight)); // tell a listener (the inspector)
         term
     }
+    // ANCHOR_END: direction_term_weight
     // ANCHOR_END: direction_term
 
     /// What a ray from `at` along `wi` finds: the light it is (if any), the

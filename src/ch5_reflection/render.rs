@@ -16,6 +16,7 @@ use crate::core::sampling::Sampler;
 /// random number comes from (seed, pixel, sample), so the result does not
 /// depend on the number of threads.
 // ANCHOR: render_pass
+// ANCHOR: render_pass_sample
 pub fn render_pass(
     world: &World,
     cam: &Camera,
@@ -34,6 +35,8 @@ pub fn render_pass(
                     Sampler::new(seed, pixel, sample as u64)
                 });
                 let l = estimator.radiance(world, &ray, &mut s, &mut c);
+                // ANCHOR_END: render_pass_sample
+                // ANCHOR: render_pass_sum
                 if l.is_finite() {
                     *px += l;
                 } else {
@@ -47,4 +50,5 @@ pub fn render_pass(
             a
         })
 }
+// ANCHOR_END: render_pass_sum
 // ANCHOR_END: render_pass

@@ -54,6 +54,7 @@ impl Accumulator {
     /// number of threads: each pixel's samples are added in order by one
     /// thread.
     // ANCHOR: render_pass
+    // ANCHOR: render_pass_setup
     pub fn add_samples(
         &mut self,
         engine: &dyn PathEngine,
@@ -75,6 +76,8 @@ impl Accumulator {
             Some(l) => l.chunks_mut(w).map(Some).collect(),
             None => (0..self.height).map(|_| None).collect(),
         };
+        // ANCHOR_END: render_pass_setup
+        // ANCHOR: render_pass_rows
         let stats = self
             .sum
             .par_chunks_mut(w)
@@ -103,6 +106,7 @@ impl Accumulator {
         self.stats.add(&stats);
         self.samples += count;
     }
+    // ANCHOR_END: render_pass_rows
     // ANCHOR_END: render_pass
 
     /// The mean image.

@@ -113,6 +113,7 @@ impl PathStats {
 /// Traces one path from the camera ray `ray`, adding its contributions to
 /// `layers` (by bounce count, or summed; the pixel value is their sum).
 // ANCHOR: trace_path
+// ANCHOR: trace_path_find
 pub fn trace_path(
     world: &World,
     mut ray: Ray,
@@ -143,7 +144,9 @@ pub fn trace_path(
         let Some(v) = Vertex::at(world, &it, -ray.dir) else {
             break; // a ray exactly in the surface's plane
         };
+        // ANCHOR_END: trace_path_find
 
+        // ANCHOR: trace_path_light
         // 2. Direct light: sample a light and cast a shadow ray.
         let (u_choose, u_light) = (sampler.next(), sampler.next2());
         if path.samples_lights && !v.delta {
@@ -158,7 +161,9 @@ pub fn trace_path(
         };
         path.scatter(&v, k, &step);
         out.layers.note(step.event(&v, path.beta)); // tell a listener (the inspector)
+                                                    // ANCHOR_END: trace_path_light
 
+        // ANCHOR: trace_path_roulette
         // 4. Russian roulette: survive with probability q, then divide by q.
         if k + 1 >= settings.rr_min_bounce {
             let q = path.beta.max_element().min(1.0);
@@ -176,6 +181,7 @@ pub fn trace_path(
         }
     }
 }
+// ANCHOR_END: trace_path_roulette
 // ANCHOR_END: trace_path
 
 /// A path under way: how it is traced, its throughput, and what the
@@ -236,6 +242,7 @@ impl Path {
 /// on it with `u_light`, and cast a shadow ray. `None` when there is no
 /// light or the BSDF does not reflect towards the sample.
 // ANCHOR: direct_light
+// ANCHOR: direct_light_sample
 pub fn direct_light(
     world: &World,
     v: &Vertex,
@@ -264,6 +271,8 @@ pub fn direct_light(
         true => path.beta * f * ls.li * wi.z.abs() * (weight / pdf),
         false => Vec3::ZERO,
     };
+    // ANCHOR_END: direct_light_sample
+    // ANCHOR: direct_light_record
     let (li, cos) = (ls.li, wi.z.abs());
     Some(DirectLight {
         light: i,
@@ -277,6 +286,7 @@ pub fn direct_light(
         contribution,
     })
 }
+// ANCHOR_END: direct_light_record
 // ANCHOR_END: direct_light
 
 /// The environment's radiance along `dir`, where a ray escaped, with its

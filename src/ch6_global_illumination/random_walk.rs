@@ -26,6 +26,7 @@ use crate::core::sampling::Sampler;
 /// differ; a test checks that both converge to the image of the full MIS
 /// loop. The random numbers here are plain independent ones.
 // ANCHOR: random_walk
+// ANCHOR: random_walk_hit
 pub fn random_walk(world: &World, mut ray: Ray, max_bounces: u32, s: &mut Sampler) -> Vec3 {
     let mut l = Vec3::ZERO; // the radiance gathered so far
     let mut beta = Vec3::ONE; // the path's throughput
@@ -44,6 +45,8 @@ pub fn random_walk(world: &World, mut ray: Ray, max_bounces: u32, s: &mut Sample
         let bsdf = &world.bsdfs[it.material];
         let frame = Frame::from_normal(it.n);
         let wo = frame.to_local(-ray.dir);
+        // ANCHOR_END: random_walk_hit
+        // ANCHOR: random_walk_scatter
         let (wi, weight) = if bsdf.is_delta() {
             // A mirror or glass sends light into one direction only, which
             // a uniform direction never finds: take that direction.
@@ -67,4 +70,5 @@ pub fn random_walk(world: &World, mut ray: Ray, max_bounces: u32, s: &mut Sample
         }
     }
 }
+// ANCHOR_END: random_walk_scatter
 // ANCHOR_END: random_walk

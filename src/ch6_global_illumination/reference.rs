@@ -251,6 +251,7 @@ impl RegionTest {
 /// same size in blocks of `block` x `block` pixels; α is the chance that a
 /// correct render fails anywhere.
 // ANCHOR: region_z_test
+// ANCHOR: region_z_test_sum
 pub fn region_z_test(
     mean: &Film,
     var_of_mean: &Film,
@@ -274,6 +275,8 @@ pub fn region_z_test(
     };
     let p = (block * block) as f64;
     let mut worst = (0.0f64, (0, 0, 0));
+    // ANCHOR_END: region_z_test_sum
+    // ANCHOR: region_z_test_worst
     for by in 0..rh {
         for bx in 0..rw {
             let m = sum_block(mean, bx, by) / p;
@@ -298,6 +301,7 @@ pub fn region_z_test(
         threshold: normal_quantile(1.0 - alpha / (2.0 * 3.0 * regions as f64)),
     }
 }
+// ANCHOR_END: region_z_test_worst
 // ANCHOR_END: region_z_test
 
 /// The z-score of a mean against an expected value, from the sample

@@ -304,3 +304,52 @@ fn no_code_line_is_hidden_from_a_listing() {
         "lines hidden from the book's listings: {hidden:#?}"
     );
 }
+
+/// A reader can hold a listing of 30 lines: in the lecture's chapters every
+/// code block, its includes resolved, is at most that long. Longer code is
+/// shown in parts with prose between them; test harness, studies and report
+/// dumps live in the appendix "How raystep checks itself" (checks.md).
+#[test]
+fn no_listing_in_a_chapter_is_longer_than_30_lines() {
+    let mut long = Vec::new();
+    let mut listings = 0;
+    for page in pages() {
+        let name = page.file_name().unwrap().to_string_lossy().to_string();
+        if !(1..=6).any(|n| name.starts_with(&format!("ch{n}-"))) {
+            continue;
+        }
+        let text = std::fs::read_to_string(&page).unwrap();
+        for (_, body, line) in code_blocks(&text) {
+            let includes: Vec<&str> = body
+                .lines()
+                .filter(|l| l.trim_start().starts_with("{{#"))
+                .collect();
+            if includes.is_empty() {
+                continue;
+            }
+            listings += 1;
+            let mut length = body.lines().count() - includes.len();
+            for directive in &includes {
+                match resolve_include(&page, directive) {
+                    Ok(text) => length += text.lines().count(),
+                    Err(e) => panic!("{name}:{line}: {e}"),
+                }
+            }
+            if length > 30 {
+                long.push(format!(
+                    "{name}:{line}: {} is {length} lines",
+                    includes.join(" ")
+                ));
+            }
+        }
+    }
+    assert!(
+        listings >= 30,
+        "the chapters include only {listings} listings"
+    );
+    assert!(
+        long.is_empty(),
+        "listings longer than 30 lines in the chapters:\n{}",
+        long.join("\n")
+    );
+}
