@@ -32,7 +32,7 @@ struct Cli {
     scene: Option<PathBuf>,
     /// Samples per pixel: the budget of the terminal UI's progressive
     /// render (default 1024), the clean chapter 6 render of the headless
-    /// summary (default 64), or every sampling chapter with --report or
+    /// summary (default 32), or every sampling chapter with --report or
     /// --chapter.
     #[arg(long, value_name = "N",
           value_parser = clap::value_parser!(u32).range(1..=raystep::core::run::MAX_SPP as i64))]

@@ -275,7 +275,7 @@ pub fn stability_cases() -> Vec<StabilityCase> {
     let (eps, worst, budget, disagree, n) = far_from_origin();
     case(
         "sphere 1e5 from the origin",
-        "every ray ends; ε grows to 8 f32 spacings there; hits within 2ε where cos θ > 0.5; \
+        "every ray ends; ε grows to 8·f32::EPSILON·|p| there (8 to 16 f32 spacings); hits within 2ε where cos θ > 0.5; \
          hit/miss differs only within 2ε of the silhouette",
         format!(
             "ε {}, largest error {}, {budget} of {n} out of steps, {disagree} disagreements away from the silhouette",

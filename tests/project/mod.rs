@@ -1,6 +1,7 @@
 //! The project as a whole: the book's includes, the source layout, the scene files and their errors, the film and the main binary, the grader.
 
 mod book;
+mod book_links;
 mod book_numbers;
 mod edge_values;
 mod fifo;
