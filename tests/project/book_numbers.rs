@@ -747,7 +747,8 @@ fn the_appendix_statements_match_the_benchmarks() {
     for r in [ind, sobol] {
         assert!(num(&r["RMSE²·s #2"]) < 3e-4, "{r:?}");
     }
-    assert!(paths(ind).max(paths(sobol)) > 3.5e6, "{ind:?} {sobol:?}");
+    // "both its rows are above it, both of the readable engine's below"
+    assert!(paths(ind).min(paths(sobol)) > 3.5e6, "{ind:?} {sobol:?}");
     for s in ["readable independent", "readable sobol"] {
         assert!(paths(get(s)) < 3.5e6, "{s}");
     }
@@ -761,7 +762,7 @@ fn the_appendix_statements_match_the_benchmarks() {
     );
     says(
         "making-it-fast.md",
-        "The speed target (3.5 M paths/s) is reached only by the fast engine",
+        "The speed target (3.5 M paths/s) is reached only by the fast engine: both its rows are above it, both of the readable engine's below.",
     );
     let queries = table(&bench, "ray queries");
     assert_eq!(queries.len(), 2);
