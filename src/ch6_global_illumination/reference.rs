@@ -215,6 +215,15 @@ pub fn scale_factor(width: u32, height: u32, ref_width: u32, ref_height: u32) ->
     (factor >= 1 && height / ref_height == factor).then_some(factor)
 }
 
+impl StoredReference {
+    /// The mean and its standard error (√ of the variance of the mean),
+    /// each pixel repeated `factor` x `factor` times for a larger render.
+    pub fn upsampled(&self, factor: u32) -> (Film, Film) {
+        let stderr = self.var_of_mean.clone().sqrt_clamped();
+        (upsample(&self.mean, factor), upsample(&stderr, factor))
+    }
+}
+
 /// Nearest-neighbour enlargement by an integer factor (for showing a
 /// smaller reference beside a larger render).
 pub fn upsample(film: &Film, factor: u32) -> Film {

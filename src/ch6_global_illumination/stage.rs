@@ -13,8 +13,6 @@
 use std::sync::Arc;
 use std::time::Instant;
 
-use glam::Vec3;
-
 use super::accumulate::{downsample, Accumulator};
 use super::engine::{EngineChoice, PathEngine};
 use super::figures::{layer_figures, spp_figure, strategy_plot};
@@ -22,7 +20,7 @@ use super::inspect::table_lines;
 use super::integrator::{PathSettings, Strategy};
 use super::layers::{LAYER_SLOTS, RENDER_LAYERS};
 use super::path_record::record_path;
-use super::reference::{upsample, StoredReference};
+use super::reference::StoredReference;
 use super::report::{chapter_report, ReportInputs};
 use super::sampler::SamplerKind;
 use crate::ch1_projection::camera::Camera;
@@ -375,20 +373,18 @@ impl Render for PathTracingRender {
     fn snapshot(&self) -> Snapshot {
         let mut image = self.acc.mean();
         image.scrub_nonfinite();
-        let mut stderr = self.acc.variance_of_mean();
-        stderr
-            .pixels
-            .iter_mut()
-            .for_each(|p| *p = p.max(Vec3::ZERO).powf(0.5));
+        let mut stderr = self.acc.variance_of_mean().sqrt_clamped();
         stderr.scrub_nonfinite();
-        let reference = self.reference.as_ref().map(|(r, factor)| match factor {
-            1 => r.mean.clone(),
-            f => upsample(&r.mean, *f),
-        });
+        let (reference, reference_stderr) = self
+            .reference
+            .as_ref()
+            .map(|(r, k)| r.upsampled(*k))
+            .unzip();
         Snapshot {
             views: vec![image, stderr],
             layers: self.layers(),
             reference,
+            reference_stderr,
             error_series: self.errors.clone(),
             pass: self.pass_info(),
         }

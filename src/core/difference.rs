@@ -1,5 +1,6 @@
 //! Differences of two images as false colour on a fixed scale: what the
-//! terminal UI's difference views and the grader's failure images show.
+//! terminal UI's difference views and the grader's failure images show;
+//! and a variance as a standard error.
 
 use glam::Vec3;
 
@@ -99,5 +100,16 @@ pub fn signed_colour(s: f32) -> Vec3 {
         Vec3::new(s, 0.0, 0.0)
     } else {
         Vec3::new(0.0, 0.0, -s)
+    }
+}
+
+impl Film {
+    /// The square root of every channel, negatives taken as 0: a variance
+    /// as a standard error.
+    pub fn sqrt_clamped(mut self) -> Film {
+        self.pixels
+            .iter_mut()
+            .for_each(|p| *p = p.max(Vec3::ZERO).powf(0.5));
+        self
     }
 }

@@ -22,3 +22,4 @@ pub mod style;
 pub mod table;
 pub mod text;
 pub mod warp_test;
+pub mod zview;

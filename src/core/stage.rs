@@ -321,6 +321,10 @@ pub struct Snapshot {
     /// A reference for the main image (analytic, or a stored high-sample
     /// render), the same size as view 0.
     pub reference: Option<Film>,
+    /// The reference's standard error per pixel and channel (a stored
+    /// render's own noise), where the stage knows it: with the render's
+    /// own (a view named "stderr") it makes the z view.
+    pub reference_stderr: Option<Film>,
     /// The error of the main image against the reference as the render
     /// went on: (seconds since the start, error) per pass, oldest first.
     pub error_series: Vec<(f64, f64)>,

@@ -5,7 +5,6 @@
 //! it to learn (from their modification times) whether scene files
 //! changed.
 
-use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::time::Duration;
@@ -318,69 +317,6 @@ impl App {
                 .snapshot
                 .as_ref()
                 .is_some_and(|s| s.reference.is_some())
-    }
-
-    /// What the preview shows, before exposure: the selected view, or for
-    /// the main view the selected bounces, compared as selected.
-    pub fn displayed(&self) -> Option<Film> {
-        self.displayed_ref().map(Cow::into_owned)
-    }
-
-    /// [`App::displayed`], borrowed where no new film has to be computed
-    /// (the common case: a view or the reference as it is), so a redraw
-    /// does not copy a whole film.
-    pub fn displayed_ref(&self) -> Option<Cow<'_, Film>> {
-        let pair = match (&self.grading, &self.student) {
-            (Some(g), _) => Some((&g.student, &g.reference)),
-            (None, Some(s)) => Some((&s.render.as_ref()?.student, &s.render.as_ref()?.reference)),
-            (None, None) => None,
-        };
-        if let Some((student, reference)) = pair {
-            return Some(self.compare.apply(Cow::Borrowed(student), reference));
-        }
-        let snap = self.snapshot.as_ref()?;
-        let mut film = Cow::Borrowed(snap.views.get(self.view)?);
-        if self.view == 0 && self.shows_bounces() {
-            if let (Some(k), Some(layers)) = (self.bounce, &snap.layers) {
-                film = Cow::Owned(combine_layers(layers, k, self.bounce_mode, &film));
-            }
-        }
-        let reference = snap
-            .reference
-            .as_ref()
-            .filter(|r| (r.width, r.height) == (film.width, film.height));
-        match reference {
-            Some(r) if self.view == 0 => Some(self.compare.apply(film, r)),
-            _ => Some(film),
-        }
-    }
-
-    /// Whether [`App::displayed_ref`] is a signed difference (the grader's
-    /// images, or the main view beside a reference of its size).
-    pub fn shows_signed(&self) -> bool {
-        let main = self.view == 0
-            && self.snapshot.as_ref().is_some_and(|s| {
-                let size = s.views.first().map(|v| (v.width, v.height));
-                s.reference.as_ref().map(|r| (r.width, r.height)) == size
-            });
-        self.compare.is_difference()
-            && (self.grading.is_some() || self.student_render().is_some() || main)
-    }
-
-    /// The colours of `film`, a part of what the preview shows: see
-    /// [`Compare::paint`].
-    pub fn paint(&self, film: &Film) -> Film {
-        self.compare.paint(film, self.shows_signed(), self.exposure)
-    }
-
-    /// The exposure the preview applies: none to a false-colour difference
-    /// (its colours are final; exposure set its scale).
-    pub fn display_exposure(&self) -> i32 {
-        if self.shows_signed() {
-            0
-        } else {
-            self.exposure
-        }
     }
 
     /// Starts over: a new generation, no picture yet.

@@ -177,6 +177,14 @@ pub fn preview_title_parts(app: &App) -> Vec<String> {
                 parts.push(format!("estimator {v}"));
             }
         }
+        Compare::Z => {
+            parts.push(match &layer_words {
+                Some(l) => format!("z: (render ({l}) - reference) / standard error"),
+                None => "z: (render - reference) / standard error".into(),
+            });
+            let (_, scale) = compare.scale(app.exposure);
+            parts.push(format!("full colour at ±{scale}"));
+        }
     }
     if main {
         parts.push(app.view_name().to_string());
@@ -368,6 +376,7 @@ pub fn hover_text(app: &App) -> Option<String> {
         let what = match app.compare {
             Compare::Difference if app.shows_signed() => "render − reference ",
             Compare::Relative if app.shows_signed() => "(render − reference) / reference ",
+            Compare::Z if app.shows_signed() => "z = (render − reference) / standard error ",
             _ => "",
         };
         format!(

@@ -5,6 +5,7 @@
 use glam::Vec3;
 
 use crate::core::film::Film;
+use crate::core::zview::Z_MAX;
 
 /// How the bounce control combines layers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -77,6 +78,10 @@ pub enum Compare {
     /// (render − reference) / reference, the same way
     /// ([`RELATIVE_SCALE`]).
     Relative,
+    /// "Noise or wrong?": render − reference over the standard error of
+    /// the two, full colour at ±[`Z_MAX`] (only where both images know
+    /// their noise).
+    Z,
 }
 
 /// The difference at which the difference view's colour is full, at
@@ -96,16 +101,19 @@ impl Compare {
             Compare::Reference => "reference",
             Compare::Difference => "difference",
             Compare::Relative => "relative",
+            Compare::Z => "z",
         }
     }
 
-    /// The next in the cycle render → reference → difference → relative.
-    pub fn next(self) -> Compare {
+    /// The next in the cycle render → reference → difference → relative
+    /// → z (where `z`, the z view can be shown) → render.
+    pub fn next(self, z: bool) -> Compare {
         match self {
             Compare::Render => Compare::Reference,
             Compare::Reference => Compare::Difference,
             Compare::Difference => Compare::Relative,
-            Compare::Relative => Compare::Render,
+            Compare::Relative if z => Compare::Z,
+            Compare::Relative | Compare::Z => Compare::Render,
         }
     }
 
@@ -121,7 +129,7 @@ impl Compare {
     /// Whether the preview shows a false-colour difference (then exposure
     /// sets its scale instead of brightening it).
     pub fn is_difference(self) -> bool {
-        matches!(self, Compare::Difference | Compare::Relative)
+        matches!(self, Compare::Difference | Compare::Relative | Compare::Z)
     }
 
     /// The difference shown in full colour at `exposure` stops, and how
@@ -132,6 +140,10 @@ impl Compare {
             Compare::Relative => {
                 let s = RELATIVE_SCALE * stops;
                 (s, format!("{}%", 100.0 * s))
+            }
+            Compare::Z => {
+                let s = Z_MAX as f32 * stops;
+                (s, format!("{s}σ"))
             }
             _ => {
                 let s = DIFFERENCE_SCALE * stops;
@@ -155,6 +167,9 @@ impl Compare {
             Compare::Reference => Cow::Borrowed(reference),
             Compare::Difference => Cow::Owned(film.difference_values(reference)),
             Compare::Relative => Cow::Owned(film.relative_values(reference)),
+            // Computed by the app, which knows the noise; without it, the
+            // render as it is.
+            Compare::Z => film,
         }
     }
 
@@ -162,9 +177,12 @@ impl Compare {
     /// ([`Compare::apply`], averaged to its size on screen or not): a
     /// signed difference (`signed`) in false colour on its scale at
     /// `exposure`, anything else exposed by `exposure` stops.
-    pub fn paint(self, film: &Film, signed: bool, exposure: i32) -> Film {
+    /// For the z view, `pooled` is how many pixels of the full film each
+    /// pixel of `film` averages: the z of their mean is √pooled times
+    /// their mean z, so the colour's scale shrinks by √pooled.
+    pub fn paint(self, film: &Film, signed: bool, exposure: i32, pooled: f32) -> Film {
         if signed && self.is_difference() {
-            film.colour_signed(self.scale(exposure).0)
+            film.colour_signed(self.scale(exposure).0 / pooled.sqrt())
         } else {
             expose(film, exposure)
         }

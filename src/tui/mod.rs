@@ -17,6 +17,7 @@
 
 pub mod app;
 pub mod bench;
+pub mod compared;
 pub mod gauge;
 pub mod graphics;
 pub mod inspect;

@@ -123,7 +123,8 @@ pub fn request(app: &App, screen: Rect) -> Option<Request> {
         cursor = cursor.map(|(x, y)| (x * w / film.width, y * h / film.height));
         film = downsample(&film, w, h);
     }
-    let painted = app.paint(&film);
+    let pooled = (full.width * full.height) as f32 / (film.width * film.height) as f32;
+    let painted = app.paint_pooled(&film, pooled.max(1.0));
     let raw = RgbImage::from_raw(film.width, film.height, graphics_pixels(&painted, cursor))?;
     let filter = if p.width >= film.width {
         image::imageops::FilterType::Nearest
@@ -159,7 +160,9 @@ pub fn draw_film(app: &App, frame: &mut Frame, full: &Film, area: Rect) {
         return;
     }
     // Averaged to the cells first, coloured or exposed after.
-    let small = app.paint(&downsample(film, r.width as u32, r.height as u32 * 2));
+    let small = downsample(film, r.width as u32, r.height as u32 * 2);
+    let pooled = (film.width * film.height) as f32 / (small.width * small.height) as f32;
+    let small = app.paint_pooled(&small, pooled.max(1.0));
     frame.render_widget(
         Picture {
             film: &small,

@@ -19,6 +19,8 @@ pub struct RenderState {
     pub layers: Option<Vec<Film>>,
     /// The reference ([`Snapshot::reference`](crate::core::stage::Snapshot::reference)).
     pub reference: Option<Film>,
+    /// The reference's standard error ([`Snapshot::reference_stderr`](crate::core::stage::Snapshot::reference_stderr)).
+    pub reference_stderr: Option<Film>,
     /// Error against time ([`Snapshot::error_series`](crate::core::stage::Snapshot::error_series)).
     pub error_series: Vec<(f64, f64)>,
     /// RMSE of view 0 against the reference, when there is one: the last
@@ -62,6 +64,7 @@ impl RenderState {
             layers: snap.layers,
             error_series: snap.error_series,
             reference: snap.reference,
+            reference_stderr: snap.reference_stderr,
             rmse,
             views: snap.views,
             progress: (pass.done, pass.planned),

@@ -106,7 +106,7 @@ fn step(mut app: App, msg: Msg) -> App {
                 app.compare = if flip {
                     app.compare.flipped()
                 } else {
-                    app.compare.next()
+                    app.compare.next(app.z_available())
                 };
             }
         }

@@ -21,7 +21,7 @@ use ratatui::widgets::{
 };
 use ratatui::Frame;
 
-use super::app::{App, Focus};
+use super::app::{App, Compare, Focus};
 use super::gauge::draw_gauge;
 pub use super::gauge::{gauge_state, short_number};
 use super::keys::KEYS;
@@ -203,6 +203,17 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
         lines.push(Line::from(format!("compare: {}", app.compare_name())));
         if app.compare.is_difference() {
             lines.push(difference_legend(app));
+        }
+        let z = app.compare == Compare::Z;
+        if let Some(v) = z.then(|| app.verdict()).flatten() {
+            let colour = if v.within_noise() {
+                Color::Green
+            } else {
+                Color::Red
+            };
+            let [first, second] = v.lines();
+            lines.push(Line::styled(first, fg(app, colour)));
+            lines.push(Line::from(second));
         }
     }
     if let Some(c) = app.current_chapter() {

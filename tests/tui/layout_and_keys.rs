@@ -163,6 +163,7 @@ impl Render for FakeRender {
                 .bounces
                 .then(|| (0..3).map(|k| flat(layer_color(k))).collect()),
             reference: self.bounces.then(|| flat(Vec3::new(0.5, 0.25, 0.25))),
+            reference_stderr: None,
             error_series,
             pass: self.pass_info(),
         }

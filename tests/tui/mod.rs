@@ -14,3 +14,4 @@ mod signals;
 mod sizes_and_keys;
 mod warp;
 mod zoom;
+mod zview;

@@ -11,6 +11,7 @@ mod core_sampling;
 mod core_strip;
 mod core_table;
 mod core_text;
+mod core_zview;
 mod grading_live;
 mod scene_mesh;
 mod scene_obj;

@@ -1,0 +1,185 @@
+//! "Noise or wrong?": a render against its reference in units of their
+//! combined standard error. Per pixel, z = (render − reference) /
+//! √(σ²_render + σ²_reference), what the terminal UI's z view colours; per
+//! block of 8 x 8 pixels, the grader's statistic for chapter 6 (a block
+//! passes within 5 standard errors), what its verdict says in words.
+
+use glam::{DVec3, Vec3};
+
+use crate::core::film::Film;
+
+/// The side of a verdict's blocks, in pixels: the grader's.
+pub const BLOCK: u32 = 8;
+
+/// The |z| a block may reach and still be noise: the grader's.
+pub const Z_MAX: f64 = 5.0;
+
+/// The z a pixel gets where neither image has noise but they differ: a
+/// difference no noise explains, finite so that it is coloured, not
+/// mistaken for a NaN.
+pub const NOISELESS: f32 = 1e30;
+
+/// z per pixel and channel. A pixel's own standard error, from the few
+/// samples of a progressive render, is a poor guess (at 2 samples its
+/// variance has one degree of freedom, and two alike samples claim almost
+/// none), so the render's variance is averaged over the pixel's block of
+/// [`BLOCK`] x [`BLOCK`] pixels, as the verdict pools it. Where both
+/// standard errors are 0, z is 0 for equal values and ±[`NOISELESS`]
+/// otherwise; a non-finite render stays non-finite. All four films have
+/// the render's size.
+pub fn z_film(
+    render: &Film,
+    render_stderr: &Film,
+    reference: &Film,
+    reference_stderr: &Film,
+) -> Film {
+    let (w, h) = (render.width, render.height);
+    let block_var = |bx: u32, by: u32| {
+        let (mut v, mut n) = (Vec3::ZERO, 0.0);
+        for y in by..(by + BLOCK).min(h) {
+            for x in bx..(bx + BLOCK).min(w) {
+                let s = render_stderr.get(x, y);
+                v += s * s;
+                n += 1.0;
+            }
+        }
+        v / n
+    };
+    let mut out = Film::new(w, h);
+    for by in (0..h).step_by(BLOCK as usize) {
+        for bx in (0..w).step_by(BLOCK as usize) {
+            let var = block_var(bx, by);
+            for y in by..(by + BLOCK).min(h) {
+                for x in bx..(bx + BLOCK).min(w) {
+                    let d = render.get(x, y) - reference.get(x, y);
+                    let sb = reference_stderr.get(x, y);
+                    let s = (var + sb * sb).powf(0.5);
+                    *out.get_mut(x, y) = Vec3::from_array(std::array::from_fn(|c| {
+                        if s[c] > 0.0 || !d[c].is_finite() {
+                            d[c] / s[c]
+                        } else if d[c] == 0.0 {
+                            0.0
+                        } else {
+                            NOISELESS.copysign(d[c])
+                        }
+                    }));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The verdict on a whole image: its worst block.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Verdict {
+    /// Blocks compared.
+    pub blocks: usize,
+    /// The largest |z| over blocks and channels (infinite for a NaN).
+    pub worst_z: f64,
+    /// The worst block's top-left pixel.
+    pub at: (u32, u32),
+    /// The worst block's mean, over its pixels and the three channels: the
+    /// render's and the reference's.
+    pub means: (f64, f64),
+}
+
+/// Compares `render` with `reference` (each with its standard error per
+/// pixel and channel) in blocks of [`BLOCK`] pixels: in each block the two
+/// means per channel, and their difference over the standard error of the
+/// difference of the means, √(Σ σ²_render + Σ σ²_reference) / n.
+pub fn verdict(
+    render: &Film,
+    render_stderr: &Film,
+    reference: &Film,
+    reference_stderr: &Film,
+) -> Verdict {
+    let (w, h) = (render.width, render.height);
+    let mut v = Verdict {
+        blocks: 0,
+        worst_z: 0.0,
+        at: (0, 0),
+        means: (0.0, 0.0),
+    };
+    for by in (0..h).step_by(BLOCK as usize) {
+        for bx in (0..w).step_by(BLOCK as usize) {
+            let (mut a, mut b, mut var, mut n) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO, 0.0);
+            for y in by..(by + BLOCK).min(h) {
+                for x in bx..(bx + BLOCK).min(w) {
+                    a += render.get(x, y).as_dvec3();
+                    b += reference.get(x, y).as_dvec3();
+                    let (sa, sb) = (
+                        render_stderr.get(x, y).as_dvec3(),
+                        reference_stderr.get(x, y).as_dvec3(),
+                    );
+                    var += sa * sa + sb * sb;
+                    n += 1.0;
+                }
+            }
+            let (a, b) = (a / n, b / n);
+            let sd = var.powf(0.5) / n;
+            let z = DVec3::from_array(std::array::from_fn(|c| {
+                let d = (a[c] - b[c]).abs();
+                if d.is_nan() {
+                    f64::INFINITY
+                } else if sd[c] > 0.0 {
+                    d / sd[c]
+                } else if d == 0.0 {
+                    0.0
+                } else {
+                    f64::from(NOISELESS)
+                }
+            }))
+            .max_element();
+            v.blocks += 1;
+            if z > v.worst_z || v.blocks == 1 {
+                v.worst_z = z;
+                v.at = (bx, by);
+                v.means = (a.element_sum() / 3.0, b.element_sum() / 3.0);
+            }
+        }
+    }
+    v
+}
+
+impl Verdict {
+    /// Whether every block is within [`Z_MAX`].
+    pub fn within_noise(&self) -> bool {
+        self.worst_z <= Z_MAX
+    }
+
+    /// The verdict in two short lines, for a narrow panel: "within noise"
+    /// or "biased: 12.3% brighter", then where and by how many standard
+    /// errors.
+    pub fn lines(&self) -> [String; 2] {
+        let (x, y) = self.at;
+        let (a, b) = self.means;
+        let z = if self.worst_z >= f64::from(NOISELESS) {
+            "no noise".to_string()
+        } else {
+            format!("{:.1}", self.worst_z)
+        };
+        if self.within_noise() {
+            return [
+                "verdict: within noise".into(),
+                format!("max |z| {z} (limit {Z_MAX})"),
+            ];
+        }
+        if !self.worst_z.is_finite() || !a.is_finite() {
+            return [
+                "verdict: wrong, not a number".into(),
+                format!("in the block at ({x}, {y})"),
+            ];
+        }
+        let side = if a >= b { "brighter" } else { "darker" };
+        let by = if b != 0.0 {
+            format!("{:.1}% {side}", 100.0 * (a - b).abs() / b.abs())
+        } else {
+            side.to_string()
+        };
+        [
+            format!("verdict: biased, {by}"),
+            format!("at ({x}, {y}): |z| {z} (limit {Z_MAX})"),
+        ]
+    }
+}

@@ -1,0 +1,152 @@
+//! What the preview shows of a render beside its reference: the film
+//! (the render, the reference, their signed difference or relative
+//! difference, or the z view), its colours, and the z view's verdict on
+//! "noise or wrong?".
+//!
+//! A difference is computed as signed numbers and coloured only when
+//! drawn ([`App::paint_pooled`]), after it was averaged to its size on
+//! screen: noise that averages out then shows black. The z view divides
+//! the difference by the standard error of the two images
+//! ([`crate::core::zview`]); a displayed pixel that averages k pixels of
+//! it is shown as the z of their mean, √k times their mean z (exact
+//! where their noise is alike).
+
+use std::borrow::Cow;
+
+use super::app::{combine_layers, App, Compare};
+use crate::core::film::Film;
+use crate::core::zview::{verdict, z_film, Verdict};
+
+impl App {
+    /// What the preview shows, before exposure: the selected view, or for
+    /// the main view the selected bounces, compared as selected.
+    pub fn displayed(&self) -> Option<Film> {
+        self.displayed_ref().map(Cow::into_owned)
+    }
+
+    /// [`App::displayed`], borrowed where no new film has to be computed
+    /// (the common case: a view or the reference as it is), so a redraw
+    /// does not copy a whole film.
+    pub fn displayed_ref(&self) -> Option<Cow<'_, Film>> {
+        let pair = match (&self.grading, &self.student) {
+            (Some(g), _) => Some((&g.student, &g.reference)),
+            (None, Some(s)) => Some((&s.render.as_ref()?.student, &s.render.as_ref()?.reference)),
+            (None, None) => None,
+        };
+        if let Some((student, reference)) = pair {
+            return Some(self.compare.apply(Cow::Borrowed(student), reference));
+        }
+        let film = self.main_film()?;
+        if self.compare == Compare::Z {
+            if let Some((image, stderr, reference, reference_stderr)) = self.z_inputs() {
+                return Some(Cow::Owned(z_film(
+                    &image,
+                    stderr,
+                    reference,
+                    reference_stderr,
+                )));
+            }
+        }
+        let snap = self.snapshot.as_ref()?;
+        let reference = snap
+            .reference
+            .as_ref()
+            .filter(|r| (r.width, r.height) == (film.width, film.height));
+        match reference {
+            Some(r) if self.view == 0 => Some(self.compare.apply(film, r)),
+            _ => Some(film),
+        }
+    }
+
+    /// The selected view, or for the main view the selected bounces.
+    fn main_film(&self) -> Option<Cow<'_, Film>> {
+        let snap = self.snapshot.as_ref()?;
+        let mut film = Cow::Borrowed(snap.views.get(self.view)?);
+        if self.view == 0 && self.shows_bounces() {
+            if let (Some(k), Some(layers)) = (self.bounce, &snap.layers) {
+                film = Cow::Owned(combine_layers(layers, k, self.bounce_mode, &film));
+            }
+        }
+        Some(film)
+    }
+
+    /// What the z view needs, when the render has all of it: the main
+    /// image (the selected bounces), its standard error (the view named
+    /// "stderr"), the reference and the reference's standard error, all
+    /// of one size.
+    fn z_inputs(&self) -> Option<(Cow<'_, Film>, &Film, &Film, &Film)> {
+        if self.view != 0 || self.grading.is_some() || self.student_render().is_some() {
+            return None;
+        }
+        let snap = self.snapshot.as_ref()?;
+        let info = self.current_chapter()?.info();
+        let stderr = snap
+            .views
+            .get(info.views.iter().position(|v| v.name == "stderr")?)?;
+        let (reference, reference_stderr) =
+            (snap.reference.as_ref()?, snap.reference_stderr.as_ref()?);
+        let image = self.main_film()?;
+        let size = (image.width, image.height);
+        [stderr, reference, reference_stderr]
+            .iter()
+            .all(|f| (f.width, f.height) == size)
+            .then_some((image, stderr, reference, reference_stderr))
+    }
+
+    /// Whether the z view can be shown: the render has its standard error
+    /// and the reference its own.
+    pub fn z_available(&self) -> bool {
+        self.z_inputs().is_some()
+    }
+
+    /// The z view's verdict on the whole image, when it can be shown.
+    pub fn verdict(&self) -> Option<Verdict> {
+        let (image, stderr, reference, reference_stderr) = self.z_inputs()?;
+        Some(verdict(&image, stderr, reference, reference_stderr))
+    }
+
+    /// Whether [`App::displayed_ref`] is a signed difference or the z
+    /// view (the grader's images, or the main view beside a reference of
+    /// its size).
+    pub fn shows_signed(&self) -> bool {
+        if self.compare == Compare::Z {
+            return self.z_available();
+        }
+        let main = self.view == 0
+            && self.snapshot.as_ref().is_some_and(|s| {
+                let size = s.views.first().map(|v| (v.width, v.height));
+                s.reference.as_ref().map(|r| (r.width, r.height)) == size
+            });
+        self.compare.is_difference()
+            && (self.grading.is_some() || self.student_render().is_some() || main)
+    }
+
+    /// The colours of `film`, a part of what the preview shows at full
+    /// size: see [`App::paint_pooled`].
+    pub fn paint(&self, film: &Film) -> Film {
+        self.paint_pooled(film, 1.0)
+    }
+
+    /// The colours of `film`, a part of what the preview shows, each of
+    /// its pixels the mean of `pooled` pixels of the full film: see
+    /// [`Compare::paint`]; a z view's scale shrinks by √pooled.
+    pub fn paint_pooled(&self, film: &Film, pooled: f32) -> Film {
+        let pooled = if self.compare == Compare::Z {
+            pooled.max(1.0)
+        } else {
+            1.0
+        };
+        self.compare
+            .paint(film, self.shows_signed(), self.exposure, pooled)
+    }
+
+    /// The exposure the preview applies: none to a false-colour difference
+    /// (its colours are final; exposure set its scale).
+    pub fn display_exposure(&self) -> i32 {
+        if self.shows_signed() {
+            0
+        } else {
+            self.exposure
+        }
+    }
+}

@@ -1,0 +1,95 @@
+//! "Noise or wrong?" on screen, with the real chapter 6: the z view is in
+//! the compare cycle where the render and its stored reference both know
+//! their noise, and its verdict reads "within noise" for a correct render
+//! and names the bias of a wrong one.
+
+use ratatui::backend::TestBackend;
+use ratatui::Terminal;
+
+use raystep::tui::app::{App, Compare, Msg};
+use raystep::tui::update::update;
+use raystep::tui::view::{control_lines, view};
+use raystep::tui::worker::Progress;
+
+use super::inspect::rendered;
+
+fn to_z(app: App) -> App {
+    let app = (0..4).fold(app, |a, _| update(a, Msg::CycleCompare));
+    assert_eq!(app.compare, Compare::Z);
+    app
+}
+
+fn controls(app: &App) -> Vec<String> {
+    control_lines(app).iter().map(|l| l.to_string()).collect()
+}
+
+#[test]
+fn a_correct_render_is_within_noise() {
+    let app = rendered();
+    assert!(
+        app.z_available(),
+        "chapter 6's Cornell box knows its noise and the reference's"
+    );
+    let app = to_z(app);
+    let v = app.verdict().expect("a verdict");
+    assert!(v.within_noise(), "{v:?}");
+    let lines = controls(&app);
+    assert!(
+        lines.contains(&"verdict: within noise".to_string()),
+        "{lines:?}"
+    );
+    assert!(lines.iter().any(|l| l.contains("−5σ blue")), "{lines:?}");
+    // The view holds z, and the whole UI draws it.
+    // At 2 samples per pixel a pixel's own standard error is a rough
+    // guess, so single pixels stray; few stray past the limit.
+    let z = app.displayed().unwrap();
+    let far = z
+        .pixels
+        .iter()
+        .filter(|p| p.abs().max_element() > 5.0)
+        .count();
+    assert!(
+        far * 20 < z.pixels.len(),
+        "{far} of {} pixels past |z| 5",
+        z.pixels.len()
+    );
+    let mut t = Terminal::new(TestBackend::new(100, 30)).unwrap();
+    t.draw(|f| view(&app, f)).unwrap();
+    // The cycle goes on to the render.
+    assert_eq!(update(app, Msg::CycleCompare).compare, Compare::Render);
+}
+
+#[test]
+fn a_render_thirty_percent_too_bright_is_called_biased() {
+    let app = rendered();
+    let mut state = app.snapshot.clone().unwrap();
+    // At 2 samples per pixel a block's standard error is about 10% of its
+    // mean: a bias of 30% is z ≈ 10 in the worst block.
+    state.views[0].pixels.iter_mut().for_each(|p| *p *= 1.3);
+    let app = to_z(update(app, Msg::Progress(Progress::State(Box::new(state)))));
+    let v = app.verdict().unwrap();
+    assert!(!v.within_noise(), "{v:?}");
+    let lines = controls(&app);
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with("verdict: biased, ") && l.ends_with("% brighter")),
+        "{lines:?}"
+    );
+}
+
+#[test]
+fn without_the_references_noise_there_is_no_z_view() {
+    let app = rendered();
+    let mut state = app.snapshot.clone().unwrap();
+    state.reference_stderr = None;
+    let app = update(app, Msg::Progress(Progress::State(Box::new(state))));
+    assert!(!app.z_available());
+    let app = (0..4).fold(app, |a, _| update(a, Msg::CycleCompare));
+    assert_eq!(
+        app.compare,
+        Compare::Render,
+        "relative goes back to the render"
+    );
+    assert!(app.verdict().is_none());
+}
