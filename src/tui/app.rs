@@ -51,6 +51,9 @@ pub struct App {
     pub view: usize,
     /// Exposure in stops: the preview is scaled by 2^exposure.
     pub exposure: i32,
+    /// Automatic exposure chosen with `a` (`None`: on for the dark
+    /// pictures, the noise view and single bounce layers, off otherwise).
+    pub auto_exposure: Option<bool>,
     /// Bounce selection: `None` shows all bounces.
     pub bounce: Option<u32>,
     /// Exactly k or up to k.
@@ -159,6 +162,7 @@ impl App {
             focus: Focus::Chapters,
             view: 0,
             exposure: 0,
+            auto_exposure: None,
             bounce: None,
             bounce_mode: BounceMode::UpTo,
             compare: Compare::Render,

@@ -136,17 +136,65 @@ impl App {
         } else {
             1.0
         };
-        self.compare
-            .paint(film, self.shows_signed(), self.exposure, pooled)
+        let signed = self.shows_signed();
+        let stops = if signed {
+            self.exposure
+        } else {
+            self.display_exposure()
+        };
+        self.compare.paint(film, signed, stops, pooled)
     }
 
     /// The exposure the preview applies: none to a false-colour difference
-    /// (its colours are final; exposure set its scale).
+    /// (its colours are final; exposure set its scale), the automatic one
+    /// where that is on, else the chosen one.
     pub fn display_exposure(&self) -> i32 {
         if self.shows_signed() {
             0
+        } else if self.auto_exposure_on() {
+            self.auto_stops()
         } else {
             self.exposure
         }
+    }
+
+    /// Whether automatic exposure applies: chosen with `a`, or by default
+    /// for the dark pictures (the noise view, a single bounce layer).
+    pub fn auto_exposure_on(&self) -> bool {
+        let dark = (self.view == 0 && self.bounce.is_some() && self.shows_bounces())
+            || self.view_name() == "stderr";
+        !self.shows_signed() && self.auto_exposure.unwrap_or(dark)
+    }
+
+    /// The stops that bring the picture's mean to 0.18, the middle grey of
+    /// a photograph (0 for a black picture), within ±10.
+    pub fn auto_stops(&self) -> i32 {
+        let Some(film) = self.displayed_ref() else {
+            return 0;
+        };
+        let (sum, n) = film
+            .pixels
+            .iter()
+            .filter(|p| p.is_finite())
+            .fold((0.0f64, 0usize), |(s, n), p| {
+                (s + f64::from(p.element_sum()) / 3.0, n + 1)
+            });
+        let mean = sum / n.max(1) as f64;
+        if mean > 0.0 {
+            ((0.18 / mean).log2().round() as i32).clamp(-10, 10)
+        } else {
+            0
+        }
+    }
+
+    /// `+`, `-` (`Some(±1)`) and `0` (`None`): a picture under automatic
+    /// exposure steps from where it is and leaves automatic exposure; a
+    /// difference's scale steps as it is.
+    pub fn step_exposure(&mut self, step: Option<i32>) {
+        if self.auto_exposure_on() {
+            self.exposure = self.auto_stops();
+            self.auto_exposure = Some(false);
+        }
+        self.exposure = step.map_or(0, |s| (self.exposure + s).clamp(-10, 10));
     }
 }

@@ -114,8 +114,13 @@ impl App {
         if let Some(snap) = self.snapshot.as_ref().filter(|s| s.samples > 0) {
             stem += &format!("-{}spp", snap.samples);
         }
-        if self.exposure != 0 {
-            stem += &format!("-ev{:+}", self.exposure);
+        let ev = if self.shows_signed() {
+            self.exposure
+        } else {
+            self.display_exposure()
+        };
+        if ev != 0 {
+            stem += &format!("-ev{ev:+}");
         }
         stem
     }

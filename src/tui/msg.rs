@@ -27,6 +27,8 @@ pub enum Msg {
     ExposureDown,
     /// Exposure back to 0.
     ExposureReset,
+    /// Automatic exposure on or off.
+    ToggleAutoExposure,
     /// One bounce more (after 16: all bounces).
     BounceUp,
     /// One bounce less (before 0: all bounces).

@@ -76,9 +76,10 @@ fn step(mut app: App, msg: Msg) -> App {
                 _ => (app.view + n - 1) % n,
             };
         }
-        Msg::ExposureUp => app.exposure = (app.exposure + 1).min(10),
-        Msg::ExposureDown => app.exposure = (app.exposure - 1).max(-10),
-        Msg::ExposureReset => app.exposure = 0,
+        Msg::ExposureUp => app.step_exposure(Some(1)),
+        Msg::ExposureDown => app.step_exposure(Some(-1)),
+        Msg::ExposureReset => app.step_exposure(None),
+        Msg::ToggleAutoExposure => app.auto_exposure = Some(!app.auto_exposure_on()),
         Msg::BounceUp if app.shows_bounces() => {
             app.bounce = match app.bounce {
                 None => Some(0),

@@ -189,7 +189,11 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
             app.view_name()
         )));
     }
-    lines.push(Line::from(format!("exposure {:+} stops", app.exposure)));
+    lines.push(Line::from(if app.auto_exposure_on() {
+        format!("exposure {:+} stops (auto)", app.display_exposure())
+    } else {
+        format!("exposure {:+} stops", app.exposure)
+    }));
     if app.shows_bounces() {
         lines.push(Line::from(format!("bounces {}", app.bounce_short())));
         if let Some(share) = app.bounce_share() {

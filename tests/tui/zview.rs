@@ -93,3 +93,45 @@ fn without_the_references_noise_there_is_no_z_view() {
     );
     assert!(app.verdict().is_none());
 }
+
+#[test]
+fn the_noise_view_is_auto_exposed_and_a_key_steps_from_there() {
+    // Chapter 6's second view, the standard error, is dark: automatic
+    // exposure brings its mean to 0.18.
+    let app = update(rendered(), Msg::NextView);
+    assert_eq!(app.view_name(), "stderr");
+    assert!(app.auto_exposure_on());
+    let stops = app.display_exposure();
+    let mean = {
+        let f = app.displayed().unwrap();
+        f.pixels
+            .iter()
+            .map(|p| f64::from(p.element_sum()) / 3.0)
+            .sum::<f64>()
+            / f.pixels.len() as f64
+    };
+    assert_eq!(stops, ((0.18 / mean).log2().round() as i32).clamp(-10, 10));
+    assert!(stops >= 2, "the noise view is dark: {stops} stops");
+    let lines = controls(&app);
+    assert!(
+        lines.contains(&format!("exposure {stops:+} stops (auto)")),
+        "{lines:?}"
+    );
+    // `+` steps from the automatic exposure and turns it off; `a` turns it
+    // back on.
+    let up = update(app, Msg::ExposureUp);
+    assert!(!up.auto_exposure_on());
+    assert_eq!(up.display_exposure(), stops + 1);
+    let auto = update(up, Msg::ToggleAutoExposure);
+    assert!(auto.auto_exposure_on() && auto.display_exposure() == stops);
+    // A choice made with `a` holds for every picture; the main image is
+    // not auto-exposed unless asked.
+    let main = update(auto, Msg::PrevView);
+    assert_eq!(main.view, 0);
+    assert!(main.auto_exposure_on(), "the choice made with a holds");
+    assert!(!rendered().auto_exposure_on());
+    let plain = update(rendered(), Msg::ToggleAutoExposure);
+    assert!(plain.auto_exposure_on(), "a turns it on for any picture");
+    let off = update(rendered(), Msg::ExposureReset);
+    assert!(!off.auto_exposure_on() && off.display_exposure() == 0);
+}
