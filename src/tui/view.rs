@@ -194,6 +194,14 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
     } else {
         format!("exposure {:+} stops", app.exposure)
     }));
+    if app.view_name() == "stderr" {
+        // The noise view's scale: what shows white.
+        let white = 2f64.powi(-app.display_exposure());
+        lines.push(Line::from(format!(
+            "white: std error {}",
+            short_number(white)
+        )));
+    }
     if app.shows_bounces() {
         lines.push(Line::from(format!("bounces {}", app.bounce_short())));
         if let Some(share) = app.bounce_share() {

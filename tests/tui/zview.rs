@@ -117,6 +117,12 @@ fn the_noise_view_is_auto_exposed_and_a_key_steps_from_there() {
         lines.contains(&format!("exposure {stops:+} stops (auto)")),
         "{lines:?}"
     );
+    // Its scale: at +k stops a standard error of 2^-k shows white.
+    let white = raystep::tui::view::short_number(2f64.powi(-stops));
+    assert!(
+        lines.contains(&format!("white: std error {white}")),
+        "{lines:?}"
+    );
     // `+` steps from the automatic exposure and turns it off; `a` turns it
     // back on.
     let up = update(app, Msg::ExposureUp);
