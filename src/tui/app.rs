@@ -51,6 +51,9 @@ pub struct App {
     pub view: usize,
     /// Exposure in stops: the preview is scaled by 2^exposure.
     pub exposure: i32,
+    /// Every estimator's error series of the renders shown, by chapter,
+    /// scene and estimator ([`super::curves`]).
+    pub curves: BTreeMap<(usize, String, usize), Vec<(f64, f64)>>,
     /// Automatic exposure chosen with `a` (`None`: on for the dark
     /// pictures, the noise view and single bounce layers, off otherwise).
     pub auto_exposure: Option<bool>,
@@ -163,6 +166,7 @@ impl App {
             view: 0,
             exposure: 0,
             auto_exposure: None,
+            curves: BTreeMap::new(),
             bounce: None,
             bounce_mode: BounceMode::UpTo,
             compare: Compare::Render,

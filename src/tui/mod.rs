@@ -18,6 +18,7 @@
 pub mod app;
 pub mod bench;
 pub mod compared;
+pub mod curves;
 pub mod gauge;
 pub mod graphics;
 pub mod inspect;

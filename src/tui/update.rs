@@ -332,7 +332,7 @@ fn step(mut app: App, msg: Msg) -> App {
             }
         }
         Msg::Progress(p) if p.generation() == app.generation => match p {
-            Progress::State(s) => app.snapshot = Some(*s),
+            Progress::State(s) => app.new_state(*s),
             Progress::Failed { message, .. } => app.failure = Some(message),
             // Known from now on: the scene list marks it, and this chapter
             // is not opened on it again while others work.

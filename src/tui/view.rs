@@ -238,41 +238,95 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
             )));
         }
     }
+    // Each estimator's efficiency, once there are two to compare.
+    let curves: Vec<_> = app
+        .curves()
+        .into_iter()
+        .filter_map(|c| Some((c.efficiency()?, c)))
+        .collect();
+    if curves.len() >= 2 {
+        lines.push(Line::from("efficiency 1/(MSE·s):"));
+        let best = curves.iter().map(|(e, _)| *e).fold(0.0, f64::max);
+        for (e, c) in &curves {
+            let mark = if *e == best { " best" } else { "" };
+            lines.push(Line::from(vec![
+                Span::styled("● ", fg(app, c.colour)),
+                Span::raw(format!("{} {}{mark}", c.name, short_number(*e))),
+            ]));
+        }
+    }
     lines
 }
 
 /// The error against time on log-log axes, whole decades, with the slope
-/// −1/2 guide of a Monte Carlo estimate through the last point (the same
-/// as the reports' plots): a render on the guide converges as it should.
+/// −1/2 guide of a Monte Carlo estimate through the running render's last
+/// point (the same as the reports' plots): a render on the guide converges
+/// as it should. Every estimator's kept curve of this chapter and scene is
+/// drawn beside it, in its own colour: the controls box's efficiency lines
+/// are its legend (ratatui's own legend shows only where it fits).
 fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
-    let Some(snap) = &app.snapshot else { return };
-    let LogLog { data, guide, x, y } = log_log(&snap.error_series);
+    let curves = app.curves();
+    let Some(current) = curves.iter().find(|c| c.current) else {
+        return;
+    };
+    let LogLog {
+        guide,
+        mut x,
+        mut y,
+        ..
+    } = log_log(&current.series);
+    let all: Vec<LogLog> = curves.iter().map(|c| log_log(&c.series)).collect();
+    for l in &all {
+        (x, y) = (
+            (x.0.min(l.x.0), x.1.max(l.x.1)),
+            (y.0.min(l.y.0), y.1.max(l.y.1)),
+        );
+    }
+    let guide = extend_guide(&guide, x);
     let label = |e: f64| format!("1e{}", e as i32);
-    let chart = Chart::new(vec![
-        Dataset::default()
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            .style(Style::default().add_modifier(Modifier::DIM))
-            .data(&guide),
-        Dataset::default()
-            .marker(Marker::Braille)
-            .graph_type(GraphType::Line)
-            // The terminal's own colour: cyan or yellow fade on a light
-            // background, blue on a dark one.
-            .style(Style::default())
-            .data(&data),
-    ])
-    .block(Block::bordered().title("error vs time, log-log"))
-    .x_axis(Axis::default().bounds([x.0, x.1]).labels([
-        format_seconds(10f64.powf(x.0)),
-        format_seconds(10f64.powf(x.1)),
-    ]))
-    .y_axis(
-        Axis::default()
-            .bounds([y.0, y.1])
-            .labels([label(y.0), label(y.1)]),
-    );
+    let mut sets = vec![Dataset::default()
+        .name("slope −1/2")
+        .marker(Marker::Braille)
+        .graph_type(GraphType::Line)
+        .style(Style::default())
+        .data(&guide)];
+    for (c, l) in curves.iter().zip(&all) {
+        sets.push(
+            Dataset::default()
+                .name(c.name.clone())
+                .marker(Marker::Braille)
+                .graph_type(GraphType::Line)
+                .style(fg(app, c.colour))
+                .data(&l.data),
+        );
+    }
+    let chart = Chart::new(sets)
+        .block(Block::bordered().title("error vs time; plain line −1/2"))
+        .hidden_legend_constraints((Constraint::Ratio(2, 3), Constraint::Ratio(2, 3)))
+        .x_axis(Axis::default().bounds([x.0, x.1]).labels([
+            format_seconds(10f64.powf(x.0)),
+            format_seconds(10f64.powf(x.1)),
+        ]))
+        .y_axis(
+            Axis::default()
+                .bounds([y.0, y.1])
+                .labels([label(y.0), label(y.1)]),
+        );
     frame.render_widget(chart, area);
+}
+
+/// The −1/2 guide (two points) stretched to the x bounds `x`.
+fn extend_guide(guide: &[(f64, f64)], x: (f64, f64)) -> Vec<(f64, f64)> {
+    match guide {
+        [(x0, y0), (x1, y1)] if x1 > x0 => {
+            let slope = (y1 - y0) / (x1 - x0);
+            vec![
+                (x.0, y0 + slope * (x.0 - x0)),
+                (x.1, y0 + slope * (x.1 - x0)),
+            ]
+        }
+        _ => guide.to_vec(),
+    }
 }
 
 /// An error series ready for log-log axes.

@@ -3,6 +3,7 @@
 #![cfg(feature = "tui")]
 
 mod converge;
+mod curves;
 mod difference;
 mod end_to_end;
 mod flip;
