@@ -123,12 +123,19 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
         .enumerate()
         .map(|(i, _)| 1 + u16::from(chapter.is_some() && app.scene_problem(i).is_some()))
         .sum();
-    // Chapters first, then the controls, and the scene list gets what is
+    // Chapters first, then the controls, then (on a terminal of 30 rows or
+    // more) up to ten rows for the chart, and the scene list gets what is
     // left (at least three rows; it scrolls to the selection).
     let total = area.height;
     let ch_h = (app.chapters.len() as u16 + 2).min(total);
     let ctrl_h = (controls.len() as u16 + 2).min(total.saturating_sub(ch_h + 3));
-    let sc_h = (scene_rows + 2).min(total.saturating_sub(ch_h + ctrl_h));
+    let left = total.saturating_sub(ch_h + ctrl_h);
+    let chart_h = if has_chart && total >= 30 {
+        10.min(left.saturating_sub(3))
+    } else {
+        0
+    };
+    let sc_h = (scene_rows + 2).min(left - chart_h);
     let [chapters, scenes, ctrl, rest] = Layout::vertical([
         Constraint::Length(ch_h),
         Constraint::Length(sc_h),

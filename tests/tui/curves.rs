@@ -110,3 +110,24 @@ fn each_estimators_curve_is_kept_and_its_efficiency_shown() {
         );
     }
 }
+
+#[test]
+fn a_long_scene_list_leaves_the_chart_room_on_a_tall_terminal() {
+    let mut app = render_current(rendered());
+    for i in 0..20 {
+        let mut entry = app.scenes[0].clone();
+        entry.name = format!("scene-{i}");
+        app.scenes.push(entry);
+    }
+    let mut t = Terminal::new(TestBackend::new(120, 40)).unwrap();
+    t.draw(|f| view(&app, f)).unwrap();
+    let text: String = t
+        .backend()
+        .buffer()
+        .content()
+        .iter()
+        .map(|c| c.symbol())
+        .collect();
+    assert!(text.contains("error vs time"), "the chart is shown");
+    assert!(text.contains("scene-0"), "and the scene list, scrolled");
+}
