@@ -113,3 +113,51 @@ impl Film {
         self
     }
 }
+
+/// tev's five error metrics of an image against a reference, each a mean
+/// over pixels and channels (non-finite values left out): with d the
+/// difference and r the reference, d, |d|, d², |d| / (r + ε) and
+/// d² / (r² + ε), ε = 0.01.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Metrics {
+    /// Mean d: a bias shows here, noise averages out.
+    pub error: f64,
+    /// Mean |d|.
+    pub absolute: f64,
+    /// Mean d², the MSE.
+    pub squared: f64,
+    /// Mean |d| / (r + ε).
+    pub relative_absolute: f64,
+    /// Mean d² / (r² + ε).
+    pub relative_squared: f64,
+}
+
+/// [`Metrics`] of `image` against `reference` (the same size).
+pub fn metrics(image: &Film, reference: &Film) -> Metrics {
+    const EPS: f64 = 0.01;
+    let mut m = Metrics::default();
+    let mut n = 0.0;
+    for (a, b) in image.pixels.iter().zip(&reference.pixels) {
+        for c in 0..3 {
+            let (a, r) = (f64::from(a[c]), f64::from(b[c]));
+            let d = a - r;
+            if !d.is_finite() {
+                continue;
+            }
+            m.error += d;
+            m.absolute += d.abs();
+            m.squared += d * d;
+            m.relative_absolute += d.abs() / (r.abs() + EPS);
+            m.relative_squared += d * d / (r * r + EPS);
+            n += 1.0;
+        }
+    }
+    let n = f64::max(n, 1.0);
+    Metrics {
+        error: m.error / n,
+        absolute: m.absolute / n,
+        squared: m.squared / n,
+        relative_absolute: m.relative_absolute / n,
+        relative_squared: m.relative_squared / n,
+    }
+}

@@ -58,6 +58,23 @@ impl App {
         }
     }
 
+    /// The render (the selected bounces, or the student's image) and the
+    /// reference it is compared with, when there is one of its size.
+    pub fn compared_pair(&self) -> Option<(Cow<'_, Film>, &Film)> {
+        match (&self.grading, &self.student) {
+            (Some(g), _) => return Some((Cow::Borrowed(&g.student), &g.reference)),
+            (None, Some(s)) => {
+                let r = s.render.as_ref()?;
+                return Some((Cow::Borrowed(&r.student), &r.reference));
+            }
+            (None, None) => {}
+        }
+        let film = self.main_film().filter(|_| self.view == 0)?;
+        let reference = self.snapshot.as_ref()?.reference.as_ref()?;
+        ((reference.width, reference.height) == (film.width, film.height))
+            .then_some((film, reference))
+    }
+
     /// The selected view, or for the main view the selected bounces.
     fn main_film(&self) -> Option<Cow<'_, Film>> {
         let snap = self.snapshot.as_ref()?;

@@ -33,6 +33,7 @@ pub mod picture;
 pub mod placement;
 pub mod pool;
 pub mod query;
+pub mod readouts;
 pub mod scenes;
 pub mod screen;
 pub mod shown;

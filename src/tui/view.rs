@@ -21,7 +21,7 @@ use ratatui::widgets::{
 };
 use ratatui::Frame;
 
-use super::app::{App, Compare, Focus};
+use super::app::{App, Focus};
 use super::gauge::draw_gauge;
 pub use super::gauge::{gauge_state, short_number};
 use super::keys::KEYS;
@@ -29,18 +29,10 @@ pub use super::labels::{
     fit_parts, format_rate, key_hints, preview_title_parts, status_line, status_line_fit,
     status_parts,
 };
+use super::readouts::fg;
 pub use super::screen::{areas, pixel_at, sidebar_width, Areas};
 use super::shown::{draw_film, Content};
 use crate::core::format::format_seconds;
-
-/// A style with this foreground colour, or plain without colour.
-fn fg(app: &App, color: Color) -> Style {
-    if app.color {
-        Style::default().fg(color)
-    } else {
-        Style::default()
-    }
-}
 
 /// The focused list's box: bold, its title reversed (readable on light
 /// and dark backgrounds alike, where a yellow or grey border is not).
@@ -201,14 +193,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
     } else {
         format!("exposure {:+} stops", app.exposure)
     }));
-    if app.view_name() == "stderr" {
-        // The noise view's scale: what shows white.
-        let white = 2f64.powi(-app.display_exposure());
-        lines.push(Line::from(format!(
-            "white: std error {}",
-            short_number(white)
-        )));
-    }
+    lines.extend(super::readouts::noise_scale(app));
     if app.shows_bounces() {
         lines.push(Line::from(format!("bounces {}", app.bounce_short())));
         if let Some(share) = app.bounce_share() {
@@ -223,17 +208,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
         if app.compare.is_difference() {
             lines.push(difference_legend(app));
         }
-        let z = app.compare == Compare::Z;
-        if let Some(v) = z.then(|| app.verdict()).flatten() {
-            let colour = if v.within_noise() {
-                Color::Green
-            } else {
-                Color::Red
-            };
-            let [first, second] = v.lines();
-            lines.push(Line::styled(first, fg(app, colour)));
-            lines.push(Line::from(second));
-        }
+        lines.extend(super::readouts::compare_lines(app));
     }
     if let Some(c) = app.current_chapter() {
         if let Some(v) = c.info().variants.get(app.variant) {
@@ -245,23 +220,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
             )));
         }
     }
-    // Each estimator's efficiency, once there are two to compare.
-    let curves: Vec<_> = app
-        .curves()
-        .into_iter()
-        .filter_map(|c| Some((c.efficiency()?, c)))
-        .collect();
-    if curves.len() >= 2 {
-        lines.push(Line::from("efficiency 1/(MSE·s):"));
-        let best = curves.iter().map(|(e, _)| *e).fold(0.0, f64::max);
-        for (e, c) in &curves {
-            let mark = if *e == best { " best" } else { "" };
-            lines.push(Line::from(vec![
-                Span::styled("● ", fg(app, c.colour)),
-                Span::raw(format!("{} {}{mark}", c.name, short_number(*e))),
-            ]));
-        }
-    }
+    lines.extend(super::readouts::efficiency_lines(app));
     lines
 }
 

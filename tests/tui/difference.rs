@@ -188,3 +188,46 @@ fn a_sixel_picture_of_a_difference_is_averaged_before_it_is_coloured() {
         .count();
     assert_eq!(purple, 0, "no picture pixel is a mix of red and blue");
 }
+
+#[test]
+fn a_difference_shows_tevs_five_metrics_as_means() {
+    // render − reference = (0, 0, −0.125) at every pixel of the fake, with
+    // the reference (0.5, 0.25, 0.25).
+    let app = crate::tui::layout_and_keys::rendered(crate::tui::layout_and_keys::app());
+    let app = update(update(app, Msg::CycleCompare), Msg::CycleCompare);
+    assert_eq!(app.compare, Compare::Difference);
+    let m = raystep::core::difference::metrics(
+        &app.compared_pair().unwrap().0,
+        app.compared_pair().unwrap().1,
+    );
+    let near = |a: f64, b: f64| (a - b).abs() < 1e-6;
+    assert!(near(m.error, -0.125 / 3.0), "{m:?}");
+    assert!(near(m.absolute, 0.125 / 3.0));
+    assert!(near(m.squared, 0.125 * 0.125 / 3.0));
+    assert!(near(m.relative_absolute, 0.125 / 0.26 / 3.0));
+    assert!(near(
+        m.relative_squared,
+        0.125 * 0.125 / (0.0625 + 0.01) / 3.0
+    ));
+    let lines: Vec<String> = raystep::tui::view::control_lines(&app)
+        .iter()
+        .map(|l| l.to_string())
+        .collect();
+    let n = raystep::tui::view::short_number;
+    for want in [
+        format!("mean error {}", n(m.error)),
+        format!("abs {} · sq {}", n(m.absolute), n(m.squared)),
+        format!(
+            "rel abs {} · rel sq {}",
+            n(m.relative_absolute),
+            n(m.relative_squared)
+        ),
+    ] {
+        assert!(lines.contains(&want), "{want}: {lines:?}");
+    }
+    // A NaN is left out of the means, not spread through them.
+    let mut bad = app.compared_pair().unwrap().0.into_owned();
+    bad.pixels[0] = Vec3::splat(f32::NAN);
+    let m2 = raystep::core::difference::metrics(&bad, app.compared_pair().unwrap().1);
+    assert!(m2.squared.is_finite() && near(m2.squared, m.squared));
+}
