@@ -54,6 +54,10 @@ pub struct App {
     /// Every estimator's error series of the renders shown, by chapter,
     /// scene and estimator ([`super::curves`]).
     pub curves: BTreeMap<(usize, String, usize), Vec<(f64, f64)>>,
+    /// The box of pixels chosen for region statistics ([`super::region`]).
+    pub region: Option<(u32, u32, u32, u32)>,
+    /// Its first corner, while `b` waits for the second.
+    pub region_anchor: Option<(u32, u32)>,
     /// Automatic exposure chosen with `a` (`None`: on for the dark
     /// pictures, the noise view and single bounce layers, off otherwise).
     pub auto_exposure: Option<bool>,
@@ -166,6 +170,8 @@ impl App {
             view: 0,
             exposure: 0,
             auto_exposure: None,
+            region: None,
+            region_anchor: None,
             curves: BTreeMap::new(),
             bounce: None,
             bounce_mode: BounceMode::UpTo,

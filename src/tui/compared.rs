@@ -76,7 +76,7 @@ impl App {
     }
 
     /// The selected view, or for the main view the selected bounces.
-    fn main_film(&self) -> Option<Cow<'_, Film>> {
+    pub fn main_film(&self) -> Option<Cow<'_, Film>> {
         let snap = self.snapshot.as_ref()?;
         let mut film = Cow::Borrowed(snap.views.get(self.view)?);
         if self.view == 0 && self.shows_bounces() {

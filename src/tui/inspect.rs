@@ -36,6 +36,7 @@ pub fn inspect_lines(app: &App) -> Vec<String> {
         return Vec::new();
     };
     let mut lines = vec![format!("pixel ({x}, {y})")];
+    lines.extend(super::region::region_summary(app));
     for (view, film) in chapter.info().views.iter().zip(&snap.views) {
         if let Some(v) = rgb(film, x, y) {
             let name = match view.name {

@@ -46,7 +46,10 @@ pub const KEYS: &[(&str, &str)] = &[
         ">  <",
         "double / halve the target (samples, and the noise reached)",
     ),
-    ("i", "inspect a pixel: a cursor, its values and its story"),
+    (
+        "i  b",
+        "inspect a pixel; b at two corners, or a drag: a region",
+    ),
     (
         "h j k l",
         "inspecting: move the cursor (arrows, Shift: 8, or click)",
@@ -130,6 +133,7 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         KeyCode::Char('-') => Msg::ExposureDown,
         KeyCode::Char('0') => Msg::ExposureReset,
         KeyCode::Char('a') => Msg::ToggleAutoExposure,
+        KeyCode::Char('b') => Msg::MarkRegion,
         KeyCode::Char(']') => Msg::BounceUp,
         KeyCode::Char('[') => Msg::BounceDown,
         KeyCode::Char('m') => Msg::ToggleBounceMode,
@@ -173,6 +177,12 @@ pub fn msg_for_mouse(m: MouseEvent, (width, height): (u16, u16)) -> Option<Msg> 
             lines: 3,
         },
         MouseEventKind::Moved => Msg::Hover { column, row },
+        MouseEventKind::Drag(MouseButton::Left) => Msg::Drag {
+            column,
+            row,
+            width,
+            height,
+        },
         _ => return None,
     })
 }

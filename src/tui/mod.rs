@@ -34,6 +34,7 @@ pub mod placement;
 pub mod pool;
 pub mod query;
 pub mod readouts;
+pub mod region;
 pub mod scenes;
 pub mod screen;
 pub mod shown;

@@ -84,6 +84,20 @@ pub enum Msg {
     Save,
     /// The save finished: the files written, or the error.
     Saved(Result<Vec<PathBuf>, String>),
+    /// The mouse moved to cell (`column`, `row`) with its left button down,
+    /// on a terminal of `width` x `height` cells: a region is dragged out.
+    Drag {
+        /// Cell column.
+        column: u16,
+        /// Cell row.
+        row: u16,
+        /// Terminal width in cells.
+        width: u16,
+        /// Terminal height in cells.
+        height: u16,
+    },
+    /// `b`: a region's corner at the cursor, or clear the region.
+    MarkRegion,
     /// The mouse moved to a cell.
     Hover {
         /// Its column.

@@ -123,3 +123,27 @@ pub fn pixel_at(app: &App, area: Rect, column: u16, row: u16) -> Option<(u32, u3
     let y = super::inspect::cell_to_pixel(row - r.y, r.height, h);
     Some(window.to_image((x, y)))
 }
+
+impl App {
+    /// A click on cell (`column`, `row`) of a `screen`: the inspect cursor
+    /// goes to the pixel under it (a new pixel forgets the traced path),
+    /// and a drag from there may start; a region chosen before is cleared.
+    pub fn click_at(&mut self, screen: Rect, column: u16, row: u16) {
+        if let Some(p) = pixel_at(self, screen, column, row) {
+            if self.inspect != Some(p) {
+                self.trace = None;
+                self.traces = 0;
+            }
+            self.inspect = Some(p);
+            self.region = None;
+        }
+    }
+
+    /// A drag of the mouse to cell (`column`, `row`) of a `screen`: the box
+    /// from where the button went down (the inspect cursor) to there.
+    pub fn drag_to(&mut self, screen: Rect, column: u16, row: u16) {
+        if let (Some(a), Some(p)) = (self.inspect, pixel_at(self, screen, column, row)) {
+            self.region = Some(super::region::spanned(a, p));
+        }
+    }
+}

@@ -131,7 +131,10 @@ pub fn request(app: &App, screen: Rect) -> Option<Request> {
     } else {
         image::imageops::FilterType::Triangle
     };
-    let image = image::imageops::resize(&raw, p.width, p.height, filter);
+    let mut image = image::imageops::resize(&raw, p.width, p.height, filter);
+    if let Some(region) = super::region::in_window(app, &window) {
+        super::region::outline(&mut image, region, window.width, window.height);
+    }
     Some(Request::new(p.cells, image))
 }
 
@@ -170,6 +173,9 @@ pub fn draw_film(app: &App, frame: &mut Frame, full: &Film, area: Rect) {
         },
         r,
     );
+    if let Some(region) = super::region::in_window(app, &window) {
+        super::region::draw_region(frame, r, region, film.width, film.height);
+    }
     if let Some(p) = cursor {
         super::inspect::draw_cursor(frame, r, p, film.width, film.height);
     }

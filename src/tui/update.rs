@@ -174,16 +174,14 @@ fn step(mut app: App, msg: Msg) -> App {
             row,
             width,
             height,
-        } => {
-            let screen = ratatui::layout::Rect::new(0, 0, width, height);
-            if let Some(p) = super::view::pixel_at(&app, screen, column, row) {
-                if app.inspect != Some(p) {
-                    app.trace = None;
-                    app.traces = 0;
-                }
-                app.inspect = Some(p);
-            }
-        }
+        } => app.click_at(ratatui::layout::Rect::new(0, 0, width, height), column, row),
+        Msg::Drag {
+            column,
+            row,
+            width,
+            height,
+        } => app.drag_to(ratatui::layout::Rect::new(0, 0, width, height), column, row),
+        Msg::MarkRegion => app.mark_region(),
         Msg::TracePath => match (app.inspect, app.snapshot.as_ref()) {
             (Some((x, y)), Some(snap)) if app.traces_paths() => {
                 let sample = app.traces % snap.samples.max(1);
