@@ -12,6 +12,7 @@ use ratatui::Frame;
 
 use super::app::App;
 use crate::core::film::Film;
+use crate::core::zview::Z_MAX;
 
 /// A box of pixels, corners included: (x0, y0, x1, y1).
 pub type Region = (u32, u32, u32, u32);
@@ -62,6 +63,13 @@ pub fn region_summary(app: &App) -> Vec<String> {
         .reference
         .as_ref()
         .filter(|r| main && (r.width, r.height) == (film.width, film.height));
+    let reference = reference.map(|r| {
+        let err = snap
+            .reference_stderr
+            .as_ref()
+            .filter(|e| (e.width, e.height) == (r.width, r.height));
+        (r, err)
+    });
     let mut lines = region_lines(region, &film, stderr, reference);
     let (x0, y0, x1, y1) = region;
     let (x1, y1) = (x1.min(film.width - 1), y1.min(film.height - 1));
@@ -76,17 +84,20 @@ pub fn region_summary(app: &App) -> Vec<String> {
 }
 
 /// The statistics of `region` of `film` (with its per-pixel standard error
-/// where known) against `reference`, as lines for the controls box.
+/// where known) against `reference` (with its own, where known), as lines
+/// for the pixel panel; the z of the difference of the means comes with
+/// its verdict, within noise up to [`Z_MAX`] (the grader's limit).
 pub fn region_lines(
     region: Region,
     film: &Film,
     stderr: Option<&Film>,
-    reference: Option<&Film>,
+    reference: Option<(&Film, Option<&Film>)>,
 ) -> Vec<String> {
     let (x0, y0, x1, y1) = region;
     let (x1, y1) = (x1.min(film.width - 1), y1.min(film.height - 1));
     let (mut sum, mut var, mut sum_ref, mut rel_mse, mut n) =
         (0.0f64, 0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    let mut var_ref = 0.0f64;
     for y in y0..=y1 {
         for x in x0..=x1 {
             let v = f64::from(film.get(x, y).element_sum()) / 3.0;
@@ -95,8 +106,11 @@ pub fn region_lines(
                 // The channel mean's variance, channels taken as independent.
                 var += f64::from(s.get(x, y).length_squared()) / 9.0;
             }
-            if let Some(r) = reference {
+            if let Some((r, r_err)) = reference {
                 let rv = f64::from(r.get(x, y).element_sum()) / 3.0;
+                if let Some(e) = r_err {
+                    var_ref += f64::from(e.get(x, y).length_squared()) / 9.0;
+                }
                 sum_ref += rv;
                 rel_mse += (v - rv) * (v - rv) / (rv * rv + 0.01);
             }
@@ -115,11 +129,23 @@ pub fn region_lines(
         Some(_) => format!("mean {} ± {}", short(mean), short(se)),
         None => format!("mean {} ({n_px} px)", short(mean)),
     });
-    if reference.is_some() {
+    if let Some((_, r_err)) = reference {
         let r = sum_ref / n;
         lines.push(format!("ref {} · rel MSE {}", short(r), short(rel_mse / n)));
-        if stderr.is_some() && se > 0.0 {
-            lines.push(format!("z {:+.1} (render's noise only)", (mean - r) / se));
+        let sd = (var + var_ref).sqrt() / n;
+        if stderr.is_some() && sd > 0.0 {
+            let z = (mean - r) / sd;
+            let verdict = if z.abs() <= Z_MAX {
+                "within noise"
+            } else {
+                "biased"
+            };
+            let only = if r_err.is_some() {
+                ""
+            } else {
+                " (render's noise only)"
+            };
+            lines.push(format!("z {z:+.1}: {verdict}{only}"));
         }
     }
     lines

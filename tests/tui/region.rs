@@ -58,10 +58,14 @@ fn b_at_two_corners_gives_the_regions_statistics() {
             .any(|l| l.starts_with("ref ") && l.contains(" · rel MSE ")),
         "{lines:?}"
     );
-    let z: f64 = lines
+    let z_line = lines
         .iter()
-        .find_map(|l| l.strip_prefix("z "))
-        .and_then(|l| l.split_whitespace().next())
+        .find(|l| l.starts_with("z "))
+        .expect("a z line");
+    assert!(z_line.ends_with(": within noise"), "{z_line}");
+    let z: f64 = z_line
+        .strip_prefix("z ")
+        .and_then(|l| l.split(':').next())
         .expect("a z line")
         .parse()
         .unwrap();
@@ -151,4 +155,25 @@ fn a_drag_spans_a_box_and_a_click_clears_it() {
     // `b` with no cursor says how.
     let plain = update(rendered(), Msg::MarkRegion);
     assert!(plain.message.contains("b marks"), "{}", plain.message);
+}
+
+#[test]
+fn a_region_of_a_render_too_bright_reads_biased() {
+    let app = rendered();
+    let mut state = app.snapshot.clone().unwrap();
+    // The wall at the left, a large box: 30% too bright is many standard
+    // errors of its mean.
+    state.views[0].pixels.iter_mut().for_each(|p| *p *= 1.3);
+    let app = update(
+        app,
+        Msg::Progress(raystep::tui::worker::Progress::State(Box::new(state))),
+    );
+    let mut app = update(app, Msg::ToggleInspect);
+    app.region = Some((4, 8, 20, 56));
+    let lines = inspect_lines(&app);
+    let z_line = lines
+        .iter()
+        .find(|l| l.starts_with("z "))
+        .expect("a z line");
+    assert!(z_line.ends_with(": biased"), "{lines:?}");
 }
