@@ -58,6 +58,8 @@ pub struct App {
     pub region: Option<(u32, u32, u32, u32)>,
     /// Its first corner, while `b` waits for the second.
     pub region_anchor: Option<(u32, u32)>,
+    /// How many keys the help overlay has scrolled past.
+    pub help_scroll: usize,
     /// Automatic exposure chosen with `a` (`None`: on for the dark
     /// pictures, the noise view and single bounce layers, off otherwise).
     pub auto_exposure: Option<bool>,
@@ -170,6 +172,7 @@ impl App {
             view: 0,
             exposure: 0,
             auto_exposure: None,
+            help_scroll: 0,
             region: None,
             region_anchor: None,
             curves: BTreeMap::new(),

@@ -186,3 +186,31 @@ pub fn msg_for_mouse(m: MouseEvent, (width, height): (u16, u16)) -> Option<Msg> 
         _ => return None,
     })
 }
+
+/// How far the help overlay can scroll on a terminal `height` rows tall:
+/// until its last key shows above the "more keys" row.
+pub fn help_scroll_max(height: u16) -> usize {
+    let rows = (KEYS.len() + 2).min(height as usize).saturating_sub(2);
+    if rows >= KEYS.len() {
+        0
+    } else {
+        KEYS.len() - rows.saturating_sub(1)
+    }
+}
+
+impl App {
+    /// While the help overlay is open, the arrows, `j` `k`, `u` `d` and the
+    /// page keys scroll it (within what the screen hides); `true` when
+    /// `msg` was one of them.
+    pub fn scroll_help(&mut self, msg: &Msg) -> bool {
+        let step: i64 = match msg {
+            Msg::Up => -1,
+            Msg::Down => 1,
+            Msg::Scroll(n) => i64::from(*n),
+            _ => return false,
+        };
+        let max = help_scroll_max(self.screen.height) as i64;
+        self.help_scroll = (self.help_scroll as i64 + step).clamp(0, max) as usize;
+        true
+    }
+}

@@ -30,7 +30,11 @@ pub fn update(mut app: App, msg: Msg) -> App {
 }
 
 fn step(mut app: App, msg: Msg) -> App {
-    // Any key but `?` closes the help overlay first.
+    // Any key but `?` closes the help overlay first; the arrows, j k, u d
+    // and the page keys scroll it.
+    if app.help && app.scroll_help(&msg) {
+        return app;
+    }
     if app.help
         && !matches!(
             msg,

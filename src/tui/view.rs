@@ -88,7 +88,7 @@ pub fn view(app: &App, frame: &mut Frame) {
         super::warp::draw(w, app.color, frame, area);
     }
     if app.help {
-        draw_help(frame, area);
+        draw_help(app, frame, area);
     }
 }
 
@@ -376,7 +376,7 @@ fn difference_legend(app: &App) -> Line<'static> {
     ])
 }
 
-fn draw_help(frame: &mut Frame, area: Rect) {
+fn draw_help(app: &App, frame: &mut Frame, area: Rect) {
     let w = 78.min(area.width);
     let h = (KEYS.len() as u16 + 2).min(area.height);
     let r = Rect::new(
@@ -386,15 +386,18 @@ fn draw_help(frame: &mut Frame, area: Rect) {
         h,
     );
     // Where the terminal is too short for every key, the last row says
-    // so (the book and a taller terminal have them all).
+    // how many more there are and how to scroll to them.
     let rows = h.saturating_sub(2) as usize;
+    let first = app
+        .help_scroll
+        .min(super::keys::help_scroll_max(area.height));
     let hidden = KEYS.len().saturating_sub(rows);
     let shown = if hidden > 0 {
         rows.saturating_sub(1)
     } else {
         rows
     };
-    let mut lines: Vec<Line> = KEYS[..shown]
+    let mut lines: Vec<Line> = KEYS[first..(first + shown).min(KEYS.len())]
         .iter()
         .map(|(k, what)| {
             Line::from(vec![
@@ -407,10 +410,9 @@ fn draw_help(frame: &mut Frame, area: Rect) {
         })
         .collect();
     if hidden > 0 {
+        let below = KEYS.len().saturating_sub(first + shown);
         lines.push(Line::from(format!(
-            "… {} more keys: a terminal {} rows tall shows them all",
-            KEYS.len() - shown,
-            KEYS.len() + 2
+            "… {below} more keys below, {first} above: ↑ ↓ scroll"
         )));
     }
     frame.render_widget(Clear, r);

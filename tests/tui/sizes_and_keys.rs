@@ -738,3 +738,24 @@ fn a_chapter_switched_onto_a_scene_it_refuses_moves_to_one_it_takes() {
     assert_eq!(app.scene, sdf);
     assert!(app.problem().is_some());
 }
+
+#[test]
+fn the_help_scrolls_to_every_key_on_a_short_terminal() {
+    let app = update(rendered(fake_app()), Msg::Resize(80, 24));
+    let app = update(app, Msg::ToggleHelp);
+    let (last_key, last_what) = raystep::tui::keys::KEYS[raystep::tui::keys::KEYS.len() - 1];
+    let top = draw(&app, 80, 24);
+    assert!(!top.contains(last_what), "{top}");
+    assert!(top.contains("↑ ↓ scroll"), "{top}");
+    // Down (and u/d, PgDn) scroll it; it stops at the last key.
+    let app = (0..40).fold(app, |a, _| update(a, Msg::Down));
+    assert!(app.help, "scrolling keeps the help open");
+    let bottom = draw(&app, 80, 24);
+    assert!(bottom.contains(last_what), "{last_key}: {bottom}");
+    assert!(bottom.contains("0 more keys below"), "{bottom}");
+    let app = update(app, Msg::Scroll(-5));
+    assert!(!draw(&app, 80, 24).contains(last_what));
+    // Any other key still closes it.
+    let app = update(app, Msg::NextView);
+    assert!(!app.help);
+}
