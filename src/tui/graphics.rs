@@ -172,7 +172,26 @@ pub fn choose(
                 g.flag()
             )))
         }
-        Choice::Force(g) => g,
+        Choice::Force(g) => {
+            // Followed; but where neither the terminal's answer nor its
+            // environment says it shows such pictures, a blank preview
+            // must not go unexplained.
+            let said = answer.is_some_and(|a| {
+                (g == Graphics::Kitty && a.kitty) || (g == Graphics::Sixel && a.sixel)
+            }) || detect(var, font) == g;
+            let note = (!said).then(|| {
+                format!(
+                    "--graphics {}: this terminal did not say it shows such pictures; if the \
+                     preview stays blank, run without --graphics",
+                    g.flag()
+                )
+            });
+            return Chosen {
+                graphics: g,
+                font,
+                note,
+            };
+        }
         Choice::Auto if multiplexer(var) || font.is_none() => return half(None),
         Choice::Auto if iterm2_env(var) => Graphics::Iterm2,
         Choice::Auto => match answer {

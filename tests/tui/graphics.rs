@@ -146,8 +146,15 @@ fn inside_tmux_or_screen_nothing_is_asked_and_half_blocks_are_drawn() {
 fn a_forced_protocol_is_followed_where_it_can_work() {
     let plain = env(&[("TERM", "xterm-256color")]);
     for g in [Graphics::Kitty, Graphics::Sixel, Graphics::Iterm2] {
+        // Followed, with a note: nothing said this terminal shows such
+        // pictures, so a blank preview would otherwise go unexplained.
         let forced = choose(Choice::Force(g), &plain, FONT, None);
-        assert_eq!((forced.graphics, forced.font, forced.note), (g, FONT, None));
+        assert_eq!((forced.graphics, forced.font), (g, FONT));
+        let note = forced.note.unwrap();
+        assert!(
+            note.contains(&format!("--graphics {}", g.flag())) && note.contains("blank"),
+            "{note}"
+        );
         // Without a cell size the picture cannot be placed: half blocks,
         // and a note naming the flag and the reason.
         let no_size = choose(Choice::Force(g), &plain, None, None);
@@ -159,6 +166,18 @@ fn a_forced_protocol_is_followed_where_it_can_work() {
         assert!(!should_query(Choice::Force(g), &plain, FONT));
         assert!(should_query(Choice::Force(g), &plain, None));
     }
+    // Where the environment or the terminal's answer says so, no note.
+    let kitty_env = env(&[("TERM", "xterm-kitty")]);
+    let forced = choose(Choice::Force(Graphics::Kitty), &kitty_env, FONT, None);
+    assert_eq!((forced.graphics, forced.note), (Graphics::Kitty, None));
+    let answered = parse(KITTY_026.as_bytes()).0;
+    let forced = choose(
+        Choice::Force(Graphics::Kitty),
+        &plain,
+        FONT,
+        Some(&answered),
+    );
+    assert_eq!((forced.graphics, forced.note), (Graphics::Kitty, None));
     let half = Choice::Force(Graphics::HalfBlocks);
     let chosen = choose(half, &env(&[("TERM", "xterm-kitty")]), FONT, None);
     assert_eq!((chosen.graphics, chosen.note), (Graphics::HalfBlocks, None));
