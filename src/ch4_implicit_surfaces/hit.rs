@@ -7,6 +7,8 @@
 
 use glam::Vec3;
 
+use crate::scene::Scene;
+
 /// What kind of surface was hit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Surface {
@@ -40,3 +42,17 @@ pub fn nearest_hit(sdf: Option<SurfaceHit>, mesh: Option<SurfaceHit>) -> Option<
     }
 }
 // ANCHOR_END: nearest_hit
+
+/// A surface's name for a table: "mesh 3 \"short box\"".
+pub fn surface_name(scene: &Scene, surface: Surface) -> String {
+    match surface {
+        Surface::Mesh(i) => match scene.meshes.get(i) {
+            Some(m) if !m.name.is_empty() => format!("mesh {i} \"{}\"", m.name),
+            _ => format!("mesh {i}"),
+        },
+        Surface::Sdf(i) => match scene.sdfs.get(i) {
+            Some(o) if !o.name.is_empty() => format!("sdf {i} \"{}\"", o.name),
+            _ => format!("sdf {i}"),
+        },
+    }
+}

@@ -227,7 +227,11 @@ impl Render for SphereTracingRender {
             }
         }
         lines.push(match m.pixel.hit {
-            Some(h) => format!("nearest hit t {} ({:?})", num(h.t), h.surface),
+            Some(h) => format!(
+                "nearest hit t {} ({})",
+                num(h.t),
+                super::hit::surface_name(&self.scene, h.surface)
+            ),
             None => "nearest hit: none".into(),
         });
         Some(Inspection {

@@ -1,24 +1,11 @@
 //! Names of a scene's surfaces and lights for tables and inspect panels:
 //! "mesh 3 \"floor\"", "0 area, mesh 5 \"light\"".
 
+pub use crate::ch4_implicit_surfaces::hit::surface_name;
 use crate::ch4_implicit_surfaces::hit::Surface;
 use crate::ch5_reflection::light::Light;
 use crate::ch5_reflection::world::World;
 use crate::scene::Scene;
-
-/// A surface's name for a table: "mesh 3 \"short box\"".
-pub fn surface_name(scene: &Scene, surface: Surface) -> String {
-    match surface {
-        Surface::Mesh(i) => match scene.meshes.get(i) {
-            Some(m) if !m.name.is_empty() => format!("mesh {i} \"{}\"", m.name),
-            _ => format!("mesh {i}"),
-        },
-        Surface::Sdf(i) => match scene.sdfs.get(i) {
-            Some(o) if !o.name.is_empty() => format!("sdf {i} \"{}\"", o.name),
-            _ => format!("sdf {i}"),
-        },
-    }
-}
 
 /// A light's name for a table: its kind, and for an area light its mesh.
 pub fn light_name(scene: &Scene, world: &World, index: usize) -> String {
