@@ -390,3 +390,33 @@ pub fn hover_text(app: &App) -> Option<String> {
         )
     })
 }
+
+/// A chapter's title in `room` characters: whole where it fits, else the
+/// part before its colon ("Projection"), else cut at a word with "…".
+pub fn fit_title(title: &str, room: usize) -> String {
+    let len = |s: &str| s.chars().count();
+    if len(title) <= room {
+        return title.to_string();
+    }
+    if let Some((head, _)) = title.split_once(':') {
+        if len(head) <= room {
+            return head.to_string();
+        }
+    }
+    let mut out = String::new();
+    for word in title.split(' ') {
+        let next = if out.is_empty() {
+            word.to_string()
+        } else {
+            format!("{out} {word}")
+        };
+        if len(&next) + 1 > room {
+            break;
+        }
+        out = next;
+    }
+    if out.is_empty() {
+        out = title.chars().take(room.saturating_sub(1)).collect();
+    }
+    format!("{}…", out.trim_end_matches([',', ' ']))
+}

@@ -139,7 +139,12 @@ fn draw_sidebar(app: &App, frame: &mut Frame, area: Rect) {
     let items: Vec<ListItem> = app
         .chapters
         .iter()
-        .map(|c| ListItem::new(format!("{} {}", c.info().number, c.info().title)))
+        .map(|c| {
+            // The box's inner width, less the "> " of the selection.
+            let room = chapters.width.saturating_sub(6) as usize;
+            let title = super::labels::fit_title(c.info().title, room);
+            ListItem::new(format!("{} {title}", c.info().number))
+        })
         .collect();
     let highlight = Style::default().add_modifier(Modifier::BOLD);
     let list = List::new(items)

@@ -759,3 +759,54 @@ fn the_help_scrolls_to_every_key_on_a_short_terminal() {
     let app = update(app, Msg::NextView);
     assert!(!app.help);
 }
+
+#[test]
+fn chapter_titles_are_never_cut_mid_word() {
+    use raystep::tui::labels::fit_title;
+    let t = "Implicit surfaces: signed distance functions and sphere tracing";
+    assert_eq!(fit_title(t, 80), t);
+    assert_eq!(fit_title(t, 26), "Implicit surfaces");
+    assert_eq!(
+        fit_title("Ray-triangle intersection and a BVH", 26),
+        "Ray-triangle intersection…"
+    );
+    assert_eq!(
+        fit_title("Radiometry, lights, BRDFs and the reflection equation", 26),
+        "Radiometry, lights, BRDFs…"
+    );
+    assert_eq!(fit_title("Supercalifragilistic", 6), "Super…");
+    // The real list, at every size: each title whole, its part before the
+    // colon, or cut after a word with "…".
+    let chapters = raystep::chapters::all();
+    let app = App::new(
+        chapters.to_vec(),
+        vec![raystep::tui::scenes::SceneEntry::builtin()],
+        false,
+    );
+    for (w, h) in SIZES {
+        let screen = draw(&app, w, h);
+        for c in &chapters {
+            let info = c.info();
+            let full = info.title;
+            let head = full.split(':').next().unwrap();
+            let row = screen
+                .lines()
+                .find(|l| l.contains(&format!("{} ", info.number)) && l.contains(&full[..4]))
+                .unwrap_or_else(|| panic!("{w}x{h}: no row for chapter {}\n{screen}", info.number));
+            let shown = row
+                .split('│')
+                .nth(1)
+                .unwrap()
+                .trim_start_matches("> ")
+                .trim();
+            let title = shown.split_once(' ').unwrap().1;
+            assert!(
+                title == full
+                    || title == head
+                    || (title.ends_with('…') && full.starts_with(title.trim_end_matches('…'))),
+                "{w}x{h}: chapter {} shows {title:?}",
+                info.number
+            );
+        }
+    }
+}
