@@ -39,7 +39,12 @@ fn render(stage: &SphereTracing, scene: Scene, studies: bool) -> (Report, Vec<Fi
         ..Settings::default()
     };
     let mut r = stage.start(Arc::new(scene), &settings).unwrap();
-    assert!(r.pass().complete);
+    // A coarse first look, then the full pass (one pass below 64 pixels).
+    let mut passes = 1;
+    while !r.pass().complete {
+        passes += 1;
+    }
+    assert!(passes <= 2, "{passes} passes");
     let films = r.snapshot().views;
     (r.report(), films)
 }
@@ -509,4 +514,37 @@ fn over_relaxation_falls_back_when_its_step_is_not_certified() {
     // ω = 1 is plain sphere tracing, step for step.
     let one = over_relaxed(&f, &ray, &m, 1.0);
     assert_eq!((one.steps, one.oversteps), (plain.steps, 0));
+}
+
+/// The first picture comes quickly: a pass at a quarter of the resolution,
+/// enlarged to the full size, then the full pass, whose pictures are the
+/// same as a render without the first look.
+#[test]
+fn a_coarse_first_pass_comes_before_the_full_one() {
+    let scene = Arc::new(crate::common::shipped_scene("sdf-shapes", 128, 96));
+    let stage = DEFAULT;
+    let mut r = stage.start(scene.clone(), &Settings::default()).unwrap();
+    let first = r.pass();
+    assert_eq!((first.done, first.planned, first.complete), (1, 2, false));
+    assert_eq!(first.rays, 32 * 24, "a sixteenth of the rays");
+    let look = r.snapshot().views;
+    assert_eq!(
+        (look[0].width, look[0].height),
+        (128, 96),
+        "enlarged to the full size"
+    );
+    let last = r.pass();
+    assert_eq!((last.done, last.planned, last.complete), (2, 2, true));
+    assert_eq!(last.rays, 128 * 96);
+    let full = r.snapshot().views;
+    assert_ne!(look[0], full[0]);
+    // Small images have one pass.
+    let small = Arc::new(crate::common::shipped_scene("sdf-shapes", 32, 24));
+    assert!(
+        stage
+            .start(small, &Settings::default())
+            .unwrap()
+            .pass()
+            .complete
+    );
 }
