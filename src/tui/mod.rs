@@ -249,9 +249,11 @@ fn event_loop(
     // Scene files are read in a thread of their own, one at a time.
     let (read_tx, read_rx) = std::sync::mpsc::channel();
     let mut reading: Option<(usize, PathBuf)> = None;
-    // The student's warp routine, built and run in a thread of its own.
+    // The student's warp routine, built and run in a thread of its own,
+    // one at a time: a newer request, or closing the view, cancels it.
     let (warp_tx, warp_rx) = std::sync::mpsc::channel();
     let mut warp_sent = None;
+    let mut warp_cancel: Option<std::sync::Arc<std::sync::atomic::AtomicBool>> = None;
     // When the current scene's file was last looked at for edits.
     let mut checked = Instant::now();
     let mut painter = painter::Painter::for_process(app.graphics);
@@ -322,15 +324,26 @@ fn event_loop(
             dirty = true;
         }
         let wanted = app.warp.as_ref().and_then(|w| w.student_requested);
-        if wanted.is_some() && wanted != warp_sent {
+        if wanted != warp_sent {
+            if let Some(old) = warp_cancel.take() {
+                old.store(true, std::sync::atomic::Ordering::SeqCst);
+            }
             warp_sent = wanted;
-            let (tx, out, seed) = (warp_tx.clone(), app.out_dir.clone(), wanted.unwrap_or(1));
-            std::thread::spawn(move || {
-                let _ = tx.send((seed, warp::student_draws(&out, seed)));
-            });
+            if let Some(seed) = wanted {
+                let cancel = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+                warp_cancel = Some(cancel.clone());
+                let (tx, out) = (warp_tx.clone(), app.out_dir.clone());
+                std::thread::spawn(move || {
+                    let _ = tx.send((seed, warp::student_draws(&out, seed, &cancel)));
+                });
+            }
         }
         while let Ok((seed, drawn)) = warp_rx.try_recv() {
-            warp_sent = None;
+            // A cancelled build's late answer must not restart the newer one.
+            if warp_sent == Some(seed) {
+                warp_sent = None;
+                warp_cancel = None;
+            }
             app = update(app, Msg::WarpStudent(seed, drawn));
             dirty = true;
         }

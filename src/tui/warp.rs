@@ -99,10 +99,15 @@ impl WarpView {
 /// The student's routine built and run as the grader runs it (in its
 /// sandbox, under its time limit), drawing [`DEFAULT_DRAWS`] directions
 /// with `seed`; or the one-line reason why not. Takes as long as the
-/// build: the event loop calls it in a thread.
-pub fn student_draws(out: &std::path::Path, seed: u64) -> Result<Drawn, String> {
+/// build: the event loop calls it in a thread, one at a time, and sets
+/// `cancel` when a newer request (or closing the view) makes it moot.
+pub fn student_draws(
+    out: &std::path::Path,
+    seed: u64,
+    cancel: &std::sync::atomic::AtomicBool,
+) -> Result<Drawn, String> {
     let opts = crate::grading::live::LiveOptions::for_out_dir(out)?;
-    crate::grading::live::live_warp(student_warp().id, DEFAULT_DRAWS, seed, &opts, None)
+    crate::grading::live::live_warp(student_warp().id, DEFAULT_DRAWS, seed, &opts, Some(cancel))
         .map_err(|e| e.status())
 }
 

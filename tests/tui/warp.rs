@@ -129,3 +129,22 @@ fn the_book_states_the_warp_tests_constants() {
     assert!(book.contains(&format!("each of {COS_CELLS} × {PHI_CELLS} cells")));
     assert!(book.contains(&format!("a p-value below {SIGNIFICANCE} rejects")));
 }
+
+/// A student build the view no longer wants stops: the event loop sets its
+/// cancel flag when a newer request comes (or the view closes), and the
+/// build ends at once with a cancellation, not minutes later.
+#[test]
+fn a_cancelled_student_build_stops_at_once() {
+    let dir = crate::common::temp_dir("warp-cancel");
+    let cancel = std::sync::atomic::AtomicBool::new(true);
+    let start = std::time::Instant::now();
+    let out = raystep::tui::warp::student_draws(&dir, 1, &cancel);
+    let e = out.err().expect("a cancelled build draws nothing");
+    assert!(e.contains("cancel"), "{e}");
+    assert!(
+        start.elapsed() < std::time::Duration::from_secs(30),
+        "{:?}",
+        start.elapsed()
+    );
+    let _ = std::fs::remove_dir_all(dir);
+}
