@@ -11,30 +11,12 @@ fn root() -> PathBuf {
 /// The images (`figures/....png`) the book's pages show, other than the
 /// wrong pictures and their partners.
 fn images_shown() -> Vec<String> {
-    let mut images = Vec::new();
-    for entry in std::fs::read_dir(root().join("book/src")).unwrap() {
-        let path = entry.unwrap().path();
-        if path.extension().is_none_or(|e| e != "md") {
-            continue;
-        }
-        let text = std::fs::read_to_string(&path).unwrap();
-        for (i, _) in text.match_indices("](figures/") {
-            let rest = &text[i + "](figures/".len()..];
-            let end = rest.find(')').unwrap();
-            // Wrong pictures and their partners come from `diagrams`
-            // (checked below), not from a chapter run.
-            let name = &rest[..end];
-            if name.ends_with(".png")
-                && !name.ends_with("-wrong.png")
-                && !name.ends_with("-right.png")
-            {
-                images.push(rest[..end].to_string());
-            }
-        }
-    }
-    images.sort();
-    images.dedup();
-    images
+    // Wrong pictures and their partners come from `diagrams` (checked
+    // below), not from a chapter run.
+    shown_ending(".png")
+        .into_iter()
+        .filter(|n| !n.ends_with("-wrong.png") && !n.ends_with("-right.png"))
+        .collect()
 }
 
 /// One run of a chapter binary in the script: chapter, scene name, the
@@ -189,11 +171,11 @@ fn shown_ending(ending: &str) -> Vec<String> {
     out
 }
 
-/// What `diagrams --list` names: the file of each diagram and wrong or
-/// right picture.
-fn diagram_list() -> Vec<String> {
+/// The `diagrams` binary run with `args`: its standard output, after
+/// checking that it succeeded.
+fn diagrams(args: &[&std::ffi::OsStr]) -> String {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_diagrams"))
-        .arg("--list")
+        .args(args)
         .output()
         .unwrap();
     assert!(
@@ -201,8 +183,13 @@ fn diagram_list() -> Vec<String> {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    String::from_utf8(out.stdout)
-        .unwrap()
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// What `diagrams --list` names: the file of each diagram and wrong or
+/// right picture.
+fn diagram_list() -> Vec<String> {
+    diagrams(&["--list".as_ref()])
         .lines()
         .map(|l| l.split(':').next().unwrap().to_string())
         .collect()
@@ -216,16 +203,7 @@ fn the_diagrams_are_what_the_code_draws_now() {
         "book/figures.sh does not draw the diagrams"
     );
     let dir = std::env::temp_dir().join(format!("raystep-diagrams-{}", std::process::id()));
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_diagrams"))
-        .arg("--out")
-        .arg(&dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    diagrams(&["--out".as_ref(), dir.as_os_str()]);
     let shown = shown_ending(".svg");
     assert!(
         shown.len() >= 15,
