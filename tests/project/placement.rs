@@ -82,7 +82,10 @@ fn check(chapter_index: usize, scene: Scene) {
             .zip(&moved)
             .map(|(a, b)| (a - b).abs() / tolerance)
             .fold(0.0, f64::max);
-        println!("chapter {n}, {} at {label}: worst block {worst:.2} of the tolerance", scene.name);
+        println!(
+            "chapter {n}, {} at {label}: worst block {worst:.2} of the tolerance",
+            scene.name
+        );
         for (k, (a, b)) in origin.iter().zip(&moved).enumerate() {
             assert!(
                 (a - b).abs() <= tolerance,

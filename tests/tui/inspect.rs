@@ -290,7 +290,10 @@ fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
     assert!(ch4[0].starts_with("no SDF objects"), "{ch4:?}");
     assert!(ch4[1].starts_with("nearest hit t "), "{ch4:?}");
     // The surface by its scene name, not a Rust name such as Mesh(3).
-    assert!(ch4[1].contains("(mesh ") && !ch4[1].contains("Mesh("), "{ch4:?}");
+    assert!(
+        ch4[1].contains("(mesh ") && !ch4[1].contains("Mesh("),
+        "{ch4:?}"
+    );
     let ch5 = story(5, &scene, (16, 20));
     assert!(ch5[0].starts_with("sample 0: L = "), "{ch5:?}");
     assert!(ch5.iter().any(|l| l.starts_with("light 0 area")), "{ch5:?}");
@@ -298,7 +301,10 @@ fn chapters_3_to_5_tell_their_own_story_in_the_panel() {
     let ch4 = story(4, &sdf, (16, 12));
     assert!(ch4[0].starts_with("sphere tracing: "), "{ch4:?}");
     assert!(ch4.iter().any(|l| l.starts_with("   0: t 0 f ")), "{ch4:?}");
-    let hit = ch4.iter().find(|l| l.starts_with("nearest hit t ")).unwrap();
+    let hit = ch4
+        .iter()
+        .find(|l| l.starts_with("nearest hit t "))
+        .unwrap();
     assert!(hit.contains("(sdf ") && !hit.contains("Sdf("), "{hit}");
     // The panel shows the story of the pixel under the cursor.
     let ch3_stage = raystep::chapters::all()[2];
