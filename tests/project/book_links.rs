@@ -212,3 +212,39 @@ fn the_coverage_page_quotes_real_slides_and_leaves_no_topic_out() {
         );
     }
 }
+
+#[test]
+fn the_appendix_is_a_lesson_of_at_most_2500_words() {
+    let text = std::fs::read_to_string(book_src().join("making-it-fast.md")).unwrap();
+    let words = text.split_whitespace().count();
+    assert!(
+        words <= 2500,
+        "making-it-fast.md has {words} words, more than 2,500"
+    );
+    assert!(words >= 1000, "making-it-fast.md has only {words} words");
+}
+
+#[test]
+fn every_chapter_ends_with_key_ideas_what_to_try_and_further_reading() {
+    for (name, text) in pages() {
+        if !name.starts_with("ch") || !name.as_bytes()[2].is_ascii_digit() {
+            continue;
+        }
+        let summary = text
+            .split("\n## Summary\n")
+            .nth(1)
+            .unwrap_or_else(|| panic!("{name} has no closing ## Summary section"));
+        assert!(
+            !summary.contains("\n## "),
+            "{name}: the summary is not the last section"
+        );
+        for part in ["**Key ideas.**", "**What to try.**", "**Further reading.**"] {
+            assert!(summary.contains(part), "{name}: the summary lacks {part}");
+        }
+        let commands = summary.split("**What to try.**").nth(1).unwrap();
+        assert!(
+            commands.contains("```sh\ncargo run --release --bin ch"),
+            "{name}: what to try gives no command"
+        );
+    }
+}
