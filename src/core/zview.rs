@@ -82,6 +82,10 @@ pub struct Verdict {
     /// The worst block's mean, over its pixels and the three channels: the
     /// render's and the reference's.
     pub means: (f64, f64),
+    /// Whether the render's samples in the worst block all agreed
+    /// (variance 0): then its noise is not yet seen, and a difference
+    /// says too few samples, not a bias (a rare light no sample found).
+    pub unseen: bool,
 }
 
 /// Compares `render` with `reference` (each with its standard error per
@@ -100,10 +104,12 @@ pub fn verdict(
         worst_z: 0.0,
         at: (0, 0),
         means: (0.0, 0.0),
+        unseen: false,
     };
     for by in (0..h).step_by(BLOCK as usize) {
         for bx in (0..w).step_by(BLOCK as usize) {
             let (mut a, mut b, mut var, mut n) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO, 0.0);
+            let mut own = DVec3::ZERO;
             for y in by..(by + BLOCK).min(h) {
                 for x in bx..(bx + BLOCK).min(w) {
                     a += render.get(x, y).as_dvec3();
@@ -113,6 +119,7 @@ pub fn verdict(
                         reference_stderr.get(x, y).as_dvec3(),
                     );
                     var += sa * sa + sb * sb;
+                    own += sa * sa;
                     n += 1.0;
                 }
             }
@@ -136,6 +143,7 @@ pub fn verdict(
                 v.worst_z = z;
                 v.at = (bx, by);
                 v.means = (a.element_sum() / 3.0, b.element_sum() / 3.0);
+                v.unseen = own.max_element() == 0.0;
             }
         }
     }
@@ -163,6 +171,12 @@ impl Verdict {
             return [
                 "verdict: within noise".into(),
                 format!("max |z| {z} (limit {Z_MAX})"),
+            ];
+        }
+        if self.unseen && a.is_finite() {
+            return [
+                "verdict: too few samples".into(),
+                format!("at ({x}, {y}) they all agree: render longer"),
             ];
         }
         if !self.worst_z.is_finite() || !a.is_finite() {

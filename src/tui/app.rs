@@ -19,6 +19,19 @@ use crate::core::film::Film;
 use crate::core::stage::{Chapter, Inspection, Settings};
 use crate::grading::FailureImages;
 
+/// A render pinned to compare others against.
+#[derive(Clone, Debug)]
+pub struct Pinned {
+    /// The chapter and scene it was pinned in: it is compared only there.
+    pub at: (usize, String),
+    /// What it was: "mis-sobol, 256 spp".
+    pub label: String,
+    /// Its image.
+    pub image: Film,
+    /// Its standard error per pixel and channel, where known.
+    pub stderr: Option<Film>,
+}
+
 /// The highest bounce count the bounce control steps to.
 pub const MAX_BOUNCE: u32 = 16;
 
@@ -58,6 +71,10 @@ pub struct App {
     pub region: Option<(u32, u32, u32, u32)>,
     /// Its first corner, while `b` waits for the second.
     pub region_anchor: Option<(u32, u32)>,
+    /// A render pinned with `p` to compare others against (tev's
+    /// reference pinning): its chapter and scene, a label, its image and
+    /// its standard error where the chapter keeps one.
+    pub pinned: Option<Pinned>,
     /// How many keys the help overlay has scrolled past.
     pub help_scroll: usize,
     /// Automatic exposure chosen with `a` (`None`: on for the dark
@@ -173,6 +190,7 @@ impl App {
             exposure: 0,
             auto_exposure: None,
             help_scroll: 0,
+            pinned: None,
             region: None,
             region_anchor: None,
             curves: BTreeMap::new(),
@@ -334,6 +352,7 @@ impl App {
                 .snapshot
                 .as_ref()
                 .is_some_and(|s| s.reference.is_some())
+            || self.pinned_here().is_some()
     }
 
     /// Starts over: a new generation, no picture yet.

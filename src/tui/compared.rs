@@ -13,7 +13,7 @@
 
 use std::borrow::Cow;
 
-use super::app::{combine_layers, App, Compare};
+use super::app::{combine_layers, App, Compare, Pinned};
 use crate::core::film::Film;
 use crate::core::zview::{verdict, z_film, Verdict};
 
@@ -47,10 +47,9 @@ impl App {
                 )));
             }
         }
-        let snap = self.snapshot.as_ref()?;
-        let reference = snap
-            .reference
-            .as_ref()
+        let reference = self
+            .reference_pair()
+            .map(|(r, _)| r)
             .filter(|r| (r.width, r.height) == (film.width, film.height));
         match reference {
             Some(r) if self.view == 0 => Some(self.compare.apply(film, r)),
@@ -70,9 +69,66 @@ impl App {
             (None, None) => {}
         }
         let film = self.main_film().filter(|_| self.view == 0)?;
-        let reference = self.snapshot.as_ref()?.reference.as_ref()?;
+        let (reference, _) = self.reference_pair()?;
         ((reference.width, reference.height) == (film.width, film.height))
             .then_some((film, reference))
+    }
+
+    /// What the render is compared with, and that image's standard error
+    /// where known: the render pinned with `p` in this chapter and scene,
+    /// else the stage's reference.
+    pub fn reference_pair(&self) -> Option<(&Film, Option<&Film>)> {
+        if let Some(p) = self.pinned_here() {
+            return Some((&p.image, p.stderr.as_ref()));
+        }
+        let snap = self.snapshot.as_ref()?;
+        Some((snap.reference.as_ref()?, snap.reference_stderr.as_ref()))
+    }
+
+    /// The pinned render, if it was pinned in this chapter and scene.
+    pub fn pinned_here(&self) -> Option<&Pinned> {
+        let scene = self.current_scene()?.name.as_str();
+        self.pinned
+            .as_ref()
+            .filter(|p| p.at.0 == self.chapter && p.at.1 == scene)
+    }
+
+    /// `p`: pins the render shown (its whole image and standard error) so
+    /// that the compare views set the next renders against it, e.g. another
+    /// estimator's; again, unpins.
+    pub fn toggle_pin(&mut self) {
+        if self.pinned_here().is_some() {
+            self.pinned = None;
+            self.message = "unpinned: compared with the reference again".into();
+            return;
+        }
+        let (Some(snap), Some(scene)) = (self.snapshot.as_ref(), self.current_scene()) else {
+            self.message = "nothing rendered to pin yet".into();
+            return;
+        };
+        let Some(image) = snap.views.first() else {
+            return;
+        };
+        let info = self.current_chapter().map(|c| c.info());
+        let stderr = info
+            .and_then(|i| i.views.iter().position(|v| v.name == "stderr"))
+            .and_then(|k| snap.views.get(k))
+            .cloned();
+        let variant = info
+            .and_then(|i| i.variants.get(self.variant))
+            .map_or(String::new(), |v| format!("{}, ", v.name));
+        let label = format!("{variant}{} spp", snap.samples);
+        let pinned = Pinned {
+            at: (self.chapter, scene.name.clone()),
+            label,
+            image: image.clone(),
+            stderr,
+        };
+        self.message = format!(
+            "pinned {}: r compares the renders that follow with it",
+            pinned.label
+        );
+        self.pinned = Some(pinned);
     }
 
     /// The selected view, or for the main view the selected bounces.
@@ -100,8 +156,8 @@ impl App {
         let stderr = snap
             .views
             .get(info.views.iter().position(|v| v.name == "stderr")?)?;
-        let (reference, reference_stderr) =
-            (snap.reference.as_ref()?, snap.reference_stderr.as_ref()?);
+        let (reference, reference_stderr) = self.reference_pair()?;
+        let reference_stderr = reference_stderr?;
         let image = self.main_film()?;
         let size = (image.width, image.height);
         [stderr, reference, reference_stderr]
@@ -132,7 +188,7 @@ impl App {
         let main = self.view == 0
             && self.snapshot.as_ref().is_some_and(|s| {
                 let size = s.views.first().map(|v| (v.width, v.height));
-                s.reference.as_ref().map(|r| (r.width, r.height)) == size
+                self.reference_pair().map(|(r, _)| (r.width, r.height)) == size
             });
         self.compare.is_difference()
             && (self.grading.is_some() || self.student_render().is_some() || main)

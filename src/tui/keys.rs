@@ -28,7 +28,10 @@ pub const KEYS: &[(&str, &str)] = &[
     ("]  [", "one bounce more / less (chapters with bounces)"),
     ("m", "toggle \"exactly k\" / \"up to k\" bounces"),
     ("r", "render → reference → difference → relative difference"),
-    ("f", "flip: render ↔ reference (A/B)"),
+    (
+        "f  p",
+        "flip render ↔ reference (A/B); p: pin this render as it",
+    ),
     (
         "g",
         "grader's newest failed image: student / reference / diff",
@@ -134,6 +137,7 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         KeyCode::Char('0') => Msg::ExposureReset,
         KeyCode::Char('a') => Msg::ToggleAutoExposure,
         KeyCode::Char('b') => Msg::MarkRegion,
+        KeyCode::Char('p') => Msg::TogglePin,
         KeyCode::Char(']') => Msg::BounceUp,
         KeyCode::Char('[') => Msg::BounceDown,
         KeyCode::Char('m') => Msg::ToggleBounceMode,

@@ -191,6 +191,11 @@ pub fn preview_title_parts(app: &App) -> Vec<String> {
             parts.push(format!("full colour at ±{scale}"));
         }
     }
+    // A pinned render stands in for the reference: say which.
+    if let Some(p) = app.pinned_here().filter(|_| compare != Compare::Render) {
+        parts[0] = parts[0].replace("reference", "pinned");
+        parts.insert(1, format!("pinned {}", p.label));
+    }
     if main {
         parts.push(app.view_name().to_string());
     }

@@ -35,6 +35,7 @@ pub mod pool;
 pub mod query;
 pub mod readouts;
 pub mod region;
+pub mod save;
 pub mod scenes;
 pub mod screen;
 pub mod shown;

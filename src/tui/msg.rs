@@ -96,6 +96,8 @@ pub enum Msg {
         /// Terminal height in cells.
         height: u16,
     },
+    /// `p`: pin the render shown to compare the next ones against, or unpin.
+    TogglePin,
     /// `b`: a region's corner at the cursor, or clear the region.
     MarkRegion,
     /// The mouse moved to a cell.

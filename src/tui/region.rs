@@ -59,17 +59,15 @@ pub fn region_summary(app: &App) -> Vec<String> {
         .and_then(|i| i.views.iter().position(|v| v.name == "stderr"))
         .and_then(|k| snap.views.get(k))
         .filter(|s| main && (s.width, s.height) == (film.width, film.height));
-    let reference = snap
-        .reference
-        .as_ref()
-        .filter(|r| main && (r.width, r.height) == (film.width, film.height));
-    let reference = reference.map(|r| {
-        let err = snap
-            .reference_stderr
-            .as_ref()
-            .filter(|e| (e.width, e.height) == (r.width, r.height));
-        (r, err)
-    });
+    let reference = app
+        .reference_pair()
+        .filter(|(r, _)| main && (r.width, r.height) == (film.width, film.height))
+        .map(|(r, err)| {
+            (
+                r,
+                err.filter(|e| (e.width, e.height) == (r.width, r.height)),
+            )
+        });
     let mut lines = region_lines(region, &film, stderr, reference);
     let (x0, y0, x1, y1) = region;
     let (x1, y1) = (x1.min(film.width - 1), y1.min(film.height - 1));

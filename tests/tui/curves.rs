@@ -19,7 +19,7 @@ use super::inspect::rendered;
 
 /// The current job rendered to completion with the real chapter 6 (8 spp
 /// at 64x64), fed to the UI.
-fn render_current(app: App) -> App {
+pub(crate) fn render_current(app: App) -> App {
     let job = app.job().unwrap();
     let settings = Settings {
         spp: 8,

@@ -11,6 +11,7 @@ mod graphics;
 mod inspect;
 mod layout_and_keys;
 mod painter;
+mod pin;
 mod region;
 mod signals;
 mod sizes_and_keys;

@@ -88,6 +88,18 @@ fn noise_is_within_noise_and_a_bias_of_a_few_standard_errors_per_block_is_not() 
     // Darker, and a NaN.
     let (dark, err) = noisy(w, h, 0.1, -0.1);
     assert!(verdict(&dark, &err, &reference, &ref_err).lines()[0].ends_with("darker"));
+    // A block whose samples all agreed (variance 0, a light no sample
+    // found yet) is too few samples, not a bias.
+    let (mut dark, mut err) = noisy(w, h, 0.1, 0.0);
+    for y in 0..8 {
+        for x in 0..8 {
+            *dark.get_mut(x, y) = Vec3::ZERO;
+            *err.get_mut(x, y) = Vec3::ZERO;
+        }
+    }
+    let v = verdict(&dark, &err, &reference, &flat(w, h, 0.001));
+    assert!(v.unseen && !v.within_noise(), "{v:?}");
+    assert_eq!(v.lines()[0], "verdict: too few samples");
     let mut nan = render.clone();
     nan.pixels[100] = Vec3::splat(f32::NAN);
     let v = verdict(&nan, &err, &reference, &ref_err);
