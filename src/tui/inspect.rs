@@ -37,13 +37,18 @@ pub fn inspect_lines(app: &App) -> Vec<String> {
     };
     let mut lines = vec![format!("pixel ({x}, {y})")];
     lines.extend(super::region::region_summary(app));
+    // Radiance chapters' views hold values (radiance, its standard
+    // error); the others' are colours made for showing (a depth as grey, a
+    // normal as n/2 + 1/2), which the story below gives as numbers.
+    let radiance = chapter.info().radiance;
     for (view, film) in chapter.info().views.iter().zip(&snap.views) {
         if let Some(v) = rgb(film, x, y) {
             let name = match view.name {
                 "stderr" => "± std error",
                 other => other,
             };
-            lines.push(format!("{name}: {v}"));
+            let shown = if radiance { "" } else { " (display colour)" };
+            lines.push(format!("{name}{shown}: {v}"));
         }
     }
     if let (Some(layers), Some(image)) = (&snap.layers, snap.views.first()) {

@@ -351,3 +351,40 @@ fn with_a_graphics_protocol_a_click_maps_through_the_scaled_picture() {
     assert_eq!(at(r.x - 1, r.y), None);
     assert_eq!(at(r.x, r.bottom()), None);
 }
+
+/// The panel says which numbers are values and which are colours made for
+/// showing: chapter 6's image and standard error are radiance; chapter 3's
+/// views (depth, normal, …) are display colours.
+#[test]
+fn display_colours_are_named_as_such() {
+    let ch6 = update(rendered(), Msg::ToggleInspect);
+    let lines = inspect_lines(&ch6);
+    assert!(lines.iter().any(|l| l.starts_with("image: ")), "{lines:?}");
+    assert!(
+        !lines.iter().any(|l| l.contains("(display colour)")),
+        "{lines:?}"
+    );
+    let ch3 = raystep::chapters::all()[2];
+    let scene = Scene::builtin().with_resolution(32, 32).unwrap();
+    let entry = SceneEntry {
+        name: "cornell-box".into(),
+        source: "<built-in>".into(),
+        scene: Ok(Arc::new(scene)),
+        pending: None,
+        modified: None,
+    };
+    let app = App::new(vec![ch3], vec![entry], false);
+    let job = app.job().unwrap();
+    let mut render = ch3.start(job.scene, &Settings::default()).unwrap();
+    while !render.pass().complete {}
+    let state = RenderState::capture(&*render, job.generation, Duration::ZERO, true);
+    let app = update(app, Msg::Progress(Progress::State(Box::new(state))));
+    let app = update(app, Msg::ToggleInspect);
+    let lines = inspect_lines(&app);
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with("depth (display colour): ")),
+        "{lines:?}"
+    );
+}
