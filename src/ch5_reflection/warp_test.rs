@@ -1,22 +1,25 @@
 //! Chapter 5's sampling routines as warp tests
 //! ([`crate::core::warp_test`]): uniform and cosine-weighted hemisphere
-//! directions, and directions towards a square area light. The terminal
+//! directions, directions towards a square area light, and the glossy and
+//! semi-gloss lobes' directions for light arriving at 45°. The terminal
 //! UI's warp view (`w`) lists them.
 
 use std::sync::OnceLock;
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use crate::core::warp_test::{StudentWarp, WarpRoutine};
 use crate::scene::mesh::Mesh;
 
 use super::light::area::AreaLight;
+use super::material::glossy::Glossy;
+use super::material::semigloss::SemiGloss;
 use super::warp::{
     cosine_hemisphere, cosine_hemisphere_pdf, uniform_hemisphere, UNIFORM_HEMISPHERE_PDF,
 };
 
 /// The routines, in the order the warp view shows them.
-pub const ROUTINES: [WarpRoutine; 3] = [
+pub const ROUTINES: [WarpRoutine; 5] = [
     WarpRoutine {
         name: "uniform hemisphere",
         sample: |u| Some(uniform_hemisphere(u)),
@@ -38,7 +41,50 @@ pub const ROUTINES: [WarpRoutine; 3] = [
         sample: |u| test_light().sample_li(Vec3::ZERO, u).map(|s| s.wi),
         pdf: |w| light_pdf(test_light(), w),
     },
+    WarpRoutine {
+        name: "glossy lobe (n = 20, light at 45°)",
+        sample: |u| GLOSSY.sample(WO, u).map(|s| s.wi),
+        pdf: |w| GLOSSY.pdf(WO, w),
+    },
+    WarpRoutine {
+        name: "semi-gloss paint (ks = 0.3, n = 50, light at 45°)",
+        // The lobe is picked by u.x, which is then rescaled to be uniform
+        // again: the two numbers stay independent and uniform.
+        sample: |u| {
+            let p = SEMIGLOSS.coat_probability();
+            let (x, lobe) = if u.x < p {
+                (u.x / p, 0.0)
+            } else {
+                ((u.x - p) / (1.0 - p), 1.0)
+            };
+            SEMIGLOSS
+                .sample(WO, Vec2::new(x.min(1.0 - f32::EPSILON), u.y), lobe)
+                .map(|s| s.wi)
+        },
+        pdf: |w| SEMIGLOSS.pdf(WO, w),
+    },
 ];
+
+/// The outgoing direction the two lobes are tested for: 45° from the
+/// normal.
+const WO: Vec3 = Vec3::new(
+    std::f32::consts::FRAC_1_SQRT_2,
+    0.0,
+    std::f32::consts::FRAC_1_SQRT_2,
+);
+
+/// The glossy lobe the warp view tests.
+const GLOSSY: Glossy = Glossy {
+    rs: Vec3::ONE,
+    n: 20.0,
+};
+
+/// The semi-gloss paint the warp view tests: the lecture's red paint.
+const SEMIGLOSS: SemiGloss = SemiGloss {
+    rho: Vec3::new(0.8, 0.1, 0.1),
+    ks: 0.3,
+    n: 50.0,
+};
 
 /// Exercise 5.2's routine, which the warp view can test with the
 /// student's code: the directions must have density cos θ / π.

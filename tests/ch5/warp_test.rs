@@ -57,9 +57,10 @@ fn the_built_in_routines_are_accepted() {
             let t = routine.run(DEFAULT_DRAWS, seed);
             assert!(t.passes(), "{}: {}", t.name, t.verdict());
             assert_eq!(t.observed.len(), COS_CELLS * PHI_CELLS);
-            // A hemisphere covers half the cells; the light, seen from
-            // the origin, about a tenth.
-            let cells = if index == 2 { 40 } else { 200 };
+            // A hemisphere covers half the cells (the semi-gloss paint's
+            // diffuse base too); the light, seen from the origin, and the
+            // glossy lobe far fewer.
+            let cells = if index == 2 || index == 3 { 40 } else { 200 };
             assert!(t.dof > cells, "{}: {} degrees of freedom", t.name, t.dof);
             let total: f64 = t.observed.iter().sum::<f64>() + t.lost.0;
             assert_eq!(total, DEFAULT_DRAWS as f64);
