@@ -255,6 +255,8 @@ fn event_loop(
     let (warp_tx, warp_rx) = std::sync::mpsc::channel();
     let mut warp_sent = None;
     let mut warp_cancel: Option<std::sync::Arc<std::sync::atomic::AtomicBool>> = None;
+    let (builtin_tx, builtin_rx) = std::sync::mpsc::channel();
+    let mut builtin_sent: Option<(usize, u64)> = None;
     // When the current scene's file was last looked at for edits.
     let mut checked = Instant::now();
     let mut painter = painter::Painter::for_process(app.graphics);
@@ -338,6 +340,25 @@ fn event_loop(
                     let _ = tx.send((seed, warp::student_draws(&out, seed, &cancel)));
                 });
             }
+        }
+        // A built-in routine's directions, drawn off the UI thread.
+        let builtin = app
+            .warp
+            .as_ref()
+            .and_then(|w| w.pending.map(|s| (w.index, s)));
+        if builtin.is_some() && builtin != builtin_sent {
+            builtin_sent = builtin;
+            let ((index, seed), tx) = (builtin.unwrap_or_default(), builtin_tx.clone());
+            std::thread::spawn(move || {
+                if let Some(t) = warp::builtin_test(index, seed) {
+                    let _ = tx.send((index, seed, t));
+                }
+            });
+        }
+        while let Ok((index, seed, test)) = builtin_rx.try_recv() {
+            builtin_sent = builtin_sent.filter(|b| *b != (index, seed));
+            app = update(app, Msg::WarpBuiltin(index, seed, Box::new(test)));
+            dirty = true;
         }
         while let Ok((seed, drawn)) = warp_rx.try_recv() {
             // A cancelled build's late answer must not restart the newer one.

@@ -122,6 +122,8 @@ pub enum Msg {
     SceneRead(usize, std::path::PathBuf, super::scenes::Read),
     /// The student's routine drew (seed, its draws or why not).
     WarpStudent(u64, Result<crate::core::warp_test::Drawn, String>),
+    /// A built-in routine's test, drawn in a thread: routine, seed, test.
+    WarpBuiltin(usize, u64, Box<crate::core::warp_test::WarpTest>),
     /// Quit.
     Quit,
     /// Esc: close what is open (the help, the path table, inspect mode,

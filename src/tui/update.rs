@@ -294,6 +294,11 @@ fn step(mut app: App, msg: Msg) -> App {
             }
         }
         Msg::SceneRead(index, path, read) => app.scene_read(index, &path, read),
+        Msg::WarpBuiltin(index, seed, test) => {
+            if let Some(w) = app.warp.as_mut() {
+                w.builtin_done(index, seed, *test);
+            }
+        }
         Msg::WarpStudent(seed, drawn) => {
             if let Some(w) = app.warp.as_mut() {
                 w.student_drawn(seed, drawn);

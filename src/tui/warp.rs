@@ -32,6 +32,10 @@ pub struct WarpView {
     /// event loop does it in a thread and answers with
     /// [`crate::tui::app::Msg::WarpStudent`]).
     pub student_requested: Option<u64>,
+    /// A built-in routine is to be tested with this seed: the event loop
+    /// draws its directions in a thread, off the UI's, and answers with
+    /// [`crate::tui::app::Msg::WarpBuiltin`].
+    pub pending: Option<u64>,
 }
 
 /// How many routines the view cycles through: the built-in ones and the
@@ -49,8 +53,9 @@ impl WarpView {
             Some(r) => WarpView {
                 index,
                 seed,
-                test: Ok(r.run(DEFAULT_DRAWS, seed)),
+                test: Err(format!("drawing {DEFAULT_DRAWS} directions of {}…", r.name)),
                 student_requested: None,
+                pending: Some(seed),
             },
             None => WarpView {
                 index,
@@ -61,6 +66,7 @@ impl WarpView {
                     student_warp().id.replace('/', "-reflection/exercises/")
                 )),
                 student_requested: Some(seed),
+                pending: None,
             },
         }
     }
@@ -83,6 +89,15 @@ impl WarpView {
         WarpView::new(self.index, self.seed + 1)
     }
 
+    /// A built-in routine's test, drawn in a thread for routine `index`
+    /// and `seed`; ignored unless the view still waits for it.
+    pub fn builtin_done(&mut self, index: usize, seed: u64, test: WarpTest) {
+        if self.index == index && self.seed == seed {
+            self.test = Ok(test);
+            self.pending = None;
+        }
+    }
+
     /// The student's draws (or why there are none) for seed `seed`,
     /// tested against the density the exercise's contract names; ignored
     /// unless the view still waits for them.
@@ -94,6 +109,14 @@ impl WarpView {
         let pdf = student_warp().pdf;
         self.test = drawn.map(|d| d.test(student_warp().name, &pdf));
     }
+}
+
+/// Built-in routine `index`'s test with `seed` ([`DEFAULT_DRAWS`]
+/// directions and the χ² test): what the event loop runs in a thread.
+pub fn builtin_test(index: usize, seed: u64) -> Option<WarpTest> {
+    warp_routines()
+        .get(index)
+        .map(|r| r.run(DEFAULT_DRAWS, seed))
 }
 
 /// The student's routine built and run as the grader runs it (in its

@@ -10,10 +10,27 @@ use raystep::tui::scenes::SceneEntry;
 use raystep::tui::update::update;
 use raystep::tui::view::view;
 
+/// A key, then what the event loop does in its thread: a built-in
+/// routine's pending test drawn and answered.
 fn key(app: App, code: KeyCode) -> App {
     let msg = msg_for_key(&app, KeyEvent::new(code, KeyModifiers::NONE));
-    match msg {
+    let app = match msg {
         Some(m) => update(app, m),
+        None => app,
+    };
+    match app
+        .warp
+        .as_ref()
+        .and_then(|w| w.pending.map(|s| (w.index, s)))
+    {
+        Some((index, seed)) => {
+            assert!(
+                app.warp.as_ref().unwrap().test.is_err(),
+                "drawn off the UI thread"
+            );
+            let test = raystep::tui::warp::builtin_test(index, seed).unwrap();
+            update(app, Msg::WarpBuiltin(index, seed, Box::new(test)))
+        }
         None => app,
     }
 }
