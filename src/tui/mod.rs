@@ -49,6 +49,7 @@ pub mod terminal;
 pub mod update;
 pub mod view;
 pub mod warp;
+pub mod warp_jobs;
 pub mod worker;
 pub mod zoom;
 
@@ -250,13 +251,8 @@ fn event_loop(
     // Scene files are read in a thread of their own, one at a time.
     let (read_tx, read_rx) = std::sync::mpsc::channel();
     let mut reading: Option<(usize, PathBuf)> = None;
-    // The student's warp routine, built and run in a thread of its own,
-    // one at a time: a newer request, or closing the view, cancels it.
-    let (warp_tx, warp_rx) = std::sync::mpsc::channel();
-    let mut warp_sent = None;
-    let mut warp_cancel: Option<std::sync::Arc<std::sync::atomic::AtomicBool>> = None;
-    let (builtin_tx, builtin_rx) = std::sync::mpsc::channel();
-    let mut builtin_sent: Option<(usize, u64)> = None;
+    // The warp view's draws and the student's builds, off the UI thread.
+    let mut warp_jobs = warp_jobs::WarpJobs::default();
     // When the current scene's file was last looked at for edits.
     let mut checked = Instant::now();
     let mut painter = painter::Painter::for_process(app.graphics);
@@ -326,47 +322,8 @@ fn event_loop(
             app = update(app, Msg::SceneRead(index, path, read));
             dirty = true;
         }
-        let wanted = app.warp.as_ref().and_then(|w| w.student_requested);
-        if wanted != warp_sent {
-            if let Some(old) = warp_cancel.take() {
-                old.store(true, std::sync::atomic::Ordering::SeqCst);
-            }
-            warp_sent = wanted;
-            if let Some(seed) = wanted {
-                let cancel = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
-                warp_cancel = Some(cancel.clone());
-                let (tx, out) = (warp_tx.clone(), app.out_dir.clone());
-                std::thread::spawn(move || {
-                    let _ = tx.send((seed, warp::student_draws(&out, seed, &cancel)));
-                });
-            }
-        }
-        // A built-in routine's directions, drawn off the UI thread.
-        let builtin = app
-            .warp
-            .as_ref()
-            .and_then(|w| w.pending.map(|s| (w.index, s)));
-        if builtin.is_some() && builtin != builtin_sent {
-            builtin_sent = builtin;
-            let ((index, seed), tx) = (builtin.unwrap_or_default(), builtin_tx.clone());
-            std::thread::spawn(move || {
-                if let Some(t) = warp::builtin_test(index, seed) {
-                    let _ = tx.send((index, seed, t));
-                }
-            });
-        }
-        while let Ok((index, seed, test)) = builtin_rx.try_recv() {
-            builtin_sent = builtin_sent.filter(|b| *b != (index, seed));
-            app = update(app, Msg::WarpBuiltin(index, seed, Box::new(test)));
-            dirty = true;
-        }
-        while let Ok((seed, drawn)) = warp_rx.try_recv() {
-            // A cancelled build's late answer must not restart the newer one.
-            if warp_sent == Some(seed) {
-                warp_sent = None;
-                warp_cancel = None;
-            }
-            app = update(app, Msg::WarpStudent(seed, drawn));
+        for msg in warp_jobs.step(app.warp.as_deref(), &app.out_dir) {
+            app = update(app, msg);
             dirty = true;
         }
         if app.trace_requested != sent_trace {

@@ -174,3 +174,36 @@ fn a_cancelled_student_build_stops_at_once() {
     );
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// The event loop's part, as it runs it: `WarpJobs::step` starts a
+/// built-in routine's draws in a thread once, and hands back the answer as
+/// the message that fills the view.
+#[test]
+fn warp_jobs_draw_a_builtin_routine_in_a_thread_once() {
+    let app = App::new(raystep::chapters::all(), vec![SceneEntry::builtin()], false);
+    let mut app = update(app, Msg::ToggleWarp);
+    assert!(
+        app.warp.as_ref().unwrap().test.is_err(),
+        "not drawn on the UI thread"
+    );
+    let mut jobs = raystep::tui::warp_jobs::WarpJobs::default();
+    let dir = std::env::temp_dir();
+    let start = std::time::Instant::now();
+    let mut answers = 0;
+    while app.warp.as_ref().unwrap().test.is_err() {
+        assert!(start.elapsed().as_secs() < 60, "no answer");
+        for msg in jobs.step(app.warp.as_deref(), &dir) {
+            answers += 1;
+            app = update(app, msg);
+        }
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    assert_eq!(answers, 1, "started once, answered once");
+    let t = app.warp.as_ref().unwrap().test.as_ref().unwrap();
+    assert_eq!(t.name, "uniform hemisphere");
+    assert!(t.passes());
+    assert!(
+        jobs.step(app.warp.as_deref(), &dir).is_empty(),
+        "nothing more to do"
+    );
+}
