@@ -28,15 +28,6 @@ impl App {
     /// (the common case: a view or the reference as it is), so a redraw
     /// does not copy a whole film.
     pub fn displayed_ref(&self) -> Option<Cow<'_, Film>> {
-        let pair = match (&self.grading, &self.student) {
-            (Some(g), _) => Some((&g.student, &g.reference)),
-            (None, Some(s)) => Some((&s.render.as_ref()?.student, &s.render.as_ref()?.reference)),
-            (None, None) => None,
-        };
-        if let Some((student, reference)) = pair {
-            return Some(self.compare.apply(Cow::Borrowed(student), reference));
-        }
-        let film = self.main_film()?;
         if self.compare == Compare::Z {
             if let Some((image, stderr, reference, reference_stderr)) = self.z_inputs() {
                 return Some(Cow::Owned(z_film(
@@ -47,31 +38,40 @@ impl App {
                 )));
             }
         }
-        let reference = self
-            .reference_pair()
-            .map(|(r, _)| r)
-            .filter(|r| (r.width, r.height) == (film.width, film.height));
-        match reference {
-            Some(r) if self.view == 0 => Some(self.compare.apply(film, r)),
-            _ => Some(film),
+        match self.film_and_reference()? {
+            (film, Some(reference)) => Some(self.compare.apply(film, reference)),
+            (film, None) => Some(film),
         }
     }
 
     /// The render (the selected bounces, or the student's image) and the
     /// reference it is compared with, when there is one of its size.
     pub fn compared_pair(&self) -> Option<(Cow<'_, Film>, &Film)> {
+        match self.film_and_reference()? {
+            (film, Some(reference)) => Some((film, reference)),
+            (_, None) => None,
+        }
+    }
+
+    /// The film shown before comparing (the student's image, or the
+    /// selected view and bounces) and, where it is compared, what with:
+    /// the grader's reference, or for the main view a reference of its
+    /// size.
+    fn film_and_reference(&self) -> Option<(Cow<'_, Film>, Option<&Film>)> {
         match (&self.grading, &self.student) {
-            (Some(g), _) => return Some((Cow::Borrowed(&g.student), &g.reference)),
+            (Some(g), _) => return Some((Cow::Borrowed(&g.student), Some(&g.reference))),
             (None, Some(s)) => {
                 let r = s.render.as_ref()?;
-                return Some((Cow::Borrowed(&r.student), &r.reference));
+                return Some((Cow::Borrowed(&r.student), Some(&r.reference)));
             }
             (None, None) => {}
         }
-        let film = self.main_film().filter(|_| self.view == 0)?;
-        let (reference, _) = self.reference_pair()?;
-        ((reference.width, reference.height) == (film.width, film.height))
-            .then_some((film, reference))
+        let film = self.main_film()?;
+        let reference = self
+            .reference_pair()
+            .map(|(r, _)| r)
+            .filter(|r| self.view == 0 && (r.width, r.height) == (film.width, film.height));
+        Some((film, reference))
     }
 
     /// What the render is compared with, and that image's standard error
@@ -109,12 +109,10 @@ impl App {
         let Some(image) = snap.views.first() else {
             return;
         };
-        let info = self.current_chapter().map(|c| c.info());
-        let stderr = info
-            .and_then(|i| i.views.iter().position(|v| v.name == "stderr"))
-            .and_then(|k| snap.views.get(k))
-            .cloned();
-        let variant = info
+        let stderr = self.stderr_view().cloned();
+        let variant = self
+            .current_chapter()
+            .map(|c| c.info())
             .and_then(|i| i.variants.get(self.variant))
             .map_or(String::new(), |v| format!("{}, ", v.name));
         let label = format!("{variant}{} spp", snap.samples);
@@ -129,6 +127,14 @@ impl App {
             pinned.label
         );
         self.pinned = Some(pinned);
+    }
+
+    /// The render's standard error: its view named "stderr", where the
+    /// chapter keeps one.
+    pub fn stderr_view(&self) -> Option<&Film> {
+        let info = self.current_chapter()?.info();
+        let k = info.views.iter().position(|v| v.name == "stderr")?;
+        self.snapshot.as_ref()?.views.get(k)
     }
 
     /// The selected view, or for the main view the selected bounces.
@@ -151,11 +157,7 @@ impl App {
         if self.view != 0 || self.grading.is_some() || self.student_render().is_some() {
             return None;
         }
-        let snap = self.snapshot.as_ref()?;
-        let info = self.current_chapter()?.info();
-        let stderr = snap
-            .views
-            .get(info.views.iter().position(|v| v.name == "stderr")?)?;
+        let stderr = self.stderr_view()?;
         let (reference, reference_stderr) = self.reference_pair()?;
         let reference_stderr = reference_stderr?;
         let image = self.main_film()?;

@@ -1,6 +1,6 @@
 //! Region statistics: a box of pixels chosen with the mouse (drag on the
 //! picture: [`App::drag_to`](super::screen)) or the keys (`b` at one corner, move the cursor, `b` at the
-//! other; `b` again clears it), and what the controls box says of it:
+//! other; `b` again clears it), and what the pixel panel says of it:
 //! its mean with the standard error of that mean, the reference's mean,
 //! the relative MSE and the z of the difference, and a histogram of the
 //! view.
@@ -47,17 +47,12 @@ pub fn region_summary(app: &App) -> Vec<String> {
     if let (Some((x, y)), None) = (app.region_anchor, app.region) {
         return vec![format!("region: corner at ({x}, {y}); move, b again")];
     }
-    let (Some(region), Some(snap)) = (app.region, app.snapshot.as_ref()) else {
-        return Vec::new();
-    };
-    let Some(film) = app.main_film() else {
+    let (Some(region), Some(film)) = (app.region, app.main_film()) else {
         return Vec::new();
     };
     let main = app.view == 0;
-    let info = app.current_chapter().map(|c| c.info());
-    let stderr = info
-        .and_then(|i| i.views.iter().position(|v| v.name == "stderr"))
-        .and_then(|k| snap.views.get(k))
+    let stderr = app
+        .stderr_view()
         .filter(|s| main && (s.width, s.height) == (film.width, film.height));
     let reference = app
         .reference_pair()

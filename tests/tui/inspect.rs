@@ -16,10 +16,10 @@ use raystep::tui::scenes::SceneEntry;
 use raystep::tui::update::update;
 use raystep::tui::worker::{Progress, RenderState};
 
-/// Chapter 6 on the 64x64 Cornell box (the stored reference's size), 2 spp.
-pub(crate) fn rendered() -> App {
-    let ch6 = raystep::chapters::all()[5];
-    let scene = Scene::builtin().with_resolution(64, 64).unwrap();
+/// The UI on chapter `chapter` alone, over the built-in Cornell box at
+/// `size` x `size` pixels.
+fn cornell_app(chapter: &'static dyn raystep::core::stage::Chapter, size: u32) -> App {
+    let scene = Scene::builtin().with_resolution(size, size).unwrap();
     let entry = SceneEntry {
         name: "cornell-box".into(),
         source: "<built-in>".into(),
@@ -27,7 +27,13 @@ pub(crate) fn rendered() -> App {
         pending: None,
         modified: None,
     };
-    let app = App::new(vec![ch6], vec![entry], false);
+    App::new(vec![chapter], vec![entry], false)
+}
+
+/// Chapter 6 on the 64x64 Cornell box (the stored reference's size), 2 spp.
+pub(crate) fn rendered() -> App {
+    let ch6 = raystep::chapters::all()[5];
+    let app = cornell_app(ch6, 64);
     // The render is the same every time (same scene, seed and samples):
     // made once per test binary, the many clicks of the click test cost a
     // UI update each, not a render each.
@@ -365,15 +371,7 @@ fn display_colours_are_named_as_such() {
         "{lines:?}"
     );
     let ch3 = raystep::chapters::all()[2];
-    let scene = Scene::builtin().with_resolution(32, 32).unwrap();
-    let entry = SceneEntry {
-        name: "cornell-box".into(),
-        source: "<built-in>".into(),
-        scene: Ok(Arc::new(scene)),
-        pending: None,
-        modified: None,
-    };
-    let app = App::new(vec![ch3], vec![entry], false);
+    let app = cornell_app(ch3, 32);
     let job = app.job().unwrap();
     let mut render = ch3.start(job.scene, &Settings::default()).unwrap();
     while !render.pass().complete {}
