@@ -12,9 +12,11 @@ use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::render::camera_sample;
 use crate::core::sampling::Sampler;
 
-/// Adds sample `sample` of every pixel to `sums`, rows in parallel; every
-/// random number comes from (seed, pixel, sample), so the result does not
-/// depend on the number of threads.
+/// Adds sample `sample` of every pixel to `sums`, rows in parallel, and
+/// adds to `caught` how many values each pixel's sample left out for not
+/// being finite (a light's term, or the whole sample);
+/// every random number comes from (seed, pixel, sample), so the result
+/// does not depend on the number of threads.
 // ANCHOR: render_pass
 // ANCHOR: render_pass_sample
 pub fn render_pass(
@@ -24,16 +26,19 @@ pub fn render_pass(
     seed: u64,
     sample: u32,
     sums: &mut [Vec3],
+    caught: &mut [u32],
 ) -> Counters {
     let w = cam.width as usize;
     sums.par_chunks_mut(w)
+        .zip(caught.par_chunks_mut(w))
         .enumerate()
-        .map(|(y, row)| {
+        .map(|(y, (row, caught))| {
             let mut c = Counters::default();
             for (x, px) in row.iter_mut().enumerate() {
                 let (mut s, ray) = camera_sample(cam, (x as u32, y as u32), |pixel| {
                     Sampler::new(seed, pixel, sample as u64)
                 });
+                let caught_before = c.nonfinite;
                 let l = estimator.radiance(world, &ray, &mut s, &mut c);
                 // ANCHOR_END: render_pass_sample
                 // ANCHOR: render_pass_sum
@@ -42,6 +47,7 @@ pub fn render_pass(
                 } else {
                     c.nonfinite += 1;
                 }
+                caught[x] += (c.nonfinite - caught_before) as u32;
             }
             c
         })

@@ -399,8 +399,9 @@ pub fn placement() -> CaseResult {
             trace_light_rays: true,
         };
         let mut sums = vec![Vec3::ZERO; 24 * 24];
+        let mut caught = vec![0; 24 * 24];
         for sample in 0..8 {
-            super::render::render_pass(&world, &camera, &est, 5, sample, &mut sums);
+            super::render::render_pass(&world, &camera, &est, 5, sample, &mut sums, &mut caught);
         }
         // Region means (6x6 pixels), summed over channels.
         (0..16)

@@ -27,15 +27,19 @@ use crate::core::film::Film;
 use crate::core::format::{num, rgb};
 use crate::core::report::Report;
 use crate::core::stage::{
-    fixed_pass, Chapter, ChapterInfo, Inspection, Pass, Render, Settings, Snapshot, Variant, View,
+    caught_film, fixed_pass, Chapter, ChapterInfo, Inspection, Pass, Render, Settings, Snapshot,
+    Variant, View, CAUGHT_VIEW,
 };
 use crate::scene::Scene;
 
 /// The views of chapter 5.
-pub const VIEWS: &[View] = &[View {
-    name: "radiance",
-    about: "reflected radiance (direct light only), linear HDR; PNG tone-mapped by sRGB",
-}];
+pub const VIEWS: &[View] = &[
+    View {
+        name: "radiance",
+        about: "reflected radiance (direct light only), linear HDR; PNG tone-mapped by sRGB",
+    },
+    CAUGHT_VIEW,
+];
 
 /// The strategies, as the front ends' variants, in the order of
 /// [`Strategy::ALL`].
@@ -122,6 +126,8 @@ struct ReflectionRender {
     world: Option<World>,
     build_seconds: f64,
     sums: Vec<Vec3>,
+    /// Per pixel, the samples that were NaN or infinite (left out).
+    caught: Vec<u32>,
     passes: u32,
     counters: Counters,
     seconds: f64,
@@ -138,6 +144,7 @@ impl ReflectionRender {
             world: None,
             build_seconds: 0.0,
             sums: vec![Vec3::ZERO; n],
+            caught: vec![0; n],
             passes: 0,
             counters: Counters::default(),
             seconds: 0.0,
@@ -189,6 +196,7 @@ impl Render for ReflectionRender {
                 self.settings.seed,
                 self.passes,
                 &mut self.sums,
+                &mut self.caught,
             );
             self.counters += c;
             self.passes += 1;
@@ -210,7 +218,7 @@ impl Render for ReflectionRender {
         }
         film.scrub_nonfinite();
         Snapshot {
-            views: vec![film],
+            views: vec![film, caught_film(cam.width, cam.height, &self.caught)],
             pass: self.pass_info(),
             ..Snapshot::default()
         }

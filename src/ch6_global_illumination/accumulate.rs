@@ -30,6 +30,9 @@ pub struct Accumulator {
     /// Σ L per pixel and layer slot; `None` when only the final image is
     /// wanted (nothing allocated for layers then).
     pub layers: Option<Vec<[Vec3; LAYER_SLOTS]>>,
+    /// Per pixel, the contributions that were NaN or infinite, counted and
+    /// left out of the sums (so a viewer can show where they were).
+    pub caught: Vec<u32>,
     /// Counts over every pass.
     pub stats: PathStats,
 }
@@ -45,6 +48,7 @@ impl Accumulator {
             sum: vec![Vec3::ZERO; n],
             sum_sq: vec![Vec3::ZERO; n],
             layers: layers.then(|| vec![[Vec3::ZERO; LAYER_SLOTS]; n]),
+            caught: vec![0; n],
             stats: PathStats::default(),
         }
     }
@@ -83,8 +87,9 @@ impl Accumulator {
             .par_chunks_mut(w)
             .zip(self.sum_sq.par_chunks_mut(w))
             .zip(layer_rows.par_iter_mut())
+            .zip(self.caught.par_chunks_mut(w))
             .enumerate()
-            .map(|(y, ((sum, sum_sq), layers))| {
+            .map(|(y, (((sum, sum_sq), layers), caught))| {
                 let mut stats = PathStats::default();
                 let layers = layers.take();
                 engine.trace_row(
@@ -94,6 +99,7 @@ impl Accumulator {
                         sum,
                         sum_sq,
                         layers,
+                        caught,
                     },
                     &mut stats,
                 );

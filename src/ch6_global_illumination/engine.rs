@@ -60,6 +60,9 @@ pub struct RowSums<'a> {
     pub sum_sq: &'a mut [Vec3],
     /// Σ L per pixel and layer slot, if layers are kept.
     pub layers: Option<&'a mut [[Vec3; LAYER_SLOTS]]>,
+    /// Per pixel, the contributions that were not finite (NaN or
+    /// infinite): counted, and left out of the sums.
+    pub caught: &'a mut [u32],
 }
 
 /// An engine: a world built for its ray queries, and a way to trace one
@@ -109,6 +112,7 @@ impl PathEngine for PathLoop {
 pub fn trace_row(world: &World, pass: &PassSpec, mut row: RowSums<'_>, stats: &mut PathStats) {
     let (kind, seed) = pass.sampler;
     for x in 0..row.sum.len() {
+        let caught_before = stats.nonfinite;
         for s in pass.first..pass.first + pass.count {
             let (mut sampler, ray) = camera_sample(pass.camera, kind, seed, x, row.y, s);
             let l = match row.layers.as_deref_mut() {
@@ -129,6 +133,7 @@ pub fn trace_row(world: &World, pass: &PassSpec, mut row: RowSums<'_>, stats: &m
             row.sum[x] += l;
             row.sum_sq[x] += l * l;
         }
+        row.caught[x] += (stats.nonfinite - caught_before) as u32;
     }
 }
 // ANCHOR_END: trace_row

@@ -349,6 +349,7 @@ impl<C: Contributions> PathOut<'_, C> {
             self.layers.add_to(slot_of(k), c);
         } else {
             self.stats.nonfinite += 1;
+            self.layers.caught();
         }
     }
 

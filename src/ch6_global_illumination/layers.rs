@@ -43,6 +43,12 @@ pub trait Contributions {
     /// unless a recorder ([`super::path_record`]) listens.
     #[inline(always)]
     fn note(&mut self, _event: PathEvent<'_>) {}
+
+    /// Hears that a contribution was NaN or infinite (and left out). Does
+    /// nothing unless the owner counts them per path, as the fast engine's
+    /// rows do.
+    #[inline(always)]
+    fn caught(&mut self) {}
 }
 
 impl Contributions for [Vec3; LAYER_SLOTS] {

@@ -32,7 +32,8 @@ use crate::core::film::Film;
 use crate::core::report::Report;
 use crate::core::run::output_stem;
 use crate::core::stage::{
-    Chapter, ChapterInfo, Inspection, Pass, Render, Settings, Snapshot, Variant, View,
+    caught_film, Chapter, ChapterInfo, Inspection, Pass, Render, Settings, Snapshot, Variant, View,
+    CAUGHT_VIEW,
 };
 use crate::scene::Scene;
 
@@ -46,6 +47,7 @@ pub const VIEWS: &[View] = &[
         name: "stderr",
         about: "the standard error of each pixel's mean (noise), same scale as the image",
     },
+    CAUGHT_VIEW,
 ];
 
 /// The estimator × sampler combinations a front end can switch between:
@@ -375,13 +377,14 @@ impl Render for PathTracingRender {
         image.scrub_nonfinite();
         let mut stderr = self.acc.variance_of_mean().sqrt_clamped();
         stderr.scrub_nonfinite();
+        let caught = caught_film(self.acc.width, self.acc.height, &self.acc.caught);
         let (reference, reference_stderr) = self
             .reference
             .as_ref()
             .map(|(r, k)| r.upsampled(*k))
             .unzip();
         Snapshot {
-            views: vec![image, stderr],
+            views: vec![image, stderr, caught],
             layers: self.layers(),
             reference,
             reference_stderr,

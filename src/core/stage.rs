@@ -74,6 +74,29 @@ pub struct View {
     pub about: &'static str,
 }
 
+/// The view of the stages that catch samples which are not finite
+/// (chapters 5 and 6): where they were. Its film holds, in every channel,
+/// how many of a pixel's contributions were NaN or infinite; they were
+/// counted and left out of the image ([`caught_film`]).
+pub const CAUGHT_VIEW: View = View {
+    name: "non-finite",
+    about:
+        "where samples were NaN or infinite: per pixel the count caught and left out (black: none)",
+};
+
+/// The film of [`CAUGHT_VIEW`]: `caught[i]`, pixel i's count, in every
+/// channel.
+pub fn caught_film(width: u32, height: u32, caught: &[u32]) -> Film {
+    Film {
+        width,
+        height,
+        pixels: caught
+            .iter()
+            .map(|&c| glam::Vec3::splat(c as f32))
+            .collect(),
+    }
+}
+
 /// One way of rendering a stage offers (an estimator, a sampler): the
 /// front ends switch between them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -47,7 +47,7 @@ use crate::ch6_global_illumination::engine::{
     trace_row, EngineChoice, PassSpec, PathEngine, RowSums,
 };
 use crate::ch6_global_illumination::integrator::{PathSettings, PathStats};
-use crate::ch6_global_illumination::layers::LAYER_SLOTS;
+use crate::ch6_global_illumination::layers::{Contributions, LAYER_SLOTS};
 use crate::scene::Scene;
 
 use bvh8::Bvh8;
@@ -135,6 +135,26 @@ impl PathEngine for FastEngine {
     }
 }
 
+/// One path's light, and how many of its contributions were NaN or
+/// infinite (left out, and counted for the row's pixel).
+#[derive(Clone, Copy)]
+struct Counted<C> {
+    light: C,
+    caught: u32,
+}
+
+impl<C: Contributions> Contributions for Counted<C> {
+    #[inline(always)]
+    fn add_to(&mut self, slot: usize, c: Vec3) {
+        self.light.add_to(slot, c);
+    }
+
+    #[inline(always)]
+    fn caught(&mut self) {
+        self.caught += 1;
+    }
+}
+
 /// One row's samples through the wavefront loop, a few thousand paths at
 /// a time; each pixel's samples are then added in order, as the
 /// one-path-at-a-time loop adds them. With layers each path keeps its
@@ -145,6 +165,7 @@ fn wave_row(world: &World, tree: &Bvh8, pass: &PassSpec, row: RowSums<'_>, stats
         sum,
         sum_sq,
         mut layers,
+        caught,
     } = row;
     let per_pixel = pass.count as usize;
     let chunk = (4096 / per_pixel).max(1);
@@ -159,26 +180,36 @@ fn wave_row(world: &World, tree: &Bvh8, pass: &PassSpec, row: RowSums<'_>, stats
         let n = (x1 - x0) * per_pixel;
         match layers.as_deref_mut() {
             None => {
-                let mut outs = vec![Vec3::ZERO; n];
+                let empty = Counted {
+                    light: Vec3::ZERO,
+                    caught: 0,
+                };
+                let mut outs = vec![empty; n];
                 wave::trace_paths(world, tree, starts(), pass.settings, &mut outs, stats);
                 for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
                     for l in ls {
-                        sum[x] += *l;
-                        sum_sq[x] += *l * *l;
+                        sum[x] += l.light;
+                        sum_sq[x] += l.light * l.light;
+                        caught[x] += l.caught;
                     }
                 }
             }
             Some(layers) => {
-                let mut outs = vec![[Vec3::ZERO; LAYER_SLOTS]; n];
+                let empty = Counted {
+                    light: [Vec3::ZERO; LAYER_SLOTS],
+                    caught: 0,
+                };
+                let mut outs = vec![empty; n];
                 wave::trace_paths(world, tree, starts(), pass.settings, &mut outs, stats);
                 for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
                     for path in ls {
-                        for (acc, v) in layers[x].iter_mut().zip(path) {
-                            *acc += *v;
+                        for (acc, v) in layers[x].iter_mut().zip(path.light) {
+                            *acc += v;
                         }
-                        let l: Vec3 = path.iter().sum();
+                        let l: Vec3 = path.light.iter().sum();
                         sum[x] += l;
                         sum_sq[x] += l * l;
+                        caught[x] += path.caught;
                     }
                 }
             }

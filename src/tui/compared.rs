@@ -15,6 +15,7 @@ use std::borrow::Cow;
 
 use super::app::{combine_layers, App, Compare, Pinned};
 use crate::core::film::Film;
+use crate::core::stage::CAUGHT_VIEW;
 use crate::core::zview::{verdict, z_film, Verdict};
 
 impl App {
@@ -28,6 +29,9 @@ impl App {
     /// (the common case: a view or the reference as it is), so a redraw
     /// does not copy a whole film.
     pub fn displayed_ref(&self) -> Option<Cow<'_, Film>> {
+        if self.shows_caught() {
+            return self.caught_overlay().map(Cow::Owned);
+        }
         if self.compare == Compare::Z {
             if let Some((image, stderr, reference, reference_stderr)) = self.z_inputs() {
                 return Some(Cow::Owned(z_film(
@@ -129,6 +133,35 @@ impl App {
         self.pinned = Some(pinned);
     }
 
+    /// Whether the preview shows where samples were NaN or infinite (the
+    /// view [`CAUGHT_VIEW`]).
+    pub fn shows_caught(&self) -> bool {
+        self.view_name() == CAUGHT_VIEW.name && self.grading.is_none() && self.student.is_none()
+    }
+
+    /// The counts of [`CAUGHT_VIEW`] over the picture: per pixel (count,
+    /// luminance of the image, 0), so that averaged to the screen's size a
+    /// cell still knows whether any of its pixels caught one (see
+    /// [`super::layers::paint_caught`]).
+    fn caught_overlay(&self) -> Option<Film> {
+        let snap = self.snapshot.as_ref()?;
+        let (counts, image) = (snap.views.get(self.view)?, snap.views.first()?);
+        let pixels = counts
+            .pixels
+            .iter()
+            .zip(&image.pixels)
+            .map(|(c, p)| {
+                let luminance = p.dot(glam::Vec3::new(0.2126, 0.7152, 0.0722));
+                glam::Vec3::new(c.x, luminance, 0.0)
+            })
+            .collect();
+        Some(Film {
+            width: counts.width,
+            height: counts.height,
+            pixels,
+        })
+    }
+
     /// The render's standard error: its view named "stderr", where the
     /// chapter keeps one.
     pub fn stderr_view(&self) -> Option<&Film> {
@@ -206,6 +239,9 @@ impl App {
     /// its pixels the mean of `pooled` pixels of the full film: see
     /// [`Compare::paint`]; a z view's scale shrinks by √pooled.
     pub fn paint_pooled(&self, film: &Film, pooled: f32) -> Film {
+        if self.shows_caught() {
+            return super::layers::paint_caught(film, self.display_exposure());
+        }
         let pooled = if self.compare == Compare::Z {
             pooled.max(1.0)
         } else {
@@ -244,7 +280,16 @@ impl App {
     /// The stops that bring the picture's mean to 0.18, the middle grey of
     /// a photograph (0 for a black picture), within ±10.
     pub fn auto_stops(&self) -> i32 {
-        let Some(film) = self.displayed_ref() else {
+        let film = match self.shows_caught() {
+            // The picture under the marks is the image.
+            true => self
+                .snapshot
+                .as_ref()
+                .and_then(|s| s.views.first())
+                .map(Cow::Borrowed),
+            false => self.displayed_ref(),
+        };
+        let Some(film) = film else {
             return 0;
         };
         let (sum, n) = film

@@ -42,6 +42,14 @@ pub fn inspect_lines(app: &App) -> Vec<String> {
     // normal as n/2 + 1/2), which the story below gives as numbers.
     let radiance = chapter.info().radiance;
     for (view, film) in chapter.info().views.iter().zip(&snap.views) {
+        if view.name == crate::core::stage::CAUGHT_VIEW.name {
+            // Said only where one was caught: most pixels catch none.
+            let n = (x < film.width && y < film.height).then(|| film.get(x, y).x);
+            if let Some(n) = n.filter(|n| *n > 0.0) {
+                lines.push(format!("non-finite: {n} caught (left out)"));
+            }
+            continue;
+        }
         if let Some(v) = rgb(film, x, y) {
             let name = match view.name {
                 "stderr" => "± std error",

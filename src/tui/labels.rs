@@ -380,6 +380,13 @@ pub fn key_hints(app: &App) -> String {
 /// shows it (the view, layer and comparison selected, before exposure).
 pub fn hover_text(app: &App) -> Option<String> {
     let (x, y) = app.hover?;
+    if app.shows_caught() {
+        let counts = app.snapshot.as_ref()?.views.get(app.view)?;
+        return (x < counts.width && y < counts.height).then(|| {
+            let n = counts.get(x, y).x;
+            format!("pixel ({x}, {y}): {n} samples NaN or infinite, left out (under the mouse)")
+        });
+    }
     let film = app.displayed_ref()?;
     (x < film.width && y < film.height).then(|| {
         let v = film.get(x, y);

@@ -4,6 +4,7 @@
 
 use glam::Vec3;
 
+use crate::core::difference::NONFINITE;
 use crate::core::film::Film;
 use crate::core::zview::Z_MAX;
 
@@ -60,6 +61,27 @@ pub fn expose(film: &Film, stops: i32) -> Film {
             .pixels
             .iter()
             .map(|p| *p * Vec3::splat(scale))
+            .collect(),
+    }
+}
+
+/// The colours of the non-finite view: a pixel (count, luminance, 0) of
+/// [`super::app::App::displayed_ref`] is green ([`NONFINITE`], the colour
+/// of a non-finite difference) where any sample was caught, else the
+/// image's luminance exposed by `exposure` stops at a third of its
+/// brightness, so the marks stand out on a dim picture.
+pub fn paint_caught(film: &Film, exposure: i32) -> Film {
+    let scale = 2f32.powi(exposure);
+    Film {
+        width: film.width,
+        height: film.height,
+        pixels: film
+            .pixels
+            .iter()
+            .map(|p| match p.x > 0.0 {
+                true => NONFINITE,
+                false => Vec3::splat((p.y * scale).clamp(0.0, 1.0) / 3.0),
+            })
             .collect(),
     }
 }

@@ -31,6 +31,30 @@ pub fn noise_scale(app: &App) -> Vec<Line<'static>> {
     ))]
 }
 
+/// The non-finite view's legend: how many contributions were caught
+/// (NaN or infinite, left out of the image) and in how many pixels.
+pub fn caught_lines(app: &App) -> Vec<Line<'static>> {
+    let counts = app.snapshot.as_ref().and_then(|s| s.views.get(app.view));
+    let Some(counts) = counts.filter(|_| app.shows_caught()) else {
+        return Vec::new();
+    };
+    let total: f64 = counts.pixels.iter().map(|c| f64::from(c.x)).sum();
+    let pixels = counts.pixels.iter().filter(|c| c.x > 0.0).count();
+    if pixels == 0 {
+        return vec![Line::styled(
+            "non-finite: none caught, every sample finite",
+            fg(app, Color::Green),
+        )];
+    }
+    vec![
+        Line::styled(
+            format!("non-finite: {total} caught in {pixels} px"),
+            fg(app, Color::Red),
+        ),
+        Line::styled("green: where (left out)", fg(app, Color::Green)),
+    ]
+}
+
 /// Under a difference, tev's five metrics of the render against the
 /// reference, as means over pixels and channels; under the z view, its
 /// verdict in words, green or red.

@@ -6,7 +6,7 @@ use super::app::App;
 
 /// Writes what the preview shows (with exposure, or a difference in its
 /// false colour) as PNG and the same film without exposure as linear EXR
-/// (a difference as its signed values) into `app.out_dir`; returns the
+/// (a difference as its signed values, the non-finite view as its counts) into `app.out_dir`; returns the
 /// paths.
 /// Never overwrites: the name says what is saved ([`App::save_stem`]), and
 /// when a file of that name is already there (the same state saved
@@ -29,9 +29,13 @@ pub fn save(app: &App) -> Result<Vec<PathBuf>, String> {
     app.paint(&film)
         .write_png(&png)
         .map_err(|e| e.to_string())?;
-    // A difference's EXR holds its signed values; a NaN or Inf never
-    // reaches a file (the PNG shows where they were, in green).
-    let mut values = film;
+    // A difference's EXR holds its signed values, the non-finite view's
+    // its counts; a NaN or Inf never reaches a file (the PNG shows where
+    // they were, in green).
+    let mut values = match app.shows_caught() {
+        true => app.main_film().map_or(film, |f| f.into_owned()),
+        false => film,
+    };
     values.scrub_nonfinite();
     values.write_exr(&exr).map_err(|e| e.to_string())?;
     Ok(vec![png, exr])

@@ -199,6 +199,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
         format!("exposure {:+} stops", app.exposure)
     }));
     lines.extend(super::readouts::noise_scale(app));
+    lines.extend(super::readouts::caught_lines(app));
     if app.shows_bounces() {
         lines.push(Line::from(format!("bounces {}", app.bounce_short())));
         if let Some(share) = app.bounce_share() {

@@ -1,5 +1,6 @@
 //! Chapter 6: global illumination, its exercises, and its terminal preview.
 
+mod caught;
 mod exercises;
 mod fast;
 mod fast_tree;

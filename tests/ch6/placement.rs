@@ -71,10 +71,15 @@ fn the_moved_or_scaled_cornell_box_renders_the_same_in_chapter_5() {
             max_mirror_bounces: 4,
             trace_light_rays: true,
         };
-        let mut sums = vec![Vec3::ZERO; (camera.width * camera.height) as usize];
+        let n = (camera.width * camera.height) as usize;
+        let (mut sums, mut caught) = (vec![Vec3::ZERO; n], vec![0; n]);
         for sample in 0..16 {
-            render_pass(&world, &camera, &est, 5, sample, &mut sums);
+            render_pass(&world, &camera, &est, 5, sample, &mut sums, &mut caught);
         }
+        assert!(
+            caught.iter().all(|&c| c == 0),
+            "a sample was NaN or infinite"
+        );
         sums
     };
     let at_origin = render5(&Scene::builtin().with_resolution(24, 24).unwrap());

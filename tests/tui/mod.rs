@@ -10,6 +10,7 @@ mod flip;
 mod graphics;
 mod inspect;
 mod layout_and_keys;
+mod nonfinite;
 mod painter;
 mod pin;
 mod region;

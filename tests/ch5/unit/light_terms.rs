@@ -19,8 +19,8 @@ fn check(scene: &Scene, strategy: Strategy) -> usize {
     let mut split = 0;
     for sample in [0, 3] {
         let n = (camera.width * camera.height) as usize;
-        let mut sums = vec![Vec3::ZERO; n];
-        render_pass(&world, &camera, &est, 9, sample, &mut sums);
+        let (mut sums, mut caught) = (vec![Vec3::ZERO; n], vec![0; n]);
+        render_pass(&world, &camera, &est, 9, sample, &mut sums, &mut caught);
         for y in 0..camera.height {
             for x in 0..camera.width {
                 let p = pixel_light(&world, &camera, &est, 9, (x, y), sample);
