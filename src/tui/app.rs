@@ -30,6 +30,14 @@ pub struct Pinned {
     pub image: Film,
     /// Its standard error per pixel and channel, where known.
     pub stderr: Option<Film>,
+    /// How long it had rendered when pinned.
+    pub elapsed: Duration,
+    /// Its error against the reference then, where known.
+    pub rmse: Option<f64>,
+    /// Whether the preview splits it with the running render (`|`).
+    pub split: bool,
+    /// The running render at this one's time (for the split, `|`).
+    pub equal_time: Option<super::state::EqualTime>,
 }
 
 /// The highest bounce count the bounce control steps to.

@@ -29,6 +29,9 @@ impl App {
     /// (the common case: a view or the reference as it is), so a redraw
     /// does not copy a whole film.
     pub fn displayed_ref(&self) -> Option<Cow<'_, Film>> {
+        if let Some(film) = self.split_film() {
+            return Some(Cow::Owned(film));
+        }
         if self.shows_caught() {
             return self.caught_overlay().map(Cow::Owned);
         }
@@ -125,6 +128,10 @@ impl App {
             label,
             image: image.clone(),
             stderr,
+            elapsed: snap.elapsed,
+            rmse: snap.rmse,
+            split: false,
+            equal_time: None,
         };
         self.message = format!(
             "pinned {}: r compares the renders that follow with it",

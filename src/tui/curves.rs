@@ -57,6 +57,7 @@ impl App {
     pub fn new_state(&mut self, state: RenderState) {
         self.snapshot = Some(state);
         self.keep_curve();
+        self.keep_equal_time();
     }
 
     /// Keeps the running render's error series under its estimator.

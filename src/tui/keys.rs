@@ -32,6 +32,7 @@ pub const KEYS: &[(&str, &str)] = &[
         "f  p",
         "flip render ↔ reference (A/B); p: pin this render as it",
     ),
+    ("|", "split: pinned render | running one, at equal time"),
     (
         "g",
         "grader's newest failed image: student / reference / diff",
@@ -138,6 +139,7 @@ pub fn msg_for_key(app: &App, key: KeyEvent) -> Option<Msg> {
         KeyCode::Char('a') => Msg::ToggleAutoExposure,
         KeyCode::Char('b') => Msg::MarkRegion,
         KeyCode::Char('p') => Msg::TogglePin,
+        KeyCode::Char('|') => Msg::ToggleSplit,
         KeyCode::Char(']') => Msg::BounceUp,
         KeyCode::Char('[') => Msg::BounceDown,
         KeyCode::Char('m') => Msg::ToggleBounceMode,

@@ -138,6 +138,13 @@ pub fn preview_title_parts(app: &App) -> Vec<String> {
     let info = c.info();
     let mut parts = Vec::new();
     let variant = info.variants.get(app.variant).map(|v| v.name);
+    if let Some(p) = app.pinned_here().filter(|_| app.shows_split()) {
+        parts.push("split at equal time".into());
+        parts.push(format!("left pinned {}", p.label));
+        parts.push(format!("right {}", variant.unwrap_or("running")));
+        parts.push(format!("ch{} {}", info.number, info.slug));
+        return parts;
+    }
     let layer = (app.view == 0 && app.shows_bounces())
         .then_some(app.bounce)
         .flatten();

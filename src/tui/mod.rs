@@ -40,6 +40,7 @@ pub mod scenes;
 pub mod screen;
 pub mod shown;
 pub mod signals;
+pub mod split;
 pub mod state;
 pub mod stats;
 pub mod student;

@@ -98,6 +98,9 @@ pub enum Msg {
     },
     /// `p`: pin the render shown to compare the next ones against, or unpin.
     TogglePin,
+    /// `|`: the pinned render and the running one split side by side at
+    /// equal time, or not.
+    ToggleSplit,
     /// `b`: a region's corner at the cursor, or clear the region.
     MarkRegion,
     /// The mouse moved to a cell.

@@ -95,3 +95,33 @@ impl RenderState {
         (self.rays > 0 && secs > 0.0).then(|| self.rays as f64 / secs)
     }
 }
+
+/// The running render as it was at the pinned render's time: its newest
+/// state that had rendered no longer than the pinned one (its first, if
+/// even that took longer).
+#[derive(Clone, Debug)]
+pub struct EqualTime {
+    /// The render it belongs to.
+    pub generation: u64,
+    /// Its image then.
+    pub image: Film,
+    /// How long it had rendered.
+    pub elapsed: Duration,
+    /// Its samples per pixel then.
+    pub samples: u32,
+    /// Its error against the reference then, where known.
+    pub rmse: Option<f64>,
+}
+
+impl EqualTime {
+    /// What `state` shows of the running render (none without an image).
+    pub fn of(state: &RenderState) -> Option<EqualTime> {
+        Some(EqualTime {
+            generation: state.generation,
+            image: state.views.first()?.clone(),
+            elapsed: state.elapsed,
+            samples: state.samples,
+            rmse: state.rmse,
+        })
+    }
+}

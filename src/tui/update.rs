@@ -186,6 +186,7 @@ fn step(mut app: App, msg: Msg) -> App {
         } => app.drag_to(ratatui::layout::Rect::new(0, 0, width, height), column, row),
         Msg::MarkRegion => app.mark_region(),
         Msg::TogglePin => app.toggle_pin(),
+        Msg::ToggleSplit => app.toggle_split(),
         Msg::TracePath => match (app.inspect, app.snapshot.as_ref()) {
             (Some((x, y)), Some(snap)) if app.traces_paths() => {
                 let sample = app.traces % snap.samples.max(1);

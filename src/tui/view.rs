@@ -200,6 +200,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
     }));
     lines.extend(super::readouts::noise_scale(app));
     lines.extend(super::readouts::caught_lines(app));
+    lines.extend(app.split_lines());
     if app.shows_bounces() {
         lines.push(Line::from(format!("bounces {}", app.bounce_short())));
         if let Some(share) = app.bounce_share() {

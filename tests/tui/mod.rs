@@ -16,6 +16,7 @@ mod pin;
 mod region;
 mod signals;
 mod sizes_and_keys;
+mod split;
 mod warp;
 mod zoom;
 mod zview;
