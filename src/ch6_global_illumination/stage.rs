@@ -388,6 +388,7 @@ impl Render for PathTracingRender {
             layers: self.layers(),
             reference,
             reference_stderr,
+            reference_factor: self.reference.as_ref().map_or(1, |(_, k)| *k),
             error_series: self.errors.clone(),
             pass: self.pass_info(),
         }

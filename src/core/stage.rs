@@ -348,6 +348,11 @@ pub struct Snapshot {
     /// render's own noise), where the stage knows it: with the render's
     /// own (a view named "stderr") it makes the z view.
     pub reference_stderr: Option<Film>,
+    /// How many pixels of the render, per side, one pixel of the stored
+    /// reference covers: `reference` is the stored one enlarged by it (0
+    /// or 1: the reference has the render's size). Statistics compare at
+    /// the reference's own resolution.
+    pub reference_factor: u32,
     /// The error of the main image against the reference as the render
     /// went on: (seconds since the start, error) per pass, oldest first.
     pub error_series: Vec<(f64, f64)>,

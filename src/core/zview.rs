@@ -2,7 +2,17 @@
 //! combined standard error. Per pixel, z = (render − reference) /
 //! √(σ²_render + σ²_reference), what the terminal UI's z view colours; per
 //! block of 8 x 8 pixels, the grader's statistic for chapter 6 (a block
-//! passes within 5 standard errors), what its verdict says in words.
+//! passes within 5 standard errors), what its verdict says in words, at
+//! the stored reference's own resolution ([`verdict_at`]).
+//!
+//! A block's z is only as good as its standard error, which the render
+//! estimates from its own samples. When a few rare, large samples carry a
+//! block's light (uniform sampling finding a small lamp), the ones not yet
+//! drawn make the mean low and the estimate of the noise lower still, and
+//! z says "biased" of a correct render. So the verdict also counts a
+//! block's *effective* samples, (Σx)² / Σx² (n for equal samples, about
+//! the number of rare hits when those dominate), and below
+//! [`MIN_EFFECTIVE`] it says "too few samples" instead.
 
 use glam::{DVec3, Vec3};
 
@@ -13,6 +23,11 @@ pub const BLOCK: u32 = 8;
 
 /// The |z| a block may reach and still be noise: the grader's.
 pub const Z_MAX: f64 = 5.0;
+
+/// The fewest effective samples a block needs before its z is believed:
+/// below it, the block's light comes from too few samples for their
+/// spread to estimate the noise.
+pub const MIN_EFFECTIVE: f64 = 100.0;
 
 /// The z a pixel gets where neither image has noise but they differ: a
 /// difference no noise explains, finite so that it is coloured, not
@@ -86,17 +101,78 @@ pub struct Verdict {
     /// (variance 0): then its noise is not yet seen, and a difference
     /// says too few samples, not a bias (a rare light no sample found).
     pub unseen: bool,
+    /// The worst block's effective number of samples, (Σx)² / Σx² over
+    /// its samples, in its darkest-known channel (infinite where unknown).
+    pub effective: f64,
+}
+
+/// [`verdict`] at the stored reference's own resolution: a render
+/// `factor` times larger per side than the reference (which was enlarged
+/// to its size, pixel by pixel) is box-averaged down first, its variance
+/// with it, so that each block compares what the reference really knows
+/// (an enlarged reference's copies of one pixel are one measurement, not
+/// `factor`² independent ones). `samples` is the render's samples per
+/// pixel; the block's `at` is given in the render's pixels.
+pub fn verdict_at(
+    factor: u32,
+    render: &Film,
+    render_stderr: &Film,
+    reference: &Film,
+    reference_stderr: &Film,
+    samples: u32,
+) -> Verdict {
+    let k = factor.max(1);
+    if k == 1 || !render.width.is_multiple_of(k) || !render.height.is_multiple_of(k) {
+        return verdict(render, render_stderr, reference, reference_stderr, samples);
+    }
+    // The mean of k x k pixels; its standard error √(Σ σ²) / k².
+    let shrink = |film: &Film, stderr: bool| {
+        let (w, h) = (film.width / k, film.height / k);
+        let mut out = Film::new(w, h);
+        for y in 0..h {
+            for x in 0..w {
+                let mut s = Vec3::ZERO;
+                for dy in 0..k {
+                    for dx in 0..k {
+                        let p = film.get(x * k + dx, y * k + dy);
+                        s += if stderr { p * p } else { p };
+                    }
+                }
+                let n = (k * k) as f32;
+                *out.get_mut(x, y) = if stderr { s.powf(0.5) / n } else { s / n };
+            }
+        }
+        out
+    };
+    // The reference's copies are one value: their mean and stderr are it.
+    let ref_mean = shrink(reference, false);
+    let ref_stderr = Film {
+        pixels: shrink(reference_stderr, false).pixels,
+        ..ref_mean.clone()
+    };
+    let mut v = verdict(
+        &shrink(render, false),
+        &shrink(render_stderr, true),
+        &ref_mean,
+        &ref_stderr,
+        samples.saturating_mul(k * k),
+    );
+    v.at = (v.at.0 * k, v.at.1 * k);
+    v
 }
 
 /// Compares `render` with `reference` (each with its standard error per
 /// pixel and channel) in blocks of [`BLOCK`] pixels: in each block the two
 /// means per channel, and their difference over the standard error of the
-/// difference of the means, √(Σ σ²_render + Σ σ²_reference) / n.
+/// difference of the means, √(Σ σ²_render + Σ σ²_reference) / n. The
+/// render has `samples` samples per pixel (0: unknown, and then no block
+/// is judged by its effective samples).
 pub fn verdict(
     render: &Film,
     render_stderr: &Film,
     reference: &Film,
     reference_stderr: &Film,
+    samples: u32,
 ) -> Verdict {
     let (w, h) = (render.width, render.height);
     let mut v = Verdict {
@@ -105,13 +181,22 @@ pub fn verdict(
         at: (0, 0),
         means: (0.0, 0.0),
         unseen: false,
+        effective: f64::INFINITY,
     };
+    let big_n = f64::from(samples);
     for by in (0..h).step_by(BLOCK as usize) {
         for bx in (0..w).step_by(BLOCK as usize) {
             let (mut a, mut b, mut var, mut n) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO, 0.0);
             let mut own = DVec3::ZERO;
+            // Σx and Σx² over the block's samples, from each pixel's mean
+            // m and standard error s: N m, and N (N − 1) s² + N m².
+            let (mut sum, mut sum_sq) = (DVec3::ZERO, DVec3::ZERO);
             for y in by..(by + BLOCK).min(h) {
                 for x in bx..(bx + BLOCK).min(w) {
+                    let m = render.get(x, y).as_dvec3();
+                    let s = render_stderr.get(x, y).as_dvec3();
+                    sum += big_n * m;
+                    sum_sq += big_n * (big_n - 1.0) * s * s + big_n * m * m;
                     a += render.get(x, y).as_dvec3();
                     b += reference.get(x, y).as_dvec3();
                     let (sa, sb) = (
@@ -144,6 +229,10 @@ pub fn verdict(
                 v.at = (bx, by);
                 v.means = (a.element_sum() / 3.0, b.element_sum() / 3.0);
                 v.unseen = own.max_element() == 0.0;
+                v.effective = (0..3)
+                    .filter(|&c| samples > 0 && sum[c] > 0.0 && sum_sq[c] > 0.0)
+                    .map(|c| sum[c] * sum[c] / sum_sq[c])
+                    .fold(f64::INFINITY, f64::min);
             }
         }
     }
@@ -177,6 +266,12 @@ impl Verdict {
             return [
                 "verdict: too few samples".into(),
                 format!("at ({x}, {y}) they all agree: render longer"),
+            ];
+        }
+        if self.effective < MIN_EFFECTIVE && a.is_finite() {
+            return [
+                "verdict: too few samples".into(),
+                format!("at ({x}, {y}): ~{:.0} samples carry it", self.effective),
             ];
         }
         if !self.worst_z.is_finite() || !a.is_finite() {

@@ -16,7 +16,7 @@ use std::borrow::Cow;
 use super::app::{combine_layers, App, Compare, Pinned};
 use crate::core::film::Film;
 use crate::core::stage::CAUGHT_VIEW;
-use crate::core::zview::{verdict, z_film, Verdict};
+use crate::core::zview::{verdict_at, z_film, Verdict};
 
 impl App {
     /// What the preview shows, before exposure: the selected view, or for
@@ -217,7 +217,21 @@ impl App {
     /// The z view's verdict on the whole image, when it can be shown.
     pub fn verdict(&self) -> Option<Verdict> {
         let (image, stderr, reference, reference_stderr) = self.z_inputs()?;
-        Some(verdict(&image, stderr, reference, reference_stderr))
+        let snap = self.snapshot.as_ref()?;
+        // A pinned render has the render's size; the stored reference may
+        // be enlarged to it.
+        let factor = match self.pinned_here() {
+            Some(_) => 1,
+            None => snap.reference_factor,
+        };
+        Some(verdict_at(
+            factor,
+            &image,
+            stderr,
+            reference,
+            reference_stderr,
+            snap.samples,
+        ))
     }
 
     /// Whether [`App::displayed_ref`] is a signed difference or the z

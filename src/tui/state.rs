@@ -21,6 +21,8 @@ pub struct RenderState {
     pub reference: Option<Film>,
     /// The reference's standard error ([`Snapshot::reference_stderr`](crate::core::stage::Snapshot::reference_stderr)).
     pub reference_stderr: Option<Film>,
+    /// The reference's enlargement ([`Snapshot::reference_factor`](crate::core::stage::Snapshot::reference_factor)).
+    pub reference_factor: u32,
     /// Error against time ([`Snapshot::error_series`](crate::core::stage::Snapshot::error_series)).
     pub error_series: Vec<(f64, f64)>,
     /// RMSE of view 0 against the reference, when there is one: the last
@@ -65,6 +67,7 @@ impl RenderState {
             error_series: snap.error_series,
             reference: snap.reference,
             reference_stderr: snap.reference_stderr,
+            reference_factor: snap.reference_factor.max(1),
             rmse,
             views: snap.views,
             progress: (pass.done, pass.planned),

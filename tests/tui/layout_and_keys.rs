@@ -164,6 +164,7 @@ impl Render for FakeRender {
                 .then(|| (0..3).map(|k| flat(layer_color(k))).collect()),
             reference: self.bounces.then(|| flat(Vec3::new(0.5, 0.25, 0.25))),
             reference_stderr: None,
+            reference_factor: 1,
             error_series,
             pass: self.pass_info(),
         }

@@ -13,6 +13,39 @@ use raystep::tui::worker::Progress;
 
 use super::inspect::rendered;
 
+/// Chapter 6 on the built-in Cornell box at `size`², estimator `variant`,
+/// rendered to `spp` samples per pixel by the real stage.
+fn rendered_with(size: u32, variant: &str, spp: u32) -> App {
+    use raystep::core::stage::Settings;
+    use raystep::tui::scenes::SceneEntry;
+    use raystep::tui::worker::RenderState;
+    let scene = raystep::scene::Scene::builtin()
+        .with_resolution(size, size)
+        .unwrap();
+    let entry = SceneEntry {
+        name: "cornell-box".into(),
+        source: "<built-in>".into(),
+        scene: Ok(std::sync::Arc::new(scene)),
+        pending: None,
+        modified: None,
+    };
+    let ch6 = raystep::chapters::all()[5];
+    let mut app = App::new(vec![ch6], vec![entry], false);
+    while ch6.info().variants[app.variant].name != variant {
+        app = update(app, Msg::NextVariant);
+    }
+    let job = app.job().unwrap();
+    let settings = Settings {
+        spp,
+        variant: Some(job.variant),
+        ..Settings::default()
+    };
+    let mut render = ch6.start(job.scene, &settings).unwrap();
+    while !render.pass().complete {}
+    let state = RenderState::capture(&*render, job.generation, std::time::Duration::ZERO, true);
+    update(app, Msg::Progress(Progress::State(Box::new(state))))
+}
+
 fn to_z(app: App) -> App {
     let app = (0..4).fold(app, |a, _| update(a, Msg::CycleCompare));
     assert_eq!(app.compare, Compare::Z);
@@ -140,4 +173,23 @@ fn the_noise_view_is_auto_exposed_and_a_key_steps_from_there() {
     assert!(plain.auto_exposure_on(), "a turns it on for any picture");
     let off = update(rendered(), Msg::ExposureReset);
     assert!(!off.auto_exposure_on() && off.display_exposure() == 0);
+}
+
+#[test]
+fn uniform_sampling_at_twice_the_references_size_is_not_called_biased() {
+    // Uniform sampling finds the lamp rarely, so a block's light rests on
+    // a few samples. Compared pixel by pixel with the 64² reference
+    // enlarged to 128², this render was called "biased, 46% darker,
+    // |z| 23.0" at 128 spp; at the reference's own resolution, and with
+    // the effective samples counted, it is noise.
+    let app = to_z(rendered_with(128, "uniform-independent", 128));
+    let v = app.verdict().expect("a verdict");
+    let [first, _] = v.lines();
+    assert!(!first.starts_with("verdict: biased"), "{v:?}");
+    // The same render made 30% brighter is a bias, and is called one.
+    let mut state = app.snapshot.clone().unwrap();
+    state.views[0].pixels.iter_mut().for_each(|p| *p *= 1.3);
+    let app = update(app, Msg::Progress(Progress::State(Box::new(state))));
+    let v = app.verdict().unwrap();
+    assert!(v.lines()[0].starts_with("verdict: biased, "), "{v:?}");
 }

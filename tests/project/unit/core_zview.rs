@@ -2,7 +2,7 @@
 
 use glam::Vec3;
 use raystep::core::film::Film;
-use raystep::core::zview::{verdict, z_film, BLOCK, NOISELESS, Z_MAX};
+use raystep::core::zview::{verdict, verdict_at, z_film, BLOCK, MIN_EFFECTIVE, NOISELESS, Z_MAX};
 
 fn flat(w: u32, h: u32, v: f32) -> Film {
     let mut f = Film::new(w, h);
@@ -70,14 +70,14 @@ fn noise_is_within_noise_and_a_bias_of_a_few_standard_errors_per_block_is_not() 
     let reference = flat(w, h, 0.5);
     let ref_err = flat(w, h, 0.0);
     let (render, err) = noisy(w, h, 0.1, 0.0);
-    let v = verdict(&render, &err, &reference, &ref_err);
+    let v = verdict(&render, &err, &reference, &ref_err, 16);
     assert_eq!(v.blocks, ((w / BLOCK) * (h / BLOCK)) as usize);
     assert!(v.within_noise(), "{v:?}");
     assert_eq!(v.lines()[0], "verdict: within noise");
     // A block's mean has standard error 0.1 / 8 = 0.0125: a bias of 0.1
     // (20%) is z = 8, past the limit of 5, everywhere.
     let (biased, err) = noisy(w, h, 0.1, 0.1);
-    let v = verdict(&biased, &err, &reference, &ref_err);
+    let v = verdict(&biased, &err, &reference, &ref_err, 16);
     assert!(!v.within_noise() && v.worst_z > Z_MAX, "{v:?}");
     let [first, second] = v.lines();
     assert!(
@@ -87,7 +87,7 @@ fn noise_is_within_noise_and_a_bias_of_a_few_standard_errors_per_block_is_not() 
     assert!(second.contains("|z|"), "{second}");
     // Darker, and a NaN.
     let (dark, err) = noisy(w, h, 0.1, -0.1);
-    assert!(verdict(&dark, &err, &reference, &ref_err).lines()[0].ends_with("darker"));
+    assert!(verdict(&dark, &err, &reference, &ref_err, 16).lines()[0].ends_with("darker"));
     // A block whose samples all agreed (variance 0, a light no sample
     // found yet) is too few samples, not a bias.
     let (mut dark, mut err) = noisy(w, h, 0.1, 0.0);
@@ -97,12 +97,92 @@ fn noise_is_within_noise_and_a_bias_of_a_few_standard_errors_per_block_is_not() 
             *err.get_mut(x, y) = Vec3::ZERO;
         }
     }
-    let v = verdict(&dark, &err, &reference, &flat(w, h, 0.001));
+    let v = verdict(&dark, &err, &reference, &flat(w, h, 0.001), 16);
     assert!(v.unseen && !v.within_noise(), "{v:?}");
     assert_eq!(v.lines()[0], "verdict: too few samples");
     let mut nan = render.clone();
     nan.pixels[100] = Vec3::splat(f32::NAN);
-    let v = verdict(&nan, &err, &reference, &ref_err);
+    let v = verdict(&nan, &err, &reference, &ref_err, 16);
     assert_eq!(v.lines()[0], "verdict: wrong, not a number");
     assert_eq!(v.at, (32, 0), "the block holding pixel (36, 1)");
+}
+
+#[test]
+fn a_block_carried_by_a_few_rare_samples_is_too_few_samples_not_a_bias() {
+    // The reference is 0.5 everywhere. In the render's first block, 62
+    // pixels' 16 samples found nothing and two pixels found one sample of
+    // 10 each (a rare lamp): the block is 96% darker with a small
+    // standard error, z ≈ 35, yet its light rests on two samples.
+    let (w, h) = (64, 64);
+    let reference = flat(w, h, 0.5);
+    let (mut render, mut err) = noisy(w, h, 0.1, 0.0);
+    let n = 16.0f32;
+    for y in 0..8 {
+        for x in 0..8 {
+            let hit = (x, y) == (2, 3) || (x, y) == (6, 1);
+            let (m, var) = match hit {
+                true => (10.0 / n, (100.0 - n * (10.0 / n) * (10.0 / n)) / (n - 1.0)),
+                false => (0.0, 0.0),
+            };
+            *render.get_mut(x, y) = Vec3::splat(m);
+            *err.get_mut(x, y) = Vec3::splat((var / n).sqrt());
+        }
+    }
+    let v = verdict(&render, &err, &reference, &flat(w, h, 0.001), 16);
+    assert!(!v.within_noise() && !v.unseen, "{v:?}");
+    assert!(v.effective < 3.0, "two samples carry it: {}", v.effective);
+    let [first, second] = v.lines();
+    assert_eq!(first, "verdict: too few samples");
+    assert!(second.contains("~2 samples carry it"), "{second}");
+    // The same bias spread over every sample is a bias: 0.5 → 0.02.
+    let dark = flat(w, h, 0.02);
+    let v = verdict(
+        &dark,
+        &flat(w, h, 0.001),
+        &reference,
+        &flat(w, h, 0.001),
+        16,
+    );
+    assert!(v.effective > MIN_EFFECTIVE, "{v:?}");
+    assert!(
+        v.lines()[0].starts_with("verdict: biased"),
+        "{:?}",
+        v.lines()
+    );
+}
+
+#[test]
+fn an_enlarged_noisy_reference_is_compared_at_its_own_resolution() {
+    // A 32² reference with noise of standard error 0.05, enlarged 4 times
+    // to the render's 128²; the render is the truth with tiny noise.
+    // Counted pixel by pixel, each reference value would count 16 times as
+    // 16 independent measurements, and its noise would read as a bias.
+    let k = 4;
+    let (small, small_err) = noisy(32, 32, 0.05, 0.0);
+    let enlarge = |f: &Film| {
+        let mut out = Film::new(32 * k, 32 * k);
+        for y in 0..32 * k {
+            for x in 0..32 * k {
+                *out.get_mut(x, y) = f.get(x / k, y / k);
+            }
+        }
+        out
+    };
+    let (reference, reference_err) = (enlarge(&small), enlarge(&small_err));
+    let (render, render_err) = (flat(128, 128, 0.5), flat(128, 128, 0.001));
+    let pixelwise = verdict(&render, &render_err, &reference, &reference_err, 64);
+    assert!(!pixelwise.within_noise(), "the miscount: {pixelwise:?}");
+    let v = verdict_at(k, &render, &render_err, &reference, &reference_err, 64);
+    assert!(v.within_noise(), "{v:?}");
+    assert_eq!(v.blocks, 16, "blocks of 8 x 8 reference pixels");
+    // A real bias is still seen, and placed in the render's pixels.
+    let mut biased = render.clone();
+    for y in 64..96 {
+        for x in 32..64 {
+            *biased.get_mut(x, y) = Vec3::splat(0.6);
+        }
+    }
+    let v = verdict_at(k, &biased, &render_err, &reference, &reference_err, 64);
+    assert!(!v.within_noise(), "{v:?}");
+    assert_eq!(v.at, (32, 64));
 }
