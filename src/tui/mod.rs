@@ -22,6 +22,7 @@ pub mod curves;
 pub mod gauge;
 pub mod graphics;
 pub mod inspect;
+pub mod job;
 pub mod keys;
 pub mod labels;
 pub mod last;
