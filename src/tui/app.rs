@@ -11,6 +11,7 @@ use std::time::Duration;
 
 use ratatui::layout::Rect;
 
+use super::effect::Effect;
 pub use super::layers::{bounce_name, combine_layers, expose, BounceMode, Compare};
 pub use super::msg::Msg;
 use super::scenes::SceneEntry;
@@ -104,8 +105,6 @@ pub struct App {
     pub failure: Option<String>,
     /// One line of feedback (e.g. what was saved).
     pub message: String,
-    /// Asks the event loop to save the current view.
-    pub save_requested: bool,
     /// Draw the preview in 24-bit colour (else a plain ASCII ramp).
     pub color: bool,
     /// Where `s` saves.
@@ -113,15 +112,13 @@ pub struct App {
     /// The grader's newest failure images, shown instead of the render
     /// while set (`g`).
     pub grading: Option<FailureImages>,
-    /// Asks the event loop to read the grader's images from
-    /// [`App::grade_dir`].
-    pub grade_requested: bool,
-    /// Student mode (`x`): the event loop keeps a watcher on this chapter.
+    /// Student mode (`x`): a watcher runs on its chapter
+    /// ([`Effect::Watch`]).
     pub student: Option<super::student::StudentMode>,
-    /// How far a progressive chapter renders (the event loop passes a
-    /// change on to the running render).
+    /// How far a progressive chapter renders (a change goes to the running
+    /// render: [`Effect::Retarget`]).
     pub target: Target,
-    /// Whether the progressive render is paused (passed on likewise).
+    /// Whether the progressive render is paused ([`Effect::Pause`]).
     pub paused: bool,
     /// How the preview is drawn ([`super::graphics::choose`]).
     pub graphics: super::graphics::Graphics,
@@ -137,13 +134,11 @@ pub struct App {
     /// The path traced from the inspected pixel (`t`), as the panel shows
     /// it; cleared when the cursor moves or the render restarts.
     pub trace: Option<Box<Inspection>>,
-    /// Asks the event loop to trace sample `.2` of pixel (`.0`, `.1`).
-    pub trace_requested: Option<(u32, u32, u32)>,
     /// How many paths `t` has traced at this pixel (the next one traces
     /// the next sample).
     pub traces: u32,
     /// The per-pixel story of chapters 3 to 5 for the inspected pixel
-    /// (the event loop fills it in when the cursor moves).
+    /// (asked of the render when the cursor moves: [`Effect::Story`]).
     pub story: Option<(u32, u32, Vec<String>)>,
     /// Why a chapter refused a scene when it started, per (chapter index,
     /// scene index): the scene list marks those scenes, and switching
@@ -165,11 +160,14 @@ pub struct App {
     pub table_scroll: u16,
     /// How long the current message has been shown.
     pub message_age: Duration,
+    /// What [`update`](super::update::update) asks the event loop to do,
+    /// oldest first: the loop takes them out after every message.
+    pub effects: Vec<Effect>,
 }
 
 impl App {
-    /// A UI on chapter 0 and scene 0, asking for its first render
-    /// (generation 1).
+    /// A UI on chapter 0 and scene 0 at generation 1, not rendering yet
+    /// ([`launch_app`](super::launch_app) asks for the first render).
     pub fn new(
         chapters: Vec<&'static dyn Chapter>,
         mut scenes: Vec<SceneEntry>,
@@ -206,11 +204,9 @@ impl App {
             snapshot: None,
             failure: None,
             message: String::new(),
-            save_requested: false,
             color,
             out_dir: PathBuf::from("out"),
             grading: None,
-            grade_requested: false,
             student: None,
             target: Target::DEFAULT,
             paused: false,
@@ -220,7 +216,6 @@ impl App {
             zoom: 1,
             hover: None,
             trace: None,
-            trace_requested: None,
             traces: 0,
             story: None,
             refusals: BTreeMap::new(),
@@ -230,6 +225,7 @@ impl App {
             panel_scroll: 0,
             table_scroll: 0,
             message_age: Duration::ZERO,
+            effects: Vec::new(),
         };
         if !app.chapters.is_empty() {
             if let Some(i) = app.opening_scene(0) {
@@ -363,7 +359,6 @@ impl App {
         self.snapshot = None;
         self.failure = None;
         self.trace = None;
-        self.trace_requested = None;
         self.story = None;
         let (views, variants) = self
             .current_chapter()

@@ -28,6 +28,19 @@ pub struct Job {
     pub target: Option<Target>,
 }
 
+impl std::fmt::Debug for Job {
+    /// The chapter by its number and the scene by its name.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Job")
+            .field("generation", &self.generation)
+            .field("chapter", &self.chapter.info().number)
+            .field("scene", &self.scene.name)
+            .field("variant", &self.variant)
+            .field("target", &self.target)
+            .finish_non_exhaustive()
+    }
+}
+
 /// What the worker reports.
 #[derive(Clone, Debug)]
 pub enum Progress {

@@ -1,19 +1,31 @@
-//! [`update`], a pure function from (state, message) to the next state (its
-//! student-mode part is in [`student_update`](super::student_update)), and [`save`]. `update` touches
-//! neither the terminal, the clock nor the disk: the event loop turns keys
-//! and worker reports into messages and carries out the effects `update`
-//! asks for (start a render when the generation changes, save when
-//! `save_requested` is set, read the grader's images when
-//! `grade_requested` is set, keep a student-mode watcher on the chapter
-//! `student` names).
+//! [`update`], a pure function from (state, message) to the next state and
+//! the [`Effect`]s it asks for (its student-mode part is in
+//! [`student_update`](super::student_update)), and [`save`]. `update`
+//! touches neither the terminal, the clock, the disk nor a thread: the
+//! event loop turns keys and answers into messages, and carries out the
+//! effects `update` leaves in [`App::effects`].
+//!
+//! Some effects are asked for by a message itself: `s` saves
+//! ([`Effect::Save`]), `g` reads the grader's images
+//! ([`Effect::LoadGrades`]), `t` traces a path ([`Effect::Trace`]). The
+//! others follow from comparing the state before and after the message
+//! (`follow`): a new generation starts its render ([`Effect::Start`],
+//! once); within a generation a new target or pause goes to the running
+//! render ([`Effect::Retarget`], [`Effect::Pause`]); student mode's
+//! chapter gets its watcher ([`Effect::Watch`]); and a pixel inspected over
+//! a new picture or a newly inspected pixel gets its story asked for
+//! ([`Effect::Story`], once per pixel and generation).
 
 use super::app::*;
+use super::effect::Effect;
 pub use super::save::save;
 use super::student_update::{student_event, student_follows_chapter, toggle_student};
-use super::worker::{Progress, Purpose};
+use super::worker::{Progress, Purpose, Target};
 
-/// The next state of the UI after `msg`.
+/// The next state of the UI after `msg`, with what it asks the event loop
+/// to do added to [`App::effects`].
 pub fn update(mut app: App, msg: Msg) -> App {
+    let outward = Outward::of(&app);
     let before = app.message.clone();
     // The next action clears a message (it may set its own).
     let action = msg.is_action();
@@ -25,7 +37,72 @@ pub fn update(mut app: App, msg: Msg) -> App {
     if app.message != before || (action && !app.message.is_empty()) {
         app.message_age = std::time::Duration::ZERO;
     }
+    follow(&mut app, &outward);
     app
+}
+
+/// The part of the state the world outside follows (the running render,
+/// student mode's watcher, the inspect panel's story), compared before
+/// and after a message.
+struct Outward {
+    generation: u64,
+    target: Target,
+    paused: bool,
+    watched: Option<u32>,
+    story: Option<((u32, u32), u64)>,
+}
+
+impl Outward {
+    fn of(app: &App) -> Outward {
+        Outward {
+            generation: app.generation,
+            target: app.target,
+            paused: app.paused,
+            watched: app.student.as_ref().map(|s| s.chapter),
+            story: story_wanted(app),
+        }
+    }
+}
+
+/// The pixel whose story the inspect panel wants, with the render to ask:
+/// inspect mode is on over a picture, in a chapter that tells stories
+/// (chapter 6 traces paths instead).
+fn story_wanted(app: &App) -> Option<((u32, u32), u64)> {
+    let pixel = app.inspect?;
+    app.snapshot.as_ref()?;
+    (!app.traces_paths()).then_some((pixel, app.generation))
+}
+
+/// The effects that follow from what a message changed (`before`: the
+/// state before it).
+fn follow(app: &mut App, before: &Outward) {
+    let now = Outward::of(app);
+    let generation = app.generation;
+    if now.generation != before.generation {
+        // The job carries the target, and a new render runs unpaused.
+        let job = app.job();
+        app.effects.extend(job.map(Effect::Start));
+    } else {
+        if now.target != before.target {
+            let target = app.target;
+            app.effects.push(Effect::Retarget { generation, target });
+        }
+        if now.paused != before.paused {
+            let paused = app.paused;
+            app.effects.push(Effect::Pause { generation, paused });
+        }
+    }
+    if now.watched != before.watched {
+        app.effects.push(Effect::Watch(now.watched));
+    }
+    // Asked when the pixel or the render changes, unless the panel holds
+    // that pixel's story already (inspect mode off and on again).
+    let held = |pixel: (u32, u32)| app.story.as_ref().map(|(x, y, _)| (*x, *y)) == Some(pixel);
+    if let Some((pixel, generation)) = now.story.filter(|s| Some(*s) != before.story) {
+        if !held(pixel) {
+            app.effects.push(Effect::Story { generation, pixel });
+        }
+    }
 }
 
 fn step(mut app: App, msg: Msg) -> App {
@@ -187,29 +264,20 @@ fn step(mut app: App, msg: Msg) -> App {
         Msg::MarkRegion => app.mark_region(),
         Msg::TogglePin => app.toggle_pin(),
         Msg::TracePath => match (app.inspect, app.snapshot.as_ref()) {
-            (Some((x, y)), Some(snap)) if app.traces_paths() => {
+            (Some(pixel), Some(snap)) if app.traces_paths() => {
                 let sample = app.traces % snap.samples.max(1);
-                app.trace_requested = Some((x, y, sample));
+                let generation = app.generation;
+                app.effects.push(Effect::Trace {
+                    generation,
+                    pixel,
+                    sample,
+                });
                 app.traces += 1;
             }
             (Some(_), _) if app.traces_paths() => app.message = "nothing rendered yet".into(),
             _ => app.message = "t traces a path in chapter 6's inspect mode (i)".into(),
         },
-        Msg::Traced(result) => {
-            app.trace_requested = None;
-            match result {
-                Ok(t) if Some(t.pixel) == app.inspect => {
-                    app.message = format!(
-                        "traced sample {} of pixel ({}, {}) (t: the next sample)",
-                        t.sample, t.pixel.0, t.pixel.1
-                    );
-                    app.trace = Some(t);
-                    app.table_scroll = 0;
-                }
-                Ok(_) => {}
-                Err(e) => app.message = format!("cannot trace: {e}"),
-            }
-        }
+        Msg::Traced(result) => traced(&mut app, result),
         Msg::Story(x, y, lines) => app.story = Some((x, y, lines)),
         Msg::TargetUp | Msg::TargetDown => {
             if app.progressive() {
@@ -225,35 +293,32 @@ fn step(mut app: App, msg: Msg) -> App {
                 app.compare = Compare::Render;
                 app.message = "back to the render".into();
             } else {
-                app.grade_requested = true;
+                app.effects.push(Effect::LoadGrades);
             }
         }
-        Msg::GradeLoaded(result) => {
-            app.grade_requested = false;
-            match result {
-                Ok(Some(images)) => {
-                    app.student = None;
-                    app.message = format!(
+        Msg::GradeLoaded(result) => match result {
+            Ok(Some(images)) => {
+                app.student = None;
+                app.message = format!(
                         "grading {}: student vs reference (r: student → reference → difference → relative, g: back)",
                         images.stem
                     );
-                    app.grading = Some(images);
-                    app.compare = Compare::Render;
-                }
-                Ok(None) => {
-                    app.message = format!(
-                        "no failed image checks in {}: run `cargo run --release --bin grade` first",
-                        app.grade_dir().display()
-                    )
-                }
-                Err(e) => app.message = format!("cannot read the grader's images: {e}"),
+                app.grading = Some(images);
+                app.compare = Compare::Render;
             }
-        }
+            Ok(None) => {
+                app.message = format!(
+                    "no failed image checks in {}: run `cargo run --release --bin grade` first",
+                    app.grade_dir().display()
+                )
+            }
+            Err(e) => app.message = format!("cannot read the grader's images: {e}"),
+        },
         Msg::ToggleStudent => toggle_student(&mut app),
         Msg::Student(chapter, event) => student_event(&mut app, chapter, event),
         Msg::Save => {
             if app.snapshot.is_some() || app.grading.is_some() || app.student_render().is_some() {
-                app.save_requested = true;
+                app.effects.push(Effect::Save);
             } else {
                 app.message = "nothing to save yet".into();
             }
@@ -262,7 +327,6 @@ fn step(mut app: App, msg: Msg) -> App {
             app.message = "paste ignored: the UI takes keys one at a time".into();
         }
         Msg::Saved(result) => {
-            app.save_requested = false;
             app.message = match result {
                 Ok(files) => format!(
                     "saved {}",
@@ -348,7 +412,7 @@ fn step(mut app: App, msg: Msg) -> App {
                 purpose: Purpose::Trace,
                 result,
                 ..
-            } => return update(app, Msg::Traced(result.map(Box::new))),
+            } => traced(&mut app, result.map(Box::new)),
             Progress::Inspected {
                 purpose: Purpose::Story,
                 result,
@@ -364,6 +428,23 @@ fn step(mut app: App, msg: Msg) -> App {
     }
     student_follows_chapter(&mut app);
     app
+}
+
+/// The path `t` asked for, or why there is none: shown if the cursor is
+/// still on its pixel.
+fn traced(app: &mut App, result: Result<Box<crate::core::stage::Inspection>, String>) {
+    match result {
+        Ok(t) if Some(t.pixel) == app.inspect => {
+            app.message = format!(
+                "traced sample {} of pixel ({}, {}) (t: the next sample)",
+                t.sample, t.pixel.0, t.pixel.1
+            );
+            app.trace = Some(t);
+            app.table_scroll = 0;
+        }
+        Ok(_) => {}
+        Err(e) => app.message = format!("cannot trace: {e}"),
+    }
 }
 
 /// Esc: closes what is open, the innermost first (the help is closed

@@ -22,6 +22,7 @@ use raystep::core::report::Report;
 use raystep::core::stage::{Chapter, ChapterInfo, Pass, Render, Settings, Snapshot, Variant, View};
 use raystep::scene::Scene;
 use raystep::tui::app::{combine_layers, App, BounceMode, Compare, Focus, Msg};
+use raystep::tui::effect::Effect;
 use raystep::tui::keys::msg_for_key;
 use raystep::tui::picture::{fit, Picture};
 use raystep::tui::scenes::{scene_list, SceneEntry};
@@ -513,9 +514,16 @@ fn keys_map_to_messages() {
 fn save_writes_the_view_as_png_and_the_film_as_exr() {
     let dir = common::temp_dir("tui-save");
     let mut app = update(app(), Msg::Save);
-    assert!(!app.save_requested, "nothing to save before the first pass");
+    assert!(
+        !app.effects.iter().any(|e| matches!(e, Effect::Save)),
+        "nothing to save before the first pass: {:?}",
+        app.effects
+    );
+    assert_eq!(app.message, "nothing to save yet");
     app = rendered(app);
     app.out_dir = dir.clone();
+    // (The first render was asked for: what follows asks for a save alone.)
+    app.effects.clear();
     app = send(
         app,
         &[
@@ -525,7 +533,9 @@ fn save_writes_the_view_as_png_and_the_film_as_exr() {
             Msg::Save,
         ],
     );
-    assert!(app.save_requested);
+    let asked = std::mem::take(&mut app.effects);
+    assert!(matches!(asked[..], [Effect::Save]), "{asked:?}");
+    // What the event loop does with it.
     let files = save(&app).unwrap();
     // The name says chapter, scene, view, bounce layer, estimator and
     // exposure (the fake counts no samples).
@@ -542,7 +552,7 @@ fn save_writes_the_view_as_png_and_the_film_as_exr() {
     let exr = Film::read_exr(&files[1]).unwrap();
     assert_eq!(exr.pixels[0], layer_color(0));
     let app = update(app, Msg::Saved(Ok(files)));
-    assert!(!app.save_requested);
+    assert!(app.effects.is_empty(), "{:?}", app.effects);
     assert!(app.message.starts_with("saved "), "{}", app.message);
 }
 
@@ -877,10 +887,12 @@ fn g_shows_the_graders_newest_failure_student_against_reference() {
     app.out_dir = out.clone();
     // No grader output yet: a message saying how to make some.
     assert!(latest_failure_images(&app.grade_dir()).unwrap().is_none());
-    let app = update(app, Msg::ToggleGrading);
-    assert!(app.grade_requested);
+    app.effects.clear();
+    let mut app = update(app, Msg::ToggleGrading);
+    let asked = std::mem::take(&mut app.effects);
+    assert!(matches!(asked[..], [Effect::LoadGrades]), "{asked:?}");
     let app = update(app, Msg::GradeLoaded(Ok(None)));
-    assert!(!app.grade_requested && app.grading.is_none());
+    assert!(app.effects.is_empty() && app.grading.is_none());
     assert!(app.message.contains("--bin grade"), "{}", app.message);
 
     grade_images(&app.grade_dir());
@@ -911,8 +923,9 @@ fn g_shows_the_graders_newest_failure_student_against_reference() {
     assert!(screen.contains("grade · ch1-pinhole · student"), "{screen}");
     // g again: back to the render.
     let render = flat(layer_color(0) + layer_color(1) + layer_color(2)).pixels[0];
+    app.effects.clear();
     let app = update(app, Msg::ToggleGrading);
-    assert!(app.grading.is_none() && !app.grade_requested);
+    assert!(app.grading.is_none() && app.effects.is_empty());
     assert_eq!(pixel(&app), render);
     assert_eq!(
         msg_for_key(&app, key(KeyCode::Char('g')))
