@@ -19,6 +19,7 @@
 //! restored on quit, on an error and on a panic of the UI thread (a panic
 //! hook restores it and then prints the panic).
 
+pub mod answers;
 pub mod app;
 pub mod bench;
 pub mod compared;
@@ -44,6 +45,7 @@ pub mod region;
 pub mod save;
 pub mod scenes;
 pub mod screen;
+pub mod screen_update;
 pub mod shown;
 pub mod signals;
 pub mod state;
