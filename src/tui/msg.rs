@@ -156,8 +156,10 @@ pub enum Msg {
 
 impl Msg {
     /// Whether the user did this (a key, a click, the wheel): such a
-    /// message clears the message line before it acts. Reports from the
-    /// worker, the save, the grader and the clock do not.
+    /// message clears the message line before it acts, and closes the help
+    /// overlay. Answers from the threads (the worker, a save, the grader,
+    /// the student-mode watcher, a scene file read, the warp view's draws),
+    /// a new terminal size and the clock do neither.
     pub fn is_action(&self) -> bool {
         !matches!(
             self,
@@ -167,6 +169,9 @@ impl Msg {
                 | Msg::Student(..)
                 | Msg::Traced(_)
                 | Msg::Story(..)
+                | Msg::SceneRead(..)
+                | Msg::WarpBuiltin(..)
+                | Msg::WarpStudent(..)
                 | Msg::Resize(..)
                 | Msg::Tick(_)
         )

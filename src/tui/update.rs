@@ -116,24 +116,13 @@ fn follow(app: &mut App, before: &Outward) {
 /// `msg` applied to `app`: the help overlay takes the keys while it is
 /// open; every other message goes to the function of its mode.
 fn step(mut app: App, msg: Msg) -> App {
-    // Any key but `?` closes the help overlay first; the arrows, j k, u d
-    // and the page keys scroll it.
+    // Any key but `?` and `q` closes the help overlay first (and does
+    // nothing else); the arrows, j k, u d and the page keys scroll it. What
+    // the user did not do (an answer from a thread, the clock) goes on.
     if app.help && app.scroll_help(&msg) {
         return app;
     }
-    if app.help
-        && !matches!(
-            msg,
-            Msg::ToggleHelp
-                | Msg::Quit
-                | Msg::Tick(_)
-                | Msg::Resize(..)
-                | Msg::Progress(_)
-                | Msg::Saved(_)
-                | Msg::GradeLoaded(_)
-                | Msg::Student(..)
-        )
-    {
+    if app.help && msg.is_action() && !matches!(msg, Msg::ToggleHelp | Msg::Quit) {
         app.help = false;
         return app;
     }

@@ -1115,6 +1115,29 @@ fn an_edited_scene_file_is_reloaded() {
     assert!(!app.reload_if_changed());
 }
 
+/// An answer from a thread (here a scene file read) is not something the
+/// user did: with the help open it is taken all the same, and the help
+/// stays open; it does not clear the message line either.
+#[test]
+fn answers_from_threads_neither_close_the_help_nor_clear_the_message() {
+    let dir = common::temp_dir("tui-answer-help");
+    let text = std::fs::read_to_string(common::root().join("scenes/tetrahedron.toml")).unwrap();
+    common::write_files(&dir, &[("tet.toml", &text)]);
+    let app = App::new(raystep::chapters::all(), scene_list(&dir), false);
+    let mut app = send(app, &[Msg::SwitchFocus, Msg::Down, Msg::ToggleHelp]);
+    assert!(app.help && app.job().is_none(), "chosen, not read yet");
+    app.message = "reloading tet.toml: the file changed".into();
+    let (index, file) = app.scene_to_read().unwrap();
+    let read = raystep::tui::scenes::read_scene(&file);
+    let app = update(app, Msg::SceneRead(index, file, read));
+    assert!(app.help, "the help stays open");
+    assert!(app.job().is_some(), "the scene was read: it renders");
+    assert_eq!(app.message, "reloading tet.toml: the file changed");
+    // A key still closes the help, and only that.
+    let app = update(app, Msg::NextView);
+    assert!(!app.help && app.view == 0);
+}
+
 #[test]
 fn the_error_chart_is_log_log_with_the_half_slope_guide() {
     use raystep::tui::view::{log_log, LogLog};
