@@ -1,8 +1,8 @@
 //! The answers from the UI's threads, as [`update`](super::update::update)
 //! applies them: the render worker's reports (a pass, a failure, a
 //! refusal, a traced path, a story), a save's files, the grader's images,
-//! the student-mode watcher's reports, a scene file read, the warp view's
-//! draws. A report about a render that has been replaced is dropped.
+//! the student-mode watcher's reports, a scene file read or edited, the
+//! warp view's draws. A report about a render that has been replaced is dropped.
 
 use super::app::{App, Compare, Msg};
 use super::student_update::student_event;
@@ -33,6 +33,7 @@ pub(super) fn answer(app: &mut App, msg: Msg) {
         Msg::GradeLoaded(result) => grades_loaded(app, result),
         Msg::Student(chapter, event) => student_event(app, chapter, event),
         Msg::SceneRead(index, path, read) => app.scene_read(index, &path, read),
+        Msg::SceneEdited(index) => app.scene_edited(index),
         Msg::WarpBuiltin(index, seed, test) => {
             if let Some(w) = app.warp.as_mut() {
                 w.builtin_done(index, seed, *test);

@@ -1,9 +1,9 @@
 //! The UI's state and the messages that change it; the change itself is
 //! [`update`](super::update::update), a pure function from (state, message)
-//! to the next state. Nothing here touches the terminal or the clock, and
-//! only [`App::reload_if_changed`] looks at the disk: the event loop calls
-//! it to learn (from their modification times) whether scene files
-//! changed.
+//! to the next state and the [`Effect`]s it asks for. Nothing here touches
+//! the terminal, the clock, the disk or a thread: a scene file is read by
+//! the event loop, which also looks for edits
+//! ([`Msg::SceneRead`], [`Msg::SceneEdited`]).
 
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -166,18 +166,12 @@ pub struct App {
 }
 
 impl App {
-    /// A UI on chapter 0 and scene 0 at generation 1, not rendering yet
-    /// ([`launch_app`](super::launch_app) asks for the first render).
-    pub fn new(
-        chapters: Vec<&'static dyn Chapter>,
-        mut scenes: Vec<SceneEntry>,
-        color: bool,
-    ) -> App {
+    /// A UI on chapter 0 and scene 0 (or the chapter's own scene) at
+    /// generation 1, not rendering yet: [`launch_app`](super::launch_app)
+    /// asks for the first render, and a scene file not read yet is read
+    /// by the event loop ([`App::scene_to_read`]).
+    pub fn new(chapters: Vec<&'static dyn Chapter>, scenes: Vec<SceneEntry>, color: bool) -> App {
         let variant = chapters.first().map_or(0, |c| c.info().default_variant);
-        // The first entry is shown at once: read it now.
-        if let Some(first) = scenes.first_mut() {
-            first.ensure_loaded();
-        }
         let mut app = App {
             chapters,
             scenes,
@@ -230,7 +224,6 @@ impl App {
         if !app.chapters.is_empty() {
             if let Some(i) = app.opening_scene(0) {
                 app.scene = i;
-                app.scenes[i].ensure_loaded();
             }
             app.opened = vec![true];
         }
@@ -392,28 +385,6 @@ impl App {
             self.scene_came_with_chapter = true;
             self.restart();
         }
-    }
-
-    /// Marks the current scene to be read again if its file was edited
-    /// since it was read (the event loop reads it in a thread, then it
-    /// renders anew); whether it was.
-    pub fn reload_if_changed(&mut self) -> bool {
-        let Some(entry) = self.scenes.get_mut(self.scene) else {
-            return false;
-        };
-        if !entry.reload_if_changed() {
-            return false;
-        }
-        // The file is new: what the chapters said of the old one is not
-        // known of it.
-        let scene = self.scene;
-        self.refusals.retain(|(_, s), _| *s != scene);
-        self.message = format!(
-            "reloading {}: the file changed",
-            crate::core::text::escape(&entry.source)
-        );
-        self.restart();
-        true
     }
 
     pub(super) fn select_scene(&mut self, index: usize) {

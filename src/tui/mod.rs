@@ -272,7 +272,12 @@ fn event_loop(
         }
         if checked.elapsed() >= Duration::from_secs(1) {
             checked = Instant::now();
-            frames.dirty |= app.reload_if_changed();
+            // Edited since it was read: read again (a stat, not a read).
+            if app.current_scene().is_some_and(|e| e.edited()) {
+                let edited = Msg::SceneEdited(app.scene);
+                app = threads.handle(app, edited);
+                frames.dirty = true;
+            }
         }
         for msg in threads.messages(&app) {
             app = threads.handle(app, msg);

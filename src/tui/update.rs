@@ -161,6 +161,7 @@ fn step(mut app: App, msg: Msg) -> App {
         | Msg::GradeLoaded(_)
         | Msg::Student(..)
         | Msg::SceneRead(..)
+        | Msg::SceneEdited(_)
         | Msg::WarpBuiltin(..)
         | Msg::WarpStudent(..) => answer(&mut app, msg),
         Msg::Scroll(_)
