@@ -59,4 +59,17 @@ pub enum Effect {
     /// Watch this chapter's exercise files for student mode (the watcher
     /// of another chapter stops); `None`: no watcher.
     Watch(Option<u32>),
+    /// Draw built-in warp routine `index`'s directions with `seed` and
+    /// test them, in a thread; the answer comes back as
+    /// [`Msg::WarpBuiltin`](super::msg::Msg::WarpBuiltin).
+    WarpBuiltin {
+        /// The routine.
+        index: usize,
+        /// The seed of its numbers.
+        seed: u64,
+    },
+    /// Build and run the student's warp routine with this seed, in a
+    /// thread, cancelling the build under way (`None`: only cancel); the
+    /// answer comes back as [`Msg::WarpStudent`](super::msg::Msg::WarpStudent).
+    WarpStudent(Option<u64>),
 }

@@ -86,6 +86,8 @@ impl Threads {
                 return Some(Msg::GradeLoaded(images.map_err(|e| e.to_string())));
             }
             Effect::Watch(chapter) => self.watch(chapter, &app.out_dir),
+            Effect::WarpBuiltin { index, seed } => self.warp.draw_builtin(index, seed),
+            Effect::WarpStudent(seed) => self.warp.draw_student(seed, &app.out_dir),
         }
         None
     }
@@ -101,7 +103,7 @@ impl Threads {
     /// What the watcher, the scene reader and the warp jobs sent since the
     /// last call, as messages (the worker's reports are read apart, as the
     /// loop counts them). Also starts reading the scene file `app` waits
-    /// for, when no other file is being read, and the warp view's draws.
+    /// for, when no other file is being read.
     pub fn messages(&mut self, app: &App) -> Vec<Msg> {
         let mut msgs = Vec::new();
         if let Some(w) = &self.student {
@@ -121,7 +123,7 @@ impl Threads {
             self.reading = None;
             msgs.push(Msg::SceneRead(index, path, read));
         }
-        msgs.extend(self.warp.step(app.warp.as_deref(), &app.out_dir));
+        msgs.extend(self.warp.answers());
         msgs
     }
 }

@@ -18,9 +18,12 @@
 //! (`follow`): a new generation starts its render ([`Effect::Start`],
 //! once); within a generation a new target or pause goes to the running
 //! render ([`Effect::Retarget`], [`Effect::Pause`]); student mode's
-//! chapter gets its watcher ([`Effect::Watch`]); and a pixel inspected over
-//! a new picture or a newly inspected pixel gets its story asked for
-//! ([`Effect::Story`], once per pixel and generation).
+//! chapter gets its watcher ([`Effect::Watch`]); a pixel inspected over a
+//! new picture or a newly inspected pixel gets its story asked for
+//! ([`Effect::Story`], once per pixel and generation); and the routine the
+//! warp view waits for gets drawn ([`Effect::WarpBuiltin`],
+//! [`Effect::WarpStudent`], which also cancels the student's build the
+//! view no longer wants).
 
 use super::answers::answer;
 use super::app::*;
@@ -50,14 +53,16 @@ pub fn update(mut app: App, msg: Msg) -> App {
 }
 
 /// The part of the state the world outside follows (the running render,
-/// student mode's watcher, the inspect panel's story), compared before
-/// and after a message.
+/// student mode's watcher, the inspect panel's story, the warp view's
+/// draws), compared before and after a message.
 struct Outward {
     generation: u64,
     target: Target,
     paused: bool,
     watched: Option<u32>,
     story: Option<((u32, u32), u64)>,
+    warp_builtin: Option<(usize, u64)>,
+    warp_student: Option<u64>,
 }
 
 impl Outward {
@@ -68,6 +73,11 @@ impl Outward {
             paused: app.paused,
             watched: app.student.as_ref().map(|s| s.chapter),
             story: story_wanted(app),
+            warp_builtin: app
+                .warp
+                .as_ref()
+                .and_then(|w| w.pending.map(|s| (w.index, s))),
+            warp_student: app.warp.as_ref().and_then(|w| w.student_requested),
         }
     }
 }
@@ -102,6 +112,12 @@ fn follow(app: &mut App, before: &Outward) {
     }
     if now.watched != before.watched {
         app.effects.push(Effect::Watch(now.watched));
+    }
+    if let Some((index, seed)) = now.warp_builtin.filter(|w| Some(*w) != before.warp_builtin) {
+        app.effects.push(Effect::WarpBuiltin { index, seed });
+    }
+    if now.warp_student != before.warp_student {
+        app.effects.push(Effect::WarpStudent(now.warp_student));
     }
     // Asked when the pixel or the render changes, unless the panel holds
     // that pixel's story already (inspect mode off and on again).
