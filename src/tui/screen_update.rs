@@ -36,12 +36,10 @@ pub(super) fn screen(app: &mut App, msg: Msg) {
             app.panel_scroll = app.panel_scroll.min(panel_room(app));
             app.table_scroll = app.table_scroll.min(table_room(app));
         }
-        Msg::Tick(elapsed) => {
-            if !app.message.is_empty() {
-                app.message_age += elapsed;
-                if app.message_age >= MESSAGE_TTL {
-                    app.message.clear();
-                }
+        Msg::Tick(elapsed) if !app.message.is_empty() => {
+            app.message_age += elapsed;
+            if app.message_age >= MESSAGE_TTL {
+                app.message.clear();
             }
         }
         _ => {}

@@ -37,7 +37,7 @@ use super::worker::Target;
 /// to do added to [`App::effects`].
 pub fn update(mut app: App, msg: Msg) -> App {
     let outward = Outward::of(&app);
-    let before = app.message.clone();
+    let old_message = app.message.clone();
     // The next action clears a message (it may set its own).
     let action = msg.is_action();
     if action {
@@ -45,7 +45,7 @@ pub fn update(mut app: App, msg: Msg) -> App {
     }
     let mut app = step(app, msg);
     // A new message, or the same one said again, starts its time anew.
-    if app.message != before || (action && !app.message.is_empty()) {
+    if app.message != old_message || (action && !app.message.is_empty()) {
         app.message_age = std::time::Duration::ZERO;
     }
     follow(&mut app, &outward);
