@@ -1,9 +1,9 @@
 //! The UI's state and the messages that change it; the change itself is
 //! [`update`](super::update::update), a pure function from (state, message)
-//! to the next state. Nothing here touches the terminal or the clock, and
-//! only [`App::reload_if_changed`] looks at the disk: the event loop calls
-//! it to learn (from their modification times) whether scene files
-//! changed.
+//! to the next state and the [`Effect`]s it asks for. Nothing here touches
+//! the terminal, the clock, the disk or a thread: a scene file is read by
+//! the event loop, which also looks for edits
+//! ([`Msg::SceneRead`], [`Msg::SceneEdited`]).
 
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -11,6 +11,7 @@ use std::time::Duration;
 
 use ratatui::layout::Rect;
 
+use super::effect::Effect;
 pub use super::layers::{bounce_name, combine_layers, expose, BounceMode, Compare};
 pub use super::msg::Msg;
 use super::scenes::SceneEntry;
@@ -112,8 +113,6 @@ pub struct App {
     pub failure: Option<String>,
     /// One line of feedback (e.g. what was saved).
     pub message: String,
-    /// Asks the event loop to save the current view.
-    pub save_requested: bool,
     /// Draw the preview in 24-bit colour (else a plain ASCII ramp).
     pub color: bool,
     /// Where `s` saves.
@@ -121,15 +120,13 @@ pub struct App {
     /// The grader's newest failure images, shown instead of the render
     /// while set (`g`).
     pub grading: Option<FailureImages>,
-    /// Asks the event loop to read the grader's images from
-    /// [`App::grade_dir`].
-    pub grade_requested: bool,
-    /// Student mode (`x`): the event loop keeps a watcher on this chapter.
+    /// Student mode (`x`): a watcher runs on its chapter
+    /// ([`Effect::Watch`]).
     pub student: Option<super::student::StudentMode>,
-    /// How far a progressive chapter renders (the event loop passes a
-    /// change on to the running render).
+    /// How far a progressive chapter renders (a change goes to the running
+    /// render: [`Effect::Retarget`]).
     pub target: Target,
-    /// Whether the progressive render is paused (passed on likewise).
+    /// Whether the progressive render is paused ([`Effect::Pause`]).
     pub paused: bool,
     /// How the preview is drawn ([`super::graphics::choose`]).
     pub graphics: super::graphics::Graphics,
@@ -145,13 +142,11 @@ pub struct App {
     /// The path traced from the inspected pixel (`t`), as the panel shows
     /// it; cleared when the cursor moves or the render restarts.
     pub trace: Option<Box<Inspection>>,
-    /// Asks the event loop to trace sample `.2` of pixel (`.0`, `.1`).
-    pub trace_requested: Option<(u32, u32, u32)>,
     /// How many paths `t` has traced at this pixel (the next one traces
     /// the next sample).
     pub traces: u32,
     /// The per-pixel story of chapters 3 to 5 for the inspected pixel
-    /// (the event loop fills it in when the cursor moves).
+    /// (asked of the render when the cursor moves: [`Effect::Story`]).
     pub story: Option<(u32, u32, Vec<String>)>,
     /// Why a chapter refused a scene when it started, per (chapter index,
     /// scene index): the scene list marks those scenes, and switching
@@ -173,21 +168,18 @@ pub struct App {
     pub table_scroll: u16,
     /// How long the current message has been shown.
     pub message_age: Duration,
+    /// What [`update`](super::update::update) asks the event loop to do,
+    /// oldest first: the loop takes them out after every message.
+    pub effects: Vec<Effect>,
 }
 
 impl App {
-    /// A UI on chapter 0 and scene 0, asking for its first render
-    /// (generation 1).
-    pub fn new(
-        chapters: Vec<&'static dyn Chapter>,
-        mut scenes: Vec<SceneEntry>,
-        color: bool,
-    ) -> App {
+    /// A UI on chapter 0 and scene 0 (or the chapter's own scene) at
+    /// generation 1, not rendering yet: [`launch_app`](super::launch_app)
+    /// asks for the first render, and a scene file not read yet is read
+    /// by the event loop ([`App::scene_to_read`]).
+    pub fn new(chapters: Vec<&'static dyn Chapter>, scenes: Vec<SceneEntry>, color: bool) -> App {
         let variant = chapters.first().map_or(0, |c| c.info().default_variant);
-        // The first entry is shown at once: read it now.
-        if let Some(first) = scenes.first_mut() {
-            first.ensure_loaded();
-        }
         let mut app = App {
             chapters,
             scenes,
@@ -214,11 +206,9 @@ impl App {
             snapshot: None,
             failure: None,
             message: String::new(),
-            save_requested: false,
             color,
             out_dir: PathBuf::from("out"),
             grading: None,
-            grade_requested: false,
             student: None,
             target: Target::DEFAULT,
             paused: false,
@@ -228,7 +218,6 @@ impl App {
             zoom: 1,
             hover: None,
             trace: None,
-            trace_requested: None,
             traces: 0,
             story: None,
             refusals: BTreeMap::new(),
@@ -238,11 +227,11 @@ impl App {
             panel_scroll: 0,
             table_scroll: 0,
             message_age: Duration::ZERO,
+            effects: Vec::new(),
         };
         if !app.chapters.is_empty() {
             if let Some(i) = app.opening_scene(0) {
                 app.scene = i;
-                app.scenes[i].ensure_loaded();
             }
             app.opened = vec![true];
         }
@@ -371,7 +360,6 @@ impl App {
         self.snapshot = None;
         self.failure = None;
         self.trace = None;
-        self.trace_requested = None;
         self.story = None;
         let (views, variants) = self
             .current_chapter()
@@ -405,28 +393,6 @@ impl App {
             self.scene_came_with_chapter = true;
             self.restart();
         }
-    }
-
-    /// Marks the current scene to be read again if its file was edited
-    /// since it was read (the event loop reads it in a thread, then it
-    /// renders anew); whether it was.
-    pub fn reload_if_changed(&mut self) -> bool {
-        let Some(entry) = self.scenes.get_mut(self.scene) else {
-            return false;
-        };
-        if !entry.reload_if_changed() {
-            return false;
-        }
-        // The file is new: what the chapters said of the old one is not
-        // known of it.
-        let scene = self.scene;
-        self.refusals.retain(|(_, s), _| *s != scene);
-        self.message = format!(
-            "reloading {}: the file changed",
-            crate::core::text::escape(&entry.source)
-        );
-        self.restart();
-        true
     }
 
     pub(super) fn select_scene(&mut self, index: usize) {

@@ -40,6 +40,26 @@ impl App {
         }
     }
 
+    /// Scene `index`'s file was edited since it was read: it is read again
+    /// (by the event loop, in a thread), and if it is the current scene
+    /// its render starts anew on it.
+    pub fn scene_edited(&mut self, index: usize) {
+        let Some(entry) = self.scenes.get_mut(index) else {
+            return;
+        };
+        entry.read_again();
+        // The file is new: what the chapters said of the old one is not
+        // known of it.
+        self.refusals.retain(|(_, s), _| *s != index);
+        self.message = format!(
+            "reloading {}: the file changed",
+            crate::core::text::escape(&entry.source)
+        );
+        if index == self.scene {
+            self.restart();
+        }
+    }
+
     /// The scene chapter `index` opens on: the first time, the chapter's
     /// own scene ([`ChapterInfo::scene`](crate::core::stage::ChapterInfo::scene))
     /// when the list has it; never a scene the chapter is known to refuse

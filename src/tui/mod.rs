@@ -1,27 +1,34 @@
 //! The terminal UI of `cargo run --release`, behind the default `tui`
 //! feature (the rest of the library never uses ratatui or crossterm).
 //!
-//! Built after ratatui's templates: the state, the messages and a pure
-//! [`update::update`] in [`update`](mod@update); a pure [`view::view`]; key mapping in
-//! [`keys`]; a render [`worker`] thread that sends a snapshot after every
-//! pass; and this module's event loop, which owns the terminal. The UI
-//! drives chapters only through [`crate::core::stage::Chapter`] and
-//! [`crate::core::stage::Render`], so a new chapter appears here by being listed
-//! in [`crate::chapters::all`].
+//! Built after ratatui's templates: the state ([`app`]), the messages
+//! ([`msg`]) and a pure [`update::update`] in [`update`](mod@update),
+//! which says what should happen outside as [`effect::Effect`]s; a pure
+//! [`view::view`]; key mapping in [`keys`]; a render [`worker`] thread
+//! that sends a snapshot after every pass; the other [`threads`], which
+//! carry out the effects; and this module's event loop, which owns the
+//! terminal. The UI drives chapters only through
+//! [`crate::core::stage::Chapter`] and [`crate::core::stage::Render`], so a
+//! new chapter appears here by being listed in [`crate::chapters::all`].
 //!
 //! The loop polls for keys with a short timeout (so a key is handled within
-//! a frame, well under 50 ms), drains the worker's channel, and redraws at
-//! most [`FRAME`] apart, and only when something changed. The terminal is
+//! a frame, well under 50 ms), drains the threads' channels, hands every
+//! message to `update` and carries out the effects it asks for, and
+//! redraws at most [`FRAME`] apart, and only when something changed. It
+//! keeps no copy of the state to compare against. The terminal is
 //! restored on quit, on an error and on a panic of the UI thread (a panic
 //! hook restores it and then prints the panic).
 
+pub mod answers;
 pub mod app;
 pub mod bench;
 pub mod compared;
 pub mod curves;
+pub mod effect;
 pub mod gauge;
 pub mod graphics;
 pub mod inspect;
+pub mod job;
 pub mod keys;
 pub mod labels;
 pub mod last;
@@ -38,6 +45,7 @@ pub mod region;
 pub mod save;
 pub mod scenes;
 pub mod screen;
+pub mod screen_update;
 pub mod shown;
 pub mod signals;
 pub mod split;
@@ -47,6 +55,7 @@ pub mod student;
 pub mod student_update;
 pub mod target;
 pub mod terminal;
+pub mod threads;
 pub mod update;
 pub mod view;
 pub mod warp;
@@ -63,10 +72,9 @@ use ratatui::backend::CrosstermBackend;
 use ratatui::Terminal;
 
 use app::{App, Msg};
+use effect::Effect;
 pub use terminal::restore_terminal;
 use terminal::{answer_signal, install_panic_hook, take_terminal, Restore};
-use update::{save, update};
-use worker::{Purpose, Worker};
 
 /// Shortest time between two redraws (about 30 per second).
 pub const FRAME: Duration = Duration::from_millis(33);
@@ -120,7 +128,8 @@ pub struct Launch {
 }
 
 /// The UI's first state for `launch`: its chapter, scene and budget
-/// selected, asking for its first render.
+/// selected, asking for its first render ([`Effect::Start`] in
+/// [`App::effects`]; none while its scene waits to be read).
 pub fn launch_app(launch: &Launch, color: bool) -> App {
     launch_app_with(launch, color, None)
 }
@@ -158,8 +167,13 @@ pub fn launch_app_with(launch: &Launch, color: bool, last: Option<&last::Last>) 
             })
         })
     });
-    if let Some(n) = launch.chapter.or(last.map(|l| l.chapter)) {
-        app = update(app, Msg::ChapterNumber(n));
+    let number = launch.chapter.or(last.map(|l| l.chapter));
+    if let Some(i) = app
+        .chapters
+        .iter()
+        .position(|c| Some(c.info().number) == number)
+    {
+        app.select_chapter(i);
     }
     if let Some(i) = chosen.or(remembered_scene.filter(|_| launch.scene.is_none())) {
         app.select_scene(i);
@@ -170,6 +184,9 @@ pub fn launch_app_with(launch: &Launch, color: bool, last: Option<&last::Last>) 
             app.view = v;
         }
     }
+    // The selection is made: its render is the first.
+    let job = app.job();
+    app.effects.extend(job.map(Effect::Start));
     app
 }
 
@@ -226,125 +243,46 @@ fn run_app(
     last
 }
 
+/// The loop: answers signals, looks for edited scene files, hands every
+/// message to [`threads::Threads::handle`] (which carries out the effects
+/// `update` asks for), draws when something changed, and waits for a key
+/// at most until the next frame is due.
 fn event_loop(
     terminal: &mut stats::Term,
     mut app: App,
     rates: &mut stats::Rates,
     signals: Option<&signals::Signals>,
 ) -> std::io::Result<Option<last::Last>> {
-    let worker = Worker::spawn();
+    let mut threads = threads::Threads::spawn();
     let size = terminal.size()?;
-    app = update(app, Msg::Resize(size.width, size.height));
+    // Also carries out what `launch_app` asked for: the first render.
+    app = threads.handle(app, Msg::Resize(size.width, size.height));
+    let mut frames = Frames {
+        painter: painter::Painter::for_process(app.graphics),
+        dirty: true,
+        last: None,
+    };
     let mut ticked = Instant::now();
-    // Student mode's watcher, on the chapter `app.student` names; dropped
-    // (its build or render stopped) on the way out.
-    let mut student: Option<student::Watcher> = None;
-    let mut sent = 0;
-    // The target and pause state the running render was last given.
-    let mut sent_target = app.target;
-    let mut sent_paused = false;
-    let mut dirty = true;
-    let mut last_draw: Option<Instant> = None;
-    // The inspections last asked of the render (it answers through the
-    // worker: the UI never traces a ray itself).
-    let mut story_key = None;
-    let mut sent_trace = None;
-    // Scene files are read in a thread of their own, one at a time.
-    let (read_tx, read_rx) = std::sync::mpsc::channel();
-    let mut reading: Option<(usize, PathBuf)> = None;
-    // The warp view's draws and the student's builds, off the UI thread.
-    let mut warp_jobs = warp_jobs::WarpJobs::default();
     // When the current scene's file was last looked at for edits.
     let mut checked = Instant::now();
-    let mut painter = painter::Painter::for_process(app.graphics);
     loop {
         rates.tick(Instant::now());
         while let Some(signal) = signals.and_then(|s| s.try_recv()) {
-            answer_signal(signal, terminal, &mut painter)?;
-            dirty = true;
+            answer_signal(signal, terminal, &mut frames.painter)?;
+            frames.dirty = true;
         }
         if checked.elapsed() >= Duration::from_secs(1) {
             checked = Instant::now();
-            dirty |= app.reload_if_changed();
-        }
-        // Effects asked for by `update`: a new render, a save.
-        if app.generation != sent {
-            sent = app.generation;
-            if let Some(job) = app.job() {
-                worker.start(job);
-            }
-            (sent_target, sent_paused) = (app.target, false);
-        }
-        if app.target != sent_target {
-            sent_target = app.target;
-            worker.retarget(sent, app.target);
-        }
-        if app.paused != sent_paused {
-            sent_paused = app.paused;
-            worker.pause(sent, app.paused);
-        }
-        if app.save_requested {
-            let result = save(&app);
-            app = update(app, Msg::Saved(result));
-            dirty = true;
-        }
-        if app.grade_requested {
-            let result =
-                crate::grading::latest_failure_images(&app.grade_dir()).map_err(|e| e.to_string());
-            app = update(app, Msg::GradeLoaded(result));
-            dirty = true;
-        }
-        let wanted = app.student.as_ref().map(|s| s.chapter);
-        if wanted != student.as_ref().map(|w| w.chapter) {
-            if let Some(w) = student.take() {
-                w.detach();
-            }
-            student = wanted.map(|n| student::Watcher::spawn(n, app.out_dir.clone()));
-        }
-        if let Some(w) = &student {
-            while let Ok(event) = w.events.try_recv() {
-                app = update(app, Msg::Student(w.chapter, event));
-                dirty = true;
+            // Edited since it was read: read again (a stat, not a read).
+            if app.current_scene().is_some_and(|e| e.edited()) {
+                let edited = Msg::SceneEdited(app.scene);
+                app = threads.handle(app, edited);
+                frames.dirty = true;
             }
         }
-        if reading.is_none() {
-            if let Some((index, path)) = app.scene_to_read() {
-                reading = Some((index, path.clone()));
-                let tx = read_tx.clone();
-                std::thread::spawn(move || {
-                    let read = scenes::read_scene(&path);
-                    let _ = tx.send((index, path, read));
-                });
-                dirty = true;
-            }
-        }
-        while let Ok((index, path, read)) = read_rx.try_recv() {
-            reading = None;
-            app = update(app, Msg::SceneRead(index, path, read));
-            dirty = true;
-        }
-        for msg in warp_jobs.step(app.warp.as_deref(), &app.out_dir) {
-            app = update(app, msg);
-            dirty = true;
-        }
-        if app.trace_requested != sent_trace {
-            sent_trace = app.trace_requested;
-            if let Some((x, y, sample)) = app.trace_requested {
-                worker.inspect(sent, (x, y), sample, Purpose::Trace);
-            }
-        }
-        let key = (
-            app.inspect,
-            app.generation,
-            app.chapter,
-            app.scene,
-            app.variant,
-        );
-        if app.inspect.is_some() && app.snapshot.is_some() && story_key != Some(key) {
-            story_key = Some(key);
-            if let (Some(p), false) = (app.inspect, app.traces_paths()) {
-                worker.inspect(sent, p, 0, Purpose::Story);
-            }
+        for msg in threads.messages(&app) {
+            app = threads.handle(app, msg);
+            frames.dirty = true;
         }
         if app.quit {
             return Ok(last::of(&app));
@@ -353,16 +291,43 @@ fn event_loop(
         let elapsed = ticked.elapsed();
         ticked = Instant::now();
         if !app.message.is_empty() {
-            app = update(app, Msg::Tick(elapsed));
-            dirty |= app.message.is_empty();
+            app = threads.handle(app, Msg::Tick(elapsed));
+            frames.dirty |= app.message.is_empty();
         }
-        let since = last_draw.map_or(FRAME, |t| t.elapsed());
-        if dirty && since >= FRAME {
-            painter::draw_frame(terminal, &app, &mut painter)?;
-            last_draw = Some(Instant::now());
-            dirty = painter.pending();
-            // For the end-to-end test of the panic hook: a panic while the
-            // UI owns the terminal.
+        let timeout = frames.draw(terminal, &app)?;
+        if let Some(msg) = input(terminal, &app, &mut frames, timeout)? {
+            app = threads.handle(app, msg);
+            frames.dirty = true;
+        }
+        while let Ok(progress) = threads.worker.results.try_recv() {
+            app = threads.handle(app, Msg::Progress(progress));
+            frames.dirty = true;
+            rates.busy();
+        }
+    }
+}
+
+/// The screen as the loop draws it.
+struct Frames {
+    painter: painter::Painter,
+    /// Something changed since the last frame.
+    dirty: bool,
+    /// When the last frame was drawn.
+    last: Option<Instant>,
+}
+
+impl Frames {
+    /// Draws `app` if something changed and a frame is due (at most
+    /// [`FRAME`] apart); how long to wait for a key: at most until the
+    /// next frame is due.
+    fn draw(&mut self, terminal: &mut stats::Term, app: &App) -> std::io::Result<Duration> {
+        let since = self.last.map_or(FRAME, |t| t.elapsed());
+        if self.dirty && since >= FRAME {
+            painter::draw_frame(terminal, app, &mut self.painter)?;
+            self.last = Some(Instant::now());
+            self.dirty = self.painter.pending();
+            // For the end-to-end tests: a panic, or an error, while the UI
+            // owns the terminal.
             if std::env::var_os(TEST_PANIC).is_some() {
                 panic!("{TEST_PANIC} is set: a deliberate panic after the first frame");
             }
@@ -372,52 +337,45 @@ fn event_loop(
                 )));
             }
         }
-        // Wait for a key, at most until the next frame is due.
-        let timeout = if dirty {
+        Ok(if self.dirty {
             FRAME.saturating_sub(since).max(Duration::from_millis(1))
         } else {
             Duration::from_millis(20)
-        };
-        if event::poll(timeout)? {
-            match event::read()? {
-                Event::Key(key)
-                    if key.code == KeyCode::Char('z')
-                        && key.modifiers.contains(KeyModifiers::CONTROL) =>
-                {
-                    // Ctrl-Z, a key in raw mode: suspend as TSTP would.
-                    answer_signal(signals::Signal::Suspend, terminal, &mut painter)?;
-                    dirty = true;
-                }
-                Event::Paste(_) => {
-                    app = update(app, Msg::Pasted);
-                    dirty = true;
-                }
-                Event::Key(key) => {
-                    if let Some(msg) = keys::msg_for_key(&app, key) {
-                        app = update(app, msg);
-                        dirty = true;
-                    }
-                }
-                Event::Mouse(m) => {
-                    let size = terminal.size()?;
-                    if let Some(msg) = keys::msg_for_mouse(m, (size.width, size.height)) {
-                        app = update(app, msg);
-                        dirty = true;
-                    }
-                }
-                Event::Resize(width, height) => {
-                    terminal.autoresize()?;
-                    painter.invalidate(terminal.backend_mut())?;
-                    app = update(app, Msg::Resize(width, height));
-                    dirty = true;
-                }
-                _ => {}
-            }
-        }
-        while let Ok(progress) = worker.results.try_recv() {
-            app = update(app, Msg::Progress(progress));
-            dirty = true;
-            rates.busy();
-        }
+        })
     }
+}
+
+/// Waits up to `timeout` for a terminal event: the message it makes, if
+/// any. Ctrl-Z suspends here; a resize also resizes the terminal.
+fn input(
+    terminal: &mut stats::Term,
+    app: &App,
+    frames: &mut Frames,
+    timeout: Duration,
+) -> std::io::Result<Option<Msg>> {
+    if !event::poll(timeout)? {
+        return Ok(None);
+    }
+    Ok(match event::read()? {
+        Event::Key(key)
+            if key.code == KeyCode::Char('z') && key.modifiers.contains(KeyModifiers::CONTROL) =>
+        {
+            // Ctrl-Z, a key in raw mode: suspend as TSTP would.
+            answer_signal(signals::Signal::Suspend, terminal, &mut frames.painter)?;
+            frames.dirty = true;
+            None
+        }
+        Event::Paste(_) => Some(Msg::Pasted),
+        Event::Key(key) => keys::msg_for_key(app, key),
+        Event::Mouse(m) => {
+            let size = terminal.size()?;
+            keys::msg_for_mouse(m, (size.width, size.height))
+        }
+        Event::Resize(width, height) => {
+            terminal.autoresize()?;
+            frames.painter.invalidate(terminal.backend_mut())?;
+            Some(Msg::Resize(width, height))
+        }
+        _ => None,
+    })
 }

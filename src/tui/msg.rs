@@ -123,6 +123,10 @@ pub enum Msg {
     /// A scene file the event loop read in a thread: the entry, the path,
     /// what it read.
     SceneRead(usize, std::path::PathBuf, super::scenes::Read),
+    /// The event loop saw that this entry's scene file was edited since it
+    /// was read ([`SceneEntry::edited`](super::scenes::SceneEntry::edited)):
+    /// it is read again, and renders anew.
+    SceneEdited(usize),
     /// The student's routine drew (seed, its draws or why not).
     WarpStudent(u64, Result<crate::core::warp_test::Drawn, String>),
     /// A built-in routine's test, drawn in a thread: routine, seed, test.
@@ -159,8 +163,11 @@ pub enum Msg {
 
 impl Msg {
     /// Whether the user did this (a key, a click, the wheel): such a
-    /// message clears the message line before it acts. Reports from the
-    /// worker, the save, the grader and the clock do not.
+    /// message clears the message line before it acts, and closes the help
+    /// overlay. Answers from the threads (the worker, a save, the grader,
+    /// the student-mode watcher, a scene file read or edited, the warp
+    /// view's draws),
+    /// a new terminal size and the clock do neither.
     pub fn is_action(&self) -> bool {
         !matches!(
             self,
@@ -170,6 +177,10 @@ impl Msg {
                 | Msg::Student(..)
                 | Msg::Traced(_)
                 | Msg::Story(..)
+                | Msg::SceneRead(..)
+                | Msg::SceneEdited(_)
+                | Msg::WarpBuiltin(..)
+                | Msg::WarpStudent(..)
                 | Msg::Resize(..)
                 | Msg::Tick(_)
         )

@@ -25,7 +25,7 @@ pub struct SceneEntry {
     pub pending: Option<PathBuf>,
     /// When the file read was last modified (`None` for the built-in
     /// scene, or a file whose time cannot be read): a later time means the
-    /// file was edited, and [`SceneEntry::reload_if_changed`] reads it again.
+    /// file was edited ([`SceneEntry::edited`]), and it is read again.
     pub modified: Option<SystemTime>,
 }
 
@@ -97,20 +97,20 @@ impl SceneEntry {
         true
     }
 
-    /// Marks the entry to be read again if its file was edited (or
-    /// deleted, or made) since it was read; whether it was. The built-in scene and entries
-    /// not read yet never change here.
-    pub fn reload_if_changed(&mut self) -> bool {
-        if self.pending.is_some() || self.source.starts_with("<built-in>") {
-            return false;
+    /// Whether its file was edited (or deleted, or made) since it was
+    /// read: looks at the file's modification time on disk. The built-in
+    /// scene and entries not read yet are never edited.
+    pub fn edited(&self) -> bool {
+        !(self.pending.is_some() || self.source.starts_with("<built-in>"))
+            && modified(Path::new(&self.source)) != self.modified
+    }
+
+    /// Marks the entry to be read again (its file was [`edited`](Self::edited)).
+    pub fn read_again(&mut self) {
+        if !self.source.starts_with("<built-in>") {
+            self.pending = Some(PathBuf::from(&self.source));
+            self.scene = Err("reading the changed file…".into());
         }
-        let path = PathBuf::from(&self.source);
-        if modified(&path) == self.modified {
-            return false;
-        }
-        self.pending = Some(path);
-        self.scene = Err("reading the changed file…".into());
-        true
     }
 }
 

@@ -28,13 +28,15 @@ pub struct WarpView {
     /// The outcome, or for the student's routine while it is being built
     /// and run (or could not be) what is happening.
     pub test: Result<WarpTest, String>,
-    /// The student's routine is to be built and run with this seed (the
-    /// event loop does it in a thread and answers with
-    /// [`crate::tui::app::Msg::WarpStudent`]).
+    /// The student's routine is to be built and run with this seed: when
+    /// it changes, `update` asks the event loop to
+    /// ([`crate::tui::effect::Effect::WarpStudent`]), which does it in a
+    /// thread and answers with [`crate::tui::app::Msg::WarpStudent`].
     pub student_requested: Option<u64>,
-    /// A built-in routine is to be tested with this seed: the event loop
-    /// draws its directions in a thread, off the UI's, and answers with
-    /// [`crate::tui::app::Msg::WarpBuiltin`].
+    /// A built-in routine is to be tested with this seed: `update` asks
+    /// the event loop to ([`crate::tui::effect::Effect::WarpBuiltin`]),
+    /// which draws its directions in a thread, off the UI's, and answers
+    /// with [`crate::tui::app::Msg::WarpBuiltin`].
     pub pending: Option<u64>,
 }
 

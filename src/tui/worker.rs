@@ -22,8 +22,7 @@ use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use super::pool::JobPool;
-use crate::core::stage::{Chapter, Inspection, Render, Settings};
-use crate::scene::Scene;
+use crate::core::stage::Render;
 
 pub use super::target::{finished, Finish, Target, MIN_SPP_FOR_NOISE};
 
@@ -31,82 +30,13 @@ pub use super::target::{finished, Finish, Target, MIN_SPP_FOR_NOISE};
 /// every view and layer, so very short passes are not each shown.
 pub const SNAPSHOT_EVERY: Duration = Duration::from_millis(80);
 
-/// What to render.
-#[derive(Clone)]
-pub struct Job {
-    /// The UI's generation when it asked for this render.
-    pub generation: u64,
-    /// The stage.
-    pub chapter: &'static dyn Chapter,
-    /// The scene.
-    pub scene: Arc<Scene>,
-    /// The settings.
-    pub settings: Settings,
-    /// Index into [`ChapterInfo::variants`](crate::core::stage::ChapterInfo::variants) (0 when there are none).
-    pub variant: usize,
-    /// For a progressive stage, how far to go (the settings' `spp` is then
-    /// ignored); `None`: the stage's own plan.
-    pub target: Option<Target>,
-}
+pub use super::job::{Job, Progress, Purpose};
 
 pub use super::state::RenderState;
 
 pub use crate::core::film::film_mean;
 
 pub use super::pool::THREAD_NAME;
-
-/// What the worker reports.
-#[derive(Clone, Debug)]
-pub enum Progress {
-    /// A pass finished.
-    State(Box<RenderState>),
-    /// The answer to [`Worker::inspect`].
-    Inspected {
-        /// The generation of the job.
-        generation: u64,
-        /// What the inspection is for.
-        purpose: Purpose,
-        /// The render's answer, or why there is none.
-        result: Result<Inspection, String>,
-    },
-    /// The stage refused to start on this scene ([`Chapter::start`]'s
-    /// error): the UI remembers it against the (chapter, scene) pair.
-    Refused {
-        /// The generation of the job.
-        generation: u64,
-        /// Why.
-        message: String,
-    },
-    /// The stage panicked while starting or in a pass.
-    Failed {
-        /// The generation of the job.
-        generation: u64,
-        /// What went wrong.
-        message: String,
-    },
-}
-
-impl Progress {
-    /// The generation this report belongs to.
-    pub fn generation(&self) -> u64 {
-        match self {
-            Progress::State(s) => s.generation,
-            Progress::Inspected { generation, .. }
-            | Progress::Refused { generation, .. }
-            | Progress::Failed { generation, .. } => *generation,
-        }
-    }
-}
-
-/// What an inspection is for: the story shown beside the inspected pixel,
-/// or the path table (`t`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Purpose {
-    /// The inspect panel's story lines.
-    Story,
-    /// The traced path's table.
-    Trace,
-}
 
 /// What the UI tells the worker.
 enum Command {
@@ -338,23 +268,10 @@ impl Command {
 fn render_jobs(commands: Receiver<Command>, results: Sender<Progress>) {
     let mut current: Option<Current> = None;
     loop {
-        // Wait for a command when there is nothing to render; otherwise
-        // take whatever came in since the last pass.
         let busy = current.as_ref().is_some_and(|c| !c.paused && !c.done);
-        let mut incoming = Vec::new();
-        if !busy {
-            match commands.recv() {
-                Ok(c) => incoming.push(c),
-                Err(_) => return,
-            }
-        }
-        loop {
-            match commands.try_recv() {
-                Ok(c) => incoming.push(c),
-                Err(TryRecvError::Empty) => break,
-                Err(TryRecvError::Disconnected) => return,
-            }
-        }
+        let Some(mut incoming) = incoming(&commands, busy) else {
+            return;
+        };
         // Only the newest job matters.
         if let Some(i) = incoming
             .iter()
@@ -368,92 +285,132 @@ fn render_jobs(commands: Receiver<Command>, results: Sender<Progress>) {
         }
         for command in incoming {
             let Some(cur) = current.as_mut() else { break };
-            match command {
-                Command::Retarget { generation, target } if generation == cur.job.generation => {
-                    cur.job.target = Some(target);
-                    cur.render.set_spp(target.spp);
-                    // Go on (or stop at once, if already past it).
-                    cur.done = false;
-                }
-                Command::Inspect {
-                    generation,
-                    pixel,
-                    sample,
-                    purpose,
-                } if generation == cur.job.generation => {
-                    let answer =
-                        catch_unwind(AssertUnwindSafe(|| cur.render.inspect(pixel, sample)));
-                    let result = match answer {
-                        Ok(Some(i)) => Ok(i),
-                        Ok(None) => Err("nothing to inspect here yet".to_string()),
-                        Err(p) => Err(format!("the stage panicked: {}", panic_message(&*p))),
-                    };
-                    let inspected = Progress::Inspected {
-                        generation,
-                        purpose,
-                        result,
-                    };
-                    if results.send(inspected).is_err() {
-                        return;
-                    }
-                }
-                Command::Pause { generation, paused } if generation == cur.job.generation => {
-                    cur.paused = paused;
-                    if paused
-                        && results
-                            .send(Progress::State(Box::new(cur.snapshot())))
-                            .is_err()
-                    {
-                        return;
-                    }
-                }
-                _ => {}
+            if cur.obey(command, &results).is_err() {
+                return;
             }
         }
-        let Some(cur) = current.as_mut() else {
+        let Some(cur) = current.as_mut().filter(|c| !c.paused && !c.done) else {
             continue;
         };
-        if cur.paused || cur.done {
-            continue;
+        match cur.pass(&results) {
+            Pass::Ran => {}
+            Pass::Failed => current = None,
+            Pass::UiGone => return,
         }
+    }
+}
+
+/// The commands that came since the last pass; when there is nothing to
+/// render (`busy` false), waits for one first. `None`: the channel closed.
+fn incoming(commands: &Receiver<Command>, busy: bool) -> Option<Vec<Command>> {
+    let mut incoming = Vec::new();
+    if !busy {
+        incoming.push(commands.recv().ok()?);
+    }
+    loop {
+        match commands.try_recv() {
+            Ok(c) => incoming.push(c),
+            Err(TryRecvError::Empty) => return Some(incoming),
+            Err(TryRecvError::Disconnected) => return None,
+        }
+    }
+}
+
+/// How a pass went.
+enum Pass {
+    /// It ran (and its snapshot was sent if one was due).
+    Ran,
+    /// The stage panicked; the UI was told.
+    Failed,
+    /// The UI is gone.
+    UiGone,
+}
+
+/// The UI is gone: the job's thread stops.
+struct UiGone;
+
+impl Current {
+    /// Carries out a command about this render (one about another
+    /// generation is dropped).
+    fn obey(&mut self, command: Command, results: &Sender<Progress>) -> Result<(), UiGone> {
+        match command {
+            Command::Retarget { generation, target } if generation == self.job.generation => {
+                self.job.target = Some(target);
+                self.render.set_spp(target.spp);
+                // Go on (or stop at once, if already past it).
+                self.done = false;
+            }
+            Command::Inspect {
+                generation,
+                pixel,
+                sample,
+                purpose,
+            } if generation == self.job.generation => {
+                let answer = catch_unwind(AssertUnwindSafe(|| self.render.inspect(pixel, sample)));
+                let result = match answer {
+                    Ok(Some(i)) => Ok(i),
+                    Ok(None) => Err("nothing to inspect here yet".to_string()),
+                    Err(p) => Err(format!("the stage panicked: {}", panic_message(&*p))),
+                };
+                let inspected = Progress::Inspected {
+                    generation,
+                    purpose,
+                    result,
+                };
+                results.send(inspected).map_err(|_| UiGone)?;
+            }
+            Command::Pause { generation, paused } if generation == self.job.generation => {
+                self.paused = paused;
+                if paused {
+                    let snap = Progress::State(Box::new(self.snapshot()));
+                    results.send(snap).map_err(|_| UiGone)?;
+                }
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    /// Runs one pass, and sends its snapshot when one is due (at most
+    /// every [`SNAPSHOT_EVERY`], and always after the last pass).
+    fn pass(&mut self, results: &Sender<Progress>) -> Pass {
         let t = Instant::now();
         let pass = catch_unwind(AssertUnwindSafe(|| {
-            let pass = cur.render.pass();
+            let pass = self.render.pass();
             let mut done = pass.complete;
-            if let (false, Some(target)) = (done, &cur.job.target) {
+            if let (false, Some(target)) = (done, &self.job.target) {
                 let (noise, mean) = pass.noise.map_or((None, 0.0), |(n, m)| (Some(n), m));
                 done = finished(target, pass.samples, noise, mean).is_some();
             }
             done
         }));
-        cur.active += t.elapsed();
-        match pass {
-            Ok(done) => {
-                cur.done = done;
-                let due = cur.sent.is_none_or(|s| s.elapsed() >= SNAPSHOT_EVERY);
-                if done || due {
-                    let snap = catch_unwind(AssertUnwindSafe(|| cur.snapshot()));
-                    let Ok(snap) = snap else {
-                        let _ = results.send(Progress::Failed {
-                            generation: cur.job.generation,
-                            message: "the stage panicked while showing its image".into(),
-                        });
-                        current = None;
-                        continue;
-                    };
-                    if results.send(Progress::State(Box::new(snap))).is_err() {
-                        return;
-                    }
-                    cur.sent = Some(Instant::now());
-                }
-            }
+        self.active += t.elapsed();
+        let failed = |message: String| Progress::Failed {
+            generation: self.job.generation,
+            message,
+        };
+        let done = match pass {
+            Ok(done) => done,
             Err(p) => {
-                let _ = results.send(Progress::Failed {
-                    generation: cur.job.generation,
-                    message: format!("the stage panicked: {}", panic_message(&*p)),
-                });
-                current = None;
+                let message = format!("the stage panicked: {}", panic_message(&*p));
+                let _ = results.send(failed(message));
+                return Pass::Failed;
             }
+        };
+        self.done = done;
+        let due = self.sent.is_none_or(|s| s.elapsed() >= SNAPSHOT_EVERY);
+        if !(done || due) {
+            return Pass::Ran;
         }
+        let Ok(snap) = catch_unwind(AssertUnwindSafe(|| self.snapshot())) else {
+            let message = "the stage panicked while showing its image".to_string();
+            let _ = results.send(failed(message));
+            return Pass::Failed;
+        };
+        if results.send(Progress::State(Box::new(snap))).is_err() {
+            return Pass::UiGone;
+        }
+        self.sent = Some(Instant::now());
+        Pass::Ran
     }
 }

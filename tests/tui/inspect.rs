@@ -10,6 +10,7 @@ use crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 use raystep::core::stage::{Inspection, Settings};
 use raystep::scene::Scene;
 use raystep::tui::app::{App, Msg};
+use raystep::tui::effect::Effect;
 use raystep::tui::inspect::inspect_lines;
 use raystep::tui::keys::msg_for_key;
 use raystep::tui::scenes::SceneEntry;
@@ -227,9 +228,17 @@ fn t_traces_a_path_and_the_panel_shows_its_table() {
     let key = KeyEvent::new(KeyCode::Char('t'), KeyModifiers::NONE);
     let msg = msg_for_key(&app, key).unwrap();
     assert!(matches!(msg, Msg::TracePath));
-    let app = update(app, msg);
-    let (x, y, sample) = app.trace_requested.unwrap();
-    assert_eq!((x, y, sample), (32, 50, 0));
+    let mut app = update(app, msg);
+    let asked = std::mem::take(&mut app.effects);
+    let [Effect::Trace {
+        generation,
+        pixel: (x, y),
+        sample,
+    }] = asked[..]
+    else {
+        panic!("one trace: {asked:?}")
+    };
+    assert_eq!((generation, x, y, sample), (app.generation, 32, 50, 0));
     // What the event loop does: ask the running render (through the
     // worker, here directly) for sample `sample` of the pixel.
     let table = inspected(&app, (x, y), sample);
@@ -244,7 +253,18 @@ fn t_traces_a_path_and_the_panel_shows_its_table() {
     assert!(text.contains("#1 "), "{text}");
     // Again: the next sample; moving the cursor clears the table.
     let app = update(app, Msg::TracePath);
-    assert_eq!(app.trace_requested, Some((32, 50, 1)));
+    assert!(
+        matches!(
+            app.effects[..],
+            [Effect::Trace {
+                pixel: (32, 50),
+                sample: 1,
+                ..
+            }]
+        ),
+        "{:?}",
+        app.effects
+    );
     let app = update(app, Msg::CursorMove(1, 0));
     assert!(app.trace.is_none());
     insta::assert_snapshot!("inspect_trace_160x50", text);

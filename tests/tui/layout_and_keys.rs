@@ -22,6 +22,7 @@ use raystep::core::report::Report;
 use raystep::core::stage::{Chapter, ChapterInfo, Pass, Render, Settings, Snapshot, Variant, View};
 use raystep::scene::Scene;
 use raystep::tui::app::{combine_layers, App, BounceMode, Compare, Focus, Msg};
+use raystep::tui::effect::Effect;
 use raystep::tui::keys::msg_for_key;
 use raystep::tui::picture::{fit, Picture};
 use raystep::tui::scenes::{scene_list, SceneEntry};
@@ -514,9 +515,16 @@ fn keys_map_to_messages() {
 fn save_writes_the_view_as_png_and_the_film_as_exr() {
     let dir = common::temp_dir("tui-save");
     let mut app = update(app(), Msg::Save);
-    assert!(!app.save_requested, "nothing to save before the first pass");
+    assert!(
+        !app.effects.iter().any(|e| matches!(e, Effect::Save)),
+        "nothing to save before the first pass: {:?}",
+        app.effects
+    );
+    assert_eq!(app.message, "nothing to save yet");
     app = rendered(app);
     app.out_dir = dir.clone();
+    // (The first render was asked for: what follows asks for a save alone.)
+    app.effects.clear();
     app = send(
         app,
         &[
@@ -526,7 +534,9 @@ fn save_writes_the_view_as_png_and_the_film_as_exr() {
             Msg::Save,
         ],
     );
-    assert!(app.save_requested);
+    let asked = std::mem::take(&mut app.effects);
+    assert!(matches!(asked[..], [Effect::Save]), "{asked:?}");
+    // What the event loop does with it.
     let files = save(&app).unwrap();
     // The name says chapter, scene, view, bounce layer, estimator and
     // exposure (the fake counts no samples).
@@ -543,7 +553,7 @@ fn save_writes_the_view_as_png_and_the_film_as_exr() {
     let exr = Film::read_exr(&files[1]).unwrap();
     assert_eq!(exr.pixels[0], layer_color(0));
     let app = update(app, Msg::Saved(Ok(files)));
-    assert!(!app.save_requested);
+    assert!(app.effects.is_empty(), "{:?}", app.effects);
     assert!(app.message.starts_with("saved "), "{}", app.message);
 }
 
@@ -878,10 +888,12 @@ fn g_shows_the_graders_newest_failure_student_against_reference() {
     app.out_dir = out.clone();
     // No grader output yet: a message saying how to make some.
     assert!(latest_failure_images(&app.grade_dir()).unwrap().is_none());
-    let app = update(app, Msg::ToggleGrading);
-    assert!(app.grade_requested);
+    app.effects.clear();
+    let mut app = update(app, Msg::ToggleGrading);
+    let asked = std::mem::take(&mut app.effects);
+    assert!(matches!(asked[..], [Effect::LoadGrades]), "{asked:?}");
     let app = update(app, Msg::GradeLoaded(Ok(None)));
-    assert!(!app.grade_requested && app.grading.is_none());
+    assert!(app.effects.is_empty() && app.grading.is_none());
     assert!(app.message.contains("--bin grade"), "{}", app.message);
 
     grade_images(&app.grade_dir());
@@ -912,8 +924,9 @@ fn g_shows_the_graders_newest_failure_student_against_reference() {
     assert!(screen.contains("grade · ch1-pinhole · student"), "{screen}");
     // g again: back to the render.
     let render = flat(layer_color(0) + layer_color(1) + layer_color(2)).pixels[0];
+    app.effects.clear();
     let app = update(app, Msg::ToggleGrading);
-    assert!(app.grading.is_none() && !app.grade_requested);
+    assert!(app.grading.is_none() && app.effects.is_empty());
     assert_eq!(pixel(&app), render);
     assert_eq!(
         msg_for_key(&app, key(KeyCode::Char('g')))
@@ -1078,7 +1091,8 @@ fn an_edited_scene_file_is_reloaded() {
             .width
     };
     let before = width(&app);
-    assert!(!app.reload_if_changed(), "nothing changed yet");
+    let changed = |app: &App| app.current_scene().unwrap().edited();
+    assert!(!changed(&app), "nothing changed yet");
     // Edit the file (a later modification time, as an editor gives it).
     let edited = text.replace(&format!("width = {before}"), "width = 77");
     assert_ne!(edited, text, "the scene sets its width");
@@ -1091,16 +1105,51 @@ fn an_edited_scene_file_is_reloaded() {
         .set_modified(later)
         .unwrap();
     let generation = app.generation;
-    assert!(app.reload_if_changed());
-    app.read_scene_now();
+    assert!(changed(&app));
+    // What the event loop does: tell `update`, then read the file in a
+    // thread (here at once) and hand it back.
+    let index = app.scene;
+    app = update(app, Msg::SceneEdited(index));
+    let (index, file) = app.scene_to_read().expect("read again");
+    let read = raystep::tui::scenes::read_scene(&file);
+    app.effects.clear();
+    app = update(app, Msg::SceneRead(index, file, read));
     assert_eq!(width(&app), 77);
     assert!(app.generation > generation, "the render restarts");
+    assert!(
+        matches!(&app.effects[..], [Effect::Start(job)] if job.generation == app.generation),
+        "{:?}",
+        app.effects
+    );
     assert!(
         app.message.contains("reloading") && app.message.contains("tet.toml"),
         "{}",
         app.message
     );
-    assert!(!app.reload_if_changed());
+    assert!(!changed(&app));
+}
+
+/// An answer from a thread (here a scene file read) is not something the
+/// user did: with the help open it is taken all the same, and the help
+/// stays open; it does not clear the message line either.
+#[test]
+fn answers_from_threads_neither_close_the_help_nor_clear_the_message() {
+    let dir = common::temp_dir("tui-answer-help");
+    let text = std::fs::read_to_string(common::root().join("scenes/tetrahedron.toml")).unwrap();
+    common::write_files(&dir, &[("tet.toml", &text)]);
+    let app = App::new(raystep::chapters::all(), scene_list(&dir), false);
+    let mut app = send(app, &[Msg::SwitchFocus, Msg::Down, Msg::ToggleHelp]);
+    assert!(app.help && app.job().is_none(), "chosen, not read yet");
+    app.message = "reloading tet.toml: the file changed".into();
+    let (index, file) = app.scene_to_read().unwrap();
+    let read = raystep::tui::scenes::read_scene(&file);
+    let app = update(app, Msg::SceneRead(index, file, read));
+    assert!(app.help, "the help stays open");
+    assert!(app.job().is_some(), "the scene was read: it renders");
+    assert_eq!(app.message, "reloading tet.toml: the file changed");
+    // A key still closes the help, and only that.
+    let app = update(app, Msg::NextView);
+    assert!(!app.help && app.view == 0);
 }
 
 #[test]

@@ -5,6 +5,7 @@
 mod converge;
 mod curves;
 mod difference;
+mod effects;
 mod end_to_end;
 mod flip;
 mod graphics;

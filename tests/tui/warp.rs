@@ -175,26 +175,65 @@ fn a_cancelled_student_build_stops_at_once() {
     let _ = std::fs::remove_dir_all(dir);
 }
 
-/// The event loop's part, as it runs it: `WarpJobs::step` starts a
-/// built-in routine's draws in a thread once, and hands back the answer as
-/// the message that fills the view.
+/// What the view asks of the event loop: opening it, another routine or
+/// new numbers draw the routine shown (once); the student's routine is
+/// built, and its build cancelled when the view moves on or closes.
 #[test]
-fn warp_jobs_draw_a_builtin_routine_in_a_thread_once() {
+fn the_view_asks_for_the_draws_it_shows() {
+    use raystep::tui::effect::Effect;
+    let effects_of = |mut app: App, msg| {
+        app.effects.clear();
+        let mut app = update(app, msg);
+        let effects = std::mem::take(&mut app.effects);
+        (app, effects)
+    };
     let app = App::new(raystep::chapters::all(), vec![SceneEntry::builtin()], false);
-    let mut app = update(app, Msg::ToggleWarp);
+    let (app, asked) = effects_of(app, Msg::ToggleWarp);
+    assert!(
+        matches!(asked[..], [Effect::WarpBuiltin { index: 0, seed: 1 }]),
+        "{asked:?}"
+    );
+    let (app, asked) = effects_of(app, Msg::WarpReseed);
+    assert!(
+        matches!(asked[..], [Effect::WarpBuiltin { index: 0, seed: 2 }]),
+        "{asked:?}"
+    );
+    // The student's routine is the last: built with the same seed, and
+    // cancelled when the view closes.
+    let (app, asked) = effects_of(app, Msg::WarpStep(-1));
+    assert!(
+        matches!(asked[..], [Effect::WarpStudent(Some(2))]),
+        "{asked:?}"
+    );
+    let (app, asked) = effects_of(app, Msg::ToggleWarp);
+    assert!(app.warp.is_none());
+    assert!(
+        matches!(asked[..], [Effect::WarpStudent(None)]),
+        "{asked:?}"
+    );
+    let (_, asked) = effects_of(app, Msg::WarpReseed);
+    assert!(asked.is_empty(), "closed: {asked:?}");
+}
+
+/// The event loop's part, as it runs it: opening the view draws the
+/// first routine in a thread once, and the answer comes back as the
+/// message that fills the view.
+#[test]
+fn the_threads_draw_a_builtin_routine_once() {
+    let mut threads = raystep::tui::threads::Threads::spawn();
+    let app = App::new(raystep::chapters::all(), vec![SceneEntry::builtin()], false);
+    let mut app = threads.handle(app, Msg::ToggleWarp);
     assert!(
         app.warp.as_ref().unwrap().test.is_err(),
         "not drawn on the UI thread"
     );
-    let mut jobs = raystep::tui::warp_jobs::WarpJobs::default();
-    let dir = std::env::temp_dir();
     let start = std::time::Instant::now();
     let mut answers = 0;
     while app.warp.as_ref().unwrap().test.is_err() {
         assert!(start.elapsed().as_secs() < 60, "no answer");
-        for msg in jobs.step(app.warp.as_deref(), &dir) {
+        for msg in threads.messages(&app) {
             answers += 1;
-            app = update(app, msg);
+            app = threads.handle(app, msg);
         }
         std::thread::sleep(std::time::Duration::from_millis(5));
     }
@@ -202,8 +241,6 @@ fn warp_jobs_draw_a_builtin_routine_in_a_thread_once() {
     let t = app.warp.as_ref().unwrap().test.as_ref().unwrap();
     assert_eq!(t.name, "uniform hemisphere");
     assert!(t.passes());
-    assert!(
-        jobs.step(app.warp.as_deref(), &dir).is_empty(),
-        "nothing more to do"
-    );
+    std::thread::sleep(std::time::Duration::from_millis(50));
+    assert!(threads.messages(&app).is_empty(), "nothing more to do");
 }
