@@ -80,6 +80,10 @@ pub struct App {
     pub region: Option<(u32, u32, u32, u32)>,
     /// Its first corner, while `b` waits for the second.
     pub region_anchor: Option<(u32, u32)>,
+    /// Where the picture was on screen when the mouse button went down: a
+    /// drag maps through it, though the click itself may have opened the
+    /// pixel panel and moved the picture.
+    pub pressed: Option<super::screen::PictureMap>,
     /// A render pinned with `p` to compare others against (tev's
     /// reference pinning): its chapter and scene, a label, its image and
     /// its standard error where the chapter keeps one.
@@ -193,6 +197,7 @@ impl App {
             pinned: None,
             region: None,
             region_anchor: None,
+            pressed: None,
             curves: BTreeMap::new(),
             bounce: None,
             bounce_mode: BounceMode::UpTo,

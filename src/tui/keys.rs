@@ -27,7 +27,10 @@ pub const KEYS: &[(&str, &str)] = &[
     ),
     ("]  [", "one bounce more / less (chapters with bounces)"),
     ("m", "toggle \"exactly k\" / \"up to k\" bounces"),
-    ("r", "render → reference → difference → relative difference"),
+    (
+        "r",
+        "render → reference → difference → relative → z (noise?)",
+    ),
     (
         "f  p",
         "flip render ↔ reference (A/B); p: pin this render as it",

@@ -103,25 +103,47 @@ pub fn areas(app: &App, area: Rect) -> Areas {
     }
 }
 
+/// Where the picture sits on screen, to map a cell to its pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PictureMap {
+    /// The cells the picture covers.
+    cells: Rect,
+    /// The part of the image shown (all of it, or the zoomed window).
+    window: super::zoom::Window,
+}
+
+impl PictureMap {
+    /// The picture as `app` shows it on a screen of `area`, if it shows one.
+    pub fn of(app: &App, area: Rect) -> Option<PictureMap> {
+        let film = app.snapshot.as_ref()?.views.first()?;
+        let window = super::zoom::Window::of(app, film.width, film.height);
+        let preview = areas(app, area).preview;
+        if preview.width < 3 || preview.height < 3 {
+            return None;
+        }
+        let inner = Block::bordered().inner(preview);
+        let cells = super::placement::picture_cells(app, inner, window.width, window.height);
+        Some(PictureMap { cells, window })
+    }
+
+    /// The pixel shown at cell (`column`, `row`), if the cell shows the
+    /// picture.
+    pub fn pixel(&self, column: u16, row: u16) -> Option<(u32, u32)> {
+        let (r, w, h) = (self.cells, self.window.width, self.window.height);
+        let inside = |c: u16, start: u16, len: u16| c >= start && c < start + len;
+        if !inside(column, r.x, r.width) || !inside(row, r.y, r.height) {
+            return None;
+        }
+        let x = super::inspect::cell_to_pixel(column - r.x, r.width, w);
+        let y = super::inspect::cell_to_pixel(row - r.y, r.height, h);
+        Some(self.window.to_image((x, y)))
+    }
+}
+
 /// The pixel of the picture shown at terminal cell (`column`, `row`) of a
 /// screen of `area`, if the cell shows the picture.
 pub fn pixel_at(app: &App, area: Rect, column: u16, row: u16) -> Option<(u32, u32)> {
-    let film = app.snapshot.as_ref()?.views.first()?;
-    let window = super::zoom::Window::of(app, film.width, film.height);
-    let (w, h) = (window.width, window.height);
-    let preview = areas(app, area).preview;
-    if preview.width < 3 || preview.height < 3 {
-        return None;
-    }
-    let inner = Block::bordered().inner(preview);
-    let r = super::placement::picture_cells(app, inner, w, h);
-    let inside = |c: u16, start: u16, len: u16| c >= start && c < start + len;
-    if !inside(column, r.x, r.width) || !inside(row, r.y, r.height) {
-        return None;
-    }
-    let x = super::inspect::cell_to_pixel(column - r.x, r.width, w);
-    let y = super::inspect::cell_to_pixel(row - r.y, r.height, h);
-    Some(window.to_image((x, y)))
+    PictureMap::of(app, area)?.pixel(column, row)
 }
 
 impl App {
@@ -129,7 +151,8 @@ impl App {
     /// goes to the pixel under it (a new pixel forgets the traced path),
     /// and a drag from there may start; a region chosen before is cleared.
     pub fn click_at(&mut self, screen: Rect, column: u16, row: u16) {
-        if let Some(p) = pixel_at(self, screen, column, row) {
+        self.pressed = PictureMap::of(self, screen);
+        if let Some(p) = self.pressed.and_then(|m| m.pixel(column, row)) {
             if self.inspect != Some(p) {
                 self.trace = None;
                 self.traces = 0;
@@ -140,9 +163,11 @@ impl App {
     }
 
     /// A drag of the mouse to cell (`column`, `row`) of a `screen`: the box
-    /// from where the button went down (the inspect cursor) to there.
+    /// from where the button went down (the inspect cursor) to there, both
+    /// corners placed by where the picture was when the button went down.
     pub fn drag_to(&mut self, screen: Rect, column: u16, row: u16) {
-        if let (Some(a), Some(p)) = (self.inspect, pixel_at(self, screen, column, row)) {
+        let map = self.pressed.or_else(|| PictureMap::of(self, screen));
+        if let (Some(a), Some(p)) = (self.inspect, map.and_then(|m| m.pixel(column, row))) {
             self.region = Some(super::region::spanned(a, p));
         }
     }

@@ -117,6 +117,7 @@ fn a_drag_spans_a_box_and_a_click_clears_it() {
         .collect();
     let (a, b) = (cells[0], cells[cells.len() - 1]);
     let pa = raystep::tui::screen::pixel_at(&app, screen, a.0, a.1).unwrap();
+    let pb = raystep::tui::screen::pixel_at(&app, screen, b.0, b.1).unwrap();
     let click = |app, (column, row): (u16, u16)| {
         update(
             app,
@@ -130,8 +131,11 @@ fn a_drag_spans_a_box_and_a_click_clears_it() {
     };
     let app = click(app, a);
     assert_eq!(app.inspect, Some(pa));
-    // (The click opened the inspect panel, so map the second cell now.)
-    let pb = raystep::tui::screen::pixel_at(&app, screen, b.0, b.1).unwrap();
+    // The click opened the pixel panel, which moved the picture: the drag
+    // still ends on the pixel that was under `b` when the button went
+    // down, not the one there now.
+    let moved = raystep::tui::screen::pixel_at(&app, screen, b.0, b.1);
+    assert_ne!(moved, Some(pb), "the panel moved the picture");
     let app = update(
         app,
         Msg::Drag {
