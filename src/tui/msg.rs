@@ -166,8 +166,8 @@ impl Msg {
     /// message clears the message line before it acts, and closes the help
     /// overlay. Answers from the threads (the worker, a save, the grader,
     /// the student-mode watcher, a scene file read or edited, the warp
-    /// view's draws),
-    /// a new terminal size and the clock do neither.
+    /// view's draws), a new terminal size, the clock and the mouse moving
+    /// over the terminal (a key hint follows it) do neither.
     pub fn is_action(&self) -> bool {
         !matches!(
             self,
@@ -183,6 +183,7 @@ impl Msg {
                 | Msg::WarpStudent(..)
                 | Msg::Resize(..)
                 | Msg::Tick(_)
+                | Msg::Hover { .. }
         )
     }
 }

@@ -1147,6 +1147,11 @@ fn answers_from_threads_neither_close_the_help_nor_clear_the_message() {
     assert!(app.help, "the help stays open");
     assert!(app.job().is_some(), "the scene was read: it renders");
     assert_eq!(app.message, "reloading tet.toml: the file changed");
+    // Nor does the mouse moving over the terminal (in a real terminal
+    // it moves all the time).
+    let app = update(app, Msg::Hover { column: 3, row: 4 });
+    assert!(app.help, "the help stays open under a moving mouse");
+    assert_eq!(app.message, "reloading tet.toml: the file changed");
     // A key still closes the help, and only that.
     let app = update(app, Msg::NextView);
     assert!(!app.help && app.view == 0);
