@@ -236,7 +236,7 @@ pub fn control_lines(app: &App) -> Vec<Line<'static>> {
 /// point (the same as the reports' plots): a render on the guide converges
 /// as it should. Every estimator's kept curve of this chapter and scene is
 /// drawn beside it, in its own colour: the controls box's efficiency lines
-/// are its legend (ratatui's own legend shows only where it fits).
+/// are its legend (ratatui's own would cover the curves).
 fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
     let curves = app.curves();
     let Some(current) = curves.iter().find(|c| c.current) else {
@@ -275,7 +275,9 @@ fn draw_chart(app: &App, frame: &mut Frame, area: Rect) {
     }
     let chart = Chart::new(sets)
         .block(Block::bordered().title("error vs time; plain line −1/2"))
-        .hidden_legend_constraints((Constraint::Ratio(2, 3), Constraint::Ratio(2, 3)))
+        // The controls box's efficiency lines are the legend: ratatui's
+        // own, drawn over the chart, hid the curves it names.
+        .legend_position(None)
         .x_axis(Axis::default().bounds([x.0, x.1]).labels([
             format_seconds(10f64.powf(x.0)),
             format_seconds(10f64.powf(x.1)),
