@@ -48,6 +48,7 @@ pub mod screen;
 pub mod screen_update;
 pub mod shown;
 pub mod signals;
+pub mod sixel;
 pub mod split;
 pub mod state;
 pub mod stats;

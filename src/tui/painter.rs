@@ -66,8 +66,7 @@ fn goto(out: &mut dyn Write, r: Rect) -> io::Result<()> {
     write!(out, "\x1b[{};{}H", r.y + 1, r.x + 1)
 }
 
-/// Standard base64 with padding (the base64-simd crate, which
-/// ratatui-image already brings in).
+/// Standard base64 with padding (the base64-simd crate).
 pub fn base64(bytes: &[u8]) -> String {
     base64_simd::STANDARD.encode_to_string(bytes)
 }
@@ -210,10 +209,7 @@ impl Painter {
                 }
             }
             Graphics::Sixel => {
-                let img = image::DynamicImage::ImageRgb8(r.image.clone());
-                let sixel = ratatui_image::protocol::sixel::Sixel::new(img, r.cells, false)
-                    .map_err(|e| io::Error::other(e.to_string()))?;
-                out.write_all(sixel.data.as_bytes())?;
+                out.write_all(super::sixel::encode(&r.image).as_bytes())?;
             }
             Graphics::Iterm2 => {
                 let data = png(&r.image)?;

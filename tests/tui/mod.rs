@@ -16,6 +16,7 @@ mod painter;
 mod pin;
 mod region;
 mod signals;
+mod sixel;
 mod sizes_and_keys;
 mod split;
 mod warp;
