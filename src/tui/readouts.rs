@@ -42,16 +42,13 @@ pub fn caught_lines(app: &App) -> Vec<Line<'static>> {
     let pixels = counts.pixels.iter().filter(|c| c.x > 0.0).count();
     if pixels == 0 {
         return vec![Line::styled(
-            "non-finite: none caught, every sample finite",
+            "non-finite: none caught",
             fg(app, Color::Green),
         )];
     }
     vec![
-        Line::styled(
-            format!("non-finite: {total} caught in {pixels} px"),
-            fg(app, Color::Red),
-        ),
-        Line::styled("green: where (left out)", fg(app, Color::Green)),
+        Line::styled(format!("non-finite: {total} caught"), fg(app, Color::Red)),
+        Line::styled(format!("in {pixels} px: green"), fg(app, Color::Green)),
     ]
 }
 

@@ -296,7 +296,7 @@ ch6_compare() {
     keys question && settle
     shoot -o ch6-help "the key help over the UI"
     keys question && settle
-    keys v && wait_for 'view 2/2' 5 && settle
+    keys v && wait_for 'view 2/' 5 && settle
     shoot ch6-stderr-auto "the stderr view with automatic exposure (on by default)"
     keys a && settle
     shoot ch6-stderr-auto-off "the stderr view, automatic exposure off"
@@ -328,6 +328,20 @@ ch6_pin() {
     shoot ch6-chart-three-estimators "uniform sampling (e e) after 20 s: a third, higher curve"
     keys r r r r && wait_for 'compare: z' 5 && settle
     shoot ch6-pin-z-uniform "the z view of uniform sampling against the pinned render"
+}
+
+ch6_views() {
+    launch --chapter 6
+    wait_done
+    keys v v && wait_for 'non-finite' 5 && settle
+    shoot ch6-non-finite "the non-finite view (v v): the image dimmed, the legend says none was caught"
+    keys v && wait_for 'render' 5
+    keys p && wait_for 'pinned' 5
+    keys E && wait_for 'estimator 7/' 5
+    keys bar && wait_for 'split' 5
+    wait_done
+    settle
+    shoot ch6-split "the split (|): pinned mis-sobol on the left, mis-independent at equal time on the right"
 }
 
 ch6_inspect() {
@@ -381,7 +395,7 @@ main() {
         : >"$OUT/index.md"
     fi
     local s
-    for s in ch6_compare ch6_pin ch6_inspect warp chapters_1_to_5 forced; do
+    for s in ch6_compare ch6_views ch6_pin ch6_inspect warp chapters_1_to_5 forced; do
         [[ $s =~ $ONLY ]] || continue
         say "scenario $s"
         "$s"
