@@ -102,7 +102,8 @@ pub struct Verdict {
     /// says too few samples, not a bias (a rare light no sample found).
     pub unseen: bool,
     /// The worst block's effective number of samples, (Σx)² / Σx² over
-    /// its samples, in its darkest-known channel (infinite where unknown).
+    /// its samples, the fewer of the render's and the reference's
+    /// (infinite where neither is counted).
     pub effective: f64,
 }
 
@@ -111,15 +112,16 @@ pub struct Verdict {
 /// to its size, pixel by pixel) is box-averaged down first, its variance
 /// with it, so that each block compares what the reference really knows
 /// (an enlarged reference's copies of one pixel are one measurement, not
-/// `factor`² independent ones). `samples` is the render's samples per
-/// pixel; the block's `at` is given in the render's pixels.
+/// `factor`² independent ones). `samples` are the render's and the
+/// reference's samples per pixel, as for [`verdict`]; the block's `at` is
+/// given in the render's pixels.
 pub fn verdict_at(
     factor: u32,
     render: &Film,
     render_stderr: &Film,
     reference: &Film,
     reference_stderr: &Film,
-    samples: u32,
+    samples: (u32, u32),
 ) -> Verdict {
     let k = factor.max(1);
     if k == 1 || !render.width.is_multiple_of(k) || !render.height.is_multiple_of(k) {
@@ -155,7 +157,7 @@ pub fn verdict_at(
         &shrink(render_stderr, true),
         &ref_mean,
         &ref_stderr,
-        samples.saturating_mul(k * k),
+        (samples.0.saturating_mul(k * k), samples.1),
     );
     v.at = (v.at.0 * k, v.at.1 * k);
     v
@@ -164,15 +166,16 @@ pub fn verdict_at(
 /// Compares `render` with `reference` (each with its standard error per
 /// pixel and channel) in blocks of [`BLOCK`] pixels: in each block the two
 /// means per channel, and their difference over the standard error of the
-/// difference of the means, √(Σ σ²_render + Σ σ²_reference) / n. The
-/// render has `samples` samples per pixel (0: unknown, and then no block
-/// is judged by its effective samples).
+/// difference of the means, √(Σ σ²_render + Σ σ²_reference) / n.
+/// `samples` are the samples per pixel of the render and of the reference
+/// (0: unknown, or so many that it does not matter: that side's effective
+/// samples are not counted).
 pub fn verdict(
     render: &Film,
     render_stderr: &Film,
     reference: &Film,
     reference_stderr: &Film,
-    samples: u32,
+    samples: (u32, u32),
 ) -> Verdict {
     let (w, h) = (render.width, render.height);
     let mut v = Verdict {
@@ -183,20 +186,12 @@ pub fn verdict(
         unseen: false,
         effective: f64::INFINITY,
     };
-    let big_n = f64::from(samples);
     for by in (0..h).step_by(BLOCK as usize) {
         for bx in (0..w).step_by(BLOCK as usize) {
             let (mut a, mut b, mut var, mut n) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO, 0.0);
             let mut own = DVec3::ZERO;
-            // Σx and Σx² over the block's samples, from each pixel's mean
-            // m and standard error s: N m, and N (N − 1) s² + N m².
-            let (mut sum, mut sum_sq) = (DVec3::ZERO, DVec3::ZERO);
             for y in by..(by + BLOCK).min(h) {
                 for x in bx..(bx + BLOCK).min(w) {
-                    let m = render.get(x, y).as_dvec3();
-                    let s = render_stderr.get(x, y).as_dvec3();
-                    sum += big_n * m;
-                    sum_sq += big_n * (big_n - 1.0) * s * s + big_n * m * m;
                     a += render.get(x, y).as_dvec3();
                     b += reference.get(x, y).as_dvec3();
                     let (sa, sb) = (
@@ -229,14 +224,49 @@ pub fn verdict(
                 v.at = (bx, by);
                 v.means = (a.element_sum() / 3.0, b.element_sum() / 3.0);
                 v.unseen = own.max_element() == 0.0;
-                v.effective = (0..3)
-                    .filter(|&c| samples > 0 && sum[c] > 0.0 && sum_sq[c] > 0.0)
-                    .map(|c| sum[c] * sum[c] / sum_sq[c])
-                    .fold(f64::INFINITY, f64::min);
+                let lit = |c: usize| a[c] > 0.0 || b[c] > 0.0;
+                let block = (bx, by);
+                v.effective = effective(render, render_stderr, samples.0, block, lit).min(
+                    effective(reference, reference_stderr, samples.1, block, lit),
+                );
             }
         }
     }
     v
+}
+
+/// The effective number of samples, (Σx)² / Σx², of the block at `block`
+/// of an image with `n` samples per pixel (infinite for `n` = 0: not
+/// counted), in its fewest channel among those `lit` (light on either
+/// side). Σx and Σx² come from each pixel's mean m and standard error s:
+/// N m, and N (N − 1) s² + N m².
+fn effective(
+    mean: &Film,
+    stderr: &Film,
+    n: u32,
+    block: (u32, u32),
+    lit: impl Fn(usize) -> bool,
+) -> f64 {
+    if n == 0 {
+        return f64::INFINITY;
+    }
+    let big_n = f64::from(n);
+    let (bx, by) = block;
+    let (mut sum, mut sum_sq) = (DVec3::ZERO, DVec3::ZERO);
+    for y in by..(by + BLOCK).min(mean.height) {
+        for x in bx..(bx + BLOCK).min(mean.width) {
+            let (m, s) = (mean.get(x, y).as_dvec3(), stderr.get(x, y).as_dvec3());
+            sum += big_n * m;
+            sum_sq += big_n * (big_n - 1.0) * s * s + big_n * m * m;
+        }
+    }
+    (0..3)
+        .filter(|&c| lit(c))
+        .map(|c| match sum_sq[c] > 0.0 {
+            true => sum[c] * sum[c] / sum_sq[c],
+            false => 0.0,
+        })
+        .fold(f64::INFINITY, f64::min)
 }
 
 impl Verdict {

@@ -33,6 +33,8 @@ pub struct Pinned {
     pub stderr: Option<Film>,
     /// How long it had rendered when pinned.
     pub elapsed: Duration,
+    /// Its samples per pixel.
+    pub samples: u32,
     /// Its error against the reference then, where known.
     pub rmse: Option<f64>,
     /// Whether the preview splits it with the running render (`|`).

@@ -129,6 +129,7 @@ impl App {
             image: image.clone(),
             stderr,
             elapsed: snap.elapsed,
+            samples: snap.samples,
             rmse: snap.rmse,
             split: false,
             equal_time: None,
@@ -220,9 +221,11 @@ impl App {
         let snap = self.snapshot.as_ref()?;
         // A pinned render has the render's size; the stored reference may
         // be enlarged to it.
-        let factor = match self.pinned_here() {
-            Some(_) => 1,
-            None => snap.reference_factor,
+        // A pinned render's few samples count as the render's do; the
+        // stored reference has thousands.
+        let (factor, reference_samples) = match self.pinned_here() {
+            Some(p) => (1, p.samples),
+            None => (snap.reference_factor, 0),
         };
         Some(verdict_at(
             factor,
@@ -230,7 +233,7 @@ impl App {
             stderr,
             reference,
             reference_stderr,
-            snap.samples,
+            (snap.samples, reference_samples),
         ))
     }
 

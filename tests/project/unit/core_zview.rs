@@ -70,14 +70,14 @@ fn noise_is_within_noise_and_a_bias_of_a_few_standard_errors_per_block_is_not() 
     let reference = flat(w, h, 0.5);
     let ref_err = flat(w, h, 0.0);
     let (render, err) = noisy(w, h, 0.1, 0.0);
-    let v = verdict(&render, &err, &reference, &ref_err, 16);
+    let v = verdict(&render, &err, &reference, &ref_err, (16, 0));
     assert_eq!(v.blocks, ((w / BLOCK) * (h / BLOCK)) as usize);
     assert!(v.within_noise(), "{v:?}");
     assert_eq!(v.lines()[0], "verdict: within noise");
     // A block's mean has standard error 0.1 / 8 = 0.0125: a bias of 0.1
     // (20%) is z = 8, past the limit of 5, everywhere.
     let (biased, err) = noisy(w, h, 0.1, 0.1);
-    let v = verdict(&biased, &err, &reference, &ref_err, 16);
+    let v = verdict(&biased, &err, &reference, &ref_err, (16, 0));
     assert!(!v.within_noise() && v.worst_z > Z_MAX, "{v:?}");
     let [first, second] = v.lines();
     assert!(
@@ -87,7 +87,7 @@ fn noise_is_within_noise_and_a_bias_of_a_few_standard_errors_per_block_is_not() 
     assert!(second.contains("|z|"), "{second}");
     // Darker, and a NaN.
     let (dark, err) = noisy(w, h, 0.1, -0.1);
-    assert!(verdict(&dark, &err, &reference, &ref_err, 16).lines()[0].ends_with("darker"));
+    assert!(verdict(&dark, &err, &reference, &ref_err, (16, 0)).lines()[0].ends_with("darker"));
     // A block whose samples all agreed (variance 0, a light no sample
     // found yet) is too few samples, not a bias.
     let (mut dark, mut err) = noisy(w, h, 0.1, 0.0);
@@ -97,12 +97,12 @@ fn noise_is_within_noise_and_a_bias_of_a_few_standard_errors_per_block_is_not() 
             *err.get_mut(x, y) = Vec3::ZERO;
         }
     }
-    let v = verdict(&dark, &err, &reference, &flat(w, h, 0.001), 16);
+    let v = verdict(&dark, &err, &reference, &flat(w, h, 0.001), (16, 0));
     assert!(v.unseen && !v.within_noise(), "{v:?}");
     assert_eq!(v.lines()[0], "verdict: too few samples");
     let mut nan = render.clone();
     nan.pixels[100] = Vec3::splat(f32::NAN);
-    let v = verdict(&nan, &err, &reference, &ref_err, 16);
+    let v = verdict(&nan, &err, &reference, &ref_err, (16, 0));
     assert_eq!(v.lines()[0], "verdict: wrong, not a number");
     assert_eq!(v.at, (32, 0), "the block holding pixel (36, 1)");
 }
@@ -128,12 +128,19 @@ fn a_block_carried_by_a_few_rare_samples_is_too_few_samples_not_a_bias() {
             *err.get_mut(x, y) = Vec3::splat((var / n).sqrt());
         }
     }
-    let v = verdict(&render, &err, &reference, &flat(w, h, 0.001), 16);
+    let v = verdict(&render, &err, &reference, &flat(w, h, 0.001), (16, 0));
     assert!(!v.within_noise() && !v.unseen, "{v:?}");
     assert!(v.effective < 3.0, "two samples carry it: {}", v.effective);
     let [first, second] = v.lines();
     assert_eq!(first, "verdict: too few samples");
     assert!(second.contains("~2 samples carry it"), "{second}");
+    // The same with the two sides swapped: a pinned render of 16 samples
+    // per pixel as the reference. Its effective samples count too; a
+    // stored reference's (0: not counted) do not.
+    let v = verdict(&reference, &flat(w, h, 0.001), &render, &err, (1024, 16));
+    assert_eq!(v.lines()[0], "verdict: too few samples", "{v:?}");
+    let v = verdict(&reference, &flat(w, h, 0.001), &render, &err, (1024, 0));
+    assert!(v.lines()[0].starts_with("verdict: biased"), "{v:?}");
     // The same bias spread over every sample is a bias: 0.5 → 0.02.
     let dark = flat(w, h, 0.02);
     let v = verdict(
@@ -141,7 +148,7 @@ fn a_block_carried_by_a_few_rare_samples_is_too_few_samples_not_a_bias() {
         &flat(w, h, 0.001),
         &reference,
         &flat(w, h, 0.001),
-        16,
+        (16, 0),
     );
     assert!(v.effective > MIN_EFFECTIVE, "{v:?}");
     assert!(
@@ -170,9 +177,9 @@ fn an_enlarged_noisy_reference_is_compared_at_its_own_resolution() {
     };
     let (reference, reference_err) = (enlarge(&small), enlarge(&small_err));
     let (render, render_err) = (flat(128, 128, 0.5), flat(128, 128, 0.001));
-    let pixelwise = verdict(&render, &render_err, &reference, &reference_err, 64);
+    let pixelwise = verdict(&render, &render_err, &reference, &reference_err, (64, 0));
     assert!(!pixelwise.within_noise(), "the miscount: {pixelwise:?}");
-    let v = verdict_at(k, &render, &render_err, &reference, &reference_err, 64);
+    let v = verdict_at(k, &render, &render_err, &reference, &reference_err, (64, 0));
     assert!(v.within_noise(), "{v:?}");
     assert_eq!(v.blocks, 16, "blocks of 8 x 8 reference pixels");
     // A real bias is still seen, and placed in the render's pixels.
@@ -182,7 +189,7 @@ fn an_enlarged_noisy_reference_is_compared_at_its_own_resolution() {
             *biased.get_mut(x, y) = Vec3::splat(0.6);
         }
     }
-    let v = verdict_at(k, &biased, &render_err, &reference, &reference_err, 64);
+    let v = verdict_at(k, &biased, &render_err, &reference, &reference_err, (64, 0));
     assert!(!v.within_noise(), "{v:?}");
     assert_eq!(v.at, (32, 64));
 }
