@@ -85,7 +85,7 @@ pub struct App {
     /// Where the picture was on screen when the mouse button went down: a
     /// drag maps through it, though the click itself may have opened the
     /// pixel panel and moved the picture.
-    pub pressed: Option<super::screen::PictureMap>,
+    pub pressed: Option<super::state::PictureMap>,
     /// A render pinned with `p` to compare others against (tev's
     /// reference pinning): its chapter and scene, a label, its image and
     /// its standard error where the chapter keeps one.

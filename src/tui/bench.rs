@@ -126,8 +126,12 @@ pub fn run(
         w,
         "(start-up of ch1 counts from the start of main; later chapters from their selection)"
     )?;
-    // The sixel picture is encoded on the UI thread whenever its pixels
-    // change: a 720 x 600 picture is what a 160 x 48 xterm shows.
+    sixel_line(w)
+}
+
+/// The sixel picture is encoded on the UI thread whenever its pixels
+/// change: the time for a 720 x 600 picture, what a 160 x 48 xterm shows.
+fn sixel_line(w: &mut dyn Write) -> std::io::Result<()> {
     let img = image::RgbImage::from_fn(720, 600, |x, y| {
         let n = ((x * 7 + y * 13) % 40) as u8;
         image::Rgb([(x * 200 / 720) as u8 + n, (y * 200 / 600) as u8 + n, 80 + n])

@@ -6,6 +6,7 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::widgets::Block;
 
 use super::app::App;
+use super::state::PictureMap;
 
 /// Width of the left column, in cells.
 pub fn sidebar_width(total: u16) -> u16 {
@@ -103,15 +104,6 @@ pub fn areas(app: &App, area: Rect) -> Areas {
     }
 }
 
-/// Where the picture sits on screen, to map a cell to its pixel.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PictureMap {
-    /// The cells the picture covers.
-    cells: Rect,
-    /// The part of the image shown (all of it, or the zoomed window).
-    window: super::zoom::Window,
-}
-
 impl PictureMap {
     /// The picture as `app` shows it on a screen of `area`, if it shows one.
     pub fn of(app: &App, area: Rect) -> Option<PictureMap> {
@@ -123,20 +115,28 @@ impl PictureMap {
         }
         let inner = Block::bordered().inner(preview);
         let cells = super::placement::picture_cells(app, inner, window.width, window.height);
+        let window = (window.x0, window.y0, window.width, window.height);
         Some(PictureMap { cells, window })
     }
 
     /// The pixel shown at cell (`column`, `row`), if the cell shows the
     /// picture.
     pub fn pixel(&self, column: u16, row: u16) -> Option<(u32, u32)> {
-        let (r, w, h) = (self.cells, self.window.width, self.window.height);
+        let (x0, y0, w, h) = self.window;
+        let r = self.cells;
         let inside = |c: u16, start: u16, len: u16| c >= start && c < start + len;
         if !inside(column, r.x, r.width) || !inside(row, r.y, r.height) {
             return None;
         }
         let x = super::inspect::cell_to_pixel(column - r.x, r.width, w);
         let y = super::inspect::cell_to_pixel(row - r.y, r.height, h);
-        Some(self.window.to_image((x, y)))
+        let window = super::zoom::Window {
+            x0,
+            y0,
+            width: w,
+            height: h,
+        };
+        Some(window.to_image((x, y)))
     }
 }
 

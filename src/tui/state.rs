@@ -128,3 +128,14 @@ impl EqualTime {
         })
     }
 }
+
+/// Where the picture sits on screen, to map a cell to its pixel
+/// (`super::screen` does).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PictureMap {
+    /// The cells the picture covers.
+    pub cells: ratatui::layout::Rect,
+    /// The part of the image shown (all of it, or the zoomed window):
+    /// first column, first row, columns, rows.
+    pub window: (u32, u32, u32, u32),
+}

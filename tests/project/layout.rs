@@ -716,3 +716,54 @@ fn every_mod_table_lists_every_module() {
         "modules missing from their table: {missing:#?}"
     );
 }
+
+/// The terminal UI reads in short functions (#45): none in `src/tui/` is
+/// 100 lines or longer, from its `fn` line to its closing brace.
+#[test]
+fn no_function_in_the_tui_reaches_100_lines() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("src/tui");
+    let mut long = Vec::new();
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "rs") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let lines: Vec<String> = blank_comments_and_strings(&text)
+            .lines()
+            .map(str::to_string)
+            .collect();
+        for (n, line) in lines.iter().enumerate() {
+            let words: Vec<&str> = line.split_whitespace().collect();
+            let Some(at) = words.iter().position(|w| *w == "fn") else {
+                continue;
+            };
+            let before_ok = words[..at]
+                .iter()
+                .all(|w| w.starts_with("pub") || ["const", "async", "unsafe"].contains(w));
+            if !before_ok {
+                continue;
+            }
+            let (mut depth, mut opened) = (0i32, false);
+            for (k, l) in lines.iter().enumerate().skip(n) {
+                for c in l.chars() {
+                    match c {
+                        '{' => (depth, opened) = (depth + 1, true),
+                        '}' => depth -= 1,
+                        _ => {}
+                    }
+                }
+                if opened && depth == 0 {
+                    if k - n + 1 >= 100 {
+                        long.push(format!("{}:{} {} lines", path.display(), n + 1, k - n + 1));
+                    }
+                    break;
+                }
+                if !opened && l.trim_end().ends_with(';') {
+                    break;
+                }
+            }
+        }
+    }
+    assert!(long.is_empty(), "functions of 100 lines or more: {long:?}");
+}
