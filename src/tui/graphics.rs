@@ -128,8 +128,11 @@ pub fn detect(var: &dyn Fn(&str) -> Option<String>, font: Option<(u16, u16)>) ->
 }
 
 /// Whether [`choose`] would ask the terminal: never inside a multiplexer,
-/// never for half blocks, and for a forced protocol only when the window
-/// size gave no cell size.
+/// never for half blocks; for a forced kitty or sixel always, so that the
+/// note on a protocol the terminal does not list is said only where the
+/// terminal really did not list it (xterm lists sixel, but its
+/// environment does not say so); for a forced iTerm2, which no query
+/// reveals, only when the window size gave no cell size.
 pub fn should_query(
     choice: Choice,
     var: &dyn Fn(&str) -> Option<String>,
@@ -137,9 +140,9 @@ pub fn should_query(
 ) -> bool {
     !multiplexer(var)
         && match choice {
-            Choice::Auto => true,
+            Choice::Auto | Choice::Force(Graphics::Kitty | Graphics::Sixel) => true,
             Choice::Force(Graphics::HalfBlocks) => false,
-            Choice::Force(_) => ioctl_font.is_none(),
+            Choice::Force(Graphics::Iterm2) => ioctl_font.is_none(),
         }
 }
 

@@ -378,7 +378,7 @@ fn student_title(app: &App) -> String {
 fn difference_legend(app: &App) -> Line<'static> {
     let (_, scale) = app.compare.scale(app.exposure);
     Line::from(vec![
-        Span::styled(format!("−{scale}"), fg(app, Color::Blue)),
+        Span::styled(format!("−{scale}"), fg(app, Color::LightBlue)),
         Span::raw(" blue · 0 · "),
         Span::styled(format!("+{scale}"), fg(app, Color::Red)),
         Span::raw(" red"),
