@@ -21,6 +21,12 @@ use raystep::tui::worker::{Progress, RenderState};
 /// `size` x `size` pixels.
 fn cornell_app(chapter: &'static dyn raystep::core::stage::Chapter, size: u32) -> App {
     let scene = Scene::builtin().with_resolution(size, size).unwrap();
+    app_on(chapter, scene)
+}
+
+/// The UI on chapter `chapter` alone, over `scene` (listed as the
+/// built-in Cornell box).
+pub(crate) fn app_on(chapter: &'static dyn raystep::core::stage::Chapter, scene: Scene) -> App {
     let entry = SceneEntry {
         name: "cornell-box".into(),
         source: "<built-in>".into(),
@@ -31,6 +37,21 @@ fn cornell_app(chapter: &'static dyn raystep::core::stage::Chapter, size: u32) -
     App::new(vec![chapter], vec![entry], false)
 }
 
+/// The state of the render `app` asks for, rendered by its chapter's real
+/// stage to `spp` samples per pixel.
+pub(crate) fn render_state(app: &App, spp: u32) -> RenderState {
+    let chapter = app.current_chapter().unwrap();
+    let job = app.job().unwrap();
+    let settings = Settings {
+        spp,
+        variant: Some(job.variant),
+        ..Settings::default()
+    };
+    let mut render = chapter.start(job.scene, &settings).unwrap();
+    while !render.pass().complete {}
+    RenderState::capture(&*render, job.generation, Duration::ZERO, true)
+}
+
 /// Chapter 6 on the 64x64 Cornell box (the stored reference's size), 2 spp.
 pub(crate) fn rendered() -> App {
     let ch6 = raystep::chapters::all()[5];
@@ -39,17 +60,7 @@ pub(crate) fn rendered() -> App {
     // made once per test binary, the many clicks of the click test cost a
     // UI update each, not a render each.
     static SNAPSHOT: std::sync::OnceLock<RenderState> = std::sync::OnceLock::new();
-    let snap = SNAPSHOT.get_or_init(|| {
-        let job = app.job().unwrap();
-        let settings = Settings {
-            spp: 2,
-            variant: Some(job.variant),
-            ..Settings::default()
-        };
-        let mut render = ch6.start(job.scene, &settings).unwrap();
-        while !render.pass().complete {}
-        RenderState::capture(&*render, job.generation, Duration::ZERO, true)
-    });
+    let snap = SNAPSHOT.get_or_init(|| render_state(&app, 2));
     update(app, Msg::Progress(Progress::State(Box::new(snap.clone()))))
 }
 

@@ -5,9 +5,6 @@
 //! its legend counts them, the mouse and the pixel panel give a pixel's
 //! count, and a finite render says that nothing was caught.
 
-use std::sync::Arc;
-use std::time::Duration;
-
 use glam::Vec3;
 use ratatui::backend::TestBackend;
 use ratatui::Terminal;
@@ -15,15 +12,15 @@ use ratatui::Terminal;
 use raystep::ch6_global_illumination::accumulate::downsample;
 use raystep::core::difference::NONFINITE;
 use raystep::core::film::Film;
-use raystep::core::stage::Settings;
 use raystep::scene::Scene;
 use raystep::tui::app::{App, Msg};
 use raystep::tui::inspect::inspect_lines;
 use raystep::tui::labels::hover_text;
-use raystep::tui::scenes::SceneEntry;
 use raystep::tui::update::{save, update};
 use raystep::tui::view::{control_lines, view};
-use raystep::tui::worker::{Progress, RenderState};
+use raystep::tui::worker::Progress;
+
+use super::inspect::{app_on, render_state};
 
 /// Chapter 6 after 2 spp of the 32x32 Cornell box with its lamp at `le`,
 /// showing the non-finite view.
@@ -34,24 +31,8 @@ fn non_finite_view(le: f32) -> App {
             m.emission = Vec3::splat(le);
         }
     }
-    let entry = SceneEntry {
-        name: "cornell-box".into(),
-        source: "<built-in>".into(),
-        scene: Ok(Arc::new(scene)),
-        pending: None,
-        modified: None,
-    };
-    let ch6 = raystep::chapters::all()[5];
-    let app = App::new(vec![ch6], vec![entry], false);
-    let job = app.job().unwrap();
-    let settings = Settings {
-        spp: 2,
-        variant: Some(job.variant),
-        ..Settings::default()
-    };
-    let mut render = ch6.start(job.scene, &settings).unwrap();
-    while !render.pass().complete {}
-    let state = RenderState::capture(&*render, job.generation, Duration::ZERO, true);
+    let app = app_on(raystep::chapters::all()[5], scene);
+    let state = render_state(&app, 2);
     let mut app = update(app, Msg::Progress(Progress::State(Box::new(state))));
     while app.view_name() != "non-finite" {
         app = update(app, Msg::NextView);

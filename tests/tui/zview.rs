@@ -11,38 +11,20 @@ use raystep::tui::update::update;
 use raystep::tui::view::{control_lines, view};
 use raystep::tui::worker::Progress;
 
-use super::inspect::rendered;
+use super::inspect::{app_on, render_state, rendered};
 
 /// Chapter 6 on the built-in Cornell box at `size`², estimator `variant`,
 /// rendered to `spp` samples per pixel by the real stage.
 fn rendered_with(size: u32, variant: &str, spp: u32) -> App {
-    use raystep::core::stage::Settings;
-    use raystep::tui::scenes::SceneEntry;
-    use raystep::tui::worker::RenderState;
     let scene = raystep::scene::Scene::builtin()
         .with_resolution(size, size)
         .unwrap();
-    let entry = SceneEntry {
-        name: "cornell-box".into(),
-        source: "<built-in>".into(),
-        scene: Ok(std::sync::Arc::new(scene)),
-        pending: None,
-        modified: None,
-    };
     let ch6 = raystep::chapters::all()[5];
-    let mut app = App::new(vec![ch6], vec![entry], false);
+    let mut app = app_on(ch6, scene);
     while ch6.info().variants[app.variant].name != variant {
         app = update(app, Msg::NextVariant);
     }
-    let job = app.job().unwrap();
-    let settings = Settings {
-        spp,
-        variant: Some(job.variant),
-        ..Settings::default()
-    };
-    let mut render = ch6.start(job.scene, &settings).unwrap();
-    while !render.pass().complete {}
-    let state = RenderState::capture(&*render, job.generation, std::time::Duration::ZERO, true);
+    let state = render_state(&app, spp);
     update(app, Msg::Progress(Progress::State(Box::new(state))))
 }
 
