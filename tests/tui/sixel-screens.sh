@@ -199,7 +199,7 @@ screen_text() {
 wait_for() {
     local re=$1 limit end
     limit=$(scaled "${2:-30}")
-    end=$(awk -v l="$limit" -v n="$(date +%s.%N)" 'BEGIN { print n + l }')
+    end=$(awk -v l="$limit" -v n="$(date +%s.%N)" 'BEGIN { printf "%.3f", n + l }')
     while :; do
         if screen_text 2>/dev/null | grep -Eq -- "$re"; then return 0; fi
         if awk -v e="$end" -v n="$(date +%s.%N)" 'BEGIN { exit !(n > e) }'; then
