@@ -97,19 +97,12 @@ impl App {
             .current_chapter()
             .and_then(|c| c.info().variants.get(self.variant))
             .map_or("running", |v| v.name);
+        // Two short lines a side: the controls box is narrow.
         vec![
-            Line::from(format!(
-                "left: pinned {}, {} s{}",
-                p.label,
-                seconds(p.elapsed),
-                rmse(p.rmse)
-            )),
-            Line::from(format!(
-                "right: {variant}, {} spp, {} s{}",
-                e.samples,
-                seconds(e.elapsed),
-                rmse(e.rmse)
-            )),
+            Line::from(format!("left: {}", p.label)),
+            Line::from(format!("  {} s{}", seconds(p.elapsed), rmse(p.rmse))),
+            Line::from(format!("right: {variant}, {} spp", e.samples)),
+            Line::from(format!("  {} s{}", seconds(e.elapsed), rmse(e.rmse))),
         ]
     }
 }

@@ -300,7 +300,7 @@ ch6_compare() {
     shoot ch6-stderr-auto "the stderr view with automatic exposure (on by default)"
     keys a && settle
     shoot ch6-stderr-auto-off "the stderr view, automatic exposure off"
-    keys a v && wait_for 'view 1/2' 5 && settle
+    keys a v v && wait_for 'view 1/' 5 && settle
     keys bracketright && settle
     shoot ch6-bounces-0 "up to 0 bounces: direct illumination"
     keys bracketright m && settle

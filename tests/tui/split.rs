@@ -74,17 +74,13 @@ fn the_split_shows_the_pinned_render_beside_the_next_at_equal_time() {
     let lines: Vec<String> = control_lines(&app).iter().map(|l| l.to_string()).collect();
     let ch6 = raystep::chapters::all()[5];
     let variant = ch6.info().variants[app.variant].name;
-    let right = format!("right: {variant}, {} spp, 1.0 s", next[1].samples);
-    assert!(
-        lines.iter().any(|l| l.starts_with(&right)),
-        "{lines:?} lacks {right}"
-    );
-    assert!(
-        lines
-            .iter()
-            .any(|l| l.starts_with("left: pinned ") && l.contains(", 1.0 s")),
-        "{lines:?}"
-    );
+    let right = format!("right: {variant}, {} spp", next[1].samples);
+    let at = lines.iter().position(|l| *l == right);
+    let at = at.unwrap_or_else(|| panic!("{lines:?} lacks {right}"));
+    assert!(lines[at + 1].starts_with("  1.0 s, RMSE "), "{lines:?}");
+    let left = lines.iter().position(|l| l.starts_with("left: ")).unwrap();
+    assert!(lines[left].contains(" spp"), "{lines:?}");
+    assert!(lines[left + 1].starts_with("  1.0 s"), "{lines:?}");
     assert_eq!(preview_title_parts(&app)[0], "split at equal time");
     // `|` again, or unpinning, ends the split.
     let app = update(app, Msg::ToggleSplit);
