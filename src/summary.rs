@@ -163,7 +163,7 @@ fn chapter_line(chapter: &dyn Chapter, scene: &Scene, out: &Path) -> Result<Stri
         String::new()
     };
     Ok(format!(
-        "{name:<23} {:<22} {:>9}  {error:<12} {}",
+        "{name:<23} {:<24} {:>9}  {error:<12} {}",
         format!("{what}{sampled}"),
         format_seconds(summary.seconds),
         summary
