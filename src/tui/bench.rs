@@ -15,6 +15,7 @@ use ratatui::backend::TestBackend;
 use ratatui::Terminal;
 
 use super::app::{App, Msg};
+use super::effect::Effect;
 use super::scenes::scene_list;
 use super::update::update;
 use super::view::view;
@@ -46,23 +47,26 @@ pub fn run(
     let chapters = crate::chapters::all();
     let scenes = scene_list(scenes_dir);
     let mut app = App::new(chapters.clone(), scenes, true);
+    // The first chapter is selected already: its render is the first.
+    let job = app.job();
+    app.effects.extend(job.map(Effect::Start));
     let worker = Worker::spawn();
     let mut terminal = Terminal::new(TestBackend::new(200, 60))?;
     let mut rows = Vec::new();
     for (index, chapter) in chapters.iter().enumerate() {
         let t0 = if index == 0 { started } else { Instant::now() };
         app = update(app, Msg::ChapterNumber(chapter.info().number));
-        app.effects.clear();
-        // Start the chapter's job (its scene read first), and again on the
-        // scene it moves to if it refuses the one it opened on; wait for
-        // the first pass of the job that runs.
-        let mut started_job = None;
+        // The chapter's scene read (here, in this thread), its job started
+        // as update asks, and again on the scene it moves to if it refuses
+        // the one it opened on; then the first pass of the job that runs.
         loop {
-            app.read_scene_now();
-            if started_job != Some(app.generation) {
-                let Some(job) = app.job() else { break };
-                started_job = Some(app.generation);
-                worker.start(job);
+            if let Some((index, path)) = app.scene_to_read() {
+                let read = super::scenes::read_scene(&path);
+                app = update(app, Msg::SceneRead(index, path, read));
+            }
+            start_jobs(&worker, &mut app);
+            if app.job().is_none() {
+                break;
             }
             let p = worker
                 .results
@@ -71,9 +75,6 @@ pub fn run(
             let ours = p.generation() == app.generation;
             let failed = matches!(p, Progress::Failed { .. });
             app = update(app, Msg::Progress(p));
-            // The benchmark starts its jobs itself (above): what update
-            // asks of an event loop is not carried out here.
-            app.effects.clear();
             if ours && (app.snapshot.is_some() || failed) {
                 break;
             }
@@ -127,6 +128,16 @@ pub fn run(
         "(start-up of ch1 counts from the start of main; later chapters from their selection)"
     )?;
     sixel_line(w)
+}
+
+/// Starts the renders `app` asks for; the benchmark asks nothing else of
+/// the event loop's threads, so the other effects are dropped.
+fn start_jobs(worker: &Worker, app: &mut App) {
+    for effect in std::mem::take(&mut app.effects) {
+        if let Effect::Start(job) = effect {
+            worker.start(job);
+        }
+    }
 }
 
 /// The sixel picture is encoded on the UI thread whenever its pixels
