@@ -65,7 +65,7 @@ pub fn preview(film: &Film, columns: u32, style: PreviewStyle) -> String {
             for y in 0..rows_px {
                 for x in 0..cols {
                     let p = small.get(x, y);
-                    let luma = p.dot(Vec3::new(0.2126, 0.7152, 0.0722));
+                    let luma = p.dot(LUMA);
                     let level = encode_srgb(luma) as usize * RAMP.len() / 256;
                     out.push(RAMP[level] as char);
                 }
@@ -75,6 +75,9 @@ pub fn preview(film: &Film, columns: u32, style: PreviewStyle) -> String {
     }
     out
 }
+
+/// The luminance of linear RGB: its dot product with these (Rec. 709).
+pub const LUMA: Vec3 = Vec3::new(0.2126, 0.7152, 0.0722);
 
 /// Box-filters `film` down (or up) to `w` x `h`.
 pub fn downsample(film: &Film, w: u32, h: u32) -> Film {

@@ -17,6 +17,7 @@
 use glam::{DVec3, Vec3};
 
 use crate::core::film::Film;
+use crate::core::preview::downsample;
 
 /// The side of a verdict's blocks, in pixels: the grader's.
 pub const BLOCK: u32 = 8;
@@ -127,36 +128,24 @@ pub fn verdict_at(
     if k == 1 || !render.width.is_multiple_of(k) || !render.height.is_multiple_of(k) {
         return verdict(render, render_stderr, reference, reference_stderr, samples);
     }
-    // The mean of k x k pixels; its standard error √(Σ σ²) / k².
-    let shrink = |film: &Film, stderr: bool| {
-        let (w, h) = (film.width / k, film.height / k);
-        let mut out = Film::new(w, h);
-        for y in 0..h {
-            for x in 0..w {
-                let mut s = Vec3::ZERO;
-                for dy in 0..k {
-                    for dx in 0..k {
-                        let p = film.get(x * k + dx, y * k + dy);
-                        s += if stderr { p * p } else { p };
-                    }
-                }
-                let n = (k * k) as f32;
-                *out.get_mut(x, y) = if stderr { s.powf(0.5) / n } else { s / n };
-            }
-        }
-        out
-    };
-    // The reference's copies are one value: their mean and stderr are it.
-    let ref_mean = shrink(reference, false);
-    let ref_stderr = Film {
-        pixels: shrink(reference_stderr, false).pixels,
-        ..ref_mean.clone()
-    };
+    // Box-averaged k x k: a mean's standard error is √(mean of σ²) / k.
+    let (w, h) = (render.width / k, render.height / k);
+    let shrink = |film: &Film| downsample(film, w, h);
+    let mut variance = render_stderr.clone();
+    variance.pixels.iter_mut().for_each(|s| *s *= *s);
+    let mut stderr = shrink(&variance);
+    let inv_k = 1.0 / k as f32;
+    stderr
+        .pixels
+        .iter_mut()
+        .for_each(|v| *v = v.powf(0.5) * inv_k);
+    // The reference's k x k copies of a pixel are one value: their mean,
+    // and its standard error, are that pixel's.
     let mut v = verdict(
-        &shrink(render, false),
-        &shrink(render_stderr, true),
-        &ref_mean,
-        &ref_stderr,
+        &shrink(render),
+        &stderr,
+        &shrink(reference),
+        &shrink(reference_stderr),
         (samples.0.saturating_mul(k * k), samples.1),
     );
     v.at = (v.at.0 * k, v.at.1 * k);

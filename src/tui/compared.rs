@@ -15,6 +15,7 @@ use std::borrow::Cow;
 
 use super::app::{combine_layers, App, Compare, Pinned};
 use crate::core::film::Film;
+use crate::core::preview::LUMA;
 use crate::core::stage::CAUGHT_VIEW;
 use crate::core::zview::{verdict_at, z_film, Verdict};
 
@@ -100,6 +101,12 @@ impl App {
             .filter(|p| p.at.0 == self.chapter && p.at.1 == scene)
     }
 
+    /// [`App::pinned_here`], to change.
+    pub(super) fn pinned_here_mut(&mut self) -> Option<&mut Pinned> {
+        self.pinned_here()?;
+        self.pinned.as_mut()
+    }
+
     /// `p`: pins the render shown (its whole image and standard error) so
     /// that the compare views set the next renders against it, e.g. another
     /// estimator's; again, unpins.
@@ -158,10 +165,7 @@ impl App {
             .pixels
             .iter()
             .zip(&image.pixels)
-            .map(|(c, p)| {
-                let luminance = p.dot(glam::Vec3::new(0.2126, 0.7152, 0.0722));
-                glam::Vec3::new(c.x, luminance, 0.0)
-            })
+            .map(|(c, p)| glam::Vec3::new(c.x, p.dot(LUMA), 0.0))
             .collect();
         Some(Film {
             width: counts.width,
@@ -219,10 +223,9 @@ impl App {
     pub fn verdict(&self) -> Option<Verdict> {
         let (image, stderr, reference, reference_stderr) = self.z_inputs()?;
         let snap = self.snapshot.as_ref()?;
-        // A pinned render has the render's size; the stored reference may
-        // be enlarged to it.
-        // A pinned render's few samples count as the render's do; the
-        // stored reference has thousands.
+        // A pinned render has the render's size, and its few samples count
+        // as the render's do; the stored reference may be enlarged to the
+        // render's size, and has thousands of samples.
         let (factor, reference_samples) = match self.pinned_here() {
             Some(p) => (1, p.samples),
             None => (snap.reference_factor, 0),

@@ -68,7 +68,7 @@ impl Widget for Picture<'_> {
                 if self.color {
                     cell.set_symbol("▀").set_fg(rgb(top)).set_bg(rgb(bottom));
                 } else {
-                    let luma = ((top + bottom) * 0.5).dot(Vec3::new(0.2126, 0.7152, 0.0722));
+                    let luma = ((top + bottom) * 0.5).dot(crate::core::preview::LUMA);
                     let level = encode_srgb(luma) as usize * RAMP.len() / 256;
                     cell.set_char(RAMP[level] as char);
                 }

@@ -6,8 +6,8 @@ use super::app::App;
 
 /// Writes what the preview shows (with exposure, or a difference in its
 /// false colour) as PNG and the same film without exposure as linear EXR
-/// (a difference as its signed values, the non-finite view as its counts) into `app.out_dir`; returns the
-/// paths.
+/// (a difference as its signed values, the non-finite view as its
+/// counts) into `app.out_dir`; returns the paths.
 /// Never overwrites: the name says what is saved ([`App::save_stem`]), and
 /// when a file of that name is already there (the same state saved
 /// before) the new one gets the first free suffix `-2`, `-3`, ….

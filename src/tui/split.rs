@@ -15,12 +15,7 @@ use crate::core::film::Film;
 impl App {
     /// `|`: the split view on or off; it needs a render pinned here.
     pub fn toggle_split(&mut self) {
-        let scene = self.current_scene().map(|s| s.name.clone());
-        let Some(p) = self
-            .pinned
-            .as_mut()
-            .filter(|p| Some(&p.at.1) == scene.as_ref())
-        else {
+        let Some(p) = self.pinned_here_mut() else {
             self.message = "p pins a render first; | then splits it with the next".into();
             return;
         };
@@ -48,19 +43,21 @@ impl App {
     /// Keeps, beside the pin, the running render's newest state that had
     /// rendered no longer than the pinned one (called with every state).
     pub(super) fn keep_equal_time(&mut self) {
-        let (Some(state), Some(scene)) = (self.snapshot.as_ref(), self.current_scene()) else {
-            return;
-        };
-        let at = (self.chapter, scene.name.clone());
-        let Some(p) = self.pinned.as_mut().filter(|p| p.at == at) else {
+        let (Some(state), Some(p)) = (self.snapshot.as_ref(), self.pinned_here()) else {
             return;
         };
         let other_render = p
             .equal_time
             .as_ref()
             .is_none_or(|e| e.generation != state.generation);
-        if other_render || state.elapsed <= p.elapsed {
-            p.equal_time = EqualTime::of(state).or(p.equal_time.take());
+        if !other_render && state.elapsed > p.elapsed {
+            return;
+        }
+        let Some(now) = EqualTime::of(state) else {
+            return;
+        };
+        if let Some(p) = self.pinned_here_mut() {
+            p.equal_time = Some(now);
         }
     }
 
