@@ -115,28 +115,20 @@ impl PictureMap {
         }
         let inner = Block::bordered().inner(preview);
         let cells = super::placement::picture_cells(app, inner, window.width, window.height);
-        let window = (window.x0, window.y0, window.width, window.height);
         Some(PictureMap { cells, window })
     }
 
     /// The pixel shown at cell (`column`, `row`), if the cell shows the
     /// picture.
     pub fn pixel(&self, column: u16, row: u16) -> Option<(u32, u32)> {
-        let (x0, y0, w, h) = self.window;
-        let r = self.cells;
+        let (r, w, h) = (self.cells, self.window.width, self.window.height);
         let inside = |c: u16, start: u16, len: u16| c >= start && c < start + len;
         if !inside(column, r.x, r.width) || !inside(row, r.y, r.height) {
             return None;
         }
         let x = super::inspect::cell_to_pixel(column - r.x, r.width, w);
         let y = super::inspect::cell_to_pixel(row - r.y, r.height, h);
-        let window = super::zoom::Window {
-            x0,
-            y0,
-            width: w,
-            height: h,
-        };
-        Some(window.to_image((x, y)))
+        Some(self.window.to_image((x, y)))
     }
 }
 

@@ -135,7 +135,20 @@ impl EqualTime {
 pub struct PictureMap {
     /// The cells the picture covers.
     pub cells: ratatui::layout::Rect,
-    /// The part of the image shown (all of it, or the zoomed window):
-    /// first column, first row, columns, rows.
-    pub window: (u32, u32, u32, u32),
+    /// The part of the image shown: all of it, or the zoomed window.
+    pub window: Window,
+}
+
+/// A window of an image: its top-left pixel and size (what it shows:
+/// `super::zoom`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Window {
+    /// First column.
+    pub x0: u32,
+    /// First row.
+    pub y0: u32,
+    /// Columns.
+    pub width: u32,
+    /// Rows.
+    pub height: u32,
 }

@@ -11,18 +11,9 @@ use crate::tui::app::App;
 /// The largest zoom.
 pub const MAX_ZOOM: u32 = 32;
 
-/// A window of an image: its top-left pixel and size.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Window {
-    /// First column.
-    pub x0: u32,
-    /// First row.
-    pub y0: u32,
-    /// Columns.
-    pub width: u32,
-    /// Rows.
-    pub height: u32,
-}
+/// A window of an image (declared in `state`, which the app's state may
+/// hold without importing this module).
+pub use super::state::Window;
 
 impl Window {
     /// The window `app` shows of a `width` × `height` image.
