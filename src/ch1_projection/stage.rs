@@ -78,7 +78,11 @@ impl Render for ProjectionRender {
 
     fn snapshot(&self) -> Snapshot {
         Snapshot {
-            views: views_of(&self.films, VIEWS.len(), &self.scene.camera),
+            views: views_of(
+                &self.films,
+                VIEWS.len(),
+                (self.scene.camera.width, self.scene.camera.height),
+            ),
             pass: fixed_pass(u32::from(!self.films.is_empty()), 1, 0),
             ..Snapshot::default()
         }

@@ -88,7 +88,11 @@ impl Render for RasterRender {
     fn snapshot(&self) -> Snapshot {
         let films = self.frame.as_ref().map_or(&[][..], |f| &f.films[..]);
         Snapshot {
-            views: views_of(films, VIEWS.len(), &self.scene.camera),
+            views: views_of(
+                films,
+                VIEWS.len(),
+                (self.scene.camera.width, self.scene.camera.height),
+            ),
             pass: fixed_pass(u32::from(self.frame.is_some()), 1, 0),
             ..Snapshot::default()
         }

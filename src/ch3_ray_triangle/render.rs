@@ -58,27 +58,29 @@ pub struct TraceStats {
     pub hits: u64,
 }
 
-/// Sums the four views over samples `samples` of every pixel, tracing rows
-/// in parallel: `trace` returns the first hit along a ray.
+/// Sums the four views over samples `samples` of every pixel in rows
+/// `rows` (all of them: `0..camera.height`), tracing rows in parallel:
+/// `trace` returns the first hit along a ray.
 // ANCHOR: render_rows
 pub fn render_sum(
     camera: &Camera,
     geometry: &Geometry,
+    rows: std::ops::Range<u32>,
     samples: std::ops::Range<u32>,
     spp: u32,
     seed: u64,
     trace: &(dyn Fn(&Ray) -> Option<Hit> + Sync),
 ) -> (Vec<[Vec3; 4]>, TraceStats) {
-    let (w, h) = (camera.width, camera.height);
-    let mut sums = vec![[Vec3::ZERO; 4]; w as usize * h as usize];
+    let w = camera.width;
+    let mut sums = vec![[Vec3::ZERO; 4]; w as usize * rows.len()];
     let hits: u64 = sums
         .par_chunks_mut(w as usize)
-        .enumerate()
-        .map(|(y, row)| {
+        .zip(rows.clone())
+        .map(|(row, y)| {
             let mut hits = 0;
             for (x, px) in row.iter_mut().enumerate() {
                 for s in samples.clone() {
-                    let raster = sample_position(x as u32, y as u32, w, spp, seed, s);
+                    let raster = sample_position(x as u32, y, w, spp, seed, s);
                     let hit = trace(&camera.ray(raster));
                     hits += u64::from(hit.is_some());
                     for (acc, v) in px.iter_mut().zip(shade(geometry, hit)) {
@@ -89,16 +91,18 @@ pub fn render_sum(
             hits
         })
         .sum();
-    let rays = w as u64 * h as u64 * samples.len() as u64;
+    let rays = w as u64 * rows.len() as u64 * samples.len() as u64;
     (sums, TraceStats { rays, hits })
 }
 // ANCHOR_END: render_rows
 
-/// Turns summed views into films by dividing by the sample count.
+/// Turns summed views into films by dividing by the sample count: films
+/// of the camera's width and as many rows as `sums` holds.
 pub fn films_from_sums(camera: &Camera, sums: &[[Vec3; 4]], samples: u32) -> Vec<Film> {
+    let rows = sums.len() / camera.width.max(1) as usize;
     (0..4)
         .map(|v| {
-            let mut f = Film::new(camera.width, camera.height);
+            let mut f = Film::new(camera.width, rows as u32);
             for (p, s) in f.pixels.iter_mut().zip(sums) {
                 *p = s[v] / samples.max(1) as f32;
             }
@@ -109,18 +113,30 @@ pub fn films_from_sums(camera: &Camera, sums: &[[Vec3; 4]], samples: u32) -> Vec
 
 /// Renders all four views with `spp` samples through the BVH.
 pub fn render_views(camera: &Camera, geometry: &Geometry, spp: u32, seed: u64) -> Vec<Film> {
-    let (sums, _) = render_sum(camera, geometry, 0..spp, spp, seed, &|r| {
-        geometry.closest(r)
-    });
+    let (sums, _) = render_sum(
+        camera,
+        geometry,
+        0..camera.height,
+        0..spp,
+        spp,
+        seed,
+        &|r| geometry.closest(r),
+    );
     films_from_sums(camera, &sums, spp)
 }
 
 /// Renders the views with the naive loop over every triangle instead.
 pub fn render_views_naive(camera: &Camera, geometry: &Geometry, spp: u32, seed: u64) -> Vec<Film> {
     let tris = &geometry.triangles.tris;
-    let (sums, _) = render_sum(camera, geometry, 0..spp, spp, seed, &|r| {
-        closest_naive(tris, r, f32::INFINITY, Intersector::Watertight)
-    });
+    let (sums, _) = render_sum(
+        camera,
+        geometry,
+        0..camera.height,
+        0..spp,
+        spp,
+        seed,
+        &|r| closest_naive(tris, r, f32::INFINITY, Intersector::Watertight),
+    );
     films_from_sums(camera, &sums, spp)
 }
 

@@ -55,11 +55,13 @@ impl Chapter for RayTriangle {
             VIEWS,
         )
         .with_memory(224, 272)
+        .with_bands()
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         crate::core::stage::require_meshes(3, &scene)?;
         let geometry = Geometry::new(&scene);
-        let n = scene.camera.width as usize * scene.camera.height as usize;
+        let rows = settings.rows_of(scene.camera.height);
+        let n = scene.camera.width as usize * rows.len();
         Ok(Box::new(RayTriangleRender {
             camera: Camera::new(scene.camera)?,
             scene,
@@ -88,6 +90,12 @@ impl RayTriangleRender {
     fn planned(&self) -> u32 {
         self.settings.spp.max(1)
     }
+
+    /// The size of its films: the image's width by the rows it renders.
+    fn size(&self) -> (u32, u32) {
+        let rows = self.settings.rows_of(self.camera.height);
+        (self.camera.width, rows.len() as u32)
+    }
 }
 
 impl Render for RayTriangleRender {
@@ -99,6 +107,7 @@ impl Render for RayTriangleRender {
             let (sums, stats) = render_sum(
                 &self.camera,
                 g,
+                self.settings.rows_of(self.camera.height),
                 self.done..self.done + 1,
                 self.planned(),
                 self.settings.seed,
@@ -120,7 +129,7 @@ impl Render for RayTriangleRender {
     fn snapshot(&self) -> Snapshot {
         let films = films_from_sums(&self.camera, &self.sums, self.done);
         Snapshot {
-            views: views_of(&films, VIEWS.len(), &self.scene.camera),
+            views: views_of(&films, VIEWS.len(), self.size()),
             pass: fixed_pass(self.done, self.planned(), self.stats.rays),
             ..Snapshot::default()
         }

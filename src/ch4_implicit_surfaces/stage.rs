@@ -200,7 +200,11 @@ impl Render for SphereTracingRender {
     /// One primary ray per traced pixel (the single pass).
     fn snapshot(&self) -> Snapshot {
         Snapshot {
-            views: views_of(&self.films, VIEWS.len(), &self.scene.camera),
+            views: views_of(
+                &self.films,
+                VIEWS.len(),
+                (self.scene.camera.width, self.scene.camera.height),
+            ),
             pass: fixed_pass(self.done, self.planned, self.pixels.len() as u64),
             ..Snapshot::default()
         }

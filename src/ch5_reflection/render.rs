@@ -12,11 +12,13 @@ use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::render::camera_sample;
 use crate::core::sampling::Sampler;
 
-/// Adds sample `sample` of every pixel to `sums`, rows in parallel, and
+/// Adds sample `sample` of every pixel of rows `rows` (all of them:
+/// `0..cam.height`) to `sums`, rows in parallel, and
 /// adds to `caught` how many values each pixel's sample left out for not
 /// being finite (a light's term, or the whole sample);
 /// every random number comes from (seed, pixel, sample), so the result
 /// does not depend on the number of threads.
+#[allow(clippy::too_many_arguments)]
 // ANCHOR: render_pass
 // ANCHOR: render_pass_sample
 pub fn render_pass(
@@ -25,17 +27,18 @@ pub fn render_pass(
     estimator: &Estimator,
     seed: u64,
     sample: u32,
+    rows: std::ops::Range<u32>,
     sums: &mut [Vec3],
     caught: &mut [u32],
 ) -> Counters {
     let w = cam.width as usize;
     sums.par_chunks_mut(w)
         .zip(caught.par_chunks_mut(w))
-        .enumerate()
-        .map(|(y, (row, caught))| {
+        .zip(rows)
+        .map(|((row, caught), y)| {
             let mut c = Counters::default();
             for (x, px) in row.iter_mut().enumerate() {
-                let (mut s, ray) = camera_sample(cam, (x as u32, y as u32), |pixel| {
+                let (mut s, ray) = camera_sample(cam, (x as u32, y), |pixel| {
                     Sampler::new(seed, pixel, sample as u64)
                 });
                 let caught_before = c.nonfinite;

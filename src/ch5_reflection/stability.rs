@@ -5,6 +5,7 @@
 use glam::{DVec3, Vec2, Vec3};
 
 use super::direct::{Estimator, Strategy};
+use super::render::render_pass;
 use super::shading_events::Counters;
 use super::stiff_scenes::{floor_point, lamp, point_light, world, FLOOR};
 use crate::ch5_reflection::light::sky::Sky;
@@ -400,8 +401,8 @@ pub fn placement() -> CaseResult {
         };
         let mut sums = vec![Vec3::ZERO; 24 * 24];
         let mut caught = vec![0; 24 * 24];
-        for sample in 0..8 {
-            super::render::render_pass(&world, &camera, &est, 5, sample, &mut sums, &mut caught);
+        for k in 0..8 {
+            render_pass(&world, &camera, &est, 5, k, 0..24, &mut sums, &mut caught);
         }
         // Region means (6x6 pixels), summed over channels.
         (0..16)

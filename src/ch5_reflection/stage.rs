@@ -109,6 +109,7 @@ impl Chapter for Reflection {
                 VIEWS,
             )
             .with_memory(64, 528)
+            .with_bands()
         }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
@@ -135,7 +136,8 @@ struct ReflectionRender {
 
 impl ReflectionRender {
     fn new(stage: Reflection, scene: Arc<Scene>, settings: &Settings) -> Result<ReflectionRender> {
-        let n = scene.camera.width as usize * scene.camera.height as usize;
+        let rows = settings.rows_of(scene.camera.height);
+        let n = scene.camera.width as usize * rows.len();
         Ok(ReflectionRender {
             stage,
             camera: Camera::new(scene.camera)?,
@@ -161,12 +163,18 @@ impl ReflectionRender {
 }
 
 impl ReflectionRender {
+    /// The size of its films: the image's width by the rows it renders.
+    fn size(&self) -> (u32, u32) {
+        let rows = self.settings.rows_of(self.camera.height);
+        (self.camera.width, rows.len() as u32)
+    }
+
     fn pass_info(&self) -> Pass {
         // One camera ray per pixel and pass, plus the shadow, direction and
         // mirror rays the estimator traced.
-        let cam = &self.scene.camera;
+        let (w, h) = self.size();
         let c = &self.counters;
-        let rays = cam.width as u64 * cam.height as u64 * self.passes as u64
+        let rays = w as u64 * h as u64 * self.passes as u64
             + c.shadow_rays
             + c.direction_rays
             + c.mirror_bounces;
@@ -195,6 +203,7 @@ impl Render for ReflectionRender {
                 &estimator,
                 self.settings.seed,
                 self.passes,
+                self.settings.rows_of(self.camera.height),
                 &mut self.sums,
                 &mut self.caught,
             );
@@ -210,15 +219,15 @@ impl Render for ReflectionRender {
     }
 
     fn snapshot(&self) -> Snapshot {
-        let cam = &self.scene.camera;
-        let mut film = Film::new(cam.width, cam.height);
+        let (w, h) = self.size();
+        let mut film = Film::new(w, h);
         let k = self.passes.max(1) as f32;
         for (p, s) in film.pixels.iter_mut().zip(&self.sums) {
             *p = *s / k;
         }
         film.scrub_nonfinite();
         Snapshot {
-            views: vec![film, caught_film(cam.width, cam.height, &self.caught)],
+            views: vec![film, caught_film(w, h, &self.caught)],
             pass: self.pass_info(),
             ..Snapshot::default()
         }

@@ -11,7 +11,7 @@ use crate::core::film::Film;
 
 use super::engine::{PassSpec, PathEngine, RowSums};
 use super::integrator::{PathSettings, PathStats};
-use super::layers::LAYER_SLOTS;
+use super::layers::{LAYER_SLOTS, RENDER_LAYERS};
 use super::sampler::SamplerKind;
 
 /// Sums over the samples taken so far.
@@ -19,8 +19,11 @@ use super::sampler::SamplerKind;
 pub struct Accumulator {
     /// Width in pixels.
     pub width: u32,
-    /// Height in pixels.
+    /// Height in pixels: the rows it holds.
     pub height: u32,
+    /// The image row its first row is (0 unless the run renders in bands):
+    /// it holds rows `first_row .. first_row + height`.
+    pub first_row: u32,
     /// Samples per pixel so far.
     pub samples: u32,
     /// Σ L per pixel.
@@ -40,10 +43,16 @@ pub struct Accumulator {
 impl Accumulator {
     /// An empty accumulator, with layer sums if `layers`.
     pub fn new(width: u32, height: u32, layers: bool) -> Accumulator {
-        let n = width as usize * height as usize;
+        Accumulator::of_rows(width, 0..height, layers)
+    }
+
+    /// An empty accumulator for rows `rows` of an image `width` pixels wide.
+    pub fn of_rows(width: u32, rows: std::ops::Range<u32>, layers: bool) -> Accumulator {
+        let n = width as usize * rows.len();
         Accumulator {
             width,
-            height,
+            height: rows.len() as u32,
+            first_row: rows.start,
             samples: 0,
             sum: vec![Vec3::ZERO; n],
             sum_sq: vec![Vec3::ZERO; n],
@@ -68,7 +77,7 @@ impl Accumulator {
         seed: u64,
         count: u32,
     ) {
-        let w = self.width as usize;
+        let (w, first_row) = (self.width as usize, self.first_row as usize);
         let pass = PassSpec {
             camera,
             settings,
@@ -89,13 +98,13 @@ impl Accumulator {
             .zip(layer_rows.par_iter_mut())
             .zip(self.caught.par_chunks_mut(w))
             .enumerate()
-            .map(|(y, (((sum, sum_sq), layers), caught))| {
+            .map(|(i, (((sum, sum_sq), layers), caught))| {
                 let mut stats = PathStats::default();
                 let layers = layers.take();
                 engine.trace_row(
                     &pass,
                     RowSums {
-                        y,
+                        y: first_row + i,
                         sum,
                         sum_sq,
                         layers,
@@ -173,6 +182,34 @@ impl Accumulator {
                 .map(|l| l[..=last].iter().sum::<Vec3>() * inv)
                 .collect(),
         })
+    }
+
+    /// Per-bounce layers as [`Snapshot::layers`](crate::core::stage::Snapshot::layers)
+    /// defines them, if layers are kept.
+    pub fn render_layers(&self) -> Option<Vec<Film>> {
+        // layers[0] is direct illumination with the emitters seen directly
+        // included, layers[k] bounce k; the last holds everything beyond:
+        // RENDER_LAYERS, one fewer than the slots.
+        // One sweep over the sums (they are stored per pixel, all slots
+        // together), as `layer(slot)` for every slot would read them
+        // all once per slot.
+        let sums = self.layers.as_ref()?;
+        let inv = 1.0 / self.samples.max(1) as f32;
+        let (w, h) = (self.width, self.height);
+        let mut out: Vec<Film> = (0..RENDER_LAYERS).map(|_| Film::new(w, h)).collect();
+        for (i, l) in sums.iter().enumerate() {
+            for slot in 1..LAYER_SLOTS {
+                let mut v = l[slot] * inv;
+                if slot == 1 {
+                    v += l[0] * inv;
+                }
+                out[slot - 1].pixels[i] = v;
+            }
+        }
+        for f in &mut out {
+            f.scrub_nonfinite();
+        }
+        Some(out)
     }
 }
 

@@ -18,7 +18,6 @@ use super::engine::{EngineChoice, PathEngine};
 use super::figures::{layer_figures, spp_figure, strategy_plot};
 use super::inspect::table_lines;
 use super::integrator::{PathSettings, Strategy};
-use super::layers::{LAYER_SLOTS, RENDER_LAYERS};
 use super::path_record::record_path;
 use super::reference::StoredReference;
 use super::report::{chapter_report, ReportInputs};
@@ -28,7 +27,6 @@ use crate::ch5_reflection::world::World;
 use crate::core::error::{Error, Result};
 use crate::core::figure::{Figure, FigureContent};
 use crate::core::film::film_mean;
-use crate::core::film::Film;
 use crate::core::report::Report;
 use crate::core::run::output_stem;
 use crate::core::stage::{
@@ -170,6 +168,7 @@ impl Chapter for GlobalIllumination {
             extra_spp: self.spp_figure.map_or(0, |max| 1 << max.max(1).ilog2()),
             ..ChapterInfo::new(6, "global-illumination", TITLE, VIEWS)
                 .with_memory(if self.layers { 1280 } else { 128 }, 544)
+                .with_bands()
         }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
@@ -200,12 +199,18 @@ pub struct PathTracingRender {
 impl PathTracingRender {
     /// A render of `scene` that has not started.
     pub fn new(stage: GlobalIllumination, scene: Arc<Scene>, settings: &Settings) -> Result<Self> {
-        let (w, h) = (scene.camera.width, scene.camera.height);
-        let reference = StoredReference::for_render(&scene);
+        let rows = settings.rows_of(scene.camera.height);
+        // A band of the image has no reference to compare with.
+        let whole = rows.len() as u32 == scene.camera.height;
+        let reference = if whole {
+            StoredReference::for_render(&scene)
+        } else {
+            None
+        };
         Ok(PathTracingRender {
             stage,
             camera: Camera::new(scene.camera)?,
-            acc: Accumulator::new(w, h, stage.layers),
+            acc: Accumulator::of_rows(scene.camera.width, rows, stage.layers),
             scene,
             settings: settings.clone(),
             engine: None,
@@ -310,33 +315,6 @@ impl PathTracingRender {
         let sum: f64 = var.pixels.iter().map(|p| p.as_dvec3().element_sum()).sum();
         Some((sum / n).sqrt())
     }
-
-    /// Per-bounce layers as [`Snapshot::layers`] defines them.
-    fn layers(&self) -> Option<Vec<Film>> {
-        // layers[0] is direct illumination with the emitters seen directly
-        // included, layers[k] bounce k; the last holds everything beyond:
-        // RENDER_LAYERS, one fewer than the slots.
-        // One sweep over the sums (they are stored per pixel, all slots
-        // together), as `acc.layer(slot)` for every slot would read them
-        // all once per slot.
-        let sums = self.acc.layers.as_ref()?;
-        let inv = 1.0 / self.acc.samples.max(1) as f32;
-        let (w, h) = (self.acc.width, self.acc.height);
-        let mut out: Vec<Film> = (0..RENDER_LAYERS).map(|_| Film::new(w, h)).collect();
-        for (i, l) in sums.iter().enumerate() {
-            for slot in 1..LAYER_SLOTS {
-                let mut v = l[slot] * inv;
-                if slot == 1 {
-                    v += l[0] * inv;
-                }
-                out[slot - 1].pixels[i] = v;
-            }
-        }
-        for f in &mut out {
-            f.scrub_nonfinite();
-        }
-        Some(out)
-    }
 }
 
 impl Render for PathTracingRender {
@@ -385,7 +363,7 @@ impl Render for PathTracingRender {
             .unzip();
         Snapshot {
             views: vec![image, stderr, caught],
-            layers: self.layers(),
+            layers: self.acc.render_layers(),
             reference,
             reference_stderr,
             reference_factor: self.reference.as_ref().map_or(1, |(_, k)| *k),
@@ -435,6 +413,16 @@ impl Render for PathTracingRender {
                 .flatten(),
         });
         let stem = output_stem(6, &self.scene.name);
+        // A band of the image makes no figures: they show the whole image
+        // (and the spp strip would render all of it again).
+        if self.acc.height < self.camera.height {
+            report.left_out.push(
+                "per-bounce layers and figures: the image is rendered in bands, too large to \
+                 hold whole, and they show all of it"
+                    .into(),
+            );
+            return report;
+        }
         let mut figures = layer_figures(&self.acc, &stem);
         if let (Some(max), Some((engine, _))) = (self.stage.spp_figure, &self.engine) {
             figures.push(spp_figure(

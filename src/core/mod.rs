@@ -3,6 +3,7 @@
 //! plots, reports, random numbers, the stage boundary between a chapter and
 //! its front ends, and the headless runner.
 
+pub mod bands;
 pub mod difference;
 pub mod draw;
 pub mod error;
@@ -10,6 +11,7 @@ pub mod figure;
 pub mod film;
 pub mod format;
 pub mod memory;
+pub mod outputs;
 pub mod plot;
 pub mod preview;
 pub mod report;

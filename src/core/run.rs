@@ -97,6 +97,7 @@ impl CommonArgs {
             seed: self.seed,
             studies: self.report,
             variant: None,
+            rows: None,
         }
     }
 
@@ -181,6 +182,9 @@ pub fn run_headless(
         settings.spp.saturating_add(info.extra_spp),
         info.radiance,
     )?;
+    if let Some(rows) = crate::core::bands::plan(&info, &scene) {
+        return run_banded(chapter, scene, settings, out, preview_width, rows, w);
+    }
     info.check_memory(&scene)?;
     let stem = output_stem(info.number, &scene.name);
     let start = Instant::now();
@@ -208,32 +212,58 @@ pub fn run_headless(
     let set = OutputSet::begin();
     let files = write_outputs(&info, &snapshot, &report, out, &stem)?;
     set.commit()?;
-
-    let io = |e: std::io::Error| Error::io(Path::new("<stdout>"), e);
-    write!(
-        w,
-        "{}",
-        preview(
-            &snapshot.views[0],
-            preview_width,
-            PreviewStyle::for_stdout()
-        )
-    )
-    .map_err(io)?;
-    // Names in the report come from the scene file: no raw control codes.
-    write!(w, "{}", escape_keep_newlines(&report.to_text(Times::Show))).map_err(io)?;
-    writeln!(w, "  wrote {} files:", files.len()).map_err(io)?;
-    for f in &files {
-        writeln!(w, "    {}", escape(&f.display().to_string())).map_err(io)?;
-    }
-    writeln!(w).map_err(io)?;
-    let rmse = snapshot.rmse();
+    print_run(w, &snapshot.views[0], preview_width, &report, &files)?;
     Ok(RunSummary {
+        rmse: snapshot.rmse(),
         files,
         seconds,
         stable: report.all_stable(),
-        rmse,
     })
+}
+
+/// [`run_headless`] in bands of `rows_per_band` rows
+/// ([`crate::core::bands`]): for a `scene` at its final size whose pixels do
+/// not fit in memory at once.
+pub fn run_banded(
+    chapter: &dyn Chapter,
+    scene: Scene,
+    settings: &Settings,
+    out: &Path,
+    preview_width: u32,
+    rows_per_band: u32,
+    w: &mut dyn Write,
+) -> Result<RunSummary> {
+    let stem = output_stem(chapter.info().number, &scene.name);
+    let run =
+        crate::core::bands::render_in_bands(chapter, scene, settings, out, &stem, rows_per_band)?;
+    print_run(w, &run.preview, preview_width, &run.report, &run.files)?;
+    Ok(RunSummary {
+        stable: run.report.all_stable(),
+        files: run.files,
+        seconds: run.seconds,
+        rmse: None,
+    })
+}
+
+/// Prints a finished run: the preview of `image` `columns` wide, the
+/// report and the files written.
+fn print_run(
+    w: &mut dyn Write,
+    image: &crate::core::film::Film,
+    columns: u32,
+    report: &Report,
+    files: &[PathBuf],
+) -> Result<()> {
+    let io = |e: std::io::Error| Error::io(Path::new("<stdout>"), e);
+    let style = PreviewStyle::for_stdout();
+    write!(w, "{}", preview(image, columns, style)).map_err(io)?;
+    // Names in the report come from the scene file: no raw control codes.
+    write!(w, "{}", escape_keep_newlines(&report.to_text(Times::Show))).map_err(io)?;
+    writeln!(w, "  wrote {} files:", files.len()).map_err(io)?;
+    for f in files {
+        writeln!(w, "    {}", escape(&f.display().to_string())).map_err(io)?;
+    }
+    writeln!(w).map_err(io)
 }
 
 /// The stem of a run's file names: `ch<N>-<scene>`.

@@ -50,6 +50,22 @@ pub struct Settings {
     /// Index into [`ChapterInfo::variants`]; `None`: the stage's own
     /// default ([`ChapterInfo::default_variant`]).
     pub variant: Option<usize>,
+    /// Render only these rows of the image, a band of a run too large to
+    /// hold whole ([`crate::core::bands`]): every view is then a film of the
+    /// band's rows, row `y` of the image at row `y - rows.start`, and
+    /// every pixel is the same as in the whole render. `None`: all rows.
+    pub rows: Option<std::ops::Range<u32>>,
+}
+
+impl Settings {
+    /// The rows of a `height`-row image this render draws: [`Settings::rows`]
+    /// kept inside the image, or all of them.
+    pub fn rows_of(&self, height: u32) -> std::ops::Range<u32> {
+        match &self.rows {
+            Some(r) => r.start.min(height)..r.end.min(height),
+            None => 0..height,
+        }
+    }
 }
 
 impl Default for Settings {
@@ -61,6 +77,7 @@ impl Default for Settings {
             seed: 0,
             studies: false,
             variant: None,
+            rows: None,
         }
     }
 }
@@ -108,20 +125,16 @@ pub struct Variant {
 }
 
 /// A render's films as its snapshot's views: `count` of them, each a black
-/// film of the camera's size before the first pass, NaN or Inf scrubbed
-/// out. The common body of [`Render::snapshot`] for stages that keep one
-/// film per view.
-pub fn views_of(
-    films: &[Film],
-    count: usize,
-    camera: &crate::scene::camera::CameraDesc,
-) -> Vec<Film> {
+/// film of `width` x `height` (the rows it renders) before the first
+/// pass, NaN or Inf scrubbed out. The common body of [`Render::snapshot`]
+/// for stages that keep one film per view.
+pub fn views_of(films: &[Film], count: usize, (width, height): (u32, u32)) -> Vec<Film> {
     (0..count)
         .map(|i| {
             let mut film = films
                 .get(i)
                 .cloned()
-                .unwrap_or_else(|| Film::new(camera.width, camera.height));
+                .unwrap_or_else(|| Film::new(width, height));
             film.scrub_nonfinite();
             film
         })
@@ -227,6 +240,10 @@ pub struct ChapterInfo {
     /// Bytes a run allocates per triangle of its scene, at most (measured
     /// at 82k and 328k triangles, rounded up).
     pub bytes_per_triangle: u64,
+    /// Whether the stage renders a band of rows alone ([`Settings::rows`])
+    /// with every pixel as in the whole image, so that a run too large to
+    /// hold whole can be rendered band by band ([`crate::core::bands`]).
+    pub bands: bool,
 }
 
 impl ChapterInfo {
@@ -252,6 +269,7 @@ impl ChapterInfo {
             extra_spp: 0,
             bytes_per_pixel: 256,
             bytes_per_triangle: 512,
+            bands: false,
         }
     }
 
@@ -265,17 +283,36 @@ impl ChapterInfo {
         }
     }
 
+    /// This chapter renders bands of rows alone ([`ChapterInfo::bands`]).
+    pub const fn with_bands(self) -> ChapterInfo {
+        ChapterInfo {
+            bands: true,
+            ..self
+        }
+    }
+
     /// Refuses a run of this chapter on `scene` that would need more memory
     /// than this process may still get ([`crate::core::memory`]).
     pub fn check_memory(&self, scene: &Scene) -> Result<()> {
+        self.check_memory_rows(scene, scene.camera.height)
+    }
+
+    /// [`Self::check_memory`] for a run that holds `rows` rows of the image
+    /// at a time (a band of a banded run, [`crate::core::bands`]).
+    pub fn check_memory_rows(&self, scene: &Scene, rows: u32) -> Result<()> {
         let run = crate::core::memory::Run {
-            pixels: scene.camera.width as u64 * scene.camera.height as u64,
+            pixels: scene.camera.width as u64 * rows.min(scene.camera.height) as u64,
             triangles: scene.triangle_count() as u64,
             per_pixel: self.bytes_per_pixel,
             per_triangle: self.bytes_per_triangle,
         };
+        let band = if rows < scene.camera.height {
+            format!(", {rows} rows at a time")
+        } else {
+            String::new()
+        };
         let what = format!(
-            "chapter {} on {} ({}x{} pixels, {} triangles)",
+            "chapter {} on {} ({}x{} pixels{band}, {} triangles)",
             self.number,
             crate::core::text::escape(&scene.name),
             scene.camera.width,

@@ -74,7 +74,16 @@ fn the_moved_or_scaled_cornell_box_renders_the_same_in_chapter_5() {
         let n = (camera.width * camera.height) as usize;
         let (mut sums, mut caught) = (vec![Vec3::ZERO; n], vec![0; n]);
         for sample in 0..16 {
-            render_pass(&world, &camera, &est, 5, sample, &mut sums, &mut caught);
+            render_pass(
+                &world,
+                &camera,
+                &est,
+                5,
+                sample,
+                0..camera.height,
+                &mut sums,
+                &mut caught,
+            );
         }
         assert!(
             caught.iter().all(|&c| c == 0),

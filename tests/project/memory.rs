@@ -40,7 +40,9 @@ fn bin(chapter: u32) -> &'static str {
 #[test]
 fn a_huge_image_is_refused_under_an_address_space_limit() {
     let dir = common::temp_dir("memory-huge");
-    for chapter in [3, 6] {
+    // Chapters 1 and 4 hold the whole image (their views depend on all of
+    // it); the others render a run this large in bands (tests/project/bands.rs).
+    for chapter in [1, 4] {
         let args = ["--width", "16384", "--height", "16384"];
         let run = limited(4 << 20, bin(chapter), &args, &dir.join("out"));
         let stderr = String::from_utf8_lossy(&run.stderr);

@@ -1,5 +1,6 @@
 //! The project as a whole: the book's includes, the source layout, the scene files and their errors, the film and the main binary, the grader.
 
+mod bands;
 mod book;
 mod book_links;
 mod book_numbers;

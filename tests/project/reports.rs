@@ -26,6 +26,7 @@ fn reports(scene: &str) -> Vec<(u32, String, Vec<PathBuf>)> {
         seed: 0,
         studies: true,
         variant: None,
+        rows: None,
     };
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{scene}.toml"));
     let mut out = Vec::new();

@@ -137,7 +137,7 @@ fn ch3_leak() -> Result<Pair> {
     let bvh = geometry.bvh.as_ref().expect("a sphere has triangles");
     let render = |test: fn(&Ray, [Vec3; 3], f32, f32) -> Option<Hit>| {
         let trace = |r: &Ray| bvh.closest_with(r, f32::INFINITY, test);
-        let (sums, _) = render_sum(&camera, &geometry, 0..1, 1, 0, &trace);
+        let (sums, _) = render_sum(&camera, &geometry, 0..camera.height, 0..1, 1, 0, &trace);
         // The normal view.
         magnify(&films_from_sums(&camera, &sums, 1)[1], 3)
     };

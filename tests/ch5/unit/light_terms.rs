@@ -20,7 +20,16 @@ fn check(scene: &Scene, strategy: Strategy) -> usize {
     for sample in [0, 3] {
         let n = (camera.width * camera.height) as usize;
         let (mut sums, mut caught) = (vec![Vec3::ZERO; n], vec![0; n]);
-        render_pass(&world, &camera, &est, 9, sample, &mut sums, &mut caught);
+        render_pass(
+            &world,
+            &camera,
+            &est,
+            9,
+            sample,
+            0..camera.height,
+            &mut sums,
+            &mut caught,
+        );
         for y in 0..camera.height {
             for x in 0..camera.width {
                 let p = pixel_light(&world, &camera, &est, 9, (x, y), sample);

@@ -321,7 +321,7 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
     }
     // The depth views of both, for the images of a failed check.
     let film = |t: TraversalFn| {
-        let (sums, _) = render_sum(&camera, &geometry, 0..1, 1, 0, &|r| {
+        let (sums, _) = render_sum(&camera, &geometry, 0..camera.height, 0..1, 1, 0, &|r| {
             t(&bvh, r, f32::INFINITY)
         });
         films_from_sums(&camera, &sums, 1).swap_remove(0)
