@@ -43,6 +43,7 @@ impl Chapter for Projection {
     fn info(&self) -> ChapterInfo {
         ChapterInfo::new(1, "projection", "Projection: the pinhole camera", VIEWS)
             .with_memory(128, 192)
+            .with_bands()
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         crate::core::stage::require_meshes(1, &scene)?;
@@ -66,10 +67,24 @@ struct ProjectionRender {
     seconds: f64,
 }
 
+impl ProjectionRender {
+    /// The size of its films: the image's width by the rows it renders.
+    fn size(&self) -> (u32, u32) {
+        let rows = self.settings.rows_of(self.camera.height);
+        (self.camera.width, rows.len() as u32)
+    }
+}
+
 impl Render for ProjectionRender {
     fn pass(&mut self) -> Pass {
         let start = Instant::now();
-        let (films, stats) = draw_scene(&self.camera, &self.scene.meshes, &self.scene.materials);
+        let rows = self.settings.rows_of(self.camera.height);
+        let (films, stats) = draw_scene(
+            &self.camera,
+            &self.scene.meshes,
+            &self.scene.materials,
+            rows,
+        );
         self.seconds = start.elapsed().as_secs_f64();
         self.films = films;
         self.stats = stats;
@@ -78,11 +93,7 @@ impl Render for ProjectionRender {
 
     fn snapshot(&self) -> Snapshot {
         Snapshot {
-            views: views_of(
-                &self.films,
-                VIEWS.len(),
-                (self.scene.camera.width, self.scene.camera.height),
-            ),
+            views: views_of(&self.films, VIEWS.len(), self.size()),
             pass: fixed_pass(u32::from(!self.films.is_empty()), 1, 0),
             ..Snapshot::default()
         }

@@ -5,7 +5,7 @@
 use glam::{Vec2, Vec3};
 
 use super::camera::{project_pinhole, Camera};
-use crate::core::draw;
+use crate::core::draw::{self, Band};
 use crate::core::film::Film;
 use crate::scene::mesh::Mesh;
 use crate::scene::Material;
@@ -91,15 +91,18 @@ fn wire_color(m: &Material) -> Vec3 {
     }
 }
 
-/// Draws `meshes` as seen by `camera`: the three [views](crate::ch1_projection::stage::VIEWS) in order.
+/// Draws `meshes` as seen by `camera`: the three [views](crate::ch1_projection::stage::VIEWS) in
+/// order, each holding rows `rows` of the image (all of them:
+/// `0..camera.height`).
 // ANCHOR: draw_scene
 pub fn draw_scene(
     camera: &Camera,
     meshes: &[Mesh],
     materials: &[Material],
+    rows: std::ops::Range<u32>,
 ) -> (Vec<Film>, DrawStats) {
     let (w, h) = (camera.width, camera.height);
-    let mut films = vec![Film::new(w, h), Film::new(w, h), Film::new(w, h)];
+    let mut films: Vec<Band> = (0..3).map(|_| Band::new(w, rows.clone(), h)).collect();
     let mut stats = DrawStats::default();
     // Every vertex to camera space once; depth range for shading and dots.
     let cam: Vec<Vec<Vec3>> = meshes
@@ -150,6 +153,6 @@ pub fn draw_scene(
             }
         }
     }
-    (films, stats)
+    (films.into_iter().map(|band| band.film).collect(), stats)
 }
 // ANCHOR_END: draw_scene

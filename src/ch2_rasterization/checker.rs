@@ -108,7 +108,7 @@ pub fn floor_uv(
 ) -> Vec<Option<DVec2>> {
     let cam = checker_camera(width, height);
     let tris = floor_triangles(&cam);
-    let buf = rasterize(&tris, width, height, spp, seed);
+    let buf = rasterize(&tris, width, 0..height, spp, seed);
     (0..width * height * spp)
         .into_par_iter()
         .map(|i| {

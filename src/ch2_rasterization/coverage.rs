@@ -95,8 +95,11 @@ pub fn coverage_counts(
 pub struct SampleBuffer {
     /// Width in pixels.
     pub width: u32,
-    /// Height in pixels.
+    /// Height in pixels: the rows it holds.
     pub height: u32,
+    /// The image row its first row is (0 unless the frame is a band of a
+    /// larger image): it holds rows `first_row .. first_row + height`.
+    pub first_row: u32,
     /// Samples per pixel.
     pub spp: u32,
     /// Seed of the sample positions.
@@ -106,7 +109,7 @@ pub struct SampleBuffer {
 }
 
 impl SampleBuffer {
-    /// Fixed-point position of sample `s` of pixel (x, y).
+    /// Fixed-point position of sample `s` of pixel (x, y) of the image.
     pub fn position(&self, x: u32, y: u32, s: u32) -> I64Vec2 {
         sample_position(self.spp, self.seed, self.width, x, y, s)
     }
@@ -124,21 +127,26 @@ impl SampleBuffer {
 /// rasterizes the bands in parallel, each triangle only over its bounding
 /// box, with a depth test per sample. The result does not depend on the
 /// number of threads or the order of triangles in a band: the depth test
-/// breaks ties by triangle index.
+/// breaks ties by triangle index. Only rows `rows` of the image are
+/// rasterized (all of them: `0..height`).
 // ANCHOR: rasterize
 pub fn rasterize(
     tris: &[ScreenTriangle],
     width: u32,
-    height: u32,
+    rows: std::ops::Range<u32>,
     spp: u32,
     seed: u64,
 ) -> SampleBuffer {
+    let height = rows.len() as u32;
     let bands = height.div_ceil(BAND_ROWS) as usize;
     // Bin: each band gets the triangles whose bounding box reaches it.
     let mut bins: Vec<Vec<u32>> = vec![Vec::new(); bands];
     for (t, tri) in tris.iter().enumerate() {
-        let (b0, b1) = (tri.bbox[1] / BAND_ROWS, tri.bbox[3] / BAND_ROWS);
-        for bin in &mut bins[b0 as usize..=b1 as usize] {
+        if tri.bbox[3] < rows.start || tri.bbox[1] >= rows.end {
+            continue;
+        }
+        let band_of = |y: u32| (y.clamp(rows.start, rows.end - 1) - rows.start) / BAND_ROWS;
+        for bin in &mut bins[band_of(tri.bbox[1]) as usize..=band_of(tri.bbox[3]) as usize] {
             bin.push(t as u32);
         }
     }
@@ -149,7 +157,7 @@ pub fn rasterize(
         .zip(bins.par_iter())
         .enumerate()
         .for_each(|(band, (buffer, bin))| {
-            let y_band = band as u32 * BAND_ROWS;
+            let y_band = rows.start + band as u32 * BAND_ROWS;
             let rows = (buffer.len() / (width * spp) as usize) as u32;
             // Sample positions of the band, computed once.
             let offsets: Vec<I64Vec2> = (0..rows * width * spp)
@@ -169,6 +177,7 @@ pub fn rasterize(
     SampleBuffer {
         width,
         height,
+        first_row: rows.start,
         spp,
         seed,
         samples,

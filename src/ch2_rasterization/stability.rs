@@ -80,7 +80,7 @@ pub fn stability_cases() -> Vec<StabilityCase> {
         w,
         h,
     );
-    let buf = rasterize(&tri, w, h, 1, 0);
+    let buf = rasterize(&tri, w, 0..h, 1, 0);
     let mut rows = std::collections::BTreeSet::new();
     let mut finite = true;
     let mut covered = 0;

@@ -4,15 +4,15 @@
 use std::sync::Arc;
 
 use super::checker::{checker_figures, CHECKER_SIZE, CHECKER_SPP};
-use super::frame::{render_frame, Frame, MAX_SAMPLES};
+use super::frame::{render_frame_with, Frame, MAX_SAMPLES};
 use super::report::chapter_report;
-use super::views::VIEWS;
+use super::views::{depth_range, VIEWS};
 use crate::ch1_projection::camera::Camera;
 use crate::core::error::{Error, Result};
 use crate::core::figure::{Figure, FigureContent};
 use crate::core::report::Report;
 use crate::core::stage::{
-    fixed_pass, views_of, Chapter, ChapterInfo, Pass, Render, Settings, Snapshot,
+    fixed_pass, views_of, Chapter, ChapterInfo, Pass, Render, Settings, Snapshot, ViewScale,
 };
 use crate::scene::Scene;
 
@@ -37,18 +37,20 @@ impl Chapter for Rasterization {
             VIEWS,
         )
         .with_memory(256, 832)
+        .with_bands()
+        .with_scaled_views()
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
         crate::core::stage::require_meshes(2, &scene)?;
         let cam = &scene.camera;
-        let samples = cam.width as u64 * cam.height as u64 * settings.spp as u64;
+        let rows = settings.rows_of(cam.height).len() as u64;
+        let samples = cam.width as u64 * rows * settings.spp as u64;
         if settings.spp == 0 || samples > MAX_SAMPLES {
             return Err(Error::Usage(format!(
-                "`--spp {}` is out of range at {}x{} (1 to {})",
+                "`--spp {}` is out of range at {}x{rows} (1 to {})",
                 settings.spp,
                 cam.width,
-                cam.height,
-                (MAX_SAMPLES / (cam.width as u64 * cam.height as u64)).max(1)
+                (MAX_SAMPLES / (cam.width as u64 * rows.max(1))).max(1)
             )));
         }
         Ok(Box::new(RasterRender {
@@ -69,33 +71,36 @@ struct RasterRender {
     frame: Option<Frame>,
 }
 
+impl RasterRender {
+    /// The size of its films: the image's width by the rows it renders.
+    fn size(&self) -> (u32, u32) {
+        let rows = self.settings.rows_of(self.camera.height);
+        (self.camera.width, rows.len() as u32)
+    }
+}
+
 impl Render for RasterRender {
     fn pass(&mut self) -> Pass {
         let s = &self.scene;
         // `start` checked the sample count, so this cannot fail.
-        self.frame = render_frame(
-            &self.camera,
-            &s.meshes,
-            &s.materials,
-            self.settings.spp,
-            self.settings.seed,
-            self.options.cull_back_faces,
-        )
-        .ok();
+        let cull = self.options.cull_back_faces;
+        let (camera, settings) = (&self.camera, &self.settings);
+        self.frame = render_frame_with(camera, &s.meshes, &s.materials, settings, cull).ok();
         fixed_pass(1, 1, 0)
     }
 
     fn snapshot(&self) -> Snapshot {
         let films = self.frame.as_ref().map_or(&[][..], |f| &f.films[..]);
         Snapshot {
-            views: views_of(
-                films,
-                VIEWS.len(),
-                (self.scene.camera.width, self.scene.camera.height),
-            ),
+            views: views_of(films, VIEWS.len(), self.size()),
             pass: fixed_pass(u32::from(self.frame.is_some()), 1, 0),
             ..Snapshot::default()
         }
+    }
+
+    /// The visible range of 1/w, the depth view's.
+    fn scale(&self) -> Option<ViewScale> {
+        self.frame.as_ref().map(|f| depth_range(&f.buffer))
     }
 
     /// With `--report`, its figures are the checkered floor,

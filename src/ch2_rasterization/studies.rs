@@ -54,7 +54,7 @@ pub fn error_against_time(seed: u64) -> ErrorTime {
             let mut coverage = Vec::new();
             for _ in 0..3 {
                 let t0 = Instant::now();
-                let buf = rasterize(&tris, size, size, spp, seed);
+                let buf = rasterize(&tris, size, 0..size, spp, seed);
                 coverage = buf.coverage();
                 best = best.min(t0.elapsed().as_secs_f64());
             }

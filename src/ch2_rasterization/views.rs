@@ -9,7 +9,7 @@ use super::coverage::SampleBuffer;
 use super::interpolate::{interpolate_phi, screen_barycentrics, Interpolation};
 use super::setup::ScreenTriangle;
 use crate::core::film::Film;
-use crate::core::stage::View;
+use crate::core::stage::{View, ViewScale};
 
 /// The views of chapter 2, in the order [`resolve`] returns them.
 pub const VIEWS: &[View] = &[
@@ -46,11 +46,9 @@ pub fn id_color(id: u32) -> Vec3 {
     Vec3::new(c(0), c(1), c(2))
 }
 
-/// Every view of a rasterized frame.
-// ANCHOR: resolve
-pub fn resolve(buf: &SampleBuffer, tris: &[ScreenTriangle]) -> Vec<Film> {
-    let (w, h, spp) = (buf.width, buf.height, buf.spp);
-    // The visible range of 1/w, for the depth view.
+/// The visible range of 1/w in `buf`, which the depth view is scaled over
+/// (∞ and 0 where nothing is covered).
+pub fn depth_range(buf: &SampleBuffer) -> ViewScale {
     let (lo, hi) = buf
         .samples
         .iter()
@@ -58,10 +56,19 @@ pub fn resolve(buf: &SampleBuffer, tris: &[ScreenTriangle]) -> Vec<Film> {
         .fold((f32::INFINITY, 0.0f32), |(lo, hi), s| {
             (lo.min(s.inv_w), hi.max(s.inv_w))
         });
+    ViewScale { lo, hi }
+}
+
+/// Every view of a rasterized frame, the depth view scaled over `depth`
+/// (the [`depth_range`] of the whole image).
+// ANCHOR: resolve
+pub fn resolve(buf: &SampleBuffer, tris: &[ScreenTriangle], depth: ViewScale) -> Vec<Film> {
+    let (w, h, spp) = (buf.width, buf.height, buf.spp);
+    let (lo, hi) = (depth.lo, depth.hi);
     let pixels: Vec<[Vec3; 6]> = (0..w * h)
         .into_par_iter()
         .map(|i| {
-            let (x, y) = (i % w, i / w);
+            let (x, y) = (i % w, buf.first_row + i / w);
             let mut sum = [Vec3::ZERO; 6];
             for s in 0..spp {
                 let sample = buf.samples[(i * spp + s) as usize];

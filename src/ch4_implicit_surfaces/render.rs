@@ -18,6 +18,7 @@ use crate::ch4_implicit_surfaces::march::{
 };
 use crate::ch4_implicit_surfaces::normal::{normal, NormalScheme};
 use crate::core::film::Film;
+use crate::core::stage::ViewScale;
 use crate::scene::mesh::Mesh;
 use crate::scene::Material;
 
@@ -90,18 +91,20 @@ pub struct Pixel {
     pub ray: Ray,
 }
 
-/// Traces every pixel of `camera` against `objects` (no SDF objects: no
-/// evaluation at all, every pixel a miss).
+/// Traces every pixel of rows `rows` of `camera`'s image (all of them:
+/// `0..camera.height`) against `objects` (no SDF objects: no evaluation
+/// at all, every pixel a miss).
 pub fn trace_image(
     camera: &Camera,
+    rows: std::ops::Range<u32>,
     objects: &[SdfObject],
     m: &March,
     method: Method,
     normals: NormalScheme,
     meshes: Option<MeshTracer>,
 ) -> Vec<Pixel> {
-    let (w, h) = (camera.width, camera.height);
-    (0..w * h)
+    let w = camera.width;
+    (rows.start * w..rows.end * w)
         .into_par_iter()
         .map(|i| {
             let ray = pixel_ray(camera, i % w, i / w);
@@ -224,12 +227,27 @@ pub fn heat(x: f32) -> Vec3 {
     stops[i].lerp(stops[i + 1], s - i as f32)
 }
 
-/// The five views: shaded (headlight), normals, depth, steps, error.
-pub fn views(pixels: &[Pixel], w: u32, h: u32, materials: &[Material], m: &March) -> Vec<Film> {
-    let mut films: Vec<Film> = (0..5).map(|_| Film::new(w, h)).collect();
+/// The distances of the hits among `pixels`, the least and the greatest
+/// (0 without hits): what the depth view is scaled over.
+pub fn hit_range(pixels: &[Pixel]) -> ViewScale {
     let hits = pixels.iter().filter_map(|p| p.hit.map(|h| h.t));
-    let t_min = hits.clone().fold(f32::INFINITY, f32::min);
-    let t_max = hits.fold(0.0, f32::max).max(t_min);
+    ViewScale {
+        lo: hits.clone().fold(f32::INFINITY, f32::min),
+        hi: hits.fold(0.0, f32::max),
+    }
+}
+
+/// The five views: shaded (headlight), normals, depth (scaled over
+/// `depth`, the [`hit_range`] of the whole image), steps, error.
+pub fn views(
+    pixels: &[Pixel],
+    (w, h): (u32, u32),
+    materials: &[Material],
+    m: &March,
+    depth: ViewScale,
+) -> Vec<Film> {
+    let mut films: Vec<Film> = (0..5).map(|_| Film::new(w, h)).collect();
+    let (t_min, t_max) = (depth.lo, depth.hi.max(depth.lo));
     for (i, px) in pixels.iter().enumerate() {
         let steps = heat(px.trace.steps as f32 / m.max_steps as f32);
         films[3].pixels[i] = steps;

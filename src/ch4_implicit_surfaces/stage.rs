@@ -12,7 +12,9 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use super::march::Ending;
-use super::render::{march_steps, pixel_ray, trace_image, views, MeshTracer, Method, Pixel};
+use super::render::{
+    hit_range, march_steps, pixel_ray, trace_image, views, MeshTracer, Method, Pixel,
+};
 use super::report::{chapter_report, ReportInputs};
 use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::geometry::Geometry;
@@ -25,6 +27,7 @@ use crate::core::preview::downsample;
 use crate::core::report::Report;
 use crate::core::stage::{
     fixed_pass, views_of, Chapter, ChapterInfo, Inspection, Pass, Render, Settings, Snapshot, View,
+    ViewScale,
 };
 use crate::scene::Scene;
 
@@ -115,6 +118,8 @@ impl Chapter for SphereTracing {
                 VIEWS,
             )
             .with_memory(336, 272)
+            .with_bands()
+            .with_scaled_views()
         }
     }
     fn start(&self, scene: Arc<Scene>, settings: &Settings) -> Result<Box<dyn Render>> {
@@ -126,8 +131,9 @@ impl Chapter for SphereTracing {
         };
         // A first look in a sixteenth of the time: a quarter of the
         // resolution, enlarged, before the full pass.
+        // (Not in a band of a larger image: the whole run shows none.)
         let (w, h) = (scene.camera.width, scene.camera.height);
-        let coarse = if w >= 64 && h >= 64 {
+        let coarse = if w >= 64 && h >= 64 && settings.rows.is_none() {
             Some(Camera::new(scene.camera.with_resolution(w / 4, h / 4)?)?)
         } else {
             None
@@ -166,6 +172,14 @@ struct SphereTracingRender {
     geometry: Option<(Geometry, f64)>,
 }
 
+impl SphereTracingRender {
+    /// The size of its films: the image's width by the rows it renders.
+    fn size(&self) -> (u32, u32) {
+        let rows = self.settings.rows_of(self.camera.height);
+        (self.camera.width, rows.len() as u32)
+    }
+}
+
 impl Render for SphereTracingRender {
     fn pass(&mut self) -> Pass {
         let start = Instant::now();
@@ -179,14 +193,15 @@ impl Render for SphereTracingRender {
         let s = &self.stage;
         let coarse = self.coarse.take();
         let cam = coarse.as_ref().unwrap_or(&self.camera);
-        self.pixels = trace_image(cam, &self.scene.sdfs, &s.march, s.method, s.normals, meshes);
-        self.films = views(
-            &self.pixels,
-            cam.width,
-            cam.height,
-            &self.scene.materials,
-            &s.march,
-        );
+        let rows = self.settings.rows_of(cam.height);
+        let size = (cam.width, rows.len() as u32);
+        let sdfs = &self.scene.sdfs;
+        self.pixels = trace_image(cam, rows, sdfs, &s.march, s.method, s.normals, meshes);
+        let depth = self
+            .settings
+            .scale
+            .unwrap_or_else(|| hit_range(&self.pixels));
+        self.films = views(&self.pixels, size, &self.scene.materials, &s.march, depth);
         self.done += 1;
         if coarse.is_some() {
             let (w, h) = (self.camera.width, self.camera.height);
@@ -200,11 +215,7 @@ impl Render for SphereTracingRender {
     /// One primary ray per traced pixel (the single pass).
     fn snapshot(&self) -> Snapshot {
         Snapshot {
-            views: views_of(
-                &self.films,
-                VIEWS.len(),
-                (self.scene.camera.width, self.scene.camera.height),
-            ),
+            views: views_of(&self.films, VIEWS.len(), self.size()),
             pass: fixed_pass(self.done, self.planned, self.pixels.len() as u64),
             ..Snapshot::default()
         }
@@ -263,6 +274,11 @@ impl Render for SphereTracingRender {
             sample,
             lines,
         })
+    }
+
+    /// The range of its hits' distances, the depth view's.
+    fn scale(&self) -> Option<ViewScale> {
+        (!self.films.is_empty()).then(|| hit_range(&self.pixels))
     }
 
     fn report(&self) -> Report {

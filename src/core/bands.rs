@@ -1,11 +1,17 @@
-//! Runs too large to hold whole, rendered band by band. A chapter whose
-//! pixels do not depend on one another ([`ChapterInfo::bands`]: chapters 3,
-//! 5 and 6) renders any band of rows alone with every pixel as in the
-//! whole image ([`Settings::rows`]). When a run's pixels would need more
-//! than [`BAND_BYTES`] in one piece, or more than this process may still
-//! get, the headless runner renders it in bands that fit, one after
+//! Runs too large to hold whole, rendered band by band. Every chapter
+//! renders any band of rows alone with every pixel as in the whole image
+//! ([`Settings::rows`], [`ChapterInfo::bands`]): the ray tracers trace the
+//! band's pixels, the rasterizer and the wireframe draw every triangle and
+//! edge but write only the band's rows. When a run's pixels would need
+//! more than [`BAND_BYTES`] in one piece, or more than this process may
+//! still get, the headless runner renders it in bands that fit, one after
 //! another, and streams each band's rows into the image files: a 16384²
 //! render needs a band's memory, not the image's.
+//!
+//! Chapters 2 and 4 scale their depth views over the depths the whole
+//! image sees ([`ChapterInfo::scaled_views`]): they render every band
+//! twice, first to find that range ([`Render::scale`]), then with it
+//! ([`Settings::scale`]).
 //!
 //! The PNGs are written row by row as the bands come ([`png`]'s stream
 //! writer); the main image's EXR needs its rows in one go at the end, so
@@ -13,20 +19,19 @@
 //! counts only its own rows: the run's report keeps the facts every band
 //! agrees on, adds the totals, and names the per-band counts it left out.
 
-use std::io::{Read, Seek, SeekFrom, Write};
 use std::path::{Path, PathBuf};
-use std::sync::{Arc, Mutex};
+use std::sync::Arc;
 use std::time::Instant;
 
 use glam::Vec3;
 
+use crate::core::band_files::ImageFiles;
 use crate::core::error::{Error, Result};
-use crate::core::film::{write_atomically, Film, OutputSet};
+use crate::core::film::{Film, OutputSet};
 use crate::core::format::format_seconds;
 use crate::core::memory::{available, BASE_BYTES};
-use crate::core::outputs::Streamed;
 use crate::core::report::Report;
-use crate::core::stage::{Chapter, ChapterInfo, Settings};
+use crate::core::stage::{Chapter, ChapterInfo, Pass, Render, Settings, ViewScale};
 use crate::core::text::escape;
 use crate::scene::Scene;
 
@@ -50,9 +55,47 @@ pub fn rows_per_band(info: &ChapterInfo, scene: &Scene, room: Option<u64>) -> Op
     if row.saturating_mul(h) <= budget {
         return None;
     }
-    // At least one row: a run that cannot hold even that is refused by the
+    // A run that cannot hold even the thinnest band is refused by the
     // memory check.
-    Some((budget / row).clamp(1, h) as u32)
+    Some((budget / row).clamp(MIN_BAND_ROWS as u64, h) as u32)
+}
+
+/// The fewest rows a band has: thinner bands would spend more time
+/// starting renders (each builds its world) than rendering.
+pub const MIN_BAND_ROWS: u32 = 16;
+
+impl ChapterInfo {
+    /// Refuses a run of this chapter on `scene` that would need more memory
+    /// than this process may still get ([`crate::core::memory`]).
+    pub fn check_memory(&self, scene: &Scene) -> Result<()> {
+        self.check_memory_rows(scene, scene.camera.height)
+    }
+
+    /// [`Self::check_memory`] for a run that holds `rows` rows of the image
+    /// at a time (a band of a banded run, [`crate::core::bands`]).
+    pub fn check_memory_rows(&self, scene: &Scene, rows: u32) -> Result<()> {
+        let run = crate::core::memory::Run {
+            pixels: scene.camera.width as u64 * rows.min(scene.camera.height) as u64,
+            triangles: scene.triangle_count() as u64,
+            per_pixel: self.bytes_per_pixel,
+            per_triangle: self.bytes_per_triangle,
+        };
+        let band = if rows < scene.camera.height {
+            let s = if rows == 1 { "" } else { "s" };
+            format!(", {rows} row{s} at a time")
+        } else {
+            String::new()
+        };
+        let what = format!(
+            "chapter {} on {} ({}x{} pixels{band}, {} triangles)",
+            self.number,
+            crate::core::text::escape(&scene.name),
+            scene.camera.width,
+            scene.camera.height,
+            scene.triangle_count()
+        );
+        crate::core::memory::check(&what, &run)
+    }
 }
 
 /// [`rows_per_band`] with the memory this process may still get.
@@ -104,26 +147,39 @@ pub fn render_in_bands(
     let mut rays = 0;
     let start = Instant::now();
     let progress = Progress::new(stem);
+    let band_rows = |band: u32| band * rows_per_band..((band + 1) * rows_per_band).min(height);
+    let band_settings = |band: u32, scale: Option<ViewScale>| Settings {
+        rows: Some(band_rows(band)),
+        scale,
+        ..settings.clone()
+    };
+    // Views scaled over the whole image: a first sweep finds the range.
+    let mut scale = None;
+    if info.scaled_views {
+        for band in 0..bands {
+            let step = ("scale", band, bands);
+            let (render, _) =
+                render_band(chapter, &scene, &band_settings(band, None), &progress, step)?;
+            let own = render.scale();
+            scale = match (scale, own) {
+                (Some(a), Some(b)) => Some(ViewScale::merge(a, b)),
+                (a, b) => a.or(b),
+            };
+        }
+    }
     for band in 0..bands {
-        let rows = band * rows_per_band..((band + 1) * rows_per_band).min(height);
-        let mut render = chapter.start(
-            Arc::clone(&scene),
-            &Settings {
-                rows: Some(rows.clone()),
-                ..settings.clone()
-            },
+        let step = ("band", band, bands);
+        let (render, pass) = render_band(
+            chapter,
+            &scene,
+            &band_settings(band, scale),
+            &progress,
+            step,
         )?;
-        let pass = loop {
-            let pass = render.pass();
-            progress.show(start, (band, bands), (pass.done, pass.planned));
-            if pass.complete {
-                break pass;
-            }
-        };
         rays += pass.rays;
         let snapshot = render.snapshot();
         files.add(&snapshot.views)?;
-        small.add(&snapshot.views[0], rows.start);
+        small.add(&snapshot.views[0], band_rows(band).start);
         reports.push(render.report());
     }
     progress.end();
@@ -136,6 +192,25 @@ pub fn render_in_bands(
         report: run_report(&reports, (bands, rows_per_band), rays, seconds),
         preview: small.film(),
     })
+}
+
+/// Starts a render of `scene` with `settings` (a band's) and runs it to
+/// completion, showing `step` (what for, which band of how many).
+fn render_band(
+    chapter: &dyn Chapter,
+    scene: &Arc<Scene>,
+    settings: &Settings,
+    progress: &Progress,
+    step: (&str, u32, u32),
+) -> Result<(Box<dyn Render>, Pass)> {
+    let mut render = chapter.start(Arc::clone(scene), settings)?;
+    loop {
+        let pass = render.pass();
+        progress.show(step, (pass.done, pass.planned));
+        if pass.complete {
+            return Ok((render, pass));
+        }
+    }
 }
 
 /// The run's report from its bands' reports: the title, lists and facts
@@ -183,164 +258,6 @@ pub fn run_report(
     report.nonfinite_caught = reports.iter().map(|r| r.nonfinite_caught).sum();
     report.figures.clear();
     report
-}
-
-/// The files of a banded run, written as the bands come: a PNG per view
-/// (and the main image's EXR when it holds radiance), named as the whole
-/// run names them.
-struct ImageFiles {
-    pngs: Vec<(Streamed, png::StreamWriter<'static, std::fs::File>)>,
-    /// The EXR's path and the scratch file its linear rows wait in.
-    exr: Option<(PathBuf, Streamed)>,
-    size: (u32, u32),
-}
-
-impl ImageFiles {
-    fn create(info: &ChapterInfo, out: &Path, stem: &str, size: (u32, u32)) -> Result<Self> {
-        let mut pngs = Vec::new();
-        let mut exr = None;
-        for (i, view) in info.views.iter().enumerate() {
-            let name = if i == 0 {
-                stem.to_string()
-            } else {
-                format!("{stem}-{}", view.name)
-            };
-            let path = out.join(format!("{name}.png"));
-            let file = Streamed::create(&path)?;
-            let writer = png_rows(&file, size).map_err(|e| image_error(&path, e))?;
-            pngs.push((file, writer));
-            if i == 0 && info.radiance {
-                let path = out.join(format!("{name}.exr"));
-                let scratch = Streamed::create(&path.with_extension("exr.rows"))?;
-                exr = Some((path, scratch));
-            }
-        }
-        Ok(ImageFiles { pngs, exr, size })
-    }
-
-    /// Appends a band's views, rows in order.
-    fn add(&mut self, views: &[Film]) -> Result<()> {
-        for ((file, writer), film) in self.pngs.iter_mut().zip(views) {
-            writer
-                .write_all(&film.to_srgb8())
-                .map_err(|e| image_error(file.path(), e))?;
-        }
-        if let (Some((path, scratch)), Some(film)) = (&self.exr, views.first()) {
-            let bytes: Vec<u8> = film
-                .pixels
-                .iter()
-                .flat_map(|p| p.to_array())
-                .flat_map(f32::to_le_bytes)
-                .collect();
-            scratch
-                .file()
-                .write_all(&bytes)
-                .map_err(|e| image_error(path, e))?;
-        }
-        Ok(())
-    }
-
-    /// Ends every file and puts it in place (inside the run's output
-    /// set); the paths in the order the whole run lists them.
-    fn finish(self) -> Result<Vec<PathBuf>> {
-        let mut written = Vec::new();
-        for (i, (file, writer)) in self.pngs.into_iter().enumerate() {
-            let path = file.path().to_path_buf();
-            writer.finish().map_err(|e| image_error(&path, e))?;
-            file.finish()?;
-            written.push(path);
-            if let (0, Some((exr, scratch))) = (i, &self.exr) {
-                write_atomically(exr, |tmp| exr_from_rows(scratch.file(), self.size, tmp))?;
-                written.push(exr.clone());
-            }
-        }
-        Ok(written)
-    }
-}
-
-/// A PNG writer that takes 8-bit sRGB rows as they come, into `file`.
-fn png_rows(
-    file: &Streamed,
-    (w, h): (u32, u32),
-) -> std::result::Result<png::StreamWriter<'static, std::fs::File>, png::EncodingError> {
-    let handle = file.file().try_clone()?;
-    let mut encoder = png::Encoder::new(handle, w, h);
-    encoder.set_color(png::ColorType::Rgb);
-    encoder.set_depth(png::BitDepth::Eight);
-    encoder
-        .write_header()?
-        .into_stream_writer_with_size(1 << 20)
-}
-
-/// Writes the linear rows in `rows` (RGB f32, little-endian, row by row)
-/// as the EXR [`Film::write_exr`] writes, to `path`.
-fn exr_from_rows(
-    rows: &std::fs::File,
-    (w, h): (u32, u32),
-    path: &Path,
-) -> std::result::Result<(), String> {
-    use exr::prelude::*;
-    let w = w as usize;
-    // The writer asks for pixels row by row: one row is read at a time.
-    let reader = rows.try_clone().map_err(|e| e.to_string())?;
-    let cache = Mutex::new(RowCache {
-        file: reader,
-        row: usize::MAX,
-        values: vec![0.0; 3 * w],
-        failed: None,
-    });
-    let channels = SpecificChannels::rgb(|Vec2(x, y): Vec2<usize>| {
-        let mut c = cache.lock().unwrap_or_else(|p| p.into_inner());
-        c.load(y, w);
-        (c.values[3 * x], c.values[3 * x + 1], c.values[3 * x + 2])
-    });
-    let mut file = std::fs::File::create(path).map_err(|e| e.to_string())?;
-    Image::from_channels((w, h as usize), channels)
-        .write()
-        .non_parallel()
-        .to_buffered(std::io::BufWriter::new(&mut file))
-        .map_err(|e| e.to_string())?;
-    if let Some(e) = cache.into_inner().ok().and_then(|c| c.failed) {
-        return Err(format!("reading its rows back: {e}"));
-    }
-    file.sync_all().map_err(|e| format!("writing: {e}"))
-}
-
-/// One row of the EXR's scratch file, read when asked for.
-struct RowCache {
-    file: std::fs::File,
-    row: usize,
-    values: Vec<f32>,
-    failed: Option<std::io::Error>,
-}
-
-impl RowCache {
-    fn load(&mut self, y: usize, w: usize) {
-        if self.row == y || self.failed.is_some() {
-            return;
-        }
-        let mut bytes = vec![0u8; 12 * w];
-        let read = self
-            .file
-            .seek(SeekFrom::Start((12 * w * y) as u64))
-            .and_then(|_| self.file.read_exact(&mut bytes));
-        match read {
-            Ok(()) => {
-                for (v, b) in self.values.iter_mut().zip(bytes.chunks_exact(4)) {
-                    *v = f32::from_le_bytes([b[0], b[1], b[2], b[3]]);
-                }
-                self.row = y;
-            }
-            Err(e) => self.failed = Some(e),
-        }
-    }
-}
-
-fn image_error(path: &Path, e: impl std::fmt::Display) -> Error {
-    Error::Image {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    }
 }
 
 /// The main image at most 1024 pixels wide, box-filtered from the bands
@@ -395,6 +312,7 @@ impl Reduced {
 /// (and only on a terminal).
 struct Progress<'a> {
     stem: &'a str,
+    start: Instant,
     shown: std::cell::Cell<bool>,
     terminal: bool,
 }
@@ -404,15 +322,18 @@ impl<'a> Progress<'a> {
         use std::io::IsTerminal;
         Progress {
             stem,
+            start: Instant::now(),
             shown: std::cell::Cell::new(false),
             terminal: std::io::stderr().is_terminal(),
         }
     }
 
-    fn show(&self, start: Instant, (band, bands): (u32, u32), (done, planned): (u32, u32)) {
-        if self.terminal && start.elapsed().as_secs_f64() > 1.0 {
+    /// Shows `what` ("band", or "scale" in the sweep that finds the
+    /// range) `band` of `bands`, pass `done` of `planned`.
+    fn show(&self, (what, band, bands): (&str, u32, u32), (done, planned): (u32, u32)) {
+        if self.terminal && self.start.elapsed().as_secs_f64() > 1.0 {
             eprint!(
-                "\r{}: band {}/{bands}, pass {done}/{planned}  ",
+                "\r{}: {what} {}/{bands}, pass {done}/{planned}  ",
                 escape(self.stem),
                 band + 1
             );

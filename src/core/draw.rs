@@ -36,15 +36,67 @@ pub fn clip_segment_2d(a: DVec2, b: DVec2, lo: DVec2, hi: DVec2) -> Option<(f64,
     (t0 <= t1).then_some((t0, t1))
 }
 
+/// Where lines and dots are drawn: a whole film, or a [`Band`] of rows of
+/// a larger image. Coordinates are the image's either way.
+pub trait Canvas {
+    /// The image's width and height.
+    fn size(&self) -> (u32, u32);
+    /// Pixel (x, y) of the image, `None` where the canvas does not hold it.
+    fn pixel(&mut self, x: u32, y: u32) -> Option<&mut Vec3>;
+}
+
+impl Canvas for Film {
+    fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+    fn pixel(&mut self, x: u32, y: u32) -> Option<&mut Vec3> {
+        Some(self.get_mut(x, y))
+    }
+}
+
+/// Rows `first_row .. first_row + film.height` of an image `height` rows
+/// tall: lines and dots are placed as on the whole image, and only this
+/// band's rows are written.
+pub struct Band {
+    /// The band's rows.
+    pub film: Film,
+    /// The image row of its first row.
+    pub first_row: u32,
+    /// The image's height.
+    pub height: u32,
+}
+
+impl Band {
+    /// A black band: rows `rows` of a `width` x `height` image.
+    pub fn new(width: u32, rows: std::ops::Range<u32>, height: u32) -> Band {
+        Band {
+            film: Film::new(width, rows.len() as u32),
+            first_row: rows.start,
+            height,
+        }
+    }
+}
+
+impl Canvas for Band {
+    fn size(&self) -> (u32, u32) {
+        (self.film.width, self.height)
+    }
+    fn pixel(&mut self, x: u32, y: u32) -> Option<&mut Vec3> {
+        let row = y.checked_sub(self.first_row)?;
+        (row < self.film.height).then(|| self.film.get_mut(x, row))
+    }
+}
+
 /// Draws a line from `a` to `b` (raster coordinates), its colour blending
 /// linearly from `ca` to `cb`. Returns how many samples landed on the film.
-pub fn line(film: &mut Film, a: Vec2, b: Vec2, ca: Vec3, cb: Vec3) -> usize {
+pub fn line(film: &mut impl Canvas, a: Vec2, b: Vec2, ca: Vec3, cb: Vec3) -> usize {
     if !(a.is_finite() && b.is_finite()) {
         return 0;
     }
     let (a, b) = (a.as_dvec2(), b.as_dvec2());
     let margin = DVec2::splat(2.0);
-    let hi = DVec2::new(film.width as f64, film.height as f64) + margin;
+    let (width, height) = film.size();
+    let hi = DVec2::new(width as f64, height as f64) + margin;
     let Some((t0, t1)) = clip_segment_2d(a, b, -margin, hi) else {
         return 0;
     };
@@ -60,22 +112,24 @@ pub fn line(film: &mut Film, a: Vec2, b: Vec2, ca: Vec3, cb: Vec3) -> usize {
 }
 
 /// A filled dot of the given radius in pixels.
-pub fn dot(film: &mut Film, centre: Vec2, radius: f32, color: Vec3) -> usize {
+pub fn dot(film: &mut impl Canvas, centre: Vec2, radius: f32, color: Vec3) -> usize {
     if !centre.is_finite() {
         return 0;
     }
     let r = radius.max(0.5);
     let (x0, x1) = ((centre.x - r - 1.0).floor(), (centre.x + r + 1.0).ceil());
     let (y0, y1) = ((centre.y - r - 1.0).floor(), (centre.y + r + 1.0).ceil());
+    let (width, height) = film.size();
     let mut lit = 0;
-    for y in y0.max(0.0) as i64..y1.min(film.height as f32) as i64 {
-        for x in x0.max(0.0) as i64..x1.min(film.width as f32) as i64 {
+    for y in y0.max(0.0) as i64..y1.min(height as f32) as i64 {
+        for x in x0.max(0.0) as i64..x1.min(width as f32) as i64 {
             let c = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
             let cover = (r + 0.5 - c.distance(centre)).clamp(0.0, 1.0);
             if cover > 0.0 {
-                let p = film.get_mut(x as u32, y as u32);
-                *p = p.max(color * cover);
-                lit += 1;
+                if let Some(p) = film.pixel(x as u32, y as u32) {
+                    *p = p.max(color * cover);
+                    lit += 1;
+                }
             }
         }
     }
@@ -83,19 +137,21 @@ pub fn dot(film: &mut Film, centre: Vec2, radius: f32, color: Vec3) -> usize {
 }
 
 /// Lights the four pixel centres around `p` with tent weights.
-fn splat(film: &mut Film, p: Vec2, color: Vec3, strength: f32) -> usize {
+fn splat(film: &mut impl Canvas, p: Vec2, color: Vec3, strength: f32) -> usize {
     let q = p - Vec2::splat(0.5);
     let (fx, fy) = (q.x.floor(), q.y.floor());
+    let (width, height) = film.size();
     let mut lit = 0;
     for (dx, dy) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)] {
         let (x, y) = (fx + dx, fy + dy);
-        if x < 0.0 || y < 0.0 || x >= film.width as f32 || y >= film.height as f32 {
+        if x < 0.0 || y < 0.0 || x >= width as f32 || y >= height as f32 {
             continue;
         }
         let w = (1.0 - (q.x - x).abs()) * (1.0 - (q.y - y).abs()) * strength;
-        let px = film.get_mut(x as u32, y as u32);
-        *px = px.max(color * w.min(1.0));
-        lit += 1;
+        if let Some(px) = film.pixel(x as u32, y as u32) {
+            *px = px.max(color * w.min(1.0));
+            lit += 1;
+        }
     }
     lit
 }

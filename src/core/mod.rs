@@ -3,6 +3,7 @@
 //! plots, reports, random numbers, the stage boundary between a chapter and
 //! its front ends, and the headless runner.
 
+pub mod band_files;
 pub mod bands;
 pub mod difference;
 pub mod draw;
@@ -14,6 +15,7 @@ pub mod memory;
 pub mod outputs;
 pub mod plot;
 pub mod preview;
+pub mod refuse;
 pub mod report;
 pub mod run;
 pub mod sampling;

@@ -98,6 +98,7 @@ impl CommonArgs {
             studies: self.report,
             variant: None,
             rows: None,
+            scale: None,
         }
     }
 

@@ -34,8 +34,10 @@ use crate::core::film::Film;
 use crate::core::report::Report;
 use crate::scene::Scene;
 
+pub use crate::core::refuse::{require_light, require_meshes};
+
 /// Settings every chapter understands. `None` means "what the scene says".
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Settings {
     /// Override of the scene's image width.
     pub width: Option<u32>,
@@ -55,6 +57,30 @@ pub struct Settings {
     /// band's rows, row `y` of the image at row `y - rows.start`, and
     /// every pixel is the same as in the whole render. `None`: all rows.
     pub rows: Option<std::ops::Range<u32>>,
+    /// The range of the views scaled over the whole image (chapters 2
+    /// and 4 scale their depth views over the depths they see), when a
+    /// band is rendered: the range of the whole image, found by rendering
+    /// it once before ([`Render::scale`]). `None`: what this render sees.
+    pub scale: Option<ViewScale>,
+}
+
+/// The least and the greatest value a view is scaled over.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ViewScale {
+    /// The least value.
+    pub lo: f32,
+    /// The greatest value.
+    pub hi: f32,
+}
+
+impl ViewScale {
+    /// The range of both: bands' ranges merged give the whole image's.
+    pub fn merge(self, other: ViewScale) -> ViewScale {
+        ViewScale {
+            lo: self.lo.min(other.lo),
+            hi: self.hi.max(other.hi),
+        }
+    }
 }
 
 impl Settings {
@@ -78,6 +104,7 @@ impl Default for Settings {
             studies: false,
             variant: None,
             rows: None,
+            scale: None,
         }
     }
 }
@@ -141,51 +168,6 @@ pub fn views_of(films: &[Film], count: usize, (width, height): (u32, u32)) -> Ve
         .collect()
 }
 
-/// Refuses a scene with no triangle meshes, for a stage that draws only
-/// meshes: "chapter 1 draws triangle meshes; sdf-shapes has none (it has
-/// 3 SDF objects)". Such a stage would otherwise show a black picture
-/// without a word.
-pub fn require_meshes(chapter: u32, scene: &Scene) -> Result<()> {
-    if !scene.meshes.is_empty() {
-        return Ok(());
-    }
-    let has = match scene.sdfs.len() {
-        0 => "it is empty".to_string(),
-        1 => "it has 1 SDF object: chapter 4 draws it".to_string(),
-        n => format!("it has {n} SDF objects: chapter 4 draws them"),
-    };
-    Err(crate::core::error::Error::Usage(format!(
-        "chapter {chapter} draws triangle meshes; {} has none ({has})",
-        scene.name
-    )))
-}
-
-/// Refuses a scene that holds nothing, or no light, for a stage that
-/// shades with the scene's lights (chapters 5 and 6 draw meshes and SDFs
-/// alike, but without a light or an emitting material every pixel is
-/// black): "chapter 5 needs light; sdf-shapes has no lights and no
-/// emitting material".
-pub fn require_light(chapter: u32, scene: &Scene) -> Result<()> {
-    if scene.meshes.is_empty() && scene.sdfs.is_empty() {
-        return Err(crate::core::error::Error::Usage(format!(
-            "chapter {chapter} needs something to render; {} has no meshes and no SDFs",
-            scene.name
-        )));
-    }
-    let emits = scene
-        .materials
-        .iter()
-        .any(|m| m.emission.max_element() > 0.0);
-    if scene.lights.is_empty() && !emits {
-        return Err(crate::core::error::Error::Usage(format!(
-            "chapter {chapter} needs light; {} has no lights and no emitting material \
-             (add a [[lights]] entry, or an emission to a material)",
-            scene.name
-        )));
-    }
-    Ok(())
-}
-
 /// The [`Pass`] of a stage that renders in a fixed number of passes and
 /// samples nothing progressively.
 pub fn fixed_pass(done: u32, planned: u32, rays: u64) -> Pass {
@@ -241,9 +223,15 @@ pub struct ChapterInfo {
     /// at 82k and 328k triangles, rounded up).
     pub bytes_per_triangle: u64,
     /// Whether the stage renders a band of rows alone ([`Settings::rows`])
-    /// with every pixel as in the whole image, so that a run too large to
-    /// hold whole can be rendered band by band ([`crate::core::bands`]).
+    /// with every pixel as in the whole image (given the whole image's
+    /// [`Settings::scale`] if it has [`Self::scaled_views`]), so that a
+    /// run too large to hold whole can be rendered band by band
+    /// ([`crate::core::bands`]).
     pub bands: bool,
+    /// Whether some view is scaled over the whole image ([`Settings::scale`]):
+    /// a banded run then renders every band twice, first to find the
+    /// range.
+    pub scaled_views: bool,
 }
 
 impl ChapterInfo {
@@ -270,6 +258,7 @@ impl ChapterInfo {
             bytes_per_pixel: 256,
             bytes_per_triangle: 512,
             bands: false,
+            scaled_views: false,
         }
     }
 
@@ -291,35 +280,13 @@ impl ChapterInfo {
         }
     }
 
-    /// Refuses a run of this chapter on `scene` that would need more memory
-    /// than this process may still get ([`crate::core::memory`]).
-    pub fn check_memory(&self, scene: &Scene) -> Result<()> {
-        self.check_memory_rows(scene, scene.camera.height)
-    }
-
-    /// [`Self::check_memory`] for a run that holds `rows` rows of the image
-    /// at a time (a band of a banded run, [`crate::core::bands`]).
-    pub fn check_memory_rows(&self, scene: &Scene, rows: u32) -> Result<()> {
-        let run = crate::core::memory::Run {
-            pixels: scene.camera.width as u64 * rows.min(scene.camera.height) as u64,
-            triangles: scene.triangle_count() as u64,
-            per_pixel: self.bytes_per_pixel,
-            per_triangle: self.bytes_per_triangle,
-        };
-        let band = if rows < scene.camera.height {
-            format!(", {rows} rows at a time")
-        } else {
-            String::new()
-        };
-        let what = format!(
-            "chapter {} on {} ({}x{} pixels{band}, {} triangles)",
-            self.number,
-            crate::core::text::escape(&scene.name),
-            scene.camera.width,
-            scene.camera.height,
-            scene.triangle_count()
-        );
-        crate::core::memory::check(&what, &run)
+    /// Some view of this chapter is scaled over the whole image
+    /// ([`ChapterInfo::scaled_views`]).
+    pub const fn with_scaled_views(self) -> ChapterInfo {
+        ChapterInfo {
+            scaled_views: true,
+            ..self
+        }
     }
 
     /// The variant `settings` asks for, checked against [`Self::variants`]
@@ -446,5 +413,11 @@ pub trait Render: Send {
     /// Ignored by default.
     fn set_spp(&mut self, spp: u32) {
         let _ = spp;
+    }
+    /// The range of this render's own pixels for the views scaled over
+    /// the whole image ([`ChapterInfo::scaled_views`]), once it has them;
+    /// `None` (the default) for stages without such views.
+    fn scale(&self) -> Option<ViewScale> {
+        None
     }
 }

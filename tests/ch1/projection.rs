@@ -107,7 +107,7 @@ fn a_camera_inside_the_mesh_clips_edges_instead_of_smearing_them() {
         "inside",
     )
     .unwrap();
-    let (films, stats) = draw_scene(&Camera::of(&s), &s.meshes, &s.materials);
+    let (films, stats) = draw_scene(&Camera::of(&s), &s.meshes, &s.materials, 0..s.camera.height);
     assert!(stats.edges_clipped > 0, "{stats:?}");
     assert_eq!(
         stats.edges_clipped + stats.edges_whole + stats.edges_culled,

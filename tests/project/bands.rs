@@ -8,7 +8,7 @@
 use std::path::Path;
 use std::process::Command;
 
-use raystep::core::bands::{rows_per_band, BAND_BYTES};
+use raystep::core::bands::{rows_per_band, BAND_BYTES, MIN_BAND_ROWS};
 use raystep::core::film::Film;
 use raystep::core::run::{run_banded, run_headless};
 use raystep::core::stage::{Chapter, Settings};
@@ -48,7 +48,7 @@ fn assert_same_outputs(whole: &Path, banded: &Path, what: &str) {
     }
 }
 
-/// Every chapter that renders bands, at a size whose rows do not divide
+/// Every chapter, at a size whose rows do not divide
 /// into the bands evenly (41 rows in bands of 6): the banded run's files
 /// are the whole run's.
 #[test]
@@ -88,12 +88,11 @@ fn a_banded_run_writes_what_the_whole_run_writes() {
         assert_same_outputs(&whole, &banded, &format!("chapter {}", info.number));
         checked.push(info.number);
     }
-    assert_eq!(checked, [3, 5, 6, 6]);
+    assert_eq!(checked, [1, 2, 3, 4, 5, 6, 6]);
 }
 
 /// Whether a run is banded, and how: only above a gigabyte of pixels (or
-/// what the process may still get), only for chapters that can, and
-/// never with a band of no rows.
+/// what the process may still get), and never with a band of no rows.
 #[test]
 fn runs_are_banded_only_where_their_pixels_do_not_fit() {
     let chapters = raystep::chapters::all();
@@ -113,19 +112,17 @@ fn runs_are_banded_only_where_their_pixels_do_not_fit() {
     // ... a small image that does not fit is banded too ...
     size(&mut scene, 2048, 2048);
     assert!(rows_per_band(&ch3, &scene, Some(room)).is_some());
-    // ... and with no room at all a band is one row (the memory check
-    // refuses it).
-    assert_eq!(rows_per_band(&ch3, &scene, Some(0)), Some(1));
-    // Chapters whose views depend on the whole image stay whole.
+    // ... and with no room at all a band has the fewest rows (the memory
+    // check refuses it).
+    assert_eq!(rows_per_band(&ch3, &scene, Some(0)), Some(MIN_BAND_ROWS));
+    // Every chapter renders bands (those with views scaled over the whole
+    // image render each band twice).
     size(&mut scene, 16384, 16384);
     for chapter in &chapters {
         let info = chapter.info();
-        assert_eq!(
-            rows_per_band(&info, &scene, None).is_some(),
-            info.bands,
-            "chapter {}",
-            info.number
-        );
+        assert!(info.bands, "chapter {}", info.number);
+        assert!(rows_per_band(&info, &scene, None).is_some());
+        assert_eq!(info.scaled_views, [2, 4].contains(&info.number));
     }
 }
 
@@ -165,28 +162,32 @@ fn a_run_refused_under_a_limit_completes_in_bands() {
     assert_same_outputs(&dir.join("whole"), &dir.join("banded"), "chapter 3");
 }
 
-/// The book's table of limits names the chapters that render in bands
-/// and the size above which they do.
+/// The book's table of limits says above what size the chapters render in
+/// bands, and which render each band twice.
 #[test]
-fn the_book_says_which_chapters_render_in_bands_and_when() {
+fn the_book_says_when_runs_render_in_bands() {
     let page = std::fs::read_to_string(
         Path::new(env!("CARGO_MANIFEST_DIR")).join("book/src/scene-files.md"),
     )
     .unwrap();
-    let banded: Vec<String> = raystep::chapters::all()
+    let all = raystep::chapters::all();
+    assert!(all.iter().all(|c| c.info().bands));
+    let scaled: Vec<String> = all
         .iter()
         .map(|c| c.info())
-        .filter(|i| i.bands)
+        .filter(|i| i.scaled_views)
         .map(|i| i.number.to_string())
         .collect();
-    let (last, rest) = banded.split_last().unwrap();
-    let phrase = format!(
-        "chapters {} and {last} render an image whose pixels need more than {} GiB at once",
-        rest.join(", "),
-        BAND_BYTES >> 30
-    );
-    assert!(
-        page.contains(&phrase),
-        "the limits table should say: {phrase}"
-    );
+    for phrase in [
+        format!(
+            "every chapter renders an image whose pixels need more than {} GiB at once",
+            BAND_BYTES >> 30
+        ),
+        format!("chapters {} render each band twice", scaled.join(" and ")),
+    ] {
+        assert!(
+            page.contains(&phrase),
+            "the limits table should say: {phrase}"
+        );
+    }
 }

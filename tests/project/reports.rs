@@ -27,6 +27,7 @@ fn reports(scene: &str) -> Vec<(u32, String, Vec<PathBuf>)> {
         studies: true,
         variant: None,
         rows: None,
+        scale: None,
     };
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{scene}.toml"));
     let mut out = Vec::new();

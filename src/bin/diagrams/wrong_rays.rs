@@ -12,7 +12,7 @@ use raystep::ch4_implicit_surfaces::hit::{Surface, SurfaceHit};
 use raystep::ch4_implicit_surfaces::march::sphere_trace;
 use raystep::ch4_implicit_surfaces::normal::{normal, NormalScheme};
 use raystep::ch4_implicit_surfaces::primitives::{sd_plane, sd_sphere};
-use raystep::ch4_implicit_surfaces::render::{pixel_ray, views, Pixel};
+use raystep::ch4_implicit_surfaces::render::{hit_range, pixel_ray, views, Pixel};
 use raystep::ch4_implicit_surfaces::stage::DEFAULT as CH4;
 use raystep::core::error::Result;
 use raystep::core::film::Film;
@@ -218,14 +218,8 @@ fn ch4_squared_distance() -> Result<Pair> {
                 Pixel { trace, hit, ray }
             })
             .collect();
-        views(
-            &pixels,
-            camera.width,
-            camera.height,
-            &shapes.materials,
-            &march,
-        )
-        .swap_remove(0)
+        let size = (camera.width, camera.height);
+        views(&pixels, size, &shapes.materials, &march, hit_range(&pixels)).swap_remove(0)
     };
     Ok(Pair {
         stem: "ch4-squared-distance",

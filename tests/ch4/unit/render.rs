@@ -11,7 +11,15 @@ fn a_pixels_march_steps_are_the_renders_march() {
     let camera = Camera::of(&scene);
     let m = March::default();
     let n = NormalScheme::Tetrahedron;
-    let pixels = trace_image(&camera, &scene.sdfs, &m, Method::Plain, n, None);
+    let pixels = trace_image(
+        &camera,
+        0..camera.height,
+        &scene.sdfs,
+        &m,
+        Method::Plain,
+        n,
+        None,
+    );
     let mut hits = 0;
     for y in 0..12 {
         for x in 0..16 {

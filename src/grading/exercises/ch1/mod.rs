@@ -301,8 +301,8 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
     candidate.camera_from_world = f(desc.eye.as_vec3(), desc.target.as_vec3(), desc.up.as_vec3());
     let mesh = [crate::scene::mesh::Mesh::tetrahedron()];
     let materials = [Material::default_grey()];
-    let (ref_films, _) = draw_scene(&reference, &mesh, &materials);
-    let (cand_films, _) = draw_scene(&candidate, &mesh, &materials);
+    let (ref_films, _) = draw_scene(&reference, &mesh, &materials, 0..reference.height);
+    let (cand_films, _) = draw_scene(&candidate, &mesh, &materials, 0..candidate.height);
     let check = Check {
         error: worst.0,
         tolerance: 1e-4,
