@@ -54,9 +54,10 @@ pub struct CommonArgs {
     #[arg(long, default_value_t = 64, allow_negative_numbers = true,
           value_parser = clap::value_parser!(u32).range(1..=4096))]
     pub preview_width: u32,
-    /// Largest scene or OBJ file read, in MiB.
+    /// Largest scene or OBJ file read, in MiB (1 to 1024: a file is read
+    /// whole, in one piece).
     #[arg(long, value_name = "MIB", default_value_t = DEFAULT_MAX_FILE_BYTES >> 20,
-          allow_negative_numbers = true, value_parser = clap::value_parser!(u64).range(1..=1 << 20))]
+          allow_negative_numbers = true, value_parser = clap::value_parser!(u64).range(1..=1 << 10))]
     pub max_file_mib: u64,
     /// Most triangles a scene may hold.
     #[arg(long, default_value_t = DEFAULT_MAX_TRIANGLES, allow_negative_numbers = true)]

@@ -279,6 +279,12 @@ fn flags_are_bounded_and_errors_name_the_flag() {
     assert!(e(&["--threads", "-1"]).contains("--threads"));
     let ok = Cli::try_parse_from(["ch1", "--max-file-mib", "1024", "--width", "16"]).unwrap();
     assert_eq!(ok.common.limits().max_file_bytes, 1024 << 20);
+    // A file is read whole: not more than a gibibyte in one piece.
+    let m = e(&["--max-file-mib", "1025"]);
+    assert!(
+        m.contains("--max-file-mib") && m.contains("1..=1024"),
+        "{m}"
+    );
 
     let m = init_threads(Some(5000)).unwrap_err().to_string();
     assert!(
