@@ -191,3 +191,36 @@ fn the_book_says_when_runs_render_in_bands() {
         );
     }
 }
+
+/// A banded run stopped by a signal while its files are half written
+/// leaves nothing behind: the streamed temporaries are removed like any
+/// other, and the exit status is the signal's.
+#[test]
+fn an_interrupted_banded_run_leaves_no_file() {
+    let dir = common::temp_dir("bands-signal");
+    let out = dir.join("out");
+    let mut child = Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {} && exec \"$0\" \"$@\"", 640 << 10))
+        .arg(env!("CARGO_BIN_EXE_ch3"))
+        .args(["--width", "2048", "--height", "1024", "--spp", "16", "--out"])
+        .arg(&out)
+        .stdout(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    // The streamed files exist as temporaries from the first band on.
+    let started = std::time::Instant::now();
+    let streaming = || std::fs::read_dir(&out).is_ok_and(|d| d.count() > 0);
+    while !streaming() && started.elapsed().as_secs() < 60 {
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    assert!(streaming(), "no file appeared in {out:?}");
+    let kill = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(kill.success());
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(130), "{status:?}");
+    assert_eq!(std::fs::read_dir(&out).unwrap().count(), 0, "{out:?}");
+}
