@@ -71,6 +71,16 @@ fn parse_timeout(text: &str) -> Result<f64, String> {
 pub fn grade_main() -> ExitCode {
     let cli: GradeCli = crate::core::run::parse_args();
     let catalog = all();
+    // The hints file is a teacher's to edit: a mistake in it is named
+    // before anything is graded.
+    let problems = match super::manifest::manifest() {
+        Ok(m) => super::manifest::problems(m, &catalog),
+        Err(e) => vec![e.to_string()],
+    };
+    if !problems.is_empty() {
+        eprintln!("error: {}", problems.join("\nerror: "));
+        return ExitCode::from(2);
+    }
     if let Some(id) = &cli.hint {
         let Some(ex) = catalog.iter().find(|e| &e.id() == id) else {
             eprintln!("error: no exercise `{id}`; expected e.g. `ch3/moller_trumbore`");

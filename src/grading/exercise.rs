@@ -19,16 +19,15 @@ pub struct Check {
     pub symptom: Option<Symptom>,
 }
 
-/// A failure a check recognises, and the hint it calls for: a mirrored
-/// image points at the projection's sign, a picture dark by a constant
-/// factor at a missing 1/pdf.
+/// A failure a check recognises: a mirrored image, which points at the
+/// projection's sign; a picture dark by a constant factor, at a missing
+/// 1/pdf. The hint it calls for is data, in `chapters/hints.toml`
+/// ([`Exercise::symptom_hint`], [`super::manifest`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Symptom {
-    /// What the check saw, in a few words ("mirrored", "no pruning").
+    /// What the check saw, in a few words ("mirrored", "no pruning"): its
+    /// key in the hints file.
     pub name: &'static str,
-    /// The hint for it; cites a lecture slide (`slide "…"`) or a book
-    /// section (`book "…"`) by its exact title.
-    pub hint: &'static str,
 }
 
 impl Check {
@@ -83,11 +82,10 @@ pub struct Exercise {
     pub name: &'static str,
     /// The file a student edits, relative to the repository root.
     pub file: &'static str,
-    /// Hints in tiers: a nudge (which slide, which idea) shown with a
-    /// failure, the idea worked out (`cargo grade --hint`), the formula last.
-    pub hints: [&'static str; 3],
     /// The failures its check recognises, each with its own hint (shown
-    /// instead of the first tier when the check names it).
+    /// instead of the first tier when the check names it). Its hints, in
+    /// tiers and per symptom, are in `chapters/hints.toml`
+    /// ([`Exercise::hints`], [`Exercise::symptom_hint`]).
     pub symptoms: &'static [Symptom],
     /// Runs the check on raystep's reference code (the student's code is
     /// checked by the same function, from the exercises crate).

@@ -26,17 +26,14 @@ pub fn seen(out: &Path) -> BTreeMap<String, usize> {
 /// Shows the next tier of `ex`'s hints and remembers it: the text to print.
 pub fn next_hint(ex: &Exercise, out: &Path) -> std::io::Result<String> {
     let mut seen = seen(out);
-    let last = ex.hints.len();
+    let hints = ex.hints();
+    let last = hints.len();
     let tier = (seen.get(&ex.id()).copied().unwrap_or(1) + 1).min(last);
     seen.insert(ex.id(), tier);
     let text: String = seen.iter().map(|(id, n)| format!("{id} {n}\n")).collect();
     crate::grading::safe_out::write(&out.join(FILE), text.as_bytes())
         .map_err(std::io::Error::other)?;
-    let mut s = format!(
-        "{} hint {tier} of {last}: {}\n",
-        ex.id(),
-        ex.hints[tier - 1]
-    );
+    let mut s = format!("{} hint {tier} of {last}: {}\n", ex.id(), hints[tier - 1]);
     if tier == last {
         s += "that was the last hint: the formula itself. Try writing it without looking again.\n";
     } else {

@@ -7,10 +7,11 @@
 //! through `blocks`, the building blocks the stubs name; `child` is the
 //! process that runs them). A file that breaks the rules
 //! ([`source_rules`]) or does not compile is replaced by its stub and
-//! reported, while the others are graded. A chapter's manifest
-//! ([`exercises`]) lists, for each file, hints in three tiers and a check
-//! that measures a candidate against raystep's own reference with a
-//! tolerance.
+//! reported, while the others are graded. A chapter's list
+//! ([`exercises`]) gives, for each file, a check that measures a candidate
+//! against raystep's own reference with a tolerance and the symptoms it
+//! recognises; the hints (three tiers per exercise, one per symptom) are
+//! data a teacher edits, `chapters/hints.toml` ([`manifest`]).
 //!
 //! `cargo grade` ([`driver`]) runs each check in the student's process,
 //! which records every call of the student's code ([`bridge`]); the verdict
@@ -29,6 +30,7 @@ pub mod exercise;
 pub mod exercises;
 pub mod hints;
 pub mod live;
+pub mod manifest;
 pub mod process;
 pub mod runner;
 pub mod safe_out;

@@ -146,9 +146,9 @@ pub fn describe(ex: &Exercise, outcome: &Outcome, width: usize, images: &[PathBu
             ..
         }) => {
             s += &format!("{pad}symptom: {}\n", symptom.name);
-            s += &format!("{pad}hint: {}\n", symptom.hint);
+            s += &format!("{pad}hint: {}\n", ex.symptom_hint(symptom));
         }
-        _ => s += &format!("{pad}hint: {}\n", ex.hints[0]),
+        _ => s += &format!("{pad}hint: {}\n", ex.hints()[0]),
     }
     s += &format!("{pad}more: cargo grade --hint {}\n", ex.id());
     s

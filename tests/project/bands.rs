@@ -203,7 +203,9 @@ fn an_interrupted_banded_run_leaves_no_file() {
         .arg("-c")
         .arg(format!("ulimit -v {} && exec \"$0\" \"$@\"", 640 << 10))
         .arg(env!("CARGO_BIN_EXE_ch3"))
-        .args(["--width", "2048", "--height", "1024", "--spp", "16", "--out"])
+        .args([
+            "--width", "2048", "--height", "1024", "--spp", "16", "--out",
+        ])
         .arg(&out)
         .stdout(std::process::Stdio::null())
         .spawn()

@@ -1,3 +1,6 @@
+//! The hints are data (`chapters/hints.toml`): every exercise and symptom
+//! has its text there, and nothing there is left over.
+//!
 //! Hints cite what a student can open: a lecture slide by its real title
 //! (`slide "…"`) or a section of the book by its heading (`book "…"`). The
 //! slide titles cited are listed in `lecture-slides.txt` beside this file,
@@ -30,11 +33,12 @@ fn cited<'a>(text: &'a str, kind: &str) -> Vec<&'a str> {
 fn hints() -> Vec<(String, &'static str, bool)> {
     let mut all = Vec::new();
     for ex in grading::all() {
-        for (tier, h) in ex.hints.iter().enumerate() {
+        for (tier, h) in ex.hints().iter().enumerate() {
             all.push((format!("{} tier {}", ex.id(), tier + 1), *h, tier == 0));
         }
         for s in ex.symptoms {
-            all.push((format!("{} symptom {}", ex.id(), s.name), s.hint, true));
+            let hint = ex.symptom_hint(s);
+            all.push((format!("{} symptom {}", ex.id(), s.name), hint, true));
         }
     }
     all
@@ -133,4 +137,38 @@ fn every_symptom_is_named_once_per_exercise() {
         let names: BTreeSet<&str> = ex.symptoms.iter().map(|s| s.name).collect();
         assert_eq!(names.len(), ex.symptoms.len(), "{}", ex.id());
     }
+}
+
+#[test]
+fn the_hints_file_has_every_hint_and_nothing_else() {
+    let manifest = grading::manifest::manifest().unwrap();
+    let problems = grading::manifest::problems(manifest, &grading::all());
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+    // And the check finds what is wrong with a file that is.
+    let broken =
+        grading::manifest::TEXT.replacen("\"mirrored image\" =", "\"mirrored images\" =", 1)
+            + "\n[exercises.\"ch1/nothing\"]\nhints = [\"a\", \"b\"]\n";
+    let found =
+        grading::manifest::problems(&grading::manifest::parse(&broken).unwrap(), &grading::all());
+    for expected in [
+        "ch1/project_point has no hint for symptom \"mirrored image\"",
+        "ch1/project_point names symptom \"mirrored images\", which its check does not",
+        "exercise \"ch1/nothing\" does not exist",
+    ] {
+        assert!(
+            found.iter().any(|p| p.contains(expected)),
+            "{expected}: {found:?}"
+        );
+    }
+}
+
+#[test]
+fn a_broken_hints_file_is_named_with_its_line() {
+    let e = grading::manifest::parse("[exercises.\"ch1/x\"]\nhints = [\"a\", \n").unwrap_err();
+    assert!(e.starts_with("chapters/hints.toml: line 2:"), "{e}");
+    let e = grading::manifest::parse("[exercises.\"ch1/x\"]\nhint = [\"a\"]\n").unwrap_err();
+    assert!(
+        e.contains("chapters/hints.toml") && e.contains("hint"),
+        "{e}"
+    );
 }

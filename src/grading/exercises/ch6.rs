@@ -16,31 +16,26 @@ type WeightFn = fn(f64, f64) -> f64;
 /// The integral of [`check_mc_integral`] is off by the factor (b − a).
 pub const NO_INTERVAL: Symptom = Symptom {
     name: "off by the length of the interval",
-    hint: "slide \"Monte-Carlo rendering Integration\": the slide's average estimates ∫₀¹; on [a, b] a uniform x has density 1/(b − a), and the estimator averages f(x)/p(x).",
 };
 
 /// Roulette that keeps the mean of [`check_russian_roulette`] wrong.
 pub const ROULETTE_BIASED: Symptom = Symptom {
     name: "roulette changes the mean",
-    hint: "book \"Russian roulette\": a path survives with probability q, so its expected contribution is q times what a survivor carries; a survivor must carry value / q.",
 };
 
 /// Roulette that ends the wrong fraction of paths.
 pub const ROULETTE_WRONG_FRACTION: Symptom = Symptom {
     name: "the wrong fraction of paths ends",
-    hint: "book \"Russian roulette\": q is the probability of surviving: with u uniform in [0, 1), u < q happens with probability q.",
 };
 
 /// The balance heuristic instead of the power heuristic.
 pub const BALANCE_HEURISTIC: Symptom = Symptom {
     name: "the balance heuristic, not the power heuristic",
-    hint: "book \"Direct and indirect light, and two ways of sampling\": the power heuristic squares both densities, w_f = p_f² / (p_f² + p_g²).",
 };
 
 /// A weight that overflows or divides 0 by 0.
 pub const WEIGHT_NOT_FINITE: Symptom = Symptom {
     name: "huge or zero densities break the weight",
-    hint: "book \"Direct and indirect light, and two ways of sampling\": p_f² overflows for densities above 10¹⁵⁴ and 0/0 is NaN; divide through by p_f: 1 / (1 + (p_g/p_f)²), and 0 when p_f = 0.",
 };
 
 /// Chapter 6's exercises, in order.
@@ -50,11 +45,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 6,
             name: "mc_integral",
             file: "chapters/ch6-global-illumination/exercises/mc_integral.rs",
-            hints: [
-                "slide \"Monte-Carlo rendering Integration\" and book \"Why Monte Carlo\": the estimator averages f(x)/p(x) over samples x drawn with density p.",
-                "map each u to a point x of [a, b] so that x is uniform there; work out its density p(x) (it integrates to 1 over [a, b]); average f(x)/p(x) over all the numbers.",
-                "x = a + u (b - a) has density 1/(b - a): the estimate is (b - a) · mean of f(x)",
-            ],
             symptoms: &[NO_INTERVAL],
             reference: || check_mc_integral(reference_integral),
         },
@@ -62,11 +52,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 6,
             name: "russian_roulette",
             file: "chapters/ch6-global-illumination/exercises/russian_roulette.rs",
-            hints: [
-                "book \"Russian roulette\": ending paths at random adds noise but must not change the expected value.",
-                "decide survival with u so that it happens with probability q; write the expected result as q · (what a survivor carries) + (1 − q) · 0 and solve for what a survivor carries.",
-                "survive when u < q and return value / q; otherwise return 0",
-            ],
             symptoms: &[ROULETTE_BIASED, ROULETTE_WRONG_FRACTION],
             reference: || check_russian_roulette(reference_roulette),
         },
@@ -74,11 +59,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 6,
             name: "mis_weight",
             file: "chapters/ch6-global-illumination/exercises/mis_weight.rs",
-            hints: [
-                "book \"Direct and indirect light, and two ways of sampling\" and slide \"Monte-Carlo path tracing\" (importance sampling by BRDF and light): a sample is weighted by how likely its own strategy was compared with the other's.",
-                "square each density and divide; then handle the edges: p_f = 0 (the weight is 0, not 0/0) and densities so large that their squares overflow (divide numerator and denominator by p_f²).",
-                "f² / (f² + g²); write it as 1 / (1 + (g/f)²) so huge pdfs do not overflow, and 0 when f = 0",
-            ],
             symptoms: &[BALANCE_HEURISTIC, WEIGHT_NOT_FINITE],
             reference: || check_mis_weight(reference_weight),
         },
@@ -86,11 +66,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 6,
             name: "path_radiance",
             file: "chapters/ch6-global-illumination/exercises/path_radiance.rs",
-            hints: [
-                "slide \"Monte-Carlo path tracing\" and book \"Russian roulette\": one path per sample, a light sample at every surface (direct light) and one sampled direction (indirect light); only roulette ends a path in a closed room, and a survivor carries more.",
-                "1. the first hit (none: black) and the emission seen there, L = hit.emitted; throughput β = 1. 2. loop: (a) a light sample: if cos θ = n·wi > 0 and the shadow ray is clear, L += β · f · Le · cos θ / pdf, with f = ρ/π; (b) a cosine direction: β *= f · cos θ / pdf; (c) after a bounce or two, roulette: q = min(1, max β) (or capped at 0.95), end the path when rng() ≥ q, else β /= q; (d) the next hit (none: stop). Never add the emission a bounce finds: the light sample counted it.",
-                "L = hit.emitted; β = 1; loop { if let Some(ls) = sample_light: if cos > 0 && unoccluded { L += β (ρ/π) ls.li cos / ls.pdf }; (wi, pdf) = sample_cosine; β *= (ρ/π) cos / pdf; after 2 bounces q = min(max(β), 0.95): if rng() >= q break, β /= q; hit = next_hit(wi) else break }",
-            ],
             symptoms: &super::paths::SYMPTOMS,
             reference: || super::paths::check_path_radiance(super::paths::reference_path),
         },

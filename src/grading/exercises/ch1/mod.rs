@@ -18,57 +18,46 @@ pub use edges::{check_draw_edges, reference_edge, EdgeFn};
 /// The image turned upside down: the sign of the projection.
 pub const MIRRORED: Symptom = Symptom {
     name: "mirrored image",
-    hint: "slide \"Perspective projection Pinhole camera model\" writes u = x/z, v = y/z: that is the upside-down image on the back wall of a real pinhole box. raystep's camera looks down -z with the image plane z = -1 in FRONT of the pinhole, where z < 0, so u = x / (-z), v = y / (-z) (book \"The pinhole\").",
 };
 /// A point with no image given one.
 pub const NO_IMAGE: Symptom = Symptom {
     name: "a point with no image got one",
-    hint: "book \"The pinhole\": a point on the camera plane (z = 0) or behind it (z > 0) never reaches the image plane; return None for it instead of dividing.",
 };
 /// world_from_camera returned instead of camera_from_world.
 pub const INVERSE: Symptom = Symptom {
     name: "the inverse matrix",
-    hint: "book \"A camera you can place\": the axes and the eye as columns make world_from_camera (camera space to the world); the exercise asks for the other way, its inverse.",
 };
 /// An axis of the camera's frame with the wrong sign.
 pub const AXIS_SIGN: Symptom = Symptom {
     name: "an axis points the wrong way",
-    hint: "book \"A camera you can place\": +z points from the target BACK to the eye (the camera looks down -z), +x = up × z (in that order: the cross product changes sign when swapped), +y = z × x.",
 };
 /// Axes that are not unit length.
 pub const NOT_UNIT: Symptom = Symptom {
     name: "axes not unit length",
-    hint: "book \"A camera you can place\": the three axes must be unit vectors, or the matrix scales the world; normalise eye - target and the cross product (the third axis is then unit already).",
 };
 /// Capstone: the ends in the other order.
 pub const ORDER: Symptom = Symptom {
     name: "the ends in the other order",
-    hint: "book \"Exercise 1.3's contract\": the first raster point belongs to a (or to the cut that replaces it), the second to b; when you cut an end, put the cut point in that end's place.",
 };
 /// Capstone: an edge behind the near plane drawn.
 pub const BEHIND_DRAWN: Symptom = Symptom {
     name: "an edge behind the near plane drawn",
-    hint: "book \"Edges that pass behind the camera\": an edge with both ends behind the near plane z = -near (z > -near, which includes points just in front of the pinhole) has nothing to draw: None.",
 };
 /// Capstone: a partly visible edge dropped.
 pub const DROPPED: Symptom = Symptom {
     name: "a visible edge dropped",
-    hint: "book \"Edges that pass behind the camera\": an edge with an end in front of the near plane has a visible part, even when its other end is behind: cut it where it crosses z = -near and draw what is in front.",
 };
 /// Capstone: the hidden end projected without a cut.
 pub const NOT_CLIPPED: Symptom = Symptom {
     name: "the hidden end projected",
-    hint: "book \"Edges that pass behind the camera\": an end behind the camera projects through the pinhole to the mirrored side of the image; replace it by the point where the edge crosses the near plane before projecting.",
 };
 /// Capstone: the cut not on the near plane.
 pub const WRONG_CUT: Symptom = Symptom {
     name: "the cut is not on the near plane",
-    hint: "book \"Edges that pass behind the camera\": with d = z + near for each end (d <= 0 in front), the edge a→b crosses z = -near at a + d_a / (d_a - d_b) · (b - a); use the near given, not 0 or a constant.",
 };
 /// Capstone: an end on the near plane treated as behind it.
 pub const ON_PLANE: Symptom = Symptom {
     name: "an end on the near plane",
-    hint: "book \"Exercise 1.3's contract\": the near plane itself counts as in front (z <= -near); an end exactly on it is kept as it is, and an edge that only touches it from behind is that one point, twice.",
 };
 
 /// Chapter 1's exercises, in order.
@@ -78,11 +67,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 1,
             name: "project_point",
             file: "chapters/ch1-projection/exercises/project_point.rs",
-            hints: [
-                "slide \"Perspective projection Pinhole camera model\" (similar triangles), but mind its sign: the slide's u = x/z is the upside-down image behind a real pinhole, while raystep's camera looks down -z with its image plane z = -1 in front (book \"The pinhole\").",
-                "the ray from the pinhole through p is t·p; it meets the plane z = -1 where t·z = -1, so t = 1 / (-z). Points with z >= 0 are beside or behind the pinhole: they have no image.",
-                "None when z >= 0; otherwise (u, v) = (x / -z, y / -z)",
-            ],
             symptoms: &[MIRRORED, NO_IMAGE],
             reference: || check_project_point(project_pinhole),
         },
@@ -90,25 +74,24 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 1,
             name: "look_at",
             file: "chapters/ch1-projection/exercises/look_at.rs",
-            hints: [
-                "book \"A camera you can place\" (after slide \"Perspective projection Pinhole camera model\", whose pinhole sits at the origin): build the camera's own axes first, then the matrix that maps camera space to the world; you need its inverse.",
-                "1. +z is the unit vector from the target back to the eye. 2. +x is perpendicular to up and +z: a cross product, normalised. 3. +y = z × x. 4. The columns of world_from_camera are x, y, z (w = 0) and the eye (w = 1). 5. Return its inverse.",
-                "back = normalize(eye - target), right = normalize(up x back), up' = back x right; \
-                   world_from_camera has columns right, up', back, eye: invert it",
-            ],
             symptoms: &[INVERSE, AXIS_SIGN, NOT_UNIT],
-            reference: || check_look_at(|e, t, u| camera_from_world_look_at(e, t, u).unwrap_or(Mat4::NAN)),
+            reference: || {
+                check_look_at(|e, t, u| camera_from_world_look_at(e, t, u).unwrap_or(Mat4::NAN))
+            },
         },
         Exercise {
             chapter: 1,
             name: "draw_edges",
             file: "chapters/ch1-projection/exercises/draw_edges.rs",
-            hints: [
-                "book \"Edges that pass behind the camera\" (and slide \"Perspective projection Pinhole camera model\" for the projection): an edge with one end behind the pinhole has no image as a whole, but its front part does. Cut it at the near plane before projecting; book \"Exercise 1.3's contract\" lists what is checked.",
-                "1. both ends to camera space (camera.to_camera). 2. d = z + near for each end: d <= 0 is in front of the near plane z = -near (the plane itself included). 3. both d > 0: None. 4. one d > 0: replace that end, in its own place, by the point where the edge crosses the plane. 5. project both ends, u = x / -z, v = y / -z, then camera.raster_from_image_plane.",
-                "da = a.z + near, db = b.z + near; both > 0: None; da > 0: a = a.lerp(b, da / (da - db)) with a.z = -near (the same for b); raster = camera.raster_from_image_plane(Vec2::new(x / -z, y / -z)) for a, then b",
+            symptoms: &[
+                ORDER,
+                BEHIND_DRAWN,
+                DROPPED,
+                NOT_CLIPPED,
+                WRONG_CUT,
+                ON_PLANE,
+                MIRRORED,
             ],
-            symptoms: &[ORDER, BEHIND_DRAWN, DROPPED, NOT_CLIPPED, WRONG_CUT, ON_PLANE, MIRRORED],
             reference: || check_draw_edges(reference_edge),
         },
     ]

@@ -17,77 +17,62 @@ pub use raster::{check_rasterize_triangle, fill_rule_triangles, RasterFn};
 /// The edge function with the opposite sign.
 pub const EDGE_SIGN: Symptom = Symptom {
     name: "the sign is flipped",
-    hint: "book \"Which side of an edge? The edge function\": E_ab(p) = (b - a) × (p - a), the edge first and the vector to p second; swapping them flips the sign, and every inside test after it.",
 };
 /// Barycentrics that belong to other corners.
 pub const BARY_ORDER: Symptom = Symptom {
     name: "coordinates belong to other corners",
-    hint: "book \"Barycentric coordinates\": φi is the area of the sub-triangle p makes with the edge OPPOSITE pi (pj, pk, p), over the whole area; at p = pi it must be (1, 0, 0).",
 };
 /// Barycentrics that do not sum to 1.
 pub const BARY_SCALE: Symptom = Symptom {
     name: "coordinates do not sum to 1",
-    hint: "slide \"Geometry Triangle mesh\": φi + φj + φk = 1. Each sub-triangle's edge function must be divided by the edge function of the whole triangle (with its sign, so a clockwise triangle gives the same φ).",
 };
 /// A depth test that lets a tie through.
 pub const TIE: Symptom = Symptom {
     name: "a tie replaced the first surface",
-    hint: "book \"Visibility: the depth buffer\": a new surface wins only when it is strictly nearer; at equal depth what was drawn first stays.",
 };
 /// A depth test that forgets to store the depth.
 pub const NOT_STORED: Symptom = Symptom {
     name: "the depth was not stored",
-    hint: "book \"Visibility: the depth buffer\": when the test passes, the buffer must remember the new, nearer depth, or the next surface is compared with the old one.",
 };
 /// Capstone: gaps or double cover along shared edges.
 pub const TOP_LEFT: Symptom = Symptom {
     name: "samples on shared edges drawn twice or not at all",
-    hint: "book \"Shared edges and the top-left rule\": a sample exactly on an edge (edge function 0) belongs to the triangle only if that edge is a top or a left edge once the corners run so that the inside is positive; the two triangles of a shared edge walk it in opposite directions, so exactly one takes the sample.",
 };
 /// Capstone: everything shifted by half a pixel.
 pub const HALF_PIXEL: Symptom = Symptom {
     name: "shifted by half a pixel",
-    hint: "book \"Samples at pixel centres\": pixel (x, y) covers [x, x+1) × [y, y+1) and its one sample sits at its centre (x + 0.5, y + 0.5), not at its corner (x, y).",
 };
 /// Capstone: one winding drawn, the other not.
 pub const WINDING: Symptom = Symptom {
     name: "one winding is not drawn",
-    hint: "book \"Which side of an edge? The edge function\": the triangle's doubled area E(a, b, c) is negative for the other winding; then every edge function is negative inside. Swap two corners (and their colours) so they are positive.",
 };
 /// Capstone: wrong pixels where a triangle reaches past the image.
 pub const OFF_IMAGE: Symptom = Symptom {
     name: "pixels past the image border",
-    hint: "book \"Exercise 2.4's contract\": clip the bounding box to the image, 0 <= x < width and 0 <= y < height, before the loop; a column x >= width would land on the next row's left end, and a box 10^5 pixels wide would not finish.",
 };
 /// Capstone: a triangle without area drew something.
 pub const DEGENERATE: Symptom = Symptom {
     name: "a triangle without area drew",
-    hint: "book \"Stiff and extreme cases\": a triangle whose doubled area is 0, or not finite (a NaN or infinite corner), covers nothing; return before the loop (dividing by its area gives NaN).",
 };
 /// Capstone: colours interpolated in screen space.
 pub const AFFINE: Symptom = Symptom {
     name: "affine colours",
-    hint: "book \"Perspective-correct interpolation\": screen-space barycentrics are not the triangle's own on a slanted triangle. Interpolate colour/z and 1/z with them and divide: (Σ φn cn / zn) / (Σ φn / zn).",
 };
 /// Capstone: the wrong depth stored.
 pub const DEPTH_VALUE: Symptom = Symptom {
     name: "the wrong depth at a sample",
-    hint: "book \"Perspective-correct interpolation\": 1/z is what is linear on the screen; the depth at a sample is 1 / (Σ φn / zn), and that is what the depth buffer stores and compares.",
 };
 /// Capstone: colours not swapped with their corners.
 pub const COLOUR_ORDER: Symptom = Symptom {
     name: "colours on the wrong corners",
-    hint: "book \"Barycentric coordinates\": each φ belongs to one corner; when you swap two corners to fix the winding, swap their colours (and depths) with them.",
 };
 /// Capstone: the nearer surface did not win.
 pub const DEPTH_TEST: Symptom = Symptom {
     name: "the nearer surface did not win",
-    hint: "book \"Visibility: the depth buffer\": draw a sample only if its depth is smaller than the one stored there (the buffer starts at infinity), and then store it; whatever the drawing order, the nearest surface shows.",
 };
 /// Capstone: a tie replaced the first surface.
 pub const DEPTH_TIE: Symptom = Symptom {
     name: "a tie replaced the first surface",
-    hint: "book \"Visibility: the depth buffer\": compare strictly (z < depth); at equal depth the triangle drawn first stays, as in exercise 2.3.",
 };
 
 /// Chapter 2's exercises, in order.
@@ -97,11 +82,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 2,
             name: "edge_function",
             file: "chapters/ch2-rasterization/exercises/edge_function.rs",
-            hints: [
-                "book \"Which side of an edge? The edge function\": the sign of a 2D cross product says on which side of a line a point lies.",
-                "take the edge vector d = b - a and the vector e = p - a; their 2D cross product is d.x·e.y - d.y·e.x. Check it by hand on a = (0, 0), b = (1, 0), p = (0, 1): it is 1.",
-                "E_ab(p) = (b.x - a.x)·(p.y - a.y) - (b.y - a.y)·(p.x - a.x)",
-            ],
             symptoms: &[EDGE_SIGN],
             reference: || check_edge_function(edge::edge_function),
         },
@@ -109,11 +89,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 2,
             name: "barycentric",
             file: "chapters/ch2-rasterization/exercises/barycentric.rs",
-            hints: [
-                "slide \"Geometry Triangle mesh 2D Linear interpolation\" and book \"Barycentric coordinates\": each coordinate is an area ratio, the sub-triangle opposite a vertex over the whole triangle.",
-                "the edge function is twice a signed area: E(pi, pj, pk) for the whole triangle (None if it is 0); the sub-triangle opposite pi is (pj, pk, p), opposite pj is (pk, pi, p), opposite pk is (pi, pj, p); divide each by the whole (the signs cancel for clockwise order).",
-                "φi = E(pj, pk, p) / E(pi, pj, pk), φj = E(pk, pi, p) / E(pi, pj, pk), φk = E(pi, pj, p) / E(pi, pj, pk); None when E(pi, pj, pk) = 0",
-            ],
             symptoms: &[BARY_ORDER, BARY_SCALE],
             reference: || check_barycentric(edge::barycentric),
         },
@@ -121,11 +96,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 2,
             name: "depth_test",
             file: "chapters/ch2-rasterization/exercises/depth_test.rs",
-            hints: [
-                "book \"Visibility: the depth buffer\": keep the nearest surface seen so far at each sample.",
-                "compare the new depth with the stored one; pass only when it is strictly smaller (a tie keeps what was drawn first, and every comparison with NaN is false, which is what you want); on a pass, store it.",
-                "if z < depth[index] { depth[index] = z; true } else { false }",
-            ],
             symptoms: &[TIE, NOT_STORED],
             reference: || check_depth_test(depth::depth_test),
         },
@@ -133,15 +103,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 2,
             name: "rasterize_triangle",
             file: "chapters/ch2-rasterization/exercises/rasterize_triangle.rs",
-            hints: [
-                "slide \"Rendering Drawing on the screen\" asks which pixels a triangle covers; book \"Exercise 2.4's contract\" lists what is checked, and the sections it names say how: edge functions, the top-left rule, perspective-correct interpolation, the depth buffer.",
-                "1. the doubled area E(a, b, c): return if it is 0 or not finite; if negative, swap two corners and their colours. \
-                 2. the bounding box of the corners, clipped to the image. \
-                 3. for each pixel in it, the sample p = (x + 0.5, y + 0.5) and w = (E(b, c, p), E(c, a, p), E(a, b, p)); inside when every w > 0, or w = 0 on a top or left edge. \
-                 4. φ = w / area; the depth z = 1 / Σ(φn / zn); if z < depth[i], store z and the colour Σ(φn cn / zn) · z.",
-                "edge s→t is top-left when t.y < s.y || (t.y == s.y && t.x > s.x); x from ceil(min.x - 0.5).max(0) to (floor(max.x - 0.5) + 1).min(width); \
-                 z = 1 / (φ0/z0 + φ1/z1 + φ2/z2); colour = (φ0 c0/z0 + φ1 c1/z1 + φ2 c2/z2) · z",
-            ],
             symptoms: &[
                 TOP_LEFT,
                 HALF_PIXEL,

@@ -69,50 +69,30 @@ fn check(cases: impl Iterator<Item = (f64, String, Option<Symptom>)>, tolerance:
 /// t = (Nᵀo - c) / Nᵀd: the right size, the wrong sign.
 pub const PLANE_SIGN: Symptom = Symptom {
     name: "t with the wrong sign",
-    hint: "slide \"Geometry Ray-plane intersection\": your t has the right size and \
-           the wrong sign; from Nᵀ(o + t d) = c, t = (c - Nᵀo) / (Nᵀd): c minus \
-           Nᵀo, not the other way round.",
 };
 /// A hit reported for a ray parallel to the plane or triangle.
 pub const PARALLEL: Symptom = Symptom {
     name: "parallel ray",
-    hint: "slide \"Geometry Ray-plane intersection\": when Nᵀd = 0 (for a \
-           triangle: the determinant is 0) the ray runs parallel to the plane \
-           and the division gives ∞ or NaN; return None before dividing.",
 };
 /// (v, u) for (u, v).
 pub const SWAPPED_UV: Symptom = Symptom {
     name: "u and v swapped",
-    hint: "slide \"Geometry Ray-triangle intersection\": u is the weight of \
-           p1 = p0 + e1 and v that of p2 = p0 + e2; crossing with e2 removes the \
-           e2 part and leaves u, crossing with e1 leaves v.",
 };
 /// A point on an edge or a vertex counted as outside.
 pub const EDGES_OUTSIDE: Symptom = Symptom {
     name: "edges left out",
-    hint: "slide \"Geometry Ray-triangle intersection\": the triangle holds its \
-           edges and vertices: u, v, 1 - u - v ≥ 0, with ≥, not >.",
 };
 /// Something returned for a triangle with no area.
 pub const DEGENERATE: Symptom = Symptom {
     name: "degenerate triangle",
-    hint: "slide \"Geometry Ray-triangle intersection\": a triangle whose \
-           vertices lie on one line has N = e1 × e2 = 0 and no inside; return \
-           None before dividing by |N|² (or by the determinant).",
 };
 /// A hit at t ≤ 0.
 pub const BEHIND: Symptom = Symptom {
     name: "hit behind the origin",
-    hint: "slide \"Geometry Ray-triangle intersection\": the system has a \
-           solution for the whole line o + t d; the ray is only its t > 0 half, \
-           so reject t ≤ 0.",
 };
 /// t for the unit direction, not for the d given.
 pub const UNIT_T: Symptom = Symptom {
     name: "t for a unit direction",
-    hint: "slide \"Geometry Ray-triangle intersection\": t is in units of the d \
-           you were given (o + t d is the hit); with d twice as long t halves. \
-           Do not normalise d.",
 };
 
 /// Whether `g` is `w` to 1e-4, relative to `w` (at least 1).

@@ -13,73 +13,31 @@ use glam::Vec3;
 use crate::ch4_implicit_surfaces::march::March;
 use crate::grading::exercise::Symptom;
 
-/// The book's section on the loop.
-macro_rules! tracing_book {
-    () => {
-        "book \"Sphere tracing: why the distance makes the step safe\""
-    };
-}
-
 /// Evaluates the distance function past the budget.
 pub const NO_BUDGET: Symptom = Symptom {
     name: "no step budget",
-    hint: concat!(
-        tracing_book!(),
-        ": every evaluation of sdf counts against the budget, the one at \
-         t = 0 included; after max_steps evaluations without a hit, stop \
-         and report a miss, even if the next step would have hit."
-    ),
 };
 /// One evaluation too many or too few.
 pub const BUDGET_OFF_BY_ONE: Symptom = Symptom {
     name: "budget off by one",
-    hint: concat!(
-        tracing_book!(),
-        ": the budget is max_steps evaluations of sdf, the one at t = 0 \
-         included: with max_steps = 1 you may only look at the origin. \
-         Count evaluations, not steps, and test for a hit after every one \
-         of them, the last included."
-    ),
 };
 /// Marches on past max_distance.
 pub const IGNORES_MAX_DISTANCE: Symptom = Symptom {
     name: "ignores max_distance",
-    hint: concat!(
-        tracing_book!(),
-        ": once t is beyond max_distance without a hit, the ray has missed, \
-         even if a surface lies further on."
-    ),
 };
 /// Compares |f| with march.epsilon, not with march.epsilon_at(p).
-pub const FIXED_EPSILON: Symptom = Symptom {
-    name: "fixed ε",
-    hint: concat!(
-        tracing_book!(),
-        ": far from the world's origin a point cannot come closer to the \
-         surface than the rounding of its own coordinates, so the hit test \
-         is |f(p)| < march.epsilon_at(p), not march.epsilon."
-    ),
-};
+pub const FIXED_EPSILON: Symptom = Symptom { name: "fixed ε" };
 /// A normal that is not unit length.
 pub const NOT_UNIT: Symptom = Symptom {
     name: "normal not unit length",
-    hint: "book \"Normals from the gradient\": the gradient is only as long as \
-           f is steep (half as long for a distance halved); divide it by its \
-           length.",
 };
 /// A normal pointing away from the viewer.
 pub const NOT_FACING: Symptom = Symptom {
     name: "normal faces away",
-    hint: "book \"Normals from the gradient\": where a step lands just behind \
-           the surface the gradient points away from the viewer; turn such a \
-           normal round, so that n · dir < 0.",
 };
 /// NaN where the gradient is zero.
 pub const ZERO_GRADIENT: Symptom = Symptom {
     name: "zero gradient",
-    hint: "book \"Normals from the gradient\": where f is flat the gradient is \
-           zero and has no direction; normalising it gives NaN. Use -dir \
-           there (glam's try_normalize says when).",
 };
 
 /// A distance function that counts its evaluations.

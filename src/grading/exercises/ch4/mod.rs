@@ -34,14 +34,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 4,
             name: "sphere_sdf",
             file: "chapters/ch4-sphere-tracing/exercises/sphere_sdf.rs",
-            hints: [
-                "slide \"Signed distance function (SDF)\": how far is a point from a \
-                 sphere's surface, and which sign does it get inside?",
-                "every point of the surface is exactly `radius` from the centre, so \
-                 the distance to the centre tells you almost everything: subtract what \
-                 lies inside the surface.",
-                "|p - center| - radius",
-            ],
             symptoms: &[UNSIGNED, CENTRE_IGNORED],
             reference: || check_sphere_sdf(|p, c, r| sd_sphere(p - c, r)),
         },
@@ -49,17 +41,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 4,
             name: "sphere_trace",
             file: "chapters/ch4-sphere-tracing/exercises/sphere_trace.rs",
-            hints: [
-                "book \"Sphere tracing: why the distance makes the step safe\": no \
-                 surface is closer than the distance function says, so that distance \
-                 is a safe step.",
-                "start at t = 0. Evaluate f at o + t d and count the evaluation; if \
-                 |f| < ε, that t is the hit. Otherwise, if t is beyond max_distance or \
-                 max_steps evaluations are used up, it is a miss; else step t += f and \
-                 evaluate again.",
-                "t = 0; for _ in 0..max_steps { f = sdf(o + t d); if |f| < ε return \
-                 Some(t); if t > max_distance return None; t += f }; None",
-            ],
             symptoms: &[NO_BUDGET, BUDGET_OFF_BY_ONE, IGNORES_MAX_DISTANCE],
             reference: || check_sphere_trace(reference_trace),
         },
@@ -67,15 +48,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 4,
             name: "gradient_normal",
             file: "chapters/ch4-sphere-tracing/exercises/gradient_normal.rs",
-            hints: [
-                "book \"Normals from the gradient\": the normal is the direction in \
-                 which f grows fastest; estimate each partial derivative from f \
-                 itself.",
-                "central differences: for each axis, sample f a distance h ahead and \
-                 h behind along that axis, divide the difference by 2h; the three \
-                 values are the gradient. Normalise it.",
-                "(f(p + h e_i) - f(p - h e_i)) / 2h per axis i, then normalize",
-            ],
             symptoms: &[NOT_UNIT],
             reference: || check_gradient_normal(|f, p, h| gradient_central(f, p, h).normalize()),
         },
@@ -83,22 +55,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 4,
             name: "trace_scene",
             file: "chapters/ch4-sphere-tracing/exercises/trace_scene.rs",
-            hints: [
-                "book \"Sphere tracing: why the distance makes the step safe\" and book \
-                 \"Normals from the gradient\": march with the distance as the step, \
-                 count every evaluation against the budget, then differentiate f where \
-                 you stopped.",
-                "t = 0, f = sdf(origin), one evaluation. Loop: at p = origin + t dir, a \
-                 hit when |f| < march.epsilon_at(p); a miss when t > march.max_distance \
-                 or when march.max_steps evaluations are used up; else t += f and \
-                 evaluate again. At the hit: central differences with h = \
-                 max(march.epsilon_at(p), 1e-4), normalised (-dir where the gradient is \
-                 zero), turned round if it points along dir.",
-                "t = 0; f = sdf(o); n = 1; loop { p = o + t d; if |f| < eps_at(p) break; \
-                 if t > max_distance || n >= max_steps return None; t += f; f = sdf(o + \
-                 t d); n += 1 } g = (f(p+h x̂)-f(p-h x̂), …) / 2h; n = g.try_normalize() \
-                 or -d; if n·d > 0 { n = -n }",
-            ],
             symptoms: &[
                 NO_BUDGET,
                 BUDGET_OFF_BY_ONE,
@@ -192,15 +148,10 @@ pub fn check_sphere_sdf(f: SdfFn) -> Check {
 /// |p - c| - r made positive inside.
 pub const UNSIGNED: Symptom = Symptom {
     name: "unsigned distance",
-    hint: "slide \"Signed distance function (SDF)\": inside the sphere the \
-           distance is negative (minus the way out), which is how one \
-           evaluation tells inside from outside; do not take its absolute value.",
 };
 /// The distance from the origin, not from the centre.
 pub const CENTRE_IGNORED: Symptom = Symptom {
     name: "centre ignored",
-    hint: "slide \"Signed distance function (SDF)\": your sphere sits at the \
-           origin; measure from the centre, p - center, not from p itself.",
 };
 
 /// The sphere-tracing loop on a sphere, a box and a torus, against hits

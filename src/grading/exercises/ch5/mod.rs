@@ -31,11 +31,6 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 5,
             name: "lambert_brdf",
             file: "chapters/ch5-reflection/exercises/lambert_brdf.rs",
-            hints: [
-                "slide \"Bidirectional reflectance distribution function\" (ideal diffuse) and book \"BRDFs\": a Lambertian surface reflects the same radiance in every direction; energy conservation fixes the constant.",
-                "decide first whether ωo and ωi are on the same side of the surface (their z components have the same sign); if not, nothing. If so, f is the constant whose integral ∫ f cos θ dω over the hemisphere is the albedo ρ: work out ∫ cos θ dω.",
-                "same side when wo.z * wi.z > 0; then rho / PI, else Vec3::ZERO",
-            ],
             symptoms: &[LAMBERT_PI, LAMBERT_ONE_SIDED],
             reference: || check_lambert_brdf(|rho, wo, wi| Lambertian { rho }.f(wo, wi)),
         },
@@ -43,60 +38,46 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 5,
             name: "cosine_hemisphere",
             file: "chapters/ch5-reflection/exercises/cosine_hemisphere.rs",
-            hints: [
-                "book \"Cosine-weighted directions\": sample a disk uniformly, then lift the point onto the hemisphere (Malley's method).",
-                "1. a uniform point of the unit disk: radius r = √u.x (the area inside r grows as r²) and angle φ = 2π u.y; 2. lift it: z = √(1 − r²); 3. the density of the direction is cos θ / π = z / π.",
-                "r = sqrt(u.x), phi = 2π u.y, (x, y) = r (cos phi, sin phi), z = sqrt(1 - r²), pdf = z / π",
-            ],
             symptoms: &[NOT_ON_HEMISPHERE, COSINE_PDF, NOT_COSINE],
-            reference: || check_cosine_hemisphere(|u| {
-                        let w = warp_cosine(u);
-                        (w, cosine_hemisphere_pdf(w.z))
-                    }),
+            reference: || {
+                check_cosine_hemisphere(|u| {
+                    let w = warp_cosine(u);
+                    (w, cosine_hemisphere_pdf(w.z))
+                })
+            },
         },
         Exercise {
             chapter: 5,
             name: "point_light",
             file: "chapters/ch5-reflection/exercises/point_light.rs",
-            hints: [
-                "slide \"Radiometry Types of light Isotropic point source\" and slide \"Radiometry Lambert's law\": intensity spreads over the sphere of radius r, and a tilted surface catches less.",
-                "1. the vector from p to the light, its length r and unit direction; 2. cos θ between n and that direction, clamped at zero (light behind the surface does nothing); 3. the inverse-square law divides I by r², Lambert's law multiplies by cos θ.",
-                "to = light - p; r² = to.length_squared(); cos = max(0, n · to/|to|); I cos / r²",
-            ],
             symptoms: &[INVERSE_SQUARE, POINT_BEHIND],
-            reference: || check_point_light(|i, light, p, n| {
-                        let to = light - p;
-                        i * crate::ch5_reflection::radiometry::point_irradiance(
-                            1.0,
-                            to.length() as f64,
-                            n.dot(to.normalize()) as f64,
-                        ) as f32
-                    }),
+            reference: || {
+                check_point_light(|i, light, p, n| {
+                    let to = light - p;
+                    i * crate::ch5_reflection::radiometry::point_irradiance(
+                        1.0,
+                        to.length() as f64,
+                        n.dot(to.normalize()) as f64,
+                    ) as f32
+                })
+            },
         },
         Exercise {
             chapter: 5,
             name: "area_pdf",
             file: "chapters/ch5-reflection/exercises/area_pdf.rs",
-            hints: [
-                "slide \"Radiometry Solid angle\": a small patch dA at distance d, seen at angle θ, subtends dω = dA cos θ / d².",
-                "1. d² and the unit direction between x and y; 2. |cos θl| between the light's normal and that direction (edge-on, 0: the light covers no solid angle, return 0); 3. a density per area becomes one per solid angle by the Jacobian dA/dω = d² / |cos θl|.",
-                "d² = (y - x).length_squared(); cos = |n_light · (x - y)/d|; 0 if cos == 0, else pdf_area d² / cos",
-            ],
             symptoms: &[PDF_JACOBIAN, PDF_SIGN],
-            reference: || check_area_pdf(|pdf, x, y, n| {
-                        let to = y - x;
-                        solid_angle_pdf(pdf, to.length(), n.dot(to.normalize()))
-                    }),
+            reference: || {
+                check_area_pdf(|pdf, x, y, n| {
+                    let to = y - x;
+                    solid_angle_pdf(pdf, to.length(), n.dot(to.normalize()))
+                })
+            },
         },
         Exercise {
             chapter: 5,
             name: "direct_light",
             file: "chapters/ch5-reflection/exercises/direct_light.rs",
-            hints: [
-                "slide \"Reflection equation Multiple light sources\" and slide \"Radiometry Solid angle\": one light sample is f · Le · cos θ / pdf_ω, and a point drawn uniformly on the light has pdf_A = 1/A per area, not per solid angle.",
-                "1. wi = (y − p)/d and d; 2. cos θ = n · wi at p and cos θl = n_light · (−wi) at the light: nothing if either is ≤ 0 (p faces away, or y shows its back face); 3. nothing if !visible(p, y); 4. f = ρ/π; 5. pdf_ω = pdf_A · d² / cos θl with pdf_A = 1/A; 6. f · Le · cos θ / pdf_ω.",
-                "wi = (y - p) / d; cos = n·wi; cos_l = n_light·(-wi); if cos <= 0 || cos_l <= 0 || !visible(p, y) { 0 } else { rho / π · le · cos · cos_l / d² · area }",
-            ],
             symptoms: &SYMPTOMS,
             reference: || check_direct_light(reference_direct),
         },

@@ -32,68 +32,57 @@ use crate::grading::exercise::{Check, Symptom};
 /// furnace.
 pub const NO_ROULETTE: Symptom = Symptom {
     name: "a path never ends",
-    hint: "book \"Russian roulette\": in a closed room nothing escapes, so only roulette ends a path: from a bounce or two on, survive with a probability q taken from the throughput (at most 1), and divide the survivor's throughput by q. If you have roulette, your throughput grows instead of shrinking: each bounce should multiply it by about the albedo (f · cos θ / pdf = ρ for a cosine direction).",
 };
 
 /// Many furnace paths end at exactly the same bounce, and the furnace is
 /// too dark.
 pub const DEPTH_CAP: Symptom = Symptom {
     name: "a fixed maximum depth (too dark in a closed room)",
-    hint: "book \"Russian roulette\": stopping every path at a fixed depth cuts off the light of all longer paths, a bias that a closed room shows. Let roulette end paths instead; a safety cap must be far beyond where roulette ends them (hundreds of bounces).",
 };
 
 /// The furnace lacks exactly the emission the camera sees.
 pub const NO_FIRST_EMISSION: Symptom = Symptom {
     name: "the emission the camera sees is missing",
-    hint: "slide \"Rendering equation (global illumination)\": L = Le + ∫ f Li cos θ dω. The first surface's own emission (hit.emitted) belongs to the answer before any bounce.",
 };
 
 /// The furnace has the emission of every surface twice.
 pub const DOUBLE_EMISSION: Symptom = Symptom {
     name: "emission counted twice",
-    hint: "book \"Direct and indirect light, and two ways of sampling\": with a light sample at every surface, the light a bounce happens to hit has already been counted by that sample. Add hit.emitted only for the surface the camera sees.",
 };
 
 /// The light samples alone bring twice what they should in the furnace.
 pub const LIGHT_SAMPLE_WRONG: Symptom = Symptom {
     name: "the light sample's value is off",
-    hint: "slide \"Radiometry Solid angle\": a light sample adds f · Le · cos θ / pdf, with cos θ = n · wi at the hit and the pdf per steradian that sample_light returns (it already holds the light's cos θl and d²). Leaving out cos θ doubles the light in a closed sphere.",
 };
 
 /// The furnace is too dark by a factor.
 pub const TOO_DARK: Symptom = Symptom {
     name: "too dark by a factor",
-    hint: "slide \"Monte-Carlo rendering Integration\": every sampled factor is divided by its density. Too dark usually means a 1/pdf missing in the throughput (β *= f cos θ / pdf) or a roulette survivor not divided by its survival probability q.",
 };
 
 /// The furnace is too bright by a factor.
 pub const TOO_BRIGHT: Symptom = Symptom {
     name: "too bright by a factor",
-    hint: "slide \"Monte-Carlo path tracing\": the throughput of a bounce is f · cos θ / pdf, and a light sample adds f · Le · cos θ / pdf. Too bright usually means a cos θ left out (the cosine pdf then divides by it) or the BRDF without its 1/π.",
 };
 
 /// Bounces leave the surface on the wrong side.
 pub const BELOW_SURFACE: Symptom = Symptom {
     name: "bounces below the surface",
-    hint: "book \"A path tracer\": the next ray leaves the hit along the sampled direction wi itself, which points away from the surface (wi · n > 0), not along −wi.",
 };
 
 /// Surfaces without a light sample.
 pub const NO_NEE: Symptom = Symptom {
     name: "no light sample at each surface",
-    hint: "book \"Direct and indirect light, and two ways of sampling\": next-event estimation asks scene.sample_light at every surface the path reaches, the first one included.",
 };
 
 /// Light samples without a shadow ray.
 pub const NO_SHADOW_RAY: Symptom = Symptom {
     name: "light samples without a shadow ray",
-    hint: "slide \"Reflection equation Multiple light sources\": a light sample counts only if nothing blocks it; ask scene.unoccluded(&hit, ls.wi, ls.dist) for every sample you add.",
 };
 
 /// The furnace is right, the Cornell box is not.
 pub const CORNELL_DIFFERS: Symptom = Symptom {
     name: "right in the furnace, wrong in the Cornell box",
-    hint: "book \"Direct and indirect light, and two ways of sampling\": what the furnace cannot see is occlusion and direction: the light sample's cos θ at the hit (zero or negative: nothing), the shadow ray, and the bounce direction taken from sample_cosine.",
 };
 
 /// Every symptom [`check_path_radiance`] can name.
