@@ -12,6 +12,7 @@ use clap::Parser;
 
 use crate::core::format::format_count;
 use crate::grading::build::{build_exercises, exercises_dir};
+use crate::grading::course;
 use crate::grading::exercise::{Exercise, Outcome};
 use crate::grading::process::{fresh_seed, reference, run_student, sandbox_gaps};
 use crate::grading::sandbox::{become_subreaper, kill_orphans};
@@ -193,6 +194,12 @@ pub fn grade_main() -> ExitCode {
                 (`cargo run --release`) and press `g`\n";
     }
     say(&mut stdout, &end);
+    // The student's progress over the whole course (raystep's own
+    // solutions are not the student's).
+    if !cli.reference {
+        let states = course::update(&cli.out, &results);
+        say(&mut stdout, &course::summary(&catalog, &states));
+    }
     if let Some(path) = &cli.json {
         let path = path.clone().unwrap_or_else(|| cli.out.join("results.json"));
         if let Err(e) = write_results(&path, &results_json(&results)) {

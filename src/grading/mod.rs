@@ -25,6 +25,7 @@ pub mod bridge;
 pub mod build;
 pub mod child;
 pub mod counted;
+pub mod course;
 pub mod driver;
 pub mod exercise;
 pub mod exercises;

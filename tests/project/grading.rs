@@ -181,6 +181,30 @@ fn every_shipped_stub_is_not_started_and_gives_no_hint() {
     }
     assert!(!text.contains("hint:"), "{text}");
     assert!(text.contains("0 of "), "{text}");
+    // The course so far, and where to start.
+    let n = grading::all().len();
+    assert!(text.contains("course: ch1 0/3, ch2 0/"), "{text}");
+    assert!(text.contains(&format!("; 0 of {n} passed\n")), "{text}");
+    assert!(
+        text.contains(
+            "next: start ch1/project_point in chapters/ch1-projection/exercises/project_point.rs"
+        ),
+        "{text}"
+    );
+    // Exercise 1.1 solved and chapter 1 graded again: the other chapters
+    // are remembered, and the next is 1.2.
+    let solution =
+        common::root().join("tests/project/solutions/ch1-projection/exercises/project_point.rs");
+    put(
+        &exercises,
+        "ch1-projection",
+        "project_point",
+        &std::fs::read_to_string(solution).unwrap(),
+    );
+    let (_, text, _) = grade(&["ch1", "--exercises", exercises.to_str().unwrap()], &dir);
+    assert!(text.contains("course: ch1 1/3, ch2 0/"), "{text}");
+    assert!(text.contains(&format!("; 1 of {n} passed\n")), "{text}");
+    assert!(text.contains("next: start ch1/look_at in"), "{text}");
 }
 
 /// Writes `text` as exercise `name` of the chapter folder `chapter`.
@@ -404,4 +428,57 @@ fn the_capstones_reference_pictures_are_reviewed_snapshots() {
         );
     }
     insta::assert_snapshot!(table);
+}
+
+/// What `cargo grade` says about the course from the states it remembers:
+/// a chapter never graded, one failed exercise as the next to try, all
+/// passed; and the states of exercises not graded this time are kept.
+#[test]
+fn the_course_progress_names_what_to_try_next() {
+    use raystep::grading::course::{load, summary, update, State};
+    let dir = common::temp_dir("grade-progress");
+    let all = grading::all();
+    let n = all.len();
+    let check = || grading::Check {
+        error: 0.0,
+        tolerance: 1.0,
+        detail: String::new(),
+        images: None,
+        symptom: None,
+    };
+    let result = |i: usize, outcome: Outcome| (all[i], outcome, String::new());
+    // Nothing remembered: every chapter ungraded, the first exercise next.
+    let none = load(&dir);
+    let text = summary(&all, &none);
+    assert!(text.starts_with("course: ch1 -/3, ch2 -/"), "{text}");
+    assert!(text.contains(&format!("; 0 of {n} passed\n")), "{text}");
+    assert!(text.contains("(-: a chapter not graded yet)"), "{text}");
+    assert!(
+        text.contains("next: ch1/project_point has not been graded: `cargo grade ch1`"),
+        "{text}"
+    );
+    // 1.1 passed, 1.2 failed: 1.2 is next, with its hint command.
+    let passed = Outcome::Passed(check());
+    let failed = Outcome::Panicked("boom".into());
+    update(&dir, &[result(0, passed), result(1, failed)]);
+    let states = load(&dir);
+    assert_eq!(states.get("ch1/project_point"), Some(&State::Passed));
+    let text = summary(&all, &states);
+    assert!(text.starts_with("course: ch1 1/3, ch2 -/"), "{text}");
+    assert!(
+        text.contains("next: ch1/look_at failed: `cargo grade --hint ch1/look_at`"),
+        "{text}"
+    );
+    // Grading 1.2 alone keeps 1.1's state.
+    let states = update(&dir, &[result(1, Outcome::NotImplemented)]);
+    assert_eq!(states.get("ch1/project_point"), Some(&State::Passed));
+    assert!(summary(&all, &states).contains("next: start ch1/look_at in"));
+    // Everything passed.
+    let every: Vec<_> = (0..n)
+        .map(|i| result(i, Outcome::Passed(check())))
+        .collect();
+    let text = summary(&all, &update(&dir, &every));
+    assert!(text.contains(&format!("; {n} of {n} passed\n")), "{text}");
+    assert!(!text.contains("not graded yet"), "{text}");
+    assert!(text.contains("all passed"), "{text}");
 }
