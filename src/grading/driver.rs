@@ -38,6 +38,10 @@ struct GradeCli {
     /// the output folder).
     #[arg(long, value_name = "FILE", num_args = 0..=1)]
     json: Option<Option<PathBuf>>,
+    /// Show a solution of one exercise (`ch3/moller_trumbore`) once yours
+    /// has passed. Grades nothing.
+    #[arg(long, value_name = "EXERCISE")]
+    solution: Option<String>,
     /// Put one exercise's file back as shipped (`ch3/bvh_traversal`); your
     /// version is kept beside it as `<name>.rs.orig`. Grades nothing.
     #[arg(long, value_name = "EXERCISE")]
@@ -98,6 +102,22 @@ pub fn grade_main() -> ExitCode {
                     cli.out.display()
                 );
                 ExitCode::from(2)
+            }
+        };
+    }
+    if let Some(id) = &cli.solution {
+        let Some(ex) = catalog.iter().find(|e| &e.id() == id) else {
+            eprintln!("error: no exercise `{id}`; expected e.g. `ch3/moller_trumbore`");
+            return ExitCode::from(2);
+        };
+        return match crate::grading::solutions::show(ex, &cli.out) {
+            Ok(text) => {
+                print!("{text}");
+                ExitCode::SUCCESS
+            }
+            Err(why) => {
+                eprintln!("{why}");
+                ExitCode::from(1)
             }
         };
     }

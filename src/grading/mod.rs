@@ -38,6 +38,7 @@ pub mod safe_out;
 pub mod sandbox;
 pub mod seccomp;
 pub mod shipped;
+pub mod solutions;
 pub mod source_rules;
 pub mod stream;
 pub mod students;

@@ -482,3 +482,42 @@ fn the_course_progress_names_what_to_try_next() {
     assert!(!text.contains("not graded yet"), "{text}");
     assert!(text.contains("all passed"), "{text}");
 }
+
+/// `cargo grade --solution` shows an exercise's solution, with the idea
+/// behind it, only once the exercise has passed; every exercise has one.
+#[test]
+fn a_solution_opens_only_after_a_pass() {
+    use raystep::grading::solutions::{find, show};
+    let dir = common::temp_dir("grade-solution");
+    let all = grading::all();
+    for ex in &all {
+        assert!(find(&ex.id()).is_some(), "{} has no solution", ex.id());
+    }
+    let ex = *all.iter().find(|e| e.id() == "ch3/ray_plane").unwrap();
+    let why = show(&ex, &dir).unwrap_err();
+    assert!(
+        why.contains("has not passed yet") && why.contains("--hint ch3/ray_plane"),
+        "{why}"
+    );
+    let (out, _, _) = grade(&["--solution", "ch3/ray_plane"], &dir);
+    assert_eq!(out.status.code(), Some(1));
+    let passed = grading::Check {
+        error: 0.0,
+        tolerance: 1.0,
+        detail: String::new(),
+        images: None,
+        symptom: None,
+    };
+    raystep::grading::course::update(&dir, &[(ex, Outcome::Passed(passed), String::new())]);
+    let text = show(&ex, &dir).unwrap();
+    assert!(text.contains(find("ch3/ray_plane").unwrap().text), "{text}");
+    assert!(
+        text.contains(&format!("the idea: {}", ex.hints()[1])),
+        "{text}"
+    );
+    let (out, text, _) = grade(&["--solution", "ch3/ray_plane"], &dir);
+    assert!(out.status.success(), "{text}");
+    assert!(text.contains("pub fn ray_plane("), "{text}");
+    let (out, _, _) = grade(&["--solution", "ch9/nothing"], &dir);
+    assert_eq!(out.status.code(), Some(2));
+}
