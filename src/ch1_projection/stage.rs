@@ -67,14 +67,6 @@ struct ProjectionRender {
     seconds: f64,
 }
 
-impl ProjectionRender {
-    /// The size of its films: the image's width by the rows it renders.
-    fn size(&self) -> (u32, u32) {
-        let rows = self.settings.rows_of(self.camera.height);
-        (self.camera.width, rows.len() as u32)
-    }
-}
-
 impl Render for ProjectionRender {
     fn pass(&mut self) -> Pass {
         let start = Instant::now();
@@ -93,7 +85,12 @@ impl Render for ProjectionRender {
 
     fn snapshot(&self) -> Snapshot {
         Snapshot {
-            views: views_of(&self.films, VIEWS.len(), self.size()),
+            views: views_of(
+                &self.films,
+                VIEWS.len(),
+                self.settings
+                    .film_size(self.camera.width, self.camera.height),
+            ),
             pass: fixed_pass(u32::from(!self.films.is_empty()), 1, 0),
             ..Snapshot::default()
         }

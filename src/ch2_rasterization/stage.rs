@@ -71,14 +71,6 @@ struct RasterRender {
     frame: Option<Frame>,
 }
 
-impl RasterRender {
-    /// The size of its films: the image's width by the rows it renders.
-    fn size(&self) -> (u32, u32) {
-        let rows = self.settings.rows_of(self.camera.height);
-        (self.camera.width, rows.len() as u32)
-    }
-}
-
 impl Render for RasterRender {
     fn pass(&mut self) -> Pass {
         let s = &self.scene;
@@ -92,7 +84,12 @@ impl Render for RasterRender {
     fn snapshot(&self) -> Snapshot {
         let films = self.frame.as_ref().map_or(&[][..], |f| &f.films[..]);
         Snapshot {
-            views: views_of(films, VIEWS.len(), self.size()),
+            views: views_of(
+                films,
+                VIEWS.len(),
+                self.settings
+                    .film_size(self.camera.width, self.camera.height),
+            ),
             pass: fixed_pass(u32::from(self.frame.is_some()), 1, 0),
             ..Snapshot::default()
         }

@@ -90,12 +90,6 @@ impl RayTriangleRender {
     fn planned(&self) -> u32 {
         self.settings.spp.max(1)
     }
-
-    /// The size of its films: the image's width by the rows it renders.
-    fn size(&self) -> (u32, u32) {
-        let rows = self.settings.rows_of(self.camera.height);
-        (self.camera.width, rows.len() as u32)
-    }
 }
 
 impl Render for RayTriangleRender {
@@ -129,7 +123,12 @@ impl Render for RayTriangleRender {
     fn snapshot(&self) -> Snapshot {
         let films = films_from_sums(&self.camera, &self.sums, self.done);
         Snapshot {
-            views: views_of(&films, VIEWS.len(), self.size()),
+            views: views_of(
+                &films,
+                VIEWS.len(),
+                self.settings
+                    .film_size(self.camera.width, self.camera.height),
+            ),
             pass: fixed_pass(self.done, self.planned(), self.stats.rays),
             ..Snapshot::default()
         }

@@ -172,14 +172,6 @@ struct SphereTracingRender {
     geometry: Option<(Geometry, f64)>,
 }
 
-impl SphereTracingRender {
-    /// The size of its films: the image's width by the rows it renders.
-    fn size(&self) -> (u32, u32) {
-        let rows = self.settings.rows_of(self.camera.height);
-        (self.camera.width, rows.len() as u32)
-    }
-}
-
 impl Render for SphereTracingRender {
     fn pass(&mut self) -> Pass {
         let start = Instant::now();
@@ -215,7 +207,12 @@ impl Render for SphereTracingRender {
     /// One primary ray per traced pixel (the single pass).
     fn snapshot(&self) -> Snapshot {
         Snapshot {
-            views: views_of(&self.films, VIEWS.len(), self.size()),
+            views: views_of(
+                &self.films,
+                VIEWS.len(),
+                self.settings
+                    .film_size(self.camera.width, self.camera.height),
+            ),
             pass: fixed_pass(self.done, self.planned, self.pixels.len() as u64),
             ..Snapshot::default()
         }

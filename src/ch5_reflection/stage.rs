@@ -163,16 +163,12 @@ impl ReflectionRender {
 }
 
 impl ReflectionRender {
-    /// The size of its films: the image's width by the rows it renders.
-    fn size(&self) -> (u32, u32) {
-        let rows = self.settings.rows_of(self.camera.height);
-        (self.camera.width, rows.len() as u32)
-    }
-
     fn pass_info(&self) -> Pass {
         // One camera ray per pixel and pass, plus the shadow, direction and
         // mirror rays the estimator traced.
-        let (w, h) = self.size();
+        let (w, h) = self
+            .settings
+            .film_size(self.camera.width, self.camera.height);
         let c = &self.counters;
         let rays = w as u64 * h as u64 * self.passes as u64
             + c.shadow_rays
@@ -219,7 +215,9 @@ impl Render for ReflectionRender {
     }
 
     fn snapshot(&self) -> Snapshot {
-        let (w, h) = self.size();
+        let (w, h) = self
+            .settings
+            .film_size(self.camera.width, self.camera.height);
         let mut film = Film::new(w, h);
         let k = self.passes.max(1) as f32;
         for (p, s) in film.pixels.iter_mut().zip(&self.sums) {

@@ -92,6 +92,12 @@ impl Settings {
             None => 0..height,
         }
     }
+
+    /// The size of the films of a render of a `width` x `height` image:
+    /// its width by the rows [`Self::rows_of`] gives.
+    pub fn film_size(&self, width: u32, height: u32) -> (u32, u32) {
+        (width, self.rows_of(height).len() as u32)
+    }
 }
 
 impl Default for Settings {
