@@ -113,30 +113,27 @@ pub fn films_from_sums(camera: &Camera, sums: &[[Vec3; 4]], samples: u32) -> Vec
 
 /// Renders all four views with `spp` samples through the BVH.
 pub fn render_views(camera: &Camera, geometry: &Geometry, spp: u32, seed: u64) -> Vec<Film> {
-    let (sums, _) = render_sum(
-        camera,
-        geometry,
-        0..camera.height,
-        0..spp,
-        spp,
-        seed,
-        &|r| geometry.closest(r),
-    );
-    films_from_sums(camera, &sums, spp)
+    views_traced(camera, geometry, spp, seed, &|r| geometry.closest(r))
 }
 
 /// Renders the views with the naive loop over every triangle instead.
 pub fn render_views_naive(camera: &Camera, geometry: &Geometry, spp: u32, seed: u64) -> Vec<Film> {
     let tris = &geometry.triangles.tris;
-    let (sums, _) = render_sum(
-        camera,
-        geometry,
-        0..camera.height,
-        0..spp,
-        spp,
-        seed,
-        &|r| closest_naive(tris, r, f32::INFINITY, Intersector::Watertight),
-    );
+    views_traced(camera, geometry, spp, seed, &|r| {
+        closest_naive(tris, r, f32::INFINITY, Intersector::Watertight)
+    })
+}
+
+/// The four views of the whole image with `spp` samples, each ray's first
+/// hit found by `trace`.
+fn views_traced(
+    camera: &Camera,
+    geometry: &Geometry,
+    spp: u32,
+    seed: u64,
+    trace: &(dyn Fn(&Ray) -> Option<Hit> + Sync),
+) -> Vec<Film> {
+    let (sums, _) = render_sum(camera, geometry, 0..camera.height, 0..spp, spp, seed, trace);
     films_from_sums(camera, &sums, spp)
 }
 
