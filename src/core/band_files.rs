@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 use crate::core::error::{Error, Result};
-use crate::core::film::{write_atomically, Film};
+use crate::core::film::{write_atomically, write_rgb_exr, Film};
 use crate::core::outputs::Streamed;
 use crate::core::stage::ChapterInfo;
 
@@ -107,31 +107,23 @@ fn exr_from_rows(
     (w, h): (u32, u32),
     path: &Path,
 ) -> std::result::Result<(), String> {
-    use exr::prelude::*;
-    let w = w as usize;
     // The writer asks for pixels row by row: one row is read at a time.
     let reader = rows.try_clone().map_err(|e| e.to_string())?;
     let cache = Mutex::new(RowCache {
         file: reader,
         row: usize::MAX,
-        values: vec![0.0; 3 * w],
+        values: vec![0.0; 3 * w as usize],
         failed: None,
     });
-    let channels = SpecificChannels::rgb(|Vec2(x, y): Vec2<usize>| {
+    write_rgb_exr(path, (w, h), |x, y| {
         let mut c = cache.lock().unwrap_or_else(|p| p.into_inner());
-        c.load(y, w);
+        c.load(y, w as usize);
         (c.values[3 * x], c.values[3 * x + 1], c.values[3 * x + 2])
-    });
-    let mut file = std::fs::File::create(path).map_err(|e| e.to_string())?;
-    Image::from_channels((w, h as usize), channels)
-        .write()
-        .non_parallel()
-        .to_buffered(std::io::BufWriter::new(&mut file))
-        .map_err(|e| e.to_string())?;
-    if let Some(e) = cache.into_inner().ok().and_then(|c| c.failed) {
-        return Err(format!("reading its rows back: {e}"));
+    })?;
+    match cache.into_inner().ok().and_then(|c| c.failed) {
+        Some(e) => Err(format!("reading its rows back: {e}")),
+        None => Ok(()),
     }
-    file.sync_all().map_err(|e| format!("writing: {e}"))
 }
 
 /// One row of the EXR's scratch file, read when asked for.

@@ -88,21 +88,10 @@ impl Film {
     /// Writes a linear f32 OpenEXR file, atomically.
     pub fn write_exr(&self, path: &Path) -> Result<()> {
         write_atomically(path, |tmp| {
-            use exr::prelude::*;
-            let channels = SpecificChannels::rgb(|Vec2(x, y): Vec2<usize>| {
+            write_rgb_exr(tmp, (self.width, self.height), |x, y| {
                 let p = self.pixels[y * self.width as usize + x];
                 (p.x, p.y, p.z)
-            });
-            // Compressed one block after another: the parallel writer stores
-            // blocks in the order they finish, so the same image would not
-            // always give the same bytes.
-            let mut bytes = std::io::Cursor::new(Vec::new());
-            Image::from_channels((self.width as usize, self.height as usize), channels)
-                .write()
-                .non_parallel()
-                .to_buffered(&mut bytes)
-                .map_err(|e| e.to_string())?;
-            write_all_synced(tmp, bytes.get_ref())
+            })
         })
     }
 
@@ -140,6 +129,28 @@ impl Film {
         })?;
         Ok(image.layer_data.channel_data.pixels)
     }
+}
+
+/// Writes the linear RGB EXR of a `width` x `height` image whose pixel
+/// (x, y) is `pixel(x, y)` to the new file `path`, and waits until the
+/// system has it: a full disk is an error. Compressed one block after
+/// another: the parallel writer stores blocks in the order they finish, so
+/// the same image would not always give the same bytes. The writer asks
+/// for the pixels row by row.
+pub fn write_rgb_exr(
+    path: &Path,
+    (width, height): (u32, u32),
+    pixel: impl Fn(usize, usize) -> (f32, f32, f32) + Sync,
+) -> std::result::Result<(), String> {
+    use exr::prelude::*;
+    let channels = SpecificChannels::rgb(|Vec2(x, y): Vec2<usize>| pixel(x, y));
+    let mut file = std::fs::File::create(path).map_err(|e| e.to_string())?;
+    Image::from_channels((width as usize, height as usize), channels)
+        .write()
+        .non_parallel()
+        .to_buffered(std::io::BufWriter::new(&mut file))
+        .map_err(|e| e.to_string())?;
+    file.sync_all().map_err(|e| format!("writing: {e}"))
 }
 
 /// Linear [0, 1] → sRGB-encoded 8-bit value.
