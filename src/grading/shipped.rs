@@ -43,33 +43,43 @@ macro_rules! stub {
     };
 }
 
+/// Every exercise file, as `$make!(folder, name)` for each, in chapter
+/// order: the one list the shipped stubs ([`STUBS`]) and the solutions
+/// ([`crate::grading::solutions::SOLUTIONS`]) are made from.
+macro_rules! exercise_files {
+    ($make:ident) => {
+        &[
+            $make!("ch1-projection", "draw_edges"),
+            $make!("ch1-projection", "look_at"),
+            $make!("ch1-projection", "project_point"),
+            $make!("ch2-rasterization", "barycentric"),
+            $make!("ch2-rasterization", "depth_test"),
+            $make!("ch2-rasterization", "edge_function"),
+            $make!("ch2-rasterization", "rasterize_triangle"),
+            $make!("ch3-ray-triangle", "barycentric_inside"),
+            $make!("ch3-ray-triangle", "bvh_traversal"),
+            $make!("ch3-ray-triangle", "moller_trumbore"),
+            $make!("ch3-ray-triangle", "ray_plane"),
+            $make!("ch4-sphere-tracing", "gradient_normal"),
+            $make!("ch4-sphere-tracing", "sphere_sdf"),
+            $make!("ch4-sphere-tracing", "sphere_trace"),
+            $make!("ch4-sphere-tracing", "trace_scene"),
+            $make!("ch5-reflection", "area_pdf"),
+            $make!("ch5-reflection", "cosine_hemisphere"),
+            $make!("ch5-reflection", "direct_light"),
+            $make!("ch5-reflection", "lambert_brdf"),
+            $make!("ch5-reflection", "point_light"),
+            $make!("ch6-global-illumination", "mc_integral"),
+            $make!("ch6-global-illumination", "mis_weight"),
+            $make!("ch6-global-illumination", "path_radiance"),
+            $make!("ch6-global-illumination", "russian_roulette"),
+        ]
+    };
+}
+pub(crate) use exercise_files;
+
 /// Every shipped exercise file, in chapter order.
-pub const STUBS: &[Stub] = &[
-    stub!("ch1-projection", "draw_edges"),
-    stub!("ch1-projection", "look_at"),
-    stub!("ch1-projection", "project_point"),
-    stub!("ch2-rasterization", "barycentric"),
-    stub!("ch2-rasterization", "depth_test"),
-    stub!("ch2-rasterization", "edge_function"),
-    stub!("ch2-rasterization", "rasterize_triangle"),
-    stub!("ch3-ray-triangle", "barycentric_inside"),
-    stub!("ch3-ray-triangle", "bvh_traversal"),
-    stub!("ch3-ray-triangle", "moller_trumbore"),
-    stub!("ch3-ray-triangle", "ray_plane"),
-    stub!("ch4-sphere-tracing", "gradient_normal"),
-    stub!("ch4-sphere-tracing", "sphere_sdf"),
-    stub!("ch4-sphere-tracing", "sphere_trace"),
-    stub!("ch4-sphere-tracing", "trace_scene"),
-    stub!("ch5-reflection", "area_pdf"),
-    stub!("ch5-reflection", "cosine_hemisphere"),
-    stub!("ch5-reflection", "direct_light"),
-    stub!("ch5-reflection", "lambert_brdf"),
-    stub!("ch5-reflection", "point_light"),
-    stub!("ch6-global-illumination", "mc_integral"),
-    stub!("ch6-global-illumination", "mis_weight"),
-    stub!("ch6-global-illumination", "path_radiance"),
-    stub!("ch6-global-illumination", "russian_roulette"),
-];
+pub const STUBS: &[Stub] = exercise_files!(stub);
 
 /// Writes every shipped stub under `dir` (`dir/chN-…/exercises/name.rs`),
 /// as a fresh copy of the exercises for a test or a new student; returns

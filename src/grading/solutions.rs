@@ -8,7 +8,7 @@ use std::path::Path;
 
 use super::course::{load, State};
 use super::exercise::Exercise;
-use super::shipped::Stub;
+use super::shipped::{exercise_files, Stub};
 
 macro_rules! solution {
     ($folder:literal, $name:literal) => {
@@ -27,32 +27,7 @@ macro_rules! solution {
 }
 
 /// Every exercise's solution, in the order of the shipped stubs.
-pub const SOLUTIONS: &[Stub] = &[
-    solution!("ch1-projection", "draw_edges"),
-    solution!("ch1-projection", "look_at"),
-    solution!("ch1-projection", "project_point"),
-    solution!("ch2-rasterization", "barycentric"),
-    solution!("ch2-rasterization", "depth_test"),
-    solution!("ch2-rasterization", "edge_function"),
-    solution!("ch2-rasterization", "rasterize_triangle"),
-    solution!("ch3-ray-triangle", "barycentric_inside"),
-    solution!("ch3-ray-triangle", "bvh_traversal"),
-    solution!("ch3-ray-triangle", "moller_trumbore"),
-    solution!("ch3-ray-triangle", "ray_plane"),
-    solution!("ch4-sphere-tracing", "gradient_normal"),
-    solution!("ch4-sphere-tracing", "sphere_sdf"),
-    solution!("ch4-sphere-tracing", "sphere_trace"),
-    solution!("ch4-sphere-tracing", "trace_scene"),
-    solution!("ch5-reflection", "area_pdf"),
-    solution!("ch5-reflection", "cosine_hemisphere"),
-    solution!("ch5-reflection", "direct_light"),
-    solution!("ch5-reflection", "lambert_brdf"),
-    solution!("ch5-reflection", "point_light"),
-    solution!("ch6-global-illumination", "mc_integral"),
-    solution!("ch6-global-illumination", "mis_weight"),
-    solution!("ch6-global-illumination", "path_radiance"),
-    solution!("ch6-global-illumination", "russian_roulette"),
-];
+pub const SOLUTIONS: &[Stub] = exercise_files!(solution);
 
 /// The solution of exercise `id` (`chN/name`).
 pub fn find(id: &str) -> Option<&'static Stub> {
