@@ -14,6 +14,7 @@ use crate::core::format::format_count;
 use crate::grading::build::{build_exercises, exercises_dir};
 use crate::grading::course;
 use crate::grading::exercise::{Exercise, Outcome};
+use crate::grading::predict;
 use crate::grading::process::{fresh_seed, reference, run_student, sandbox_gaps};
 use crate::grading::sandbox::{become_subreaper, kill_orphans};
 pub use crate::grading::stream::{describe, grade_parallel, grade_stream};
@@ -42,6 +43,11 @@ struct GradeCli {
     /// has passed. Grades nothing.
     #[arg(long, value_name = "EXERCISE")]
     solution: Option<String>,
+    /// Mark the answers to the predict questions
+    /// (`chapters/predictions.toml`) and explain each one answered.
+    /// Grades nothing.
+    #[arg(long)]
+    predict: bool,
     /// Put one exercise's file back as shipped (`ch3/bvh_traversal`); your
     /// version is kept beside it as `<name>.rs.orig`. Grades nothing.
     #[arg(long, value_name = "EXERCISE")]
@@ -120,6 +126,10 @@ pub fn grade_main() -> ExitCode {
                 ExitCode::from(1)
             }
         };
+    }
+    if cli.predict {
+        let dir = cli.exercises.clone().unwrap_or_else(exercises_dir);
+        return predict_main(&dir, &cli.chapters);
     }
     if let Some(id) = &cli.restore {
         return restore(id, &cli.exercises.clone().unwrap_or_else(exercises_dir));
@@ -219,6 +229,8 @@ pub fn grade_main() -> ExitCode {
     if !cli.reference {
         let states = course::update(&cli.out, &results);
         say(&mut stdout, &course::summary(&catalog, &states));
+        let dir = cli.exercises.clone().unwrap_or_else(exercises_dir);
+        say(&mut stdout, &predict_line(&dir));
     }
     if let Some(path) = &cli.json {
         let path = path.clone().unwrap_or_else(|| cli.out.join("results.json"));
@@ -231,6 +243,53 @@ pub fn grade_main() -> ExitCode {
         ExitCode::SUCCESS
     } else {
         ExitCode::from(1)
+    }
+}
+
+/// `--predict`: the sheet in `dir` marked and explained (the questions of
+/// `chapters` only, when some are named); exit 2 when it cannot be read.
+fn predict_main(dir: &std::path::Path, chapters: &[String]) -> ExitCode {
+    let mut wanted = Vec::new();
+    for c in chapters {
+        match c.trim_start_matches("ch").parse::<u32>() {
+            Ok(n) if (1..=6).contains(&n) => wanted.push(n),
+            _ => {
+                eprintln!("error: `{c}`: expected a chapter, ch1 to ch6");
+                return ExitCode::from(2);
+            }
+        }
+    }
+    let sheet = predict::bank().map_err(str::to_string).and_then(|bank| {
+        let problems = predict::problems(bank);
+        match problems.is_empty() {
+            true => predict::read_sheet(dir, bank),
+            false => Err(problems.join("\nerror: ")),
+        }
+    });
+    match sheet {
+        Ok(mut sheet) => {
+            if !wanted.is_empty() {
+                sheet.marks.retain(|(q, _)| wanted.contains(&q.chapter));
+            }
+            print!("{}", predict::explain(&sheet));
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// The predict line under the course's progress: the sheet's counts, or
+/// why it cannot be read (which does not change the grade).
+fn predict_line(dir: &std::path::Path) -> String {
+    let sheet = predict::bank()
+        .map_err(str::to_string)
+        .and_then(|bank| predict::read_sheet(dir, bank));
+    match sheet {
+        Ok(sheet) => sheet.summary(),
+        Err(e) => format!("predict: {e}\n"),
     }
 }
 

@@ -11,7 +11,9 @@
 //! ([`exercises`]) gives, for each file, a check that measures a candidate
 //! against raystep's own reference with a tolerance and the symptoms it
 //! recognises; the hints (three tiers per exercise, one per symptom) are
-//! data a teacher edits, `chapters/hints.toml` ([`manifest`]).
+//! data a teacher edits, `chapters/hints.toml` ([`manifest`]), and so are
+//! the predict questions, `chapters/questions.toml`, which the student
+//! answers in `chapters/predictions.toml` ([`predict`]).
 //!
 //! `cargo grade` ([`driver`]) runs each check in the student's process,
 //! which records every call of the student's code ([`bridge`]); the verdict
@@ -32,6 +34,7 @@ pub mod exercises;
 pub mod hints;
 pub mod live;
 pub mod manifest;
+pub mod predict;
 pub mod process;
 pub mod runner;
 pub mod safe_out;

@@ -82,7 +82,7 @@ pub(crate) use exercise_files;
 pub const STUBS: &[Stub] = exercise_files!(stub);
 
 /// Writes every shipped stub under `dir` (`dir/chN-…/exercises/name.rs`),
-/// as a fresh copy of the exercises for a test or a new student; returns
+/// and the blank predict sheet (`dir/predictions.toml`), as a fresh copy of the exercises for a test or a new student; returns
 /// `dir`.
 pub fn write_all(dir: &Path) -> std::io::Result<PathBuf> {
     for stub in STUBS {
@@ -92,6 +92,7 @@ pub fn write_all(dir: &Path) -> std::io::Result<PathBuf> {
         }
         std::fs::write(&path, stub.text)?;
     }
+    std::fs::write(dir.join(super::predict::SHEET), super::predict::SHIPPED)?;
     Ok(dir.to_path_buf())
 }
 

@@ -15,7 +15,7 @@ use raystep::grading;
 use crate::common;
 
 /// The quoted titles after `kind "` in `text`.
-fn cited<'a>(text: &'a str, kind: &str) -> Vec<&'a str> {
+pub(super) fn cited<'a>(text: &'a str, kind: &str) -> Vec<&'a str> {
     let open = format!("{kind} \"");
     let mut out = Vec::new();
     let mut rest = text;
@@ -48,7 +48,7 @@ fn squash(s: &str) -> String {
     s.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
-fn slide_list() -> BTreeSet<String> {
+pub(super) fn slide_list() -> BTreeSet<String> {
     let path = common::root().join("tests/project/lecture-slides.txt");
     std::fs::read_to_string(&path)
         .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
@@ -59,7 +59,7 @@ fn slide_list() -> BTreeSet<String> {
         .collect()
 }
 
-fn book_headings() -> BTreeSet<String> {
+pub(super) fn book_headings() -> BTreeSet<String> {
     let mut out = BTreeSet::new();
     let dir = common::root().join("book/src");
     for entry in std::fs::read_dir(&dir).unwrap().flatten() {

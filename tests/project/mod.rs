@@ -24,6 +24,7 @@ mod non_square;
 mod obj_quirks;
 mod outputs;
 mod placement;
+mod predict;
 mod reports;
 mod sample_limit;
 mod scene_docs;
