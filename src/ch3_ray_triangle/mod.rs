@@ -7,6 +7,7 @@
 //! | the ray equation r(t) = o + t d | [`ray`] |
 //! | ray-plane, then ray-triangle: solve for u, v, t (Möller-Trumbore), and the watertight test | [`triangle`] |
 //! | the same watertight test, rearranged for speed | [`watertight_fast`] |
+//! | the watertight test's bound on the rounding error of t, once for every lane width | [`rounding`] |
 //! | ray-mesh intersection: the naive loop over every triangle, and the bounding volume hierarchy of the `obvhs` crate | [`obvhs_bvh`] |
 //! | the hierarchical approach, written to be read: a median-split BVH and its front-to-back traversal | [`readable_bvh`] |
 //! | building the binary BVH top-down by SAH, O(n log n) on any triangles | [`bvh_robust`] |
@@ -35,6 +36,7 @@ pub mod ray;
 pub mod readable_bvh;
 pub mod render;
 pub mod report;
+pub mod rounding;
 pub mod spawn;
 pub mod stability;
 pub mod stage;

@@ -163,12 +163,7 @@ pub fn intersect_moller_trumbore(
 // ANCHOR_END: moller_trumbore_vt
 // ANCHOR_END: moller_trumbore
 
-/// γ(n) = n ε / (1 - n ε), the bound on the relative error of n f32
-/// operations (ε = 2⁻²⁴, half the machine epsilon).
-pub(crate) const fn gamma(n: i32) -> f32 {
-    let eps = f32::EPSILON * 0.5;
-    (n as f32 * eps) / (1.0 - n as f32 * eps)
-}
+pub(crate) use super::rounding::gamma;
 
 /// Route 3: the watertight test of Woop, Benthin and Wald (2013), following
 /// pbrt-v4's `IntersectTriangle`, with its conservative check that t > 0.
@@ -261,21 +256,16 @@ pub fn intersect_watertight(ray: &Ray, tri: [Vec3; 3], t_min: f32, t_max: f32) -
 // ANCHOR_END: watertight
 
 /// pbrt-v4's bound on the rounding error of the watertight test's t
-/// (`IntersectTriangle`, from the γ bounds of every operation that led to
-/// it): the sheared vertices `abc`, the edge functions `e` and 1/det. A t
-/// at or below it cannot be told from 0.
+/// ([`super::rounding`]): the sheared vertices `abc`, the edge functions
+/// `e` and 1/det. A t at or below it cannot be told from 0.
 fn t_rounding_bound(abc: [Vec3; 3], e: [f32; 3], inv_det: f32) -> f32 {
     let [a, b, c] = abc;
     let [e0, e1, e2] = e;
     let max_zt = a.z.abs().max(b.z.abs()).max(c.z.abs());
     let max_xt = a.x.abs().max(b.x.abs()).max(c.x.abs());
     let max_yt = a.y.abs().max(b.y.abs()).max(c.y.abs());
-    let delta_z = gamma(3) * max_zt;
-    let delta_x = gamma(5) * (max_xt + max_zt);
-    let delta_y = gamma(5) * (max_yt + max_zt);
-    let delta_e = 2.0 * (gamma(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
     let max_e = e0.abs().max(e1.abs()).max(e2.abs());
-    3.0 * (gamma(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs()
+    super::rounding::t_error_bound(max_xt, max_yt, max_zt, max_e, inv_det)
 }
 
 /// Whether the plane of `tri` lies ahead of the ray's origin (t > t_min),

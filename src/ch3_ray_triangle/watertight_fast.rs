@@ -20,7 +20,8 @@
 use glam::{Vec3, Vec3A, Vec3Swizzles, Vec4};
 
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::triangle::{ahead_in_f64, gamma, Hit};
+use crate::ch3_ray_triangle::rounding::t_error_bound;
+use crate::ch3_ray_triangle::triangle::{ahead_in_f64, Hit};
 
 /// One triangle stored by coordinate: `rows[0]` holds the x of (p0, p1,
 /// p2), `rows[1]` their y, `rows[2]` their z.
@@ -286,26 +287,12 @@ fn edges_in_f64(x: Vec3A, y: Vec3A) -> Vec3A {
 #[inline(always)]
 fn delta_t4(x: [Vec4; 3], y: [Vec4; 3], z: [Vec4; 3], e: [Vec4; 3], inv_det: Vec4) -> Vec4 {
     let max_abs = |v: [Vec4; 3]| v[0].abs().max(v[1].abs()).max(v[2].abs());
-    let (max_zt, max_xt, max_yt) = (max_abs(z), max_abs(x), max_abs(y));
-    let g = |n| Vec4::splat(gamma(n));
-    let delta_z = g(3) * max_zt;
-    let delta_x = g(5) * (max_xt + max_zt);
-    let delta_y = g(5) * (max_yt + max_zt);
-    let delta_e = Vec4::splat(2.0) * (g(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
-    let max_e = max_abs(e);
-    Vec4::splat(3.0) * (g(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs()
+    t_error_bound(max_abs(x), max_abs(y), max_abs(z), max_abs(e), inv_det)
 }
 
-/// pbrt-v4's bound on the rounding error of t (see the readable version).
+/// pbrt-v4's bound on the rounding error of t ([`super::rounding`]).
 #[inline(always)]
 fn delta_t(x: Vec3A, y: Vec3A, z: Vec3A, e: Vec3A, inv_det: f32) -> f32 {
-    let max_zt = z.abs().max_element();
-    let max_xt = x.abs().max_element();
-    let max_yt = y.abs().max_element();
-    let delta_z = gamma(3) * max_zt;
-    let delta_x = gamma(5) * (max_xt + max_zt);
-    let delta_y = gamma(5) * (max_yt + max_zt);
-    let delta_e = 2.0 * (gamma(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
-    let max_e = e.abs().max_element();
-    3.0 * (gamma(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs()
+    let max = |v: Vec3A| v.abs().max_element();
+    t_error_bound(max(x), max(y), max(z), max(e), inv_det)
 }

@@ -8,7 +8,7 @@
 //! of a Sobol point (the Owen scramble), in integer lanes.
 
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::triangle::gamma;
+use crate::ch3_ray_triangle::rounding::t_error_bound;
 use crate::ch3_ray_triangle::watertight_fast::WatertightRay;
 use crate::ch3_ray_triangle::wide_bvh::BoxRay;
 
@@ -235,18 +235,10 @@ pub(super) fn front_lane(
 // ANCHOR: trust_lane
 #[inline(always)]
 pub(super) fn trust_lane(f: &FrontLane) -> (f32, f32, bool) {
-    let g = gamma;
     let max3 = |v: &[f32; 3]| v[0].abs().max(v[1].abs()).max(v[2].abs());
     let inv_det = 1.0 / f.det;
     let t = f.ts * inv_det;
-    let (max_zt, max_xt, max_yt) = (max3(&f.z), max3(&f.x), max3(&f.y));
-    let delta_z = g(3) * max_zt;
-    let delta_x = g(5) * (max_xt + max_zt);
-    let delta_y = g(5) * (max_yt + max_zt);
-    let delta_e = 2.0 * (g(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
-    let max_e = max3(&f.e);
-    let delta_t =
-        3.0 * (g(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) * inv_det.abs();
+    let delta_t = t_error_bound(max3(&f.x), max3(&f.y), max3(&f.z), max3(&f.e), inv_det);
     (t, inv_det, t > delta_t)
 }
 // ANCHOR_END: trust_lane

@@ -13,7 +13,8 @@ use std::arch::x86_64::*;
 use super::super::bvh8::Bvh8;
 use super::super::lanes::{Leaf8, Node8, RayData, FAR_STRETCH, LEAF, W};
 use crate::ch3_ray_triangle::ray::Ray;
-use crate::ch3_ray_triangle::triangle::{gamma, Hit};
+use crate::ch3_ray_triangle::rounding::{t_error_bound, Lanes};
+use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch3_ray_triangle::wide_build::{nearest_child_next, pop_nearer, push_entered};
 
 #[target_feature(enable = "avx2,fma")]
@@ -146,34 +147,56 @@ macro_rules! front {
     }};
 }
 
+/// Eight lanes in one register, for the bound on t's rounding error
+/// written once over a lane type ([`t_error_bound`]). Its operations run
+/// AVX instructions: a value exists only inside this module's functions,
+/// which run only where the CPU has AVX2 (see the SAFETY note above).
+#[derive(Clone, Copy)]
+struct Eight(__m256);
+
+impl std::ops::Add for Eight {
+    type Output = Eight;
+    #[inline(always)]
+    fn add(self, o: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the CPU has AVX2.
+        Eight(unsafe { _mm256_add_ps(self.0, o.0) })
+    }
+}
+
+impl std::ops::Mul for Eight {
+    type Output = Eight;
+    #[inline(always)]
+    fn mul(self, o: Eight) -> Eight {
+        // SAFETY: as for `add`.
+        Eight(unsafe { _mm256_mul_ps(self.0, o.0) })
+    }
+}
+
+impl Lanes for Eight {
+    #[inline(always)]
+    fn splat(x: f32) -> Eight {
+        // SAFETY: as for `add`.
+        Eight(unsafe { _mm256_set1_ps(x) })
+    }
+    #[inline(always)]
+    fn abs(self) -> Eight {
+        // SAFETY: as for `add`.
+        Eight(unsafe { abs(self.0) })
+    }
+}
+
 /// The second half, for a leaf with candidates: t, 1/det, and which
 /// candidates pbrt-v4's error bound trusts: `(t, inv_det, hit, check)`.
 macro_rules! trust {
     ($f:expr) => {{
         let f: &Front = $f;
-        let (add, mul) = (_mm256_add_ps, _mm256_mul_ps);
+        let mul = _mm256_mul_ps;
         let max = |a, b| _mm256_max_ps(b, a);
         let max3 = |v: [__m256; 3]| max(max(abs(v[0]), abs(v[1])), abs(v[2]));
-        let g = |n| _mm256_set1_ps(gamma(n));
         let inv_det = _mm256_div_ps(_mm256_set1_ps(1.0), f.det);
         let t = mul(f.ts, inv_det);
-        let (max_zt, max_xt, max_yt) = (max3(f.zs), max3(f.x), max3(f.y));
-        let delta_z = mul(g(3), max_zt);
-        let delta_x = mul(g(5), add(max_xt, max_zt));
-        let delta_y = mul(g(5), add(max_yt, max_zt));
-        let delta_e = mul(
-            _mm256_set1_ps(2.0),
-            add(
-                add(mul(mul(g(2), max_xt), max_yt), mul(delta_y, max_xt)),
-                mul(delta_x, max_yt),
-            ),
-        );
-        let max_e = max3(f.e);
-        let inner = add(
-            add(mul(mul(g(3), max_e), max_zt), mul(delta_e, max_zt)),
-            mul(delta_z, max_e),
-        );
-        let delta_t = mul(mul(_mm256_set1_ps(3.0), inner), abs(inv_det));
+        let m = |v| Eight(max3(v));
+        let Eight(delta_t) = t_error_bound(m(f.x), m(f.y), m(f.zs), m(f.e), Eight(inv_det));
         let trusted = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_GT_OQ>(t, delta_t)) as u32;
         let (candidates, zeros) = (f.candidates, f.zeros);
         (
