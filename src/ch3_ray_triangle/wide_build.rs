@@ -3,12 +3,107 @@
 //! (which binary nodes become a wide node's children, which triangles a
 //! leaf holds), and the steps of a query that do not depend on the width
 //! (the order children are visited in, the nearest hit of a leaf, the rare
-//! lanes the one-triangle test decides).
+//! lanes the one-triangle test decides), and the two queries themselves,
+//! written once over `WideTree` for every width and instruction set.
 
 use obvhs::bvh2::Bvh2;
 
 use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, WatertightRay};
+
+/// A child reference with this bit set is a leaf (the rest of the bits
+/// index the tree's leaves); otherwise it indexes its inner nodes.
+pub(crate) const LEAF: u32 = 1 << 31;
+
+/// What the two queries ask of a wide tree of `N` children per node and
+/// `N` triangles per leaf: the four-wide tree ([`super::wide_bvh`]), the
+/// fast engine's eight-wide one, and that one with its AVX kernels, each
+/// with its own slab and leaf tests.
+pub(crate) trait WideTree<const N: usize> {
+    /// The ray, as this tree's tests take it (computed once per query).
+    type Ray<'r>;
+    /// The root's reference.
+    fn root(&self) -> u32;
+    /// The slab test at inner node `node`: the children the ray enters in
+    /// (0, t_max) as a bit mask, where it enters each, and the children.
+    fn enter(&self, r: &Self::Ray<'_>, node: usize, t_max: f32) -> (u32, [f32; N], &[u32; N]);
+    /// Leaf `leaf`'s nearest hit in (0, t_max) and its lane.
+    fn leaf_closest(&self, r: &Self::Ray<'_>, leaf: usize, t_max: f32) -> Option<(Hit, usize)>;
+    /// Whether any of leaf `leaf`'s triangles is hit in (0, t_max).
+    fn leaf_any(&self, r: &Self::Ray<'_>, leaf: usize, t_max: f32) -> bool;
+    /// The index, in the list the tree was built from, of leaf `leaf`'s
+    /// triangle in `lane`.
+    fn original(&self, leaf: usize, lane: usize) -> u32;
+}
+
+// ANCHOR: wide_closest
+/// The closest hit in (0, t_max): the entered children nearest first,
+/// skipping every subtree whose box starts beyond the nearest hit so far.
+/// `stack` holds the subtrees still to visit (deep enough for the tree).
+#[inline(always)]
+pub(crate) fn closest<const N: usize, T: WideTree<N>>(
+    tree: &T,
+    r: &T::Ray<'_>,
+    t_max: f32,
+    stack: &mut [(u32, f32)],
+) -> Option<Hit> {
+    let mut best: Option<Hit> = None;
+    let mut t_best = t_max;
+    let mut depth = 0;
+    let mut at = tree.root();
+    loop {
+        if at & LEAF == 0 {
+            let (entered, t_near, child) = tree.enter(r, at as usize, t_best);
+            if entered != 0 {
+                at = nearest_child_next(entered, child, &t_near, stack, &mut depth);
+                continue;
+            }
+        } else {
+            let leaf = (at & !LEAF) as usize;
+            if let Some((hit, lane)) = tree.leaf_closest(r, leaf, t_best) {
+                t_best = hit.t;
+                best = Some(Hit {
+                    triangle: tree.original(leaf, lane),
+                    ..hit
+                });
+            }
+        }
+        match pop_nearer(stack, &mut depth, t_best) {
+            Some(next) => at = next,
+            None => return best,
+        }
+    }
+}
+// ANCHOR_END: wide_closest
+
+/// Whether anything is hit in (0, t_max): stops at the first hit, in no
+/// particular order.
+#[inline(always)]
+pub(crate) fn occluded<const N: usize, T: WideTree<N>>(
+    tree: &T,
+    r: &T::Ray<'_>,
+    t_max: f32,
+    stack: &mut [(u32, f32)],
+) -> bool {
+    let mut depth = 0;
+    let mut at = tree.root();
+    loop {
+        if at & LEAF == 0 {
+            let (entered, _, child) = tree.enter(r, at as usize, t_max);
+            if let Some(next) = push_entered(entered, child, stack, &mut depth) {
+                at = next;
+                continue;
+            }
+        } else if tree.leaf_any(r, (at & !LEAF) as usize, t_max) {
+            return true;
+        }
+        if depth == 0 {
+            return false;
+        }
+        depth -= 1;
+        at = stack[depth].0;
+    }
+}
 
 // ANCHOR: open_children
 /// The children of a wide node made from binary node `n`: its two binary

@@ -21,13 +21,10 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{gamma, Hit};
 use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, Tri4, WatertightRay};
 use crate::ch3_ray_triangle::wide_build::{
-    any_checked, count_triangles, nearest_checked, nearest_child_next, nearest_lane, open_children,
-    triangles_under,
+    any_checked, closest, count_triangles, nearest_checked, nearest_lane, occluded, open_children,
+    triangles_under, WideTree, LEAF,
 };
 
-/// A child reference with this bit set is a leaf (the rest of the bits
-/// index [`WideBvh::leaves`]); otherwise it indexes [`WideBvh::nodes`].
-const LEAF: u32 = 1 << 31;
 /// Triangles per leaf, one per SIMD lane.
 const LANES: usize = 4;
 
@@ -226,109 +223,21 @@ impl WideBvh {
 
     /// The closest hit in (0, t_max); `Hit::triangle` indexes the list
     /// chapter 3's BVH was built from.
-    // ANCHOR: closest4
     pub fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
-        self.with_stack(|stack| self.closest_in(ray, t_max, stack))
-    }
-
-    /// [`WideBvh::closest`] with `stack` for the subtrees still to visit.
-    fn closest_in(&self, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)]) -> Option<Hit> {
-        let wr = WatertightRay::new(ray);
-        let br = BoxRay::new(ray);
-        let mut best: Option<Hit> = None;
-        let mut t_best = t_max;
-        let mut depth = 0;
-        let mut at = self.root;
-        loop {
-            if at & LEAF == 0 {
-                let node = &self.nodes[at as usize];
-                let (entered, t_near) = br.enter(node, t_best);
-                if entered != 0 {
-                    // Visit the nearest child next, stack the others.
-                    let t_near = t_near.to_array();
-                    at = nearest_child_next(entered, &node.child, &t_near, stack, &mut depth);
-                    continue;
-                }
-            } else {
-                let leaf = (at & !LEAF) as usize;
-                if let Some((hit, lane)) = self.leaf_closest(&wr, leaf, t_best) {
-                    t_best = hit.t;
-                    best = Some(Hit {
-                        triangle: self.original[leaf * LANES + lane],
-                        ..hit
-                    });
-                }
-            }
-            // Pop the next subtree that can still hold a nearer hit.
-            loop {
-                if depth == 0 {
-                    return best;
-                }
-                depth -= 1;
-                let (next, t_near) = stack[depth];
-                if t_near <= t_best {
-                    at = next;
-                    break;
-                }
-            }
-        }
-    }
-    // ANCHOR_END: closest4
-
-    /// The nearest hit among leaf `leaf`'s triangles in (0, t_max), and
-    /// its lane.
-    #[inline(always)]
-    fn leaf_closest(&self, wr: &WatertightRay, leaf: usize, t_max: f32) -> Option<(Hit, usize)> {
-        let h = wr.intersect4(&self.leaves[leaf], 0.0, t_max);
-        let (t, u, v) = (h.t.to_array(), h.u.to_array(), h.v.to_array());
-        let best = nearest_lane(h.hit, &t, &u, &v);
-        match h.check {
-            0 => best,
-            check => nearest_checked(wr, self.leaf_tris(leaf), check, t_max, best),
-        }
-    }
-
-    /// Leaf `leaf`'s triangles one by one, for the rare lanes.
-    fn leaf_tris(&self, leaf: usize) -> &[SoaTriangle] {
-        &self.tris[leaf * LANES..(leaf + 1) * LANES]
+        let r = (WatertightRay::new(ray), BoxRay::new(ray));
+        self.with_stack(|stack| closest(self, &r, t_max, stack))
     }
 
     /// Whether anything is hit in (0, t_max): stops at the first hit, in
     /// no particular order.
     pub fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
-        self.with_stack(|stack| self.occluded_in(ray, t_max, stack))
+        let r = (WatertightRay::new(ray), BoxRay::new(ray));
+        self.with_stack(|stack| occluded(self, &r, t_max, stack))
     }
 
-    /// [`WideBvh::occluded`] with `stack` for the subtrees still to visit.
-    fn occluded_in(&self, ray: &Ray, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
-        let wr = WatertightRay::new(ray);
-        let br = BoxRay::new(ray);
-        let mut depth = 0;
-        let mut at = self.root;
-        loop {
-            if at & LEAF == 0 {
-                let node = &self.nodes[at as usize];
-                let (mut entered, _) = br.enter(node, t_max);
-                while entered != 0 {
-                    let lane = entered.trailing_zeros() as usize;
-                    entered &= entered - 1;
-                    stack[depth] = (node.child[lane], 0.0);
-                    depth += 1;
-                }
-            } else {
-                let leaf = (at & !LEAF) as usize;
-                let h = wr.intersect4(&self.leaves[leaf], 0.0, t_max);
-                let checked = || any_checked(&wr, self.leaf_tris(leaf), h.check, t_max);
-                if h.hit != 0 || (h.check != 0 && checked()) {
-                    return true;
-                }
-            }
-            if depth == 0 {
-                return false;
-            }
-            depth -= 1;
-            at = stack[depth].0;
-        }
+    /// Leaf `leaf`'s triangles one by one, for the rare lanes.
+    fn leaf_tris(&self, leaf: usize) -> &[SoaTriangle] {
+        &self.tris[leaf * LANES..(leaf + 1) * LANES]
     }
 
     /// Runs `query` with a traversal stack deep enough for this tree: this
@@ -355,4 +264,49 @@ thread_local! {
     /// one per thread is enough).
     static STACK: std::cell::RefCell<[(u32, f32); ON_STACK]> =
         const { std::cell::RefCell::new([(0, 0.0); ON_STACK]) };
+}
+
+/// The four-wide tree's tests for the queries written once
+/// ([`super::wide_build::closest`], [`super::wide_build::occluded`]).
+impl WideTree<LANES> for WideBvh {
+    type Ray<'r> = (WatertightRay<'r>, BoxRay);
+
+    #[inline(always)]
+    fn root(&self) -> u32 {
+        self.root
+    }
+
+    #[inline(always)]
+    fn enter(
+        &self,
+        r: &Self::Ray<'_>,
+        node: usize,
+        t_max: f32,
+    ) -> (u32, [f32; LANES], &[u32; LANES]) {
+        let node = &self.nodes[node];
+        let (entered, t_near) = r.1.enter(node, t_max);
+        (entered, t_near.to_array(), &node.child)
+    }
+
+    #[inline(always)]
+    fn leaf_closest(&self, r: &Self::Ray<'_>, leaf: usize, t_max: f32) -> Option<(Hit, usize)> {
+        let h = r.0.intersect4(&self.leaves[leaf], 0.0, t_max);
+        let (t, u, v) = (h.t.to_array(), h.u.to_array(), h.v.to_array());
+        let best = nearest_lane(h.hit, &t, &u, &v);
+        match h.check {
+            0 => best,
+            check => nearest_checked(&r.0, self.leaf_tris(leaf), check, t_max, best),
+        }
+    }
+
+    #[inline(always)]
+    fn leaf_any(&self, r: &Self::Ray<'_>, leaf: usize, t_max: f32) -> bool {
+        let h = r.0.intersect4(&self.leaves[leaf], 0.0, t_max);
+        h.hit != 0 || (h.check != 0 && any_checked(&r.0, self.leaf_tris(leaf), h.check, t_max))
+    }
+
+    #[inline(always)]
+    fn original(&self, leaf: usize, lane: usize) -> u32 {
+        self.original[leaf * LANES + lane]
+    }
 }

@@ -20,8 +20,8 @@ use crate::ch3_ray_triangle::obvhs_bvh::padded_boxes;
 use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch3_ray_triangle::watertight_fast::SoaTriangle;
 use crate::ch3_ray_triangle::wide_build::{
-    any_checked, count_triangles, nearest_checked, nearest_child_next, nearest_lane, open_children,
-    pop_nearer, push_entered, triangles_under,
+    any_checked, closest, count_triangles, nearest_checked, nearest_lane, occluded, open_children,
+    triangles_under, WideTree,
 };
 
 use super::lanes::{enter, leaf_test, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
@@ -288,7 +288,8 @@ impl Bvh8 {
     }
 
     /// The closest hit in (0, t_max), `stack` holding at least
-    /// [`Bvh8::stack_size`] entries.
+    /// [`Bvh8::stack_size`] entries ([`closest`], with the portable lane
+    /// loops).
     #[inline(always)]
     pub(super) fn closest_with(
         &self,
@@ -296,37 +297,11 @@ impl Bvh8 {
         t_max: f32,
         stack: &mut [(u32, f32)],
     ) -> Option<Hit> {
-        let mut best: Option<Hit> = None;
-        let mut t_best = t_max;
-        let mut depth = 0;
-        let mut at = self.root;
-        loop {
-            if at & LEAF == 0 {
-                let node = &self.nodes[at as usize];
-                let (entered, t_near) = enter(r, node, t_best);
-                if entered != 0 {
-                    at = nearest_child_next(entered, &node.child, &t_near, stack, &mut depth);
-                    continue;
-                }
-            } else {
-                let l = (at & !LEAF) as usize;
-                if let Some((hit, lane)) = self.leaf_closest(r, l, t_best) {
-                    t_best = hit.t;
-                    best = Some(Hit {
-                        triangle: self.original[l * W + lane],
-                        ..hit
-                    });
-                }
-            }
-            match pop_nearer(stack, &mut depth, t_best) {
-                Some(next) => at = next,
-                None => return best,
-            }
-        }
+        closest(self, r, t_max, stack)
     }
 
     #[inline(always)]
-    fn leaf_closest(&self, r: &RayData, l: usize, t_max: f32) -> Option<(Hit, usize)> {
+    fn leaf_closest_lanes(&self, r: &RayData, l: usize, t_max: f32) -> Option<(Hit, usize)> {
         let h = leaf_test(r, &self.leaves[l], t_max);
         let best = nearest_lane(h.hit, &h.t, &h.u, &h.v);
         match h.check {
@@ -358,31 +333,45 @@ impl Bvh8 {
         &self.tris[l * W..(l + 1) * W]
     }
 
-    /// Whether anything is hit in (0, t_max).
+    /// Whether anything is hit in (0, t_max) ([`occluded`], with the
+    /// portable lane loops).
     #[inline(always)]
     pub(super) fn occluded_with(&self, r: &RayData, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
-        let mut depth = 0;
-        let mut at = self.root;
-        loop {
-            if at & LEAF == 0 {
-                let node = &self.nodes[at as usize];
-                let (entered, _) = enter(r, node, t_max);
-                if let Some(next) = push_entered(entered, &node.child, stack, &mut depth) {
-                    at = next;
-                    continue;
-                }
-            } else {
-                let l = (at & !LEAF) as usize;
-                let h = leaf_test(r, &self.leaves[l], t_max);
-                if h.hit != 0 || (h.check != 0 && self.leaf_any_checked(r, l, h.check, t_max)) {
-                    return true;
-                }
-            }
-            if depth == 0 {
-                return false;
-            }
-            depth -= 1;
-            at = stack[depth].0;
-        }
+        occluded(self, r, t_max, stack)
+    }
+}
+
+/// The eight-wide tree's portable lane loops for the queries written once
+/// ([`closest`], [`occluded`]); the AVX kernels have their own
+/// (`simd::avx`).
+impl WideTree<W> for Bvh8 {
+    type Ray<'r> = RayData<'r>;
+
+    #[inline(always)]
+    fn root(&self) -> u32 {
+        self.root
+    }
+
+    #[inline(always)]
+    fn enter(&self, r: &RayData, node: usize, t_max: f32) -> (u32, [f32; W], &[u32; W]) {
+        let node = &self.nodes[node];
+        let (entered, t_near) = enter(r, node, t_max);
+        (entered, t_near, &node.child)
+    }
+
+    #[inline(always)]
+    fn leaf_closest(&self, r: &RayData, leaf: usize, t_max: f32) -> Option<(Hit, usize)> {
+        self.leaf_closest_lanes(r, leaf, t_max)
+    }
+
+    #[inline(always)]
+    fn leaf_any(&self, r: &RayData, leaf: usize, t_max: f32) -> bool {
+        let h = leaf_test(r, &self.leaves[leaf], t_max);
+        h.hit != 0 || (h.check != 0 && self.leaf_any_checked(r, leaf, h.check, t_max))
+    }
+
+    #[inline(always)]
+    fn original(&self, leaf: usize, lane: usize) -> u32 {
+        self.original[leaf * W + lane]
     }
 }

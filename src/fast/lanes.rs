@@ -18,7 +18,7 @@ pub const W: usize = 8;
 /// Most triangles in a leaf.
 pub(super) const LEAF_SIZE: usize = 8;
 /// A child reference with this bit set is a leaf.
-pub(super) const LEAF: u32 = 1 << 31;
+pub(super) use crate::ch3_ray_triangle::wide_build::LEAF;
 /// How much a box's far distance is stretched: the readable tree's.
 pub(super) use crate::ch3_ray_triangle::wide_bvh::FAR_STRETCH;
 

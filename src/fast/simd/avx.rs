@@ -11,11 +11,11 @@
 use std::arch::x86_64::*;
 
 use super::super::bvh8::Bvh8;
-use super::super::lanes::{Leaf8, Node8, RayData, FAR_STRETCH, LEAF, W};
+use super::super::lanes::{Leaf8, Node8, RayData, FAR_STRETCH, W};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::rounding::{t_error_bound, Lanes};
 use crate::ch3_ray_triangle::triangle::Hit;
-use crate::ch3_ray_triangle::wide_build::{nearest_child_next, pop_nearer, push_entered};
+use crate::ch3_ray_triangle::wide_build::{self, WideTree};
 
 #[target_feature(enable = "avx2,fma")]
 #[inline]
@@ -96,9 +96,15 @@ macro_rules! front {
         let [sx, sy, sz] = r.s;
         let (add, sub, mul) = (_mm256_add_ps, _mm256_sub_ps, _mm256_mul_ps);
         let zero = _mm256_setzero_ps();
-        let z = [0, 1, 2].map(|j| sub(load(&pz[j]), oz));
-        let x = [0, 1, 2].map(|j| add(sub(load(&px[j]), ox), mul(sx, z[j])));
-        let y = [0, 1, 2].map(|j| add(sub(load(&py[j]), oy), mul(sy, z[j])));
+        // Three calls, not `[0, 1, 2].map(…)`: `map` is not inlined where
+        // this expands outside a `#[target_feature]` function (the
+        // traversals' `Kernels`), and its closure would then call every
+        // intrinsic out of line.
+        let zj = |j: usize| sub(load(&pz[j]), oz);
+        let z = [zj(0), zj(1), zj(2)];
+        let xj = |j: usize| add(sub(load(&px[j]), ox), mul(sx, z[j]));
+        let yj = |j: usize| add(sub(load(&py[j]), oy), mul(sy, z[j]));
+        let (x, y) = ([xj(0), xj(1), xj(2)], [yj(0), yj(1), yj(2)]);
         let e0 = sub(mul(x[1], y[2]), mul(y[1], x[2]));
         let e1 = sub(mul(x[2], y[0]), mul(y[2], x[0]));
         let e2 = sub(mul(x[0], y[1]), mul(y[0], x[1]));
@@ -118,7 +124,7 @@ macro_rules! front {
             _mm256_cmp_ps::<_CMP_GT_OQ>(max(max(e0, e1), e2), zero),
         );
         let det = add(add(e0, e1), e2);
-        let zs = z.map(|zj| mul(zj, sz));
+        let zs = [mul(z[0], sz), mul(z[1], sz), mul(z[2], sz)];
         let ts = add(add(mul(e0, zs[0]), mul(e1, zs[1])), mul(e2, zs[2]));
         // The lane loops' two cases (det < 0 and det > 0) as one: with
         // det's sign taken off det and ts (exact), 0 < ts <= t_max det.
@@ -257,21 +263,98 @@ fn nearest(t: __m256, inv_det: __m256, f: &Front, hit: u32) -> (Hit, usize) {
     (hit, lane)
 }
 
-/// The closest-hit and shadow traversals below, compiled with the
-/// instructions `$features` allows: once for AVX2 ([`v2`]) and once for
-/// AVX-512 ([`v512`]), where the compiler has 32 vector registers and mask
+/// Chapter 6's eight-wide tree with these kernels, for the queries
+/// written once ([`wide_build::closest`], [`wide_build::occluded`]): the
+/// ray kept in registers
+/// ([`Splat`]), a leaf's nearest hit found by a vector minimum (the last
+/// lane among equals, as `nearest_lane` picks) so that only its t, u and v
+/// leave the registers, and the shadow test stopping at its first half
+/// where no lane can hit. The same nodes and leaves in the same order as
+/// the portable loops, so the same hits, bit for bit.
+///
+/// Its methods run AVX instructions: a `Kernels` is made only in the
+/// `#[target_feature]` functions below (see the SAFETY note above).
+struct Kernels<'a> {
+    bvh: &'a Bvh8,
+}
+
+/// A ray for [`Kernels`]: splatted into registers, and as given, for the
+/// rare lanes the one-triangle test decides.
+struct AvxRay<'r> {
+    sp: Splat,
+    ray: &'r Ray,
+}
+
+impl WideTree<W> for Kernels<'_> {
+    type Ray<'r> = AvxRay<'r>;
+
+    #[inline(always)]
+    fn root(&self) -> u32 {
+        self.bvh.root
+    }
+
+    #[inline(always)]
+    fn enter(&self, r: &AvxRay, node: usize, t_max: f32) -> (u32, [f32; W], &[u32; W]) {
+        let node = &self.bvh.nodes[node];
+        // SAFETY: a `Kernels` exists only where the CPU has AVX2.
+        let (entered, t_near) = unsafe { enter_avx(&r.sp, node, t_max) };
+        (entered, t_near, &node.child)
+    }
+
+    #[inline(always)]
+    fn leaf_closest(&self, r: &AvxRay, l: usize, t_max: f32) -> Option<(Hit, usize)> {
+        // SAFETY: as for `enter`.
+        unsafe {
+            let f = front!(&r.sp, &self.bvh.leaves[l], t_max);
+            if f.candidates == 0 && f.zeros == 0 {
+                return None;
+            }
+            let (t, inv_det, hit, check) = trust!(&f);
+            let found = (hit != 0).then(|| nearest(t, inv_det, &f, hit));
+            match check {
+                0 => found,
+                // The rare lanes, by the one-triangle test.
+                _ => self
+                    .bvh
+                    .leaf_checked(&RayData::new(r.ray), l, check, t_max, found),
+            }
+        }
+    }
+
+    #[inline(always)]
+    fn leaf_any(&self, r: &AvxRay, l: usize, t_max: f32) -> bool {
+        // SAFETY: as for `enter`.
+        unsafe {
+            let f = front!(&r.sp, &self.bvh.leaves[l], t_max);
+            if f.candidates == 0 && f.zeros == 0 {
+                return false;
+            }
+            let (_, _, hit, check) = trust!(&f);
+            hit != 0
+                || (check != 0
+                    && self
+                        .bvh
+                        .leaf_any_checked(&RayData::new(r.ray), l, check, t_max))
+        }
+    }
+
+    #[inline(always)]
+    fn original(&self, l: usize, lane: usize) -> u32 {
+        self.bvh.original[l * W + lane]
+    }
+}
+
+/// The two queries with [`Kernels`], compiled with the instructions
+/// `$features` allows: once for AVX2 ([`v2`]) and once for AVX-512
+/// ([`v512`]), where the compiler has 32 vector registers and mask
 /// registers for the same intrinsics (measured faster; the book's
-/// appendix has the number). The helpers they call are inlined and
-/// compiled with the same features.
+/// appendix has the number). Everything they call is inlined and compiled
+/// with the same features.
 macro_rules! traversals {
     ($features:literal) => {
-        /// [`Bvh8::closest_with`] with these kernels, the leaf test kept in
-        /// registers: a leaf's nearest hit is found by a vector minimum (the last
-        /// lane among equals, as `nearest_lane` picks), and only its t, u and v
-        /// leave the registers. The same nodes and leaves in the same order, so
-        /// the same hit as the generic loop, bit for bit, written to `out` (a
-        /// returned one would be stored piecewise and read back whole, stalling
-        /// on store forwarding).
+        /// [`Bvh8::closest_with`] with these kernels, written to `out` (a
+        /// returned hit would be stored piecewise and read back whole,
+        /// stalling on store forwarding).
         #[target_feature(enable = $features)]
         #[inline]
         pub(in super::super) fn closest(
@@ -282,51 +365,14 @@ macro_rules! traversals {
             out: &mut Option<Hit>,
         ) {
             // The fallback builds its own RayData, so this one stays in registers.
-            let sp = &splat!(&RayData::new(ray));
-            let mut best: Option<Hit> = None;
-            let mut t_best = t_max;
-            let mut depth = 0;
-            let mut at = bvh.root;
-            loop {
-                if at & LEAF == 0 {
-                    let node = &bvh.nodes[at as usize];
-                    let (entered, t_near) = enter_avx(sp, node, t_best);
-                    if entered != 0 {
-                        at = nearest_child_next(entered, &node.child, &t_near, stack, &mut depth);
-                        continue;
-                    }
-                } else {
-                    let l = (at & !LEAF) as usize;
-                    let f = front!(sp, &bvh.leaves[l], t_best);
-                    if f.candidates != 0 || f.zeros != 0 {
-                        let (t, inv_det, hit, check) = trust!(&f);
-                        let mut found = (hit != 0).then(|| nearest(t, inv_det, &f, hit));
-                        if check != 0 {
-                            // The rare lanes, by the one-triangle test.
-                            let r = &RayData::new(ray);
-                            found = bvh.leaf_checked(r, l, check, t_best, found);
-                        }
-                        if let Some((hit, lane)) = found {
-                            t_best = hit.t;
-                            best = Some(Hit {
-                                triangle: bvh.original[l * W + lane],
-                                ..hit
-                            });
-                        }
-                    }
-                }
-                match pop_nearer(stack, &mut depth, t_best) {
-                    Some(next) => at = next,
-                    None => {
-                        *out = best;
-                        return;
-                    }
-                }
-            }
+            let r = AvxRay {
+                sp: splat!(&RayData::new(ray)),
+                ray,
+            };
+            *out = wide_build::closest(&Kernels { bvh }, &r, t_max, stack);
         }
 
-        /// [`Bvh8::occluded_with`] with these kernels, the leaf test stopping at
-        /// its first half where no lane can hit.
+        /// [`Bvh8::occluded_with`] with these kernels.
         #[target_feature(enable = $features)]
         #[inline]
         pub(in super::super) fn occluded(
@@ -335,37 +381,11 @@ macro_rules! traversals {
             t_max: f32,
             stack: &mut [(u32, f32)],
         ) -> bool {
-            // The fallback builds its own RayData, so this one stays in registers.
-            let sp = &splat!(&RayData::new(ray));
-            let mut depth = 0;
-            let mut at = bvh.root;
-            loop {
-                if at & LEAF == 0 {
-                    let node = &bvh.nodes[at as usize];
-                    let (entered, _) = enter_avx(sp, node, t_max);
-                    if let Some(next) = push_entered(entered, &node.child, stack, &mut depth) {
-                        at = next;
-                        continue;
-                    }
-                } else {
-                    let l = (at & !LEAF) as usize;
-                    let f = front!(sp, &bvh.leaves[l], t_max);
-                    if f.candidates != 0 || f.zeros != 0 {
-                        let (_, _, hit, check) = trust!(&f);
-                        if hit != 0
-                            || (check != 0
-                                && bvh.leaf_any_checked(&RayData::new(ray), l, check, t_max))
-                        {
-                            return true;
-                        }
-                    }
-                }
-                if depth == 0 {
-                    return false;
-                }
-                depth -= 1;
-                at = stack[depth].0;
-            }
+            let r = AvxRay {
+                sp: splat!(&RayData::new(ray)),
+                ray,
+            };
+            wide_build::occluded(&Kernels { bvh }, &r, t_max, stack)
         }
     };
 }
