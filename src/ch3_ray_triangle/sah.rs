@@ -28,6 +28,10 @@ pub const TRIANGLE_COST: f64 = 1.0;
 /// makes the node a leaf.
 pub type Split = Option<(usize, f32)>;
 
+/// Something that chooses a node's split from its triangles' boxes and
+/// centroids (the reference, or a student's).
+pub type SplitFn<'a> = dyn FnMut(&[[Vec3; 2]], &[Vec3]) -> Split + 'a;
+
 /// Half a box's surface area, in f64 (xy + yz + zx; the half does not
 /// change any ratio of areas).
 pub fn half_area(min: Vec3, max: Vec3) -> f64 {
@@ -47,7 +51,7 @@ pub fn sah_split(boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Split {
     });
     let area = half_area(node.min, node.max);
     let mut best: Option<(f64, usize, f32)> = None;
-    for axis in 0..3 {
+    for axis in [0, 1, 2] {
         let mut ids: Vec<usize> = (0..n).collect();
         ids.sort_by(|&a, &b| centroids[a][axis].total_cmp(&centroids[b][axis]));
         // right[k]: the area of the box around ids[k..].
@@ -96,10 +100,7 @@ pub fn build(tris: &[[Vec3; 3]]) -> ReadableBvh {
 /// The tree over `tris` built top-down with `split` choosing each split
 /// of a node of two or more triangles (a node of one is a leaf); an error
 /// when a split names no axis, is not a number, or leaves a side empty.
-pub fn build_with(
-    tris: &[[Vec3; 3]],
-    split: &mut dyn FnMut(&[[Vec3; 2]], &[Vec3]) -> Split,
-) -> Result<ReadableBvh, String> {
+pub fn build_with(tris: &[[Vec3; 3]], split: &mut SplitFn) -> Result<ReadableBvh, String> {
     let boxes: Vec<Aabb> = tris.iter().map(Aabb::around).collect();
     let centroids: Vec<Vec3> = tris.iter().map(|[a, b, c]| (*a + *b + *c) / 3.0).collect();
     let mut order: Vec<u32> = (0..tris.len() as u32).collect();

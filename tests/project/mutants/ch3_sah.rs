@@ -98,7 +98,8 @@ fn sweep(k: Knobs, boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f3
         measure(k, a, b)
     };
     let mut best: Option<(f32, usize, f32)> = None;
-    for axis in 0..if k.x_only { 1 } else { 3 } {
+    let axes: &[usize] = if k.x_only { &[0] } else { &[0, 1, 2] };
+    for &axis in axes {
         let mut ids: Vec<usize> = (0..n).collect();
         ids.sort_by(|&a, &b| centroids[a][axis].total_cmp(&centroids[b][axis]));
         for s in 1..n {

@@ -42,9 +42,12 @@ pub const COSTLY: Symptom = Symptom {
     name: "the tree costs more than the SAH's",
 };
 
-/// The hand-made nodes: (what, boxes, centroids, whether it must split,
-/// and on which axis). Boxes are given directly, as the node passes them.
-fn hand_nodes() -> Vec<(&'static str, Vec<[Vec3; 2]>, Vec<Vec3>, Option<usize>)> {
+/// A hand-made node: what it is, its boxes and centroids, and the axis
+/// it must be split on (`None`: it must stay a leaf).
+type HandNode = (&'static str, Vec<[Vec3; 2]>, Vec<Vec3>, Option<usize>);
+
+/// The hand-made nodes. Boxes are given directly, as the node passes them.
+fn hand_nodes() -> Vec<HandNode> {
     let v = Vec3::new;
     // Four triangles whose boxes are all the unit cube: any split costs
     // 1 + 4, the leaf 4.
