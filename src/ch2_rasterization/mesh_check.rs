@@ -80,15 +80,21 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
 }
 
 /// Runs every check on `mesh`.
+pub fn check_mesh(mesh: &Mesh) -> MeshCheck {
+    check_triangles(&mesh.triangles)
+}
+
+/// Runs every check on a mesh given by its triangles alone (the vertex
+/// indices; positions play no part).
 // ANCHOR: check_mesh
 // ANCHOR: check_mesh_count
-pub fn check_mesh(mesh: &Mesh) -> MeshCheck {
+pub fn check_triangles(triangles: &[[u32; 3]]) -> MeshCheck {
     let mut check = MeshCheck::default();
     // Edge → the triangles on it, with the direction each walks it.
     let mut edges: BTreeMap<[u32; 2], Vec<(usize, bool)>> = BTreeMap::new();
     // Vertex → its triangles.
     let mut around: BTreeMap<u32, Vec<usize>> = BTreeMap::new();
-    for (t, &[a, b, c]) in mesh.triangles.iter().enumerate() {
+    for (t, &[a, b, c]) in triangles.iter().enumerate() {
         if a == b || b == c || c == a {
             check.degenerate_triangles += 1;
             continue;
@@ -129,10 +135,10 @@ pub fn check_mesh(mesh: &Mesh) -> MeshCheck {
         let mut parent: Vec<usize> = (0..tris.len()).collect();
         for i in 0..tris.len() {
             for j in i + 1..tris.len() {
-                let shares_edge = mesh.triangles[tris[i]]
+                let shares_edge = triangles[tris[i]]
                     .iter()
                     .filter(|&&u| u != v)
-                    .any(|u| mesh.triangles[tris[j]].contains(u));
+                    .any(|u| triangles[tris[j]].contains(u));
                 if shares_edge {
                     let (a, b) = (find(&mut parent, i), find(&mut parent, j));
                     parent[a] = b;

@@ -11,6 +11,7 @@
 //! | ray-mesh intersection: the naive loop over every triangle, and the bounding volume hierarchy of the `obvhs` crate | [`obvhs_bvh`] |
 //! | the hierarchical approach, written to be read: a median-split BVH and its front-to-back traversal | [`readable_bvh`] |
 //! | building the binary BVH top-down by SAH, O(n log n) on any triangles | [`bvh_robust`] |
+//! | the surface area heuristic, written to be read: one node's split by a full sweep, and the readable tree built with it | [`sah`] |
 //! | the BVH in the four-wide layout the shading chapters trace, and the collapse it shares with chapter 6's eight-wide one | [`wide_bvh`], [`wide_build`] |
 //! | what is traced and what a first hit shows (depth, normal, barycentrics) | [`geometry`], [`render`] |
 //! | leaving a surface without hitting it again | [`spawn`] |
@@ -37,6 +38,7 @@ pub mod readable_bvh;
 pub mod render;
 pub mod report;
 pub mod rounding;
+pub mod sah;
 pub mod spawn;
 pub mod stability;
 pub mod stage;

@@ -1,5 +1,5 @@
 //! The student's functions as the checks call them: [`Students`] names
-//! the 24 exercise functions with raystep's own types, and [`checks`]
+//! the 26 exercise functions with raystep's own types, and [`checks`]
 //! gives each exercise's check called on them through [`bridge::call`],
 //! which records each call in the student's process and replays it in the
 //! grader's (see [`bridge`]).
@@ -39,10 +39,12 @@ pub trait Students {
         depth: &mut [f32],
         image: &mut [Vec3],
     );
+    fn manifold_counts(triangles: &[[u32; 3]]) -> (usize, usize, usize, usize);
     fn ray_plane(o: Vec3, d: Vec3, n: Vec3, c: f32) -> Option<f32>;
     fn barycentric_inside(p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)>;
     fn moller_trumbore(o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)>;
     fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit>;
+    fn sah_split(boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f32)>;
     fn sphere_sdf(p: Vec3, center: Vec3, radius: f32) -> f32;
     fn sphere_trace(
         sdf: &dyn Fn(Vec3) -> f32,
@@ -106,10 +108,12 @@ replayed! {
     barycentric(pi: Vec2, pj: Vec2, pk: Vec2, p: Vec2) -> Option<Vec3>;
     depth_test(depth: &mut [f32], index: usize, z: f32) -> bool;
     rasterize_triangle(v: [Vec3; 3], colors: [Vec3; 3], width: u32, height: u32, depth: &mut [f32], image: &mut [Vec3]);
+    manifold_counts(triangles: &[[u32; 3]]) -> (usize, usize, usize, usize);
     ray_plane(o: Vec3, d: Vec3, n: Vec3, c: f32) -> Option<f32>;
     barycentric_inside(p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)>;
     moller_trumbore(o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)>;
     closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit>;
+    sah_split(boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f32)>;
     sphere_sdf(p: Vec3, center: Vec3, radius: f32) -> f32;
     sphere_trace(sdf: &dyn Fn(Vec3) -> f32, origin: Vec3, dir: Vec3, epsilon: f32, max_steps: u32, max_distance: f32) -> Option<f32>;
     gradient_normal(sdf: &dyn Fn(Vec3) -> f32, p: Vec3, h: f32) -> Vec3;
@@ -123,37 +127,6 @@ replayed! {
     russian_roulette(value: f64, q: f64, u: f64) -> f64;
     mis_weight(pdf_f: f64, pdf_g: f64) -> f64;
     path_radiance(scene: &paths::PathScene, origin: Vec3, dir: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3;
-}
-
-impl Wire for Hit {
-    fn put(&self, out: &mut Vec<u8>) {
-        (self.t, self.u, self.v, self.triangle).put(out);
-    }
-    fn get(input: &mut &[u8]) -> Option<Self> {
-        let (t, u, v, triangle) = <(f32, f32, f32, u32)>::get(input)?;
-        Some(Hit { t, u, v, triangle })
-    }
-}
-
-impl Wire for paths::Tally {
-    fn put(&self, out: &mut Vec<u8>) {
-        let t = self;
-        (t.bounces, t.vertices, t.light_samples, t.lights_found).put(out);
-        (t.shadow_rays, t.below, t.over_budget).put(out);
-    }
-    fn get(input: &mut &[u8]) -> Option<Self> {
-        let (bounces, vertices, light_samples, lights_found) = Wire::get(input)?;
-        let (shadow_rays, below, over_budget) = Wire::get(input)?;
-        Some(paths::Tally {
-            bounces,
-            vertices,
-            light_samples,
-            lights_found,
-            shadow_rays,
-            below,
-            over_budget,
-        })
-    }
 }
 
 /// A call with nothing but arguments and an answer.
@@ -353,6 +326,9 @@ pub fn checks<S: Students>() -> Vec<Entry> {
         ("ch2/rasterize_triangle", || {
             ch2::check_rasterize_triangle(rasterize::<S>)
         }),
+        ("ch2/manifold", || {
+            ch2::check_manifold(|t| pure(&t.to_vec(), || S::manifold_counts(t)))
+        }),
         ("ch3/ray_plane", || {
             ch3::check_ray_plane(|o, d, n, c| pure(&(o, d, n, c), || S::ray_plane(o, d, n, c)))
         }),
@@ -364,6 +340,14 @@ pub fn checks<S: Students>() -> Vec<Entry> {
         }),
         ("ch3/bvh_traversal", || {
             ch3::check_bvh_traversal(closest_hit::<S>)
+        }),
+        ("ch3/sah", || {
+            // The node's boxes and centroids by their bits' hash: a node
+            // holds up to the whole scene.
+            ch3::check_sah(|b, c| {
+                let args = (b.len(), fingerprint(b.as_flattened()), fingerprint(c));
+                pure(&args, || S::sah_split(b, c))
+            })
         }),
         ("ch4/sphere_sdf", || {
             ch4::check_sphere_sdf(|p, c, r| pure(&(p, c, r), || S::sphere_sdf(p, c, r)))

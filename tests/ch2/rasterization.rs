@@ -374,7 +374,7 @@ fn exercise_references_pass() {
         .into_iter()
         .filter(|e| e.chapter == 2)
         .collect();
-    assert_eq!(ex.len(), 4);
+    assert_eq!(ex.len(), 5);
     for e in &ex {
         assert!(Path::new(env!("CARGO_MANIFEST_DIR")).join(e.file).is_file());
         assert!(grading::run(e).is_pass(), "{}", e.id());

@@ -302,7 +302,7 @@ fn ch3_exercise_references_pass() {
         .into_iter()
         .filter(|e| e.chapter == 3)
         .collect();
-    assert_eq!(exercises.len(), 4);
+    assert_eq!(exercises.len(), 5);
     for ex in &exercises {
         let outcome = raystep::grading::run(ex);
         assert!(

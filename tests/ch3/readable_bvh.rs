@@ -5,6 +5,7 @@ use glam::Vec3;
 use raystep::ch3_ray_triangle::obvhs_bvh::{closest_naive, Bvh, Triangles};
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch3_ray_triangle::readable_bvh::{closest_hit, NodeKind, ReadableBvh, MAX_LEAF};
+use raystep::ch3_ray_triangle::sah;
 use raystep::ch3_ray_triangle::triangle::{Hit, Intersector};
 use raystep::core::sampling::random;
 use raystep::grading::exercises::ch3::{check_bvh_traversal, same_closest_hit};
@@ -294,4 +295,90 @@ fn the_counted_traversal_is_the_books_line_for_line() {
         assert_eq!(format!("{got:?}"), format!("{want:?}"));
         assert!(work.box_tests > 0);
     }
+}
+
+/// `n` small triangles in four tight clusters far apart, most in one.
+fn clusters(n: u64) -> Vec<[Vec3; 3]> {
+    let centres = [
+        Vec3::ZERO,
+        Vec3::new(9.0, 0.0, 0.0),
+        Vec3::new(0.0, 7.0, 1.0),
+        Vec3::new(3.0, 3.0, 8.0),
+    ];
+    (0..n)
+        .map(|i| {
+            let r = |d| random(73, i, 0, d) * 2.0 - 1.0;
+            let c = centres[if i % 8 < 5 { 0 } else { (i % 8 - 4) as usize }];
+            let c = c + Vec3::new(r(0), r(1), r(2)) * 0.3;
+            [0, 1, 2].map(|k| c + Vec3::new(r(3 + 3 * k), r(4 + 3 * k), r(5 + 3 * k)) * 0.02)
+        })
+        .collect()
+}
+
+#[test]
+fn the_sah_tree_holds_every_triangle_once_and_finds_the_naive_hits() {
+    let mut all = meshes();
+    all.push(("clusters", clusters(2000)));
+    for (name, tris) in all {
+        let bvh = sah::build(&tris);
+        let mut seen = vec![0u32; tris.len()];
+        for node in &bvh.nodes {
+            match node.kind {
+                NodeKind::Leaf { first, count } => {
+                    for &id in &bvh.order[first as usize..(first + count) as usize] {
+                        seen[id as usize] += 1;
+                        for p in tris[id as usize] {
+                            assert!(
+                                p.cmpge(node.bounds.min).all() && p.cmple(node.bounds.max).all()
+                            );
+                        }
+                    }
+                }
+                NodeKind::Inner { left, right } => {
+                    // Children after their parent, inside its box.
+                    for c in [left, right] {
+                        let child = bvh.nodes[c as usize].bounds;
+                        assert!(c as usize > 0 && child.min.cmpge(node.bounds.min).all());
+                        assert!(child.max.cmple(node.bounds.max).all(), "{name}");
+                    }
+                }
+            }
+        }
+        assert!(seen.iter().all(|&s| s == 1), "{name}");
+        for (ray, t_max) in rays(&tris, 2_000) {
+            let ours = bvh.closest(&ray, t_max);
+            let naive = closest_naive(&tris, &ray, t_max, Intersector::Watertight);
+            assert!(
+                same_closest_hit(ours, naive, &tris, &ray),
+                "{name}: SAH tree {ours:?} vs naive {naive:?} on {ray:?} to {t_max}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_sah_tree_costs_less_than_the_median_tree() {
+    let mut all = meshes();
+    all.push(("clusters", clusters(2000)));
+    for (name, tris) in all {
+        let (ours, median) = (
+            sah::tree_cost(&sah::build(&tris)),
+            sah::tree_cost(&ReadableBvh::build(&tris)),
+        );
+        // A plane cannot separate one centroid: those stay one leaf.
+        if name != "coincident centroids" {
+            assert!(ours <= median * 1.000_001, "{name}: {ours} > {median}");
+        }
+        // Where the triangles cluster, the median cuts through clusters.
+        if name == "clusters" {
+            assert!(median >= 1.5 * ours, "{name}: {median} against {ours}");
+        }
+    }
+    // Copies sharing one centroid: nothing to split, one leaf.
+    let one = sah::build(&coincident(50));
+    assert_eq!(one.nodes.len(), 1);
+    // The split of a node whose boxes are all one cube: a leaf.
+    let cube = [Vec3::ZERO, Vec3::ONE];
+    let centroids = [0.2, 0.4, 0.6, 0.8].map(|x| Vec3::new(x, 0.5, 0.5));
+    assert_eq!(sah::sah_split(&[cube; 4], &centroids), None);
 }

@@ -6,7 +6,9 @@ use raystep::grading::{Check, Exercise, Symptom};
 
 pub mod ch1;
 pub mod ch2;
+pub mod ch2_manifold;
 pub mod ch3;
+pub mod ch3_sah;
 pub mod ch4;
 pub mod ch5;
 pub mod ch6;

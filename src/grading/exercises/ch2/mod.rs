@@ -1,5 +1,6 @@
 //! Chapter 2's exercises and how each is graded. The capstone's check is
-//! in [`raster`] and [`shading`], the mistakes it can name in [`model`].
+//! in [`raster`] and [`shading`], the mistakes it can name in [`model`];
+//! the manifold counts' check is in [`manifold`].
 
 use glam::{Vec2, Vec3, Vec3Swizzles};
 
@@ -8,10 +9,12 @@ use crate::grading::exercise::{Check, Exercise, Symptom};
 use crate::grading::exercises::draws::{fold_drawn, worst_drawn, Draws};
 
 mod common;
+pub mod manifold;
 pub mod model;
 pub mod raster;
 pub mod shading;
 
+pub use manifold::{check_manifold, ManifoldFn};
 pub use raster::{check_rasterize_triangle, fill_rule_triangles, RasterFn};
 
 /// The edge function with the opposite sign.
@@ -116,6 +119,19 @@ pub fn exercises() -> Vec<Exercise> {
                 DEPTH_TIE,
             ],
             reference: || check_rasterize_triangle(triangle::rasterize_triangle),
+        },
+        Exercise {
+            chapter: 2,
+            name: "manifold",
+            file: "chapters/ch2-rasterization/exercises/manifold.rs",
+            symptoms: &[
+                manifold::BOUNDARY,
+                manifold::BOOK_EDGES,
+                manifold::FANS,
+                manifold::ORIENTATION,
+                manifold::REPEATED_INDEX,
+            ],
+            reference: || check_manifold(manifold::reference_counts),
         },
     ]
 }

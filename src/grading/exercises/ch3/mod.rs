@@ -6,8 +6,10 @@ use crate::grading::exercise::Exercise;
 mod bvh;
 mod bvh_deep;
 mod bvh_symptoms;
+pub mod sah;
 mod triangle_checks;
 pub use bvh::*;
+pub use sah::{check_sah, SahFn};
 pub use triangle_checks::*;
 
 /// Chapter 3's exercises, in order.
@@ -40,6 +42,18 @@ pub fn exercises() -> Vec<Exercise> {
             file: "chapters/ch3-ray-triangle/exercises/bvh_traversal.rs",
             symptoms: SYMPTOMS,
             reference: || check_bvh_traversal(crate::grading::counted::closest_hit),
+        },
+        Exercise {
+            chapter: 3,
+            name: "sah",
+            file: "chapters/ch3-ray-triangle/exercises/sah.rs",
+            symptoms: &[
+                sah::EMPTY_CHILD,
+                sah::NEVER_LEAF,
+                sah::ONE_AXIS,
+                sah::COSTLY,
+            ],
+            reference: || check_sah(crate::ch3_ray_triangle::sah::sah_split),
         },
     ]
 }

@@ -50,6 +50,9 @@ impl Students for Student {
     ) {
         student::ch2::rasterize_triangle::rasterize_triangle(v, colors, width, height, depth, image)
     }
+    fn manifold_counts(triangles: &[[u32; 3]]) -> (usize, usize, usize, usize) {
+        student::ch2::manifold::manifold_counts(triangles)
+    }
     fn ray_plane(o: Vec3, d: Vec3, n: Vec3, c: f32) -> Option<f32> {
         student::ch3::ray_plane::ray_plane(o, d, n, c)
     }
@@ -61,6 +64,9 @@ impl Students for Student {
     }
     fn closest_hit(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
         student::ch3::bvh_traversal::closest_hit(bvh, ray, t_max)
+    }
+    fn sah_split(boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f32)> {
+        student::ch3::sah::sah_split(boxes, centroids)
     }
     fn sphere_sdf(p: Vec3, center: Vec3, radius: f32) -> f32 {
         student::ch4::sphere_sdf::sphere_sdf(p, center, radius)

@@ -1,0 +1,331 @@
+//! Exercise 3.5, one node's split by the surface area heuristic, graded
+//! by the trees it builds rather than by their shape: the grader builds
+//! the whole tree with the student's choice at every node (the lesson's
+//! [`build_with`]), checks that every split leaves both children
+//! non-empty, and compares the tree's SAH cost ([`tree_cost`]) and the
+//! box and triangle tests of rays through it with the tree of the
+//! lesson's full sweep ([`sah_split`]), on hand-made nodes and on scenes
+//! drawn from the run's seed.
+
+use glam::Vec3;
+
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::ch3_ray_triangle::readable_bvh::ReadableBvh;
+use crate::ch3_ray_triangle::sah::{build_with, sah_split, tree_cost, Split};
+use crate::grading::counted;
+use crate::grading::exercise::{Check, Symptom};
+use crate::grading::exercises::draws::Draws;
+use crate::grading::work::Work;
+
+/// A node's split as the exercise asks for it.
+pub type SahFn = fn(&[[Vec3; 2]], &[Vec3]) -> Split;
+
+/// How much more a tree may cost than the full sweep's, as a fraction.
+pub const COST_MARGIN: f64 = 0.10;
+/// How much more work rays may do in it, as a fraction.
+pub const WORK_MARGIN: f64 = 0.25;
+
+/// A split that leaves a child empty (or names no axis).
+pub const EMPTY_CHILD: Symptom = Symptom {
+    name: "a split left a child empty",
+};
+/// A node split where a leaf costs less.
+pub const NEVER_LEAF: Symptom = Symptom {
+    name: "a split where a leaf is cheaper",
+};
+/// Splits along one axis only.
+pub const ONE_AXIS: Symptom = Symptom {
+    name: "a split along y or z was missed",
+};
+/// A valid tree that costs too much.
+pub const COSTLY: Symptom = Symptom {
+    name: "the tree costs more than the SAH's",
+};
+
+/// A hand-made node: what it is, its boxes and centroids, and the axis
+/// it must be split on (`None`: it must stay a leaf).
+type HandNode = (&'static str, Vec<[Vec3; 2]>, Vec<Vec3>, Option<usize>);
+
+/// The hand-made nodes. Boxes are given directly, as the node passes them.
+fn hand_nodes() -> Vec<HandNode> {
+    let v = Vec3::new;
+    // Four triangles whose boxes are all the unit cube: any split costs
+    // 1 + 4, the leaf 4.
+    let cube = [v(0.0, 0.0, 0.0), v(1.0, 1.0, 1.0)];
+    let spread = vec![
+        v(0.2, 0.5, 0.4),
+        v(0.6, 0.3, 0.5),
+        v(0.4, 0.7, 0.6),
+        v(0.8, 0.4, 0.3),
+    ];
+    let mut nodes = vec![(
+        "four triangles whose boxes are all the unit cube",
+        vec![cube; 4],
+        spread,
+        None,
+    )];
+    // Two small triangles far apart along each axis: a split on it.
+    for (axis, what) in [
+        (0, "two small triangles 10 apart along x"),
+        (1, "two small triangles 10 apart along y"),
+        (2, "two small triangles 10 apart along z"),
+    ] {
+        let mut far = Vec3::ZERO;
+        far[axis] = 10.0;
+        let b = |c: Vec3| [c - 0.1, c + 0.1];
+        nodes.push((
+            what,
+            vec![b(Vec3::ZERO), b(far)],
+            vec![Vec3::ZERO, far],
+            Some(axis),
+        ));
+    }
+    // One centroid, three different boxes: no plane separates them.
+    nodes.push((
+        "three triangles with one centroid",
+        vec![
+            [v(-1.0, -0.1, -0.1), v(1.0, 0.1, 0.1)],
+            [v(-0.1, -1.0, -0.1), v(0.1, 1.0, 0.1)],
+            [v(-0.1, -0.1, -1.0), v(0.1, 0.1, 1.0)],
+        ],
+        vec![Vec3::ZERO; 3],
+        None,
+    ));
+    nodes
+}
+
+/// A drawn scene: what it is, and its triangles.
+fn drawn_scene(d: &mut Draws) -> (String, Vec<[Vec3; 3]>) {
+    let scale = d.decades(-3.0, 3.0);
+    let place = d.place_for(scale, 3.0);
+    let n = d.count(2, 400);
+    let small = |d: &mut Draws, c: Vec3, size: f32| {
+        [
+            c + d.in_cube() * size,
+            c + d.in_cube() * size,
+            c + d.in_cube() * size,
+        ]
+    };
+    let kind = d.count(0, 7);
+    let (what, mut tris): (&str, Vec<[Vec3; 3]>) = match kind {
+        0 => {
+            let centres: Vec<Vec3> = (0..d.count(1, 6)).map(|_| d.in_cube()).collect();
+            let tris = (0..n)
+                .map(|_| {
+                    let c = centres[d.count(0, centres.len() - 1)] + d.in_cube() * 0.05;
+                    small(d, c, 0.01)
+                })
+                .collect();
+            ("clusters", tris)
+        }
+        1 => {
+            let axis = d.count(0, 2);
+            let tris = (0..n)
+                .map(|_| {
+                    let mut c = d.in_cube() * 0.2;
+                    c[axis] = d.unit().powi(6) * 4.0;
+                    small(d, c, 0.01)
+                })
+                .collect();
+            ("skewed along one axis", tris)
+        }
+        2 => {
+            let tris = (0..n)
+                .map(|k| {
+                    let size = if k % 16 == 0 { 1.0 } else { 0.01 };
+                    let c = d.in_cube();
+                    small(d, c, size)
+                })
+                .collect();
+            ("a few big triangles among many small", tris)
+        }
+        3 => {
+            let tris = (0..n)
+                .map(|_| {
+                    let (c, size) = (d.in_cube(), d.decades(-2.0, -0.5));
+                    small(d, c, size)
+                })
+                .map(|t| t.map(|p| Vec3::new(p.x, p.y, 0.0)))
+                .collect();
+            ("flat (every z equal)", tris)
+        }
+        4 => {
+            // Centroids exactly at the origin (u + (-u) + 0 is exact), and
+            // half the time a cluster beside them.
+            let mut tris: Vec<[Vec3; 3]> = (0..n.div_ceil(2))
+                .map(|_| {
+                    let u = d.in_cube();
+                    [u, -u, Vec3::ZERO]
+                })
+                .collect();
+            if d.unit() < 0.5 {
+                tris.extend((0..n / 2).map(|_| {
+                    let c = Vec3::splat(3.0) + d.in_cube();
+                    small(d, c, 0.05)
+                }));
+            }
+            ("many triangles with one centroid", tris)
+        }
+        5 => {
+            let tris = (0..n)
+                .map(|_| {
+                    let c = d.in_cube();
+                    small(d, c, 0.2)
+                })
+                .collect();
+            ("a soup of triangles", tris)
+        }
+        6 => {
+            // Two to four flat sheets over one square, a hair apart in z.
+            let (layers, gap) = (d.count(2, 4), d.decades(-3.0, -2.0));
+            let k = ((n / layers) as f32).sqrt().ceil() as usize;
+            let p = |i: usize, j: usize, l: usize| {
+                Vec3::new(i as f32 / k as f32, j as f32 / k as f32, l as f32 * gap)
+            };
+            let tris = (0..layers * k * k)
+                .map(|q| {
+                    let (i, j, l) = (q % k, q / k % k, q / (k * k));
+                    [p(i, j, l), p(i + 1, j, l), p(i, j + 1, l)]
+                })
+                .collect();
+            ("flat sheets a hair apart", tris)
+        }
+        _ => {
+            let k = (n as f32).sqrt().ceil() as usize;
+            let h = |d: &mut Draws| d.range(-0.1, 0.1);
+            let p = |i: usize, j: usize, z: f32| Vec3::new(i as f32, j as f32, z) / k as f32;
+            let tris = (0..k * k)
+                .map(|q| {
+                    let (i, j) = (q % k, q / k);
+                    [p(i, j, h(d)), p(i + 1, j, h(d)), p(i, j + 1, h(d))]
+                })
+                .collect();
+            ("a wavy sheet", tris)
+        }
+    };
+    if kind != 4 || place == Vec3::ZERO {
+        tris.iter_mut()
+            .for_each(|t| *t = t.map(|p| place + p * scale));
+    } else {
+        tris.iter_mut().for_each(|t| *t = t.map(|p| p * scale));
+    }
+    let at = if kind == 4 { Vec3::ZERO } else { place };
+    let what = format!(
+        "{what}: {} triangles, {scale:.3e} across, at {at}",
+        tris.len()
+    );
+    (what, tris)
+}
+
+/// Rays through the scene's box: from outside it to a point inside.
+fn rays(d: &mut Draws, bvh: &ReadableBvh) -> Vec<Ray> {
+    let b = bvh.nodes[0].bounds;
+    let (centre, half) = ((b.min + b.max) * 0.5, (b.max - b.min) * 0.5);
+    (0..64)
+        .filter_map(|_| {
+            let from = centre + d.direction() * half.length() * 3.0;
+            let to = centre + d.in_cube() * half;
+            Ray::new(from, to - from).ok()
+        })
+        .collect()
+}
+
+/// Box and triangle tests of `rays` through `bvh`.
+fn work(bvh: &ReadableBvh, rays: &[Ray]) -> u64 {
+    let tree = counted::ReadableBvh::of(bvh);
+    let before = Work::now();
+    for ray in rays {
+        counted::closest_hit(&tree, ray, f32::INFINITY);
+    }
+    let w = Work::now().since(before);
+    w.box_tests + w.triangle_tests
+}
+
+/// Fails with `detail`, naming `symptom`.
+fn failed(detail: String, symptom: Symptom) -> Check {
+    Check {
+        error: f64::INFINITY,
+        tolerance: 1.0,
+        detail,
+        images: None,
+        symptom: Some(symptom),
+    }
+}
+
+/// The hand-made nodes, then the drawn scenes' trees. The error is the
+/// worst excess over the reference, as a fraction of its margin (each
+/// scene's cost over [`COST_MARGIN`], the work of all scenes' rays over
+/// [`WORK_MARGIN`]): 1 passes.
+pub fn check_sah(f: SahFn) -> Check {
+    let hand = hand_nodes();
+    let answers: Vec<Split> = hand.iter().map(|(_, b, c, _)| f(b, c)).collect();
+    for (k, ((what, _, centroids, want), got)) in hand.iter().zip(&answers).enumerate() {
+        let detail = format!("{what}: got {got:?}, expected ");
+        // Both sides of a plane hold a triangle.
+        let splits = |&(axis, at): &(usize, f32)| {
+            let left = |c: &&Vec3| axis < 3 && c[axis] < at;
+            (1..centroids.len()).contains(&centroids.iter().filter(left).count())
+        };
+        match (want, got) {
+            (_, Some(s)) if !splits(s) => {
+                return failed(detail + "a plane with a triangle on each side", EMPTY_CHILD)
+            }
+            (None, Some(_)) => return failed(detail + "None (a leaf is cheaper)", NEVER_LEAF),
+            (Some(axis), got) if got.is_none_or(|(a, _)| a != *axis) => {
+                // Right along x, wrong along y or z.
+                let named = if k > 1 && answers[1].is_some() {
+                    ONE_AXIS
+                } else {
+                    COSTLY
+                };
+                return failed(detail + &format!("a split on axis {axis}"), named);
+            }
+            _ => {}
+        }
+    }
+    let mut draws = Draws::new(37);
+    let mut worst = (0.0f64, "every tree within the margins".to_string());
+    let (mut work_all, mut work_ref) = (0u64, 0u64);
+    for _ in 0..draws.count(16, 24) {
+        draws.next_case();
+        let (what, tris) = drawn_scene(&mut draws);
+        let theirs = match build_with(&tris, &mut |b, c| f(b, c)) {
+            Ok(tree) => tree,
+            Err(e) => return failed(format!("{what} (a drawn scene): {e}"), EMPTY_CHILD),
+        };
+        let ours = build_with(&tris, &mut |b, c| sah_split(b, c)).unwrap_or_default();
+        let (cost, want) = (tree_cost(&theirs), tree_cost(&ours));
+        let rays = rays(&mut draws, &ours);
+        work_all += work(&theirs, &rays);
+        work_ref += work(&ours, &rays);
+        let error = (cost / want - 1.0) / COST_MARGIN;
+        if error.is_nan() || error > worst.0 {
+            worst = (
+                if error.is_nan() { f64::INFINITY } else { error },
+                format!(
+                    "{what} (a drawn scene): SAH cost {cost:.4}, the full sweep's {want:.4} \
+                     ({} % more allowed)",
+                    COST_MARGIN * 100.0
+                ),
+            );
+        }
+    }
+    let excess = (work_all as f64 / work_ref.max(1) as f64 - 1.0) / WORK_MARGIN;
+    if excess > worst.0 {
+        worst = (
+            excess,
+            format!(
+                "rays through every drawn scene: {work_all} box and triangle tests, the full \
+                 sweep's trees {work_ref} ({} % more allowed)",
+                WORK_MARGIN * 100.0
+            ),
+        );
+    }
+    Check {
+        error: worst.0,
+        tolerance: 1.0,
+        detail: worst.1,
+        images: None,
+        symptom: (worst.0 > 1.0).then_some(COSTLY),
+    }
+}
