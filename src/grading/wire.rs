@@ -7,6 +7,9 @@
 
 use glam::{DVec3, Mat4, Vec2, Vec3};
 
+use crate::ch3_ray_triangle::triangle::Hit;
+use crate::grading::exercises::paths;
+
 /// A value that can be written to bytes and read back exactly.
 pub trait Wire: Sized {
     /// Appends this value's bytes to `out`.
@@ -193,3 +196,34 @@ wire_tuple!(A, B, C, D);
 wire_tuple!(A, B, C, D, E);
 wire_tuple!(A, B, C, D, E, F);
 wire_tuple!(A, B, C, D, E, F, G);
+
+impl Wire for Hit {
+    fn put(&self, out: &mut Vec<u8>) {
+        (self.t, self.u, self.v, self.triangle).put(out);
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        let (t, u, v, triangle) = <(f32, f32, f32, u32)>::get(input)?;
+        Some(Hit { t, u, v, triangle })
+    }
+}
+
+impl Wire for paths::Tally {
+    fn put(&self, out: &mut Vec<u8>) {
+        let t = self;
+        (t.bounces, t.vertices, t.light_samples, t.lights_found).put(out);
+        (t.shadow_rays, t.below, t.over_budget).put(out);
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        let (bounces, vertices, light_samples, lights_found) = Wire::get(input)?;
+        let (shadow_rays, below, over_budget) = Wire::get(input)?;
+        Some(paths::Tally {
+            bounces,
+            vertices,
+            light_samples,
+            lights_found,
+            shadow_rays,
+            below,
+            over_budget,
+        })
+    }
+}
