@@ -381,7 +381,8 @@ fn probe(f: LayersFn) -> Option<(String, Symptom)> {
             LAYERS_NOT_FINITE => got.iter().any(|c| !c.is_finite()),
             LAYERS_WEIGHT => {
                 let want = path[0].value.as_dvec3() * f64::from(path[0].weight);
-                !((total(&got) - want).abs().max_element() <= 1e-6 * want.max_element())
+                let off = (total(&got) - want).abs().max_element();
+                off.is_nan() || off > 1e-6 * want.max_element()
             }
             _ => slots_error(&got, &want).0 > 1e-5,
         };

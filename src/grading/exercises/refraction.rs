@@ -226,7 +226,7 @@ pub fn check_refraction(f: RefractFn) -> Check {
         };
         let d = at_cos(n, side * cos.max(1e-6), draws.direction());
         let (e, what, s) = case(f, d, n, eo, ei);
-        if e > TOL && e > 0.0 {
+        if e > TOL {
             drawn_symptom = drawn_symptom.or(s);
         }
         (e, what)

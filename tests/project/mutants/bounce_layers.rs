@@ -98,9 +98,12 @@ fn passes(what: &str, check: impl Fn() -> Check) {
     }
 }
 
+/// A mutant: its name, its check, and the symptom it must be named by.
+type Case = (&'static str, fn() -> Check, Option<Symptom>);
+
 #[test]
 fn wrong_filings_fail_and_are_named() {
-    let cases: [(&str, fn() -> Check, Option<Symptom>); 8] = [
+    let cases: [Case; 8] = [
         (
             "light sample one low",
             || check_bounce_layers(with_bug!(Bug::LightOneLow)),

@@ -116,9 +116,12 @@ fn passes(what: &str, check: impl Fn() -> Check) {
     }
 }
 
+/// A mutant: its name, its check, and the symptom it must be named by.
+type Case = (&'static str, fn() -> Check, Symptom);
+
 #[test]
 fn wrong_refractions_fail_and_are_named() {
-    let cases: [(&str, fn() -> Check, Symptom); 9] = [
+    let cases: [Case; 9] = [
         (
             "ratio inverted",
             || check_refraction(with_bug!(Bug::RatioInverted)),
