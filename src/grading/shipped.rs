@@ -71,9 +71,11 @@ macro_rules! exercise_files {
             $make!("ch5-reflection", "direct_light"),
             $make!("ch5-reflection", "lambert_brdf"),
             $make!("ch5-reflection", "point_light"),
+            $make!("ch6-global-illumination", "bounce_layers"),
             $make!("ch6-global-illumination", "mc_integral"),
             $make!("ch6-global-illumination", "mis_weight"),
             $make!("ch6-global-illumination", "path_radiance"),
+            $make!("ch6-global-illumination", "refraction"),
             $make!("ch6-global-illumination", "russian_roulette"),
         ]
     };

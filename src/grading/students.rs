@@ -1,5 +1,5 @@
 //! The student's functions as the checks call them: [`Students`] names
-//! the 26 exercise functions with raystep's own types, and [`checks`]
+//! the exercise functions with raystep's own types, and [`checks`]
 //! gives each exercise's check called on them through [`bridge::call`],
 //! which records each call in the student's process and replays it in the
 //! grader's (see [`bridge`]).
@@ -15,10 +15,12 @@ use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch4_implicit_surfaces::march::March;
+use crate::ch6_global_illumination::layers::LAYER_SLOTS;
 use crate::grading::bridge::{self, no_callbacks, Side};
 use crate::grading::counted::ReadableBvh;
 use crate::grading::exercise::Check;
-use crate::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6, paths};
+use crate::grading::exercises::bounce_layers::Gathered;
+use crate::grading::exercises::{bounce_layers, ch1, ch2, ch3, ch4, ch5, ch6, paths, refraction};
 use crate::grading::wire::{from_bytes, to_bytes, Wire};
 use crate::grading::work::{self, Work};
 
@@ -84,6 +86,8 @@ pub trait Students {
         dir: Vec3,
         rng: &mut dyn FnMut() -> f32,
     ) -> Vec3;
+    fn refract(d: Vec3, n: Vec3, eta_outside: f32, eta_inside: f32) -> Option<(Vec3, f32)>;
+    fn bounce_layers(path: &[Gathered]) -> [Vec3; LAYER_SLOTS];
 }
 
 /// The grader's side: a replay never calls the student's functions.
@@ -127,6 +131,8 @@ replayed! {
     russian_roulette(value: f64, q: f64, u: f64) -> f64;
     mis_weight(pdf_f: f64, pdf_g: f64) -> f64;
     path_radiance(scene: &paths::PathScene, origin: Vec3, dir: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3;
+    refract(d: Vec3, n: Vec3, eta_outside: f32, eta_inside: f32) -> Option<(Vec3, f32)>;
+    bounce_layers(path: &[Gathered]) -> [Vec3; LAYER_SLOTS];
 }
 
 /// A call with nothing but arguments and an answer.
@@ -420,6 +426,14 @@ pub fn checks<S: Students>() -> Vec<Entry> {
         }),
         ("ch6/path_radiance", || {
             paths::check_path_radiance(path_radiance::<S>)
+        }),
+        ("ch6/refraction", || {
+            refraction::check_refraction(|d, n, o, i| {
+                pure(&(d, n, o, i), || S::refract(d, n, o, i))
+            })
+        }),
+        ("ch6/bounce_layers", || {
+            bounce_layers::check_bounce_layers(|p| pure(&p.to_vec(), || S::bounce_layers(p)))
         }),
     ]
 }

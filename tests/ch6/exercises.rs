@@ -9,7 +9,7 @@ use raystep::grading::exercises::paths::{check_path_radiance, PathScene};
 
 #[test]
 fn chapter_6_references_pass() {
-    common::references_pass(6, 4);
+    common::references_pass(6, 6);
 }
 
 #[test]

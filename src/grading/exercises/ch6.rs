@@ -1,10 +1,13 @@
-//! Chapter 6's exercises and how each is graded (statistically: the
-//! checks draw random numbers and compare means against known integrals
-//! with z-scores, so a biased solution fails and a correct one passes
-//! with overwhelming probability; the numbers are seeded, so a grade is
-//! repeatable).
+//! Chapter 6's exercises and how the first three are graded
+//! (statistically: the checks draw random numbers and compare means
+//! against known integrals with z-scores, so a biased solution fails and a
+//! correct one passes with overwhelming probability; the numbers are
+//! seeded, so a grade is repeatable). The capstone's check is in
+//! `paths/`, refraction's and the bounce layers' in files of their own.
 
+use super::bounce_layers as layers;
 use super::draws::{fold_drawn, worst_drawn, Draws};
+use super::refraction;
 use super::worst_of;
 use crate::core::sampling::random;
 use crate::grading::exercise::{Check, Exercise, Symptom};
@@ -68,6 +71,20 @@ pub fn exercises() -> Vec<Exercise> {
             file: "chapters/ch6-global-illumination/exercises/path_radiance.rs",
             symptoms: &super::paths::SYMPTOMS,
             reference: || super::paths::check_path_radiance(super::paths::reference_path),
+        },
+        Exercise {
+            chapter: 6,
+            name: "refraction",
+            file: "chapters/ch6-global-illumination/exercises/refraction.rs",
+            symptoms: &super::refraction::SYMPTOMS,
+            reference: || refraction::check_refraction(refraction::reference_refract),
+        },
+        Exercise {
+            chapter: 6,
+            name: "bounce_layers",
+            file: "chapters/ch6-global-illumination/exercises/bounce_layers.rs",
+            symptoms: &super::bounce_layers::SYMPTOMS,
+            reference: || layers::check_bounce_layers(layers::reference_layers),
         },
     ]
 }

@@ -8,6 +8,7 @@
 
 use crate::grading::exercise::Exercise;
 
+pub mod bounce_layers;
 pub mod ch1;
 pub mod ch2;
 pub mod ch3;
@@ -17,6 +18,7 @@ pub mod ch6;
 pub mod draws;
 pub mod images;
 pub mod paths;
+pub mod refraction;
 
 /// The case with the largest error over `(error, what)` pairs, a NaN
 /// counting as infinite; `None` when no error is above 0. What a case

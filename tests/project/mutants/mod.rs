@@ -4,6 +4,7 @@
 
 use raystep::grading::{Check, Exercise, Symptom};
 
+pub mod bounce_layers;
 pub mod ch1;
 pub mod ch2;
 pub mod ch2_manifold;
@@ -13,6 +14,7 @@ pub mod ch4;
 pub mod ch5;
 pub mod ch6;
 pub mod fresh;
+pub mod refraction;
 
 /// Runs `check` once under each of `seeds` (the seed of the inputs the
 /// checks draw, as a grading run sets it), on this thread; each seed with

@@ -81,13 +81,29 @@ pub mod ch4_implicit_surfaces {
     }
 }
 
-/// Chapter 6's capstone's scene, under the path the stub names.
+/// Chapter 6's blocks.
+pub mod ch6_global_illumination {
+    /// The layer slots of exercise 6.6 (the numbers only: the slot of a
+    /// bounce count, `slot_of`, is the exercise).
+    pub mod layers {
+        pub use raystep::ch6_global_illumination::layers::{
+            LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND, SLOT_EMITTED,
+        };
+    }
+}
+
+/// Chapter 6's exercises' types, under the paths the stubs name.
 pub mod grading {
     /// The exercises' blocks.
     pub mod exercises {
         /// Capstone 6's scene.
         pub mod paths {
             pub use raystep::grading::exercises::paths::{Hit, LightSample, PathScene};
+        }
+
+        /// What exercise 6.6 is handed: a path's contributions.
+        pub mod bounce_layers {
+            pub use raystep::grading::exercises::bounce_layers::{Gathered, How};
         }
     }
 }

@@ -12,7 +12,9 @@ use raystep::ch1_projection::camera::Camera;
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch3_ray_triangle::triangle::Hit;
 use raystep::ch4_implicit_surfaces::march::March;
+use raystep::ch6_global_illumination::layers::LAYER_SLOTS;
 use raystep::grading::counted::ReadableBvh;
+use raystep::grading::exercises::bounce_layers::Gathered;
 use raystep::grading::exercises::paths::PathScene;
 use raystep::grading::students::Students;
 use raystep_grade_blocks as blocks;
@@ -132,6 +134,12 @@ impl Students for Student {
         rng: &mut dyn FnMut() -> f32,
     ) -> Vec3 {
         student::ch6::path_radiance::path_radiance(scene, origin, dir, rng)
+    }
+    fn refract(d: Vec3, n: Vec3, eta_outside: f32, eta_inside: f32) -> Option<(Vec3, f32)> {
+        student::ch6::refraction::refract(d, n, eta_outside, eta_inside)
+    }
+    fn bounce_layers(path: &[Gathered]) -> [Vec3; LAYER_SLOTS] {
+        student::ch6::bounce_layers::bounce_layers(path)
     }
 }
 

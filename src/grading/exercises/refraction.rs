@@ -1,0 +1,269 @@
+//! Exercise 6.5: refraction in world space, from either side of a
+//! boundary between two indices, checked against Snell's law and the
+//! exact Fresnel reflectance worked out in f64.
+
+use glam::{DVec3, Vec3};
+
+use super::draws::{fold_drawn, worst_drawn, Draws};
+use super::worst;
+use crate::ch5_reflection::material::dielectric::{fresnel_dielectric, refract_local};
+use crate::ch5_reflection::material::Frame;
+use crate::grading::exercise::{Check, Symptom};
+
+/// The candidate: (d, n, η outside, η inside) to (t, F), `None` under
+/// total internal reflection.
+pub type RefractFn = fn(Vec3, Vec3, f32, f32) -> Option<(Vec3, f32)>;
+
+/// Total internal reflection where there is none, or none where there is.
+pub const REFRACT_TIR: Symptom = Symptom {
+    name: "total internal reflection at the wrong angles",
+};
+/// The refracted ray on the side the light came from (`d` read as the
+/// book's ωo, which points away from the surface).
+pub const REFRACT_SIDE: Symptom = Symptom {
+    name: "the refracted ray on the wrong side",
+};
+/// The right side but the wrong angle (the ratio of indices upside down).
+pub const REFRACT_SNELL: Symptom = Symptom {
+    name: "the wrong angle of refraction",
+};
+/// Right from outside, wrong from inside (the normal or the indices not
+/// turned round).
+pub const REFRACT_INSIDE: Symptom = Symptom {
+    name: "light from inside handled as from outside",
+};
+/// The direction right, the reflectance not.
+pub const REFRACT_FRESNEL: Symptom = Symptom {
+    name: "the Fresnel reflectance is off",
+};
+/// A direction whose length is not 1.
+pub const REFRACT_NOT_UNIT: Symptom = Symptom {
+    name: "not a unit direction",
+};
+
+/// The symptoms of [`check_refraction`].
+pub const SYMPTOMS: [Symptom; 6] = [
+    REFRACT_TIR,
+    REFRACT_SIDE,
+    REFRACT_SNELL,
+    REFRACT_INSIDE,
+    REFRACT_FRESNEL,
+    REFRACT_NOT_UNIT,
+];
+
+/// How far from 1 the exact sin²θ_t may be for f32 rounding to decide
+/// between refraction and total internal reflection (the contract's
+/// band, about a degree round the critical angle of glass). Near it the
+/// answer is ill-conditioned: the rounding of d and n alone (10⁻⁷) moves
+/// the exact f by up to 2·10⁻⁵ at the band's edge, a fifth of [`TOL`].
+const BAND: f64 = 3e-2;
+/// The tolerance on every component of t and on F.
+const TOL: f64 = 1e-4;
+
+/// The exact answer in f64: sin²θ_t, the normal on the side the light
+/// comes from, and (t, F) unless the light is totally reflected.
+fn exact(d: Vec3, n: Vec3, eta_out: f32, eta_in: f32) -> (f64, DVec3, Option<(DVec3, f64)>) {
+    let (d, n) = (d.as_dvec3().normalize(), n.as_dvec3().normalize());
+    let (m, eta_i, eta_t) = if d.dot(n) < 0.0 {
+        (n, eta_out as f64, eta_in as f64)
+    } else {
+        (-n, eta_in as f64, eta_out as f64)
+    };
+    let cos_i = -d.dot(m);
+    let eta = eta_i / eta_t;
+    let sin2_t = eta * eta * (1.0 - cos_i * cos_i).max(0.0);
+    if sin2_t >= 1.0 {
+        return (sin2_t, m, None);
+    }
+    let cos_t = (1.0 - sin2_t).sqrt();
+    let t = (eta * d + (eta * cos_i - cos_t) * m).normalize();
+    let r_s = (eta_i * cos_i - eta_t * cos_t) / (eta_i * cos_i + eta_t * cos_t);
+    let r_p = (eta_t * cos_i - eta_i * cos_t) / (eta_t * cos_i + eta_i * cos_t);
+    (sin2_t, m, Some((t, 0.5 * (r_s * r_s + r_p * r_p))))
+}
+
+/// raystep's answer: the lesson's `refract_local` and
+/// `fresnel_dielectric` in the frame of the normal.
+// ANCHOR: refraction
+pub fn reference_refract(d: Vec3, n: Vec3, eta_out: f32, eta_in: f32) -> Option<(Vec3, f32)> {
+    let frame = Frame::from_normal(n);
+    let wo = frame.to_local(-d);
+    let (eta_o, eta_far) = if wo.z > 0.0 {
+        (eta_out, eta_in)
+    } else {
+        (eta_in, eta_out)
+    };
+    let t = refract_local(wo, eta_o / eta_far)?;
+    let f = fresnel_dielectric(wo.z.abs(), t.z.abs(), eta_o, eta_far);
+    Some((frame.to_world(t), f))
+}
+// ANCHOR_END: refraction
+
+/// One case's error (on the scale of [`TOL`]) and what went wrong.
+fn case(f: RefractFn, d: Vec3, n: Vec3, eo: f32, ei: f32) -> (f64, String, Option<Symptom>) {
+    let (sin2_t, m, want) = exact(d, n, eo, ei);
+    let got = f(d, n, eo, ei);
+    let what = |e: &str| {
+        let want = want.map(|(t, f)| (t.as_vec3(), f as f32));
+        format!("d {d}, n {n}, η outside {eo}, inside {ei}: got {got:?}, expected {want:?}{e}")
+    };
+    let in_band = (1.0 - sin2_t).abs() < BAND;
+    let Some((t, fr)) = got else {
+        return match (want, in_band) {
+            (Some(_), false) => (1.0, what(""), Some(REFRACT_TIR)),
+            _ => (0.0, String::new(), None),
+        };
+    };
+    if !(t.is_finite() && fr.is_finite()) {
+        return (1.0, what(": not finite"), Some(REFRACT_NOT_UNIT));
+    }
+    if want.is_none() && !in_band {
+        return (1.0, what(""), Some(REFRACT_TIR));
+    }
+    let t64 = t.as_dvec3();
+    let length = (t64.length() - 1.0).abs();
+    let side = t64.dot(m).max(0.0);
+    let (dt, df) = match want {
+        // Where rounding decides, f is not checked: computed from cosines
+        // that rounding leaves with few correct digits, it can be anything.
+        Some((tw, _)) if in_band => ((t64 - tw).abs().max_element(), 0.0),
+        Some((tw, fw)) => ((t64 - tw).abs().max_element(), (f64::from(fr) - fw).abs()),
+        None => (0.0, 0.0),
+    };
+    let symptom = if side > 1e-3 {
+        REFRACT_SIDE
+    } else if length > TOL {
+        REFRACT_NOT_UNIT
+    } else if dt > TOL {
+        REFRACT_SNELL
+    } else {
+        REFRACT_FRESNEL
+    };
+    // Where rounding decides between refraction and total internal
+    // reflection, t only has to be within 10⁻² of the exact one.
+    let scale = if in_band { TOL / 1e-2 } else { 1.0 };
+    let err = length.max(side).max(dt).max(df) * scale;
+    (err, what(""), Some(symptom))
+}
+
+/// A direction that meets the normal `n` at cos θ = `c` (the sign says
+/// which side it travels towards), in the drawn azimuth `a`.
+fn at_cos(n: Vec3, c: f64, a: Vec3) -> Vec3 {
+    let (n, a) = (n.as_dvec3(), a.as_dvec3());
+    let tangent = (a - n * a.dot(n)).normalize();
+    (tangent * (1.0 - c * c).max(0.0).sqrt() + n * c).as_vec3()
+}
+
+/// Snell's law, the exact Fresnel reflectance and total internal
+/// reflection, from either side, on hand cases and on drawn normals,
+/// directions (grazing and near the critical angle among them) and
+/// indices from 1 to 2.5 (equal among them); see the stub's contract.
+pub fn check_refraction(f: RefractFn) -> Check {
+    let n = Vec3::new(0.3, -0.5, 0.8).normalize();
+    let tilt = Vec3::new(0.7, 0.2, -0.1);
+    let hand = [
+        (-n, n, 1.0, 1.5, "straight in, air to glass: F = 0.04"),
+        (n, n, 1.0, 1.5, "straight out of glass: F = 0.04"),
+        (at_cos(n, -0.7, tilt), n, 1.33, 1.5, "water to glass"),
+        (
+            at_cos(n, 0.4, tilt),
+            n,
+            1.0,
+            1.5,
+            "from inside the glass beyond the critical angle",
+        ),
+        (
+            at_cos(n, 0.9, tilt),
+            n,
+            1.0,
+            1.5,
+            "from inside the glass below the critical angle",
+        ),
+        (
+            at_cos(n, -0.3, tilt),
+            n,
+            1.33,
+            1.33,
+            "equal indices: no bending, F = 0",
+        ),
+        (at_cos(n, -1e-4, tilt), n, 1.0, 1.5, "grazing: F near 1"),
+    ];
+    let cases = hand.into_iter().map(|(d, n, eo, ei, name)| {
+        let (e, what, s) = case(f, d, n, eo, ei);
+        (e, (format!("{name}: {what}"), s))
+    });
+    let (mut error, (mut detail, mut symptom)) =
+        worst(cases).unwrap_or_else(|| (0.0, ("all cases match".into(), None)));
+    let mut draws = Draws::new(65);
+    let mut drawn_symptom = None;
+    let drawn = worst_drawn((0..draws.count(600, 1500)).map(|_| {
+        draws.next_case();
+        let n = draws.direction();
+        let eo = if draws.unit() < 0.4 {
+            1.0
+        } else {
+            draws.range(1.0, 2.5)
+        };
+        let ei = match draws.count(0, 9) {
+            0 => eo,
+            1 => eo * (1.0 + draws.decades(-5.0, -2.0)),
+            _ => draws.range(1.0, 2.5),
+        };
+        // From outside (-1) or inside (+1), and the ratio of the indices.
+        let side = draws.sign() as f64;
+        let ratio = if side < 0.0 { eo / ei } else { ei / eo } as f64;
+        let cos = match draws.count(0, 9) {
+            // Straight through.
+            0 => 1.0,
+            // Grazing.
+            1 | 2 => draws.decades(-6.0, -1.0) as f64,
+            // About the critical angle (grazing where there is none).
+            3 | 4 => {
+                let sin2_t = 1.0 + draws.sign() as f64 * draws.decades(-5.0, -0.5) as f64;
+                (1.0 - sin2_t / (ratio * ratio)).max(0.0).sqrt()
+            }
+            _ => draws.unit() as f64,
+        };
+        let d = at_cos(n, side * cos.max(1e-6), draws.direction());
+        let (e, what, s) = case(f, d, n, eo, ei);
+        if e > TOL {
+            drawn_symptom = drawn_symptom.or(s);
+        }
+        (e, what)
+    }));
+    if drawn.0 > error {
+        symptom = drawn_symptom;
+    }
+    fold_drawn(&mut error, &mut detail, drawn);
+    Check {
+        error,
+        tolerance: TOL,
+        detail,
+        images: None,
+        symptom: (error > TOL)
+            .then(|| probe_symptom(f).or(symptom))
+            .flatten(),
+    }
+}
+
+/// What a failing refraction got wrong, from four probes about a tilted
+/// normal: into glass at 30° and at 60°, out of glass at 20° and at 60°.
+fn probe_symptom(f: RefractFn) -> Option<Symptom> {
+    let n = Vec3::new(-0.2, 0.9, 0.3).normalize();
+    let a = Vec3::new(0.5, 0.1, 0.8);
+    let right = |c: f64, eo: f32, ei: f32| case(f, at_cos(n, c, a), n, eo, ei);
+    let into = right(-0.866, 1.0, 1.5);
+    // The same crossing described from inside: the normal turned round.
+    let out = right(0.94, 1.0, 1.5);
+    let mirrored = case(f, at_cos(-n, -0.94, a), -n, 1.5, 1.0);
+    if into.0 > TOL {
+        return into.2;
+    }
+    if out.0 > TOL && mirrored.0 <= TOL {
+        return Some(REFRACT_INSIDE);
+    }
+    [right(-0.5, 1.0, 1.5), right(0.5, 1.0, 1.5), out]
+        .into_iter()
+        .find(|c| c.0 > TOL)
+        .and_then(|c| c.2)
+}
