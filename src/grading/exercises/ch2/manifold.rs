@@ -2,7 +2,7 @@
 //! four counts compared exactly with the lesson's
 //! [`check_triangles`] on the lecture's cases by hand, then on meshes drawn
 //! from the run's seed (closed grids, spheres and tetrahedra with holes
-//! punched, fins on edges, meshes glued at one vertex, flipped and
+//! punched, fins on edges, books of pages on one edge, meshes glued at one vertex, flipped and
 //! degenerate triangles, shuffled, rotated and relabelled far apart in
 //! `u32`).
 
@@ -81,6 +81,10 @@ fn hand_cases() -> Vec<(&'static str, Vec<[u32; 3]>)> {
         (
             "three triangles on the edge 0-1",
             vec![[0, 1, 2], [1, 0, 3], [0, 1, 4]],
+        ),
+        (
+            "three triangles walking the edge 0-1 the same way",
+            vec![[0, 1, 2], [0, 1, 3], [0, 1, 4]],
         ),
         ("a tetrahedron with one face flipped", flipped),
         ("two tetrahedra sharing vertex 3", two_tetras),
@@ -179,6 +183,17 @@ fn drawn_mesh(d: &mut Draws) -> Vec<[u32; 3]> {
             [b, a, next]
         });
         next += 1;
+    }
+    if d.unit() < 0.5 {
+        // A book: three to five pages on one new edge, each walking it
+        // either way, or all the same way.
+        let (a, b, pages) = (next, next + 1, d.count(3, 5) as u32);
+        let all_one_way = d.unit() < 0.5;
+        for page in next + 2..next + 2 + pages {
+            let flip = !all_one_way && d.unit() < 0.5;
+            tris.push(if flip { [b, a, page] } else { [a, b, page] });
+        }
+        next += 2 + pages;
     }
     for _ in 0..d.count(0, 2) * d.count(0, 2) {
         let k = pick(d, &tris);
