@@ -251,11 +251,16 @@ fn fresnel<const B: u8>(ci: f32, ct: f32, ni: f32, nt: f32) -> f32 {
 
 /// Refraction with bug `B`: 0 none, 1 the index ratio upside down, 2 the
 /// normal never flipped for light from inside, 3 Schlick's Fresnel, 4 and
-/// 5 as in [`fresnel`], 8 `d` taken as pointing away (the book's ωo).
+/// 5 as in [`fresnel`], 8 `d` taken as pointing away (the book's ωo),
+/// 9 the normal flipped for light from inside but not the indices.
 fn refract<const B: u8>(d: Vec3, n: Vec3, eo: f32, ei: f32) -> Option<(Vec3, f32)> {
     let d = if B == 8 { -d } else { d };
     let outside = d.dot(n) < 0.0 || B == 2;
-    let (ns, ni, nt) = if outside { (n, eo, ei) } else { (-n, ei, eo) };
+    let (ns, ni, nt) = match (outside, B) {
+        (true, _) => (n, eo, ei),
+        (false, 9) => (-n, eo, ei),
+        (false, _) => (-n, ei, eo),
+    };
     let cos_i = (-d.dot(ns)).clamp(0.0, 1.0);
     let eta = if B == 1 { nt / ni } else { ni / nt };
     let sin2_t = eta * eta * (1.0 - cos_i * cos_i).max(0.0);
@@ -300,6 +305,9 @@ fn fresh_refraction_mistakes_fail() {
     fails("d as the book's ωo", || {
         refraction::check_refraction(refract::<8>)
     });
+    fails("the normal flipped, the indices not", || {
+        refraction::check_refraction(refract::<9>)
+    });
 }
 
 // ---- 6.6 bounce layers ------------------------------------------------------------
@@ -307,7 +315,8 @@ fn fresh_refraction_mistakes_fail() {
 /// The slots with bug `B`: 0 none, 1 a light sample at vertex j filed at
 /// bounce count j - 1, 2 emission found at vertex j filed at count j,
 /// 3 emitters seen directly filed in layer 0, 4 the cap one lower,
-/// 5 non-finite contributions kept, 6 the MIS weight left out.
+/// 5 non-finite contributions kept, 6 the MIS weight left out, 7 the
+/// finite channels of a non-finite contribution kept.
 fn layers<const B: u8>(path: &[Gathered]) -> [Vec3; LAYER_SLOTS] {
     let mut out = [Vec3::ZERO; LAYER_SLOTS];
     for g in path {
@@ -330,7 +339,11 @@ fn layers<const B: u8>(path: &[Gathered]) -> [Vec3; LAYER_SLOTS] {
             Some(k) => k as usize + 1,
         };
         let c = if B == 6 { g.value } else { g.value * g.weight };
-        if c.is_finite() || B == 5 {
+        if B == 7 {
+            // Each channel on its own.
+            let keep = Vec3::select(c.is_finite_mask(), c, Vec3::ZERO);
+            out[slot] += keep;
+        } else if c.is_finite() || B == 5 {
             out[slot] += c;
         }
     }
@@ -360,4 +373,8 @@ fn fresh_bounce_layer_mistakes_fail() {
     fails("the MIS weight left out", || {
         bounce_layers::check_bounce_layers(layers::<6>)
     });
+    fails(
+        "the finite channels of a non-finite contribution kept",
+        || bounce_layers::check_bounce_layers(layers::<7>),
+    );
 }
