@@ -1,5 +1,5 @@
 //! The student's functions as the checks call them: [`Students`] names
-//! the 24 exercise functions with raystep's own types, and [`checks`]
+//! the 26 exercise functions with raystep's own types, and [`checks`]
 //! gives each exercise's check called on them through [`bridge::call`],
 //! which records each call in the student's process and replays it in the
 //! grader's (see [`bridge`]).
@@ -63,6 +63,8 @@ pub trait Students {
     fn cosine_hemisphere(u: Vec2) -> (Vec3, f32);
     fn point_light_irradiance(intensity: Vec3, light: Vec3, p: Vec3, n: Vec3) -> Vec3;
     fn area_to_solid_angle(pdf_area: f32, x: Vec3, y: Vec3, n_light: Vec3) -> f32;
+    fn solid_angle(p: Vec3, tri: [Vec3; 3]) -> f32;
+    fn spot_power(intensity: Vec3, inner: f32, outer: f32) -> Vec3;
     fn direct_light(
         p: Vec3,
         n: Vec3,
@@ -118,21 +120,13 @@ replayed! {
     cosine_hemisphere(u: Vec2) -> (Vec3, f32);
     point_light_irradiance(intensity: Vec3, light: Vec3, p: Vec3, n: Vec3) -> Vec3;
     area_to_solid_angle(pdf_area: f32, x: Vec3, y: Vec3, n_light: Vec3) -> f32;
+    solid_angle(p: Vec3, tri: [Vec3; 3]) -> f32;
+    spot_power(intensity: Vec3, inner: f32, outer: f32) -> Vec3;
     direct_light(p: Vec3, n: Vec3, rho: Vec3, y: Vec3, n_light: Vec3, area: f32, le: Vec3, visible: &dyn Fn(Vec3, Vec3) -> bool) -> Vec3;
     mc_integral(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64;
     russian_roulette(value: f64, q: f64, u: f64) -> f64;
     mis_weight(pdf_f: f64, pdf_g: f64) -> f64;
     path_radiance(scene: &paths::PathScene, origin: Vec3, dir: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3;
-}
-
-impl Wire for Hit {
-    fn put(&self, out: &mut Vec<u8>) {
-        (self.t, self.u, self.v, self.triangle).put(out);
-    }
-    fn get(input: &mut &[u8]) -> Option<Self> {
-        let (t, u, v, triangle) = <(f32, f32, f32, u32)>::get(input)?;
-        Some(Hit { t, u, v, triangle })
-    }
 }
 
 impl Wire for paths::Tally {
@@ -408,6 +402,12 @@ pub fn checks<S: Students>() -> Vec<Entry> {
             ch5::check_area_pdf(|a, x, y, n| {
                 pure(&(a, x, y, n), || S::area_to_solid_angle(a, x, y, n))
             })
+        }),
+        ("ch5/solid_angle", || {
+            ch5::check_solid_angle(|p, t| pure(&(p, t), || S::solid_angle(p, t)))
+        }),
+        ("ch5/spot", || {
+            ch5::check_spot(|i, a, b| pure(&(i, a, b), || S::spot_power(i, a, b)))
         }),
         ("ch5/direct_light", || {
             ch5::check_direct_light(|p, n, rho, y, nl, area, le, visible| {

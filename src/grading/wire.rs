@@ -7,6 +7,8 @@
 
 use glam::{DVec3, Mat4, Vec2, Vec3};
 
+use crate::ch3_ray_triangle::triangle::Hit;
+
 /// A value that can be written to bytes and read back exactly.
 pub trait Wire: Sized {
     /// Appends this value's bytes to `out`.
@@ -162,6 +164,17 @@ impl<T: Wire> Wire for Option<T> {
             1 => Some(Some(T::get(input)?)),
             _ => None,
         }
+    }
+}
+
+/// A hit as exercise 3.4 answers it.
+impl Wire for Hit {
+    fn put(&self, out: &mut Vec<u8>) {
+        (self.t, self.u, self.v, self.triangle).put(out);
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        let (t, u, v, triangle) = <(f32, f32, f32, u32)>::get(input)?;
+        Some(Hit { t, u, v, triangle })
     }
 }
 
