@@ -130,7 +130,9 @@ pub fn check_solid_angle(f: SolidFn) -> Check {
         tolerance: 1e-4,
         detail,
         images: None,
-        symptom: (!(worst <= 1e-4)).then(|| solid_symptom(f)).flatten(),
+        symptom: (worst.is_nan() || worst > 1e-4)
+            .then(|| solid_symptom(f))
+            .flatten(),
     }
 }
 

@@ -106,7 +106,9 @@ pub fn check_spot(f: SpotFn) -> Check {
         tolerance: 1e-5,
         detail,
         images: None,
-        symptom: (!(worst <= 1e-5)).then(|| spot_symptom(f)).flatten(),
+        symptom: (worst.is_nan() || worst > 1e-5)
+            .then(|| spot_symptom(f))
+            .flatten(),
     }
 }
 
@@ -118,7 +120,7 @@ fn spot_symptom(f: SpotFn) -> Option<Symptom> {
     };
     let (hard, soft, other) = (ratio(0.5, 0.5), ratio(0.3, 0.6), ratio(0.2, 1.4));
     let narrow = ratio(1e-3, 2e-3);
-    let off = |r: f64| !((r - 1.0).abs() <= 1e-5);
+    let off = |r: f64| r.is_nan() || (r - 1.0).abs() > 1e-5;
     if off(hard)
         && off(soft)
         && ((soft - hard) / hard).abs() < 1e-4
