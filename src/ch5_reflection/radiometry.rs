@@ -43,17 +43,32 @@ pub fn sphere_solid_angle(radius: f64, distance: f64) -> f64 {
     let cos_a = (1.0 - s * s).sqrt();
     2.0 * PI * s * s / (1.0 + cos_a)
 }
+// ANCHOR_END: solid_angles
 
 /// The solid angle of the triangle (a, b, c) seen from the origin (Van
 /// Oosterom and Strackee 1983): tan(Ω/2) = |a·(b×c)| / (abc + (a·b)c +
 /// (a·c)b + (b·c)a), where a, b, c also name the vectors' lengths.
+// ANCHOR: triangle_solid_angle
 pub fn triangle_solid_angle(a: DVec3, b: DVec3, c: DVec3) -> f64 {
     let (la, lb, lc) = (a.length(), b.length(), c.length());
     let numerator = a.dot(b.cross(c)).abs();
     let denominator = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
     2.0 * numerator.atan2(denominator)
 }
-// ANCHOR_END: solid_angles
+// ANCHOR_END: triangle_solid_angle
+
+/// The power (W) of a spot light of intensity `i` (W/sr) whose falloff is
+/// 1 within the half-angle `inner`, 0 beyond `outer` and a smoothstep in
+/// cos θ between (radians, 0 ≤ inner ≤ outer ≤ π): 2π I (1 − cos θi) from
+/// the inner cone and half the band between the cones, (cos θi − cos θo)/2,
+/// since a smoothstep integrates to 1/2. Each 1 − cos θ is written as
+/// 2 sin²(θ/2), which keeps its digits for a narrow cone.
+// ANCHOR: spot_flux
+pub fn spot_flux(i: f64, inner: f64, outer: f64) -> f64 {
+    let one_minus_cos = |theta: f64| 2.0 * (theta / 2.0).sin().powi(2);
+    PI * i * (one_minus_cos(inner) + one_minus_cos(outer))
+}
+// ANCHOR_END: spot_flux
 
 /// Irradiance at `p` (unit normal `n`) from a polygon of uniform radiance
 /// `le`, by Lambert's formula: E = (L/2) Σᵢ Θᵢ (Γᵢ · n), where Θᵢ is the

@@ -71,6 +71,8 @@ macro_rules! exercise_files {
             $make!("ch5-reflection", "direct_light"),
             $make!("ch5-reflection", "lambert_brdf"),
             $make!("ch5-reflection", "point_light"),
+            $make!("ch5-reflection", "solid_angle"),
+            $make!("ch5-reflection", "spot"),
             $make!("ch6-global-illumination", "bounce_layers"),
             $make!("ch6-global-illumination", "mc_integral"),
             $make!("ch6-global-illumination", "mis_weight"),

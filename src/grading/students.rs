@@ -21,7 +21,7 @@ use crate::grading::counted::ReadableBvh;
 use crate::grading::exercise::Check;
 use crate::grading::exercises::bounce_layers::Gathered;
 use crate::grading::exercises::{bounce_layers, ch1, ch2, ch3, ch4, ch5, ch6, paths, refraction};
-use crate::grading::wire::{from_bytes, to_bytes, Wire};
+use crate::grading::wire::{apply, changes, fingerprint, from_bytes, to_bytes, Wire};
 use crate::grading::work::{self, Work};
 
 /// The exercise functions, with the grader's types.
@@ -67,6 +67,8 @@ pub trait Students {
     fn cosine_hemisphere(u: Vec2) -> (Vec3, f32);
     fn point_light_irradiance(intensity: Vec3, light: Vec3, p: Vec3, n: Vec3) -> Vec3;
     fn area_to_solid_angle(pdf_area: f32, x: Vec3, y: Vec3, n_light: Vec3) -> f32;
+    fn solid_angle(p: Vec3, tri: [Vec3; 3]) -> f32;
+    fn spot_power(intensity: Vec3, inner: f32, outer: f32) -> Vec3;
     fn direct_light(
         p: Vec3,
         n: Vec3,
@@ -126,6 +128,8 @@ replayed! {
     cosine_hemisphere(u: Vec2) -> (Vec3, f32);
     point_light_irradiance(intensity: Vec3, light: Vec3, p: Vec3, n: Vec3) -> Vec3;
     area_to_solid_angle(pdf_area: f32, x: Vec3, y: Vec3, n_light: Vec3) -> f32;
+    solid_angle(p: Vec3, tri: [Vec3; 3]) -> f32;
+    spot_power(intensity: Vec3, inner: f32, outer: f32) -> Vec3;
     direct_light(p: Vec3, n: Vec3, rho: Vec3, y: Vec3, n_light: Vec3, area: f32, le: Vec3, visible: &dyn Fn(Vec3, Vec3) -> bool) -> Vec3;
     mc_integral(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64;
     russian_roulette(value: f64, q: f64, u: f64) -> f64;
@@ -151,68 +155,6 @@ fn with_callback<A: Wire, C: Wire, R: Wire>(
         Some(to_bytes(&grader(from_bytes::<A>(arg)?)))
     };
     bridge::call(args, Side::none(), &mut replay, run)
-}
-
-/// A buffer's values as the bits that a replay must reproduce.
-trait Bits: Copy {
-    /// Whether the two have the same bits.
-    fn same(&self, other: &Self) -> bool;
-    /// `h` with this value's bits hashed in (FNV-1a).
-    fn hash_into(&self, h: u64) -> u64;
-}
-
-fn fnv(h: u64, word: u32) -> u64 {
-    (h ^ u64::from(word)).wrapping_mul(0x100_0000_01b3)
-}
-
-impl Bits for f32 {
-    fn same(&self, other: &Self) -> bool {
-        self.to_bits() == other.to_bits()
-    }
-    fn hash_into(&self, h: u64) -> u64 {
-        fnv(h, self.to_bits())
-    }
-}
-
-impl Bits for Vec3 {
-    fn same(&self, o: &Self) -> bool {
-        self.x.same(&o.x) && self.y.same(&o.y) && self.z.same(&o.z)
-    }
-    fn hash_into(&self, h: u64) -> u64 {
-        self.z.hash_into(self.y.hash_into(self.x.hash_into(h)))
-    }
-}
-
-/// A hash of a buffer's bits, for comparing what a call was handed
-/// without sending the whole buffer.
-fn fingerprint<T: Bits>(values: &[T]) -> u64 {
-    values
-        .iter()
-        .fold(0xcbf2_9ce4_8422_2325u64, |h, v| v.hash_into(h))
-}
-
-/// The entries of `after` whose bits differ from `before`'s.
-fn changes<T: Bits>(before: &[T], after: &[T]) -> Vec<(u32, T)> {
-    let mut out = Vec::new();
-    for (i, (b, a)) in before.iter().zip(after).enumerate() {
-        if !b.same(a) {
-            out.push((i as u32, *a));
-        }
-    }
-    out
-}
-
-/// Writes recorded changes into `buffer`; `false` when one is out of it.
-fn apply<T: Copy>(buffer: &mut [T], changed: &[(u32, T)]) -> bool {
-    changed
-        .iter()
-        .all(|(i, v)| match buffer.get_mut(*i as usize) {
-            Some(slot) => {
-                *slot = *v;
-                true
-            }
-            None => false,
-        })
 }
 
 fn depth_test<S: Students>(depth: &mut [f32], index: usize, z: f32) -> bool {
@@ -398,6 +340,12 @@ pub fn checks<S: Students>() -> Vec<Entry> {
             ch5::check_area_pdf(|a, x, y, n| {
                 pure(&(a, x, y, n), || S::area_to_solid_angle(a, x, y, n))
             })
+        }),
+        ("ch5/solid_angle", || {
+            ch5::check_solid_angle(|p, t| pure(&(p, t), || S::solid_angle(p, t)))
+        }),
+        ("ch5/spot", || {
+            ch5::check_spot(|i, a, b| pure(&(i, a, b), || S::spot_power(i, a, b)))
         }),
         ("ch5/direct_light", || {
             ch5::check_direct_light(|p, n, rho, y, nl, area, le, visible| {

@@ -168,6 +168,17 @@ impl<T: Wire> Wire for Option<T> {
     }
 }
 
+/// A hit as exercise 3.4 answers it.
+impl Wire for Hit {
+    fn put(&self, out: &mut Vec<u8>) {
+        (self.t, self.u, self.v, self.triangle).put(out);
+    }
+    fn get(input: &mut &[u8]) -> Option<Self> {
+        let (t, u, v, triangle) = <(f32, f32, f32, u32)>::get(input)?;
+        Some(Hit { t, u, v, triangle })
+    }
+}
+
 impl Wire for () {
     fn put(&self, _out: &mut Vec<u8>) {}
     fn get(_input: &mut &[u8]) -> Option<Self> {
@@ -197,16 +208,6 @@ wire_tuple!(A, B, C, D, E);
 wire_tuple!(A, B, C, D, E, F);
 wire_tuple!(A, B, C, D, E, F, G);
 
-impl Wire for Hit {
-    fn put(&self, out: &mut Vec<u8>) {
-        (self.t, self.u, self.v, self.triangle).put(out);
-    }
-    fn get(input: &mut &[u8]) -> Option<Self> {
-        let (t, u, v, triangle) = <(f32, f32, f32, u32)>::get(input)?;
-        Some(Hit { t, u, v, triangle })
-    }
-}
-
 impl Wire for paths::Tally {
     fn put(&self, out: &mut Vec<u8>) {
         let t = self;
@@ -226,4 +227,66 @@ impl Wire for paths::Tally {
             over_budget,
         })
     }
+}
+
+/// A buffer's values as the bits that a replay must reproduce.
+pub(crate) trait Bits: Copy {
+    /// Whether the two have the same bits.
+    fn same(&self, other: &Self) -> bool;
+    /// `h` with this value's bits hashed in (FNV-1a).
+    fn hash_into(&self, h: u64) -> u64;
+}
+
+fn fnv(h: u64, word: u32) -> u64 {
+    (h ^ u64::from(word)).wrapping_mul(0x100_0000_01b3)
+}
+
+impl Bits for f32 {
+    fn same(&self, other: &Self) -> bool {
+        self.to_bits() == other.to_bits()
+    }
+    fn hash_into(&self, h: u64) -> u64 {
+        fnv(h, self.to_bits())
+    }
+}
+
+impl Bits for Vec3 {
+    fn same(&self, o: &Self) -> bool {
+        self.x.same(&o.x) && self.y.same(&o.y) && self.z.same(&o.z)
+    }
+    fn hash_into(&self, h: u64) -> u64 {
+        self.z.hash_into(self.y.hash_into(self.x.hash_into(h)))
+    }
+}
+
+/// A hash of a buffer's bits, for comparing what a call was handed
+/// without sending the whole buffer.
+pub(crate) fn fingerprint<T: Bits>(values: &[T]) -> u64 {
+    values
+        .iter()
+        .fold(0xcbf2_9ce4_8422_2325u64, |h, v| v.hash_into(h))
+}
+
+/// The entries of `after` whose bits differ from `before`'s.
+pub(crate) fn changes<T: Bits>(before: &[T], after: &[T]) -> Vec<(u32, T)> {
+    let mut out = Vec::new();
+    for (i, (b, a)) in before.iter().zip(after).enumerate() {
+        if !b.same(a) {
+            out.push((i as u32, *a));
+        }
+    }
+    out
+}
+
+/// Writes recorded changes into `buffer`; `false` when one is out of it.
+pub(crate) fn apply<T: Copy>(buffer: &mut [T], changed: &[(u32, T)]) -> bool {
+    changed
+        .iter()
+        .all(|(i, v)| match buffer.get_mut(*i as usize) {
+            Some(slot) => {
+                *slot = *v;
+                true
+            }
+            None => false,
+        })
 }

@@ -8,7 +8,7 @@ use raystep::ch4_implicit_surfaces::hit::Surface;
 use raystep::ch5_reflection::direct::{Estimator, Strategy};
 use raystep::ch5_reflection::radiometry::{
     cap_solid_angle, directional_irradiance, point_irradiance, polygon_irradiance,
-    sphere_solid_angle, triangle_solid_angle,
+    sphere_solid_angle, spot_flux, triangle_solid_angle,
 };
 use raystep::ch5_reflection::shading_events::Counters;
 use raystep::ch5_reflection::studies::{area_problem, sky_problem};
@@ -215,4 +215,52 @@ fn a_spot_light_is_a_point_light_inside_its_cone_and_dark_outside() {
     assert!((inside - want).abs() < 1e-4 * want, "{inside} vs {want}");
     // tan 20° · 2 ≈ 0.73: at x = 1 the floor's centre is outside the cone.
     assert_eq!(shade(&spot(1.0), Strategy::Mis, Vec3::Z, 1), Vec3::ZERO);
+}
+
+/// A spot's power in closed form (exercise 5.7's reference) is its
+/// falloff, the lesson's `Spot::falloff`, summed over the sphere: over a
+/// million directions spread evenly (a Fibonacci lattice, each carrying
+/// 4π/N sr), and by the grader's quadrature in cos θ.
+#[test]
+fn a_spot_lights_power_is_its_falloff_summed_over_the_sphere() {
+    use raystep::ch5_reflection::light::spot::Spot;
+    use raystep::grading::exercises::ch5::falloff_integral;
+    let n = 1_000_000u32;
+    let golden = PI * (3.0 - 5f64.sqrt());
+    for (cone, soft) in [
+        (30.0, 10.0),
+        (45.0, 0.0),
+        (90.0, 90.0),
+        (120.0, 40.0),
+        (180.0, 0.0),
+        (180.0, 180.0),
+    ] {
+        let spot = Spot::new(Vec3::ZERO, Vec3::Z, Vec3::ONE, cone, soft);
+        let sum: f64 = (0..n)
+            .map(|k| {
+                let z = 1.0 - (2.0 * k as f64 + 1.0) / n as f64;
+                let r = (1.0 - z * z).sqrt();
+                let phi = golden * k as f64;
+                let w = DVec3::new(r * phi.cos(), r * phi.sin(), z).as_vec3();
+                f64::from(spot.falloff(w))
+            })
+            .sum();
+        let lattice = sum * 4.0 * PI / n as f64;
+        let (inner, outer) = (
+            f64::from(spot.cos_inner).acos(),
+            f64::from(spot.cos_outer).acos(),
+        );
+        let closed = spot_flux(1.0, inner, outer);
+        assert!(
+            (lattice - closed).abs() < 1e-4 * closed,
+            "{cone}°/{soft}°: {lattice} vs {closed}"
+        );
+        let quadrature = falloff_integral(inner as f32, outer as f32);
+        assert!(
+            (quadrature - closed).abs() < 1e-5 * closed,
+            "{cone}°/{soft}°: {quadrature} vs {closed}"
+        );
+    }
+    // The whole sphere at full intensity: 4π I.
+    assert!((spot_flux(2.0, PI, PI) - 8.0 * PI).abs() < 1e-12);
 }

@@ -1,10 +1,14 @@
 //! Chapter 5's exercises and how each is graded (the capstone's check is
-//! in `direct.rs`).
+//! in `direct.rs`, exercise 5.6's in `solid.rs`, 5.7's in `spot.rs`).
 
 mod direct;
 mod drawn;
+mod solid;
+mod spot;
 mod symptoms;
 pub use direct::*;
+pub use solid::check_solid_angle;
+pub use spot::{check_spot, falloff_integral};
 pub use symptoms::*;
 
 use std::f32::consts::FRAC_1_PI;
@@ -15,6 +19,7 @@ use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::worst_of;
 use crate::ch5_reflection::light::area::solid_angle_pdf;
 use crate::ch5_reflection::material::lambert::Lambertian;
+use crate::ch5_reflection::radiometry::{spot_flux, triangle_solid_angle};
 use crate::ch5_reflection::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
 use crate::core::sampling::random;
 use crate::grading::exercise::{Check, Exercise, Symptom};
@@ -71,6 +76,34 @@ pub fn exercises() -> Vec<Exercise> {
                 check_area_pdf(|pdf, x, y, n| {
                     let to = y - x;
                     solid_angle_pdf(pdf, to.length(), n.dot(to.normalize()))
+                })
+            },
+        },
+        Exercise {
+            chapter: 5,
+            name: "solid_angle",
+            file: "chapters/ch5-reflection/exercises/solid_angle.rs",
+            symptoms: &[
+                SOLID_SIGNED,
+                SOLID_FAR_LIMIT,
+                SOLID_ABOVE_PI,
+                SOLID_PRECISION,
+            ],
+            reference: || {
+                check_solid_angle(|p, t| {
+                    let [a, b, c] = t.map(|v| v.as_dvec3() - p.as_dvec3());
+                    triangle_solid_angle(a, b, c) as f32
+                })
+            },
+        },
+        Exercise {
+            chapter: 5,
+            name: "spot",
+            file: "chapters/ch5-reflection/exercises/spot.rs",
+            symptoms: &[SPOT_BAND, SPOT_FACTOR, SPOT_NARROW],
+            reference: || {
+                check_spot(|i, inner, outer| {
+                    (i.as_dvec3() * spot_flux(1.0, inner.into(), outer.into())).as_vec3()
                 })
             },
         },

@@ -37,6 +37,34 @@ pub const PDF_JACOBIAN: Symptom = Symptom {
 pub const PDF_SIGN: Symptom = Symptom {
     name: "a density that is negative or missing",
 };
+/// A solid angle whose sign follows the winding.
+pub const SOLID_SIGNED: Symptom = Symptom {
+    name: "a signed solid angle",
+};
+/// A cos θ / r² (or A / r²): right only for a small triangle far away.
+pub const SOLID_FAR_LIMIT: Symptom = Symptom {
+    name: "the far-away approximation",
+};
+/// Wrong only beyond a hemisphere's half: atan instead of atan2.
+pub const SOLID_ABOVE_PI: Symptom = Symptom {
+    name: "a solid angle above π",
+};
+/// Right near the triangle, wrong for a small triangle far away.
+pub const SOLID_PRECISION: Symptom = Symptom {
+    name: "precision for a small, far triangle",
+};
+/// A spot's power wrong only where its edge is soft.
+pub const SPOT_BAND: Symptom = Symptom {
+    name: "the soft band",
+};
+/// A spot's power off by the same factor for every cone.
+pub const SPOT_FACTOR: Symptom = Symptom {
+    name: "off by a constant factor: the sphere",
+};
+/// A spot's power right for wide cones, wrong for narrow ones.
+pub const SPOT_NARROW: Symptom = Symptom {
+    name: "precision in a narrow cone",
+};
 
 // The capstone's, `direct_light`'s.
 

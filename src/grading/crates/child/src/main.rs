@@ -106,6 +106,12 @@ impl Students for Student {
     fn area_to_solid_angle(pdf_area: f32, x: Vec3, y: Vec3, n_light: Vec3) -> f32 {
         student::ch5::area_pdf::area_to_solid_angle(pdf_area, x, y, n_light)
     }
+    fn solid_angle(p: Vec3, tri: [Vec3; 3]) -> f32 {
+        student::ch5::solid_angle::solid_angle(p, tri)
+    }
+    fn spot_power(intensity: Vec3, inner: f32, outer: f32) -> Vec3 {
+        student::ch5::spot::spot_power(intensity, inner, outer)
+    }
     fn direct_light(
         p: Vec3,
         n: Vec3,

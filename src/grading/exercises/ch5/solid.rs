@@ -1,0 +1,230 @@
+//! Exercise 5.6, the solid angle of a triangle: checked against the exact
+//! value of the inputs as given (in f64), to 10⁻⁴ relative, widened by
+//! what f32 rounding alone can do to the answer (see [`f32_spread`]).
+
+use glam::{DQuat, DVec3, Vec3};
+
+use super::{SOLID_ABOVE_PI, SOLID_FAR_LIMIT, SOLID_PRECISION, SOLID_SIGNED};
+use crate::ch5_reflection::radiometry::triangle_solid_angle;
+use crate::grading::exercise::{Check, Symptom};
+use crate::grading::exercises::draws::{fold_drawn, worst_drawn, Draws};
+use crate::grading::exercises::worst_of;
+
+type SolidFn = fn(Vec3, [Vec3; 3]) -> f32;
+
+/// The exact solid angle of `tri` at `p`, in f64.
+fn exact(p: DVec3, tri: [DVec3; 3]) -> f64 {
+    triangle_solid_angle(tri[0] - p, tri[1] - p, tri[2] - p)
+}
+
+fn wide(p: Vec3, tri: [Vec3; 3]) -> (DVec3, [DVec3; 3]) {
+    (p.as_dvec3(), tri.map(|v| v.as_dvec3()))
+}
+
+/// How far the exact solid angle moves when the inputs move by what f32
+/// rounding of a solution's vectors can do: a corner by 10⁻⁶ ℓ (ℓ the
+/// longest edge), p by 10⁻⁶ of its distance to the farthest corner, or the
+/// plane tilting (about any corner) by 10⁻⁶ ℓ₁ℓ₂/(2A), the error of an f32
+/// cross product of the two longest edges relative to its length.
+fn f32_spread(p: DVec3, tri: [DVec3; 3]) -> f64 {
+    let base = exact(p, tri);
+    let edges = [tri[1] - tri[0], tri[2] - tri[1], tri[0] - tri[2]];
+    let mut lengths = edges.map(|e| e.length());
+    let longest = edges[(0..3).fold(0, |m, i| if lengths[i] > lengths[m] { i } else { m })];
+    lengths.sort_by(f64::total_cmp);
+    let far = tri.iter().map(|v| v.distance(p)).fold(0.0, f64::max);
+    let normal = edges[0].cross(edges[2]);
+    let mut moved = Vec::new();
+    for axis in [
+        DVec3::X,
+        DVec3::Y,
+        DVec3::Z,
+        -DVec3::X,
+        -DVec3::Y,
+        -DVec3::Z,
+    ] {
+        moved.push((p + axis * 1e-6 * far, tri));
+        for i in 0..3 {
+            let mut t = tri;
+            t[i] += axis * 1e-6 * lengths[2];
+            moved.push((p, t));
+        }
+    }
+    let tilt = (1e-6 * lengths[2] * lengths[1] / normal.length()).min(0.1);
+    if tilt.is_finite() && longest.length() > 0.0 {
+        let u = longest.normalize();
+        for axis in [u, normal.normalize().cross(u)] {
+            for angle in [-tilt, tilt] {
+                let turn = DQuat::from_axis_angle(axis, angle);
+                for pivot in tri {
+                    moved.push((p, tri.map(|v| pivot + turn * (v - pivot))));
+                }
+            }
+        }
+    }
+    moved
+        .into_iter()
+        .map(|(q, t)| (exact(q, t) - base).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The error of `got` for the triangle `tri` seen from `p`: relative to
+/// the exact Ω plus 10⁴ times the f32 spread (so within 10⁻⁴ is a pass).
+fn error(got: f32, p: Vec3, tri: [Vec3; 3]) -> (f64, String) {
+    let (pd, td) = wide(p, tri);
+    let want = exact(pd, td);
+    let scale = (want + 1e4 * f32_spread(pd, td)).max(f64::MIN_POSITIVE);
+    let e = (f64::from(got) - want).abs() / scale;
+    (
+        if e.is_nan() { f64::INFINITY } else { e },
+        format!("p {p}, triangle {tri:?}: got {got}, expected {want:.7e}"),
+    )
+}
+
+/// Hand-made triangles, one per clause, then drawn ones over the whole
+/// domain.
+pub fn check_solid_angle(f: SolidFn) -> Check {
+    let v = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
+    let o = v(3.1, -7.3, 11.7);
+    let cases = [
+        // An octant: π/2, either winding, off the origin and scaled.
+        (Vec3::ZERO, [Vec3::X, Vec3::Y, Vec3::Z]),
+        (
+            o,
+            [
+                o + v(0.37, 0.0, 0.0),
+                o + v(0.0, 0.0, 0.37),
+                o + v(0.0, 0.37, 0.0),
+            ],
+        ),
+        // Just above a large triangle: nearly 2π.
+        (
+            v(0.1, 0.2, 1e-3),
+            [
+                v(-10.0, -10.0, 0.0),
+                v(20.0, -10.0, 0.0),
+                v(-10.0, 20.0, 0.0),
+            ],
+        ),
+        // Beside it in its plane: 0.
+        (v(5.0, 5.0, 0.0), [Vec3::ZERO, Vec3::X, Vec3::Y]),
+        // Small, 1000 sizes away, oblique, 300 m from the origin.
+        (
+            v(300.0, 1.0, 2.0),
+            [
+                v(-700.0, 401.0, 0.3),
+                v(-699.3, 401.2, 0.9),
+                v(-700.1, 400.4, 1.1),
+            ],
+        ),
+        // A sliver seen from nearby.
+        (
+            v(0.3, 0.4, 0.5),
+            [Vec3::ZERO, v(1.0, 0.0, 0.0), v(0.5, 1e-3, 0.0)],
+        ),
+    ];
+    let (mut worst, mut detail) = worst_of(cases.into_iter().map(|(p, t)| error(f(p, t), p, t)));
+    fold_drawn(&mut worst, &mut detail, drawn(f));
+    Check {
+        error: worst,
+        tolerance: 1e-4,
+        detail,
+        images: None,
+        symptom: (worst.is_nan() || worst > 1e-4)
+            .then(|| solid_symptom(f))
+            .flatten(),
+    }
+}
+
+/// Triangles of any shape (slivers down to 1:1000) from 10⁻³·⁵ to 10³ m,
+/// up to 10⁴ sizes from the origin, seen from anywhere: 0.3 to 1000 sizes
+/// away, just above (10⁻³ to 10⁻¹ sizes), grazing, and in their plane.
+fn drawn(f: SolidFn) -> (f64, String) {
+    let mut d = Draws::new(56);
+    worst_drawn((0..d.count(300, 800)).map(|_| {
+        d.next_case();
+        let s = d.triangle_scale();
+        let kind = d.unit();
+        // Points just above stay near the origin, so that rounding p
+        // cannot put it on the triangle.
+        let at = d.place_for(s, if kind < 0.2 { 2.0 } else { 4.0 });
+        let mut tri = [0; 3].map(|_| at + d.in_cube() * s);
+        if d.unit() < 0.2 {
+            let k = d.unit();
+            tri[2] = tri[0] + (tri[1] - tri[0]) * k + d.direction() * s * d.decades(-3.0, -1.0);
+        }
+        let centre = (tri[0] + tri[1] + tri[2]) / 3.0;
+        let n = (tri[1] - tri[0])
+            .cross(tri[2] - tri[0])
+            .normalize_or(Vec3::Z);
+        let along = d
+            .direction()
+            .cross(n)
+            .normalize_or(n.any_orthonormal_vector());
+        let p = if kind < 0.2 {
+            let (u, w) = (d.unit(), d.unit());
+            let (u, w) = if u + w > 1.0 {
+                (1.0 - u, 1.0 - w)
+            } else {
+                (u, w)
+            };
+            let inside = tri[0] + (tri[1] - tri[0]) * u + (tri[2] - tri[0]) * w;
+            inside + n * d.sign() * s * d.decades(-3.0, -1.0)
+        } else if kind < 0.6 {
+            centre + d.direction() * s * d.decades(-0.5, 3.0)
+        } else if kind < 0.8 {
+            let lift = n * d.sign() * d.decades(-4.0, -1.0);
+            centre + (along + lift).normalize() * s * d.decades(0.0, 3.0)
+        } else {
+            centre + along * s * d.decades(0.5, 3.0)
+        };
+        let t = if d.unit() < 0.5 {
+            tri
+        } else {
+            [tri[0], tri[2], tri[1]]
+        };
+        error(f(p, t), p, t)
+    }))
+}
+
+/// What a failing solid angle got wrong, from four probes.
+fn solid_symptom(f: SolidFn) -> Option<Symptom> {
+    let rel = |p: Vec3, t: [Vec3; 3]| {
+        let (pd, td) = wide(p, t);
+        let want = exact(pd, td);
+        (f64::from(f(p, t)) - want).abs() / want
+    };
+    let octant = [Vec3::X, Vec3::Y, Vec3::Z];
+    let (a, b) = (
+        f(Vec3::ZERO, octant),
+        f(Vec3::ZERO, [Vec3::X, Vec3::Z, Vec3::Y]),
+    );
+    let big = [
+        Vec3::new(-10.0, -10.0, 0.0),
+        Vec3::new(20.0, -10.0, 0.0),
+        Vec3::new(-10.0, 20.0, 0.0),
+    ];
+    let near = rel(Vec3::new(0.1, 0.2, 1e-2), big);
+    let at = Vec3::new(0.0, 0.0, 300.0);
+    let face_on = rel(at, [Vec3::ZERO, Vec3::X, Vec3::Y]);
+    // 1000 sizes away, 10⁴ from the origin.
+    let (o, far) = (Vec3::new(5e3, -3e3, 7e3), Vec3::new(811.3, -437.9, 389.1));
+    let corners = [
+        Vec3::new(0.013, 0.317, 0.109),
+        Vec3::new(0.533, 0.871, 0.437),
+        Vec3::new(-0.219, 0.127, 0.991),
+    ];
+    let oblique = rel(o + far, corners.map(|c| o + c));
+    let octant_off = rel(Vec3::ZERO, octant);
+    if !(a >= 0.0 && b >= 0.0 && (a - b).abs() <= 1e-3 * a.abs()) {
+        Some(SOLID_SIGNED)
+    } else if octant_off > 1e-2 && face_on < 1e-2 {
+        Some(SOLID_FAR_LIMIT)
+    } else if octant_off < 1e-3 && near > 1e-3 {
+        Some(SOLID_ABOVE_PI)
+    } else if octant_off < 1e-3 && near < 1e-3 && oblique > 1e-3 {
+        Some(SOLID_PRECISION)
+    } else {
+        None
+    }
+}
