@@ -5,6 +5,7 @@
 //! solution written the same way must pass under every seed.
 
 use std::collections::{HashMap, HashSet};
+use std::f32::consts::PI;
 
 use glam::Vec3;
 use raystep::ch6_global_illumination::layers::{
@@ -12,7 +13,7 @@ use raystep::ch6_global_illumination::layers::{
 };
 use raystep::grading::exercise::Check;
 use raystep::grading::exercises::bounce_layers::{Gathered, How};
-use raystep::grading::exercises::{bounce_layers, ch2, ch3, refraction};
+use raystep::grading::exercises::{bounce_layers, ch2, ch3, ch5, refraction};
 
 use super::under_seeds;
 
@@ -230,6 +231,97 @@ fn fresh_sah_mistakes_fail() {
     });
     fails("the plane at the left side's last centroid", || {
         ch3::check_sah(sah::<8>)
+    });
+}
+
+// ---- 5.7 spot -----------------------------------------------------------------
+
+/// A spot's power with bug `B`: 0 none (half the band, by half-angle
+/// sines), 1 the whole outer cone, 2 the inner cone only, 3 1 - cos in
+/// f32, 4 the cone of the mean angle, 5 4π for 2π, 7 the half-angle form
+/// doubled.
+fn spot<const B: u8>(i: Vec3, inner: f32, outer: f32) -> Vec3 {
+    let s2 = |a: f32| {
+        let s = (0.5 * a).sin();
+        s * s
+    };
+    let share = match B {
+        1 => 2.0 * s2(outer),
+        2 => 2.0 * s2(inner),
+        3 => 1.0 - 0.5 * (inner.cos() + outer.cos()),
+        4 => 2.0 * s2(0.5 * (inner + outer)),
+        7 => 2.0 * (s2(inner) + s2(outer)),
+        _ => s2(inner) + s2(outer),
+    };
+    let k = if B == 5 { 4.0 * PI } else { 2.0 * PI };
+    i * k * share
+}
+
+#[test]
+fn fresh_spot_mistakes_fail() {
+    passes("the band's half, by half-angle sines", || {
+        ch5::check_spot(spot::<0>)
+    });
+    fails("the outer cone, full", || ch5::check_spot(spot::<1>));
+    fails("the inner cone only", || ch5::check_spot(spot::<2>));
+    fails("1 - cos in f32 at tiny cones", || {
+        ch5::check_spot(spot::<3>)
+    });
+    fails("the mean angle's cone", || ch5::check_spot(spot::<4>));
+    fails("4π for the sphere's 2π", || ch5::check_spot(spot::<5>));
+    fails("the half-angle form doubled", || ch5::check_spot(spot::<7>));
+}
+
+// ---- 5.6 solid angle ------------------------------------------------------------
+
+/// Van Oosterom and Strackee's formula with bug `B`: 0 none, 1 A cos θ /
+/// r² at the centroid, 2 atan of the quotient for atan2, 3 signed, 7 4π -
+/// Ω for one winding, 8 the triple product of the three long vectors.
+fn solid<const B: u8>(p: Vec3, tri: [Vec3; 3]) -> f32 {
+    let [a, b, c] = tri.map(|v| v - p);
+    let (la, lb, lc) = (a.length(), b.length(), c.length());
+    // The triple product from the triangle's own edges: a · (b × c) of
+    // three long vectors cancels away every digit for a far triangle.
+    let triple = match B {
+        8 => a.dot(b.cross(c)),
+        _ => a.dot((tri[1] - tri[0]).cross(tri[2] - tri[0])),
+    };
+    let den = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+    match B {
+        1 => {
+            let centre = (a + b + c) / 3.0;
+            let n = (tri[1] - tri[0]).cross(tri[2] - tri[0]);
+            0.5 * n.dot(centre).abs() / centre.length().powi(3)
+        }
+        2 => (2.0 * (triple.abs() / den).atan()).abs(),
+        3 => 2.0 * triple.atan2(den),
+        7 => {
+            let o = 2.0 * triple.abs().atan2(den);
+            if triple < 0.0 {
+                4.0 * PI - o
+            } else {
+                o
+            }
+        }
+        _ => 2.0 * triple.abs().atan2(den),
+    }
+}
+
+#[test]
+fn fresh_solid_angle_mistakes_fail() {
+    passes("van Oosterom and Strackee", || {
+        ch5::check_solid_angle(solid::<0>)
+    });
+    fails("A cos θ / r² at the centroid", || {
+        ch5::check_solid_angle(solid::<1>)
+    });
+    fails("atan for atan2", || ch5::check_solid_angle(solid::<2>));
+    fails("signed", || ch5::check_solid_angle(solid::<3>));
+    fails("4π - Ω for one winding", || {
+        ch5::check_solid_angle(solid::<7>)
+    });
+    fails("a · (b × c) of the long vectors in f32", || {
+        ch5::check_solid_angle(solid::<8>)
     });
 }
 
