@@ -246,15 +246,18 @@ pub fn check_refraction(f: RefractFn) -> Check {
     }
 }
 
-/// What a failing refraction got wrong, from four probes about a tilted
-/// normal: into glass at 30° and at 60°, out of glass at 20° and at 60°.
+/// What a failing refraction got wrong, from probes about a tilted
+/// normal: into glass at 30° and at 60°, out of glass at 20° (also told
+/// with the normal turned round) and at 60°; else what the worst case of
+/// the check showed.
 fn probe_symptom(f: RefractFn) -> Option<Symptom> {
     let n = Vec3::new(-0.2, 0.9, 0.3).normalize();
     let a = Vec3::new(0.5, 0.1, 0.8);
     let right = |c: f64, eo: f32, ei: f32| case(f, at_cos(n, c, a), n, eo, ei);
     let into = right(-0.866, 1.0, 1.5);
-    // The same crossing described from inside: the normal turned round.
     let out = right(0.94, 1.0, 1.5);
+    // The same crossing as `out`, told with the normal turned round: the
+    // light now comes from "outside", whose index is the glass's.
     let mirrored = case(f, at_cos(-n, -0.94, a), -n, 1.5, 1.0);
     if into.0 > TOL {
         return into.2;
