@@ -55,7 +55,8 @@ fn rel(got: Vec3, want: DVec3) -> f64 {
 }
 
 /// Φ = ∫ I · falloff dω for hand-made cones (the falloff integrated
-/// numerically), then drawn ones, per channel, to 10⁻⁵ relative.
+/// numerically), then drawn ones, each channel to 10⁻⁵ of the brightest
+/// channel's power (as `point_light` does).
 pub fn check_spot(f: SpotFn) -> Check {
     let i = Vec3::new(4.0, 2.0, 0.5);
     let cases = [

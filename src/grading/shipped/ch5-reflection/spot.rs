@@ -7,7 +7,8 @@
 //! over every direction. A lighting artist who makes a spot's cone wider
 //! or its edge softer changes Φ; your function says by how much.
 //!
-//! Contract (what the grader checks, per channel, to 10⁻⁵ relative):
+//! Contract (what the grader checks, each channel to 10⁻⁵ of the
+//! brightest channel's power):
 //! * Φ (W) of a spot of intensity `intensity` (W/sr) on its axis, inner
 //!   half-angle `inner` and outer half-angle `outer`, in radians,
 //!   0 ≤ inner ≤ outer ≤ π, with the book's falloff;
