@@ -328,7 +328,10 @@ fn hostile_exercises_fail_and_leave_nothing_behind() {
     assert!(!exercises.join(format!("{MARKER}-build")).exists());
     let json = std::fs::read_to_string(out.join("results.json")).unwrap();
     assert!(json.contains("\"score\": 0,"), "{json}");
-    assert!(json.contains(&format!("\"max_score\": {graded},")), "{json}");
+    assert!(
+        json.contains(&format!("\"max_score\": {graded},")),
+        "{json}"
+    );
 }
 
 /// Case 11: links where the grader writes its own files (results.json,
