@@ -6,35 +6,10 @@
 use std::collections::{BTreeMap, HashMap};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use raystep::grading::exercise::{Check, Symptom};
+use raystep::grading::exercise::Check;
 use raystep::grading::exercises::ch2::{self, manifold};
 
-use super::under_seeds;
-
-const SEEDS: [u64; 5] = [0, 1, 0x5eed, 977, 31337];
-
-/// Checks `check` fails under every seed, naming `symptom` (when given);
-/// what went otherwise is added to `wrong`.
-fn fails(wrong: &mut Vec<String>, what: &str, symptom: Option<Symptom>, check: impl Fn() -> Check) {
-    for (seed, c) in under_seeds(&SEEDS, check) {
-        if c.passed() {
-            wrong.push(format!("{what} passed under seed {seed}: {}", c.detail));
-        } else if symptom.is_some_and(|s| c.symptom != Some(s)) {
-            wrong.push(format!(
-                "{what}, seed {seed}, named {:?}: {}",
-                c.symptom, c.detail
-            ));
-        }
-    }
-}
-
-fn passes(wrong: &mut Vec<String>, what: &str, check: impl Fn() -> Check) {
-    for (seed, c) in under_seeds(&SEEDS, check) {
-        if !c.passed() {
-            wrong.push(format!("{what} failed under seed {seed}: {}", c.detail));
-        }
-    }
-}
+use super::{fails_under as fails, passes_under as passes, under_seeds, SEEDS};
 
 /// Which mistake the counting makes, one knob each.
 #[derive(Clone, Copy, Default)]

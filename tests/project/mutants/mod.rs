@@ -32,6 +32,40 @@ pub fn under_seeds(seeds: &[u64], check: impl Fn() -> Check) -> Vec<(u64, Check)
     found
 }
 
+/// The seeds the newer exercises' mutants and alternatives are tried
+/// under.
+pub const SEEDS: [u64; 5] = [0, 1, 0x5eed, 977, 31337];
+
+/// Checks `check` fails under every one of [`SEEDS`], naming `symptom`
+/// (when given); what went otherwise is added to `wrong`.
+pub fn fails_under(
+    wrong: &mut Vec<String>,
+    what: &str,
+    symptom: Option<Symptom>,
+    check: impl Fn() -> Check,
+) {
+    for (seed, c) in under_seeds(&SEEDS, check) {
+        if c.passed() {
+            wrong.push(format!("{what} passed under seed {seed}: {}", c.detail));
+        } else if symptom.is_some_and(|s| c.symptom != Some(s)) {
+            wrong.push(format!(
+                "{what}, seed {seed}, named {:?}: {}",
+                c.symptom, c.detail
+            ));
+        }
+    }
+}
+
+/// Checks `check` passes under every one of [`SEEDS`]; what did not is
+/// added to `wrong`.
+pub fn passes_under(wrong: &mut Vec<String>, what: &str, check: impl Fn() -> Check) {
+    for (seed, c) in under_seeds(&SEEDS, check) {
+        if !c.passed() {
+            wrong.push(format!("{what} failed under seed {seed}: {}", c.detail));
+        }
+    }
+}
+
 /// `check` failed, naming `symptom`, which its chapter's `exercises` list;
 /// returns the check's detail. `what` names the mistake in a failure.
 pub fn fails_naming(check: Check, symptom: Symptom, exercises: &[Exercise], what: &str) -> String {
