@@ -18,7 +18,8 @@ pub const PATH: &str = "chapters/questions.toml";
 /// The student's sheet, inside the exercises folder (`chapters/`).
 pub const SHEET: &str = "predictions.toml";
 /// The sheet as shipped (the blank one: [`blank_sheet`] of the bank; a
-/// test keeps the two the same).
+/// test keeps the two the same). The book includes its chapters from this
+/// copy, never from the student's `chapters/predictions.toml`.
 pub const SHIPPED: &str = include_str!("shipped/predictions.toml");
 /// The largest sheet read: a sheet of every question fits in a tenth.
 const MAX_SHEET: u64 = 256 * 1024;
