@@ -72,7 +72,10 @@ pub fn check_spot(f: SpotFn) -> Check {
         let got = f(i, inner, outer);
         (
             rel(got, want),
-            format!("I {i}, inner {inner}, outer {outer}: got {got}, expected {want:.6}"),
+            format!(
+                "I {i}, inner {inner}, outer {outer}: got {got}, expected {}",
+                want.as_vec3()
+            ),
         )
     }));
     // Drawn cones from 10⁻³ rad to π, hard-edged, all soft or in between,
@@ -98,7 +101,10 @@ pub fn check_spot(f: SpotFn) -> Check {
         let got = f(i, inner, outer);
         (
             rel(got, want),
-            format!("I {i}, inner {inner}, outer {outer}: got {got}, expected {want:.6}"),
+            format!(
+                "I {i}, inner {inner}, outer {outer}: got {got}, expected {}",
+                want.as_vec3()
+            ),
         )
     }));
     fold_drawn(&mut worst, &mut detail, drawn);
