@@ -300,16 +300,6 @@ impl Bvh8 {
         closest(self, r, t_max, stack)
     }
 
-    #[inline(always)]
-    fn leaf_closest_lanes(&self, r: &RayData, l: usize, t_max: f32) -> Option<(Hit, usize)> {
-        let h = leaf_test(r, &self.leaves[l], t_max);
-        let best = nearest_lane(h.hit, &h.t, &h.u, &h.v);
-        match h.check {
-            0 => best,
-            check => self.leaf_checked(r, l, check, t_max, best),
-        }
-    }
-
     /// The nearest of `best` (the leaf's hits so far) and leaf `l`'s rare
     /// lanes `check` hit in (0, t_max), by the one-triangle test.
     pub(super) fn leaf_checked(
@@ -361,7 +351,12 @@ impl WideTree<W> for Bvh8 {
 
     #[inline(always)]
     fn leaf_closest(&self, r: &RayData, leaf: usize, t_max: f32) -> Option<(Hit, usize)> {
-        self.leaf_closest_lanes(r, leaf, t_max)
+        let h = leaf_test(r, &self.leaves[leaf], t_max);
+        let best = nearest_lane(h.hit, &h.t, &h.u, &h.v);
+        match h.check {
+            0 => best,
+            check => self.leaf_checked(r, leaf, check, t_max, best),
+        }
     }
 
     #[inline(always)]

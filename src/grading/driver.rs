@@ -259,14 +259,7 @@ fn predict_main(dir: &std::path::Path, chapters: &[String]) -> ExitCode {
             }
         }
     }
-    let sheet = predict::bank().map_err(str::to_string).and_then(|bank| {
-        let problems = predict::problems(bank);
-        match problems.is_empty() {
-            true => predict::read_sheet(dir, bank),
-            false => Err(problems.join("\nerror: ")),
-        }
-    });
-    match sheet {
+    match predict::read(dir) {
         Ok(mut sheet) => {
             if !wanted.is_empty() {
                 sheet.marks.retain(|(q, _)| wanted.contains(&q.chapter));
@@ -284,10 +277,7 @@ fn predict_main(dir: &std::path::Path, chapters: &[String]) -> ExitCode {
 /// The predict line under the course's progress: the sheet's counts, or
 /// why it cannot be read (which does not change the grade).
 fn predict_line(dir: &std::path::Path) -> String {
-    let sheet = predict::bank()
-        .map_err(str::to_string)
-        .and_then(|bank| predict::read_sheet(dir, bank));
-    match sheet {
+    match predict::read(dir) {
         Ok(sheet) => sheet.summary(),
         Err(e) => format!("predict: {e}\n"),
     }

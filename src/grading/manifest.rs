@@ -49,13 +49,21 @@ pub fn manifest() -> Result<&'static Manifest, &'static str> {
 
 /// Parses manifest text.
 pub fn parse(text: &str) -> Result<Manifest, String> {
-    toml::from_str(text).map_err(|e| {
-        let line = e
-            .span()
-            .map(|s| text[..s.start.min(text.len())].lines().count().max(1));
-        let at = line.map_or(String::new(), |l| format!(" line {l}:"));
-        format!("{PATH}:{at} {}", e.message())
-    })
+    toml::from_str(text).map_err(|e| toml_error(PATH, text, &e))
+}
+
+/// The line of `text` that byte `at` lies on (from 1).
+pub(crate) fn line_at(text: &str, at: usize) -> usize {
+    text[..at.min(text.len())].lines().count().max(1)
+}
+
+/// A TOML error in the grader's data file `file` (of text `text`), as
+/// `file: line N: message`.
+pub(crate) fn toml_error(file: &str, text: &str, e: &toml::de::Error) -> String {
+    let at = e.span().map_or(String::new(), |s| {
+        format!(" line {}:", line_at(text, s.start))
+    });
+    format!("{file}:{at} {}", e.message())
 }
 
 /// What to show where the manifest has no text: says where it belongs.

@@ -11,6 +11,9 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::sync::OnceLock;
 
+use super::manifest::{line_at, toml_error};
+use crate::core::table::wrap;
+
 /// The question bank, as built in.
 pub const TEXT: &str = include_str!("../../chapters/questions.toml");
 /// Its path in the repository, for messages.
@@ -85,17 +88,6 @@ pub fn bank() -> Result<&'static Bank, &'static str> {
         .get_or_init(|| parse_bank(TEXT))
         .as_ref()
         .map_err(String::as_str)
-}
-
-fn line_of(text: &str, at: usize) -> usize {
-    text[..at.min(text.len())].lines().count().max(1)
-}
-
-fn toml_error(file: &str, text: &str, e: &toml::de::Error) -> String {
-    let at = e.span().map_or(String::new(), |s| {
-        format!(" line {}:", line_of(text, s.start))
-    });
-    format!("{file}:{at} {}", e.message().trim())
 }
 
 /// Parses bank text.
@@ -248,7 +240,7 @@ pub fn read_sheet(dir: &Path, bank: &'static Bank) -> Result<Sheet, String> {
             if bank.question.iter().any(|q| q.id == id) {
                 answers.insert(id, entry.answer);
             } else {
-                let line = line_of(&text, entry.answer.span().start);
+                let line = line_at(&text, entry.answer.span().start);
                 strays.push(format!(
                     "{shown} line {line}: no question `{id}` (see chapters/questions.toml)"
                 ));
@@ -264,7 +256,7 @@ pub fn read_sheet(dir: &Path, bank: &'static Bank) -> Result<Sheet, String> {
                 Some(v) => match mark(q, v.get_ref()) {
                     Mark::Unreadable(why) => Mark::Unreadable(format!(
                         "{shown} line {}: {why}",
-                        line_of(&text, v.span().start)
+                        line_at(&text, v.span().start)
                     )),
                     m => m,
                 },
@@ -273,6 +265,17 @@ pub fn read_sheet(dir: &Path, bank: &'static Bank) -> Result<Sheet, String> {
         })
         .collect();
     Ok(Sheet { marks, strays })
+}
+
+/// The sheet in `dir` marked against the built-in bank; an error says
+/// what is wrong with either (every problem of the bank, one per line).
+pub fn read(dir: &Path) -> Result<Sheet, String> {
+    let bank = bank()?;
+    let problems = problems(bank);
+    if !problems.is_empty() {
+        return Err(problems.join("\nerror: "));
+    }
+    read_sheet(dir, bank)
 }
 
 impl Sheet {
@@ -298,27 +301,15 @@ impl Sheet {
     }
 }
 
-/// `text` wrapped to `width` columns, its first line after `indent`, the
-/// others after `indent` and `hang` more spaces.
-pub fn wrap(text: &str, width: usize, indent: &str, hang: usize) -> String {
-    let mut out = String::new();
-    let mut line = String::new();
-    let mut lead = indent.to_string();
-    for word in text.split_whitespace() {
-        if !line.is_empty() && lead.chars().count() + line.len() + 1 + word.len() > width {
-            out += &format!("{lead}{line}\n");
-            line.clear();
-            lead = format!("{indent}{}", " ".repeat(hang));
-        }
-        if !line.is_empty() {
-            line.push(' ');
-        }
-        line += word;
-    }
-    if !line.is_empty() {
-        out += &format!("{lead}{line}\n");
-    }
-    out
+/// `text` wrapped to `width` columns after `indent`, its later lines
+/// `hang` more spaces in.
+fn wrap_hung(text: &str, width: usize, indent: &str, hang: usize) -> String {
+    wrap(
+        text,
+        indent,
+        &format!("{indent}{}", " ".repeat(hang)),
+        width,
+    )
 }
 
 /// The answer, as the student would write it.
@@ -341,12 +332,12 @@ pub fn explain(sheet: &Sheet) -> String {
             Mark::Unreadable(why) => format!("cannot read the answer: {why}"),
         };
         out += &format!("{} {verdict}\n", q.id);
-        out += &wrap(&q.ask, 76, "  ", 0);
+        out += &wrap_hung(&q.ask, 76, "  ", 0);
         for (i, c) in q.choices.iter().enumerate() {
-            out += &wrap(&format!("{}) {c}", (b'a' + i as u8) as char), 76, "    ", 3);
+            out += &wrap_hung(&format!("{}) {c}", (b'a' + i as u8) as char), 76, "    ", 3);
         }
         if matches!(m, Mark::Right | Mark::Wrong) {
-            out += &wrap(&format!("why: {}", q.explain), 76, "  ", 5);
+            out += &wrap_hung(&format!("why: {}", q.explain), 76, "  ", 5);
         }
         out += "\n";
     }
@@ -384,9 +375,9 @@ pub fn blank_sheet(bank: &Bank) -> String {
         }
         let (_, name) = q.id.split_once('/').unwrap_or(("", &q.id));
         out += &format!("[ch{chapter}.{name}]\n");
-        out += &wrap(&q.ask, 72, "# ", 0);
+        out += &wrap_hung(&q.ask, 72, "# ", 0);
         for (i, c) in q.choices.iter().enumerate() {
-            out += &wrap(&format!("{}) {c}", (b'a' + i as u8) as char), 72, "#   ", 3);
+            out += &wrap_hung(&format!("{}) {c}", (b'a' + i as u8) as char), 72, "#   ", 3);
         }
         out += "answer = \"\"\n";
     }
