@@ -88,7 +88,9 @@ struct Cli {
     #[arg(long, value_name = "N",
           value_parser = clap::value_parser!(u32).range(1..=raystep::core::run::MAX_SPP as i64))]
     spp_figure: Option<u32>,
-    /// Run the benchmark (Cornell box 256x256, 64 spp, 16 bounces) instead.
+    /// Run the benchmark instead: both engines and samplers on the Cornell
+    /// box (or --scene) at 256x256 (or --width/--height), 64 spp (or
+    /// --spp), 16 bounces, with the RMSE against its stored reference.
     #[arg(long)]
     bench: bool,
     /// Paths per second of both engines on the Cornell box, the bunny and a
@@ -141,10 +143,13 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
     if cli.bench {
         init_threads(common.threads)?;
         let spp = if common.spp > 1 { common.spp } else { 64 };
+        let (w, h) = bench::SIZE;
+        let scene = common.load_scene()?;
+        let scene = scene.with_resolution(common.width.unwrap_or(w), common.height.unwrap_or(h))?;
         let text = format!(
             "{}\n{}",
-            bench::bench(spp, &stage.path)?.to_text(),
-            bench::query_bench().to_text()
+            bench::bench(spp, &stage.path, &scene)?,
+            bench::query_bench(&scene).to_text()
         );
         return print(&text);
     }

@@ -378,6 +378,15 @@ pub fn film_mean(f: &Film) -> Vec3 {
     f.pixels.iter().sum::<Vec3>() / f.pixels.len().max(1) as f32
 }
 
+/// ` --scene <file>` for a scene loaded from a file, nothing for the
+/// built-in one: the flag a command that remakes `scene` needs.
+pub fn scene_flag(scene: &Scene) -> String {
+    match scene.source.starts_with('<') {
+        true => String::new(),
+        false => format!(" --scene {}", scene.source),
+    }
+}
+
 /// Renders the stored reference of `scene` (`spp` samples per pixel with
 /// `path` and `sampler`, seeded by `seed`) into [`reference_dir`], with a
 /// text file of every setting and the command that remakes it; returns that
@@ -406,8 +415,8 @@ pub fn make_reference(
     let meta = format!(
         "scene = {}\ncontent = {}\ntriangles = {}\nwidth = {}\nheight = {}\nspp = {spp}\nseed = {}\n\
          estimator = {}\nsampler = {}\nmax_bounces = {}\nrr_after = {}\npaths = {}\nseconds = {secs:.1}\n\
-         threads = {}\ncommand = cargo run --release --bin ch6 -- --make-reference --width {} --height {} --spp {spp} --seed {} \
-         --estimator {} --sampler {} {} --rr-after {}\n",
+         threads = {}\ncommand = cargo run --release --bin ch6 -- --make-reference{} --width {} --height {} --spp {spp} \
+         --seed {} --estimator {} --sampler {} {} --rr-after {}\n",
         scene.name,
         scene.content_hash(),
         scene.triangle_count(),
@@ -420,6 +429,7 @@ pub fn make_reference(
         path.rr_min_bounce,
         acc.stats.paths,
         rayon::current_num_threads(),
+        scene_flag(scene),
         acc.width,
         acc.height,
         seed,

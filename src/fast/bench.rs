@@ -1,18 +1,20 @@
-//! `ch6 --bench`: the Cornell box at 256x256, 64 spp, up to 16 bounces,
-//! MIS (or the estimator, bounce limit and roulette flags given), on the
-//! current thread pool, with both engines; seconds, paths/s, rays per path and RMSE
-//! against the stored references, for both samplers.
+//! `ch6 --bench`: a scene (the Cornell box unless `--scene` names one)
+//! at 256x256 (or `--width`/`--height`), 64 spp, up to 16 bounces, MIS
+//! (or the estimator, bounce limit and roulette flags given), on the
+//! current thread pool, with both engines; seconds, paths/s, rays per path
+//! and RMSE against the stored references, for both samplers.
 //!
 //! Two RMSEs are printed. The first is per pixel, against the stored
-//! 256x256 reference (16,384 spp, so its own noise adds well under 1% to
-//! the figure). The second is against the 64x64 reference the tests use,
-//! after box-downsampling the render to 64x64 (each reference pixel
-//! against the mean of the 4 x 4 render pixels it covers, which has the
-//! same expectation); averaging 16 pixels divides the noise variance by
-//! 16, so it is about a quarter of the first. The last column is the
-//! per-pixel noise the render's own sample variance predicts, √(mean s²/n):
-//! with independent numbers it should match the per-pixel RMSE (no bias);
-//! with Sobol the true error is lower than this estimate.
+//! reference of the scene at the render's size (16,384 spp, so its own
+//! noise adds well under 1% to the figure). The second is against the
+//! 64x64 reference the tests use, after box-downsampling the render to
+//! 64x64 (each reference pixel against the mean of the 4 x 4 render pixels
+//! it covers, which has the same expectation); averaging 16 pixels divides
+//! the noise variance by 16, so it is about a quarter of the first. A scene
+//! without a stored reference gets the command that makes one. The last
+//! column is the per-pixel noise the render's own sample variance predicts,
+//! √(mean s²/n): with independent numbers it should match the per-pixel
+//! RMSE (no bias); with Sobol the true error is lower than this estimate.
 
 use std::time::Instant;
 
@@ -27,27 +29,34 @@ use crate::ch5_reflection::world::World;
 use crate::core::format::format_number;
 use crate::core::report::Table;
 use crate::core::sampling::Sampler;
+use crate::core::table::{wrap, COLUMNS};
 use crate::scene::Scene;
 
 use super::bvh8::Bvh8;
 use crate::ch5_reflection::world::RayQueries;
 use crate::ch6_global_illumination::accumulate::downsample;
-use crate::ch6_global_illumination::engine::EngineChoice;
+use crate::ch6_global_illumination::engine::{EngineChoice, PathEngine};
 use crate::ch6_global_illumination::integrator::PathSettings;
-use crate::ch6_global_illumination::reference::StoredReference;
+use crate::ch6_global_illumination::reference::{reference_dir, scene_flag, StoredReference};
 use crate::ch6_global_illumination::sampler::SamplerKind;
 use crate::ch6_global_illumination::studies::render_with;
 
-/// Runs the benchmark and returns its table.
-pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table> {
-    let scene = Scene::builtin().with_resolution(256, 256)?;
-    let per_pixel = StoredReference::for_scene_at(&scene, 256, 256);
-    let small = StoredReference::for_scene(&scene);
+/// The benchmark's size when the command line names none.
+pub const SIZE: (u32, u32) = (256, 256);
+
+/// Runs the benchmark on `scene` at its own size and returns its table,
+/// then what the fast engine's loop was and, where `scene` has no stored
+/// reference at that size, how to make one.
+pub fn bench(spp: u32, path: &PathSettings, scene: &Scene) -> crate::core::error::Result<String> {
+    let (width, height) = (scene.camera.width, scene.camera.height);
+    let per_pixel = StoredReference::for_scene_at(scene, width, height);
+    let small = StoredReference::for_scene(scene);
     let threads = rayon::current_num_threads();
     let mut t = Table::new(
         &format!(
-            "ch6 benchmark: Cornell box 256x256, {spp} spp, {}, {}, roulette after {} scatterings, \
-             {threads} threads (targets: > 3.5M paths/s; RMSE²·s < 3e-4)",
+            "ch6 benchmark: {} {width}x{height}, {spp} spp, {}, {}, roulette after {} scatterings, \
+             {threads} threads (targets on the Cornell box: > 3.5M paths/s; RMSE²·s < 3e-4)",
+            scene.name,
             path.max_bounces
                 .map_or("unlimited bounces".into(), |k| format!("up to {k} bounces")),
             path.strategy.name(),
@@ -69,7 +78,7 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
         .into_iter()
         .flat_map(|e| [(e, SamplerKind::Independent), (e, SamplerKind::Sobol)]);
     for (engine, sampler) in runs {
-        let (acc, secs) = render_with(engine, &scene, path, sampler, (spp, 1), false);
+        let (acc, secs) = render_with(engine, scene, path, sampler, (spp, 1), false);
         let var = acc.variance_of_mean();
         let noise = (var
             .pixels
@@ -107,7 +116,36 @@ pub fn bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table>
             format_number(noise),
         ]);
     }
-    Ok(t)
+    let mut text = t.to_text();
+    let (used, left_out) = super::FastEngine::new(scene).notes(path);
+    let notes = [("uses", used), ("leaves out", left_out)];
+    for (what, note) in notes
+        .iter()
+        .flat_map(|(w, n)| n.iter().map(move |n| (w, n)))
+    {
+        let line = format!("The fast engine on {} {what} {note}.", scene.name);
+        text.push_str(&wrap(&line, "", "  ", COLUMNS));
+    }
+    if per_pixel.is_none() {
+        let why = StoredReference::why_none(scene).unwrap_or_else(|| {
+            format!(
+                "{} holds none of {} at {width}x{height}",
+                reference_dir().display(),
+                scene.name
+            )
+        });
+        let file = scene_flag(scene);
+        let line = format!(
+            "No RMSE per pixel: {why}. Make the reference once (16,384 spp: about 13 minutes for \
+             the Cornell box on 2 cores) with"
+        );
+        text.push_str(&wrap(&line, "", "  ", COLUMNS));
+        text.push_str(&format!(
+            "  cargo run --release --bin ch6 -- --make-reference{file} --width {width} \
+             --height {height} --spp 16384 --seed 1 --estimator mis --sampler independent\n",
+        ));
+    }
+    Ok(text)
 }
 
 /// Rays like the path tracer's, from one path vertex per pixel of
@@ -162,14 +200,16 @@ fn mqps(n: usize, query: &dyn Fn() -> usize) -> f64 {
 
 /// The ray queries alone, on one thread: chapter 3's binary BVH against
 /// the readable engine's four-wide tree and the fast engine's eight-wide
-/// one, on rays from the path tracer's own vertices (bounce rays: closest
-/// hit; shadow rays: occlusion).
-pub fn query_bench() -> Table {
-    let scene = Scene::builtin();
-    let world = World::new(&scene);
-    let (bounce, shadow) = vertex_rays(&world, &scene);
+/// one, on rays from the path tracer's own vertices in `scene` (bounce
+/// rays: closest hit; shadow rays: occlusion).
+pub fn query_bench(scene: &Scene) -> Table {
+    let world = World::new(scene);
+    let (bounce, shadow) = vertex_rays(&world, scene);
     let mut t = Table::new(
-        "ray queries on the Cornell box, one thread, million queries per second (best of 5)",
+        &format!(
+            "ray queries on {}, one thread, million queries per second (best of 5)",
+            scene.name
+        ),
         &[
             "query",
             "rays",

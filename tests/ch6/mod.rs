@@ -1,5 +1,6 @@
 //! Chapter 6: global illumination, its exercises, and its terminal preview.
 
+mod bench;
 mod caught;
 mod exercises;
 mod fast;
