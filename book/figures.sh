@@ -136,6 +136,9 @@ section "$out/ch6-cornell-box-report.txt" "Stiff and extreme cases" "$out/ch6-st
 "$bin/ch6" --bench --threads 2 --rr-after 3 > "$out/ch6-bench-rr-after-3.txt"
 # Both engines on three scene sizes (the appendix's fast-engine section).
 "$bin/ch6" --bench-scenes --threads 2 > "$out/ch6-bench-scenes.txt"
+# The benchmark on the glass-ball box (its stored reference), where the
+# fast engine runs the lesson's path loop.
+"$bin/ch6" --bench --threads 2 --scene scenes/cornell-glassball.toml > "$out/ch6-bench-glass.txt"
 
 # The main program's headless summary (running.md), run where its images
 # land in a scratch folder so the listing shows the plain `out/` paths.

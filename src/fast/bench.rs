@@ -95,7 +95,9 @@ pub fn bench(spp: u32, path: &PathSettings, scene: &Scene) -> crate::core::error
         });
         let e = |rmse: Option<f64>| -> (String, String) {
             (
-                rmse.map_or("no reference".into(), format_number),
+                // "-" where there is no reference (a note under the table
+                // says why): a wider cell would break the table into blocks.
+                rmse.map_or("-".into(), format_number),
                 rmse.map_or("-".into(), |e| format_number(e * e * secs)),
             )
         };
@@ -124,6 +126,13 @@ pub fn bench(spp: u32, path: &PathSettings, scene: &Scene) -> crate::core::error
         .flat_map(|(w, n)| n.iter().map(move |n| (w, n)))
     {
         let line = format!("The fast engine on {} {what} {note}.", scene.name);
+        text.push_str(&wrap(&line, "", "  ", COLUMNS));
+    }
+    if small.is_none() {
+        let line = format!(
+            "No RMSE 64²: no 64x64 reference of {} is stored.",
+            scene.name
+        );
         text.push_str(&wrap(&line, "", "  ", COLUMNS));
     }
     if per_pixel.is_none() {
