@@ -27,6 +27,7 @@ use glam::{Vec2, Vec3};
 
 use crate::ch3_ray_triangle::ray::Ray;
 pub use crate::ch5_reflection::direct::Strategy;
+use crate::ch5_reflection::material::Bsdf;
 use crate::ch5_reflection::mis::power_heuristic;
 use crate::ch5_reflection::world::{Interaction, World};
 
@@ -165,8 +166,9 @@ pub fn trace_path(
 
         // ANCHOR: trace_path_roulette
         // 4. Russian roulette: survive with probability q, then divide by q.
+        // q reads β without glass's η² (see `Path::eta_scale`).
         if k + 1 >= settings.rr_min_bounce {
-            let q = path.beta.max_element().min(1.0);
+            let q = (path.beta * path.eta_scale).max_element().min(1.0);
             let dies = sampler.next() >= q;
             out.layers.note(PathEvent::Roulette { q, survived: !dies }); // tell a listener (the inspector)
             if dies {
@@ -193,6 +195,12 @@ pub struct Path {
     samples_lights: bool,
     /// The throughput β.
     pub beta: Vec3,
+    /// What refraction took out of β or put into it: refraction scales
+    /// radiance by η², so inside glass β is smaller by (1/1.5)² although
+    /// the light comes back on the way out. Russian roulette reads
+    /// β · `eta_scale`, which has the scaling undone (pbrt's `etaScale`),
+    /// so that a path is not ended more often for being inside glass.
+    pub eta_scale: f32,
     /// The bounce count of light the current ray finds (`None`: the camera
     /// ray, whose emitters are layer E).
     pub k: Option<u32>,
@@ -213,6 +221,7 @@ impl Path {
             strategy,
             samples_lights: strategy.samples_lights() && !world.lights.is_empty(),
             beta: Vec3::ONE,
+            eta_scale: 1.0,
             k: None,
             from_delta: true,
             from_pdf: 0.0,
@@ -230,6 +239,11 @@ impl Path {
     /// `step`.
     fn scatter(&mut self, v: &Vertex, k: u32, step: &Step) {
         self.beta *= step.weight;
+        let refracted = step.wi.z * v.wo.z < 0.0;
+        if let (Bsdf::Dielectric(glass), true) = (v.bsdf, refracted) {
+            let (_, eta) = glass.fresnel(v.wo);
+            self.eta_scale /= eta * eta;
+        }
         self.k = Some(k);
         self.from_delta = v.delta;
         self.from_pdf = step.pdf;

@@ -10,6 +10,7 @@ mod ladder;
 mod path_record;
 mod placement;
 mod reference_match;
+mod roulette_glass;
 #[cfg(feature = "tui")]
 mod tui;
 mod unit;
