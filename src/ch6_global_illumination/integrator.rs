@@ -200,7 +200,7 @@ pub struct Path {
     /// the light comes back on the way out. Russian roulette reads
     /// β · `eta_scale`, which has the scaling undone (pbrt's `etaScale`),
     /// so that a path is not ended more often for being inside glass.
-    pub eta_scale: f32,
+    eta_scale: f32,
     /// The bounce count of light the current ray finds (`None`: the camera
     /// ray, whose emitters are layer E).
     pub k: Option<u32>,
@@ -239,10 +239,10 @@ impl Path {
     /// `step`.
     fn scatter(&mut self, v: &Vertex, k: u32, step: &Step) {
         self.beta *= step.weight;
-        let refracted = step.wi.z * v.wo.z < 0.0;
-        if let (Bsdf::Dielectric(glass), true) = (v.bsdf, refracted) {
-            let (_, eta) = glass.fresnel(v.wo);
-            self.eta_scale /= eta * eta;
+        if let Bsdf::Dielectric(_) = v.bsdf {
+            // Glass's weight is the radiance scaling alone (1 for
+            // reflection, η² for refraction; F cancels): undone for roulette.
+            self.eta_scale /= step.weight.x;
         }
         self.k = Some(k);
         self.from_delta = v.delta;
