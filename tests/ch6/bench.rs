@@ -3,20 +3,11 @@
 //! engine says which loop it ran, and a scene without a reference gets the
 //! command that makes one instead of a number.
 
-use std::path::Path;
-
 use raystep::ch6_global_illumination::integrator::PathSettings;
 use raystep::ch6_global_illumination::reference::StoredReference;
 use raystep::fast::bench;
-use raystep::scene::Scene;
 
-fn shipped(name: &str, size: u32) -> Scene {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    Scene::load(&root.join("scenes").join(name))
-        .unwrap()
-        .with_resolution(size, size)
-        .unwrap()
-}
+use crate::common;
 
 /// The cells of the table row that starts with `label`.
 fn row<'a>(text: &'a str, label: &str) -> Vec<&'a str> {
@@ -32,7 +23,7 @@ fn row<'a>(text: &'a str, label: &str) -> Vec<&'a str> {
 
 #[test]
 fn the_cornell_box_is_measured_against_its_reference_on_the_wavefront() {
-    let scene = shipped("cornell-box.toml", 64);
+    let scene = common::shipped_scene("cornell-box", 64, 64);
     let text = bench::bench(1, &PathSettings::default(), &scene).unwrap();
     assert!(
         text.starts_with("ch6 benchmark: cornell-box 64x64, 1 spp"),
@@ -54,7 +45,7 @@ fn the_cornell_box_is_measured_against_its_reference_on_the_wavefront() {
 
 #[test]
 fn a_scene_without_a_reference_at_its_size_gets_the_command_that_makes_one() {
-    let scene = shipped("cornell-glassball.toml", 32);
+    let scene = common::shipped_scene("cornell-glassball", 32, 32);
     assert!(StoredReference::for_scene_at(&scene, 32, 32).is_none());
     let text = bench::bench(1, &PathSettings::default(), &scene).unwrap();
     assert!(
@@ -80,7 +71,7 @@ fn the_glass_scene_has_its_reference_and_it_is_of_this_scene() {
     // The Mitsuba comparison's glass scene (`PEER_SCENE=glass`) is this
     // one: the per-pixel RMSE of `ch6 --bench --scene` needs its reference,
     // matched by content, not by name alone.
-    let scene = shipped("cornell-glassball.toml", 256);
+    let scene = common::shipped_scene("cornell-glassball", 256, 256);
     let r = StoredReference::for_scene_at(&scene, 256, 256).expect("a stored reference");
     assert_eq!(r.value("content"), Some(scene.content_hash().as_str()));
     assert_eq!(r.value("spp"), Some("16384"));

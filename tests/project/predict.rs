@@ -286,23 +286,12 @@ fn chapter_1_answers_are_the_cameras() {
     assert_eq!(Answer::Letters(none), question("ch1/no-image").answer);
 }
 
+/// The unit cube with its corner at `at`: the scene's closed box
+/// (`Mesh::cuboid`, vertex i at bit 1 x, bit 2 y, bit 4 z), moved there.
 fn cube(at: Vec3) -> (Vec<Vec3>, Vec<[u32; 3]>) {
-    let p = (0..8)
-        .map(|i| at + Vec3::new((i & 1) as f32, ((i >> 1) & 1) as f32, ((i >> 2) & 1) as f32))
-        .collect();
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let t = quads
-        .iter()
-        .flat_map(|[a, b, c, d]| [[*a, *b, *c], [*a, *c, *d]])
-        .collect();
-    (p, t)
+    let m = raystep::scene::mesh::Mesh::cuboid(Vec3::ONE);
+    let p = m.positions.iter().map(|p| *p + at + 0.5).collect();
+    (p, m.triangles)
 }
 
 fn check(p: Vec<Vec3>, t: Vec<[u32; 3]>) -> raystep::ch2_rasterization::mesh_check::MeshCheck {

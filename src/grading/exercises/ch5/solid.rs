@@ -125,14 +125,19 @@ pub fn check_solid_angle(f: SolidFn) -> Check {
     ];
     let (mut worst, mut detail) = worst_of(cases.into_iter().map(|(p, t)| error(f(p, t), p, t)));
     fold_drawn(&mut worst, &mut detail, drawn(f));
-    Check {
+    let check = Check {
         error: worst,
         tolerance: 1e-4,
         detail,
         images: None,
-        symptom: (worst.is_nan() || worst > 1e-4)
-            .then(|| solid_symptom(f))
-            .flatten(),
+        symptom: None,
+    };
+    match check.passed() {
+        true => check,
+        false => match solid_symptom(f) {
+            Some(symptom) => check.with_symptom(symptom),
+            None => check,
+        },
     }
 }
 

@@ -108,14 +108,19 @@ pub fn check_spot(f: SpotFn) -> Check {
         )
     }));
     fold_drawn(&mut worst, &mut detail, drawn);
-    Check {
+    let check = Check {
         error: worst,
         tolerance: 1e-5,
         detail,
         images: None,
-        symptom: (worst.is_nan() || worst > 1e-5)
-            .then(|| spot_symptom(f))
-            .flatten(),
+        symptom: None,
+    };
+    match check.passed() {
+        true => check,
+        false => match spot_symptom(f) {
+            Some(symptom) => check.with_symptom(symptom),
+            None => check,
+        },
     }
 }
 
