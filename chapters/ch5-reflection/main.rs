@@ -15,6 +15,7 @@ use raystep::ch5_reflection::shadowing::shadow_work_warning;
 use raystep::ch5_reflection::stage::{Reflection, DEFAULT};
 use raystep::core::error::Result;
 use raystep::core::run::{exit_code, init_threads, run_on, CommonArgs, RunSummary};
+use raystep::scene::{LightSampling, Scene};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum StrategyArg {
@@ -41,6 +42,10 @@ struct Cli {
     /// Mirror bounces followed before a mirror shows black.
     #[arg(long, default_value_t = DEFAULT.max_mirror_bounces)]
     max_mirror_bounces: u32,
+    /// How area lights are sampled: a point by area, or a direction by the
+    /// solid angle the light covers.
+    #[arg(long, value_enum, default_value = "area")]
+    light_sampling: LightSampling,
 }
 
 fn main() -> ExitCode {
@@ -58,14 +63,17 @@ fn main() -> ExitCode {
         },
         max_mirror_bounces: cli.max_mirror_bounces,
     };
-    exit_code(run(&stage, &cli.common))
+    exit_code(run(&stage, &cli.common, cli.light_sampling))
 }
 
 /// Warns about a scene whose shadow rays cost lights x SDFs before the
 /// render (it may take hours), then runs it.
-fn run(stage: &Reflection, common: &CommonArgs) -> Result<RunSummary> {
+fn run(stage: &Reflection, common: &CommonArgs, sampling: LightSampling) -> Result<RunSummary> {
     init_threads(common.threads)?;
-    let scene = common.load_sized_scene()?;
+    let scene = Scene {
+        light_sampling: sampling,
+        ..common.load_sized_scene()?
+    };
     let samples = scene.camera.width as u64 * scene.camera.height as u64 * common.spp as u64;
     if let Some(warning) = shadow_work_warning(&scene, samples) {
         eprintln!("{warning}");

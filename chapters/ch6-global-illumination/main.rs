@@ -18,6 +18,7 @@ use raystep::ch6_global_illumination::sampler::SamplerKind;
 use raystep::ch6_global_illumination::stage::{GlobalIllumination, DEFAULT};
 use raystep::core::run::{exit_code, init_threads, run_on, CommonArgs};
 use raystep::fast::bench;
+use raystep::scene::{LightSampling, Scene};
 use raystep::{Error, Result};
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -63,6 +64,11 @@ struct Cli {
     /// Where the random numbers come from.
     #[arg(long, value_enum, default_value = "sobol")]
     sampler: SamplerArg,
+    /// How area lights are sampled: a point by area, or a direction by the
+    /// solid angle the light covers (the lesson's path loop then runs
+    /// instead of the wavefront).
+    #[arg(long, value_enum, default_value = "area")]
+    light_sampling: LightSampling,
     /// Largest bounce count k (k + 1 scatterings); paths end there.
     #[arg(long, default_value_t = 16)]
     max_bounces: u32,
@@ -137,6 +143,14 @@ fn main() -> ExitCode {
     exit_code(run(&stage, &cli))
 }
 
+/// `scene` with `--light-sampling`.
+fn sampled(cli: &Cli, scene: Scene) -> Scene {
+    Scene {
+        light_sampling: cli.light_sampling,
+        ..scene
+    }
+}
+
 fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
     stage.check()?;
     let common = &cli.common;
@@ -144,7 +158,7 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
         init_threads(common.threads)?;
         let spp = if common.spp > 1 { common.spp } else { 64 };
         let (w, h) = bench::SIZE;
-        let scene = common.load_scene()?;
+        let scene = sampled(cli, common.load_scene()?);
         let scene = scene.with_resolution(common.width.unwrap_or(w), common.height.unwrap_or(h))?;
         let text = format!(
             "{}\n{}",
@@ -169,7 +183,7 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
     }
     if cli.make_reference {
         init_threads(common.threads)?;
-        let scene = common.load_sized_scene()?;
+        let scene = sampled(cli, common.load_sized_scene()?);
         let (meta, files) = make_reference(
             stage.engine,
             &stage.path,
@@ -185,7 +199,7 @@ fn run(stage: &GlobalIllumination, cli: &Cli) -> Result<()> {
         return print(&format!("{meta}wrote:\n{list}"));
     }
     init_threads(common.threads)?;
-    let scene = common.load_scene()?;
+    let scene = sampled(cli, common.load_scene()?);
     // Said before the render, which may take hours.
     // (With --unlimited, or a --max-bounces at or past the safety limit.)
     if stage.path.bounce_limit() >= SAFETY_BOUNCES && roulette_cannot_end(&scene) {

@@ -24,7 +24,7 @@ use crate::ch5_reflection::world::{Interaction, World};
 use crate::core::plot::{LogLogPlot, Look};
 use crate::core::report::{ErrorTime, Measurement};
 use crate::core::sampling::Sampler;
-use crate::scene::Scene;
+use crate::scene::{LightSampling, Scene};
 
 /// Sizes of the study.
 #[derive(Clone, Debug, PartialEq)]
@@ -189,7 +189,32 @@ impl Problem {
     }
 }
 
-/// The study: both problems, four strategies, every sample count.
+/// The area problem with its light sampled by the solid angle it covers.
+pub fn area_problem_by_solid_angle() -> Problem {
+    let problem = area_problem();
+    let mut scene = Scene::from_text(AREA_SCENE, "study").expect("the study scenes are valid");
+    scene.light_sampling = LightSampling::SolidAngle;
+    Problem {
+        world: World::new(&scene),
+        ..problem
+    }
+}
+
+/// What the study's series are called after the problem's name, in the
+/// order of their colours: the four strategies, then the two that sample
+/// the area light, with the light sampled by solid angle.
+pub const SERIES: [&str; 6] = [
+    "uniform",
+    "bsdf",
+    "light",
+    "mis",
+    "light by solid angle",
+    "mis by solid angle",
+];
+
+/// The study: both problems, four strategies, every sample count; and on
+/// the area problem, light sampling and MIS once more with the light
+/// sampled by solid angle.
 pub fn error_against_time(study: &Study) -> ErrorTime {
     let mut et = ErrorTime {
         reference:
@@ -199,12 +224,21 @@ pub fn error_against_time(study: &Study) -> ErrorTime {
         rows: Vec::new(),
         show_slopes: true,
     };
-    for (name, problem) in [("area", area_problem()), ("environment", sky_problem())] {
-        for strategy in Strategy::ALL {
+    let by_area = Strategy::ALL.map(|s| (s, s.name().to_string()));
+    let by_solid_angle = [
+        (Strategy::Light, SERIES[4].to_string()),
+        (Strategy::Mis, SERIES[5].to_string()),
+    ];
+    for (name, problem, strategies) in [
+        ("area", area_problem(), &by_area[..]),
+        ("area", area_problem_by_solid_angle(), &by_solid_angle[..]),
+        ("environment", sky_problem(), &by_area[..]),
+    ] {
+        for (strategy, label) in strategies {
             for &n in &study.counts {
-                let (error, seconds) = problem.rmse(strategy, n, study.repeats);
+                let (error, seconds) = problem.rmse(*strategy, n, study.repeats);
                 et.rows.push(Measurement {
-                    series: format!("{name}: {}", strategy.name()),
+                    series: format!("{name}: {label}"),
                     variant: format!("{n} samples"),
                     seconds,
                     samples: n as u64,
@@ -220,12 +254,17 @@ pub fn error_against_time(study: &Study) -> ErrorTime {
 /// The study's two log-log plots, one per problem: (file name, plot). The
 /// strategies keep one colour and marker each in every plot of the book.
 pub fn plots(et: &ErrorTime) -> Vec<(String, LogLogPlot)> {
+    // A strategy keeps its colour with the light sampled by solid angle,
+    // dashed.
     let look = |series: &str| {
-        let i = Strategy::ALL
-            .iter()
-            .position(|s| series.ends_with(s.name()))
-            .unwrap_or(Strategy::ALL.len());
-        Look::nth(i)
+        let label = series.split_once(": ").map_or(series, |(_, label)| label);
+        match SERIES.iter().position(|s| *s == label) {
+            Some(i) if i >= 4 => Look {
+                dashed: true,
+                ..Look::nth(i - 2)
+            },
+            i => Look::nth(i.unwrap_or(SERIES.len())),
+        }
     };
     [
         ("area", "Area light: error against time"),

@@ -1,7 +1,8 @@
 //! Chapter 5's sampling routines as warp tests
 //! ([`crate::core::warp_test`]): uniform and cosine-weighted hemisphere
-//! directions, directions towards a square area light, and the glossy and
-//! semi-gloss lobes' directions for light arriving at 45°. The terminal
+//! directions, directions towards a square area light (by area and by
+//! solid angle), and the glossy and semi-gloss lobes' directions for light
+//! arriving at 45°. The terminal
 //! UI's warp view (`w`) lists them.
 
 use std::sync::OnceLock;
@@ -10,6 +11,7 @@ use glam::{Vec2, Vec3};
 
 use crate::core::warp_test::{StudentWarp, WarpRoutine};
 use crate::scene::mesh::Mesh;
+use crate::scene::LightSampling;
 
 use super::light::area::AreaLight;
 use super::material::glossy::Glossy;
@@ -19,7 +21,7 @@ use super::warp::{
 };
 
 /// The routines, in the order the warp view shows them.
-pub const ROUTINES: [WarpRoutine; 5] = [
+pub const ROUTINES: [WarpRoutine; 6] = [
     WarpRoutine {
         name: "uniform hemisphere",
         sample: |u| Some(uniform_hemisphere(u)),
@@ -62,6 +64,11 @@ pub const ROUTINES: [WarpRoutine; 5] = [
                 .map(|s| s.wi)
         },
         pdf: |w| SEMIGLOSS.pdf(WO, w),
+    },
+    WarpRoutine {
+        name: "area light, by solid angle",
+        sample: |u| solid_angle_light().sample_li(Vec3::ZERO, u).map(|s| s.wi),
+        pdf: |w| light_pdf(solid_angle_light(), w),
     },
 ];
 
@@ -114,6 +121,12 @@ pub fn test_light() -> &'static AreaLight {
         };
         AreaLight::new(&mesh, 0, Vec3::ONE, false).expect("the test light has an area")
     })
+}
+
+/// [`test_light`] sampled by the solid angle it subtends.
+pub fn solid_angle_light() -> &'static AreaLight {
+    static LIGHT: OnceLock<AreaLight> = OnceLock::new();
+    LIGHT.get_or_init(|| test_light().clone().sampled_by(LightSampling::SolidAngle))
 }
 
 /// The density per steradian with which `light.sample_li` from the origin

@@ -125,8 +125,8 @@ impl PathEngine for FastEngine {
             (Some(_), None) => (
                 Vec::new(),
                 vec![
-                    "the wavefront loop: it covers diffuse surfaces with MIS and no SDFs; the \
-                     lesson's path loop runs instead"
+                    "the wavefront loop: it covers diffuse surfaces with MIS, area lights \
+                     sampled by area and no SDFs; the lesson's path loop runs instead"
                         .into(),
                 ],
             ),

@@ -44,6 +44,7 @@ use crate::ch6_global_illumination::integrator::{
 use crate::ch6_global_illumination::layers::Contributions;
 use crate::ch6_global_illumination::sampler::PathSampler;
 use crate::ch6_global_illumination::vertex::Vertex;
+use crate::scene::LightSampling;
 
 use super::bvh8::Bvh8;
 use super::gather8::{gather, numbers, Lane};
@@ -53,12 +54,16 @@ use super::shade8::{dim, In8, Out8};
 
 /// Whether the wavefront loop renders `world` with `settings` exactly as
 /// the lesson's loop would (in distribution): MIS, diffuse surfaces, at
-/// least one light, no SDFs.
+/// least one light, area lights sampled by area, no SDFs.
 pub fn supports(world: &World, settings: &PathSettings) -> bool {
     settings.strategy == Strategy::Mis
         && world.sdfs.is_empty()
         && !world.lights.lights.is_empty()
         && world.bsdfs.iter().all(|b| matches!(b, Bsdf::Lambertian(_)))
+        && world.lights.lights.iter().all(|l| match l {
+            Light::Area(a) => a.sampling == LightSampling::Area,
+            _ => true,
+        })
 }
 
 /// A round's shadow rays to trace (ray and `t_max`), and beside each the

@@ -11,8 +11,8 @@ use super::object::{build_object, check_finite};
 use super::sdf::SdfObject;
 use super::validate;
 use super::{
-    Limits, Material, MeshReader, Scene, DEFAULT_EXPONENT, DEFAULT_IOR, DEFAULT_SPECULAR,
-    MAX_EXPONENT,
+    LightSampling, Limits, Material, MeshReader, Scene, DEFAULT_EXPONENT, DEFAULT_IOR,
+    DEFAULT_SPECULAR, MAX_EXPONENT,
 };
 use crate::core::error::{Error, Result};
 use crate::core::text::{shorten, NAME_CHARS};
@@ -254,6 +254,7 @@ pub(super) fn build(
         sdfs,
         origin: glam::DVec3::ZERO,
         unit: 1.0,
+        light_sampling: LightSampling::Area,
     }
     .moved_to(origin)
     .normalized())

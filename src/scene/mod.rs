@@ -110,6 +110,32 @@ pub struct Scene {
     /// for a tiny scene, which is scaled up by a power of two
     /// ([`Scene::normalized`]).
     pub unit: f64,
+    /// How chapters 5 and 6 sample area lights (`--light-sampling`): not
+    /// part of the scene's content, since either way the image converges
+    /// to the same one.
+    pub light_sampling: LightSampling,
+}
+
+/// How area lights are sampled (chapter 5): a point by area, or a
+/// direction by the solid angle the light subtends.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum LightSampling {
+    /// A uniform point on the light's surface (pdf 1/A).
+    #[default]
+    Area,
+    /// A uniform direction in the solid angle the light covers, where it
+    /// can (`crate::ch5_reflection::light::spherical`).
+    SolidAngle,
+}
+
+impl LightSampling {
+    /// The name the command line and the reports use.
+    pub fn name(self) -> &'static str {
+        match self {
+            LightSampling::Area => "area",
+            LightSampling::SolidAngle => "solid-angle",
+        }
+    }
 }
 
 /// Limits on what one load may read and build, so that a huge or endless

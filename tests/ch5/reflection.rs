@@ -143,7 +143,9 @@ fn the_study_errors_fall_as_one_over_root_n() {
         counts: vec![16, 256],
         repeats: 24,
     });
-    assert_eq!(et.rows.len(), 2 * 4 * 2);
+    // Two problems by four strategies, and light sampling and MIS by solid
+    // angle on the area problem, at two counts each.
+    assert_eq!(et.rows.len(), (2 * 4 + 2) * 2);
     for pair in et.rows.chunks(2) {
         // 16× the samples: error / 4, within the noise of 24 repeats.
         let ratio = pair[0].error / pair[1].error;

@@ -435,6 +435,7 @@ fn the_lanes_triangle_pick_and_its_corners_are_the_lights() {
             inv_area: 1.0 / area,
             le: Vec3::ONE,
             two_sided: false,
+            sampling: raystep::scene::LightSampling::Area,
         }
     };
     // Areas of every size, with zero-area triangles first, between and last.
@@ -586,4 +587,22 @@ fn numbers_made_only_where_wanted_are_the_same_bits_and_the_rest_zero() {
         }
     }
     assert!(compared >= 100);
+}
+
+#[test]
+fn lights_sampled_by_solid_angle_leave_the_wavefront_to_the_lessons_loop() {
+    // The wavefront samples lights by area only: with
+    // `--light-sampling solid-angle` the fast engine runs the lesson's path
+    // loop over its tree, and makes the readable engine's bytes.
+    let mut scene = Scene::builtin().with_resolution(24, 24).unwrap();
+    let path = PathSettings::default();
+    assert!(wave::supports(FastEngine::new(&scene).world(), &path));
+    scene.light_sampling = raystep::scene::LightSampling::SolidAngle;
+    assert!(!wave::supports(FastEngine::new(&scene).world(), &path));
+    let readable = render(&scene, None, &path, SamplerKind::Sobol);
+    for level in Level::ALL.into_iter().filter(|l| l.available()) {
+        let fast = render(&scene, Some(level), &path, SamplerKind::Sobol);
+        assert_eq!(fast.sum, readable.sum, "{}", level.name());
+        assert_eq!(fast.stats, readable.stats, "{}", level.name());
+    }
 }

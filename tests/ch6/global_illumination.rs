@@ -17,7 +17,7 @@ use raystep::ch6_global_illumination::stability::{self, centre_block, flat_z};
 use raystep::ch6_global_illumination::stage::DEFAULT;
 use raystep::ch6_global_illumination::studies::{self, render};
 use raystep::core::stage::{Chapter, Settings};
-use raystep::scene::Scene;
+use raystep::scene::{LightSampling, Scene};
 
 const Z: f64 = 4.0;
 
@@ -177,6 +177,29 @@ fn the_cornell_box_matches_its_reference_region_by_region_for_every_estimator() 
         );
         assert!(t.passed(), "{e:?}: {t:?}");
         assert_eq!(t.regions, 16);
+    }
+}
+
+#[test]
+fn the_cornell_box_with_its_light_sampled_by_solid_angle_matches_its_reference() {
+    // The same test with the lamp sampled by the solid angle it covers: a
+    // different estimator of the same image.
+    let r = cornell_reference();
+    let size = 16;
+    let reference = r.downsampled(r.mean.width / size);
+    for e in [Strategy::Mis, Strategy::Light] {
+        let scene = Scene {
+            light_sampling: LightSampling::SolidAngle,
+            ..Scene::builtin().with_resolution(size, size).unwrap()
+        };
+        let path = PathSettings {
+            strategy: e,
+            ..PathSettings::default()
+        };
+        let (acc, _) = render(&scene, &path, SamplerKind::Independent, 64, 11, false);
+        let t = region_z_test(&acc.mean(), &acc.variance_of_mean(), &reference, 4, 1e-3);
+        assert!(t.passed(), "{e:?}: {t:?}");
+        assert_eq!(acc.stats.nonfinite, 0);
     }
 }
 

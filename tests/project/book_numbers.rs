@@ -528,6 +528,20 @@ fn chapter_5_numbers_match_its_report() {
                 "{n}: efficiency {aimed} / uniform = {r}"
             );
         }
+        for strategy in ["light", "mis"] {
+            let r = rmse(&format!("area: {strategy}"))
+                / rmse(&format!("area: {strategy} by solid angle"));
+            assert!(
+                (2.5..5.0).contains(&r),
+                "{n}: {strategy} by area / by solid angle = {r}"
+            );
+        }
+        let most_efficient = ["uniform", "bsdf", "light", "mis"]
+            .into_iter()
+            .map(|s| format!("area: {s}"))
+            .chain(["area: mis by solid angle".to_string()])
+            .all(|s| eff(&s) < eff("area: light by solid angle"));
+        assert!(most_efficient, "{n}");
         let best = ["uniform", "bsdf", "light", "mis"]
             .into_iter()
             .min_by(|a, b| {
@@ -547,6 +561,14 @@ fn chapter_5_numbers_match_its_report() {
     says(
         "ch5-reflection.md",
         "Here the cosine-weighted BRDF sampling is best",
+    );
+    says(
+        "ch5-reflection.md",
+        "at equal samples it cuts the error 2.5 to 5 times, for light sampling and for MIS alike",
+    );
+    says(
+        "ch5-reflection.md",
+        "light sampling by solid angle is the most efficient row of the area problem at every N",
     );
     assert!(stiff(&report).iter().all(|c| c.2 == "yes"));
 }

@@ -59,7 +59,7 @@ fn the_warp_view_tests_each_routine_at_every_size() {
     assert!(t.passes(), "{}", t.verdict());
     for (width, height) in [(80, 24), (100, 30), (160, 48)] {
         let t = draw(&app, width, height);
-        assert!(t.contains("warp test 1/6: uniform hemisphere"), "{t}");
+        assert!(t.contains("warp test 1/7: uniform hemisphere"), "{t}");
         assert!(t.contains("accepted"), "{width}x{height}:\n{t}");
         assert!(t.contains("←/→ routine · n new numbers · Esc close"), "{t}");
         assert!(t.contains("drawn per cell"), "{width}x{height}:\n{t}");
@@ -83,7 +83,7 @@ fn the_warp_view_tests_each_routine_at_every_size() {
     let app = key(app, KeyCode::Right);
     assert_eq!(test(&app).name, "area light");
     assert!(test(&app).passes(), "{}", test(&app).verdict());
-    assert!(draw(&app, 100, 30).contains("warp test 3/6: area light"));
+    assert!(draw(&app, 100, 30).contains("warp test 3/7: area light"));
     // The glossy and semi-gloss lobes, with their parameters.
     let app = key(app, KeyCode::Right);
     assert!(test(&app).name.starts_with("glossy lobe (n = 20"));
@@ -91,13 +91,17 @@ fn the_warp_view_tests_each_routine_at_every_size() {
     let app = key(app, KeyCode::Right);
     assert!(test(&app).name.starts_with("semi-gloss paint (ks = 0.3"));
     assert!(test(&app).passes(), "{}", test(&app).verdict());
+    // The square light again, by the solid angle it covers.
+    let app = key(app, KeyCode::Right);
+    assert_eq!(test(&app).name, "area light, by solid angle");
+    assert!(test(&app).passes(), "{}", test(&app).verdict());
     // The student's routine: asked of the event loop, which builds and
     // runs it in a thread; its draws are tested against cos θ / π.
     let app = key(app, KeyCode::Right);
     let w = app.warp.as_ref().unwrap();
     assert_eq!(w.student_requested, Some(1));
     let t = draw(&app, 80, 24);
-    assert!(t.contains("warp test 6/6: your cosine_hemisphere"), "{t}");
+    assert!(t.contains("warp test 7/7: your cosine_hemisphere"), "{t}");
     assert!(
         t.contains("building and running your cosine_hemisphere"),
         "{t}"
@@ -127,7 +131,7 @@ fn the_warp_view_tests_each_routine_at_every_size() {
     assert_eq!(app.warp.as_ref().unwrap().index, 0, "wraps around");
     let app = key(app, KeyCode::Left);
     let app = key(app, KeyCode::Left);
-    assert_eq!(app.warp.as_ref().unwrap().index, 4);
+    assert_eq!(app.warp.as_ref().unwrap().index, 5);
     let before = test(&app).observed;
     let app = key(app, KeyCode::Char('n'));
     assert_eq!(app.warp.as_ref().unwrap().seed, 2);

@@ -1,16 +1,39 @@
-//! Area lights: emissive meshes of radiance Le, sampled by area.
+//! Area lights: emissive meshes of radiance Le, sampled by area or by
+//! solid angle.
 //!
-//! A point y is drawn uniformly over the mesh's surface (a triangle by its
-//! share of the area, then a uniform point in it): pdf_A = 1 / A. The
-//! reflection equation integrates over solid angle at the shading point x,
-//! and dω = |cos θl| dA / d², so the same sample has pdf_ω = pdf_A · d² /
-//! |cos θl| ([`solid_angle_pdf`], the one place this conversion is made).
+//! By area, a point y is drawn uniformly over the mesh's surface (a
+//! triangle by its share of the area, then a uniform point in it): pdf_A =
+//! 1 / A. The reflection equation integrates over solid angle at the
+//! shading point x, and dω = |cos θl| dA / d², so the same sample has
+//! pdf_ω = pdf_A · d² / |cos θl| ([`solid_angle_pdf`], the one place this
+//! conversion is made).
+//!
+//! By solid angle (`--light-sampling solid-angle`), a triangle is picked by
+//! its share of the solid angle the light covers at x, then a direction in
+//! it ([`super::spherical`]): pdf_ω = 1 / Ω, the same for every direction
+//! that reaches the light. A light of more than
+//! [`SOLID_ANGLE_MAX_TRIANGLES`] triangles, and one that covers less than
+//! [`SOLID_ANGLE_MIN`] at x, is sampled by area all the same.
 
 use glam::{Vec2, Vec3};
 
+use super::spherical::sample_spherical_triangle;
 use super::LightSample;
+use crate::ch3_ray_triangle::spawn::offset_distance;
+use crate::ch5_reflection::radiometry::triangle_solid_angle;
 use crate::ch5_reflection::warp::uniform_triangle;
 use crate::scene::mesh::Mesh;
+use crate::scene::LightSampling;
+
+/// The most triangles a light sampled by solid angle may have: every
+/// sample weighs the solid angle of each, so a larger emitter is sampled
+/// by area.
+pub const SOLID_ANGLE_MAX_TRIANGLES: usize = 16;
+
+/// Below this solid angle (sr) at the shading point, a light is sampled by
+/// area: it looks like a point there, where area sampling's 1/d² and
+/// cos θl hardly vary across it.
+pub const SOLID_ANGLE_MIN: f64 = 1e-6;
 
 /// An emissive mesh.
 #[derive(Clone, Debug, PartialEq)]
@@ -32,6 +55,8 @@ pub struct AreaLight {
     /// Whether it emits from both faces (else only the front face, the
     /// side its triangles wind counter-clockwise towards).
     pub two_sided: bool,
+    /// How it is sampled ([`AreaLight::sampled_by`]).
+    pub sampling: LightSampling,
 }
 
 /// pdf_A (per unit area at the light) → pdf_ω (per steradian at the
@@ -79,7 +104,16 @@ impl AreaLight {
             inv_area: 1.0 / area,
             le,
             two_sided,
+            sampling: LightSampling::Area,
         })
+    }
+
+    /// The same light sampled by `sampling`; by area if it has more than
+    /// [`SOLID_ANGLE_MAX_TRIANGLES`] triangles.
+    pub fn sampled_by(mut self, sampling: LightSampling) -> AreaLight {
+        let few = self.triangles.len() <= SOLID_ANGLE_MAX_TRIANGLES;
+        self.sampling = if few { sampling } else { LightSampling::Area };
+        self
     }
 
     /// Radiance leaving the light at a point with unit outward normal
@@ -118,6 +152,9 @@ impl AreaLight {
     /// A point on the light seen from `p`, as a direction with a
     /// solid-angle pdf.
     pub fn sample_li(&self, p: Vec3, u: Vec2) -> Option<LightSample> {
+        if let Some((omega, total)) = self.solid_angles(p) {
+            return self.sample_by_solid_angle(p, u, &omega, total);
+        }
         let (k, ux) = self.pick(u.x);
         let [a, b, c] = self.triangles[k];
         let bary = uniform_triangle(Vec2::new(ux, u.y));
@@ -144,6 +181,11 @@ impl AreaLight {
     /// the point `y` (normal `n_light`) seen from `p`: for MIS, when a BSDF
     /// sample happened to hit this light.
     pub fn pdf_li(&self, p: Vec3, y: Vec3, n_light: Vec3) -> f32 {
+        if let Some((_, total)) = self.solid_angles(p) {
+            // Every point of a triangle that faces p has density 1/Ω.
+            let faces_p = self.faces(p, n_light.dot(p - y));
+            return if faces_p { (1.0 / total) as f32 } else { 0.0 };
+        }
         let to = y - p;
         let dist = to.length();
         match to.try_normalize() {
@@ -151,6 +193,89 @@ impl AreaLight {
             None => 0.0,
         }
     }
+}
+
+impl AreaLight {
+    /// Whether a triangle whose plane lies at signed distance `h` from `p`
+    /// (positive on its front) shows p a face that emits. A point closer
+    /// to the plane than chapter 3's offset may lie on the light itself,
+    /// rounded to either side, and sees it edge-on: not at all.
+    fn faces(&self, p: Vec3, h: f32) -> bool {
+        let h = if self.two_sided { h.abs() } else { h };
+        h > offset_distance(p)
+    }
+
+    /// Where the light is sampled by solid angle at `p`: the solid angle of
+    /// each triangle (zero for one that does not face p, [`Self::faces`])
+    /// and their sum Ω; `None` where it is sampled by area.
+    fn solid_angles(&self, p: Vec3) -> Option<([f64; SOLID_ANGLE_MAX_TRIANGLES], f64)> {
+        if self.sampling != LightSampling::SolidAngle {
+            return None;
+        }
+        let mut omega = [0.0; SOLID_ANGLE_MAX_TRIANGLES];
+        let mut total = 0.0;
+        for (k, [a, b, c]) in self.triangles.iter().enumerate() {
+            if self.faces(p, self.normals[k].dot(p - *a)) {
+                let [a, b, c] = [*a - p, *b - p, *c - p].map(|v| v.as_dvec3());
+                omega[k] = triangle_solid_angle(a, b, c);
+                total += omega[k];
+            }
+        }
+        (total >= SOLID_ANGLE_MIN && total.is_finite()).then_some((omega, total))
+    }
+
+    /// [`AreaLight::sample_li`] by solid angle: a triangle by its share
+    /// `omega[k]` of the total Ω (`u.x` rescaled inside that share), a
+    /// direction uniformly in it, and where that direction meets it. Each
+    /// triangle is picked with probability Ω_k / Ω and then gives density
+    /// 1 / Ω_k, so every direction has pdf_ω = 1 / Ω.
+    // ANCHOR: sample_by_solid_angle
+    fn sample_by_solid_angle(
+        &self,
+        p: Vec3,
+        u: Vec2,
+        omega: &[f64],
+        total: f64,
+    ) -> Option<LightSample> {
+        let (k, ux) = pick_share(&omega[..self.triangles.len()], total, u.x)?;
+        let [a, b, c] = self.triangles[k];
+        let corners = [a, b, c].map(|v| (v - p).as_dvec3().normalize_or_zero());
+        let w = sample_spherical_triangle(corners, Vec2::new(ux, u.y))?;
+        // How far along w the triangle's plane is.
+        let n = self.normals[k].as_dvec3();
+        let dist = (n.dot((a - p).as_dvec3()) / n.dot(w)) as f32;
+        if !(dist > 0.0 && dist.is_finite()) {
+            return None;
+        }
+        let wi = w.as_vec3();
+        let li = self.emitted(self.normals[k], -wi);
+        (li != Vec3::ZERO).then_some(LightSample {
+            wi,
+            li,
+            pdf: (1.0 / total) as f32,
+            dist,
+            delta: false,
+        })
+    }
+    // ANCHOR_END: sample_by_solid_angle
+}
+
+/// The triangle whose share of `total` (the running sum of `omega`) the
+/// number `u_x` falls in, and `u_x` rescaled to [0, 1) inside that share;
+/// `None` if only rounding led to a triangle of no share.
+fn pick_share(omega: &[f64], total: f64, u_x: f32) -> Option<(usize, f32)> {
+    let target = u_x as f64 * total;
+    let mut k = 0;
+    let mut below = 0.0;
+    while k + 1 < omega.len() && below + omega[k] <= target {
+        below += omega[k];
+        k += 1;
+    }
+    if omega[k] <= 0.0 {
+        return None;
+    }
+    let ux = (((target - below) / omega[k]) as f32).clamp(0.0, 1.0 - f32::EPSILON);
+    Some((k, ux))
 }
 
 /// The one emission rule of every emitting surface (an area light, or an

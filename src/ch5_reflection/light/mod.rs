@@ -9,10 +9,12 @@
 //!
 //! Every [`LightSample::pdf`] is in solid angle at the shading point. Area
 //! lights are sampled by area and converted with d² / |cos θl| in exactly
-//! one place, [`area::solid_angle_pdf`].
+//! one place, [`area::solid_angle_pdf`]; or, where the scene asks for it,
+//! by the solid angle they subtend ([`spherical`]).
 
 pub mod area;
 pub mod sky;
+pub mod spherical;
 pub mod spot;
 
 use glam::{Vec2, Vec3};
@@ -226,7 +228,8 @@ impl Lights {
                     area::AreaLight::new(mesh, m, material.emission, material.two_sided)
                 {
                     out.area_of_mesh[m] = Some(out.lights.len());
-                    out.lights.push(Light::Area(a));
+                    out.lights
+                        .push(Light::Area(a.sampled_by(scene.light_sampling)));
                 }
             }
         }

@@ -3,6 +3,7 @@
 
 mod light_area;
 mod light_sky;
+mod light_spherical;
 mod light_spot;
 mod light_terms;
 mod material_dielectric;
