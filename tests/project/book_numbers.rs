@@ -201,11 +201,12 @@ fn stiff(report: &str) -> Vec<(String, String, String)> {
 }
 
 /// The included part of a report is the report's own text, and the script
-/// that makes the figures writes every file a page includes.
+/// that makes the figures writes every file a page includes (the
+/// comparison with Mitsuba: book/side-by-side.sh, which CI never runs).
 #[test]
 fn every_included_figure_file_is_made_by_figures_sh() {
     let read = |f: &str| std::fs::read_to_string(root().join(f)).unwrap();
-    let script = read("book/figures.sh");
+    let script = read("book/figures.sh") + &read("book/side-by-side.sh");
     let mut problems = Vec::new();
     let mut pages: Vec<PathBuf> = std::fs::read_dir(root().join("book/src"))
         .unwrap()
@@ -223,7 +224,7 @@ fn every_included_figure_file_is_made_by_figures_sh() {
             }
             if !script.contains(&format!("$out/{name}\"")) {
                 problems.push(format!(
-                    "{}: figures/{name} is not written by book/figures.sh",
+                    "{}: figures/{name} is not written by book/figures.sh or book/side-by-side.sh",
                     p.display()
                 ));
                 continue;
@@ -1130,4 +1131,78 @@ fn every_measured_number_on_every_page_is_backed() {
         "measured numbers that no figure file, checked phrase, source constant or the lecture \
          holds (retyped?): {unbacked:?}"
     );
+}
+
+/// One table of book/side-by-side.sh: each configuration's median
+/// seconds and RMSE, and the two ratios.
+struct SideBySide {
+    rows: BTreeMap<String, (f64, f64)>,
+    throughput: f64,
+    efficiency: f64,
+}
+
+fn side_by_side(name: &str) -> SideBySide {
+    let text = figure(name);
+    let ratio = |prefix: &str| {
+        let line = text.lines().find(|l| l.starts_with(prefix)).unwrap();
+        let after = line.split("): ").nth(1).unwrap();
+        num(after.split_whitespace().next().unwrap())
+    };
+    let rows = text
+        .lines()
+        .filter(|l| l.starts_with("raystep-") || l.starts_with("mitsuba-"))
+        .map(|l| {
+            let cells: Vec<&str> = l.split_whitespace().collect();
+            (cells[0].to_string(), (num(cells[1]), num(cells[3])))
+        })
+        .collect();
+    SideBySide {
+        rows,
+        throughput: ratio("throughput ratio"),
+        efficiency: ratio("efficiency ratio"),
+    }
+}
+
+#[test]
+fn the_comparison_with_mitsuba_says_what_its_tables_show() {
+    let page = "against-mitsuba.md";
+    let cornell = side_by_side("sbs-cornell.txt");
+    let rr5 = side_by_side("sbs-cornell-rr5.txt");
+    let portable = side_by_side("sbs-cornell-portable.txt");
+    let glass = side_by_side("sbs-glass.txt");
+    let rmse = |t: &SideBySide, k: &str| t.rows[k].1;
+    let time = |t: &SideBySide, k: &str| t.rows[k].0;
+    let (sobol, mj) = ("raystep-fast_sobol", "mitsuba-llvm_ad_rgb-multijitter");
+
+    assert!(cornell.throughput > 1.2, "{}", cornell.throughput);
+    assert!((0.85..1.2).contains(&cornell.efficiency));
+    assert!(rmse(&cornell, mj) < rmse(&cornell, sobol));
+    says(page, "The fast engine runs the most paths per second of all, and its best");
+    says(page, "RMSE²·s is level with Mitsuba's best");
+    says(page, "samples Mitsuba's multijitter sampler leaves less error than raystep's");
+
+    let gap = |t: &SideBySide| (rmse(t, sobol) - rmse(t, mj)).abs();
+    assert!(gap(&rr5) < gap(&cornell));
+    assert!(1.0 < rr5.throughput && rr5.throughput < cornell.throughput);
+    says(page, "closer to multijitter's, and its lead in speed shrinks");
+
+    assert!((0.9..1.1).contains(&portable.throughput));
+    assert!(portable.efficiency < 1.0);
+    let share = time(&cornell, sobol) / time(&portable, sobol);
+    assert!((0.5..0.62).contains(&share), "{share}");
+    says(page, "There raystep is about as fast as Mitsuba's compiled code and less");
+    says(page, "with the vector kernels");
+
+    assert!(glass.throughput < 1.0 && glass.efficiency < 1.0);
+    let close = time(&glass, sobol) / time(&glass, "raystep-readable_sobol");
+    assert!(close > 0.75, "{close}");
+    for (ours, theirs) in [
+        ("raystep-fast_independent", "mitsuba-llvm_ad_rgb-independent"),
+        (sobol, mj),
+    ] {
+        let r = rmse(&glass, ours) / rmse(&glass, theirs);
+        assert!((0.97..1.03).contains(&r), "{ours} / {theirs}: {r}");
+    }
+    says(page, "are close to the readable engine's. raystep is behind on both ratios here.");
+    says(page, "numbers the RMSE columns agree");
 }
