@@ -606,3 +606,13 @@ fn lights_sampled_by_solid_angle_leave_the_wavefront_to_the_lessons_loop() {
         assert_eq!(fast.stats, readable.stats, "{}", level.name());
     }
 }
+
+#[test]
+fn the_lane_mask_has_a_bit_for_each_true_lane() {
+    // `mask` gathers eight booleans with one multiplication: every pattern
+    // against the bits set one at a time.
+    for bits in 0u32..256 {
+        let lanes: [bool; 8] = std::array::from_fn(|i| bits >> i & 1 != 0);
+        assert_eq!(raystep::fast::lanes::mask(lanes), bits, "{lanes:?}");
+    }
+}
