@@ -60,7 +60,12 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
         ("samples per pixel", acc.samples.to_string()),
         (
             "estimator",
-            format!("{} ({} numbers)", r.path.strategy.name(), r.sampler.name()),
+            format!(
+                "{} ({} numbers){}",
+                r.path.strategy.name(),
+                r.sampler.name(),
+                crate::ch5_reflection::report::sampled_by(scene)
+            ),
         ),
         (
             "max bounces",

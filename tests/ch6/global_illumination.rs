@@ -377,6 +377,18 @@ fn the_stage_reports_what_it_built_and_left_out() {
     assert!(left.contains("no SDFs"), "{left}");
     assert_eq!(rep.nonfinite_caught, 0);
 
+    // The lamp sampled by solid angle: the report says so, and that the
+    // wavefront, which samples by area, is left out for it.
+    let by_solid_angle = Scene {
+        light_sampling: LightSampling::SolidAngle,
+        ..Scene::builtin().with_resolution(16, 16).unwrap()
+    };
+    let mut r = ch6.start(Arc::new(by_solid_angle), &settings).unwrap();
+    while !r.pass().complete {}
+    let text = r.report().to_text(raystep::core::report::Times::Hide);
+    assert!(text.contains("area lights by solid angle"), "{text}");
+    assert!(text.contains("area lights sampled by area"), "{text}");
+
     // Only the final image, a scene lit by the sky alone, with glass.
     let mut stage = DEFAULT;
     stage.layers = false;
