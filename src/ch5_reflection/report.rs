@@ -11,7 +11,7 @@ use super::world::World;
 use crate::core::format::{format_count, format_number, format_seconds};
 use crate::core::report::{Report, Table};
 use crate::core::stage::Settings;
-use crate::scene::{LightSampling, Scene};
+use crate::scene::Scene;
 
 /// What a chapter-5 render has to say for itself.
 pub struct ReportInputs<'a> {
@@ -125,7 +125,7 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
                 format!(
                     "{} for lights with extent{}; delta lights in closed form; mirrors followed up to {} bounces",
                     est.strategy.name(),
-                    sampled_by(scene),
+                    scene.light_sampling.note(),
                     est.max_mirror_bounces
                 ),
             ),
@@ -254,13 +254,4 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
         report.stability = cases.into_iter().map(|c| c.case).collect();
     }
     report
-}
-
-/// How the scene's area lights are sampled, where it is not the default:
-/// "" or ", area lights by solid angle" (`--light-sampling`).
-pub fn sampled_by(scene: &Scene) -> &'static str {
-    match scene.light_sampling {
-        LightSampling::Area => "",
-        LightSampling::SolidAngle => ", area lights by solid angle",
-    }
 }

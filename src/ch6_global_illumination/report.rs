@@ -64,7 +64,7 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
                 "{} ({} numbers){}",
                 r.path.strategy.name(),
                 r.sampler.name(),
-                crate::ch5_reflection::report::sampled_by(scene)
+                scene.light_sampling.note()
             ),
         ),
         (

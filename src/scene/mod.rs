@@ -129,11 +129,12 @@ pub enum LightSampling {
 }
 
 impl LightSampling {
-    /// The name the command line and the reports use.
-    pub fn name(self) -> &'static str {
+    /// What chapters 5 and 6 add to the estimator in their reports: nothing
+    /// for the default, else ", area lights by solid angle".
+    pub fn note(self) -> &'static str {
         match self {
-            LightSampling::Area => "area",
-            LightSampling::SolidAngle => "solid-angle",
+            LightSampling::Area => "",
+            LightSampling::SolidAngle => ", area lights by solid angle",
         }
     }
 }
