@@ -147,9 +147,12 @@ fn case(f: RefractFn, d: Vec3, n: Vec3, eo: f32, ei: f32) -> (f64, String, Optio
 }
 
 /// A direction that meets the normal `n` at cos θ = `c` (the sign says
-/// which side it travels towards), in the drawn azimuth `a`.
+/// which side it travels towards), in the drawn azimuth `a`. The normal is
+/// made unit in f64 first: a drawn one is a few ulps off, and a tangent
+/// square to it would then lean by as much, which at |c| = 10⁻⁶ can put d
+/// on the other side, breaking the contract's |d·n| ≥ 10⁻⁶.
 fn at_cos(n: Vec3, c: f64, a: Vec3) -> Vec3 {
-    let (n, a) = (n.as_dvec3(), a.as_dvec3());
+    let (n, a) = (n.as_dvec3().normalize(), a.as_dvec3());
     let tangent = (a - n * a.dot(n)).normalize();
     (tangent * (1.0 - c * c).max(0.0).sqrt() + n * c).as_vec3()
 }
