@@ -101,15 +101,23 @@ pub struct Problem {
     pub trace_light_rays: bool,
 }
 
-fn world_of(text: &str) -> (Scene, World) {
-    let scene = Scene::from_text(text, "study").expect("the study scenes are valid (tested)");
+fn world_of(text: &str, light_sampling: LightSampling) -> (Scene, World) {
+    let scene = Scene {
+        light_sampling,
+        ..Scene::from_text(text, "study").expect("the study scenes are valid (tested)")
+    };
     let world = World::new(&scene);
     (scene, world)
 }
 
 /// The area-light problem.
 pub fn area_problem() -> Problem {
-    let (scene, world) = world_of(AREA_SCENE);
+    area_problem_sampled_by(LightSampling::Area)
+}
+
+/// The area-light problem with its light sampled by `sampling`.
+pub fn area_problem_sampled_by(sampling: LightSampling) -> Problem {
+    let (scene, world) = world_of(AREA_SCENE, sampling);
     let corners = [
         DVec3::new(0.0, -0.25, 1.0),
         DVec3::new(1.0, -0.25, 1.0),
@@ -128,7 +136,7 @@ pub fn area_problem() -> Problem {
 
 /// The sky problem.
 pub fn sky_problem() -> Problem {
-    let (scene, world) = world_of(SKY_SCENE);
+    let (scene, world) = world_of(SKY_SCENE, LightSampling::Area);
     let sky = match world.lights.lights.first() {
         Some(crate::ch5_reflection::light::Light::Sky(s)) => *s,
         _ => unreachable!("the sky scene has a sky"),
@@ -189,28 +197,9 @@ impl Problem {
     }
 }
 
-/// The area problem with its light sampled by the solid angle it covers.
-pub fn area_problem_by_solid_angle() -> Problem {
-    let problem = area_problem();
-    let mut scene = Scene::from_text(AREA_SCENE, "study").expect("the study scenes are valid");
-    scene.light_sampling = LightSampling::SolidAngle;
-    Problem {
-        world: World::new(&scene),
-        ..problem
-    }
-}
-
-/// What the study's series are called after the problem's name, in the
-/// order of their colours: the four strategies, then the two that sample
-/// the area light, with the light sampled by solid angle.
-pub const SERIES: [&str; 6] = [
-    "uniform",
-    "bsdf",
-    "light",
-    "mis",
-    "light by solid angle",
-    "mis by solid angle",
-];
+/// What the name of a series with the light sampled by solid angle adds
+/// to its strategy's.
+const BY_SOLID_ANGLE: &str = " by solid angle";
 
 /// The study: both problems, four strategies, every sample count; and on
 /// the area problem, light sampling and MIS once more with the light
@@ -225,13 +214,15 @@ pub fn error_against_time(study: &Study) -> ErrorTime {
         show_slopes: true,
     };
     let by_area = Strategy::ALL.map(|s| (s, s.name().to_string()));
-    let by_solid_angle = [
-        (Strategy::Light, SERIES[4].to_string()),
-        (Strategy::Mis, SERIES[5].to_string()),
-    ];
+    let by_solid_angle =
+        [Strategy::Light, Strategy::Mis].map(|s| (s, format!("{}{BY_SOLID_ANGLE}", s.name())));
     for (name, problem, strategies) in [
         ("area", area_problem(), &by_area[..]),
-        ("area", area_problem_by_solid_angle(), &by_solid_angle[..]),
+        (
+            "area",
+            area_problem_sampled_by(LightSampling::SolidAngle),
+            &by_solid_angle[..],
+        ),
         ("environment", sky_problem(), &by_area[..]),
     ] {
         for (strategy, label) in strategies {
@@ -258,12 +249,17 @@ pub fn plots(et: &ErrorTime) -> Vec<(String, LogLogPlot)> {
     // dashed.
     let look = |series: &str| {
         let label = series.split_once(": ").map_or(series, |(_, label)| label);
-        match SERIES.iter().position(|s| *s == label) {
-            Some(i) if i >= 4 => Look {
-                dashed: true,
-                ..Look::nth(i - 2)
-            },
-            i => Look::nth(i.unwrap_or(SERIES.len())),
+        let (strategy, dashed) = match label.strip_suffix(BY_SOLID_ANGLE) {
+            Some(strategy) => (strategy, true),
+            None => (label, false),
+        };
+        let i = Strategy::ALL
+            .iter()
+            .position(|s| s.name() == strategy)
+            .unwrap_or(Strategy::ALL.len());
+        Look {
+            dashed,
+            ..Look::nth(i)
         }
     };
     [

@@ -89,6 +89,29 @@ pub fn mask(b: [bool; W]) -> u32 {
     (bytes.wrapping_mul(GATHER) >> 56) as u32
 }
 
+/// The larger of `x` and `y` as a select: `y` where it is larger, else
+/// `x`, the rule of the vector max instruction (which the AVX kernels
+/// use). `f32::max` asks for more without AVX, to treat a NaN, which never
+/// comes where the lane loops call this.
+#[inline(always)]
+pub(super) fn larger(x: f32, y: f32) -> f32 {
+    if y > x {
+        y
+    } else {
+        x
+    }
+}
+
+/// The smaller of `x` and `y`, likewise: `y` where it is smaller, else `x`.
+#[inline(always)]
+pub(super) fn smaller(x: f32, y: f32) -> f32 {
+    if y < x {
+        y
+    } else {
+        x
+    }
+}
+
 /// The slab test of a node's eight boxes against (0, t_max): the mask of
 /// children entered and where the ray enters each.
 // ANCHOR: slab8
@@ -102,17 +125,10 @@ pub(super) fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
             false => (&node.min[axis], &node.max[axis]),
         };
         for i in 0..W {
-            // The larger and the smaller as selects, the vector max and
-            // min instructions' own rule (`f32::max` asks for more
-            // without AVX, to treat a NaN, which never comes here).
             let enters = (near[i] - r.o[axis]) * r.inv[axis];
             let leaves = (far[i] - r.o[axis]) * r.inv[axis];
-            t_near[i] = if enters > t_near[i] {
-                enters
-            } else {
-                t_near[i]
-            };
-            t_far[i] = if leaves < t_far[i] { leaves } else { t_far[i] };
+            t_near[i] = larger(t_near[i], enters);
+            t_far[i] = smaller(t_far[i], leaves);
         }
     }
     let mut entered = [false; W];
@@ -247,9 +263,7 @@ pub(super) fn front_lane(
 // ANCHOR: trust_lane
 #[inline(always)]
 pub(super) fn trust_lane(f: &FrontLane) -> (f32, f32, bool) {
-    // The largest magnitude, by selects (see `enter`).
-    let max = |a: f32, b: f32| if b > a { b } else { a };
-    let max3 = |v: &[f32; 3]| max(max(v[0].abs(), v[1].abs()), v[2].abs());
+    let max3 = |v: &[f32; 3]| larger(larger(v[0].abs(), v[1].abs()), v[2].abs());
     let inv_det = 1.0 / f.det;
     let t = f.ts * inv_det;
     let delta_t = t_error_bound(max3(&f.x), max3(&f.y), max3(&f.z), max3(&f.e), inv_det);

@@ -26,7 +26,9 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Hit;
 
 use super::bvh8::Bvh8;
-use super::lanes::{front_lane, mask, trust_lane, Fronts, RayData, FAR_STRETCH, LEAF, W};
+use super::lanes::{
+    front_lane, larger, mask, smaller, trust_lane, Fronts, RayData, FAR_STRETCH, LEAF, W,
+};
 
 /// Eight rays' numbers: per axis the smallest and largest origin and
 /// 1/direction of the eight (what [`enter`] tests the node's boxes with),
@@ -239,12 +241,10 @@ fn enter(p: &Packet, t_far: f32, node: &super::lanes::Node8) -> (u32, [f32; W]) 
             let (b0, b1) = (far[c] - o1, far[c] - o0);
             let [p0, p1, p2, p3] = [a0 * i0, a0 * i1, a1 * i0, a1 * i1];
             let [q0, q1, q2, q3] = [b0 * i0, b0 * i1, b1 * i0, b1 * i1];
-            let min = |x: f32, y: f32| if y < x { y } else { x };
-            let max = |x: f32, y: f32| if y > x { y } else { x };
-            let enters = min(min(p0, p1), min(p2, p3));
-            let leaves = max(max(q0, q1), max(q2, q3));
-            t_near[c] = max(t_near[c], enters);
-            t_far[c] = min(t_far[c], leaves);
+            let enters = smaller(smaller(p0, p1), smaller(p2, p3));
+            let leaves = larger(larger(q0, q1), larger(q2, q3));
+            t_near[c] = larger(t_near[c], enters);
+            t_far[c] = smaller(t_far[c], leaves);
         }
     }
     let mut entered = [false; W];
@@ -259,37 +259,15 @@ fn enter(p: &Packet, t_far: f32, node: &super::lanes::Node8) -> (u32, [f32; W]) 
 /// of eight scalar ones; the lanes are never NaN).
 #[inline(always)]
 fn smallest(v: [f32; W]) -> f32 {
-    let mut a = [0.0f32; 4];
-    for j in 0..4 {
-        a[j] = if v[j + 4] < v[j] { v[j + 4] } else { v[j] };
-    }
-    let b = [
-        if a[2] < a[0] { a[2] } else { a[0] },
-        if a[3] < a[1] { a[3] } else { a[1] },
-    ];
-    if b[1] < b[0] {
-        b[1]
-    } else {
-        b[0]
-    }
+    let a: [f32; 4] = std::array::from_fn(|j| smaller(v[j], v[j + 4]));
+    smaller(smaller(a[0], a[2]), smaller(a[1], a[3]))
 }
 
 /// The largest of the lanes, likewise.
 #[inline(always)]
 fn largest(v: [f32; W]) -> f32 {
-    let mut a = [0.0f32; 4];
-    for j in 0..4 {
-        a[j] = if v[j + 4] > v[j] { v[j + 4] } else { v[j] };
-    }
-    let b = [
-        if a[2] > a[0] { a[2] } else { a[0] },
-        if a[3] > a[1] { a[3] } else { a[1] },
-    ];
-    if b[1] > b[0] {
-        b[1]
-    } else {
-        b[0]
-    }
+    let a: [f32; 4] = std::array::from_fn(|j| larger(v[j], v[j + 4]));
+    larger(larger(a[0], a[2]), larger(a[1], a[3]))
 }
 
 /// Leaf `l`'s triangles, one at a time, against the eight lanes (each in
