@@ -2,75 +2,34 @@
 //!
 //! A renderer that follows one lecture on rendering (after CMU 15-462/662
 //! and Foley's book) from a pinhole camera to Monte Carlo global
-//! illumination. Each part of the lecture is a stage with its own binary,
-//! book chapter, tests and exercises.
+//! illumination. This crate puts the project's crates under one name, the
+//! one the binaries, the tests and the exercises use (`raystep::…`):
 //!
-//! ## The pipeline
+//! | crate | folder | what |
+//! |---|---|---|
+//! | `raystep-lessons` | `src/` (root `src/lessons.rs`) | the six chapters, [`core`] and [`scene`]: what the book teaches |
+//! | `raystep-fast` | `src/fast/` | the fast engine ([`fast`]) and the chapter registry ([`chapters`]) |
+//! | `raystep-grading` | `src/grading/` | the exercises' grader ([`grading`]) |
+//! | `raystep-tui` | `src/tui/` | the terminal UI (`tui`, the default `tui` feature) |
+//! | `raystep` | `src/lib.rs` | this one: the names below, the fuzzer ([`fuzz`]) and the headless [`summary`] |
 //!
-//! scene file (TOML) → [`scene::Scene`] (validated, holding only what the
-//! scene uses) → a chapter's [`Render`](core::stage::Render) →
-//! [`Film`](core::film::Film) → PNG/EXR, a [`Report`](core::report::Report),
-//! and a terminal [`preview`](core::preview). The terminal UI (`src/tui/`,
-//! behind the default `tui` feature) drives the same
-//! [`Chapter`](core::stage::Chapter) boundary as the headless runs.
-//!
-//! ## Where things are
-//!
-//! One folder per chapter, each the same shape: `mod.rs` opens with the
-//! chapter's slide → file table; then the lesson files (the slides'
-//! algorithms, any fast version beside its readable twin); `stage.rs` (the
-//! chapter as a [`Chapter`](core::stage::Chapter)); `report.rs`;
-//! `studies.rs` (error against run time); `stability.rs` (stiff cases);
-//! `bench.rs` where the chapter has a benchmark. Imports only go down: a
-//! chapter uses the foundation and earlier chapters' lesson files, never
-//! another chapter's stage, report, studies, stability or bench
-//! (`tests/project/layout.rs` checks it).
-//!
-//! | chapter | lecture topic | folder | binary | book page |
-//! |---|---|---|---|---|
-//! | 1 | projection | [`ch1_projection`] | `ch1` | `book/src/ch1-projection.md` |
-//! | 2 | rasterization | [`ch2_rasterization`] | `ch2` | `book/src/ch2-rasterization.md` |
-//! | 3 | ray-triangle intersection and a BVH | [`ch3_ray_triangle`] | `ch3` | `book/src/ch3-ray-triangle.md` |
-//! | 4 | implicit surfaces and sphere tracing | [`ch4_implicit_surfaces`] | `ch4` | `book/src/ch4-sphere-tracing.md` |
-//! | 5 | the reflection equation | [`ch5_reflection`] | `ch5` | `book/src/ch5-reflection.md` |
-//! | 6 | Monte Carlo global illumination | [`ch6_global_illumination`] | `ch6` | `book/src/ch6-global-illumination.md` |
-//!
-//! Below the chapters: [`core`] (film, report and plots, formatting,
-//! sampling, the stage boundary, the headless runner) and [`scene`] (scene
-//! files, meshes, the camera and SDF descriptions). Beside them:
-//! [`chapters`] (the registry the front ends list), [`grading`] (the
-//! exercises' grader) and `tui`.
-//!
-//! The lecture's symbols and the names used here are listed side by side in
-//! the book's notation table (`book/src/notation.md`).
-//!
-//! ## Conventions
-//!
-//! Right-handed; the camera looks down -z; the image plane is z = -1.
-//! Renderer arithmetic is f32; f64 is used for exact references. Transforms
-//! are named `a_from_b`. Colour is linear RGB until an 8-bit image is
-//! written.
+//! Each depends only on those above it, so cargo builds the fast engine,
+//! the grader and the UI side by side once the lessons are built, and the
+//! release build optimises the grader and the UI less than the renderers.
+//! `src/lessons.rs` says how a chapter's folder is laid out.
 
-// No unsafe code, except in the one module that calls the fast engine's
-// vector code compiled for the CPU's instructions
-// (`fast::simd`, which gives its safety argument).
-#![deny(unsafe_code)]
+#![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod ch1_projection;
-pub mod ch2_rasterization;
-pub mod ch3_ray_triangle;
-pub mod ch4_implicit_surfaces;
-pub mod ch5_reflection;
-pub mod ch6_global_illumination;
-pub mod chapters;
-pub mod core;
-pub mod fast;
-pub mod fuzz;
-pub mod grading;
-pub mod scene;
-pub mod summary;
+pub use raystep_fast as fast;
+pub use raystep_fast::chapters;
+pub use raystep_grading as grading;
+pub use raystep_lessons::{
+    ch1_projection, ch2_rasterization, ch3_ray_triangle, ch4_implicit_surfaces, ch5_reflection,
+    ch6_global_illumination, core, scene, Error, Result,
+};
 #[cfg(feature = "tui")]
-pub mod tui;
+pub use raystep_tui as tui;
 
-pub use crate::core::error::{Error, Result};
+pub mod fuzz;
+pub mod summary;

@@ -98,7 +98,7 @@ pub fn padded_bounds(tri: &[Vec3; 3]) -> (Vec3, Vec3) {
 }
 
 /// Each triangle's box, padded ([`padded_bounds`]).
-pub(crate) fn padded_boxes(tris: &[[Vec3; 3]]) -> Vec<Aabb> {
+pub fn padded_boxes(tris: &[[Vec3; 3]]) -> Vec<Aabb> {
     tris.iter()
         .map(|tri| {
             let (lo, hi) = padded_bounds(tri);

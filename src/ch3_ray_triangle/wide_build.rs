@@ -13,13 +13,13 @@ use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, WatertightRay};
 
 /// A child reference with this bit set is a leaf (the rest of the bits
 /// index the tree's leaves); otherwise it indexes its inner nodes.
-pub(crate) const LEAF: u32 = 1 << 31;
+pub const LEAF: u32 = 1 << 31;
 
 /// What the two queries ask of a wide tree of `N` children per node and
 /// `N` triangles per leaf: the four-wide tree ([`super::wide_bvh`]), the
 /// fast engine's eight-wide one, and that one with its AVX kernels, each
 /// with its own slab and leaf tests.
-pub(crate) trait WideTree<const N: usize> {
+pub trait WideTree<const N: usize> {
     /// The ray, as this tree's tests take it (computed once per query).
     type Ray<'r>;
     /// The root's reference.
@@ -41,7 +41,7 @@ pub(crate) trait WideTree<const N: usize> {
 /// skipping every subtree whose box starts beyond the nearest hit so far.
 /// `stack` holds the subtrees still to visit (deep enough for the tree).
 #[inline(always)]
-pub(crate) fn closest<const N: usize, T: WideTree<N>>(
+pub fn closest<const N: usize, T: WideTree<N>>(
     tree: &T,
     r: &T::Ray<'_>,
     t_max: f32,
@@ -79,7 +79,7 @@ pub(crate) fn closest<const N: usize, T: WideTree<N>>(
 /// Whether anything is hit in (0, t_max): stops at the first hit, in no
 /// particular order.
 #[inline(always)]
-pub(crate) fn occluded<const N: usize, T: WideTree<N>>(
+pub fn occluded<const N: usize, T: WideTree<N>>(
     tree: &T,
     r: &T::Ray<'_>,
     t_max: f32,
@@ -110,7 +110,7 @@ pub(crate) fn occluded<const N: usize, T: WideTree<N>>(
 /// children, then, while there are fewer than `width`, the one of largest
 /// surface area that holds more than `leaf_size` triangles replaced by its
 /// own two children.
-pub(crate) fn open_children(
+pub fn open_children(
     bvh2: &Bvh2,
     counts: &[u32],
     n: usize,
@@ -138,7 +138,7 @@ pub(crate) fn open_children(
 // ANCHOR_END: open_children
 
 /// The triangles (build-list indices) under binary node `n`, left to right.
-pub(crate) fn triangles_under(bvh2: &Bvh2, n: usize) -> Vec<u32> {
+pub fn triangles_under(bvh2: &Bvh2, n: usize) -> Vec<u32> {
     let mut ids = Vec::new();
     let mut stack = vec![n];
     while let Some(m) = stack.pop() {
@@ -154,7 +154,7 @@ pub(crate) fn triangles_under(bvh2: &Bvh2, n: usize) -> Vec<u32> {
 }
 
 /// Fills `counts[n]` with the number of triangles under binary node `n`.
-pub(crate) fn count_triangles(bvh2: &Bvh2, n: usize, counts: &mut [u32]) -> u32 {
+pub fn count_triangles(bvh2: &Bvh2, n: usize, counts: &mut [u32]) -> u32 {
     let node = &bvh2.nodes[n];
     counts[n] = if node.is_leaf() {
         node.prim_count
@@ -172,7 +172,7 @@ pub(crate) fn count_triangles(bvh2: &Bvh2, n: usize, counts: &mut [u32]) -> u32 
 /// (returned); stack the others farthest first, so they come off nearest
 /// first.
 #[inline(always)]
-pub(crate) fn nearest_child_next<const N: usize>(
+pub fn nearest_child_next<const N: usize>(
     mut entered: u32,
     child: &[u32; N],
     t_near: &[f32; N],
@@ -225,7 +225,7 @@ pub(crate) fn nearest_child_next<const N: usize>(
 /// pushing them all and popping one; the one visited next just does not
 /// go through memory, where reading it back at once waited on the store.)
 #[inline(always)]
-pub(crate) fn push_entered<const N: usize>(
+pub fn push_entered<const N: usize>(
     entered: u32,
     child: &[u32; N],
     stack: &mut [(u32, f32)],
@@ -250,7 +250,7 @@ pub(crate) fn push_entered<const N: usize>(
 /// node, or `None` when none is left. The readable tree's `closest` spells
 /// this loop out; the fast engine's traversals share it.
 #[inline(always)]
-pub(crate) fn pop_nearer(stack: &[(u32, f32)], depth: &mut usize, t_best: f32) -> Option<u32> {
+pub fn pop_nearer(stack: &[(u32, f32)], depth: &mut usize, t_best: f32) -> Option<u32> {
     while *depth > 0 {
         *depth -= 1;
         let (next, t_near) = stack[*depth];
@@ -264,7 +264,7 @@ pub(crate) fn pop_nearer(stack: &[(u32, f32)], depth: &mut usize, t_best: f32) -
 /// The nearest of a leaf's hit lanes (`hits`, with their t, u and v) and
 /// its lane; `Hit::triangle` is left 0. A later lane wins a tie.
 #[inline(always)]
-pub(crate) fn nearest_lane(mut hits: u32, t: &[f32], u: &[f32], v: &[f32]) -> Option<(Hit, usize)> {
+pub fn nearest_lane(mut hits: u32, t: &[f32], u: &[f32], v: &[f32]) -> Option<(Hit, usize)> {
     let mut best: Option<(Hit, usize)> = None;
     while hits != 0 {
         let lane = hits.trailing_zeros() as usize;
@@ -288,7 +288,7 @@ pub(crate) fn nearest_lane(mut hits: u32, t: &[f32], u: &[f32], v: &[f32]) -> Op
 /// f64 tie-breakers.
 #[cold]
 #[inline(never)]
-pub(crate) fn nearest_checked(
+pub fn nearest_checked(
     wr: &WatertightRay,
     tris: &[SoaTriangle],
     mut check: u32,
@@ -311,12 +311,7 @@ pub(crate) fn nearest_checked(
 /// as above).
 #[cold]
 #[inline(never)]
-pub(crate) fn any_checked(
-    wr: &WatertightRay,
-    tris: &[SoaTriangle],
-    mut check: u32,
-    t_max: f32,
-) -> bool {
+pub fn any_checked(wr: &WatertightRay, tris: &[SoaTriangle], mut check: u32, t_max: f32) -> bool {
     while check != 0 {
         let lane = check.trailing_zeros() as usize;
         check &= check - 1;

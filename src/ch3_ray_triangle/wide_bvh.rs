@@ -63,24 +63,25 @@ pub struct WideBvh {
 
 /// How much a box's far distance is stretched, so rounding in the slab
 /// test never culls a box a hit lies in (pbrt stretches by 2γ₃ ≈ 4e-7).
-pub(crate) const FAR_STRETCH: f32 = 1.0 + 4.0 * gamma(3);
+pub const FAR_STRETCH: f32 = 1.0 + 4.0 * gamma(3);
 
 /// The part of the slab test that depends only on the ray (chapter 6's
 /// eight-wide tree uses it too).
-pub(crate) struct BoxRay {
+pub struct BoxRay {
     /// The origin, one splat per axis.
-    pub(crate) o: [Vec4; 3],
+    pub o: [Vec4; 3],
     /// 1 / direction per axis (zero components replaced by a tiny number
     /// of the same sign, so no 0 · ∞ can make a NaN).
-    pub(crate) inv: [Vec4; 3],
+    pub inv: [Vec4; 3],
     /// Per axis, whether the ray runs towards -∞ (then a box's max is met
     /// first).
-    pub(crate) negative: [bool; 3],
+    pub negative: [bool; 3],
 }
 
 impl BoxRay {
+    /// The slab test's per-ray part for `ray`.
     #[inline(always)]
-    pub(crate) fn new(ray: &Ray) -> BoxRay {
+    pub fn new(ray: &Ray) -> BoxRay {
         let d = Vec3A::from(ray.dir);
         let tiny = d.abs().cmplt(Vec3A::splat(1e-30));
         let safe = Vec3A::select(tiny, Vec3A::splat(1e-30).copysign(d), d);

@@ -1,7 +1,7 @@
 //! What traces a render pass's paths. The lesson's answer is
 //! [`PathLoop`]: chapter 3's tree answers the ray queries and
-//! [`trace_path`] follows one path at a time. A faster engine (the crate's
-//! [`fast`](crate::fast) module) answers the same [`PathEngine`] questions
+//! [`trace_path`] follows one path at a time. A faster engine (the `raystep-fast`
+//! crate, `src/fast/`) answers the same [`PathEngine`] questions
 //! with the same images; a front end chooses one engine, once, with an
 //! [`EngineChoice`], and nothing in the chapters asks which it got.
 

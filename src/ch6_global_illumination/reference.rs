@@ -36,7 +36,7 @@ use std::time::Instant;
 
 /// Where references live.
 pub fn reference_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/references")
+    crate::core::project_root().join("scenes/references")
 }
 
 /// A converged render with its per-pixel variance of the mean.

@@ -109,7 +109,7 @@ pub struct GlobalIllumination {
 /// best estimator and sampler (MIS with Owen-scrambled Sobol numbers), 16
 /// bounces, 4 spp per pass, with layers, traced by the lesson's engine.
 /// The front ends choose the engine (the fast one unless told `--engine
-/// readable`: `crate::chapters`, `ch6`'s command line).
+/// readable`: the registry in `src/fast/chapters.rs`, `ch6`'s command line).
 pub const DEFAULT: GlobalIllumination = GlobalIllumination {
     path: PathSettings {
         strategy: Strategy::Mis,

@@ -27,3 +27,11 @@ pub mod table;
 pub mod text;
 pub mod warp_test;
 pub mod zview;
+
+/// The repository's root folder (where `Cargo.toml`, `scenes/` and
+/// `chapters/` are), as the build saw it. This crate's manifest is
+/// `src/Cargo.toml`, one folder below.
+pub fn project_root() -> std::path::PathBuf {
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    src.parent().unwrap_or(src).to_path_buf()
+}

@@ -308,7 +308,7 @@ pub fn cornell_with_large_mesh(rings: u32, segments: u32) -> Scene {
 /// on the current thread pool; the world's build time apart, and the
 /// ratio of the engines' paths per second.
 pub fn scenes_bench(spp: u32, path: &PathSettings) -> crate::core::error::Result<Table> {
-    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let root = crate::core::project_root();
     let scenes = [
         Scene::builtin(),
         Scene::load(&root.join("scenes/bunny.toml"))?,

@@ -23,6 +23,18 @@
 //! Scenes with SDFs are marched as chapter 4 teaches either way; only
 //! their triangles go through the eight-wide tree.
 
+#![deny(unsafe_code)]
+#![warn(missing_docs)]
+
+// The lessons under their own names, so that paths read as in them
+// (`crate::ch3_ray_triangle::…`).
+use raystep_lessons::{
+    ch1_projection, ch2_rasterization, ch3_ray_triangle, ch4_implicit_surfaces, ch5_reflection,
+    ch6_global_illumination, core, scene,
+};
+
+pub mod chapters;
+
 pub mod bench;
 pub mod bvh8;
 pub mod gather8;
@@ -83,7 +95,7 @@ impl FastEngine {
         let world = World::with_queries(scene, |tris| {
             let built = Arc::new(Bvh8::build(tris, level)?);
             tree = Some(built.clone());
-            Some(Box::new(built) as Box<Queries>)
+            Some(Box::new(simd::SharedTree(built)) as Box<Queries>)
         });
         FastEngine { world, tree }
     }

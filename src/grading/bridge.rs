@@ -25,7 +25,7 @@ use std::cell::RefCell;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 use std::sync::Mutex;
 
-use crate::grading::wire::{to_bytes, Wire};
+use crate::wire::{to_bytes, Wire};
 
 /// How the calls of a student's function go on this thread.
 #[derive(Debug, Default)]
@@ -275,7 +275,7 @@ fn record_call<R: Wire>(args: &impl Wire, side: Side<'_>, run: impl FnOnce() -> 
             r
         }
         Err(payload) => {
-            let message = crate::grading::panic_text(&*payload);
+            let message = crate::panic_text(&*payload);
             let at = LAST_PANIC_AT
                 .lock()
                 .unwrap_or_else(|e| e.into_inner())
@@ -364,14 +364,14 @@ fn replay_call<R: Wire>(args: &impl Wire, side: Side<'_>, callbacks: Callbacks<'
                 if !(side.replay)(&counted) {
                     mismatch("the counted work does not decode");
                 }
-                return match crate::grading::wire::from_bytes::<R>(&r) {
+                return match crate::wire::from_bytes::<R>(&r) {
                     Some(v) => v,
                     None => mismatch("an answer does not decode"),
                 };
             }
             Some(Entry::Panicked(message, at)) => {
                 if !at.is_empty() {
-                    crate::grading::note_panic_at(at);
+                    crate::note_panic_at(at);
                 }
                 std::panic::panic_any(message)
             }

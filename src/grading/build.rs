@@ -6,7 +6,7 @@
 //! crates: nothing of the student's but the exercise files is built or
 //! run, and a file's date never decides whether it is built again (its
 //! content does). A file that uses what an exercise may not
-//! ([`crate::grading::source_rules`]) or that does not compile is replaced
+//! ([`crate::source_rules`]) or that does not compile is replaced
 //! by its shipped stub and reported with the compiler's messages, while
 //! the others are built.
 
@@ -16,13 +16,13 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::atomic::AtomicBool;
 
-use crate::grading::child::{run_limited, Ran};
-use crate::grading::shipped::{Stub, STUBS};
-use crate::grading::source_rules::refusals;
+use crate::child::{run_limited, Ran};
+use crate::shipped::{Stub, STUBS};
+use crate::source_rules::refusals;
 
 /// The repository root (where `Cargo.toml` and `chapters/` are).
 pub fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+    crate::core::project_root()
 }
 
 /// The folder of chapter folders whose `exercises/` the grader builds:

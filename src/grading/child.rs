@@ -8,8 +8,8 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{mpsc, Arc, Mutex};
 use std::time::{Duration, Instant};
 
-use crate::grading::sandbox::{kill_group, own_group, Limits};
-use crate::grading::PROGRESS;
+use crate::sandbox::{kill_group, own_group, Limits};
+use crate::PROGRESS;
 
 /// How a child process run by [`run_limited`] ended.
 #[derive(Debug)]

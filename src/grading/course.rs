@@ -8,7 +8,7 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use crate::grading::exercise::{Exercise, Outcome};
+use crate::exercise::{Exercise, Outcome};
 
 /// The file that remembers the states, inside the grader's output dir.
 pub const FILE: &str = "progress.txt";
@@ -74,7 +74,7 @@ pub fn update(out: &Path, results: &[(Exercise, Outcome, String)]) -> BTreeMap<S
         .collect();
     // Progress is a convenience: a folder that cannot take it does not
     // fail the grading.
-    let _ = crate::grading::safe_out::write(&out.join(FILE), text.as_bytes());
+    let _ = crate::safe_out::write(&out.join(FILE), text.as_bytes());
     states
 }
 

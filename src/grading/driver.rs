@@ -10,16 +10,16 @@ use std::time::Duration;
 
 use clap::Parser;
 
+use crate::build::{build_exercises, exercises_dir};
 use crate::core::format::format_count;
-use crate::grading::build::{build_exercises, exercises_dir};
-use crate::grading::course;
-use crate::grading::exercise::{Exercise, Outcome};
-use crate::grading::predict;
-use crate::grading::process::{fresh_seed, reference, run_student, sandbox_gaps};
-use crate::grading::sandbox::{become_subreaper, kill_orphans};
-pub use crate::grading::stream::{describe, grade_parallel, grade_stream};
-use crate::grading::{all, hints};
-use crate::grading::{remove_failure_images, shipped};
+use crate::course;
+use crate::exercise::{Exercise, Outcome};
+use crate::predict;
+use crate::process::{fresh_seed, reference, run_student, sandbox_gaps};
+use crate::sandbox::{become_subreaper, kill_orphans};
+pub use crate::stream::{describe, grade_parallel, grade_stream};
+use crate::{all, hints};
+use crate::{remove_failure_images, shipped};
 
 /// Grade your solutions to the exercises against raystep's reference.
 #[derive(Parser, Debug)]
@@ -116,7 +116,7 @@ pub fn grade_main() -> ExitCode {
             eprintln!("error: no exercise `{id}`; expected e.g. `ch3/moller_trumbore`");
             return ExitCode::from(2);
         };
-        return match crate::grading::solutions::show(ex, &cli.out) {
+        return match crate::solutions::show(ex, &cli.out) {
             Ok(text) => {
                 print!("{text}");
                 ExitCode::SUCCESS
@@ -141,7 +141,7 @@ pub fn grade_main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    if let Err(e) = crate::grading::safe_out::ensure_dir(&cli.out) {
+    if let Err(e) = crate::safe_out::ensure_dir(&cli.out) {
         eprintln!("error: {e}");
         return ExitCode::from(2);
     }
@@ -287,7 +287,7 @@ fn predict_line(dir: &std::path::Path) -> String {
 /// refusing a `path` that exists and is not a regular file (a FIFO would
 /// block the write for ever, a link could point anywhere).
 pub fn write_results(path: &std::path::Path, text: &str) -> Result<(), String> {
-    crate::grading::safe_out::write(path, text.as_bytes())
+    crate::safe_out::write(path, text.as_bytes())
 }
 
 /// `grade --restore chN/name`: the shipped file back in place, the

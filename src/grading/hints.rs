@@ -7,7 +7,7 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use crate::grading::exercise::Exercise;
+use crate::exercise::Exercise;
 
 /// The file that remembers the tiers seen, inside the grader's output dir.
 pub const FILE: &str = "hints-seen.txt";
@@ -31,8 +31,7 @@ pub fn next_hint(ex: &Exercise, out: &Path) -> std::io::Result<String> {
     let tier = (seen.get(&ex.id()).copied().unwrap_or(1) + 1).min(last);
     seen.insert(ex.id(), tier);
     let text: String = seen.iter().map(|(id, n)| format!("{id} {n}\n")).collect();
-    crate::grading::safe_out::write(&out.join(FILE), text.as_bytes())
-        .map_err(std::io::Error::other)?;
+    crate::safe_out::write(&out.join(FILE), text.as_bytes()).map_err(std::io::Error::other)?;
     let mut s = format!("{} hint {tier} of {last}: {}\n", ex.id(), hints[tier - 1]);
     if tier == last {
         s += "that was the last hint: the formula itself. Try writing it without looking again.\n";

@@ -14,13 +14,13 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
 use std::time::{Duration, SystemTime};
 
+use crate::build::{build_exercises_in, Place};
 use crate::core::film::Film;
 use crate::core::warp_test::Drawn;
-use crate::grading::build::{build_exercises_in, Place};
-use crate::grading::exercise::Outcome;
-use crate::grading::process::{capstone_images, in_student_process};
-pub use crate::grading::runner::capstone;
-use crate::grading::runner::{replay_warp, Request};
+use crate::exercise::Outcome;
+use crate::process::{capstone_images, in_student_process};
+pub use crate::runner::capstone;
+use crate::runner::{replay_warp, Request};
 
 /// The student's capstone image beside the reference.
 #[derive(Clone, Debug)]
@@ -186,7 +186,7 @@ impl LiveOptions {
     /// images in `<out>/student`, and 20 s for the render.
     pub fn for_out_dir(out: &Path) -> Result<LiveOptions, String> {
         Ok(LiveOptions {
-            exercises: crate::grading::build::exercises_dir(),
+            exercises: crate::build::exercises_dir(),
             place: Place::current()?,
             out: out.join("student"),
             timeout: Duration::from_secs(20),
@@ -266,7 +266,7 @@ pub fn live_warp(
     opts: &LiveOptions,
     cancel: Option<&AtomicBool>,
 ) -> Result<Drawn, LiveError> {
-    let ex = crate::grading::all()
+    let ex = crate::all()
         .into_iter()
         .find(|e| e.id() == id && id == "ch5/cosine_hemisphere")
         .ok_or_else(|| LiveError::Build(format!("no sampling routine {id}")))?;

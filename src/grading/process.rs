@@ -1,7 +1,7 @@
 //! The grader's side of running a student's code: each exercise's
 //! [`Request`] answered by the student's process (`raystep-grade-child`)
 //! under a time limit, its transcript replayed in this process, where the
-//! verdict is made ([`crate::grading::runner::replay_check`]); and
+//! verdict is made ([`crate::runner::replay_check`]); and
 //! `chN --student`, which renders a chapter's capstone with the student's
 //! code.
 
@@ -10,11 +10,11 @@ use std::process::{Command, ExitCode};
 use std::sync::atomic::AtomicBool;
 use std::time::Duration;
 
-use crate::grading::build::{build_exercises, exercises_dir};
-use crate::grading::child::{crash_message, last_progress, run_limited, Ran, OUTPUT_LIMIT};
-use crate::grading::exercise::{Check, Exercise, Outcome};
-use crate::grading::runner::{replay_check, Request};
-use crate::grading::{run, write_failure_images, PROGRESS_ENV};
+use crate::build::{build_exercises, exercises_dir};
+use crate::child::{crash_message, last_progress, run_limited, Ran, OUTPUT_LIMIT};
+use crate::exercise::{Check, Exercise, Outcome};
+use crate::runner::{replay_check, Request};
+use crate::{run, write_failure_images, PROGRESS_ENV};
 
 /// A seed for one grading run's drawn inputs, different every run (not
 /// printed: a student cannot learn the inputs in advance).
@@ -87,7 +87,7 @@ fn graded(
 /// capstone scene with the student's code beside the reference and their
 /// difference, into `out/student/` (under a one-minute limit).
 pub fn student_main(chapter: u32) -> ExitCode {
-    let Some(ex) = crate::grading::runner::capstone(chapter) else {
+    let Some(ex) = crate::runner::capstone(chapter) else {
         eprintln!("chapter {chapter} has no capstone to render yet");
         return ExitCode::from(2);
     };
@@ -146,7 +146,7 @@ pub fn capstone_images(
         return (outcome, Vec::new());
     };
     let passed = c.passed();
-    let written = crate::grading::safe_out::ensure_dir(out)
+    let written = crate::safe_out::ensure_dir(out)
         .and_then(|_| write_failure_images(ex, c, out).map_err(|e| e.to_string()));
     let strip = |c: &Check| Check {
         images: None,
@@ -172,7 +172,7 @@ pub fn capstone_images(
 /// Grades raystep's reference solution of `ex` in this process; images of
 /// a failed image check go to `out`.
 pub fn reference(ex: &Exercise, out: &Path, seed: u64) -> (Outcome, Vec<PathBuf>) {
-    crate::grading::set_run_seed(seed);
+    crate::set_run_seed(seed);
     let outcome = run(ex);
     let images = match &outcome {
         Outcome::Failed(c) => write_failure_images(ex, c, out).unwrap_or_default(),

@@ -9,12 +9,12 @@
 use std::io::{Read, Write};
 use std::process::ExitCode;
 
+use crate::bridge;
 use crate::core::warp_test::{self, Drawn};
-use crate::grading::bridge;
-use crate::grading::exercise::Outcome;
-use crate::grading::exercises::images;
-use crate::grading::sandbox::Limits;
-use crate::grading::students::{self, Replayed, Students};
+use crate::exercise::Outcome;
+use crate::exercises::images;
+use crate::sandbox::Limits;
+use crate::students::{self, Replayed, Students};
 
 /// Each chapter's capstone, the exercise that renders the chapter's scene.
 pub const CAPSTONES: [(u32, &str); 6] = [
@@ -27,9 +27,9 @@ pub const CAPSTONES: [(u32, &str); 6] = [
 ];
 
 /// Chapter N's capstone exercise.
-pub fn capstone(chapter: u32) -> Option<crate::grading::Exercise> {
+pub fn capstone(chapter: u32) -> Option<crate::Exercise> {
     let (_, name) = CAPSTONES.iter().find(|(c, _)| *c == chapter)?;
-    crate::grading::all()
+    crate::all()
         .into_iter()
         .find(|e| e.chapter == chapter && e.name == *name)
 }
@@ -132,9 +132,8 @@ pub fn child_main<S: Students>() -> ExitCode {
         if let Some(at) = info.location() {
             *bridge::LAST_PANIC_AT
                 .lock()
-                .unwrap_or_else(|e| e.into_inner()) = Some(
-                crate::grading::short_path(at.file()) + &format!(":{}:{}", at.line(), at.column()),
-            );
+                .unwrap_or_else(|e| e.into_inner()) =
+                Some(crate::short_path(at.file()) + &format!(":{}:{}", at.line(), at.column()));
         }
         default_hook(info);
     }));
@@ -158,7 +157,7 @@ pub fn child_main<S: Students>() -> ExitCode {
                 return ExitCode::from(2);
             };
             pool.install(|| {
-                crate::grading::set_run_seed(seed);
+                crate::set_run_seed(seed);
                 bridge::record(|| {
                     let _ = check();
                 })
@@ -188,8 +187,8 @@ pub fn replay_check(id: &str, transcript: Vec<u8>, seed: u64) -> Outcome {
         return Outcome::Panicked(format!("no exercise `{id}`"));
     };
     let replayed = bridge::sequential(move || {
-        crate::grading::set_run_seed(seed);
-        bridge::replay(transcript, || crate::grading::run_check_alone(check))
+        crate::set_run_seed(seed);
+        bridge::replay(transcript, || crate::run_check_alone(check))
     });
     match replayed {
         Err(e) => Outcome::Panicked(e),
@@ -220,7 +219,7 @@ pub fn replay_warp(transcript: Vec<u8>, draws: usize, seed: u64) -> Result<Drawn
         (Ok(drawn), true) => Ok(drawn),
         (Ok(_), false) => Err("the grader could not replay your code's answers".into()),
         (Err(payload), _) => {
-            let message = crate::grading::panic_text(&*payload);
+            let message = crate::panic_text(&*payload);
             if message.starts_with("not yet implemented") {
                 Err("not_implemented".into())
             } else {

@@ -9,7 +9,7 @@
 //! On other systems than Unix the limits are skipped and only the child
 //! itself is killed; on Linux kernels without Landlock the file-system
 //! rule is skipped, and off Linux on x86-64, AArch64 or RISC-V the
-//! system-call rule ([`crate::grading::seccomp`]). [`Limits::confine`]
+//! system-call rule ([`crate::seccomp`]). [`Limits::confine`]
 //! says which held, and the grader prints it.
 
 /// The limits of one `grade-student` process.
@@ -64,7 +64,7 @@ impl Limits {
         if let Err(e) = close_file_system() {
             missing.push(format!("the file-system rule ({e})"));
         }
-        if let Err(e) = crate::grading::seccomp::forbid_escapes() {
+        if let Err(e) = crate::seccomp::forbid_escapes() {
             missing.push(format!("the system-call rule ({e})"));
         }
         missing

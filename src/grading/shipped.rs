@@ -45,7 +45,7 @@ macro_rules! stub {
 
 /// Every exercise file, as `$make!(folder, name)` for each, in chapter
 /// order: the one list the shipped stubs ([`STUBS`]) and the solutions
-/// ([`crate::grading::solutions::SOLUTIONS`]) are made from.
+/// ([`crate::solutions::SOLUTIONS`]) are made from.
 macro_rules! exercise_files {
     ($make:ident) => {
         &[

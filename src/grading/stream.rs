@@ -6,7 +6,7 @@ use std::io::Write;
 use std::path::PathBuf;
 
 use crate::core::text::escape_keep_newlines;
-use crate::grading::exercise::{Check, Exercise, Outcome};
+use crate::exercise::{Check, Exercise, Outcome};
 
 /// Grades each exercise with `grade`, printing each result to `w` as soon
 /// as it is known; `grade` returns the outcome and the images it wrote.
@@ -51,7 +51,7 @@ pub fn grade_parallel(
     // printed in order all the same.
     let mut order: Vec<usize> = (0..exercises.len()).collect();
     order.sort_by_key(|&i| {
-        let capstone = crate::grading::runner::CAPSTONES
+        let capstone = crate::runner::CAPSTONES
             .iter()
             .any(|(c, n)| *c == exercises[i].chapter && *n == exercises[i].name);
         !capstone

@@ -6,23 +6,23 @@
 //!
 //! The student's process implements [`Students`] with the student's code
 //! (the `raystep-grade-child` crate the grader writes: see
-//! [`crate::grading::build`]); the grader uses [`Replayed`], whose
+//! [`crate::build`]); the grader uses [`Replayed`], whose
 //! functions are never called, since a replay answers from the transcript.
 
 use glam::{Mat4, Vec2, Vec3};
 
+use crate::bridge::{self, no_callbacks, Side};
 use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch4_implicit_surfaces::march::March;
 use crate::ch6_global_illumination::layers::LAYER_SLOTS;
-use crate::grading::bridge::{self, no_callbacks, Side};
-use crate::grading::counted::ReadableBvh;
-use crate::grading::exercise::Check;
-use crate::grading::exercises::bounce_layers::Gathered;
-use crate::grading::exercises::{bounce_layers, ch1, ch2, ch3, ch4, ch5, ch6, paths, refraction};
-use crate::grading::wire::{apply, changes, fingerprint, from_bytes, to_bytes, Wire};
-use crate::grading::work::{self, Work};
+use crate::counted::ReadableBvh;
+use crate::exercise::Check;
+use crate::exercises::bounce_layers::Gathered;
+use crate::exercises::{bounce_layers, ch1, ch2, ch3, ch4, ch5, ch6, paths, refraction};
+use crate::wire::{apply, changes, fingerprint, from_bytes, to_bytes, Wire};
+use crate::work::{self, Work};
 
 /// The exercise functions, with the grader's types.
 #[allow(missing_docs, clippy::too_many_arguments)]

@@ -8,7 +8,7 @@
 use glam::{DVec3, Mat4, Vec2, Vec3};
 
 use crate::ch3_ray_triangle::triangle::Hit;
-use crate::grading::exercises::paths;
+use crate::exercises::paths;
 
 /// A value that can be written to bytes and read back exactly.
 pub trait Wire: Sized {

@@ -1,15 +1,15 @@
 //! Scene files are read off the UI thread: the app says which file it
 //! waits for, the event loop reads it in a thread and hands it back
-//! ([`crate::tui::app::Msg::SceneRead`]).
+//! ([`crate::app::Msg::SceneRead`]).
 
 use std::path::PathBuf;
 
-use crate::tui::app::App;
+use crate::app::App;
 
 impl App {
     /// The scene file the UI waits for, if the current entry has not been
     /// read yet: the event loop reads it in a thread and answers with
-    /// [`Msg::SceneRead`](crate::tui::app::Msg::SceneRead).
+    /// [`Msg::SceneRead`](crate::app::Msg::SceneRead).
     pub fn scene_to_read(&self) -> Option<(usize, PathBuf)> {
         let entry = self.current_scene()?;
         entry.pending.clone().map(|p| (self.scene, p))
@@ -19,19 +19,14 @@ impl App {
     /// (what the event loop does in a thread; for tests and tools).
     pub fn read_scene_now(&mut self) {
         if let Some((index, path)) = self.scene_to_read() {
-            let read = crate::tui::scenes::read_scene(&path);
+            let read = crate::scenes::read_scene(&path);
             self.scene_read(index, &path, read);
         }
     }
 
     /// Takes a scene file the event loop read: the entry gets it, and if it
     /// is the current scene its render starts.
-    pub fn scene_read(
-        &mut self,
-        index: usize,
-        path: &std::path::Path,
-        read: crate::tui::scenes::Read,
-    ) {
+    pub fn scene_read(&mut self, index: usize, path: &std::path::Path, read: crate::scenes::Read) {
         let Some(entry) = self.scenes.get_mut(index) else {
             return;
         };

@@ -19,6 +19,15 @@
 //! restored on quit, on an error and on a panic of the UI thread (a panic
 //! hook restores it and then prints the panic).
 
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+// The crates below under their own names, so that paths read as in them
+// (`crate::core::…`, `crate::grading::…`).
+use raystep_fast::chapters;
+use raystep_grading as grading;
+use raystep_lessons::{core, scene};
+
 pub mod answers;
 pub mod app;
 pub mod bench;

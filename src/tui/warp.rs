@@ -30,13 +30,13 @@ pub struct WarpView {
     pub test: Result<WarpTest, String>,
     /// The student's routine is to be built and run with this seed: when
     /// it changes, `update` asks the event loop to
-    /// ([`crate::tui::effect::Effect::WarpStudent`]), which does it in a
-    /// thread and answers with [`crate::tui::app::Msg::WarpStudent`].
+    /// ([`crate::effect::Effect::WarpStudent`]), which does it in a
+    /// thread and answers with [`crate::app::Msg::WarpStudent`].
     pub student_requested: Option<u64>,
     /// A built-in routine is to be tested with this seed: `update` asks
-    /// the event loop to ([`crate::tui::effect::Effect::WarpBuiltin`]),
+    /// the event loop to ([`crate::effect::Effect::WarpBuiltin`]),
     /// which draws its directions in a thread, off the UI's, and answers
-    /// with [`crate::tui::app::Msg::WarpBuiltin`].
+    /// with [`crate::app::Msg::WarpBuiltin`].
     pub pending: Option<u64>,
 }
 

@@ -5,8 +5,8 @@
 //! pixels (a character cell drawn over a kitty or sixel image would be
 //! hidden under it).
 
+use crate::app::App;
 use crate::core::film::Film;
-use crate::tui::app::App;
 
 /// The largest zoom.
 pub const MAX_ZOOM: u32 = 32;

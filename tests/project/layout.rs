@@ -162,7 +162,7 @@ fn referenced_paths(code: &str, module: &[String], is_mod_file: bool) -> Vec<Vec
     let resolve = |path: &str| -> Option<Vec<String>> {
         let segs: Vec<&str> = path.split("::").filter(|s| !s.is_empty()).collect();
         let mut base: Vec<String> = match segs.first() {
-            Some(&"crate") => Vec::new(),
+            Some(&"crate") => crate_root(module, segs.get(1).copied()),
             Some(&"super") => {
                 let mut m = module.to_vec();
                 m.pop();
@@ -216,6 +216,33 @@ fn referenced_paths(code: &str, module: &[String], is_mod_file: bool) -> Vec<Vec
         }
     }
     out
+}
+
+/// Where `crate::{next}…` leads from a file of `module`: the fast
+/// engine, the grader and the UI are crates of their own (`src/fast/`,
+/// `src/grading/`, `src/tui/`), whose roots name the crates below them as
+/// they are named in the lessons (`crate::core`, `crate::chapters`).
+fn crate_root(module: &[String], next: Option<&str>) -> Vec<String> {
+    const LESSONS: [&str; 8] = [
+        "core",
+        "scene",
+        "ch1_projection",
+        "ch2_rasterization",
+        "ch3_ray_triangle",
+        "ch4_implicit_surfaces",
+        "ch5_reflection",
+        "ch6_global_illumination",
+    ];
+    let own = module.first().map(String::as_str);
+    match next {
+        Some(n) if LESSONS.contains(&n) => Vec::new(),
+        Some("chapters") if own != Some("fast") => vec!["fast".into()],
+        Some("grading" | "fast" | "tui") => Vec::new(),
+        _ => match own {
+            Some(c @ ("fast" | "grading" | "tui")) => vec![c.to_string()],
+            _ => Vec::new(),
+        },
+    }
 }
 
 /// The import graph: file → files it refers to (itself excluded).
@@ -288,6 +315,11 @@ fn place(file: &str) -> Place {
     }
     if first == "tui" {
         return Place::Ui;
+    }
+    // The chapter registry, where the front ends choose chapter 6's
+    // engine, is a front end's file that lives in the fast engine's crate.
+    if file == "fast/chapters.rs" {
+        return Place::Top;
     }
     if first == "fast" {
         return Place::Fast;
@@ -508,8 +540,10 @@ fn files_a_reader_can_hold() {
 
 #[test]
 fn src_root_stays_small() {
+    // The folders, the two crate roots (`lib.rs`, `lessons.rs`), the
+    // lessons' `Cargo.toml` and `summary.rs`.
     let n = std::fs::read_dir(root().join("src")).unwrap().count();
-    assert!(n <= 16, "src/ holds {n} entries");
+    assert!(n <= 17, "src/ holds {n} entries");
 }
 
 /// `[lib] test = false`: a `#[test]` written beside the code would never

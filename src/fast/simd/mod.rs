@@ -168,15 +168,18 @@ impl RayQueries for Bvh8 {
     }
 }
 
-impl RayQueries for std::sync::Arc<Bvh8> {
+/// A tree the engine and the world's queries share.
+pub struct SharedTree(pub std::sync::Arc<Bvh8>);
+
+impl RayQueries for SharedTree {
     fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
-        closest(self, ray, t_max)
+        closest(&self.0, ray, t_max)
     }
     fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
-        occluded(self, ray, t_max)
+        occluded(&self.0, ray, t_max)
     }
     fn describe(&self) -> String {
-        Bvh8::describe(self)
+        Bvh8::describe(&self.0)
     }
 }
 

@@ -16,8 +16,8 @@ use crate::ch6_global_illumination::layers::{
 };
 use crate::ch6_global_illumination::path_record::{record_path, PathRecord};
 use crate::ch6_global_illumination::sampler::SamplerKind;
-use crate::grading::exercise::{Check, Symptom};
-use crate::grading::wire::Wire;
+use crate::exercise::{Check, Symptom};
+use crate::wire::Wire;
 
 /// How a contribution was gathered at its vertex.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -263,7 +263,7 @@ fn real_paths(f: LayersFn) -> (f64, String) {
         max_bounces: Some(40),
         rr_min_bounce: 40,
     };
-    let seed = 66 ^ crate::grading::run_seed();
+    let seed = 66 ^ crate::run_seed();
     worst_of((0..camera.width * camera.height).map(|p| {
         let pixel = (p % camera.width, p / camera.width);
         let r = record_path(

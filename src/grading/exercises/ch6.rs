@@ -10,7 +10,7 @@ use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::refraction;
 use super::worst_of;
 use crate::core::sampling::random;
-use crate::grading::exercise::{Check, Exercise, Symptom};
+use crate::exercise::{Check, Exercise, Symptom};
 
 type IntegralFn = fn(&dyn Fn(f64) -> f64, f64, f64, &[f64]) -> f64;
 type RouletteFn = fn(f64, f64, f64) -> f64;

@@ -1,5 +1,5 @@
 //! Inputs a check draws across an exercise's whole contract, new for every
-//! grading run: the run's seed ([`crate::grading::run_seed`]) is not
+//! grading run: the run's seed ([`crate::run_seed`]) is not
 //! printed, so a solution cannot be fitted to them, and how many are drawn
 //! changes too (a function right only for its first N calls meets more
 //! than N). Scales from 10⁻³ to 10³, places far from the origin, grazing
@@ -11,7 +11,7 @@
 use glam::{Vec2, Vec3};
 
 use crate::core::sampling::random;
-use crate::grading::run_seed;
+use crate::run_seed;
 
 /// The drawn inputs of one check.
 pub struct Draws {

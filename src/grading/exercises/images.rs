@@ -3,12 +3,10 @@
 //! pixels at silhouettes where rounding decides), or, where the stage is
 //! Monte Carlo, block by block with z-tests against the reference mean.
 
-use std::path::PathBuf;
-
 use glam::Vec3;
 
 use crate::core::film::Film;
-use crate::grading::exercise::Check;
+use crate::exercise::Check;
 use crate::scene::Scene;
 
 /// The scenes of `scenes/` the checks draw.
@@ -37,9 +35,7 @@ pub fn scene(name: &str) -> Scene {
     if let Some((_, s)) = loaded.iter().find(|(n, _)| n == name) {
         return s.clone();
     }
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("scenes")
-        .join(name);
+    let path = crate::core::project_root().join("scenes").join(name);
     let s = Scene::load(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     loaded.push((name.to_string(), s.clone()));
     s

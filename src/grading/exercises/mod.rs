@@ -6,7 +6,7 @@
 //! small crate, and an exercise that does not compile leaves the renderer,
 //! the chapter binaries and the other exercises building.
 
-use crate::grading::exercise::Exercise;
+use crate::exercise::Exercise;
 
 pub mod bounce_layers;
 pub mod ch1;

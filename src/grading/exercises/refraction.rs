@@ -8,7 +8,7 @@ use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::worst;
 use crate::ch5_reflection::material::dielectric::{fresnel_dielectric, refract_local};
 use crate::ch5_reflection::material::Frame;
-use crate::grading::exercise::{Check, Symptom};
+use crate::exercise::{Check, Symptom};
 
 /// The candidate: (d, n, η outside, η inside) to (t, F), `None` under
 /// total internal reflection.

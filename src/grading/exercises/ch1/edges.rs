@@ -10,9 +10,9 @@ use crate::ch1_projection::camera::{project_pinhole, Camera, CameraDesc};
 use crate::ch1_projection::wireframe::{clip_to_near, NEAR};
 use crate::core::draw;
 use crate::core::film::Film;
-use crate::grading::exercise::{Check, Symptom};
-use crate::grading::exercises::draws::{fold_drawn, worst_drawn, Draws};
-use crate::grading::exercises::images;
+use crate::exercise::{Check, Symptom};
+use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
+use crate::exercises::images;
 
 /// The capstone's candidate: a world-space edge to its two raster ends.
 pub type EdgeFn = fn(&Camera, Vec3, Vec3, f32) -> Option<(Vec2, Vec2)>;
@@ -103,7 +103,7 @@ fn clauses(f: EdgeFn) -> Check {
         (Kind::OnPlane, v(-0.5, 0.25, -0.25), v(0.5, -0.5, -0.25), 0.25, "both ends on the near plane"),
     ];
     for (k, &(kind, a, b, near, what)) in cases.iter().enumerate() {
-        crate::grading::progress(format_args!(
+        crate::progress(format_args!(
             "calling draw_edges on clause case {k}: {a} to {b}, near {near}"
         ));
         let got = f(&camera, a, b, near);
@@ -317,7 +317,7 @@ fn railroad(f: EdgeFn) -> Check {
     let draw = |g: EdgeFn| {
         let mut film = Film::new(camera.width, camera.height);
         for (k, (a, b)) in edges.iter().enumerate() {
-            crate::grading::progress(format_args!(
+            crate::progress(format_args!(
                 "calling draw_edges on railroad edge {k}, {a} to {b}"
             ));
             if let Some((ra, rb)) = g(&camera, *a, *b, NEAR) {

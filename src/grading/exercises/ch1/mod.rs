@@ -7,8 +7,8 @@ use crate::ch1_projection::camera::{
     camera_from_world_look_at, project_pinhole, Camera, CameraDesc,
 };
 use crate::ch1_projection::wireframe::draw_scene;
-use crate::grading::exercise::{Check, Exercise, Symptom};
-use crate::grading::exercises::draws::Draws;
+use crate::exercise::{Check, Exercise, Symptom};
+use crate::exercises::draws::Draws;
 use crate::scene::Material;
 
 pub mod edges;

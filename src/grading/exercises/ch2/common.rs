@@ -4,7 +4,7 @@
 use glam::Vec3;
 
 use crate::core::film::Film;
-use crate::grading::exercise::{Check, Symptom};
+use crate::exercise::{Check, Symptom};
 
 /// Something that draws a triangle: the candidate, the reference or a model.
 pub(super) type Draw<'a> = &'a dyn Fn([Vec3; 3], [Vec3; 3], u32, u32, &mut [f32], &mut [Vec3]);

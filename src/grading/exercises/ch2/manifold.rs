@@ -7,8 +7,8 @@
 //! `u32`).
 
 use crate::ch2_rasterization::mesh_check::check_triangles;
-use crate::grading::exercise::{Check, Symptom};
-use crate::grading::exercises::draws::Draws;
+use crate::exercise::{Check, Symptom};
+use crate::exercises::draws::Draws;
 
 /// The counts: boundary edges, edges with 3+ triangles, vertices with 2+
 /// fans, inconsistently oriented edges.

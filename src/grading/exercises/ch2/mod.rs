@@ -5,8 +5,8 @@
 use glam::{Vec2, Vec3, Vec3Swizzles};
 
 use crate::ch2_rasterization::{depth, edge, triangle};
-use crate::grading::exercise::{Check, Exercise, Symptom};
-use crate::grading::exercises::draws::{fold_drawn, worst_drawn, Draws};
+use crate::exercise::{Check, Exercise, Symptom};
+use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
 
 mod common;
 pub mod manifold;

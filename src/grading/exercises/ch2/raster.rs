@@ -12,7 +12,7 @@ use super::shading::{depth_order, interpolation, scene};
 use super::{DEGENERATE, HALF_PIXEL, OFF_IMAGE, TOP_LEFT, WINDING};
 use crate::ch2_rasterization::triangle::rasterize_triangle;
 use crate::core::film::Film;
-use crate::grading::exercise::Check;
+use crate::exercise::Check;
 
 /// The capstone's candidate: one triangle (raster x, y and depth per
 /// vertex), its vertex colours, the image size, the depth buffer and the
@@ -53,7 +53,7 @@ fn masks(g: Draw, tris: &[[Vec3; 3]], what: &str) -> Vec<Vec<bool>> {
     tris.iter()
         .enumerate()
         .map(|(k, t)| {
-            crate::grading::progress(format_args!(
+            crate::progress(format_args!(
                 "rasterizing {what} triangle {k}: {}",
                 corners(t)
             ));
@@ -314,7 +314,7 @@ fn degenerate(f: RasterFn) -> Check {
         t((f32::INFINITY, 3.0), (10.0, 3.0), (5.0, 10.0)),
     ];
     for (k, tri) in tris.iter().enumerate() {
-        crate::grading::progress(format_args!(
+        crate::progress(format_args!(
             "rasterizing triangle without area {k}: {}",
             corners(tri)
         ));

@@ -11,9 +11,9 @@ use super::{AFFINE, COLOUR_ORDER, DEPTH_TEST, DEPTH_TIE, DEPTH_VALUE};
 use crate::ch1_projection::camera::Camera;
 use crate::ch2_rasterization::triangle::rasterize_triangle;
 use crate::core::film::Film;
-use crate::grading::exercise::Check;
-use crate::grading::exercises::draws::Draws;
-use crate::grading::exercises::images;
+use crate::exercise::Check;
+use crate::exercises::draws::Draws;
+use crate::exercises::images;
 
 /// A slanted quad, as a floor seen at a shallow angle: a different colour
 /// at every corner; its two triangles have opposite windings. The first
@@ -62,7 +62,7 @@ pub(super) fn interpolation(f: RasterFn) -> Check {
             .iter()
             .enumerate()
             .map(|(k, (t, c))| {
-                crate::grading::progress(format_args!(
+                crate::progress(format_args!(
                     "rasterizing slanted triangle {k}: {}",
                     corners(t)
                 ));
@@ -220,7 +220,7 @@ pub(super) fn depth_order(f: RasterFn) -> Check {
             let mut depth = vec![f32::INFINITY; (W * H) as usize];
             let mut film = Film::new(W, H);
             for (k, (tri, c)) in pair.iter().enumerate() {
-                crate::grading::progress(format_args!(
+                crate::progress(format_args!(
                     "rasterizing depth-test triangle {k} of {what}"
                 ));
                 g(*tri, *c, W, H, &mut depth, &mut film.pixels);
@@ -299,7 +299,7 @@ pub(super) fn scene(f: RasterFn) -> Check {
         let mut depth = vec![f32::INFINITY; (w * h) as usize];
         let mut film = Film::new(w, h);
         for (k, (t, c)) in tris.iter().enumerate() {
-            crate::grading::progress(format_args!(
+            crate::progress(format_args!(
                 "rasterizing scene triangle {k}: {}",
                 corners(t)
             ));

@@ -19,10 +19,10 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::render::{films_from_sums, render_sum};
 use crate::ch3_ray_triangle::triangle::{intersect_watertight, Hit};
 use crate::core::sampling::random;
-use crate::grading::counted::{self, ReadableBvh};
-use crate::grading::exercise::{Check, Symptom};
-use crate::grading::work::Work;
+use crate::counted::{self, ReadableBvh};
+use crate::exercise::{Check, Symptom};
 use crate::scene::Scene;
+use crate::work::Work;
 
 pub use super::bvh_symptoms::*;
 
@@ -193,8 +193,7 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
         symptom,
     };
     // An empty tree: no nodes at all.
-    let progress =
-        |what: &str| crate::grading::progress(format_args!("calling closest_hit on {what}"));
+    let progress = |what: &str| crate::progress(format_args!("calling closest_hit on {what}"));
     progress("an empty tree");
     let empty = ReadableBvh::build(&[]);
     let down = Ray::new(Vec3::Z, -Vec3::Z).expect("a ray");
@@ -208,7 +207,7 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
             )
         }
         Err(payload) => {
-            let message = crate::grading::panic_text(&*payload);
+            let message = crate::panic_text(&*payload);
             if message.starts_with("not yet implemented") {
                 resume_unwind(payload);
             }

@@ -9,7 +9,7 @@ use glam::Vec3;
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::readable_bvh::{Aabb, Node, NodeKind, ReadableBvh};
-use crate::grading::exercises::draws::Draws;
+use crate::exercises::draws::Draws;
 
 /// The drawn chain and rays along it (with what to call each).
 pub(super) fn deep_chain() -> (ReadableBvh, Vec<(Ray, String)>) {

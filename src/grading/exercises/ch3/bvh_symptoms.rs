@@ -1,6 +1,6 @@
 //! What can go wrong in exercise 3.4 (the hints are in chapters/hints.toml).
 
-use crate::grading::exercise::Symptom;
+use crate::exercise::Symptom;
 
 /// Panics (an index out of bounds) on a tree with no nodes.
 pub const EMPTY_TREE: Symptom = Symptom {

@@ -1,7 +1,7 @@
 //! Chapter 3's exercises and how each is graded.
 
 use crate::ch3_ray_triangle::triangle;
-use crate::grading::exercise::Exercise;
+use crate::exercise::Exercise;
 
 mod bvh;
 mod bvh_deep;
@@ -41,7 +41,7 @@ pub fn exercises() -> Vec<Exercise> {
             name: "bvh_traversal",
             file: "chapters/ch3-ray-triangle/exercises/bvh_traversal.rs",
             symptoms: SYMPTOMS,
-            reference: || check_bvh_traversal(crate::grading::counted::closest_hit),
+            reference: || check_bvh_traversal(crate::counted::closest_hit),
         },
         Exercise {
             chapter: 3,

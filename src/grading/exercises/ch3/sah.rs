@@ -12,10 +12,10 @@ use glam::Vec3;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::readable_bvh::ReadableBvh;
 use crate::ch3_ray_triangle::sah::{build_with, sah_split, tree_cost, Split};
-use crate::grading::counted;
-use crate::grading::exercise::{Check, Symptom};
-use crate::grading::exercises::draws::Draws;
-use crate::grading::work::Work;
+use crate::counted;
+use crate::exercise::{Check, Symptom};
+use crate::exercises::draws::Draws;
+use crate::work::Work;
 
 /// A node's split as the exercise asks for it.
 pub type SahFn = fn(&[[Vec3; 2]], &[Vec3]) -> Split;

@@ -6,9 +6,9 @@ use glam::Vec3;
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
-use crate::grading::exercise::{Check, Symptom};
-use crate::grading::exercises::draws::Draws;
-use crate::grading::exercises::worst;
+use crate::exercise::{Check, Symptom};
+use crate::exercises::draws::Draws;
+use crate::exercises::worst;
 
 /// Barycentric (u, v).
 pub type Uv = (f32, f32);

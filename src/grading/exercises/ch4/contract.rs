@@ -11,7 +11,7 @@ use std::cell::Cell;
 use glam::Vec3;
 
 use crate::ch4_implicit_surfaces::march::March;
-use crate::grading::exercise::Symptom;
+use crate::exercise::Symptom;
 
 /// Evaluates the distance function past the budget.
 pub const NO_BUDGET: Symptom = Symptom {
@@ -179,7 +179,7 @@ pub fn cases() -> Vec<Case> {
         ),
         {
             // From a drawn point near the world's origin.
-            let mut draws = crate::grading::exercises::draws::Draws::new(42);
+            let mut draws = crate::exercises::draws::Draws::new(42);
             let origin = Vec3::new(draws.range(-5.0, 5.0), draws.range(-5.0, 5.0), draws.range(0.0, 5.0));
             case(
                 "a wall 6,000 m away seen from near the world's origin (max_distance = 10,000)",

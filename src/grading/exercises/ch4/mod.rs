@@ -9,7 +9,7 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch4_implicit_surfaces::march::{self, March};
 use crate::ch4_implicit_surfaces::normal::gradient_central;
 use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere, sd_torus};
-use crate::grading::exercise::{Check, Exercise, Symptom};
+use crate::exercise::{Check, Exercise, Symptom};
 
 mod contract;
 mod scene;
@@ -174,7 +174,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         (&torus, Vec3::new(6.0, 0.0, 0.0), -Vec3::X, Some(3.5)),
     ];
     let (error, detail) = worst_of(cases.into_iter().map(|(sdf, o, d, want)| {
-        crate::grading::progress(format_args!(
+        crate::progress(format_args!(
             "calling sphere_trace on the ray from {o} along {d} (ε = {eps}, 512 steps, max distance 50)"
         ));
         let got = f(sdf, o, d, eps, 512, 50.0);
@@ -231,7 +231,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
     // The step budget is respected: a ray passing 5e-5 above the sphere
     // counts as a hit with ε = 1e-4, but not within 3 steps from 40 away
     // (it creeps along the silhouette).
-    crate::grading::progress("calling sphere_trace on a grazing ray with a budget of 3 steps");
+    crate::progress("calling sphere_trace on a grazing ray with a budget of 3 steps");
     let budget = f(
         &sphere,
         Vec3::new(-40.0, 1.00005, 0.0),
@@ -254,7 +254,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         if !matches!(case.clause, Clause::Budget | Clause::MaxDistance) {
             return None;
         }
-        crate::grading::progress(format_args!("calling sphere_trace on {}", case.what));
+        crate::progress(format_args!("calling sphere_trace on {}", case.what));
         let m = case.march;
         let answer = |g: TraceFn| {
             let probe = Probe::new(case.sdf);

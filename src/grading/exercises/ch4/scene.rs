@@ -11,7 +11,7 @@ use crate::ch4_implicit_surfaces::distance::scene_distance;
 use crate::ch4_implicit_surfaces::march::{self, March};
 use crate::ch4_implicit_surfaces::normal::{normal, NormalScheme};
 use crate::core::film::Film;
-use crate::grading::exercise::Check;
+use crate::exercise::Check;
 
 /// The capstone's candidate: a camera ray to (t, unit normal facing the
 /// viewer), or `None` for a miss.
@@ -56,7 +56,7 @@ pub fn check_trace_scene(f: TraceRayFn) -> Check {
             .map(|i| {
                 let ray = ray_at(i % w, i / w);
                 if i % w == 0 {
-                    crate::grading::progress(format_args!(
+                    crate::progress(format_args!(
                         "calling trace_scene on the camera rays of row {} of {h}",
                         i / w
                     ));
@@ -92,9 +92,9 @@ pub fn check_trace_scene(f: TraceRayFn) -> Check {
     };
     // The scene's distance function counts nothing: its calls need not
     // cross between the processes (see `bridge::uncounted`).
-    let (check, their_t, our_t) = crate::grading::bridge::uncounted(|| {
+    let (check, their_t, our_t) = crate::bridge::uncounted(|| {
         let (theirs, their_t) = render(f);
-        let (ours, our_t) = crate::grading::bridge::on_grader_pool(|| render(reference_trace_ray));
+        let (ours, our_t) = crate::bridge::on_grader_pool(|| render(reference_trace_ray));
         let check = images::compare(theirs, ours, 0.02, 3e-3, "normal", &explain);
         (check, their_t, our_t)
     });
@@ -147,9 +147,9 @@ pub fn check_trace_scene(f: TraceRayFn) -> Check {
 
 /// The first of `contract::cases` where `f` breaks the contract: what
 /// happened, and the symptom if it is recognised.
-pub fn contract_failure(f: TraceRayFn) -> Option<(String, Option<crate::grading::Symptom>)> {
+pub fn contract_failure(f: TraceRayFn) -> Option<(String, Option<crate::Symptom>)> {
     contract::cases().into_iter().find_map(|case| {
-        crate::grading::progress(format_args!("calling trace_scene on {}", case.what));
+        crate::progress(format_args!("calling trace_scene on {}", case.what));
         let answer = |g: TraceRayFn| {
             let probe = Probe::new(case.sdf);
             let hit = g(&|p| probe.eval(p), case.origin, case.dir, &case.march);

@@ -30,7 +30,7 @@ use super::symptoms::*;
 use crate::ch1_projection::camera::Camera;
 use crate::core::film::Film;
 use crate::core::sampling::random;
-use crate::grading::exercise::{Check, Symptom};
+use crate::exercise::{Check, Symptom};
 
 /// The capstone's candidate: (p, n, ρ, y, n_light, A, Le, visible) to one
 /// sample of the reflected radiance.
@@ -312,7 +312,7 @@ fn cornell(g: DirectFn, spp: u32) -> images::Estimate {
             d > 0.0 && world.unoccluded(p, n, to / d, d)
         };
         if x == 0 && s == 0 {
-            crate::grading::progress(format_args!(
+            crate::progress(format_args!(
                 "calling direct_light for row {y} of {h}: p = {:.3}, n = {:.3}, light point {point:.3}",
                 it.p, n
             ));
@@ -387,7 +387,7 @@ pub fn check_direct_light(f: DirectFn) -> Check {
     let (mut error, mut detail, symptom) = hand_cases(f);
     if error <= 1e-4 {
         let drawn = super::drawn::drawn_cases(f);
-        crate::grading::exercises::draws::fold_drawn(&mut error, &mut detail, drawn);
+        crate::exercises::draws::fold_drawn(&mut error, &mut detail, drawn);
     }
     let student = cornell(f, 32);
     let reference = cornell(reference_direct, 32);

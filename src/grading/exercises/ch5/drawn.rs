@@ -9,7 +9,7 @@ use std::f64::consts::PI;
 
 use glam::Vec3;
 
-use crate::grading::exercises::draws::{worst_drawn, Draws};
+use crate::exercises::draws::{worst_drawn, Draws};
 
 /// Capstone 5's signature (the checks' `DirectFn`).
 type Direct = fn(Vec3, Vec3, Vec3, Vec3, Vec3, f32, Vec3, &dyn Fn(Vec3, Vec3) -> bool) -> Vec3;

@@ -22,7 +22,7 @@ use crate::ch5_reflection::material::lambert::Lambertian;
 use crate::ch5_reflection::radiometry::{spot_flux, triangle_solid_angle};
 use crate::ch5_reflection::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
 use crate::core::sampling::random;
-use crate::grading::exercise::{Check, Exercise, Symptom};
+use crate::exercise::{Check, Exercise, Symptom};
 
 type BrdfFn = fn(Vec3, Vec3, Vec3) -> Vec3;
 type CosineFn = fn(Vec2) -> (Vec3, f32);
@@ -199,7 +199,7 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
 pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
     let n = 40_000u64;
     // The numbers are new for every grading run.
-    let seed = 55 ^ crate::grading::run_seed().wrapping_mul(0x9e37_79b9_7f4a_7c15);
+    let seed = 55 ^ crate::run_seed().wrapping_mul(0x9e37_79b9_7f4a_7c15);
     let (mut sx, mut sy, mut sz, mut low) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     for i in 0..n {
         let u = Vec2::new(random(seed, i, 0, 0), random(seed, i, 0, 1));

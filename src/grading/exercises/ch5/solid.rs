@@ -6,9 +6,9 @@ use glam::{DQuat, DVec3, Vec3};
 
 use super::{SOLID_ABOVE_PI, SOLID_FAR_LIMIT, SOLID_PRECISION, SOLID_SIGNED};
 use crate::ch5_reflection::radiometry::triangle_solid_angle;
-use crate::grading::exercise::{Check, Symptom};
-use crate::grading::exercises::draws::{fold_drawn, worst_drawn, Draws};
-use crate::grading::exercises::worst_of;
+use crate::exercise::{Check, Symptom};
+use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
+use crate::exercises::worst_of;
 
 type SolidFn = fn(Vec3, [Vec3; 3]) -> f32;
 

@@ -9,9 +9,9 @@ use glam::{DVec3, Vec3};
 use super::{SPOT_BAND, SPOT_FACTOR, SPOT_NARROW};
 use crate::ch5_reflection::light::spot::Spot;
 use crate::ch5_reflection::radiometry::spot_flux;
-use crate::grading::exercise::{Check, Symptom};
-use crate::grading::exercises::draws::{fold_drawn, worst_drawn, Draws};
-use crate::grading::exercises::worst_of;
+use crate::exercise::{Check, Symptom};
+use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
+use crate::exercises::worst_of;
 
 type SpotFn = fn(Vec3, f32, f32) -> Vec3;
 

@@ -1,7 +1,7 @@
 //! The failures chapter 5's checks recognise, each with its hint (cites a
 //! lecture slide or a book section by its exact title).
 
-use crate::grading::exercise::Symptom;
+use crate::exercise::Symptom;
 
 /// The Lambertian BRDF without its 1/π (or with it twice).
 pub const LAMBERT_PI: Symptom = Symptom { name: "off by π" };

@@ -26,7 +26,7 @@ use super::super::images;
 use super::{reference_path, reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
 use crate::ch1_projection::camera::Camera;
 use crate::core::sampling::random;
-use crate::grading::exercise::{Check, Symptom};
+use crate::exercise::{Check, Symptom};
 
 /// A path was still going after [`BOUNCE_BUDGET`] bounces in the closed
 /// furnace.
@@ -172,7 +172,7 @@ pub fn trace_furnace(f: PathFn, scene: &PathScene, n: u64, seed: u64) -> Furnace
                     random(seed, i, 0, dim).min(1.0 - f32::EPSILON)
                 };
                 if i % 50_000 == 0 {
-                    crate::grading::progress(format_args!(
+                    crate::progress(format_args!(
                         "calling path_radiance in the closed furnace, path {i} of {n}"
                     ));
                 }
@@ -212,7 +212,7 @@ pub fn judge_furnace(f: PathFn, r: &FurnaceRun, n: u64) -> (f64, String, Option<
 /// (the first emission missing, roulette's survivors not divided by q)
 /// come too close to tell apart.
 pub fn furnace_of_run() -> (f32, Vec3) {
-    let mut draws = crate::grading::exercises::draws::Draws::new(64);
+    let mut draws = crate::exercises::draws::Draws::new(64);
     let albedo = draws.range(0.8, 0.9);
     let le = Vec3::new(
         draws.range(0.2, 2.0),
@@ -300,7 +300,7 @@ pub fn judge_furnace_of(
         // Emission counted twice, or each light sample doubled: the
         // furnace without emission at bounced hits tells them apart.
         let scene = PathScene::furnace_without_bounce_emission(albedo, furnace_le);
-        let again = trace_furnace(f, &scene, n / 4, 612 ^ crate::grading::run_seed());
+        let again = trace_furnace(f, &scene, n / 4, 612 ^ crate::run_seed());
         let mean = again.sum / (n / 4) as f64;
         if ((mean - want) / want).abs().max_element() < 0.05 {
             Some(DOUBLE_EMISSION)
@@ -347,7 +347,7 @@ fn cornell_sample<'a>(
             random(seed, pixel, s as u64, dim).min(1.0 - f32::EPSILON)
         };
         if x == 0 && s == 0 {
-            crate::grading::progress(format_args!(
+            crate::progress(format_args!(
                 "calling path_radiance for the Cornell box's camera rays, row {y} of {}",
                 camera.height
             ));
@@ -370,7 +370,7 @@ fn cornell(f: PathFn) -> Check {
     let student = images::Estimate::gather(w, h, 64, &cornell_sample(f, &mine, &camera, 601));
     // The reference's paths call no student function: on the grader's
     // threads (see `bridge::on_grader_pool`).
-    let reference = crate::grading::bridge::on_grader_pool(|| {
+    let reference = crate::bridge::on_grader_pool(|| {
         images::Estimate::gather(
             w,
             h,
@@ -386,7 +386,7 @@ fn cornell(f: PathFn) -> Check {
 pub fn check_path_radiance(f: PathFn) -> Check {
     let (albedo, le) = furnace_of_run();
     let scene = PathScene::furnace(albedo, le);
-    let furnace = trace_furnace(f, &scene, FURNACE_PATHS, 611 ^ crate::grading::run_seed());
+    let furnace = trace_furnace(f, &scene, FURNACE_PATHS, 611 ^ crate::run_seed());
     let (fz, fdetail, fsymptom) = judge_furnace_of(f, &furnace, FURNACE_PATHS, (albedo, le));
     let box_check = cornell(f);
     let error = fz.max(box_check.error);

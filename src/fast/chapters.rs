@@ -18,7 +18,7 @@ pub fn all() -> Vec<&'static dyn Chapter> {
 
 /// [`all`], with chapter 6 traced by the lesson's readable engine when
 /// `readable` (`--engine readable`; the images agree to the last bits of
-/// a sine, see [`crate::fast`]).
+/// a sine, see [the fast engine](crate)).
 pub fn with_engine(readable: bool) -> Vec<&'static dyn Chapter> {
     let mut chapters = all();
     if readable {
@@ -31,7 +31,7 @@ pub fn with_engine(readable: bool) -> Vec<&'static dyn Chapter> {
 /// ends' engine is chosen (the chapter's own default is the lesson's).
 const FAST_CH6: crate::ch6_global_illumination::stage::GlobalIllumination =
     crate::ch6_global_illumination::stage::GlobalIllumination {
-        engine: crate::fast::FAST,
+        engine: crate::FAST,
         ..crate::ch6_global_illumination::stage::DEFAULT
     };
 
