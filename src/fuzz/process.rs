@@ -24,7 +24,7 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use super::tree::structured_case;
-use crate::grading::child::{run_limited, Ran};
+use crate::grading::child::{run_limited, Limit, Ran};
 
 /// How one case ended, seen from outside its process.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -162,7 +162,7 @@ pub fn run_one(
     if let Some(kind) = self_test {
         cmd.args(["--self-test", kind]);
     }
-    let ran = match run_limited(&mut cmd, b"", Some(limits.timeout), None) {
+    let ran = match run_limited(&mut cmd, b"", Some(Limit::Wall(limits.timeout)), None) {
         Ok(ran) => ran,
         Err(e) => return (Class::OddExit, format!("could not start: {e}")),
     };

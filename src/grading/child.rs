@@ -37,6 +37,54 @@ pub enum Ran {
     Cancelled,
 }
 
+/// When [`run_limited`] stops a child that has not exited.
+#[derive(Debug, Clone, Copy)]
+pub enum Limit {
+    /// After this much wall-clock time.
+    Wall(Duration),
+    /// After this much CPU time, what a loop that never ends uses up
+    /// however busy the machine is, while a correct check is not cut
+    /// short because other work slows it; or after four times as much
+    /// wall-clock time, for a child that waits without computing. Where
+    /// the CPU time cannot be read (no Linux `/proc`), after this much
+    /// wall-clock time.
+    Cpu(Duration),
+}
+
+impl Limit {
+    /// Whether process `pid`, started `wall` ago, has reached the limit.
+    fn reached(self, pid: u32, wall: Duration) -> bool {
+        match self {
+            Limit::Wall(t) => wall >= t,
+            Limit::Cpu(t) => match cpu_time(pid) {
+                Some(cpu) => cpu >= t || wall >= 4 * t,
+                None => wall >= t,
+            },
+        }
+    }
+}
+
+/// The CPU time (user and system) process `pid` has used so far, from
+/// `/proc/<pid>/stat`; `None` where that cannot be read.
+fn cpu_time(pid: u32) -> Option<Duration> {
+    #[cfg(target_os = "linux")]
+    {
+        let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+        // After the command name (in parentheses, and it may hold
+        // anything) come the fields from the third on: utime and stime
+        // are the 14th and 15th, in clock ticks.
+        let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
+        let ticks = fields.get(11)?.parse::<u64>().ok()? + fields.get(12)?.parse::<u64>().ok()?;
+        let per_second = nix::unistd::sysconf(nix::unistd::SysconfVar::CLK_TCK).ok()??;
+        (per_second > 0).then(|| Duration::from_secs_f64(ticks as f64 / per_second as f64))
+    }
+    #[cfg(not(target_os = "linux"))]
+    {
+        let _ = pid;
+        None
+    }
+}
+
 /// The most a child may write to standard error before it is stopped:
 /// 4 MiB (a check's own output is a few hundred bytes; a student's
 /// debugging prints rarely reach this).
@@ -126,7 +174,7 @@ fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
 
 /// Runs `cmd` in a process group of its own, with `input` on its standard
 /// input (then closed) and both outputs captured, until it exits; stops
-/// the whole group after `timeout`, as soon as `cancel` is set, or when it
+/// the whole group at `limit`, as soon as `cancel` is set, or when it
 /// writes more than [`OUTPUT_LIMIT`] to standard error or
 /// [`TRANSCRIPT_LIMIT`] to standard output. The caller never waits longer than
 /// that, nor for pipes that something the child started keeps open. Used
@@ -134,7 +182,7 @@ fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
 pub fn run_limited(
     cmd: &mut Command,
     input: &[u8],
-    timeout: Option<Duration>,
+    limit: Option<Limit>,
     cancel: Option<&AtomicBool>,
 ) -> std::io::Result<Ran> {
     own_group(cmd);
@@ -177,7 +225,7 @@ pub fn run_limited(
             stop(&mut child);
             return Ok(Ran::TooMuchOutput);
         }
-        if timeout.is_some_and(|t| start.elapsed() >= t) {
+        if limit.is_some_and(|l| l.reached(child.id(), start.elapsed())) {
             stop(&mut child);
             let (_, stderr) = outputs.collect(Duration::from_millis(200));
             return Ok(Ran::TimedOut { stderr });

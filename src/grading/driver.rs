@@ -52,7 +52,9 @@ struct GradeCli {
     /// version is kept beside it as `<name>.rs.orig`. Grades nothing.
     #[arg(long, value_name = "EXERCISE")]
     restore: Option<String>,
-    /// The time limit of one exercise, in seconds.
+    /// The time limit of one exercise: seconds of CPU time (a check that
+    /// waits without computing is stopped after four times as many
+    /// seconds).
     #[arg(long, value_name = "SECONDS", default_value_t = 5.0, value_parser = parse_timeout)]
     timeout: f64,
     /// The seed of the inputs the checks draw: a new one every run unless

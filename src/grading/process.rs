@@ -11,7 +11,7 @@ use std::sync::atomic::AtomicBool;
 use std::time::Duration;
 
 use crate::build::{build_exercises, exercises_dir};
-use crate::child::{crash_message, last_progress, run_limited, Ran, OUTPUT_LIMIT};
+use crate::child::{crash_message, last_progress, run_limited, Limit, Ran, OUTPUT_LIMIT};
 use crate::exercise::{Check, Exercise, Outcome};
 use crate::runner::{replay_check, Request};
 use crate::{run, write_failure_images, PROGRESS_ENV};
@@ -42,7 +42,12 @@ pub fn in_student_process(
     let mut cmd = Command::new(runner);
     // Nothing of the grader's environment reaches the student's code.
     cmd.env_clear().env(PROGRESS_ENV, "1");
-    let ran = run_limited(&mut cmd, request.line().as_bytes(), Some(timeout), cancel);
+    let ran = run_limited(
+        &mut cmd,
+        request.line().as_bytes(),
+        Some(Limit::Cpu(timeout)),
+        cancel,
+    );
     let outcome = match ran {
         Err(e) => Outcome::Panicked(format!("could not start {}: {e}", runner.display())),
         Ok(Ran::TimedOut { stderr }) => Outcome::TimedOut {

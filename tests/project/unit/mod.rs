@@ -12,6 +12,7 @@ mod core_strip;
 mod core_table;
 mod core_text;
 mod core_zview;
+mod grading_child;
 mod grading_live;
 mod scene_mesh;
 mod scene_obj;
