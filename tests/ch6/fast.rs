@@ -204,14 +204,7 @@ fn unsafe_code_lives_in_one_module() {
         assert!(text.contains(rule), "src/{root} lacks {rule}");
     }
     // Each chapter forbids it outright (no `allow` can switch it back on).
-    for chapter in [
-        "ch1_projection",
-        "ch2_rasterization",
-        "ch3_ray_triangle",
-        "ch4_implicit_surfaces",
-        "ch5_reflection",
-        "ch6_global_illumination",
-    ] {
+    for chapter in crate::common::CHAPTER_MODULES {
         let m = std::fs::read_to_string(src.join(chapter).join("mod.rs")).unwrap();
         assert!(m.contains("#![forbid(unsafe_code)]"), "{chapter}");
     }

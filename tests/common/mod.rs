@@ -23,6 +23,17 @@ pub fn write_files(dir: &Path, files: &[(&str, &str)]) {
 }
 
 /// The repository root.
+/// The chapters' folders under `src/`, in lecture order (each a module of
+/// the lessons' crate).
+pub const CHAPTER_MODULES: [&str; 6] = [
+    "ch1_projection",
+    "ch2_rasterization",
+    "ch3_ray_triangle",
+    "ch4_implicit_surfaces",
+    "ch5_reflection",
+    "ch6_global_illumination",
+];
+
 pub fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }

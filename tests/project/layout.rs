@@ -223,19 +223,11 @@ fn referenced_paths(code: &str, module: &[String], is_mod_file: bool) -> Vec<Vec
 /// `src/grading/`, `src/tui/`), whose roots name the crates below them as
 /// they are named in the lessons (`crate::core`, `crate::chapters`).
 fn crate_root(module: &[String], next: Option<&str>) -> Vec<String> {
-    const LESSONS: [&str; 8] = [
-        "core",
-        "scene",
-        "ch1_projection",
-        "ch2_rasterization",
-        "ch3_ray_triangle",
-        "ch4_implicit_surfaces",
-        "ch5_reflection",
-        "ch6_global_illumination",
-    ];
+    let lessons =
+        |n: &str| ["core", "scene"].contains(&n) || crate::common::CHAPTER_MODULES.contains(&n);
     let own = module.first().map(String::as_str);
     match next {
-        Some(n) if LESSONS.contains(&n) => Vec::new(),
+        Some(n) if lessons(n) => Vec::new(),
         Some("chapters") if own != Some("fast") => vec!["fast".into()],
         Some("grading" | "fast" | "tui") => Vec::new(),
         _ => match own {
