@@ -17,13 +17,9 @@ use std::process::Command;
 use std::sync::atomic::AtomicBool;
 
 use crate::child::{run_limited, Ran};
+use crate::core::project_root;
 use crate::shipped::{Stub, STUBS};
 use crate::source_rules::refusals;
-
-/// The repository root (where `Cargo.toml` and `chapters/` are).
-pub fn root() -> PathBuf {
-    crate::core::project_root()
-}
 
 /// The folder of chapter folders whose `exercises/` the grader builds:
 /// `$RAYSTEP_EXERCISES_DIR` when set (the tests point it at a fresh copy of
@@ -31,7 +27,7 @@ pub fn root() -> PathBuf {
 pub fn exercises_dir() -> PathBuf {
     std::env::var_os("RAYSTEP_EXERCISES_DIR")
         .map(PathBuf::from)
-        .unwrap_or_else(|| root().join("chapters"))
+        .unwrap_or_else(|| project_root().join("chapters"))
 }
 
 /// What building the student's process gave.
@@ -227,7 +223,7 @@ pub fn build_exercises_in(
             "raystep-grade-child",
         ])
         .arg("--manifest-path")
-        .arg(root().join("Cargo.toml"))
+        .arg(project_root().join("Cargo.toml"))
         .arg("--target-dir")
         .arg(&place.target)
         .env("RAYSTEP_GRADE_MODULES", &modules);
