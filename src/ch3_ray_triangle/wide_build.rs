@@ -4,7 +4,8 @@
 //! leaf holds), and the steps of a query that do not depend on the width
 //! (the order children are visited in, the nearest hit of a leaf, the rare
 //! lanes the one-triangle test decides), and the two queries themselves,
-//! written once over `WideTree` for every width and instruction set.
+//! written once over `WideTree` for every width, instruction set and
+//! group of rays.
 
 use obvhs::bvh2::Bvh2;
 
@@ -15,10 +16,10 @@ use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, WatertightRay};
 /// index the tree's leaves); otherwise it indexes its inner nodes.
 pub const LEAF: u32 = 1 << 31;
 
-/// What the two queries ask of a wide tree of `N` children per node and
-/// `N` triangles per leaf: the four-wide tree ([`super::wide_bvh`]), the
-/// fast engine's eight-wide one, and that one with its AVX kernels, each
-/// with its own slab and leaf tests.
+/// What both queries ask of a wide tree of `N` children per node and `N`
+/// triangles per leaf: the four-wide tree ([`super::wide_bvh`]), the fast
+/// engine's eight-wide one, that one with its AVX kernels, and that one
+/// for eight camera rays at once, each with its own slab test.
 pub trait WideTree<const N: usize> {
     /// The ray, as this tree's tests take it (computed once per query).
     type Ray<'r>;
@@ -27,50 +28,97 @@ pub trait WideTree<const N: usize> {
     /// The slab test at inner node `node`: the children the ray enters in
     /// (0, t_max) as a bit mask, where it enters each, and the children.
     fn enter(&self, r: &Self::Ray<'_>, node: usize, t_max: f32) -> (u32, [f32; N], &[u32; N]);
-    /// Leaf `leaf`'s nearest hit in (0, t_max) and its lane.
-    fn leaf_closest(&self, r: &Self::Ray<'_>, leaf: usize, t_max: f32) -> Option<(Hit, usize)>;
+}
+
+/// What the closest-hit query asks of a leaf.
+pub trait ClosestHit<const N: usize>: WideTree<N> {
+    /// The nearest hits found so far: one ray's ([`Nearest`]), or each of
+    /// a group of rays'.
+    type Found: Found;
+    /// Keeps in `found` any hit of leaf `leaf` nearer than what it holds.
+    fn leaf_closest(&self, r: &Self::Ray<'_>, leaf: usize, found: &mut Self::Found);
+}
+
+/// What the shadow query asks of a leaf.
+pub trait AnyHit<const N: usize>: WideTree<N> {
     /// Whether any of leaf `leaf`'s triangles is hit in (0, t_max).
     fn leaf_any(&self, r: &Self::Ray<'_>, leaf: usize, t_max: f32) -> bool;
-    /// The index, in the list the tree was built from, of leaf `leaf`'s
-    /// triangle in `lane`.
-    fn original(&self, leaf: usize, lane: usize) -> u32;
+}
+
+/// The hits a closest-hit query has found so far.
+pub trait Found {
+    /// How far a box may start and still hold a nearer hit: the nearest
+    /// hit's t (for a group of rays, the farthest of theirs).
+    fn reach(&self) -> f32;
+}
+
+/// One ray's nearest hit so far, and where the search ends.
+#[derive(Clone, Copy, Debug)]
+pub struct Nearest {
+    /// The nearest hit (its triangle indexes the build list).
+    pub hit: Option<Hit>,
+    /// Its t, or the query's t_max while there is none.
+    pub t: f32,
+}
+
+impl Nearest {
+    /// Nothing found yet, in (0, t_max).
+    #[inline(always)]
+    pub fn new(t_max: f32) -> Nearest {
+        Nearest {
+            hit: None,
+            t: t_max,
+        }
+    }
+
+    /// Keeps a leaf's nearest hit and its lane (`None`: the leaf has no
+    /// nearer one), with `original`, the build-list index of a lane's
+    /// triangle.
+    #[inline(always)]
+    pub fn keep(&mut self, leaf_hit: Option<(Hit, usize)>, original: impl Fn(usize) -> u32) {
+        if let Some((hit, lane)) = leaf_hit {
+            self.t = hit.t;
+            self.hit = Some(Hit {
+                triangle: original(lane),
+                ..hit
+            });
+        }
+    }
+}
+
+impl Found for Nearest {
+    #[inline(always)]
+    fn reach(&self) -> f32 {
+        self.t
+    }
 }
 
 // ANCHOR: wide_closest
-/// The closest hit in (0, t_max): the entered children nearest first,
+/// The closest hits, into `found`: the entered children nearest first,
 /// skipping every subtree whose box starts beyond the nearest hit so far.
 /// `stack` holds the subtrees still to visit (deep enough for the tree).
 #[inline(always)]
-pub fn closest<const N: usize, T: WideTree<N>>(
+pub fn closest<const N: usize, T: ClosestHit<N>>(
     tree: &T,
     r: &T::Ray<'_>,
-    t_max: f32,
+    found: &mut T::Found,
     stack: &mut [(u32, f32)],
-) -> Option<Hit> {
-    let mut best: Option<Hit> = None;
-    let mut t_best = t_max;
+) {
     let mut depth = 0;
     let mut at = tree.root();
     loop {
         if at & LEAF == 0 {
-            let (entered, t_near, child) = tree.enter(r, at as usize, t_best);
+            let (entered, t_near, child) = tree.enter(r, at as usize, found.reach());
             if entered != 0 {
                 at = nearest_child_next(entered, child, &t_near, stack, &mut depth);
                 continue;
             }
         } else {
-            let leaf = (at & !LEAF) as usize;
-            if let Some((hit, lane)) = tree.leaf_closest(r, leaf, t_best) {
-                t_best = hit.t;
-                best = Some(Hit {
-                    triangle: tree.original(leaf, lane),
-                    ..hit
-                });
-            }
+            tree.leaf_closest(r, (at & !LEAF) as usize, found);
         }
-        match pop_nearer(stack, &mut depth, t_best) {
+        match pop_nearer(stack, &mut depth, found.reach()) {
             Some(next) => at = next,
-            None => return best,
+            None => return,
         }
     }
 }
@@ -79,7 +127,7 @@ pub fn closest<const N: usize, T: WideTree<N>>(
 /// Whether anything is hit in (0, t_max): stops at the first hit, in no
 /// particular order.
 #[inline(always)]
-pub fn occluded<const N: usize, T: WideTree<N>>(
+pub fn occluded<const N: usize, T: AnyHit<N>>(
     tree: &T,
     r: &T::Ray<'_>,
     t_max: f32,

@@ -22,7 +22,7 @@ use crate::ch3_ray_triangle::triangle::{gamma, Hit};
 use crate::ch3_ray_triangle::watertight_fast::{SoaTriangle, Tri4, WatertightRay};
 use crate::ch3_ray_triangle::wide_build::{
     any_checked, closest, count_triangles, nearest_checked, nearest_lane, occluded, open_children,
-    triangles_under, WideTree, LEAF,
+    triangles_under, AnyHit, ClosestHit, Nearest, WideTree, LEAF,
 };
 
 /// Triangles per leaf, one per SIMD lane.
@@ -226,7 +226,9 @@ impl WideBvh {
     /// chapter 3's BVH was built from.
     pub fn closest(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
         let r = (WatertightRay::new(ray), BoxRay::new(ray));
-        self.with_stack(|stack| closest(self, &r, t_max, stack))
+        let mut found = Nearest::new(t_max);
+        self.with_stack(|stack| closest(self, &r, &mut found, stack));
+        found.hit
     }
 
     /// Whether anything is hit in (0, t_max): stops at the first hit, in
@@ -288,26 +290,28 @@ impl WideTree<LANES> for WideBvh {
         let (entered, t_near) = r.1.enter(node, t_max);
         (entered, t_near.to_array(), &node.child)
     }
+}
+
+impl ClosestHit<LANES> for WideBvh {
+    type Found = Nearest;
 
     #[inline(always)]
-    fn leaf_closest(&self, r: &Self::Ray<'_>, leaf: usize, t_max: f32) -> Option<(Hit, usize)> {
-        let h = r.0.intersect4(&self.leaves[leaf], 0.0, t_max);
+    fn leaf_closest(&self, r: &Self::Ray<'_>, leaf: usize, found: &mut Nearest) {
+        let h = r.0.intersect4(&self.leaves[leaf], 0.0, found.t);
         let (t, u, v) = (h.t.to_array(), h.u.to_array(), h.v.to_array());
         let best = nearest_lane(h.hit, &t, &u, &v);
-        match h.check {
+        let best = match h.check {
             0 => best,
-            check => nearest_checked(&r.0, self.leaf_tris(leaf), check, t_max, best),
-        }
+            check => nearest_checked(&r.0, self.leaf_tris(leaf), check, found.t, best),
+        };
+        found.keep(best, |lane| self.original[leaf * LANES + lane]);
     }
+}
 
+impl AnyHit<LANES> for WideBvh {
     #[inline(always)]
     fn leaf_any(&self, r: &Self::Ray<'_>, leaf: usize, t_max: f32) -> bool {
         let h = r.0.intersect4(&self.leaves[leaf], 0.0, t_max);
         h.hit != 0 || (h.check != 0 && any_checked(&r.0, self.leaf_tris(leaf), h.check, t_max))
-    }
-
-    #[inline(always)]
-    fn original(&self, leaf: usize, lane: usize) -> u32 {
-        self.original[leaf * LANES + lane]
     }
 }

@@ -21,7 +21,7 @@ use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch3_ray_triangle::watertight_fast::SoaTriangle;
 use crate::ch3_ray_triangle::wide_build::{
     any_checked, closest, count_triangles, nearest_checked, nearest_lane, occluded, open_children,
-    triangles_under, WideTree,
+    triangles_under, AnyHit, ClosestHit, Nearest, WideTree,
 };
 
 use super::lanes::{enter, leaf_test, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
@@ -297,7 +297,9 @@ impl Bvh8 {
         t_max: f32,
         stack: &mut [(u32, f32)],
     ) -> Option<Hit> {
-        closest(self, r, t_max, stack)
+        let mut found = Nearest::new(t_max);
+        closest(self, r, &mut found, stack);
+        found.hit
     }
 
     /// The nearest of `best` (the leaf's hits so far) and leaf `l`'s rare
@@ -348,25 +350,27 @@ impl WideTree<W> for Bvh8 {
         let (entered, t_near) = enter(r, node, t_max);
         (entered, t_near, &node.child)
     }
+}
+
+impl ClosestHit<W> for Bvh8 {
+    type Found = Nearest;
 
     #[inline(always)]
-    fn leaf_closest(&self, r: &RayData, leaf: usize, t_max: f32) -> Option<(Hit, usize)> {
-        let h = leaf_test(r, &self.leaves[leaf], t_max);
+    fn leaf_closest(&self, r: &RayData, leaf: usize, found: &mut Nearest) {
+        let h = leaf_test(r, &self.leaves[leaf], found.t);
         let best = nearest_lane(h.hit, &h.t, &h.u, &h.v);
-        match h.check {
+        let best = match h.check {
             0 => best,
-            check => self.leaf_checked(r, leaf, check, t_max, best),
-        }
+            check => self.leaf_checked(r, leaf, check, found.t, best),
+        };
+        found.keep(best, |lane| self.original[leaf * W + lane]);
     }
+}
 
+impl AnyHit<W> for Bvh8 {
     #[inline(always)]
     fn leaf_any(&self, r: &RayData, leaf: usize, t_max: f32) -> bool {
         let h = leaf_test(r, &self.leaves[leaf], t_max);
         h.hit != 0 || (h.check != 0 && self.leaf_any_checked(r, leaf, h.check, t_max))
-    }
-
-    #[inline(always)]
-    fn original(&self, leaf: usize, lane: usize) -> u32 {
-        self.original[leaf * W + lane]
     }
 }

@@ -4,7 +4,10 @@
 //! tests a node's boxes once against the range of the eight rays
 //! (`enter`), and each triangle once with one ray per lane, where the
 //! one-ray `Bvh8::closest_with` does both eight times, and makes its
-//! branches once.
+//! branches once. The traversal is the one closest-hit query
+//! (`wide_build::closest`), with the group as its ray: [`Group`] gives it
+//! the group's tests, and [`Best`] the eight nearest hits so far, its
+//! reach the farthest of them.
 //!
 //! The box test opens every box some ray of the eight enters. At the
 //! leaves each lane runs the one-ray test's arithmetic in its order (the
@@ -25,9 +28,11 @@
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Hit;
 
+use crate::ch3_ray_triangle::wide_build::{closest, ClosestHit, Found, WideTree};
+
 use super::bvh8::Bvh8;
 use super::lanes::{
-    front_lane, larger, mask, smaller, trust_lane, Fronts, RayData, FAR_STRETCH, LEAF, W,
+    front_lane, larger, mask, smaller, trust_lane, Fronts, RayData, FAR_STRETCH, W,
 };
 
 /// Eight rays' numbers: per axis the smallest and largest origin and
@@ -116,19 +121,62 @@ pub fn together(rays: &[Ray]) -> bool {
     rays.len() == W && Packet::new(rays).is_some()
 }
 
-/// The nearest hits found so far, by lane.
+/// The nearest hits found so far, by lane, and the lanes the one-ray
+/// traversal must decide.
 struct Best {
     t: [f32; W],
     u: [f32; W],
     v: [f32; W],
     triangle: [u32; W],
+    redo: u32,
+    /// The farthest of the lanes' `t`: a box that starts beyond it holds
+    /// no nearer hit for any lane.
+    farthest: f32,
+}
+
+impl Found for Best {
+    #[inline(always)]
+    fn reach(&self) -> f32 {
+        self.farthest
+    }
+}
+
+/// The eight-wide tree, traversed by a group of eight rays: the
+/// closest-hit query written once ([`closest`]) with the group's slab
+/// test ([`enter`]) and leaf test ([`leaf`]).
+struct Group<'a> {
+    bvh: &'a Bvh8,
+}
+
+impl WideTree<W> for Group<'_> {
+    type Ray<'r> = Packet;
+
+    #[inline(always)]
+    fn root(&self) -> u32 {
+        self.bvh.root
+    }
+
+    #[inline(always)]
+    fn enter(&self, p: &Packet, node: usize, t_far: f32) -> (u32, [f32; W], &[u32; W]) {
+        let node = &self.bvh.nodes[node];
+        let (entered, nears) = enter(p, t_far, node);
+        (entered, nears, &node.child)
+    }
+}
+
+impl ClosestHit<W> for Group<'_> {
+    type Found = Best;
+
+    #[inline(always)]
+    fn leaf_closest(&self, p: &Packet, l: usize, best: &mut Best) {
+        best.redo |= leaf(p, self.bvh, l, best);
+        best.farthest = largest(best.t);
+    }
 }
 
 /// The closest hits of eight `rays` in (0, ∞), into `out` (eight
 /// entries), as `Bvh8::closest_with` finds them; `stack` holds at least
-/// [`Bvh8::stack_size`] entries (a group pushes every child it enters, at
-/// most eight at a node and seven left at each node above it, which that
-/// bound covers).
+/// [`Bvh8::stack_size`] entries.
 #[inline(always)]
 pub(super) fn closest8(
     bvh: &Bvh8,
@@ -144,61 +192,20 @@ pub(super) fn closest8(
         u: [0.0; W],
         v: [0.0; W],
         triangle: [u32::MAX; W],
+        redo: 0,
+        farthest: f32::INFINITY,
     };
-    // Lanes the one-ray traversal decides.
-    let mut redo = 0u32;
-    // Subtrees to visit, each with the nearest distance at which a lane
-    // enters its box.
-    let mut depth = 0;
-    let mut at = bvh.root;
-    loop {
-        if at & LEAF == 0 {
-            let node = &bvh.nodes[at as usize];
-            let (entered, nears) = enter(&p, largest(best.t), node);
-            // The entered children, nearest last.
-            let mut order = [(0u32, 0f32); W];
-            let mut count = 0;
-            for c in (0..W).filter(|&c| entered >> c & 1 != 0) {
-                let near = nears[c];
-                let mut i = count;
-                while i > 0 && order[i - 1].1 < near {
-                    order[i] = order[i - 1];
-                    i -= 1;
-                }
-                order[i] = (node.child[c], near);
-                count += 1;
-            }
-            for &item in &order[..count] {
-                stack[depth] = item;
-                depth += 1;
-            }
-        } else {
-            let l = (at & !LEAF) as usize;
-            redo |= leaf(&p, bvh, l, &mut best);
-        }
-        // The next subtree some lane can still find a nearer hit in.
-        let farthest = largest(best.t);
-        loop {
-            if depth == 0 {
-                for j in 0..W {
-                    out[j] = (best.triangle[j] != u32::MAX).then(|| Hit {
-                        t: best.t[j],
-                        u: best.u[j],
-                        v: best.v[j],
-                        triangle: best.triangle[j],
-                    });
-                }
-                if redo != 0 {
-                    one_by_one(bvh, rays, out, redo, stack);
-                }
-                return;
-            }
-            depth -= 1;
-            if stack[depth].1 <= farthest {
-                at = stack[depth].0;
-                break;
-            }
-        }
+    closest(&Group { bvh }, &p, &mut best, stack);
+    for j in 0..W {
+        out[j] = (best.triangle[j] != u32::MAX).then(|| Hit {
+            t: best.t[j],
+            u: best.u[j],
+            v: best.v[j],
+            triangle: best.triangle[j],
+        });
+    }
+    if best.redo != 0 {
+        one_by_one(bvh, rays, out, best.redo, stack);
     }
 }
 

@@ -15,7 +15,7 @@ use super::super::lanes::{Leaf8, Node8, RayData, FAR_STRETCH, W};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::rounding::{t_error_bound, Lanes};
 use crate::ch3_ray_triangle::triangle::Hit;
-use crate::ch3_ray_triangle::wide_build::{self, WideTree};
+use crate::ch3_ray_triangle::wide_build::{self, AnyHit, ClosestHit, Nearest, WideTree};
 
 #[target_feature(enable = "avx2,fma")]
 #[inline]
@@ -300,27 +300,34 @@ impl WideTree<W> for Kernels<'_> {
         let (entered, t_near) = unsafe { enter_avx(&r.sp, node, t_max) };
         (entered, t_near, &node.child)
     }
+}
+
+impl ClosestHit<W> for Kernels<'_> {
+    type Found = Nearest;
 
     #[inline(always)]
-    fn leaf_closest(&self, r: &AvxRay, l: usize, t_max: f32) -> Option<(Hit, usize)> {
+    fn leaf_closest(&self, r: &AvxRay, l: usize, found: &mut Nearest) {
         // SAFETY: as for `enter`.
-        unsafe {
-            let f = front!(&r.sp, &self.bvh.leaves[l], t_max);
+        let leaf_hit = unsafe {
+            let f = front!(&r.sp, &self.bvh.leaves[l], found.t);
             if f.candidates == 0 && f.zeros == 0 {
-                return None;
+                return;
             }
             let (t, inv_det, hit, check) = trust!(&f);
-            let found = (hit != 0).then(|| nearest(t, inv_det, &f, hit));
+            let best = (hit != 0).then(|| nearest(t, inv_det, &f, hit));
             match check {
-                0 => found,
+                0 => best,
                 // The rare lanes, by the one-triangle test.
                 _ => self
                     .bvh
-                    .leaf_checked(&RayData::new(r.ray), l, check, t_max, found),
+                    .leaf_checked(&RayData::new(r.ray), l, check, found.t, best),
             }
-        }
+        };
+        found.keep(leaf_hit, |lane| self.bvh.original[l * W + lane]);
     }
+}
 
+impl AnyHit<W> for Kernels<'_> {
     #[inline(always)]
     fn leaf_any(&self, r: &AvxRay, l: usize, t_max: f32) -> bool {
         // SAFETY: as for `enter`.
@@ -336,11 +343,6 @@ impl WideTree<W> for Kernels<'_> {
                         .bvh
                         .leaf_any_checked(&RayData::new(r.ray), l, check, t_max))
         }
-    }
-
-    #[inline(always)]
-    fn original(&self, l: usize, lane: usize) -> u32 {
-        self.bvh.original[l * W + lane]
     }
 }
 
@@ -369,7 +371,9 @@ macro_rules! traversals {
                 sp: splat!(&RayData::new(ray)),
                 ray,
             };
-            *out = wide_build::closest(&Kernels { bvh }, &r, t_max, stack);
+            let mut found = Nearest::new(t_max);
+            wide_build::closest(&Kernels { bvh }, &r, &mut found, stack);
+            *out = found.hit;
         }
 
         /// [`Bvh8::occluded_with`] with these kernels.
