@@ -208,15 +208,25 @@ fn an_interrupted_banded_run_leaves_no_file() {
         ])
         .arg(&out)
         .stdout(std::process::Stdio::null())
+        .stderr(std::fs::File::create(dir.join("stderr")).unwrap())
         .spawn()
         .unwrap();
     // The streamed files exist as temporaries from the first band on.
     let started = std::time::Instant::now();
     let streaming = || std::fs::read_dir(&out).is_ok_and(|d| d.count() > 0);
-    while !streaming() && started.elapsed().as_secs() < 60 {
+    while !streaming() && started.elapsed().as_secs() < 120 {
+        // A run that ended before writing anything says why.
+        if let Some(status) = child.try_wait().unwrap() {
+            let stderr = std::fs::read_to_string(dir.join("stderr")).unwrap_or_default();
+            panic!("ch3 ended ({status:?}) before writing a file:\n{stderr}");
+        }
         std::thread::sleep(std::time::Duration::from_millis(20));
     }
-    assert!(streaming(), "no file appeared in {out:?}");
+    assert!(
+        streaming(),
+        "no file appeared in {out:?} in {:?}",
+        started.elapsed()
+    );
     let kill = Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status()
