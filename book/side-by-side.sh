@@ -41,7 +41,8 @@ run() {
 
 # The Cornell box: the default roulette, Mitsuba's (from the fifth
 # scattering), and the portable lane loops (what an aarch64 laptop runs);
-# then the glass-ball box, where the fast engine runs the lesson's loop.
+# then the glass-ball box, where the glass ball's vertices run the
+# lesson's steps inside the wavefront.
 run "$out/sbs-cornell.txt" PEER_SCENE=cornell --
 run "$out/sbs-cornell-rr5.txt" PEER_SCENE=cornell -- --rr-after 5
 run "$out/sbs-cornell-portable.txt" PEER_SCENE=cornell RAYSTEP_SIMD=portable --

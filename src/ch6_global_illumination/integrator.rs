@@ -230,6 +230,21 @@ impl Path {
         }
     }
 
+    /// How its vertices choose the next direction.
+    pub fn strategy(&self) -> Strategy {
+        self.strategy
+    }
+
+    /// Whether its vertices sample lights.
+    pub fn samples_lights(&self) -> bool {
+        self.samples_lights
+    }
+
+    /// What refraction took out of β or put into it (see the field).
+    pub fn eta_scale(&self) -> f32 {
+        self.eta_scale
+    }
+
     /// Whether light sampling could have found what the current ray finds.
     fn weighs_emission(&self) -> bool {
         self.samples_lights && !self.from_delta
@@ -237,7 +252,7 @@ impl Path {
 
     /// Goes on from `v` (where light of bounce count `k` scattered) along
     /// `step`.
-    fn scatter(&mut self, v: &Vertex, k: u32, step: &Step) {
+    pub fn scatter(&mut self, v: &Vertex, k: u32, step: &Step) {
         self.beta *= step.weight;
         if let Bsdf::Dielectric(_) = v.bsdf {
             // Glass's weight is the radiance scaling alone (1 for

@@ -10,15 +10,17 @@
 //! and triangle tests run over eight lanes at once, compiled for the
 //! widest vector instructions the CPU has ([`simd`]). Both compute each
 //! lane with the same arithmetic in the same order, so they find the same
-//! hits. And the path loop: on diffuse scenes with MIS (the benchmark's)
-//! the fast engine extends thousands of paths a bounce at a time and
-//! shades their hits eight at once ([`wave`], [`shade8`]), with the
+//! hits. And the path loop: on triangle scenes the fast engine extends
+//! thousands of paths a bounce at a time ([`wave`]). It shades diffuse
+//! hits with MIS (the benchmark's) eight at once ([`shade8`]), with the
 //! lesson's formulas and the lesson's random numbers, so it follows the
 //! same paths as the lesson's
 //! [`trace_path`](crate::ch6_global_illumination::integrator::trace_path) to the last bits of a
-//! sine; elsewhere it runs `trace_path` itself over the eight-wide tree
-//! and makes the readable engine's images byte for byte. A test checks
-//! both, and that the fast engine makes the same bytes on every SIMD path.
+//! sine; every other vertex runs `trace_path`'s own steps ([`step`]), bit
+//! for bit. Scenes with SDFs run `trace_path` itself over the eight-wide
+//! tree and make the readable engine's images byte for byte. A test
+//! checks both, and that the fast engine makes the same bytes on every
+//! SIMD path.
 //!
 //! Scenes with SDFs are marched as chapter 4 teaches either way; only
 //! their triangles go through the eight-wide tree.
@@ -48,6 +50,7 @@ pub mod shade8;
 pub mod simd;
 pub mod sobol8;
 pub mod starts;
+pub mod step;
 pub mod wave;
 
 use std::sync::Arc;
@@ -105,10 +108,9 @@ impl FastEngine {
         self.tree.as_deref()
     }
 
-    /// The tree, if the wavefront loop traces `settings`' paths here.
-    fn wave_tree(&self, settings: &PathSettings) -> Option<&Bvh8> {
-        self.tree()
-            .filter(|_| wave::supports(&self.world, settings))
+    /// The tree, if the wavefront loop traces this scene's paths.
+    fn wave_tree(&self) -> Option<&Bvh8> {
+        self.tree().filter(|_| wave::supports(&self.world))
     }
 }
 
@@ -118,27 +120,29 @@ impl PathEngine for FastEngine {
     }
 
     fn trace_row(&self, pass: &PassSpec, row: RowSums<'_>, stats: &mut PathStats) {
-        match self.wave_tree(pass.settings) {
+        match self.wave_tree() {
             Some(tree) => wave_row(&self.world, tree, pass, row, stats),
             None => trace_row(&self.world, pass, row, stats),
         }
     }
 
     fn notes(&self, settings: &PathSettings) -> (Vec<String>, Vec<String>) {
-        match (self.tree(), self.wave_tree(settings)) {
+        let lanes = match wave::lanes_shade(&self.world, settings) {
+            true => "diffuse hits shaded eight at once, the others by the lesson's steps",
+            false => "every hit shaded by the lesson's steps, one path at a time",
+        };
+        match (self.tree(), self.wave_tree()) {
             (_, Some(_)) => (
-                vec![
-                    "the fast engine's wavefront loop: paths extended a bounce at a time, eight \
-                     hits shaded at once"
-                        .into(),
-                ],
+                vec![format!(
+                    "the fast engine's wavefront loop: paths extended a bounce at a time, {lanes}"
+                )],
                 Vec::new(),
             ),
             (Some(_), None) => (
                 Vec::new(),
                 vec![
-                    "the wavefront loop: it covers diffuse surfaces with MIS, area lights \
-                     sampled by area and no SDFs; the lesson's path loop runs instead"
+                    "the wavefront loop: it covers scenes without SDFs; the lesson's path loop \
+                     runs instead"
                         .into(),
                 ],
             ),

@@ -24,10 +24,16 @@
 //! units in the last place per path, not byte for byte; tests check that
 //! and the statistics against the stored references.
 //!
-//! It covers what the benchmark scenes are made of: diffuse (Lambertian)
-//! surfaces, with MIS, no SDFs and at least one light (area lights are
-//! sampled in the lanes, other kinds by the lesson's code, one lane at a
-//! time); anything else goes to the lesson's loop ([`supports`]).
+//! It covers every triangle scene (the tree holds every surface; a scene
+//! with SDFs goes to the lesson's loop, [`supports`]). The lanes shade
+//! what the benchmark scenes are made of: diffuse (Lambertian) vertices
+//! with MIS (area lights sampled in the lanes, other kinds by the lesson's
+//! code, one lane at a time). Every other vertex (glass, a mirror, a
+//! glossy or retro-reflective surface, a path whose throughput went
+//! through glass, an estimator other than MIS, a light sampled by solid
+//! angle) runs the lesson's own steps, one path at a time
+//! ([`lesson_vertex`](super::step::lesson_vertex)): there a path's numbers
+//! are the lesson's to the bit.
 
 use glam::{Vec2, Vec3};
 
@@ -51,16 +57,23 @@ use super::gather8::{gather, numbers, Lane};
 use super::lanes::W;
 use super::level::Level;
 use super::shade8::{dim, In8, Out8};
+use super::step::{finish, lesson_vertex, Round};
 
-/// Whether the wavefront loop renders `world` with `settings` exactly as
-/// the lesson's loop would (in distribution): MIS, diffuse surfaces, at
-/// least one light, area lights sampled by area, no SDFs.
-pub fn supports(world: &World, settings: &PathSettings) -> bool {
+/// Whether the wavefront loop renders `world` as the lesson's loop would
+/// (in distribution): a scene without SDFs, whose surfaces the tree holds.
+pub fn supports(world: &World) -> bool {
+    world.sdfs.is_empty()
+}
+
+/// Whether the lanes shade the diffuse vertices of `world` with
+/// `settings`: the paths use MIS, and the scene has lights, each one the
+/// lanes sample (area lights by area; other kinds by the lesson's code).
+/// Otherwise every vertex runs the lesson's steps.
+pub fn lanes_shade(world: &World, settings: &PathSettings) -> bool {
+    let lights = &world.lights.lights;
     settings.strategy == Strategy::Mis
-        && world.sdfs.is_empty()
-        && !world.lights.lights.is_empty()
-        && world.bsdfs.iter().all(|b| matches!(b, Bsdf::Lambertian(_)))
-        && world.lights.lights.iter().all(|l| match l {
+        && !lights.is_empty()
+        && lights.iter().all(|l| match l {
             Light::Area(a) => a.sampling == LightSampling::Area,
             _ => true,
         })
@@ -116,19 +129,6 @@ impl Queues {
     }
 }
 
-/// One round: the bounce count k of the light its vertices scatter, and
-/// what the settings say about it.
-#[derive(Clone, Copy)]
-struct Round {
-    k: u32,
-    /// Whether Russian roulette plays at its vertices.
-    roulette: bool,
-    /// Whether its paths end at the bounce limit instead (and whether
-    /// those count as cut, without `--max-bounces`).
-    over_limit: bool,
-    count_cut: bool,
-}
-
 /// Traces one path per (camera ray, sampler) of `starts`, adding path i's
 /// light to `outs[i]` (which must hold one entry per start): one sum, or
 /// one per bounce layer. Each round extends every live path by one
@@ -151,7 +151,7 @@ pub fn trace_paths<C: Contributions>(
         })
         .collect();
     stats.paths += lanes.len() as u64;
-    let mut shade = Shade::new(world, tree.level());
+    let mut shade = Shade::new(world, tree.level(), settings);
     let mut q = Queues::new(lanes.len());
     let mut k = 0u32;
     while !q.live.is_empty() {
@@ -198,7 +198,7 @@ fn shade_hits<C: Contributions>(
     q.leaving.shadows.light.clear();
     q.leaving.next.clear();
     for (&i, hit) in q.live.iter().zip(&q.found) {
-        let lane = &lanes[i as usize];
+        let lane = &mut lanes[i as usize];
         let mut out = PathOut {
             layers: &mut outs[lane.out as usize],
             stats,
@@ -216,6 +216,12 @@ fn shade_hits<C: Contributions>(
         out.add_emitted(&lane.path, &it, emitted);
         if round.over_limit {
             out.stats.cut += u64::from(round.count_cut);
+            continue;
+        }
+        if !shade.in_lanes(&it, &lane.path) {
+            if lesson_vertex(world, lane, &it, round, &mut out) {
+                q.leaving.next.push(i);
+            }
             continue;
         }
         shade.ids.push(i);
@@ -267,6 +273,10 @@ struct Shade<'a> {
     choose: bool,
     /// Which materials emit.
     emissive: Vec<bool>,
+    /// Which materials the lanes shade: diffuse ones, where the paths use
+    /// MIS and every light is one the lanes sample (none where they do
+    /// not).
+    lanes: Vec<bool>,
     /// The hits of up to eight paths waiting to be shaded together.
     ids: Vec<u32>,
     its: Vec<Interaction>,
@@ -278,8 +288,15 @@ const WANTED: u8 =
     1 << dim::LIGHT[0] | 1 << dim::LIGHT[1] | 1 << dim::DIRECTION[0] | 1 << dim::DIRECTION[1];
 
 impl<'a> Shade<'a> {
-    fn new(world: &'a World, level: Level) -> Shade<'a> {
+    fn new(world: &'a World, level: Level, settings: &PathSettings) -> Shade<'a> {
+        let mis = lanes_shade(world, settings);
+        let lanes = world
+            .materials
+            .iter()
+            .enumerate()
+            .map(|(m, _)| mis && matches!(world.bsdfs[m], Bsdf::Lambertian(_)));
         Shade {
+            lanes: lanes.collect(),
             world,
             level,
             input: Box::default(),
@@ -289,6 +306,13 @@ impl<'a> Shade<'a> {
             ids: Vec::with_capacity(W),
             its: Vec::with_capacity(W),
         }
+    }
+
+    /// Whether the lanes shade the vertex at `it` of `path`: a diffuse
+    /// one (see [`Shade::lanes`]) on a path whose throughput holds no
+    /// refraction's scaling (the lanes' roulette reads β alone).
+    fn in_lanes(&self, it: &Interaction, path: &Path) -> bool {
+        self.lanes[it.material] && path.eta_scale() == 1.0
     }
 
     /// Shades the waiting lanes `ids` (up to eight) at their hits `its`
@@ -364,24 +388,6 @@ impl<'a> Shade<'a> {
         ids.clear();
         its.clear();
     }
-}
-
-/// Writes lane `j`'s path back: `false` where it ends (then what was
-/// written is never read).
-fn finish(lane: &mut Lane, it: &Interaction, k: u32, o: &Out8, j: usize) -> bool {
-    let v3 = |a: &[[f32; W]; 3]| Vec3::new(a[0][j], a[1][j], a[2][j]);
-    let path = &mut lane.path;
-    path.beta = v3(&o.beta);
-    path.k = Some(k);
-    path.from_delta = false;
-    path.from_pdf = o.pdf[j];
-    path.from_p = it.p;
-    path.from_n = v3(&o.n_side);
-    lane.ray = Ray {
-        origin: v3(&o.next_o),
-        dir: v3(&o.next_d),
-    };
-    o.valid[j] & o.step[j] & o.survives[j] & o.next_ok[j]
 }
 
 /// What `World::intersect` makes of a hit the tree found (a scene without

@@ -54,11 +54,13 @@ fn a_scene_without_a_reference_at_its_size_gets_the_command_that_makes_one() {
     );
     assert_eq!(row(&text, "fast sobol")[4], "-", "{text}");
     assert!(text.contains("No RMSE per pixel"), "{text}");
-    // Glass is not on the wavefront (yet): the note says so.
+    // Glass is on the wavefront, its vertices by the lesson's steps: the
+    // note says so.
     assert!(
-        text.contains("The fast engine on cornell-glassball leaves out the wavefront loop"),
+        text.contains("The fast engine on cornell-glassball uses the fast engine's wavefront loop"),
         "{text}"
     );
+    assert!(text.contains("the others by the lesson's steps"), "{text}");
     let command = format!(
         "--make-reference --scene {} --width 32 --height 32 --spp 16384",
         scene.source
