@@ -866,19 +866,22 @@ fn the_appendix_statements_match_the_benchmarks() {
         }
     }
     assert!(
-        glass_text.contains("leaves out the wavefront loop"),
+        glass_text.contains("diffuse hits shaded eight at once, the others by the lesson's steps"),
         "{glass_text}"
     );
     says(
         "making-it-fast.md",
-        "fast engine runs `trace_path`, so it gains only what its tree gains",
+        "lanes shade the walls and the lesson's steps the glass",
     );
     let glass_gain = paths(on_glass("fast independent")) / paths(on_glass("readable independent"));
     let box_gain = paths(get("fast independent")) / paths(get("readable independent"));
-    assert!(glass_gain < 0.5 * box_gain, "{glass_gain} {box_gain}");
+    assert!(
+        (1.7..2.5).contains(&glass_gain) && glass_gain > 0.6 * box_gain && glass_gain < box_gain,
+        "{glass_gain} {box_gain}"
+    );
     says(
         "making-it-fast.md",
-        "far less than on the diffuse Cornell box",
+        "runs about twice the readable engine's paths per second, most of its",
     );
 }
 
@@ -1187,9 +1190,9 @@ fn the_comparison_with_mitsuba_says_what_its_tables_show() {
     let share = time(&cornell, sobol) / time(&portable, sobol);
     assert!((0.5..0.62).contains(&share), "{share}");
 
-    assert!(glass.throughput < 1.0 && glass.efficiency < 1.0);
-    let close = time(&glass, sobol) / time(&glass, "raystep-readable_sobol");
-    assert!(close > 0.75, "{close}");
+    assert!(glass.throughput > 1.0 && glass.efficiency > 1.0);
+    let share = time(&glass, sobol) / time(&glass, "raystep-readable_sobol");
+    assert!(share < 0.5, "{share}");
     for (ours, theirs) in [
         (
             "raystep-fast_independent",
@@ -1208,7 +1211,8 @@ fn the_comparison_with_mitsuba_says_what_its_tables_show() {
         "closer to multijitter's, and its lead in speed shrinks",
         "There raystep is about as fast as Mitsuba's compiled code and less",
         "with the vector kernels",
-        "are close to the readable engine's. raystep is behind on both ratios here.",
+        "raystep is ahead on both ratios here, and its fast engine takes",
+        "less than half the readable engine's time",
         "numbers the RMSE columns agree",
     ] {
         says(page, phrase);
