@@ -5,8 +5,8 @@
 //! (`enter`), and each triangle once with one ray per lane, where the
 //! one-ray `Bvh8::closest_with` does both eight times, and makes its
 //! branches once. The traversal is the one closest-hit query
-//! (`wide_build::closest`), with the group as its ray: [`Group`] gives it
-//! the group's tests, and [`Best`] the eight nearest hits so far, its
+//! (`wide_build::closest`), with the group as its ray: `Group` gives it
+//! the group's tests, and `Best` the eight nearest hits so far, its
 //! reach the farthest of them.
 //!
 //! The box test opens every box some ray of the eight enters. At the

@@ -1,7 +1,7 @@
 //! A path's step past a vertex, outside the lanes of [`super::wave`]:
-//! what the lanes computed, written back to the path ([`finish`]), and the
+//! what the lanes computed, written back to the path (`finish`), and the
 //! lesson's own steps for a vertex the lanes do not shade
-//! ([`lesson_vertex`]).
+//! (`lesson_vertex`).
 
 use glam::{Vec2, Vec3};
 

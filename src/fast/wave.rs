@@ -32,8 +32,8 @@
 //! glossy or retro-reflective surface, a path whose throughput went
 //! through glass, an estimator other than MIS, a light sampled by solid
 //! angle) runs the lesson's own steps, one path at a time
-//! ([`lesson_vertex`](super::step::lesson_vertex)): there a path's numbers
-//! are the lesson's to the bit.
+//! (`lesson_vertex`): there a path's numbers are the lesson's to the
+//! bit.
 
 use glam::{Vec2, Vec3};
 
