@@ -43,8 +43,9 @@ enum SamplerArg {
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 enum EngineArg {
-    /// The eight-wide BVH with SIMD chosen at run time, and on diffuse
-    /// scenes with MIS a wavefront path loop shading eight hits at once.
+    /// The eight-wide BVH with SIMD chosen at run time, and on triangle
+    /// scenes a wavefront path loop (diffuse hits with MIS shaded eight at
+    /// once).
     Fast,
     /// The lesson's four-wide BVH and path loop.
     Readable,
@@ -65,8 +66,8 @@ struct Cli {
     #[arg(long, value_enum, default_value = "sobol")]
     sampler: SamplerArg,
     /// How area lights are sampled: a point by area, or a direction by the
-    /// solid angle the light covers (the lesson's path loop then runs
-    /// instead of the wavefront).
+    /// solid angle the light covers (the fast engine's lanes then leave
+    /// every hit to the lesson's steps).
     #[arg(long, value_enum, default_value = "area")]
     light_sampling: LightSampling,
     /// Largest bounce count k (k + 1 scatterings); paths end there.

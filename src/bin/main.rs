@@ -59,7 +59,7 @@ struct Cli {
     graphics: String,
     /// Which engine traces chapter 6's paths in the UI and with
     /// `--chapter`/`--report`: `fast` (an eight-wide BVH with SIMD chosen at
-    /// run time, and a wavefront path loop on diffuse scenes) or `readable`
+    /// run time, and a wavefront path loop on triangle scenes) or `readable`
     /// (the lesson's code); both trace the same paths, to the last bits of a
     /// sine.
     #[arg(long, value_name = "ENGINE", default_value = "fast", value_parser = ["fast", "readable"])]

@@ -86,7 +86,7 @@ pub(super) fn gather(
         let lane = &lanes[ids[jj] as usize];
         let it = &hits[jj];
         let Bsdf::Lambertian(b) = &world.bsdfs[it.material] else {
-            unreachable!("the wavefront loop only runs on diffuse scenes");
+            unreachable!("the lanes shade only diffuse vertices (Shade::in_lanes)");
         };
         for a in 0..3 {
             x.d[a][j] = lane.ray.dir[a];
