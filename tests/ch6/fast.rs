@@ -79,6 +79,8 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
             (Strategy::Mis, SamplerKind::Sobol),
             (Strategy::Mis, SamplerKind::Independent),
             (Strategy::Bsdf, SamplerKind::Independent),
+            (Strategy::Light, SamplerKind::Sobol),
+            (Strategy::Uniform, SamplerKind::Independent),
         ] {
             let path = PathSettings {
                 strategy,
@@ -135,7 +137,7 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
             }
         }
     }
-    assert_eq!(compared, scenes.len() * 3 * levels.len());
+    assert_eq!(compared, scenes.len() * 5 * levels.len());
     // The built-in box and the bunny at least go through the waves, with
     // both samplers.
     assert!(in_waves >= 4, "{in_waves}");
