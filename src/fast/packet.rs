@@ -130,7 +130,8 @@ struct Best {
     triangle: [u32; W],
     redo: u32,
     /// The farthest of the lanes' `t`: a box that starts beyond it holds
-    /// no nearer hit for any lane.
+    /// no nearer hit for any lane. (Updated at each leaf, since the
+    /// traversal reads it twice at every node.)
     farthest: f32,
 }
 

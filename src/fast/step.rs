@@ -15,21 +15,9 @@ use super::gather8::Lane;
 use super::lanes::W;
 use super::shade8::{dim, Out8};
 
-/// One round: the bounce count k of the light its vertices scatter, and
-/// what the settings say about it.
-#[derive(Clone, Copy)]
-pub(super) struct Round {
-    pub(super) k: u32,
-    /// Whether Russian roulette plays at its vertices.
-    pub(super) roulette: bool,
-    /// Whether its paths end at the bounce limit instead (and whether
-    /// those count as cut, without `--max-bounces`).
-    pub(super) over_limit: bool,
-    pub(super) count_cut: bool,
-}
-
-/// A vertex the lanes do not shade: steps 2 to 4 of the lesson's
-/// `trace_path` (direct light, the next direction, roulette), with the
+/// A vertex the lanes do not shade, where light of bounce count `k`
+/// scatters: steps 2 to 4 of the lesson's `trace_path` (direct light, the
+/// next direction, and roulette where `roulette` says it plays), with the
 /// lesson's functions and this vertex's numbers, the ones `trace_path`
 /// draws there. Returns whether the path goes on (then `lane.ray` is its
 /// next ray).
@@ -37,13 +25,14 @@ pub(super) fn lesson_vertex<C: Contributions>(
     world: &World,
     lane: &mut Lane,
     it: &Interaction,
-    round: Round,
+    k: u32,
+    roulette: bool,
     out: &mut PathOut<'_, C>,
 ) -> bool {
     let Some(v) = Vertex::at(world, it, -lane.ray.dir) else {
         return false; // a ray exactly in the surface's plane
     };
-    let (k, path) = (round.k, &mut lane.path);
+    let path = &mut lane.path;
     let u = lane.sampler.eight_at(4 + 8 * u64::from(k));
     let u2 = |[a, b]: [usize; 2]| Vec2::new(u[a], u[b]);
     if path.samples_lights() && !v.delta {
@@ -54,7 +43,7 @@ pub(super) fn lesson_vertex<C: Contributions>(
         return false;
     };
     path.scatter(&v, k, &step);
-    if round.roulette {
+    if roulette {
         let q = (path.beta * path.eta_scale()).max_element().min(1.0);
         if u[dim::ROULETTE] >= q {
             return false;

@@ -57,7 +57,7 @@ use super::gather8::{gather, numbers, Lane};
 use super::lanes::W;
 use super::level::Level;
 use super::shade8::{dim, In8, Out8};
-use super::step::{finish, lesson_vertex, Round};
+use super::step::{finish, lesson_vertex};
 
 /// Whether the wavefront loop renders `world` as the lesson's loop would
 /// (in distribution): a scene without SDFs, whose surfaces the tree holds.
@@ -127,6 +127,19 @@ impl Queues {
             blocked: Vec::with_capacity(n),
         }
     }
+}
+
+/// One round: the bounce count k of the light its vertices scatter, and
+/// what the settings say about it.
+#[derive(Clone, Copy)]
+struct Round {
+    k: u32,
+    /// Whether Russian roulette plays at its vertices.
+    roulette: bool,
+    /// Whether its paths end at the bounce limit instead (and whether
+    /// those count as cut, without `--max-bounces`).
+    over_limit: bool,
+    count_cut: bool,
 }
 
 /// Traces one path per (camera ray, sampler) of `starts`, adding path i's
@@ -219,7 +232,7 @@ fn shade_hits<C: Contributions>(
             continue;
         }
         if !shade.in_lanes(&it, &lane.path) {
-            if lesson_vertex(world, lane, &it, round, &mut out) {
+            if lesson_vertex(world, lane, &it, round.k, round.roulette, &mut out) {
                 q.leaving.next.push(i);
             }
             continue;
@@ -289,12 +302,11 @@ const WANTED: u8 =
 
 impl<'a> Shade<'a> {
     fn new(world: &'a World, level: Level, settings: &PathSettings) -> Shade<'a> {
-        let mis = lanes_shade(world, settings);
+        let shade_diffuse = lanes_shade(world, settings);
         let lanes = world
-            .materials
+            .bsdfs
             .iter()
-            .enumerate()
-            .map(|(m, _)| mis && matches!(world.bsdfs[m], Bsdf::Lambertian(_)));
+            .map(|b| shade_diffuse && matches!(b, Bsdf::Lambertian(_)));
         Shade {
             lanes: lanes.collect(),
             world,
