@@ -140,6 +140,12 @@ fn chapter_5_does_not_depend_on_unit_or_place() {
 fn chapter_6_does_not_depend_on_unit_or_place() {
     check(5, cornell());
     check(5, sdf_lit());
+    // Glass among diffuse walls: the fast engine's lanes and the lesson's
+    // steps in the same round.
+    check(
+        5,
+        crate::common::shipped_scene("cornell-glassball", SIZE, SIZE),
+    );
 }
 
 /// The bunny, which round 4 found off by 0.3% from +1e3 on: chapter 6 at
