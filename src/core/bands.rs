@@ -98,24 +98,10 @@ impl ChapterInfo {
     }
 }
 
-/// [`rows_per_band`] with the memory this process may still get, less
-/// what its render threads may still reserve ([`ARENA_BYTES`] each).
+/// [`rows_per_band`] with the memory this process may still get.
 pub fn plan(info: &ChapterInfo, scene: &Scene) -> Option<u32> {
-    let threads = rayon::current_num_threads() as u64;
-    let room = available().map(|(bytes, _)| bytes);
-    rows_per_band(
-        info,
-        scene,
-        room.map(|r| r.saturating_sub(threads.saturating_mul(ARENA_BYTES))),
-    )
+    rows_per_band(info, scene, available().map(|(bytes, _)| bytes))
 }
-
-/// Address space the allocator reserves for a thread when it first
-/// allocates (glibc's per-thread arena: up to 64 MiB). The render's
-/// threads may do so after the plan reads what is left: a band sized to
-/// fill all of it would then be refused by its own memory check
-/// ([`ChapterInfo::check_memory_rows`]), which reads it again.
-pub const ARENA_BYTES: u64 = 64 << 20;
 
 /// What a banded run made: its files (in the order a whole run lists
 /// them), its seconds, its report and the main image reduced for a
