@@ -23,34 +23,57 @@ pub fn offset_coordinate(p: f32, n: f32) -> f32 {
 }
 
 /// `x as i32`: x rounded towards zero, saturated to the `i32` range,
-/// NaN giving 0. Written with integer steps on the bits (exponent and
-/// mantissa, two shifts, selects), because the compiler turns Rust's
-/// saturating cast into one scalar conversion per lane, and these steps
-/// into vector instructions. A test checks it against `as i32`.
+/// NaN giving 0. Written with float arithmetic that is exact for every
+/// input, because the compiler turns Rust's saturating cast into one
+/// scalar conversion per lane, and these steps into vector instructions
+/// on every target (no per-lane shift, which the x86-64 baseline lacks).
+/// A test checks it against `as i32`.
 #[inline(always)]
 pub fn truncate(x: f32) -> i32 {
-    let bits = x.to_bits();
-    let exponent = ((bits >> 23) & 0xff) as i32 - 127;
-    let mantissa = (bits & 0x7f_ffff) | 0x80_0000;
-    // |x| = mantissa · 2^(exponent - 23); below 1 the right shift of 31
-    // leaves nothing.
-    let right = (23 - exponent).clamp(0, 31) as u32;
-    let left = (exponent - 23).clamp(0, 7) as u32;
-    let magnitude = ((mantissa >> right) << left) as i32;
-    let negative = (bits >> 31) != 0;
+    let a = x.abs();
+    // Below 2^31 the integer part of |x| is hi 2^16 + lo with hi and lo
+    // below 2^16, each found exactly: a scaling by a power of two, a
+    // floor, and a difference whose exact value is a float.
+    let hi = floor_small(a * (1.0 / 65536.0));
+    let lo = floor_small(a - hi * 65536.0);
+    let magnitude = (small_int(hi) << 16 | small_int(lo)) as i32;
+    let negative = (x.to_bits() >> 31) != 0;
     let value = if negative {
         magnitude.wrapping_neg()
     } else {
         magnitude
     };
     let saturated = if negative { i32::MIN } else { i32::MAX };
-    let nan = exponent == 128 && (bits & 0x7f_ffff) != 0;
-    let out = if exponent >= 31 { saturated } else { value };
-    if nan {
+    let out = if a >= 2_147_483_648.0 {
+        saturated
+    } else {
+        value
+    };
+    if a.is_nan() {
         0
     } else {
         out
     }
+}
+
+/// ⌊y⌋ for 0 ≤ y < 2^23: y + 2^23 rounds y to the nearest integer (ties
+/// to even) exactly, and one less where that went up.
+#[inline(always)]
+fn floor_small(y: f32) -> f32 {
+    const TWO_23: f32 = 8_388_608.0;
+    let r = (y + TWO_23) - TWO_23;
+    if r > y {
+        r - 1.0
+    } else {
+        r
+    }
+}
+
+/// An integer-valued float below 2^23 as an integer: its mantissa bits
+/// once 2^23 is added (exact).
+#[inline(always)]
+fn small_int(v: f32) -> u32 {
+    (v + 8_388_608.0).to_bits().wrapping_sub(0x4b00_0000)
 }
 
 /// Chapter 3's [`stop_distance`](crate::ch3_ray_triangle::spawn::stop_distance),
