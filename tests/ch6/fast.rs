@@ -346,6 +346,18 @@ fn the_lanes_truncation_is_rusts_cast() {
         f32::from_bits(0x7f80_0001),
         f32::MIN_POSITIVE,
         1e-45,
+        // Where the integer part's two halves meet, and where floors by
+        // adding 2^23 round up.
+        65_535.996,
+        65_536.0,
+        -65_536.5,
+        131_071.99,
+        0.499_999_97,
+        1.5,
+        -2.5,
+        4_194_303.5,
+        8_388_607.0,
+        1_073_741_823.9,
     ];
     // Every 4099th bit pattern (both signs, every exponent), and the specials.
     let strided = (0..=u32::MAX / 4099).map(|i| f32::from_bits(i * 4099));
