@@ -47,3 +47,20 @@ run "$out/sbs-cornell.txt" PEER_SCENE=cornell --
 run "$out/sbs-cornell-rr5.txt" PEER_SCENE=cornell -- --rr-after 5
 run "$out/sbs-cornell-portable.txt" PEER_SCENE=cornell RAYSTEP_SIMD=portable --
 run "$out/sbs-glass.txt" PEER_SCENE=glass --
+
+# How many samples per pixel each of Mitsuba's samplers draws when the
+# harness asks for 64 (its orthogonal sampler takes the square of a prime),
+# as Mitsuba itself reports it: built as the harness builds it, then given
+# the count as `mi.render(..., spp=64)` gives it.
+py=${PEER_DIR:-target/peer}/.venv/bin/python
+"$py" - > "$out/sbs-samplers.txt.tmp" <<'PY'
+import mitsuba as mi
+mi.set_variant("llvm_ad_rgb")
+mi.set_log_level(mi.LogLevel.Error)
+print("samples per pixel Mitsuba 3 draws when asked for 64")
+for name in ("independent", "multijitter", "orthogonal"):
+    sampler = mi.load_dict({"type": name, "sample_count": 64})
+    sampler.set_sample_count(64)
+    print(f"{name:<12}  {sampler.sample_count()}")
+PY
+mv "$out/sbs-samplers.txt.tmp" "$out/sbs-samplers.txt"
