@@ -15,7 +15,7 @@ use super::level::Level;
 /// pixels `xs` of row `y`, in that order: what chapter 6's `camera_sample`
 /// gives (chapter 3's, which hands the closure this same pixel index), with
 /// the pixel positions of eight Sobol samples drawn at once
-/// ([`sobol_groups8_at`](super::simd::sobol_groups8_at), the same bits). The
+/// ([`sobol_groups8_wanted_at`](super::simd::sobol_groups8_wanted_at), the same bits). The
 /// eight may belong to different pixels: a pass of fewer than eight
 /// samples per pixel (the terminal UI's) is drawn eight at a time too
 /// (`across_pixels`).
@@ -112,7 +112,8 @@ fn eight_starts(
         }
         return;
     };
-    let [g] = super::simd::sobol_groups8_at(level, &sample, &scramble, 0);
+    // Only the first two numbers: the pixel position.
+    let [g] = super::simd::sobol_groups8_wanted_at(level, &sample, &scramble, 0, 0b11);
     for (j, (x, mut sampler)) in xs.into_iter().zip(samplers).enumerate() {
         // `jittered`: the pixel's corner plus the first two numbers.
         let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);

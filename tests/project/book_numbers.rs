@@ -1214,10 +1214,17 @@ fn the_comparison_with_mitsuba_says_what_its_tables_show() {
             (cells[0], cells[1].parse().unwrap())
         })
         .collect();
-    assert_eq!((drawn["independent"], drawn["multijitter"]), (64, 64), "{text}");
+    assert_eq!(
+        (drawn["independent"], drawn["multijitter"]),
+        (64, 64),
+        "{text}"
+    );
     let orthogonal = drawn["orthogonal"];
     assert!(orthogonal > 64, "{text}");
-    says(page, &format!("64 it draws {orthogonal}, as Mitsuba itself reports"));
+    says(
+        page,
+        &format!("64 it draws {orthogonal}, as Mitsuba itself reports"),
+    );
     let cost = |t: &SideBySide, k: &str| rmse(t, k).powi(2) * time(t, k);
     for t in [&cornell, &rr5, &portable, &glass] {
         let o = cost(t, "mitsuba-llvm_ad_rgb-orthogonal");
