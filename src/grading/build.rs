@@ -5,7 +5,9 @@
 //! and builds the student's process, `raystep-grade-child`, from its own
 //! crates: nothing of the student's but the exercise files is built or
 //! run, and a file's date never decides whether it is built again (its
-//! content does). A file that uses what an exercise may not
+//! content does). Each build runs its own link to the binary it made, kept
+//! in that folder: graders that share a target folder (the terminal UI's
+//! student mode and `cargo grade` at once) never run each other's build. A file that uses what an exercise may not
 //! ([`crate::source_rules`]) or that does not compile is replaced
 //! by its shipped stub and reported with the compiler's messages, while
 //! the others are built.
@@ -33,7 +35,8 @@ pub fn exercises_dir() -> PathBuf {
 /// What building the student's process gave.
 #[derive(Debug)]
 pub struct Built {
-    /// The `raystep-grade-child` binary.
+    /// The `raystep-grade-child` binary this build made, kept beside the
+    /// copies of the files it was built from (no later build replaces it).
     pub runner: PathBuf,
     /// Exercises left out (their shipped stub built instead), with why:
     /// the compiler's messages, or what the file may not use.
@@ -66,7 +69,8 @@ impl Place {
         })
     }
 
-    /// The `raystep-grade-child` binary a build here makes.
+    /// The `raystep-grade-child` binary a build here makes (the next build
+    /// replaces it: a grader runs its own link, [`Built::runner`]).
     pub fn runner(&self) -> PathBuf {
         let profile = if self.release { "release" } else { "debug" };
         self.target.join(profile).join(format!(
@@ -195,6 +199,84 @@ fn write_sources(root: &Path, files: &[(Stub, String)]) -> Result<PathBuf, Strin
     }
 }
 
+/// An exclusive lock on a target folder's grader builds (a file lock, so
+/// it holds between processes, and the system releases it if the process
+/// dies); released when dropped.
+struct BuildLock {
+    _file: std::fs::File,
+}
+
+impl BuildLock {
+    /// Waits for the lock of `sources` (or until `cancel` is set).
+    fn take(sources: &Path, cancel: Option<&AtomicBool>) -> Result<BuildLock, String> {
+        let io = |e: std::io::Error| format!("cannot lock {}: {e}", sources.display());
+        std::fs::create_dir_all(sources).map_err(io)?;
+        let file = std::fs::File::options()
+            .create(true)
+            .truncate(false)
+            .write(true)
+            .open(sources.join("build.lock"))
+            .map_err(io)?;
+        loop {
+            match file.try_lock() {
+                Ok(()) => return Ok(BuildLock { _file: file }),
+                Err(std::fs::TryLockError::WouldBlock) => {}
+                Err(std::fs::TryLockError::Error(e)) => return Err(io(e)),
+            }
+            if cancel.is_some_and(|c| c.load(std::sync::atomic::Ordering::Relaxed)) {
+                return Err("the build was cancelled".into());
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+    }
+}
+
+/// This build's binary, kept beside the exercise files it was built from
+/// (`<hash>/raystep-grade-child-<profile>`, a hard link, or a copy where
+/// links fail): later builds replace the file cargo writes, never this one.
+/// Marks it used now, for [`prune_runners`].
+fn keep_runner(place: &Place, modules: &Path) -> Result<PathBuf, String> {
+    let built = place.runner();
+    let folder = modules.parent().ok_or("no folder for the module list")?;
+    let profile = if place.release { "release" } else { "debug" };
+    let suffix = std::env::consts::EXE_SUFFIX;
+    let kept = folder.join(format!("raystep-grade-child-{profile}{suffix}"));
+    let tmp = folder.join(format!("tmp-{}-{profile}{suffix}", std::process::id()));
+    let io = |e: std::io::Error| format!("cannot keep {}: {e}", built.display());
+    let _ = std::fs::remove_file(&tmp);
+    if std::fs::hard_link(&built, &tmp).is_err() {
+        std::fs::copy(&built, &tmp).map_err(io)?;
+    }
+    std::fs::rename(&tmp, &kept).map_err(io)?;
+    std::fs::write(folder.join(format!("used-{profile}")), b"").map_err(io)?;
+    Ok(kept)
+}
+
+/// Removes the kept binaries (see [`keep_runner`]) of builds no grader has
+/// used for a day: a grader that started one has long finished with it.
+fn prune_runners(sources: &Path) {
+    let day = std::time::Duration::from_secs(24 * 3600);
+    let Ok(folders) = std::fs::read_dir(sources) else {
+        return;
+    };
+    for folder in folders.flatten().map(|e| e.path()) {
+        for profile in ["release", "debug"] {
+            let used = folder.join(format!("used-{profile}"));
+            let age = std::fs::metadata(&used)
+                .and_then(|m| m.modified())
+                .ok()
+                .and_then(|t| t.elapsed().ok());
+            if age.is_some_and(|a| a > day) {
+                let suffix = std::env::consts::EXE_SUFFIX;
+                let _ = std::fs::remove_file(
+                    folder.join(format!("raystep-grade-child-{profile}{suffix}")),
+                );
+                let _ = std::fs::remove_file(used);
+            }
+        }
+    }
+}
+
 /// Builds the student's process with the exercise files under `dir` at
 /// `place`; an exercise whose file draws a compiler error is replaced by
 /// its stub and the crate rebuilt. Setting `cancel` stops cargo and
@@ -209,6 +291,11 @@ pub fn build_exercises_in(
         .canonicalize()
         .map_err(|e| format!("{}: {e}", dir.display()))?;
     let sources = place.target.join("raystep-grade");
+    // One grader builds here at a time, from its first build to its own
+    // link to the binary that build made: the binary cargo writes is one
+    // file for every grader of this target folder, and another grader's
+    // build would replace it while this one still starts it.
+    let _building = BuildLock::take(&sources, cancel)?;
     let mut broken: BTreeMap<String, String> = BTreeMap::new();
     for _round in 0..STUBS.len() + 1 {
         let files = texts(&dir, &mut broken);
@@ -236,7 +323,8 @@ pub fn build_exercises_in(
             Err(e) => return Err(format!("cannot run cargo: {e}")),
         };
         if ok {
-            let runner = place.runner();
+            let runner = keep_runner(place, &modules)?;
+            prune_runners(&sources);
             return Ok(Built { runner, broken });
         }
         let copies = sources.display().to_string();

@@ -16,8 +16,8 @@ use raystep::grading::driver::{describe, grade_stream};
 use raystep::grading::exercises::ch1;
 use raystep::grading::{self, write_failure_images, Outcome};
 
-/// One `grade` that builds the exercises crate at a time (they share the
-/// crate's build folder and its `grade-student` binary).
+/// One `grade` that builds the exercises crate at a time (two builds
+/// would wait for each other on the grader's build lock anyway).
 pub(crate) static BUILD: Mutex<()> = Mutex::new(());
 
 /// Runs the `grade` command with `args`; images and hints go to `out`.

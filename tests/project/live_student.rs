@@ -3,13 +3,17 @@
 //! chapter's capstone with the student's code. The shipped stub is "not
 //! started"; a correct solution, written into the exercise file,
 //! matches the reference image; a file that does not compile gives the
-//! compiler's file:line. (The builds share the grader tests' lock and
-//! their build folder: each is one small rebuild of the exercises crate.)
+//! compiler's file:line; and two builds of different files in one
+//! folder each run their own binary. (The builds share the grader tests'
+//! lock and their build folder: each is one small rebuild of the
+//! exercises crate.)
 
 use std::time::Duration;
 
-use raystep::grading::build::Place;
+use raystep::grading::build::{build_exercises_in, Place};
 use raystep::grading::live::{live_student, LiveError, LiveOptions};
+use raystep::grading::process::capstone_images;
+use raystep::grading::runner::capstone;
 
 use super::grading::{copy_exercises, BUILD};
 use crate::common;
@@ -129,4 +133,33 @@ fn live_warp_tests_the_students_cosine_hemisphere() {
         matches!(&err, LiveError::Panicked { message, .. } if message.contains("on purpose")),
         "{err:?}"
     );
+}
+
+/// Two builds of different exercise files in one target folder (the TUI's
+/// student mode and `cargo grade` at once): each gives its own binary, and
+/// the first still runs the first's code after the second was built. (One
+/// binary for both would hand a grader that is still starting it the other
+/// one's exercises.)
+#[test]
+fn a_later_build_never_replaces_an_earlier_builds_binary() {
+    let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
+    let place = Place::current().unwrap();
+    let stubs = copy_exercises(&common::temp_dir("keep-stubs"));
+    let solved = copy_exercises(&common::temp_dir("keep-solved"));
+    let file = "ch1-projection/exercises/draw_edges.rs";
+    std::fs::copy(
+        common::root().join("tests/project/solutions").join(file),
+        solved.join(file),
+    )
+    .unwrap();
+    let first = build_exercises_in(&solved, &place, None).unwrap();
+    let second = build_exercises_in(&stubs, &place, None).unwrap();
+    assert_ne!(first.runner, second.runner);
+    let ex = capstone(1).unwrap();
+    let out = common::temp_dir("keep-out");
+    let limit = Duration::from_secs(60);
+    let (solved_outcome, _) = capstone_images(&first.runner, &ex, &out, limit, None);
+    assert!(solved_outcome.is_pass(), "{solved_outcome:?}");
+    let (stub_outcome, _) = capstone_images(&second.runner, &ex, &out, limit, None);
+    assert!(!stub_outcome.is_pass(), "{stub_outcome:?}");
 }
