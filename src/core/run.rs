@@ -148,10 +148,10 @@ pub fn init_threads(threads: Option<usize>) -> Result<()> {
             .num_threads(n)
             .build_global();
     }
-    // Every worker allocates once now, so the allocator's per-thread
-    // arenas (address space reserved on a thread's first allocation) are
-    // mapped before any memory check reads what is left: the checks then
-    // see the same room however fast the threads started.
+    // Every worker allocates once now (the signal thread does before
+    // `clean_up_on_signals` returns), so the allocator's per-thread arenas
+    // (address space reserved on a first allocation) are mapped before any
+    // memory check reads what is left, however fast the threads started.
     rayon::broadcast(|_| drop(std::hint::black_box(Box::new(0u8))));
     clean_up_on_signals();
     Ok(())
@@ -411,9 +411,8 @@ pub fn run_on(chapter: &dyn Chapter, scene: Scene, common: &CommonArgs) -> Resul
 
 /// From now on SIGINT, SIGTERM and SIGHUP (the terminal closed) let the
 /// file being written finish, remove every temporary file and exit with
-/// 130, 143 or 129, so an interrupted
-/// run leaves no debris and no partial set of outputs. Once per process;
-/// nothing on platforms without signals.
+/// 130, 143 or 129, so an interrupted run leaves no debris and no partial
+/// set of outputs. Once per process; nothing on platforms without signals.
 pub fn clean_up_on_signals() {
     #[cfg(unix)]
     {
@@ -424,11 +423,14 @@ pub fn clean_up_on_signals() {
             else {
                 return;
             };
+            let (ready, started) = std::sync::mpsc::channel();
             std::thread::spawn(move || {
+                let _ = ready.send(Box::new(0u8)); // its arena, mapped now
                 if let Some(signal) = signals.forever().next() {
                     crate::core::film::remove_temporaries_and_exit(128 + signal);
                 }
             });
+            let _ = started.recv();
         });
     }
 }
