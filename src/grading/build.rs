@@ -253,9 +253,11 @@ fn keep_runner(place: &Place, modules: &Path) -> Result<PathBuf, String> {
 }
 
 /// Removes the kept binaries (see [`keep_runner`]) of builds no grader has
-/// used for a day: a grader that started one has long finished with it.
+/// used for an hour: a grading run is done with its binary within minutes
+/// (every build, the TUI's too, marks its binary used again), and a
+/// student who edits often keeps no more than an hour's builds.
 fn prune_runners(sources: &Path) {
-    let day = std::time::Duration::from_secs(24 * 3600);
+    let hour = std::time::Duration::from_secs(3600);
     let Ok(folders) = std::fs::read_dir(sources) else {
         return;
     };
@@ -266,7 +268,7 @@ fn prune_runners(sources: &Path) {
                 .and_then(|m| m.modified())
                 .ok()
                 .and_then(|t| t.elapsed().ok());
-            if age.is_some_and(|a| a > day) {
+            if age.is_some_and(|a| a > hour) {
                 let suffix = std::env::consts::EXE_SUFFIX;
                 let _ = std::fs::remove_file(
                     folder.join(format!("raystep-grade-child-{profile}{suffix}")),

@@ -163,3 +163,35 @@ fn a_later_build_never_replaces_an_earlier_builds_binary() {
     let (stub_outcome, _) = capstone_images(&second.runner, &ex, &out, limit, None);
     assert!(!stub_outcome.is_pass(), "{stub_outcome:?}");
 }
+
+/// A build removes the binaries of builds no grader has used for an hour,
+/// and keeps the ones used since (so a student who edits all term does not
+/// fill the disk with them).
+#[test]
+fn builds_unused_for_an_hour_are_removed() {
+    let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
+    let place = Place::current().unwrap();
+    let folder = |name: &str| place.target.join("raystep-grade").join(name);
+    let profile = if place.release { "release" } else { "debug" };
+    let binary = format!(
+        "raystep-grade-child-{profile}{}",
+        std::env::consts::EXE_SUFFIX
+    );
+    let (old, recent) = (folder("test-unused-2h"), folder("test-used-10min"));
+    for (dir, age) in [(&old, 7200), (&recent, 600)] {
+        std::fs::create_dir_all(dir).unwrap();
+        std::fs::write(dir.join(&binary), b"not a program").unwrap();
+        let used = dir.join(format!("used-{profile}"));
+        std::fs::write(&used, b"").unwrap();
+        let when = std::time::SystemTime::now() - Duration::from_secs(age);
+        let file = std::fs::File::options().write(true).open(&used).unwrap();
+        file.set_modified(when).unwrap();
+    }
+    let stubs = copy_exercises(&common::temp_dir("prune-stubs"));
+    let built = build_exercises_in(&stubs, &place, None).unwrap();
+    assert!(built.runner.is_file());
+    assert!(!old.join(&binary).exists(), "unused for two hours: removed");
+    assert!(recent.join(&binary).is_file(), "used ten minutes ago: kept");
+    let _ = std::fs::remove_dir_all(old);
+    let _ = std::fs::remove_dir_all(recent);
+}
