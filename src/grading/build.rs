@@ -5,7 +5,7 @@
 //! and builds the student's process, `raystep-grade-child`, from its own
 //! crates: nothing of the student's but the exercise files is built or
 //! run, and a file's date never decides whether it is built again (its
-//! content does). Each build runs its own copy of the binary it made, kept
+//! content does). Each build runs its own link to the binary it made, kept
 //! in that folder: graders that share a target folder (the terminal UI's
 //! student mode and `cargo grade` at once) never run each other's build.
 //! A file that uses what an exercise may not ([`crate::source_rules`]) or
@@ -70,7 +70,7 @@ impl Place {
     }
 
     /// The `raystep-grade-child` binary a build here makes (the next build
-    /// replaces it: a grader runs its own copy, [`Built::runner`]).
+    /// replaces it: a grader runs its own link, [`Built::runner`]).
     pub fn runner(&self) -> PathBuf {
         let profile = if self.release { "release" } else { "debug" };
         self.target.join(profile).join(format!(
@@ -231,11 +231,13 @@ impl BuildLock {
     }
 }
 
-/// This build's binary, copied beside the exercise files it was built
-/// from (`<hash>/raystep-grade-child-<profile>`): later builds replace the
-/// file cargo writes, never this one. (A copy, not a hard link: a linker
-/// that wrote its output in place would change every link of it.) Marks
-/// it used now, for [`prune_runners`].
+/// This build's binary, kept beside the exercise files it was built from
+/// (`<hash>/raystep-grade-child-<profile>`): later builds replace the file
+/// cargo writes, never this one. A hard link, so no file is written that a
+/// new child of another thread could hold open when the grader starts it
+/// (the linkers cargo uses write a new file, which the test of two builds
+/// in one folder checks); a copy where links fail. Marks it used now, for
+/// [`prune_runners`].
 fn keep_runner(place: &Place, modules: &Path) -> Result<PathBuf, String> {
     let built = place.runner();
     let folder = modules.parent().ok_or("no folder for the module list")?;
@@ -244,7 +246,10 @@ fn keep_runner(place: &Place, modules: &Path) -> Result<PathBuf, String> {
     let kept = folder.join(format!("raystep-grade-child-{profile}{suffix}"));
     let tmp = folder.join(format!("tmp-{}-{profile}{suffix}", std::process::id()));
     let io = |e: std::io::Error| format!("cannot keep {}: {e}", built.display());
-    std::fs::copy(&built, &tmp).map_err(io)?;
+    let _ = std::fs::remove_file(&tmp);
+    if std::fs::hard_link(&built, &tmp).is_err() {
+        std::fs::copy(&built, &tmp).map_err(io)?;
+    }
     std::fs::rename(&tmp, &kept).map_err(io)?;
     std::fs::write(folder.join(format!("used-{profile}")), b"").map_err(io)?;
     Ok(kept)
@@ -292,7 +297,7 @@ pub fn build_exercises_in(
         .map_err(|e| format!("{}: {e}", dir.display()))?;
     let sources = place.target.join("raystep-grade");
     // One grader builds here at a time, from its first build to its own
-    // copy of the binary that build made: the binary cargo writes is one
+    // link to the binary that build made: the binary cargo writes is one
     // file for every grader of this target folder, and another grader's
     // build would replace it while this one still starts it.
     let _building = BuildLock::take(&sources, cancel)?;

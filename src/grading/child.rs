@@ -186,11 +186,22 @@ pub fn run_limited(
     cancel: Option<&AtomicBool>,
 ) -> std::io::Result<Ran> {
     own_group(cmd);
-    let mut child = cmd
-        .stdin(Stdio::piped())
+    cmd.stdin(Stdio::piped())
         .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()?;
+        .stderr(Stdio::piped());
+    // A program file just written is "busy" while a child another thread
+    // is starting still holds the writer's descriptor: wait it out, as
+    // cargo does for build scripts.
+    let mut busy = 0;
+    let mut child = loop {
+        match cmd.spawn() {
+            Err(e) if e.kind() == std::io::ErrorKind::ExecutableFileBusy && busy < 100 => {
+                busy += 1;
+                std::thread::sleep(Duration::from_millis(10));
+            }
+            spawned => break spawned?,
+        }
+    };
     if let Some(mut stdin) = child.stdin.take() {
         // A child that exits without reading its input is not an error.
         let _ = stdin.write_all(input);
