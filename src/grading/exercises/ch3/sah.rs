@@ -178,7 +178,8 @@ fn drawn_scene(d: &mut Draws) -> (String, Vec<[Vec3; 3]>) {
         6 => {
             // Two to four flat sheets over one square, a hair apart in z.
             let (layers, gap) = (d.count(2, 4), d.decades(-3.0, -2.0));
-            let k = ((n / layers) as f32).sqrt().ceil() as usize;
+            // At least one triangle a sheet, however few were asked for.
+            let k = ((n / layers).max(1) as f32).sqrt().ceil() as usize;
             let p = |i: usize, j: usize, l: usize| {
                 Vec3::new(i as f32 / k as f32, j as f32 / k as f32, l as f32 * gap)
             };
@@ -219,7 +220,10 @@ fn drawn_scene(d: &mut Draws) -> (String, Vec<[Vec3; 3]>) {
 
 /// Rays through the scene's box: from outside it to a point inside.
 fn rays(d: &mut Draws, bvh: &ReadableBvh) -> Vec<Ray> {
-    let b = bvh.nodes[0].bounds;
+    let Some(root) = bvh.nodes.first() else {
+        return Vec::new(); // an empty tree: nothing to aim at
+    };
+    let b = root.bounds;
     let (centre, half) = ((b.min + b.max) * 0.5, (b.max - b.min) * 0.5);
     (0..64)
         .filter_map(|_| {
