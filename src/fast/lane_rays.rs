@@ -56,11 +56,13 @@ pub fn truncate(x: f32) -> i32 {
     }
 }
 
+/// 2^23: the smallest float whose ulp is 1.
+const TWO_23: f32 = 8_388_608.0;
+
 /// ⌊y⌋ for 0 ≤ y < 2^23: y + 2^23 rounds y to the nearest integer (ties
 /// to even) exactly, and one less where that went up.
 #[inline(always)]
 fn floor_small(y: f32) -> f32 {
-    const TWO_23: f32 = 8_388_608.0;
     let r = (y + TWO_23) - TWO_23;
     if r > y {
         r - 1.0
@@ -73,7 +75,7 @@ fn floor_small(y: f32) -> f32 {
 /// once 2^23 is added (exact).
 #[inline(always)]
 fn small_int(v: f32) -> u32 {
-    (v + 8_388_608.0).to_bits().wrapping_sub(0x4b00_0000)
+    (v + TWO_23).to_bits().wrapping_sub(TWO_23.to_bits())
 }
 
 /// Chapter 3's [`stop_distance`](crate::ch3_ray_triangle::spawn::stop_distance),
