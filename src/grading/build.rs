@@ -6,8 +6,9 @@
 //! crates: nothing of the student's but the exercise files is built or
 //! run, and a file's date never decides whether it is built again (its
 //! content does). Each build runs its own link to the binary it made, kept
-//! in that folder: graders that share a target folder (the terminal UI's
-//! student mode and `cargo grade` at once) never run each other's build.
+//! in that folder ([`crate::kept`]): graders that share a target folder
+//! (the terminal UI's student mode and `cargo grade` at once) never run
+//! each other's build.
 //! A file that uses what an exercise may not ([`crate::source_rules`]) or
 //! that does not compile is replaced by its shipped stub and reported with
 //! the compiler's messages, while the others are built.
@@ -20,6 +21,7 @@ use std::sync::atomic::AtomicBool;
 
 use crate::child::{run_limited, Ran};
 use crate::core::project_root;
+use crate::kept::{keep_runner, prune_runners, BuildLock};
 use crate::shipped::{Stub, STUBS};
 use crate::source_rules::refusals;
 
@@ -69,11 +71,19 @@ impl Place {
         })
     }
 
+    /// The profile's name, which is also its folder: `release` or `debug`.
+    pub fn profile(&self) -> &'static str {
+        if self.release {
+            "release"
+        } else {
+            "debug"
+        }
+    }
+
     /// The `raystep-grade-child` binary a build here makes (the next build
     /// replaces it: a grader runs its own link, [`Built::runner`]).
     pub fn runner(&self) -> PathBuf {
-        let profile = if self.release { "release" } else { "debug" };
-        self.target.join(profile).join(format!(
+        self.target.join(self.profile()).join(format!(
             "raystep-grade-child{}",
             std::env::consts::EXE_SUFFIX
         ))
@@ -199,89 +209,6 @@ fn write_sources(root: &Path, files: &[(Stub, String)]) -> Result<PathBuf, Strin
     }
 }
 
-/// An exclusive lock on a target folder's grader builds (a file lock, so
-/// it holds between processes, and the system releases it if the process
-/// dies); released when dropped.
-struct BuildLock {
-    _file: std::fs::File,
-}
-
-impl BuildLock {
-    /// Waits for the lock of `sources` (or until `cancel` is set).
-    fn take(sources: &Path, cancel: Option<&AtomicBool>) -> Result<BuildLock, String> {
-        let io = |e: std::io::Error| format!("cannot lock {}: {e}", sources.display());
-        std::fs::create_dir_all(sources).map_err(io)?;
-        let file = std::fs::File::options()
-            .create(true)
-            .truncate(false)
-            .write(true)
-            .open(sources.join("build.lock"))
-            .map_err(io)?;
-        loop {
-            match file.try_lock() {
-                Ok(()) => return Ok(BuildLock { _file: file }),
-                Err(std::fs::TryLockError::WouldBlock) => {}
-                Err(std::fs::TryLockError::Error(e)) => return Err(io(e)),
-            }
-            if cancel.is_some_and(|c| c.load(std::sync::atomic::Ordering::Relaxed)) {
-                return Err("the build was cancelled".into());
-            }
-            std::thread::sleep(std::time::Duration::from_millis(20));
-        }
-    }
-}
-
-/// This build's binary, kept beside the exercise files it was built from
-/// (`<hash>/raystep-grade-child-<profile>`): later builds replace the file
-/// cargo writes, never this one. A hard link, so no file is written that a
-/// new child of another thread could hold open when the grader starts it
-/// (the linkers cargo uses write a new file, which the test of two builds
-/// in one folder checks); a copy where links fail. Marks it used now, for
-/// [`prune_runners`].
-fn keep_runner(place: &Place, modules: &Path) -> Result<PathBuf, String> {
-    let built = place.runner();
-    let folder = modules.parent().ok_or("no folder for the module list")?;
-    let profile = if place.release { "release" } else { "debug" };
-    let suffix = std::env::consts::EXE_SUFFIX;
-    let kept = folder.join(format!("raystep-grade-child-{profile}{suffix}"));
-    let tmp = folder.join(format!("tmp-{}-{profile}{suffix}", std::process::id()));
-    let io = |e: std::io::Error| format!("cannot keep {}: {e}", built.display());
-    let _ = std::fs::remove_file(&tmp);
-    if std::fs::hard_link(&built, &tmp).is_err() {
-        std::fs::copy(&built, &tmp).map_err(io)?;
-    }
-    std::fs::rename(&tmp, &kept).map_err(io)?;
-    std::fs::write(folder.join(format!("used-{profile}")), b"").map_err(io)?;
-    Ok(kept)
-}
-
-/// Removes the kept binaries (see [`keep_runner`]) of builds no grader has
-/// used for an hour: a grading run is done with its binary within minutes
-/// (every build, the TUI's too, marks its binary used again), and a
-/// student who edits often keeps no more than an hour's builds.
-fn prune_runners(sources: &Path) {
-    let hour = std::time::Duration::from_secs(3600);
-    let Ok(folders) = std::fs::read_dir(sources) else {
-        return;
-    };
-    for folder in folders.flatten().map(|e| e.path()) {
-        for profile in ["release", "debug"] {
-            let used = folder.join(format!("used-{profile}"));
-            let age = std::fs::metadata(&used)
-                .and_then(|m| m.modified())
-                .ok()
-                .and_then(|t| t.elapsed().ok());
-            if age.is_some_and(|a| a > hour) {
-                let suffix = std::env::consts::EXE_SUFFIX;
-                let _ = std::fs::remove_file(
-                    folder.join(format!("raystep-grade-child-{profile}{suffix}")),
-                );
-                let _ = std::fs::remove_file(used);
-            }
-        }
-    }
-}
-
 /// Builds the student's process with the exercise files under `dir` at
 /// `place`; an exercise whose file draws a compiler error is replaced by
 /// its stub and the crate rebuilt. Setting `cancel` stops cargo and
@@ -328,7 +255,7 @@ pub fn build_exercises_in(
             Err(e) => return Err(format!("cannot run cargo: {e}")),
         };
         if ok {
-            let runner = keep_runner(place, &modules)?;
+            let runner = keep_runner(&place.runner(), place.profile(), &modules)?;
             prune_runners(&sources);
             return Ok(Built { runner, broken });
         }

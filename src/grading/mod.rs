@@ -42,6 +42,7 @@ pub mod driver;
 pub mod exercise;
 pub mod exercises;
 pub mod hints;
+pub mod kept;
 pub mod live;
 pub mod manifest;
 pub mod predict;

@@ -11,6 +11,7 @@
 use std::time::Duration;
 
 use raystep::grading::build::{build_exercises_in, Place};
+use raystep::grading::kept::{kept_runner, used_marker};
 use raystep::grading::live::{live_student, LiveError, LiveOptions};
 use raystep::grading::process::capstone_images;
 use raystep::grading::runner::capstone;
@@ -172,16 +173,11 @@ fn builds_unused_for_an_hour_are_removed() {
     let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
     let place = Place::current().unwrap();
     let folder = |name: &str| place.target.join("raystep-grade").join(name);
-    let profile = if place.release { "release" } else { "debug" };
-    let binary = format!(
-        "raystep-grade-child-{profile}{}",
-        std::env::consts::EXE_SUFFIX
-    );
     let (old, recent) = (folder("test-unused-2h"), folder("test-used-10min"));
     for (dir, age) in [(&old, 7200), (&recent, 600)] {
         std::fs::create_dir_all(dir).unwrap();
-        std::fs::write(dir.join(&binary), b"not a program").unwrap();
-        let used = dir.join(format!("used-{profile}"));
+        std::fs::write(kept_runner(dir, place.profile()), b"not a program").unwrap();
+        let used = used_marker(dir, place.profile());
         std::fs::write(&used, b"").unwrap();
         let when = std::time::SystemTime::now() - Duration::from_secs(age);
         let file = std::fs::File::options().write(true).open(&used).unwrap();
@@ -190,8 +186,9 @@ fn builds_unused_for_an_hour_are_removed() {
     let stubs = copy_exercises(&common::temp_dir("prune-stubs"));
     let built = build_exercises_in(&stubs, &place, None).unwrap();
     assert!(built.runner.is_file());
-    assert!(!old.join(&binary).exists(), "unused for two hours: removed");
-    assert!(recent.join(&binary).is_file(), "used ten minutes ago: kept");
+    let kept = |dir: &std::path::Path| kept_runner(dir, place.profile());
+    assert!(!kept(&old).exists(), "unused for two hours: removed");
+    assert!(kept(&recent).is_file(), "used ten minutes ago: kept");
     let _ = std::fs::remove_dir_all(old);
     let _ = std::fs::remove_dir_all(recent);
 }
