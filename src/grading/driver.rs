@@ -84,12 +84,14 @@ fn parse_timeout(text: &str) -> Result<f64, String> {
 pub fn grade_main() -> ExitCode {
     let cli: GradeCli = crate::core::run::parse_args();
     let catalog = all();
-    // The hints file is a teacher's to edit: a mistake in it is named
-    // before anything is graded.
-    let problems = match super::manifest::manifest() {
+    // The hints and the hand-worked cases are a teacher's to edit: a
+    // mistake in them is named before anything is graded.
+    let mut problems = match super::manifest::manifest() {
         Ok(m) => super::manifest::problems(m, &catalog),
         Err(e) => vec![e.to_string()],
     };
+    let ids: Vec<String> = catalog.iter().map(|e| e.id()).collect();
+    problems.extend(super::cases::problems(&ids));
     if !problems.is_empty() {
         eprintln!("error: {}", problems.join("\nerror: "));
         return ExitCode::from(2);

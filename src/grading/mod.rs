@@ -35,6 +35,7 @@ use raystep_lessons::{
 
 pub mod bridge;
 pub mod build;
+pub mod cases;
 pub mod child;
 pub mod counted;
 pub mod course;

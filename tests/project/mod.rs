@@ -10,6 +10,7 @@ mod figures;
 mod film_and_main;
 mod fuzz;
 mod glossary;
+mod grader_cases;
 mod grader_hints;
 mod grader_hostile;
 mod grader_states;

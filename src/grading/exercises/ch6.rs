@@ -9,6 +9,7 @@ use super::bounce_layers as layers;
 use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::refraction;
 use super::worst_of;
+use crate::cases;
 use crate::core::sampling::random;
 use crate::exercise::{Check, Exercise, Symptom};
 
@@ -294,25 +295,30 @@ pub fn check_russian_roulette(f: RouletteFn) -> Check {
     }
 }
 
+/// A hand-worked weight (`src/grading/cases.toml`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct WeightCase {
+    pdf_f: f64,
+    pdf_g: f64,
+    expect: f64,
+    why: String,
+}
+
 /// The weight against hand values and extremes, the two weights summing
 /// to one, and an unbiased two-strategy MIS estimate of ∫₀¹ 3x² dx = 1
 /// (uniform sampling, pdf 1, and sampling by 2x, pdf 2x).
 pub fn check_mis_weight(f: WeightFn) -> Check {
-    let cases = [
-        (1.0, 1.0, 0.5),
-        (2.0, 1.0, 0.8),
-        (1.0, 3.0, 0.1),
-        (0.0, 5.0, 0.0),
-        (4.0, 0.0, 1.0),
-        (1e200, 1e199, 1.0 / 1.01),
-        (1e-200, 1e-199, 1.0 / 101.0),
-        (0.0, 0.0, 0.0),
-    ];
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(a, b, want)| {
+    let cases: Vec<WeightCase> = match cases::of("ch6/mis_weight") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
+        let (a, b, want) = (c.pdf_f, c.pdf_g, c.expect);
         let got = f(a, b);
         (
             (got - want).abs(),
-            format!("pdf_f {a:e}, pdf_g {b:e}: got {got}, expected {want}"),
+            format!("{}: pdf_f {a:e}, pdf_g {b:e}: got {got}, expected {want}", c.why),
         )
     }));
     // Drawn densities over 400 decades, a tenth of them 0, in a number of

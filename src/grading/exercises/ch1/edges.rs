@@ -8,6 +8,7 @@ use glam::{DVec3, Vec2, Vec3};
 use super::{BEHIND_DRAWN, DROPPED, MIRRORED, NOT_CLIPPED, ON_PLANE, ORDER, WRONG_CUT};
 use crate::ch1_projection::camera::{project_pinhole, Camera, CameraDesc};
 use crate::ch1_projection::wireframe::{clip_to_near, NEAR};
+use crate::cases::{self, v3, V3};
 use crate::core::draw;
 use crate::core::film::Film;
 use crate::exercise::{Check, Symptom};
@@ -44,12 +45,25 @@ pub fn check_draw_edges(f: EdgeFn) -> Check {
 }
 
 /// What kind of edge a clause case is.
-#[derive(Clone, Copy, PartialEq, Eq)]
+#[derive(Clone, Copy, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
 enum Kind {
     Front,
     Cut,
     Behind,
     OnPlane,
+}
+
+/// A clause case (`src/grading/cases.toml`): an edge from `a` to `b`
+/// and the near plane.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ClauseCase {
+    kind: Kind,
+    a: V3,
+    b: V3,
+    near: f32,
+    why: String,
 }
 
 /// A camera at the origin looking down -z, 90° field of view, 200 × 200:
@@ -84,25 +98,12 @@ fn rel(p: Vec2, q: Vec2) -> f64 {
 // off by more than 1.
 fn clauses(f: EdgeFn) -> Check {
     let camera = origin_camera();
-    let v = Vec3::new;
-    #[rustfmt::skip]
-    let cases: [(Kind, Vec3, Vec3, f32, &str); 14] = [
-        (Kind::Front, v(1.0, 2.0, -4.0), v(-3.0, 1.0, -2.0), 0.5, "both ends in front"),
-        (Kind::Front, v(-3.0, 1.0, -2.0), v(1.0, 2.0, -4.0), 0.5, "both ends in front"),
-        (Kind::Front, v(0.3, -0.7, -1.5), v(2.0, 0.1, -9.0), 1.0, "both ends in front"),
-        (Kind::Cut, v(1.0, 0.5, -2.0), v(3.0, -1.0, 2.0), 0.5, "the second end behind the camera"),
-        (Kind::Cut, v(3.0, -1.0, 2.0), v(1.0, 0.5, -2.0), 0.5, "the first end behind the camera"),
-        (Kind::Cut, v(-0.4, 0.9, -3.0), v(0.6, 0.2, -0.1), 0.25, "the second end between the pinhole and the near plane"),
-        (Kind::Cut, v(0.2, 0.3, 0.5), v(-1.0, 0.4, -6.0), 2.0, "the first end behind the camera"),
-        (Kind::Behind, v(1.0, 1.0, 1.0), v(2.0, -1.0, 0.2), 0.5, "both ends behind the camera"),
-        (Kind::Behind, v(1.0, 1.0, -0.2), v(-0.5, 0.5, -0.3), 0.5, "both ends between the pinhole and the near plane"),
-        (Kind::Behind, v(0.1, 0.1, -1.9), v(-0.5, 0.5, 3.0), 2.0, "both ends behind the near plane"),
-        (Kind::OnPlane, v(0.5, 0.5, -0.5), v(1.0, 1.0, -3.0), 0.5, "the first end on the near plane, the second in front"),
-        (Kind::OnPlane, v(1.0, -1.0, -3.0), v(0.5, 0.25, -0.5), 0.5, "the second end on the near plane, the first in front"),
-        (Kind::OnPlane, v(0.5, 0.25, -0.5), v(1.0, 1.0, 1.0), 0.5, "the first end on the near plane, the second behind: one point"),
-        (Kind::OnPlane, v(-0.5, 0.25, -0.25), v(0.5, -0.5, -0.25), 0.25, "both ends on the near plane"),
-    ];
-    for (k, &(kind, a, b, near, what)) in cases.iter().enumerate() {
+    let cases: Vec<ClauseCase> = match cases::of("ch1/draw_edges") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    for (k, case) in cases.iter().enumerate() {
+        let (kind, a, b, near, what) = (case.kind, v3(case.a), v3(case.b), case.near, &case.why);
         crate::progress(format_args!(
             "calling draw_edges on clause case {k}: {a} to {b}, near {near}"
         ));

@@ -4,6 +4,7 @@
 
 use glam::{Vec2, Vec3, Vec3Swizzles};
 
+use crate::cases;
 use crate::ch2_rasterization::{depth, edge, triangle};
 use crate::exercise::{Check, Exercise, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
@@ -148,31 +149,37 @@ fn worst_of(cases: impl Iterator<Item = (f64, String)>, tolerance: f64, ok: &str
     }
 }
 
+/// A hand-worked edge function value (`src/grading/cases.toml`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct EdgeCase {
+    a: [f32; 2],
+    b: [f32; 2],
+    p: [f32; 2],
+    expect: f32,
+    why: String,
+}
+
 /// Compares an edge function with values worked out by hand.
 pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
-    let v = Vec2::new;
-    // (a, b, p, E) by hand: (b - a) × (p - a).
-    let cases = [
-        (v(0.0, 0.0), v(1.0, 0.0), v(0.0, 1.0), 1.0),
-        (v(0.0, 0.0), v(1.0, 0.0), v(0.0, -1.0), -1.0),
-        (v(0.0, 0.0), v(4.0, 0.0), v(2.0, 0.0), 0.0),
-        (v(1.0, 2.0), v(4.0, 6.0), v(3.0, 1.0), -11.0),
-        (v(-2.0, 1.0), v(2.0, 3.0), v(0.0, 5.0), 12.0),
-        (v(0.5, 0.5), v(0.5, 8.5), v(3.5, 4.0), -24.0),
-    ];
-    let got: Vec<f32> = cases.iter().map(|&(a, b, p, _)| f(a, b, p)).collect();
+    let cases: Vec<EdgeCase> = match cases::of("ch2/edge_function") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let got: Vec<f32> = cases.iter().map(|c| f(c.a.into(), c.b.into(), c.p.into())).collect();
     let check = worst_of(
-        cases.iter().zip(&got).map(|(&(a, b, p, want), &got)| {
+        cases.iter().zip(&got).map(|(c, &got)| {
+            let (a, b, p) = (Vec2::from(c.a), Vec2::from(c.b), Vec2::from(c.p));
             (
-                (got - want).abs() as f64,
-                format!("a = {a}, b = {b}, p = {p}: got {got}, expected {want}"),
+                (got - c.expect).abs() as f64,
+                format!("{}: a = {a}, b = {b}, p = {p}: got {got}, expected {}", c.why, c.expect),
             )
         }),
         1e-5,
         "all cases match",
     );
     // Every answer the negative of the right one: the sign.
-    let flipped = cases.iter().zip(&got).all(|(c, g)| (g + c.3).abs() <= 1e-5);
+    let flipped = cases.iter().zip(&got).all(|(c, g)| (g + c.expect).abs() <= 1e-5);
     if !check.passed() && flipped {
         return check.with_symptom(EDGE_SIGN);
     }

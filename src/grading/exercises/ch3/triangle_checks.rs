@@ -4,6 +4,7 @@
 
 use glam::Vec3;
 
+use crate::cases::{self, v3, V3};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
 use crate::exercise::{Check, Symptom};
@@ -100,26 +101,27 @@ fn near(g: f32, w: f32) -> bool {
     (g - w).abs() <= 1e-4 * w.abs().max(1.0)
 }
 
+/// A hand-worked plane and ray (`src/grading/cases.toml`): `expect` is
+/// t, left out for a parallel ray.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PlaneCase {
+    o: V3,
+    d: V3,
+    n: V3,
+    c: f32,
+    expect: Option<f32>,
+    why: String,
+}
+
 /// Hand-worked planes, a parallel ray, then random cases against the
 /// closed form t = (c - N·o) / (N·d) worked in f64 here (not against
 /// raystep's `ray_plane`, which would check the reference against itself).
 pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
-    let cases: Vec<(Vec3, Vec3, Vec3, f32, Option<f32>)> = vec![
-        // The plane z = -2, a ray down -z from the origin: t = 2.
-        (Vec3::ZERO, -Vec3::Z, Vec3::Z, -2.0, Some(2.0)),
-        // The plane x + y = 4 (N = (1, 1, 0), c = 4), ray along +x from (1, 1, 0): t = 2.
-        (
-            Vec3::new(1.0, 1.0, 0.0),
-            Vec3::X,
-            Vec3::new(1.0, 1.0, 0.0),
-            4.0,
-            Some(2.0),
-        ),
-        // Behind the origin: t = -3 (the sign is the caller's business).
-        (Vec3::new(0.0, 3.0, 0.0), Vec3::Y, Vec3::Y, 0.0, Some(-3.0)),
-        // Parallel: no t.
-        (Vec3::ZERO, Vec3::X, Vec3::Y, 1.0, None),
-    ];
+    let cases: Vec<PlaneCase> = match cases::of("ch3/ray_plane") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
     // Drawn rays and planes: at scales from 10⁻³ to 10³, up to 100 times
     // their size from the origin, N and d of any length from 10⁻³ to 10³.
     let mut draws = Draws::new(31);
@@ -174,7 +176,8 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
     check(
         cases
             .into_iter()
-            .map(|(o, d, n, c, want)| {
+            .map(|case| {
+                let (o, d, n, c, want) = (v3(case.o), v3(case.d), v3(case.n), case.c, case.expect);
                 let got = f(o, d, n, c);
                 let symptom = match (got, want) {
                     (Some(g), Some(w)) if w != 0.0 && !near(g, w) && near(-g, w) => {
@@ -185,7 +188,7 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
                 };
                 (
                     rel(got, want),
-                    format!("o {o}, d {d}, N {n}, c {c}: got {got:?}, expected {want:?}"),
+                    format!("{}: o {o}, d {d}, N {n}, c {c}: got {got:?}, expected {want:?}", case.why),
                     symptom,
                 )
             })

@@ -5,6 +5,7 @@ use glam::Vec3;
 use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::images;
 use super::worst_of;
+use crate::cases::{self, unit, v3, V3};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch4_implicit_surfaces::march::{self, March};
 use crate::ch4_implicit_surfaces::normal::gradient_central;
@@ -24,8 +25,6 @@ type SdfFn = fn(Vec3, Vec3, f32) -> f32;
 /// A sphere-tracing loop as exercise 4.2 asks for it.
 pub type TraceFn = fn(&dyn Fn(Vec3) -> f32, Vec3, Vec3, f32, u32, f32) -> Option<f32>;
 type NormalFn = fn(&dyn Fn(Vec3) -> f32, Vec3, f32) -> Vec3;
-/// A distance function borrowed for a check.
-type Dist<'a> = &'a dyn Fn(Vec3) -> f32;
 
 /// Chapter 4's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {
@@ -87,23 +86,74 @@ fn reference_trace(
     march::sphere_trace(f, &ray, &m).hit()
 }
 
+/// A shape of a hand-worked case (`src/grading/cases.toml`).
+#[derive(serde::Deserialize)]
+#[serde(rename_all = "lowercase", deny_unknown_fields)]
+enum Shape {
+    /// A sphere.
+    Sphere { centre: V3, radius: f32 },
+    /// A box, by its half sizes.
+    Box { centre: V3, half: V3 },
+    /// A torus around the y axis through the origin.
+    Torus { major: f32, minor: f32 },
+}
+
+impl Shape {
+    /// Its signed distance at `p`.
+    fn distance(&self, p: Vec3) -> f32 {
+        match *self {
+            Shape::Sphere { centre, radius } => sd_sphere(p - v3(centre), radius),
+            Shape::Box { centre, half } => sd_box(p - v3(centre), v3(half)),
+            Shape::Torus { major, minor } => sd_torus(p, major, minor),
+        }
+    }
+}
+
+/// A hand-worked value of the sphere's SDF.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SdfCase {
+    p: V3,
+    centre: V3,
+    radius: f32,
+    expect: f32,
+    why: String,
+}
+
+/// A hand-worked ray for the sphere-tracing loop: `expect` is t, left out
+/// for a miss.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TraceCase {
+    sdf: Shape,
+    o: V3,
+    d: V3,
+    expect: Option<f32>,
+    why: String,
+}
+
+/// A hand-worked normal.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct NormalCase {
+    sdf: Shape,
+    p: V3,
+    expect: V3,
+    why: String,
+}
+
 /// The sphere's SDF against values worked out by hand.
 pub fn check_sphere_sdf(f: SdfFn) -> Check {
-    let c = Vec3::new(1.0, 2.0, 3.0);
-    let cases = [
-        // Outside, on, and inside; the centre is -radius.
-        (Vec3::new(4.0, 6.0, 3.0), c, 2.0, 3.0), // |(3, 4, 0)| = 5
-        (Vec3::new(1.0, 2.0, 5.0), c, 2.0, 0.0),
-        (Vec3::new(1.5, 2.0, 3.0), c, 2.0, -1.5),
-        (c, c, 0.75, -0.75),
-        (Vec3::new(0.0, 0.0, -10.0), Vec3::ZERO, 1.0, 9.0),
-        (Vec3::new(2.0, 3.0, 6.0), Vec3::new(0.0, 0.0, 0.0), 1.0, 6.0), // |(2, 3, 6)| = 7
-    ];
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(p, c, r, want)| {
+    let cases: Vec<SdfCase> = match cases::of("ch4/sphere_sdf") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|case| {
+        let (p, c, r, want) = (v3(case.p), v3(case.centre), case.radius, case.expect);
         let got = f(p, c, r);
         (
             (got - want).abs() as f64,
-            format!("p {p}, centre {c}, radius {r}: got {got}, expected {want}"),
+            format!("{}: p {p}, centre {c}, radius {r}: got {got}, expected {want}", case.why),
         )
     }));
     // Drawn spheres from 10⁻³ to 10³ across, up to 10³ times that from the
@@ -125,6 +175,7 @@ pub fn check_sphere_sdf(f: SdfFn) -> Check {
     }));
     fold_drawn(&mut error, &mut detail, drawn);
     // 1.5 inside a sphere of radius 2; 5 from its centre, 3 outside.
+    let c = Vec3::new(1.0, 2.0, 3.0);
     let inside = f(Vec3::new(1.5, 2.0, 3.0), c, 2.0);
     let outside = f(Vec3::new(4.0, 6.0, 3.0), c, 2.0);
     let symptom = if error <= 1e-5 {
@@ -158,26 +209,18 @@ pub const CENTRE_IGNORED: Symptom = Symptom {
 /// worked out by hand and raystep's tracer; and rays that miss.
 pub fn check_sphere_trace(f: TraceFn) -> Check {
     let sphere = |p: Vec3| sd_sphere(p, 1.0);
-    let boxed = |p: Vec3| sd_box(p - Vec3::new(0.0, 0.0, -3.0), Vec3::splat(0.5));
-    let torus = |p: Vec3| sd_torus(p, 2.0, 0.5);
     let eps = 1e-4;
-    // (sdf, origin, direction, expected t or None)
-    let cases: Vec<(Dist, Vec3, Vec3, Option<f32>)> = vec![
-        (&sphere, Vec3::new(0.0, 0.0, 5.0), -Vec3::Z, Some(4.0)),
-        (&sphere, Vec3::new(-4.0, 0.6, 0.0), Vec3::X, Some(4.0 - 0.8)),
-        (&sphere, Vec3::new(0.0, 2.0, 5.0), -Vec3::Z, None),
-        (&boxed, Vec3::ZERO, -Vec3::Z, Some(2.5)),
-        (&boxed, Vec3::ZERO, Vec3::Z, None),
-        // Down the torus's axis: through the hole, no hit.
-        (&torus, Vec3::new(0.0, 5.0, 0.0), -Vec3::Y, None),
-        // Along x through the tube: hits its outer side at x = 2.5.
-        (&torus, Vec3::new(6.0, 0.0, 0.0), -Vec3::X, Some(3.5)),
-    ];
-    let (error, detail) = worst_of(cases.into_iter().map(|(sdf, o, d, want)| {
+    let cases: Vec<TraceCase> = match cases::of("ch4/sphere_trace") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let (error, detail) = worst_of(cases.into_iter().map(|case| {
+        let sdf = |p: Vec3| case.sdf.distance(p);
+        let (o, d, want) = (v3(case.o), v3(case.d), case.expect);
         crate::progress(format_args!(
             "calling sphere_trace on the ray from {o} along {d} (ε = {eps}, 512 steps, max distance 50)"
         ));
-        let got = f(sdf, o, d, eps, 512, 50.0);
+        let got = f(&sdf, o, d, eps, 512, 50.0);
         let err = match (got, want) {
             (Some(g), Some(w)) => ((g - w).abs() as f64 - eps as f64).max(0.0),
             (None, None) => 0.0,
@@ -185,7 +228,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         };
         (
             err,
-            format!("ray from {o} along {d}: got {got:?}, expected {want:?}"),
+            format!("{}: ray from {o} along {d}: got {got:?}, expected {want:?}", case.why),
         )
     }));
     // Drawn spheres from 10⁻² to 10² across, up to 100 times that from the
@@ -299,30 +342,22 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
 /// exact normals.
 pub fn check_gradient_normal(f: NormalFn) -> Check {
     let sphere = |p: Vec3| sd_sphere(p - Vec3::new(1.0, 0.0, 0.0), 2.0);
-    let boxed = |p: Vec3| sd_box(p, Vec3::new(1.0, 2.0, 3.0));
-    let torus = |p: Vec3| sd_torus(p, 2.0, 0.5);
-    let s = 1.0 / 3f32.sqrt();
-    let cases: Vec<(Dist, Vec3, Vec3)> = vec![
-        (&sphere, Vec3::new(3.0, 0.0, 0.0), Vec3::X),
-        (
-            &sphere,
-            Vec3::new(1.0, 0.0, 0.0) + Vec3::splat(2.0 * s),
-            Vec3::splat(s),
-        ),
-        (&boxed, Vec3::new(0.2, 2.0, 0.5), Vec3::Y),
-        (&boxed, Vec3::new(-1.0, 0.3, -0.4), -Vec3::X),
-        (&torus, Vec3::new(0.0, 0.5, 2.0), Vec3::Y),
-        (&torus, Vec3::new(-2.5, 0.0, 0.0), -Vec3::X),
-    ];
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(sdf, p, want)| {
-        let got = f(sdf, p, 1e-3);
+    let cases: Vec<NormalCase> = match cases::of("ch4/gradient_normal") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|case| {
+        let sdf = |p: Vec3| case.sdf.distance(p);
+        let (p, want) = (v3(case.p), unit(case.expect));
+        let got = f(&sdf, p, 1e-3);
         (
             (got - want).length() as f64,
-            format!("at {p}: got {got}, expected {want}"),
+            format!("{}: at {p}: got {got}, expected {want}", case.why),
         )
     }));
     // Drawn spheres from 10⁻² to 10² across, up to 10 times that from the
     // origin, points near their surface, h from 10⁻³ to 10⁻² of the radius,
+    // half of them scaled (a bound whose gradient is not unit length),
     // against the reference's central differences (the same h: the same
     // truncation, and rounding far below the tolerance).
     let mut draws = Draws::new(44);

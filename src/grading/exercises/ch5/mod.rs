@@ -21,6 +21,7 @@ use crate::ch5_reflection::light::area::solid_angle_pdf;
 use crate::ch5_reflection::material::lambert::Lambertian;
 use crate::ch5_reflection::radiometry::{spot_flux, triangle_solid_angle};
 use crate::ch5_reflection::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
+use crate::cases::{self, unit, v3, V3};
 use crate::core::sampling::random;
 use crate::exercise::{Check, Exercise, Symptom};
 
@@ -121,29 +122,33 @@ fn rel(got: Vec3, want: Vec3) -> f64 {
     ((got - want).abs().max_element() / want.abs().max_element().max(1e-6)) as f64
 }
 
+/// A hand-worked case of the Lambertian BRDF (`src/grading/cases.toml`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LambertCase {
+    rho: V3,
+    wo: V3,
+    wi: V3,
+    same_side: bool,
+    why: String,
+}
+
 /// ρ/π on the same side, 0 across, for hand-picked directions.
 pub fn check_lambert_brdf(f: BrdfFn) -> Check {
-    let rho = Vec3::new(0.9, 0.5, 0.1);
-    let d = |x: f32, y: f32, z: f32| Vec3::new(x, y, z).normalize();
-    let same = rho * FRAC_1_PI;
-    let cases = [
-        (d(0.0, 0.0, 1.0), d(0.0, 0.0, 1.0), same),
-        (d(1.0, 0.0, 1.0), d(-0.3, 0.2, 0.5), same),
-        (d(0.0, 1.0, 0.01), d(0.9, 0.0, 0.05), same),
-        // Both below: still the same side (two-sided).
-        (d(0.2, 0.0, -1.0), d(0.0, 0.4, -1.0), same),
-        // Opposite sides: nothing.
-        (d(0.0, 0.0, 1.0), d(0.0, 0.0, -1.0), Vec3::ZERO),
-        (d(1.0, 0.0, -0.2), d(0.3, 0.3, 0.8), Vec3::ZERO),
-    ];
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(wo, wi, want)| {
+    let cases: Vec<LambertCase> = match cases::of("ch5/lambert_brdf") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
+        let (rho, wo, wi) = (v3(c.rho), unit(c.wo), unit(c.wi));
+        let want = if c.same_side { rho * FRAC_1_PI } else { Vec3::ZERO };
         let got = f(rho, wo, wi);
         let err = if want == Vec3::ZERO {
             got.abs().max_element() as f64
         } else {
             rel(got, want)
         };
-        (err, format!("ωo {wo}, ωi {wi}: got {got}, expected {want}"))
+        (err, format!("{}: ρ {rho}, ωo {wo}, ωi {wi}: got {got}, expected {want}", c.why))
     }));
     // Drawn albedos (a channel may be 0 or 1) and directions, grazing ones
     // (|z| down to 10⁻⁶) among them.
@@ -253,30 +258,26 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
     }
 }
 
+/// A hand-worked case of the point light (`src/grading/cases.toml`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PointCase {
+    intensity: V3,
+    light: V3,
+    p: V3,
+    n: V3,
+    expect: V3,
+    why: String,
+}
+
 /// E = I cos θ / r² for hand-worked cases.
 pub fn check_point_light(f: PointFn) -> Check {
-    let i = Vec3::new(4.0, 2.0, 1.0);
-    let cases = [
-        // Straight above at 2 m: I/4.
-        (Vec3::new(0.0, 0.0, 2.0), Vec3::ZERO, Vec3::Z, i / 4.0),
-        // 5 m away along (3, 0, 4): cos θ = 4/5, r² = 25.
-        (
-            Vec3::new(3.0, 0.0, 4.0),
-            Vec3::ZERO,
-            Vec3::Z,
-            i * 0.8 / 25.0,
-        ),
-        // Off the origin and a tilted normal: to = (0, 1, 1), cos = 1.
-        (
-            Vec3::new(1.0, 2.0, 3.0),
-            Vec3::new(1.0, 1.0, 2.0),
-            Vec3::new(0.0, 1.0, 1.0).normalize(),
-            i / 2.0,
-        ),
-        // Behind the surface: nothing.
-        (Vec3::new(0.0, 0.0, -1.0), Vec3::ZERO, Vec3::Z, Vec3::ZERO),
-    ];
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(light, p, n, want)| {
+    let cases: Vec<PointCase> = match cases::of("ch5/point_light") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
+        let (i, light, p, n, want) = (v3(c.intensity), v3(c.light), v3(c.p), unit(c.n), v3(c.expect));
         let got = f(i, light, p, n);
         let err = if want == Vec3::ZERO {
             got.abs().max_element() as f64
@@ -285,7 +286,7 @@ pub fn check_point_light(f: PointFn) -> Check {
         };
         (
             err,
-            format!("light at {light}, p {p}, n {n}: got {got}, expected {want}"),
+            format!("{}: I {i}, light at {light}, p {p}, n {n}: got {got}, expected {want}", c.why),
         )
     }));
     // Drawn lights and surfaces: distances from 10⁻³ to 10³, up to 10³
@@ -328,25 +329,27 @@ pub fn check_point_light(f: PointFn) -> Check {
     }
 }
 
+/// A hand-worked case of the area-to-solid-angle density
+/// (`src/grading/cases.toml`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AreaPdfCase {
+    pdf_area: f32,
+    x: V3,
+    y: V3,
+    n_light: V3,
+    expect: f32,
+    why: String,
+}
+
 /// pdf_A d²/|cos θl| for hand-worked cases, and 0 edge-on.
 pub fn check_area_pdf(f: AreaPdfFn) -> Check {
-    let cases = [
-        // Light 2 m straight above, facing down: 1/A · 4 / 1.
-        (0.5, Vec3::ZERO, Vec3::new(0.0, 0.0, 2.0), -Vec3::Z, 2.0),
-        // Facing up (seen from behind): |cos| is still 1.
-        (0.5, Vec3::ZERO, Vec3::new(0.0, 0.0, 2.0), Vec3::Z, 2.0),
-        // 5 m away along (3, 0, 4), light normal -z: cos θl = 4/5.
-        (
-            1.0,
-            Vec3::ZERO,
-            Vec3::new(3.0, 0.0, 4.0),
-            -Vec3::Z,
-            25.0 / 0.8,
-        ),
-        // Edge-on: no area shows.
-        (1.0, Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::Z, 0.0),
-    ];
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|(pdf, x, y, n, want)| {
+    let cases: Vec<AreaPdfCase> = match cases::of("ch5/area_pdf") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
+        let (pdf, x, y, n, want) = (c.pdf_area, v3(c.x), v3(c.y), unit(c.n_light), c.expect);
         let got = f(pdf, x, y, n);
         let err = if want == 0.0 {
             got.abs() as f64
@@ -355,7 +358,7 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
         };
         (
             err,
-            format!("pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}"),
+            format!("{}: pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}", c.why),
         )
     }));
     // Drawn points and lights: distances from 10⁻³ to 10³, up to 10³ times

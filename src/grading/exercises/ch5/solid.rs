@@ -5,6 +5,7 @@
 use glam::{DQuat, DVec3, Vec3};
 
 use super::{SOLID_ABOVE_PI, SOLID_FAR_LIMIT, SOLID_PRECISION, SOLID_SIGNED};
+use crate::cases::{self, v3, V3};
 use crate::ch5_reflection::radiometry::triangle_solid_angle;
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
@@ -81,49 +82,27 @@ fn error(got: f32, p: Vec3, tri: [Vec3; 3]) -> (f64, String) {
     )
 }
 
+/// A hand-made triangle (`src/grading/cases.toml`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SolidCase {
+    p: V3,
+    triangle: [V3; 3],
+    why: String,
+}
+
 /// Hand-made triangles, one per clause, then drawn ones over the whole
 /// domain.
 pub fn check_solid_angle(f: SolidFn) -> Check {
-    let v = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
-    let o = v(3.1, -7.3, 11.7);
-    let cases = [
-        // An octant: π/2, either winding, off the origin and scaled.
-        (Vec3::ZERO, [Vec3::X, Vec3::Y, Vec3::Z]),
-        (
-            o,
-            [
-                o + v(0.37, 0.0, 0.0),
-                o + v(0.0, 0.0, 0.37),
-                o + v(0.0, 0.37, 0.0),
-            ],
-        ),
-        // Just above a large triangle: nearly 2π.
-        (
-            v(0.1, 0.2, 1e-3),
-            [
-                v(-10.0, -10.0, 0.0),
-                v(20.0, -10.0, 0.0),
-                v(-10.0, 20.0, 0.0),
-            ],
-        ),
-        // Beside it in its plane: 0.
-        (v(5.0, 5.0, 0.0), [Vec3::ZERO, Vec3::X, Vec3::Y]),
-        // Small, 1000 sizes away, oblique, 300 m from the origin.
-        (
-            v(300.0, 1.0, 2.0),
-            [
-                v(-700.0, 401.0, 0.3),
-                v(-699.3, 401.2, 0.9),
-                v(-700.1, 400.4, 1.1),
-            ],
-        ),
-        // A sliver seen from nearby.
-        (
-            v(0.3, 0.4, 0.5),
-            [Vec3::ZERO, v(1.0, 0.0, 0.0), v(0.5, 1e-3, 0.0)],
-        ),
-    ];
-    let (mut worst, mut detail) = worst_of(cases.into_iter().map(|(p, t)| error(f(p, t), p, t)));
+    let cases: Vec<SolidCase> = match cases::of("ch5/solid_angle") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let (mut worst, mut detail) = worst_of(cases.into_iter().map(|c| {
+        let (p, t) = (v3(c.p), c.triangle.map(v3));
+        let (err, what) = error(f(p, t), p, t);
+        (err, format!("{}: {what}", c.why))
+    }));
     fold_drawn(&mut worst, &mut detail, drawn(f));
     let check = Check {
         error: worst,

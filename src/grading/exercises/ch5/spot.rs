@@ -7,6 +7,7 @@ use std::f64::consts::PI;
 use glam::{DVec3, Vec3};
 
 use super::{SPOT_BAND, SPOT_FACTOR, SPOT_NARROW};
+use crate::cases;
 use crate::ch5_reflection::light::spot::Spot;
 use crate::ch5_reflection::radiometry::spot_flux;
 use crate::exercise::{Check, Symptom};
@@ -54,26 +55,33 @@ fn rel(got: Vec3, want: DVec3) -> f64 {
     }
 }
 
+/// A hand-made cone (`src/grading/cases.toml`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SpotCase {
+    inner: f32,
+    outer: f32,
+    why: String,
+}
+
 /// Φ = ∫ I · falloff dω for hand-made cones (the falloff integrated
 /// numerically), then drawn ones, each channel to 10⁻⁵ of the brightest
 /// channel's power (as `point_light` does).
 pub fn check_spot(f: SpotFn) -> Check {
     let i = Vec3::new(4.0, 2.0, 0.5);
-    let cases = [
-        (0.3, 0.6),
-        (0.5, 0.5),
-        (0.0, std::f32::consts::PI),
-        (std::f32::consts::PI, std::f32::consts::PI),
-        (1.2, 2.5),
-        (0.0, 0.9),
-    ];
-    let (mut worst, mut detail) = worst_of(cases.into_iter().map(|(inner, outer)| {
+    let cases: Vec<SpotCase> = match cases::of("ch5/spot") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let (mut worst, mut detail) = worst_of(cases.into_iter().map(|c| {
+        let (inner, outer) = (c.inner, c.outer);
         let want = i.as_dvec3() * falloff_integral(inner, outer);
         let got = f(i, inner, outer);
         (
             rel(got, want),
             format!(
-                "I {i}, inner {inner}, outer {outer}: got {got}, expected {}",
+                "{}: I {i}, inner {inner}, outer {outer}: got {got}, expected {}",
+                c.why,
                 want.as_vec3()
             ),
         )
