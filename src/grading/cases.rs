@@ -125,7 +125,9 @@ pub fn unreadable(error: String) -> Check {
     Check {
         error: f64::INFINITY,
         tolerance: 0.0,
-        detail: format!("the grader's own case file is broken (not your code; tell your teacher): {error}"),
+        detail: format!(
+            "the grader's own case file is broken (not your code; tell your teacher): {error}"
+        ),
         images: None,
         symptom: None,
     }

@@ -50,15 +50,19 @@ fn the_balance_heuristic_or_an_overflowing_power_heuristic_fails() {
     assert!(!check.passed(), "{check:?}");
 }
 
-/// The capstone as a student writes it from the lecture: roulette with a
-/// fixed q = 0.8 from the first bounce. `biased` forgets to divide by q;
+/// The capstone as a student writes it from its contract: roulette from
+/// the first bounce with q the throughput's largest channel (at most 1).
+/// `fixed` survives with a fixed 0.8 instead (unbiased, but a survivor's
+/// throughput grows where the albedo is above 0.8); `biased` forgets to
+/// divide by q;
 /// `twice` also adds the emission a bounce finds (counted twice, since the
 /// light sample already counted it).
-fn lecture_path(
+fn contract_path(
     scene: &PathScene,
     origin: Vec3,
     dir: Vec3,
     rng: &mut dyn FnMut() -> f32,
+    fixed: bool,
     biased: bool,
     twice: bool,
 ) -> Vec3 {
@@ -77,7 +81,11 @@ fn lecture_path(
         }
         let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
         beta *= f * hit.n.dot(wi) / pdf;
-        let q = 0.8;
+        let q = if fixed {
+            0.8
+        } else {
+            beta.max_element().min(1.0)
+        };
         if rng() >= q {
             break;
         }
@@ -96,11 +104,11 @@ fn lecture_path(
 }
 
 #[test]
-fn the_path_capstone_passes_from_the_lecture_and_catches_mistakes() {
-    let check = check_path_radiance(|s, o, d, r| lecture_path(s, o, d, r, false, false));
+fn the_path_capstone_passes_as_its_contract_reads_and_catches_mistakes() {
+    let check = check_path_radiance(|s, o, d, r| contract_path(s, o, d, r, false, false, false));
     assert!(check.passed(), "{}", check.detail);
     // Roulette that does not divide by q: too dark.
-    let check = check_path_radiance(|s, o, d, r| lecture_path(s, o, d, r, true, false));
+    let check = check_path_radiance(|s, o, d, r| contract_path(s, o, d, r, false, true, false));
     assert!(!check.passed(), "{}", check.detail);
     assert!(
         check.detail.contains("z = ") && check.detail.contains("closed furnace"),
@@ -109,6 +117,15 @@ fn the_path_capstone_passes_from_the_lecture_and_catches_mistakes() {
     );
     assert!(check.images.is_some());
     // Emission counted by the light sample and again by the bounce.
-    let check = check_path_radiance(|s, o, d, r| lecture_path(s, o, d, r, false, true));
+    let check = check_path_radiance(|s, o, d, r| contract_path(s, o, d, r, false, false, true));
     assert!(!check.passed(), "{}", check.detail);
+    // A fixed survival probability: right on average, but not bounded.
+    let check = check_path_radiance(|s, o, d, r| contract_path(s, o, d, r, true, false, false));
+    assert!(!check.passed(), "{}", check.detail);
+    assert_eq!(
+        check.symptom.map(|s| s.name),
+        Some("survival not taken from the throughput"),
+        "{}",
+        check.detail
+    );
 }

@@ -46,7 +46,12 @@ fn a_case_that_does_not_read_is_named_by_file_line_and_exercise() {
             && err.contains("expected f64"),
         "{err}"
     );
-    assert_eq!(cases::of_text::<Numbers>(&text[..26], "ch5/spot").unwrap().len(), 1);
+    assert_eq!(
+        cases::of_text::<Numbers>(&text[..26], "ch5/spot")
+            .unwrap()
+            .len(),
+        1
+    );
     let err = cases::of_text::<Numbers>("x = ", "ch5/spot").unwrap_err();
     assert!(err.starts_with("src/grading/cases.toml: line 1:"), "{err}");
     let err = cases::of_text::<Numbers>(text, "ch5/lambert_brdf").unwrap_err();
@@ -59,8 +64,14 @@ fn a_table_for_no_exercise_or_not_a_list_is_refused() {
         toml::from_str("[[\"ch9/warp_drive\"]]\nx = 1\n\n[\"ch5/spot\"]\ninner = 1\n").unwrap();
     let problems = cases::problems_in(&bad, &ids());
     assert_eq!(problems.len(), 2, "{problems:?}");
-    assert!(problems[0].contains("\"ch5/spot\" must be a list"), "{problems:?}");
-    assert!(problems[1].contains("\"ch9/warp_drive\" does not exist"), "{problems:?}");
+    assert!(
+        problems[0].contains("\"ch5/spot\" must be a list"),
+        "{problems:?}"
+    );
+    assert!(
+        problems[1].contains("\"ch9/warp_drive\" does not exist"),
+        "{problems:?}"
+    );
 }
 
 #[test]

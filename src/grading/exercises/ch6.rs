@@ -318,7 +318,10 @@ pub fn check_mis_weight(f: WeightFn) -> Check {
         let got = f(a, b);
         (
             (got - want).abs(),
-            format!("{}: pdf_f {a:e}, pdf_g {b:e}: got {got}, expected {want}", c.why),
+            format!(
+                "{}: pdf_f {a:e}, pdf_g {b:e}: got {got}, expected {want}",
+                c.why
+            ),
         )
     }));
     // Drawn densities over 400 decades, a tenth of them 0, in a number of

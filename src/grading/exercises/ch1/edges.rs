@@ -6,9 +6,9 @@
 use glam::{DVec3, Vec2, Vec3};
 
 use super::{BEHIND_DRAWN, DROPPED, MIRRORED, NOT_CLIPPED, ON_PLANE, ORDER, WRONG_CUT};
+use crate::cases::{self, v3, V3};
 use crate::ch1_projection::camera::{project_pinhole, Camera, CameraDesc};
 use crate::ch1_projection::wireframe::{clip_to_near, NEAR};
-use crate::cases::{self, v3, V3};
 use crate::core::draw;
 use crate::core::film::Film;
 use crate::exercise::{Check, Symptom};

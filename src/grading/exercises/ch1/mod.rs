@@ -119,13 +119,19 @@ pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
             ));
         }
     }
-    // Drawn points: depths from 10⁻³ to 10⁴ in front, sideways up to ten
+    // Drawn points: depths from 10⁻³ to 10⁴ in front, and now and then
+    // from 10⁻³⁰ or up to 10³⁰ (a scene's units are its own: a point just
+    // in front of the pinhole still has an image), sideways up to ten
     // times the depth, and points on or behind the camera's plane; the
     // image worked out in f64.
     let mut draws = Draws::new(11);
     for _ in 0..draws.count(200, 1000) {
         draws.next_case();
-        let depth = draws.decades(-3.0, 4.0);
+        let depth = match draws.count(0, 9) {
+            0 => draws.decades(-30.0, -3.0),
+            1 => draws.decades(4.0, 30.0),
+            _ => draws.decades(-3.0, 4.0),
+        };
         let side = draws.in_square() * depth * draws.decades(-2.0, 1.0);
         let p = match draws.count(0, 9) {
             0 => Vec3::new(side.x, side.y, 0.0),

@@ -166,20 +166,29 @@ pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
         Ok(c) => c,
         Err(e) => return cases::unreadable(e),
     };
-    let got: Vec<f32> = cases.iter().map(|c| f(c.a.into(), c.b.into(), c.p.into())).collect();
+    let got: Vec<f32> = cases
+        .iter()
+        .map(|c| f(c.a.into(), c.b.into(), c.p.into()))
+        .collect();
     let check = worst_of(
         cases.iter().zip(&got).map(|(c, &got)| {
             let (a, b, p) = (Vec2::from(c.a), Vec2::from(c.b), Vec2::from(c.p));
             (
                 (got - c.expect).abs() as f64,
-                format!("{}: a = {a}, b = {b}, p = {p}: got {got}, expected {}", c.why, c.expect),
+                format!(
+                    "{}: a = {a}, b = {b}, p = {p}: got {got}, expected {}",
+                    c.why, c.expect
+                ),
             )
         }),
         1e-5,
         "all cases match",
     );
     // Every answer the negative of the right one: the sign.
-    let flipped = cases.iter().zip(&got).all(|(c, g)| (g + c.expect).abs() <= 1e-5);
+    let flipped = cases
+        .iter()
+        .zip(&got)
+        .all(|(c, g)| (g + c.expect).abs() <= 1e-5);
     if !check.passed() && flipped {
         return check.with_symptom(EDGE_SIGN);
     }
@@ -379,18 +388,25 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
         ));
     }
     // A drawn run of tests on a drawn buffer: depths over twelve decades,
-    // ties, zeros, infinities and NaNs, as many as the run draws.
+    // ties, depths one f32 step either side of the stored one, zeros,
+    // infinities and NaNs, as many as the run draws.
     let mut draws = Draws::new(23);
     let size = draws.count(1, 64);
     let (mut theirs, mut ours) = (vec![inf; size], vec![inf; size]);
     for step in 0..draws.count(200, 2000) {
         draws.next_case();
         let index = draws.count(0, size - 1);
-        let z = match draws.count(0, 9) {
-            0 => ours[index],
+        // Next to the stored depth: one f32 step nearer or farther (a
+        // nearer depth by the smallest amount is still nearer).
+        let (stored, step_out) = (ours[index], draws.count(0, 11));
+        let z = match step_out {
+            0 => stored,
             1 => f32::NAN,
             2 => inf,
             3 => 0.0,
+            4 if stored > 0.0 => stored.next_down(),
+            5 if stored > 0.0 && stored < inf => stored.next_up(),
+            6 if stored > 0.0 && stored < inf => stored * (1.0 - 4.0 * f32::EPSILON),
             _ => draws.decades(-6.0, 6.0),
         };
         let want = z < ours[index];

@@ -153,6 +153,16 @@ fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
         (up, 20.0, "up the stack, t_max = 20 past several hits"),
         (down(50.0, 0.0), inf, "beside the stack: a miss"),
         (slant, inf, "slanted through the stack"),
+        (
+            {
+                // A hit at t from 10⁻⁶ to 10⁻⁴, drawn for the run: the
+                // interval is (0, t_max), with no margin at its start.
+                let h = crate::exercises::draws::Draws::new(35).decades(-6.0, -4.0);
+                Ray::new(Vec3::new(0.5, 0.0, -1.0 + h), -Vec3::Z).expect("a ray")
+            },
+            inf,
+            "from just above the top triangle, a hit closer than 10⁻⁴",
+        ),
     ];
     (ReadableBvh::build(&stack), cases)
 }
@@ -280,7 +290,7 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
             (lo.min(*p), hi.max(*p))
         });
     for i in 0..2000u64 {
-        let r = |d| random(34, i, 0, d);
+        let r = |d| random(34 ^ crate::run_seed(), i, 0, d);
         let origin = lo + (hi - lo) * Vec3::new(r(0), r(1), r(2));
         let Ok(ray) = Ray::new(origin, Vec3::new(r(3), r(4), r(5)) * 2.0 - 1.0) else {
             continue;

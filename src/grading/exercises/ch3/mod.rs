@@ -6,9 +6,11 @@ use crate::exercise::Exercise;
 mod bvh;
 mod bvh_deep;
 mod bvh_symptoms;
+mod ray_plane;
 pub mod sah;
 mod triangle_checks;
 pub use bvh::*;
+pub use ray_plane::check_ray_plane;
 pub use sah::{check_sah, SahFn};
 pub use triangle_checks::*;
 

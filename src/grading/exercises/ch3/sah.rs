@@ -91,6 +91,21 @@ fn hand_nodes() -> Vec<HandNode> {
         vec![Vec3::ZERO; 3],
         None,
     ));
+    let mut d = Draws::new(38);
+    // Two unit cubes s apart along x (s from 0.2 to 0.9, drawn): the
+    // children's areas over the node's are 12 / (6 + 4s), between 1 and
+    // 2, so the split costs more than the leaf only with C_trav counted.
+    let s = d.range(0.2, 0.9);
+    let at = d.place_for(1.0, 2.0);
+    nodes.push((
+        "two unit cubes overlapping along x (a split saves less than C_trav)",
+        vec![
+            [at, at + 1.0],
+            [at + v(s, 0.0, 0.0), at + v(1.0 + s, 1.0, 1.0)],
+        ],
+        vec![at + 0.5, at + v(0.5 + s, 0.5, 0.5)],
+        None,
+    ));
     nodes
 }
 

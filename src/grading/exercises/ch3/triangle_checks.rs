@@ -4,7 +4,6 @@
 
 use glam::Vec3;
 
-use crate::cases::{self, v3, V3};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
 use crate::exercise::{Check, Symptom};
@@ -45,7 +44,7 @@ fn uv_f64(p: Vec3, tri: [Vec3; 3]) -> Option<Uv> {
 }
 
 /// Relative error of `got` against `want`, infinite when one is missing.
-fn rel(got: Option<f32>, want: Option<f32>) -> f64 {
+pub(super) fn rel(got: Option<f32>, want: Option<f32>) -> f64 {
     match (got, want) {
         (Some(g), Some(w)) => ((g - w).abs() / w.abs().max(f32::MIN_POSITIVE)) as f64,
         (None, None) => 0.0,
@@ -55,7 +54,10 @@ fn rel(got: Option<f32>, want: Option<f32>) -> f64 {
 
 /// The worst of `(error, which case, what went wrong)`, a NaN counting as
 /// infinite.
-fn check(cases: impl Iterator<Item = (f64, String, Option<Symptom>)>, tolerance: f64) -> Check {
+pub(super) fn check(
+    cases: impl Iterator<Item = (f64, String, Option<Symptom>)>,
+    tolerance: f64,
+) -> Check {
     let (error, (detail, symptom)) = worst(cases.map(|(e, what, s)| (e, (what, s))))
         .unwrap_or_else(|| (0.0, ("all cases match".into(), None)));
     Check {
@@ -97,106 +99,8 @@ pub const UNIT_T: Symptom = Symptom {
 };
 
 /// Whether `g` is `w` to 1e-4, relative to `w` (at least 1).
-fn near(g: f32, w: f32) -> bool {
+pub(super) fn near(g: f32, w: f32) -> bool {
     (g - w).abs() <= 1e-4 * w.abs().max(1.0)
-}
-
-/// A hand-worked plane and ray (`src/grading/cases.toml`): `expect` is
-/// t, left out for a parallel ray.
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct PlaneCase {
-    o: V3,
-    d: V3,
-    n: V3,
-    c: f32,
-    expect: Option<f32>,
-    why: String,
-}
-
-/// Hand-worked planes, a parallel ray, then random cases against the
-/// closed form t = (c - N·o) / (N·d) worked in f64 here (not against
-/// raystep's `ray_plane`, which would check the reference against itself).
-pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
-    let cases: Vec<PlaneCase> = match cases::of("ch3/ray_plane") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    // Drawn rays and planes: at scales from 10⁻³ to 10³, up to 100 times
-    // their size from the origin, N and d of any length from 10⁻³ to 10³.
-    let mut draws = Draws::new(31);
-    let mut drawn = Vec::new();
-    for _ in 0..draws.count(200, 800) {
-        draws.next_case();
-        let scale = draws.decades(-3.0, 3.0);
-        let place = draws.place_for(scale, 2.0);
-        let (o, d, n) = (
-            place + draws.in_cube() * 3.0 * scale,
-            draws.direction() * draws.decades(-3.0, 3.0),
-            draws.direction() * draws.decades(-3.0, 3.0),
-        );
-        // A sixth of the cases with N and d both short: Nᵀd far below
-        // any absolute threshold, and nothing parallel about it.
-        let (d, n) = if draws.unit() < 1.0 / 6.0 {
-            (
-                d.normalize() * draws.decades(-4.0, -2.5),
-                n.normalize() * draws.decades(-4.0, -2.5),
-            )
-        } else {
-            (d, n)
-        };
-        if n.normalize().dot(d.normalize()).abs() > 0.1 {
-            let c = n.dot(place + draws.in_cube() * scale);
-            let f64s = |v: Vec3| v.as_dvec3();
-            let t = (c as f64 - f64s(n).dot(f64s(o))) / f64s(n).dot(f64s(d));
-            drawn.push((o, d, n, c, t));
-        }
-    }
-    // A drawn case's t is known to what the f32 inputs allow: the error of
-    // c - N·o is a few roundings of |c| + |N||o|, which divided by |N·d|
-    // is the scale T of t's rounding. Its error counts relative to
-    // |t| or T/100, whichever is larger.
-    let drawn = drawn.into_iter().map(|(o, d, n, c, t)| {
-        let (n64, o64) = (n.as_dvec3(), o.as_dvec3());
-        let scale = (c.abs() as f64 + n64.length() * o64.length()) / n64.dot(d.as_dvec3()).abs();
-        let got = f(o, d, n, c);
-        let err = match got {
-            Some(g) => (g as f64 - t).abs() / t.abs().max(scale * 1e-2),
-            None => f64::INFINITY,
-        };
-        let symptom = got
-            .filter(|g| near(-g, t as f32) && !near(*g, t as f32))
-            .map(|_| PLANE_SIGN);
-        (
-            err,
-            format!("o {o}, d {d}, N {n}, c {c}: got {got:?}, expected Some({t}) (a drawn case)"),
-            symptom,
-        )
-    });
-    check(
-        cases
-            .into_iter()
-            .map(|case| {
-                let (o, d, n, c, want) = (v3(case.o), v3(case.d), v3(case.n), case.c, case.expect);
-                let got = f(o, d, n, c);
-                let symptom = match (got, want) {
-                    (Some(g), Some(w)) if w != 0.0 && !near(g, w) && near(-g, w) => {
-                        Some(PLANE_SIGN)
-                    }
-                    (Some(_), None) => Some(PARALLEL),
-                    _ => None,
-                };
-                (
-                    rel(got, want),
-                    format!("{}: o {o}, d {d}, N {n}, c {c}: got {got:?}, expected {want:?}", case.why),
-                    symptom,
-                )
-            })
-            .collect::<Vec<_>>()
-            .into_iter()
-            .chain(drawn),
-        1e-4,
-    )
 }
 
 /// Hand-worked points of one triangle, a degenerate triangle, and random
@@ -231,7 +135,22 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
             place + draws.in_cube() * scale,
             place + draws.in_cube() * scale,
         ];
-        let (u, v) = (draws.range(-0.5, 1.1), draws.range(-0.5, 1.1));
+        let (mut u, mut v) = (draws.range(-0.5, 1.1), draws.range(-0.5, 1.1));
+        // A third of them near the origin, where rounding is 10⁻⁶ of the
+        // size: points 10⁻⁴ to 10⁻³ of the way inside or outside an edge.
+        let near_edge = draws.unit() < 1.0 / 3.0;
+        let t = if near_edge { t.map(|q| q - place) } else { t };
+        if near_edge {
+            let (s, m) = (
+                draws.range(0.1, 0.9),
+                draws.sign() * draws.decades(-4.0, -3.0),
+            );
+            (u, v) = match draws.count(0, 2) {
+                0 => (-m, s),
+                1 => (s, -m),
+                _ => (s * (1.0 + m), (1.0 - s) * (1.0 + m)),
+            };
+        }
         let p = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
         // Only well-shaped triangles: on a sliver, rounding decides.
         let sides = (t[1] - t[0])
@@ -242,7 +161,8 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
             continue;
         }
         // Skip points right on an edge, where rounding decides.
-        if u.abs().min(v.abs()).min((1.0 - u - v).abs()) > 1e-3 {
+        let margin = if near_edge { 5e-5 } else { 1e-3 };
+        if u.abs().min(v.abs()).min((1.0 - u - v).abs()) > margin {
             cases.push((p, t, uv_f64(p, t)));
         }
     }
@@ -297,6 +217,28 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
             tri,
             Some((1.0, 0.5, 0.25)),
         ),
+        // On an edge, on the long edge and at a vertex: edges and vertices
+        // belong to the triangle (each u, v exact here).
+        (
+            Vec3::new(1.0, 0.0, 0.0),
+            -Vec3::Z,
+            tri,
+            Some((2.0, 0.5, 0.0)),
+        ),
+        (
+            Vec3::new(1.0, 1.0, 0.0),
+            -Vec3::Z,
+            tri,
+            Some((2.0, 0.5, 0.5)),
+        ),
+        (
+            Vec3::new(0.0, 2.0, 0.0),
+            -Vec3::Z,
+            tri,
+            Some((2.0, 0.0, 1.0)),
+        ),
+        // The origin on the triangle: t = 0, not a hit (t > 0).
+        (Vec3::new(1.0, 0.5, -2.0), -Vec3::Z, tri, None),
         // Behind the origin, outside, parallel, degenerate: no hit.
         (Vec3::new(1.0, 0.5, 0.0), Vec3::Z, tri, None),
         (Vec3::new(3.0, 3.0, 0.0), -Vec3::Z, tri, None),
@@ -333,6 +275,39 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
             None => true,
         };
         if clear && n.dot(d.normalize()).abs() > 0.05 {
+            cases.push((
+                o,
+                d,
+                t,
+                want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
+            ));
+        }
+    }
+    // Grazing rays: 10⁻⁹ to 10⁻⁵ rad off a triangle in the plane z = 0
+    // (the determinant one exact product: small is not zero), at any scale.
+    for _ in 0..draws.count(20, 60) {
+        draws.next_case();
+        let scale = draws.triangle_scale();
+        let t = [
+            draws.in_cube() * scale,
+            draws.in_cube() * scale,
+            draws.in_cube() * scale,
+        ]
+        .map(|q| Vec3::new(q.x, q.y, 0.0));
+        let (u, v) = (draws.range(0.1, 0.45), draws.range(0.1, 0.45));
+        let hit = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
+        let k = draws.decades(-9.0, -5.0);
+        let along = draws.direction();
+        let d = Vec3::new(along.x, along.y, -k) * scale;
+        let tau = draws.range(0.5, 2.0);
+        let o = hit - d * tau;
+        let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
+        let area = (t[1] - t[0]).cross(t[2] - t[0]).length();
+        let clear = match want {
+            Some((_, u, v)) => u.min(v).min(1.0 - u - v) > 1e-3,
+            None => false,
+        };
+        if clear && area > 0.05 * scale * scale {
             cases.push((
                 o,
                 d,

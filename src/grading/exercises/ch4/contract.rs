@@ -39,6 +39,10 @@ pub const NOT_FACING: Symptom = Symptom {
 pub const ZERO_GRADIENT: Symptom = Symptom {
     name: "zero gradient",
 };
+/// A point inside the surface (f ≤ -ε) taken for a hit: f < ε, not |f| < ε.
+pub const INSIDE_HIT: Symptom = Symptom {
+    name: "inside taken for a hit",
+};
 
 /// A distance function that counts its evaluations.
 pub struct Probe {
@@ -75,6 +79,11 @@ pub enum Clause {
     ScaledEpsilon,
     /// The normal (unit length, facing the viewer, -dir where flat).
     Normal,
+    /// A step that lands inside: a hit is |f| < ε, not f < ε.
+    Overshoot,
+    /// A curved surface's normal, where the difference step h matters
+    /// (h = max(ε at p, 10⁻⁴)): hits agree to a few ε, normals to 0.02.
+    Curved,
 }
 
 /// One ray against one wall.
@@ -120,6 +129,30 @@ fn far_ahead_wall(p: Vec3) -> f32 {
 /// gradient points away from a viewer above.
 fn eager_wall(p: Vec3) -> f32 {
     p.z.abs() * (1.0 + 2f32.powi(-16))
+}
+
+/// A wall at z = 0 whose function overstates the distance by half: from
+/// z = 1 the first step lands at z = -1/2, inside (f = -3/4), and every
+/// step after it halves the distance and changes side, exact in f32.
+/// |f| is below 1e-4 first at z = 2^-14, the 15th evaluation; a march
+/// that takes f < ε for a hit stops inside, at the second.
+fn overshooting_wall(p: Vec3) -> f32 {
+    1.5 * p.z
+}
+
+/// A ball of radius 1 6,000 m along x: ε at its surface is 5.7e-3, and
+/// a difference step of 10⁻⁴ vanishes in the rounding of x there.
+fn far_ball(p: Vec3) -> f32 {
+    (p - Vec3::new(6000.0, 0.0, 0.0)).length() - 1.0
+}
+
+/// A ball of radius 4 whose top touches the origin, for a march with ε
+/// far below 10⁻⁴: near the top ε at p is below 10⁻⁶, while f, computed
+/// from a distance near 4, moves in steps of 2.4e-7, so a difference step
+/// of ε alone gives a gradient in steps of a quarter; 10⁻⁴ gives it to
+/// 10⁻³.
+fn low_ball(p: Vec3) -> f32 {
+    (p - Vec3::new(0.0, 0.0, -4.0)).length() - 4.0
 }
 
 /// Flat (zero) below z = 0.5, twice the distance above: the first step
@@ -206,6 +239,27 @@ pub fn cases() -> Vec<Case> {
             down(1.0),
             m,
         ),
+        case(
+            "a wall whose distance function overstates by half: the first step lands inside, at f = -0.75",
+            Clause::Overshoot,
+            overshooting_wall,
+            down(1.0),
+            m,
+        ),
+        case(
+            "a ball of radius 1 at (6000, 0, 0), hit obliquely at (5999.2, 0.6, 0)",
+            Clause::Curved,
+            far_ball,
+            (Vec3::new(5990.0, 0.6, 0.0), Vec3::X),
+            m,
+        ),
+        case(
+            "a ball of radius 4 at (0, 0, -4) with ε = 1e-7, hit near its top at (0.5, 0.3, -0.04)",
+            Clause::Curved,
+            low_ball,
+            (Vec3::new(0.5, 0.3, 3.0), -Vec3::Z),
+            March { epsilon: 1e-7, ..m },
+        ),
     ]
 }
 
@@ -265,6 +319,19 @@ pub fn judge(
         (None, None) => None,
         (Some((t, _)), Some((w, _))) if case.clause == Clause::ScaledEpsilon && t > w => {
             say(Some(FIXED_EPSILON))
+        }
+        (Some((t, _)), Some((w, _))) if case.clause == Clause::Overshoot && t != w => {
+            say(Some(INSIDE_HIT))
+        }
+        (Some((t, n)), Some((w, wn))) if case.clause == Clause::Curved => {
+            // Another order of the same arithmetic may stop elsewhere
+            // within ε (and the rounding of f) of the surface: t to 10⁻³,
+            // and the normal to 0.02, ten times what the truncation and
+            // rounding of a right h can do.
+            let same = (t - w).abs() <= 1e-3 * w.abs().max(1.0) && (n - wn).length() <= 0.02;
+            (!same || over(got.1, normal_calls))
+                .then(|| say(None))
+                .flatten()
         }
         (None, Some(_)) if case.clause == Clause::ScaledEpsilon => say(Some(FIXED_EPSILON)),
         (Some((t, n)), Some((w, wn))) => {

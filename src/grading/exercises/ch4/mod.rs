@@ -15,8 +15,8 @@ use crate::exercise::{Check, Exercise, Symptom};
 mod contract;
 mod scene;
 pub use contract::{
-    Case, Clause, Probe, BUDGET_OFF_BY_ONE, FIXED_EPSILON, IGNORES_MAX_DISTANCE, NOT_FACING,
-    NOT_UNIT, NO_BUDGET, ZERO_GRADIENT,
+    Case, Clause, Probe, BUDGET_OFF_BY_ONE, FIXED_EPSILON, IGNORES_MAX_DISTANCE, INSIDE_HIT,
+    NOT_FACING, NOT_UNIT, NO_BUDGET, ZERO_GRADIENT,
 };
 pub use scene::{check_trace_scene, contract_failure, reference_trace_ray, TraceRayFn};
 
@@ -40,7 +40,12 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 4,
             name: "sphere_trace",
             file: "chapters/ch4-sphere-tracing/exercises/sphere_trace.rs",
-            symptoms: &[NO_BUDGET, BUDGET_OFF_BY_ONE, IGNORES_MAX_DISTANCE],
+            symptoms: &[
+                NO_BUDGET,
+                BUDGET_OFF_BY_ONE,
+                IGNORES_MAX_DISTANCE,
+                INSIDE_HIT,
+            ],
             reference: || check_sphere_trace(reference_trace),
         },
         Exercise {
@@ -62,6 +67,7 @@ pub fn exercises() -> Vec<Exercise> {
                 NOT_UNIT,
                 NOT_FACING,
                 ZERO_GRADIENT,
+                INSIDE_HIT,
             ],
             reference: || check_trace_scene(reference_trace_ray),
         },
@@ -153,7 +159,10 @@ pub fn check_sphere_sdf(f: SdfFn) -> Check {
         let got = f(p, c, r);
         (
             (got - want).abs() as f64,
-            format!("{}: p {p}, centre {c}, radius {r}: got {got}, expected {want}", case.why),
+            format!(
+                "{}: p {p}, centre {c}, radius {r}: got {got}, expected {want}",
+                case.why
+            ),
         )
     }));
     // Drawn spheres from 10⁻³ to 10³ across, up to 10³ times that from the
@@ -294,7 +303,10 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
     }
     // The budget to the evaluation, and the maximum distance: counted.
     let clause = contract::cases().into_iter().find_map(|case| {
-        if !matches!(case.clause, Clause::Budget | Clause::MaxDistance) {
+        if !matches!(
+            case.clause,
+            Clause::Budget | Clause::MaxDistance | Clause::Overshoot
+        ) {
             return None;
         }
         crate::progress(format_args!("calling sphere_trace on {}", case.what));
@@ -368,16 +380,25 @@ pub fn check_gradient_normal(f: NormalFn) -> Check {
         let out = draws.direction();
         let p = centre + out * r * draws.range(0.9, 1.1);
         let h = r * draws.decades(-3.0, -2.0);
-        let sdf = move |q: Vec3| (q - centre).length() - r;
+        // Half of them a bound, not a distance: k times it, k from 1/10 to
+        // 10, whose gradient is k long (the normal is still unit).
+        let k = if draws.unit() < 0.5 {
+            1.0
+        } else {
+            draws.decades(-1.0, 1.0)
+        };
+        let sdf = move |q: Vec3| k * ((q - centre).length() - r);
         let want = gradient_central(&sdf, p, h).normalize();
         let got = f(&sdf, p, h);
         (
             (got - want).length() as f64,
-            format!("a sphere of radius {r} at {centre}, at {p} with h = {h}: got {got}, expected {want}"),
+            format!("{k} × the distance to a sphere of radius {r} at {centre}, at {p} with h = {h}: got {got}, expected {want}"),
         )
     }));
     fold_drawn(&mut error, &mut detail, drawn);
-    let length = f(&sphere, Vec3::new(3.0, 0.0, 0.0), 1e-3).length();
+    // Twice the sphere's distance: a gradient 2 long.
+    let twice = |p: Vec3| 2.0 * sphere(p);
+    let length = f(&twice, Vec3::new(3.0, 0.0, 0.0), 1e-3).length();
     // A NaN length is not unit length either.
     let unit = (length - 1.0).abs() <= 1e-2;
     let symptom = (error > 1e-3 && !unit).then_some(NOT_UNIT);

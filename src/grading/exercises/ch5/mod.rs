@@ -1,11 +1,13 @@
 //! Chapter 5's exercises and how each is graded (the capstone's check is
 //! in `direct.rs`, exercise 5.6's in `solid.rs`, 5.7's in `spot.rs`).
 
+mod area_pdf;
 mod direct;
 mod drawn;
 mod solid;
 mod spot;
 mod symptoms;
+pub use area_pdf::check_area_pdf;
 pub use direct::*;
 pub use solid::check_solid_angle;
 pub use spot::{check_spot, falloff_integral};
@@ -17,18 +19,18 @@ use glam::{Vec2, Vec3};
 
 use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::worst_of;
+use crate::cases::{self, unit, v3, V3};
 use crate::ch5_reflection::light::area::solid_angle_pdf;
 use crate::ch5_reflection::material::lambert::Lambertian;
 use crate::ch5_reflection::radiometry::{spot_flux, triangle_solid_angle};
 use crate::ch5_reflection::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
-use crate::cases::{self, unit, v3, V3};
 use crate::core::sampling::random;
 use crate::exercise::{Check, Exercise, Symptom};
 
 type BrdfFn = fn(Vec3, Vec3, Vec3) -> Vec3;
 type CosineFn = fn(Vec2) -> (Vec3, f32);
 type PointFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
-type AreaPdfFn = fn(f32, Vec3, Vec3, Vec3) -> f32;
+pub(super) type AreaPdfFn = fn(f32, Vec3, Vec3, Vec3) -> f32;
 
 /// Chapter 5's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {
@@ -141,14 +143,24 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
     };
     let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
         let (rho, wo, wi) = (v3(c.rho), unit(c.wo), unit(c.wi));
-        let want = if c.same_side { rho * FRAC_1_PI } else { Vec3::ZERO };
+        let want = if c.same_side {
+            rho * FRAC_1_PI
+        } else {
+            Vec3::ZERO
+        };
         let got = f(rho, wo, wi);
         let err = if want == Vec3::ZERO {
             got.abs().max_element() as f64
         } else {
             rel(got, want)
         };
-        (err, format!("{}: ρ {rho}, ωo {wo}, ωi {wi}: got {got}, expected {want}", c.why))
+        (
+            err,
+            format!(
+                "{}: ρ {rho}, ωo {wo}, ωi {wi}: got {got}, expected {want}",
+                c.why
+            ),
+        )
     }));
     // Drawn albedos (a channel may be 0 or 1) and directions, grazing ones
     // (|z| down to 10⁻⁶) among them.
@@ -277,7 +289,13 @@ pub fn check_point_light(f: PointFn) -> Check {
         Err(e) => return cases::unreadable(e),
     };
     let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
-        let (i, light, p, n, want) = (v3(c.intensity), v3(c.light), v3(c.p), unit(c.n), v3(c.expect));
+        let (i, light, p, n, want) = (
+            v3(c.intensity),
+            v3(c.light),
+            v3(c.p),
+            unit(c.n),
+            v3(c.expect),
+        );
         let got = f(i, light, p, n);
         let err = if want == Vec3::ZERO {
             got.abs().max_element() as f64
@@ -286,7 +304,10 @@ pub fn check_point_light(f: PointFn) -> Check {
         };
         (
             err,
-            format!("{}: I {i}, light at {light}, p {p}, n {n}: got {got}, expected {want}", c.why),
+            format!(
+                "{}: I {i}, light at {light}, p {p}, n {n}: got {got}, expected {want}",
+                c.why
+            ),
         )
     }));
     // Drawn lights and surfaces: distances from 10⁻³ to 10³, up to 10³
@@ -329,91 +350,6 @@ pub fn check_point_light(f: PointFn) -> Check {
     }
 }
 
-/// A hand-worked case of the area-to-solid-angle density
-/// (`src/grading/cases.toml`).
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct AreaPdfCase {
-    pdf_area: f32,
-    x: V3,
-    y: V3,
-    n_light: V3,
-    expect: f32,
-    why: String,
-}
-
-/// pdf_A d²/|cos θl| for hand-worked cases, and 0 edge-on.
-pub fn check_area_pdf(f: AreaPdfFn) -> Check {
-    let cases: Vec<AreaPdfCase> = match cases::of("ch5/area_pdf") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
-        let (pdf, x, y, n, want) = (c.pdf_area, v3(c.x), v3(c.y), unit(c.n_light), c.expect);
-        let got = f(pdf, x, y, n);
-        let err = if want == 0.0 {
-            got.abs() as f64
-        } else {
-            ((got - want) / want).abs() as f64
-        };
-        (
-            err,
-            format!("{}: pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}", c.why),
-        )
-    }));
-    // Drawn points and lights: distances from 10⁻³ to 10³, up to 10³ times
-    // that from the origin, either face, pdfs over six decades, and lights
-    // seen exactly edge-on.
-    let mut draws = Draws::new(53);
-    let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
-        draws.next_case();
-        let scale = draws.decades(-3.0, 3.0);
-        let x = draws.place_for(scale, 3.0);
-        let axis = draws.count(0, 2);
-        let mut offset = draws.direction();
-        let mut n = draws.direction();
-        if draws.unit() < 0.15 {
-            // Edge-on: the light's normal and the way to it on two
-            // different axes.
-            offset = Vec3::ZERO;
-            offset[axis] = draws.sign();
-            n = Vec3::ZERO;
-            n[(axis + 1) % 3] = draws.sign();
-        }
-        let y = x + offset * scale;
-        let pdf = draws.decades(-3.0, 3.0);
-        let to = (y - x).as_dvec3();
-        let cos = (n.as_dvec3().dot(to) / to.length()).abs();
-        let want = if cos == 0.0 {
-            0.0
-        } else {
-            pdf as f64 * to.length_squared() / cos
-        };
-        let got = f(pdf, x, y, n);
-        let err = if want == 0.0 {
-            f64::from(got.abs())
-        } else if cos < 1e-3 {
-            // So grazing that rounding decides: only a value of the right
-            // size.
-            (f64::from(got) - want).abs() / want * 1e-4
-        } else {
-            (f64::from(got) - want).abs() / want
-        };
-        (
-            err,
-            format!("pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}"),
-        )
-    }));
-    fold_drawn(&mut error, &mut detail, drawn);
-    Check {
-        error,
-        tolerance: 1e-4,
-        detail,
-        images: None,
-        symptom: (error > 1e-4).then(|| area_pdf_symptom(f)).flatten(),
-    }
-}
-
 /// What a failing Lambertian BRDF got wrong, from two probes.
 fn lambert_symptom(f: BrdfFn) -> Option<Symptom> {
     let rho = Vec3::new(0.9, 0.5, 0.1);
@@ -439,21 +375,6 @@ fn point_symptom(f: PointFn) -> Option<Symptom> {
         Some(POINT_BEHIND)
     } else if rel(above, i / 4.0) > 1e-4 {
         Some(INVERSE_SQUARE)
-    } else {
-        None
-    }
-}
-
-/// What a failing area-to-solid-angle conversion got wrong: a light seen
-/// from behind (the same density expected), or straight above.
-fn area_pdf_symptom(f: AreaPdfFn) -> Option<Symptom> {
-    let y = Vec3::new(0.0, 0.0, 2.0);
-    let front = f(0.5, Vec3::ZERO, y, -Vec3::Z);
-    let back = f(0.5, Vec3::ZERO, y, Vec3::Z);
-    if back.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) && front > 0.0 {
-        Some(PDF_SIGN)
-    } else if ((front - 2.0) / 2.0).abs() > 1e-4 || ((back - 2.0) / 2.0).abs() > 1e-4 {
-        Some(PDF_JACOBIAN)
     } else {
         None
     }

@@ -23,6 +23,7 @@
 use glam::{DVec3, Vec2, Vec3};
 
 use super::super::images;
+use super::open::{self, LIGHT_FROM_BEHIND, UNBOUNDED_THROUGHPUT};
 use super::{reference_path, reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
 use crate::ch1_projection::camera::Camera;
 use crate::core::sampling::random;
@@ -86,8 +87,10 @@ pub const CORNELL_DIFFERS: Symptom = Symptom {
 };
 
 /// Every symptom [`check_path_radiance`] can name.
-pub const SYMPTOMS: [Symptom; 11] = [
+pub const SYMPTOMS: [Symptom; 13] = [
     NO_ROULETTE,
+    UNBOUNDED_THROUGHPUT,
+    LIGHT_FROM_BEHIND,
     DEPTH_CAP,
     NO_FIRST_EMISSION,
     DOUBLE_EMISSION,
@@ -122,6 +125,10 @@ pub struct FurnaceRun {
     pub tally: Tally,
     /// How many paths made each number of bounces (the last entry: more).
     pub lengths: Vec<u64>,
+    /// The largest (radiance − 1) per light sample found of one path (max
+    /// channel): in a furnace of Le = 1, each sample brings β ρ, so this
+    /// is ρ times the path's mean throughput at its samples.
+    pub most_per_sample: f64,
 }
 
 impl FurnaceRun {
@@ -137,6 +144,7 @@ impl FurnaceRun {
         a.shadow_rays += b.shadow_rays;
         a.below += b.below;
         a.over_budget |= b.over_budget;
+        self.most_per_sample = self.most_per_sample.max(o.most_per_sample);
         if self.lengths.is_empty() {
             self.lengths = o.lengths;
         } else {
@@ -179,8 +187,14 @@ pub fn trace_furnace(f: PathFn, scene: &PathScene, n: u64, seed: u64) -> Furnace
                 reset_tally();
                 let l = f(scene, FURNACE_ORIGIN, dir, &mut rng);
                 let t = tally();
+                let per_sample = (f64::from(l.max_element()) - 1.0) / f64::from(t.lights_found);
                 let one = FurnaceRun {
                     tally: t,
+                    most_per_sample: if t.lights_found > 0 && per_sample.is_finite() {
+                        per_sample
+                    } else {
+                        0.0
+                    },
                     ..FurnaceRun::default()
                 };
                 acc = acc.merge(one);
@@ -388,6 +402,17 @@ pub fn check_path_radiance(f: PathFn) -> Check {
     let scene = PathScene::furnace(albedo, le);
     let furnace = trace_furnace(f, &scene, FURNACE_PATHS, 611 ^ crate::run_seed());
     let (fz, fdetail, fsymptom) = judge_furnace_of(f, &furnace, FURNACE_PATHS, (albedo, le));
+    if fz <= 5.0 {
+        if let Some((detail, symptom)) = open::contract_failure(f) {
+            return Check {
+                error: 1e3,
+                tolerance: 5.0,
+                detail: format!("{fdetail}; but in {detail}"),
+                images: None,
+                symptom: Some(symptom),
+            };
+        }
+    }
     let box_check = cornell(f);
     let error = fz.max(box_check.error);
     let (detail, symptom) = if fz > 5.0 {

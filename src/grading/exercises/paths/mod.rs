@@ -23,6 +23,7 @@ use crate::ch5_reflection::world::World;
 
 mod check;
 mod furnace;
+mod open;
 
 pub use check::*;
 use furnace::Furnace;

@@ -1,0 +1,119 @@
+//! Exercise 5.4, a light's area density as a solid-angle one: hand-worked
+//! cases from `src/grading/cases.toml`, then drawn points and lights over
+//! every scale, edge-on and grazing.
+
+use glam::Vec3;
+
+use super::{AreaPdfFn, PDF_JACOBIAN, PDF_SIGN};
+use crate::cases::{self, unit, v3, V3};
+use crate::exercise::{Check, Symptom};
+use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
+use crate::exercises::worst_of;
+
+/// A hand-worked case of the area-to-solid-angle density
+/// (`src/grading/cases.toml`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AreaPdfCase {
+    pdf_area: f32,
+    x: V3,
+    y: V3,
+    n_light: V3,
+    expect: f32,
+    why: String,
+}
+
+/// pdf_A d²/|cos θl| for hand-worked cases, and 0 edge-on.
+pub fn check_area_pdf(f: AreaPdfFn) -> Check {
+    let cases: Vec<AreaPdfCase> = match cases::of("ch5/area_pdf") {
+        Ok(c) => c,
+        Err(e) => return cases::unreadable(e),
+    };
+    let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
+        let (pdf, x, y, n, want) = (c.pdf_area, v3(c.x), v3(c.y), unit(c.n_light), c.expect);
+        let got = f(pdf, x, y, n);
+        let err = if want == 0.0 {
+            got.abs() as f64
+        } else {
+            ((got - want) / want).abs() as f64
+        };
+        (
+            err,
+            format!(
+                "{}: pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}",
+                c.why
+            ),
+        )
+    }));
+    // Drawn points and lights: distances from 10⁻³ to 10³, up to 10³ times
+    // that from the origin, either face, pdfs over six decades, lights
+    // seen exactly edge-on, and lights seen at grazing angles.
+    let mut draws = Draws::new(53);
+    let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
+        draws.next_case();
+        let scale = draws.decades(-3.0, 3.0);
+        let x = draws.place_for(scale, 3.0);
+        let axis = draws.count(0, 2);
+        let mut offset = draws.direction();
+        let mut n = draws.direction();
+        let kind = draws.unit();
+        if kind < 0.15 {
+            // Edge-on: the light's normal and the way to it on two
+            // different axes.
+            offset = Vec3::ZERO;
+            offset[axis] = draws.sign();
+            n = Vec3::ZERO;
+            n[(axis + 1) % 3] = draws.sign();
+        } else if kind < 0.3 {
+            // Grazing, not edge-on: |cos θl| from 10⁻⁵ to 10⁻³.
+            let tilt = draws.sign() * draws.decades(-5.0, -3.0);
+            n = (offset.any_orthonormal_vector() + offset * tilt).normalize();
+        }
+        let y = x + offset * scale;
+        let pdf = draws.decades(-3.0, 3.0);
+        let to = (y - x).as_dvec3();
+        let cos = (n.as_dvec3().dot(to) / to.length()).abs();
+        let want = if cos == 0.0 {
+            0.0
+        } else {
+            pdf as f64 * to.length_squared() / cos
+        };
+        let got = f(pdf, x, y, n);
+        // The error relative to what rounding allows: 10⁻⁴, plus what an
+        // f32 cosine's own rounding (a few 10⁻⁸, here 10⁻⁶ to be generous)
+        // does to 1/cos at grazing angles: up to 10% at |cos| = 10⁻⁵, so a
+        // density of 0 short of edge-on fails.
+        let err = if want == 0.0 {
+            f64::from(got.abs())
+        } else {
+            (f64::from(got) - want).abs() / want * 1e-4 / (1e-4 + 1e-6 / cos)
+        };
+        (
+            err,
+            format!("pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
+    Check {
+        error,
+        tolerance: 1e-4,
+        detail,
+        images: None,
+        symptom: (error > 1e-4).then(|| area_pdf_symptom(f)).flatten(),
+    }
+}
+
+/// What a failing area-to-solid-angle conversion got wrong: a light seen
+/// from behind (the same density expected), or straight above.
+fn area_pdf_symptom(f: AreaPdfFn) -> Option<Symptom> {
+    let y = Vec3::new(0.0, 0.0, 2.0);
+    let front = f(0.5, Vec3::ZERO, y, -Vec3::Z);
+    let back = f(0.5, Vec3::ZERO, y, Vec3::Z);
+    if back.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) && front > 0.0 {
+        Some(PDF_SIGN)
+    } else if ((front - 2.0) / 2.0).abs() > 1e-4 || ((back - 2.0) / 2.0).abs() > 1e-4 {
+        Some(PDF_JACOBIAN)
+    } else {
+        None
+    }
+}

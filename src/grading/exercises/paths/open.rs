@@ -1,0 +1,125 @@
+//! The path capstone's contract clauses that neither the closed furnace's
+//! mean nor the Cornell box can show: roulette that keeps a survivor's
+//! throughput bounded (a bright furnace), and light samples from behind
+//! the surface left out (an open scene, where nothing else stops them).
+
+use glam::{Vec2, Vec3};
+
+use super::{trace_furnace, PathFn, PathScene};
+use crate::ch1_projection::camera::Camera;
+use crate::core::sampling::random;
+use crate::exercise::Symptom;
+use crate::scene::Scene;
+
+/// Roulette whose survival probability does not follow the throughput:
+/// survivors' throughput grows without bound in a bright furnace.
+pub const UNBOUNDED_THROUGHPUT: Symptom = Symptom {
+    name: "survival not taken from the throughput",
+};
+
+/// A light sample from below the surface counted (negative light).
+pub const LIGHT_FROM_BEHIND: Symptom = Symptom {
+    name: "a light sample from behind the surface counted",
+};
+
+/// The first of these clauses `f` breaks: what was seen, and its symptom.
+pub fn contract_failure(f: PathFn) -> Option<(String, Symptom)> {
+    unbounded_throughput(f)
+        .map(|d| (d, UNBOUNDED_THROUGHPUT))
+        .or_else(|| light_from_behind(f).map(|d| (d, LIGHT_FROM_BEHIND)))
+}
+
+/// Paths traced in the bright furnace of [`unbounded_throughput`].
+const BRIGHT_PATHS: u64 = 20_000;
+
+/// Whether roulette keeps a survivor's throughput bounded: in a grey
+/// furnace of albedo ρ from 0.85 to 0.9 (drawn for the run) and Le = 1,
+/// each light sample found brings β ρ, so a path's radiance less 1, per
+/// sample, is ρ times its mean throughput there. Survival taken from the
+/// throughput (q = max β, or the bounce's own f cos θ / pdf, capped at
+/// 0.9 or above or not at all, from any bounce on) keeps β at most about
+/// 1; a fixed q below ρ lets it grow as (ρ/q)^k, which 20,000 paths show
+/// (a fixed 0.8 at ρ = 0.85 makes a mean of 2.3 by the 25th bounce,
+/// reached by 75 paths in 20,000). Past a mean of 2: what was seen.
+pub fn unbounded_throughput(f: PathFn) -> Option<String> {
+    let albedo = crate::exercises::draws::Draws::new(65).range(0.85, 0.9);
+    let scene = PathScene::furnace(albedo, Vec3::ONE);
+    let run = trace_furnace(f, &scene, BRIGHT_PATHS, 613 ^ crate::run_seed());
+    let mean_beta = run.most_per_sample / f64::from(albedo);
+    (mean_beta > 2.0).then(|| {
+        format!(
+            "a furnace of albedo {albedo:.3} and Le = 1, where every light sample brings β ρ: \
+             one of {BRIGHT_PATHS} paths had a mean throughput of {mean_beta:.1} at its light \
+             samples (a survival probability taken from the throughput keeps it at most about 1)"
+        )
+    })
+}
+
+/// A floor seen from above and, beside it and below its plane, a lamp
+/// facing up: from every point of the floor the lamp lies below the
+/// horizon (cos θ < 0), and no surface stands in between to stop a
+/// shadow ray, so only the path's own test keeps that light out.
+const OPEN_FLOOR: &str = r#"
+[camera]
+eye = [0.0, 3.0, 3.0]
+target = [0.0, 0.0, 0.0]
+fov = 40.0
+width = 24
+height = 24
+
+[[materials]]
+name = "floor"
+reflectance = [0.8, 0.8, 0.8]
+
+[[materials]]
+name = "glow"
+reflectance = [0.0, 0.0, 0.0]
+emission = [5.0, 5.0, 5.0]
+
+[[objects]]
+shape = "rectangle"
+size = [2.0, 2.0]
+rotate = { axis = [1.0, 0.0, 0.0], degrees = -90.0 }
+material = "floor"
+
+[[objects]]
+shape = "rectangle"
+size = [1.0, 1.0]
+rotate = { axis = [1.0, 0.0, 0.0], degrees = -90.0 }
+translate = [2.0, -0.5, 0.0]
+material = "glow"
+"#;
+
+/// Whether `f` lets light in from below the surface: in [`OPEN_FLOOR`],
+/// every path's radiance is a sum of non-negative terms, so a negative
+/// channel means a light sample with cos θ < 0 was counted.
+pub fn light_from_behind(f: PathFn) -> Option<String> {
+    let scene =
+        Scene::from_text(OPEN_FLOOR, "open-floor").expect("the open floor is a valid scene");
+    let camera = Camera::of(&scene);
+    let paths = PathScene::new(&scene);
+    let seed = 614 ^ crate::run_seed();
+    crate::progress(format_args!(
+        "calling path_radiance on a floor lit only from below its horizon"
+    ));
+    for y in 0..camera.height {
+        for x in 0..camera.width {
+            let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
+            let pixel = u64::from(y * camera.width + x);
+            let mut dim = 0u64;
+            let mut rng = || {
+                dim += 1;
+                random(seed, pixel, 0, dim).min(1.0 - f32::EPSILON)
+            };
+            let l = f(&paths, ray.origin, ray.dir, &mut rng);
+            if l.min_element() < -1e-6 {
+                return Some(format!(
+                    "a floor lit by a lamp below its horizon (nothing between them): pixel ({x}, {y}) \
+                     got {l}, negative light; a light sample with cos θ ≤ 0 at the surface \
+                     brings nothing"
+                ));
+            }
+        }
+    }
+    None
+}
