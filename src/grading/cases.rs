@@ -44,37 +44,75 @@ fn line_of(text: &str, id: &str, k: usize) -> usize {
         .map_or(0, |(at, _)| line_at(text, at))
 }
 
+/// One hand-worked case: what it is about (its `why`, shown when it
+/// fails) and the rest of its table, read as the check's own kind.
+#[derive(Debug)]
+pub struct Case<T> {
+    /// What the case is about.
+    pub why: String,
+    /// Its inputs (and expected value), as the check reads them.
+    pub case: T,
+}
+
 /// The hand-worked cases of exercise `id` (`chN/name`), one per
-/// `[["chN/name"]]` table of the built-in file, each read as a `T` (whose
-/// fields are the table's keys). An error names the file, the line and
-/// what is wrong.
-pub fn of<T: DeserializeOwned>(id: &str) -> Result<Vec<T>, String> {
+/// `[["chN/name"]]` table of the built-in file, each with its `why` and
+/// the rest read as a `T` (whose fields are the table's other keys). An
+/// error names the file, the line and what is wrong.
+pub fn of<T: DeserializeOwned>(id: &str) -> Result<Vec<Case<T>>, String> {
     read(table().map_err(str::to_string)?, TEXT, id)
 }
 
 /// [`of`] on a file's `text` (a teacher's draft, a test's).
-pub fn of_text<T: DeserializeOwned>(text: &str, id: &str) -> Result<Vec<T>, String> {
+pub fn of_text<T: DeserializeOwned>(text: &str, id: &str) -> Result<Vec<Case<T>>, String> {
     let parsed: toml::Table = toml::from_str(text).map_err(|e| toml_error(PATH, text, &e))?;
     read(&parsed, text, id)
 }
 
-fn read<T: DeserializeOwned>(all: &toml::Table, text: &str, id: &str) -> Result<Vec<T>, String> {
+fn read<T: DeserializeOwned>(
+    all: &toml::Table,
+    text: &str,
+    id: &str,
+) -> Result<Vec<Case<T>>, String> {
     let Some(list) = all.get(id).and_then(toml::Value::as_array) else {
         return Err(format!("{PATH}: no [[\"{id}\"]] cases"));
     };
+    let one = |value: &toml::Value| {
+        let mut table = value.as_table().cloned().unwrap_or_default();
+        let why = match table.remove("why") {
+            Some(toml::Value::String(why)) => why,
+            _ => return Err("no `why = \"…\"` (what the case is about)".to_string()),
+        };
+        let case = T::deserialize(toml::Value::Table(table))
+            .map_err(|e| e.message().trim_end().to_string())?;
+        Ok(Case { why, case })
+    };
     list.iter()
         .enumerate()
-        .map(|(k, case)| {
-            T::deserialize(case.clone()).map_err(|e| {
+        .map(|(k, value)| {
+            one(value).map_err(|e| {
                 format!(
-                    "{PATH}: line {}: case {} of {id}: {}",
+                    "{PATH}: line {}: case {} of {id}: {e}",
                     line_of(text, id, k),
-                    k + 1,
-                    e.message().trim_end()
+                    k + 1
                 )
             })
         })
         .collect()
+}
+
+/// The worst of exercise `id`'s hand-worked cases as `judge` scores them
+/// (`(error, what it saw)`; a NaN counts as infinite), the detail led by
+/// the case's `why`; `(0, "all cases match")` when none is off. `Err`: the
+/// verdict for cases that do not read ([`unreadable`]).
+pub fn worst<T: DeserializeOwned>(
+    id: &str,
+    mut judge: impl FnMut(&T) -> (f64, String),
+) -> Result<(f64, String), Check> {
+    let cases = of::<T>(id).map_err(unreadable)?;
+    Ok(super::exercises::worst_of(cases.iter().map(|c| {
+        let (error, what) = judge(&c.case);
+        (error, format!("{}: {what}", c.why))
+    })))
 }
 
 /// What is wrong with the built-in file ([`problems_in`]).

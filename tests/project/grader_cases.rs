@@ -37,24 +37,27 @@ fn every_check_that_reads_cases_reads_them_and_passes_the_reference() {
 
 #[test]
 fn a_case_that_does_not_read_is_named_by_file_line_and_exercise() {
-    let text = "[[\"ch5/spot\"]]\ninner = 0.1\n\n[[\"ch5/spot\"]]\ninner = \"wide\"\n";
+    let first = "[[\"ch5/spot\"]]\nwhy = \"soft\"\ninner = 0.1\n";
+    let text = format!("{first}\n[[\"ch5/spot\"]]\nwhy = \"wide\"\ninner = \"wide\"\n");
     // Read as maps of numbers, the second table fails: "wide" is no number.
     type Numbers = std::collections::BTreeMap<String, f64>;
-    let err = cases::of_text::<Numbers>(text, "ch5/spot").unwrap_err();
+    let err = cases::of_text::<Numbers>(&text, "ch5/spot").unwrap_err();
     assert!(
-        err.starts_with("src/grading/cases.toml: line 4: case 2 of ch5/spot:")
+        err.starts_with("src/grading/cases.toml: line 5: case 2 of ch5/spot:")
             && err.contains("expected f64"),
         "{err}"
     );
-    assert_eq!(
-        cases::of_text::<Numbers>(&text[..26], "ch5/spot")
-            .unwrap()
-            .len(),
-        1
-    );
+    // The first alone reads, its `why` apart from its inputs.
+    let read = cases::of_text::<Numbers>(first, "ch5/spot").unwrap();
+    assert_eq!(read.len(), 1);
+    assert_eq!(read[0].why, "soft");
+    assert_eq!(read[0].case.get("inner"), Some(&0.1));
+    // A case that does not say what it is about.
+    let err = cases::of_text::<Numbers>("[[\"ch5/spot\"]]\ninner = 0.1\n", "ch5/spot").unwrap_err();
+    assert!(err.contains("line 1: case 1 of ch5/spot: no `why"), "{err}");
     let err = cases::of_text::<Numbers>("x = ", "ch5/spot").unwrap_err();
     assert!(err.starts_with("src/grading/cases.toml: line 1:"), "{err}");
-    let err = cases::of_text::<Numbers>(text, "ch5/lambert_brdf").unwrap_err();
+    let err = cases::of_text::<Numbers>(&text, "ch5/lambert_brdf").unwrap_err();
     assert!(err.contains("no [[\"ch5/lambert_brdf\"]] cases"), "{err}");
 }
 

@@ -302,28 +302,24 @@ struct WeightCase {
     pdf_f: f64,
     pdf_g: f64,
     expect: f64,
-    why: String,
 }
 
 /// The weight against hand values and extremes, the two weights summing
 /// to one, and an unbiased two-strategy MIS estimate of ∫₀¹ 3x² dx = 1
 /// (uniform sampling, pdf 1, and sampling by 2x, pdf 2x).
 pub fn check_mis_weight(f: WeightFn) -> Check {
-    let cases: Vec<WeightCase> = match cases::of("ch6/mis_weight") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
+    let hand = cases::worst("ch6/mis_weight", |c: &WeightCase| {
         let (a, b, want) = (c.pdf_f, c.pdf_g, c.expect);
         let got = f(a, b);
         (
             (got - want).abs(),
-            format!(
-                "{}: pdf_f {a:e}, pdf_g {b:e}: got {got}, expected {want}",
-                c.why
-            ),
+            format!("pdf_f {a:e}, pdf_g {b:e}: got {got}, expected {want}"),
         )
-    }));
+    });
+    let (mut error, mut detail) = match hand {
+        Ok(w) => w,
+        Err(check) => return check,
+    };
     // Drawn densities over 400 decades, a tenth of them 0, in a number of
     // calls that changes from run to run.
     let mut draws = Draws::new(63);

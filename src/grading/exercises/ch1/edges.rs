@@ -6,7 +6,7 @@
 use glam::{DVec3, Vec2, Vec3};
 
 use super::{BEHIND_DRAWN, DROPPED, MIRRORED, NOT_CLIPPED, ON_PLANE, ORDER, WRONG_CUT};
-use crate::cases::{self, v3, V3};
+use crate::cases::{self, v3, Case, V3};
 use crate::ch1_projection::camera::{project_pinhole, Camera, CameraDesc};
 use crate::ch1_projection::wireframe::{clip_to_near, NEAR};
 use crate::core::draw;
@@ -63,7 +63,6 @@ struct ClauseCase {
     a: V3,
     b: V3,
     near: f32,
-    why: String,
 }
 
 /// A camera at the origin looking down -z, 90° field of view, 200 × 200:
@@ -98,12 +97,12 @@ fn rel(p: Vec2, q: Vec2) -> f64 {
 // off by more than 1.
 fn clauses(f: EdgeFn) -> Check {
     let camera = origin_camera();
-    let cases: Vec<ClauseCase> = match cases::of("ch1/draw_edges") {
+    let cases: Vec<Case<ClauseCase>> = match cases::of("ch1/draw_edges") {
         Ok(c) => c,
         Err(e) => return cases::unreadable(e),
     };
-    for (k, case) in cases.iter().enumerate() {
-        let (kind, a, b, near, what) = (case.kind, v3(case.a), v3(case.b), case.near, &case.why);
+    for (k, Case { why: what, case }) in cases.iter().enumerate() {
+        let (kind, a, b, near) = (case.kind, v3(case.a), v3(case.b), case.near);
         crate::progress(format_args!(
             "calling draw_edges on clause case {k}: {a} to {b}, near {near}"
         ));

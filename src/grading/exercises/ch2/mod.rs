@@ -157,30 +157,32 @@ struct EdgeCase {
     b: [f32; 2],
     p: [f32; 2],
     expect: f32,
-    why: String,
 }
 
 /// Compares an edge function with values worked out by hand.
 pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
-    let cases: Vec<EdgeCase> = match cases::of("ch2/edge_function") {
+    let cases: Vec<cases::Case<EdgeCase>> = match cases::of("ch2/edge_function") {
         Ok(c) => c,
         Err(e) => return cases::unreadable(e),
     };
     let got: Vec<f32> = cases
         .iter()
-        .map(|c| f(c.a.into(), c.b.into(), c.p.into()))
+        .map(|c| f(c.case.a.into(), c.case.b.into(), c.case.p.into()))
         .collect();
     let check = worst_of(
-        cases.iter().zip(&got).map(|(c, &got)| {
-            let (a, b, p) = (Vec2::from(c.a), Vec2::from(c.b), Vec2::from(c.p));
-            (
-                (got - c.expect).abs() as f64,
-                format!(
-                    "{}: a = {a}, b = {b}, p = {p}: got {got}, expected {}",
-                    c.why, c.expect
-                ),
-            )
-        }),
+        cases
+            .iter()
+            .zip(&got)
+            .map(|(cases::Case { why, case: c }, &got)| {
+                let (a, b, p) = (Vec2::from(c.a), Vec2::from(c.b), Vec2::from(c.p));
+                (
+                    (got - c.expect).abs() as f64,
+                    format!(
+                        "{why}: a = {a}, b = {b}, p = {p}: got {got}, expected {}",
+                        c.expect
+                    ),
+                )
+            }),
         1e-5,
         "all cases match",
     );
@@ -188,7 +190,7 @@ pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
     let flipped = cases
         .iter()
         .zip(&got)
-        .all(|(c, g)| (g + c.expect).abs() <= 1e-5);
+        .all(|(c, g)| (g + c.case.expect).abs() <= 1e-5);
     if !check.passed() && flipped {
         return check.with_symptom(EDGE_SIGN);
     }

@@ -19,14 +19,13 @@ struct PlaneCase {
     n: V3,
     c: f32,
     expect: Option<f32>,
-    why: String,
 }
 
 /// Hand-worked planes, a parallel ray, then random cases against the
 /// closed form t = (c - N·o) / (N·d) worked in f64 here (not against
 /// raystep's `ray_plane`, which would check the reference against itself).
 pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
-    let cases: Vec<PlaneCase> = match cases::of("ch3/ray_plane") {
+    let cases: Vec<cases::Case<PlaneCase>> = match cases::of("ch3/ray_plane") {
         Ok(c) => c,
         Err(e) => return cases::unreadable(e),
     };
@@ -102,7 +101,7 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
     check(
         cases
             .into_iter()
-            .map(|case| {
+            .map(|cases::Case { why, case }| {
                 let (o, d, n, c, want) = (v3(case.o), v3(case.d), v3(case.n), case.c, case.expect);
                 let got = f(o, d, n, c);
                 let symptom = match (got, want) {
@@ -114,10 +113,7 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
                 };
                 (
                     rel(got, want),
-                    format!(
-                        "{}: o {o}, d {d}, N {n}, c {c}: got {got:?}, expected {want:?}",
-                        case.why
-                    ),
+                    format!("{why}: o {o}, d {d}, N {n}, c {c}: got {got:?}, expected {want:?}"),
                     symptom,
                 )
             })

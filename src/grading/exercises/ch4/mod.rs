@@ -4,7 +4,6 @@ use glam::Vec3;
 
 use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::images;
-use super::worst_of;
 use crate::cases::{self, unit, v3, V3};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch4_implicit_surfaces::march::{self, March};
@@ -123,7 +122,6 @@ struct SdfCase {
     centre: V3,
     radius: f32,
     expect: f32,
-    why: String,
 }
 
 /// A hand-worked ray for the sphere-tracing loop: `expect` is t, left out
@@ -135,7 +133,6 @@ struct TraceCase {
     o: V3,
     d: V3,
     expect: Option<f32>,
-    why: String,
 }
 
 /// A hand-worked normal.
@@ -145,26 +142,22 @@ struct NormalCase {
     sdf: Shape,
     p: V3,
     expect: V3,
-    why: String,
 }
 
 /// The sphere's SDF against values worked out by hand.
 pub fn check_sphere_sdf(f: SdfFn) -> Check {
-    let cases: Vec<SdfCase> = match cases::of("ch4/sphere_sdf") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|case| {
+    let hand = cases::worst("ch4/sphere_sdf", |case: &SdfCase| {
         let (p, c, r, want) = (v3(case.p), v3(case.centre), case.radius, case.expect);
         let got = f(p, c, r);
         (
             (got - want).abs() as f64,
-            format!(
-                "{}: p {p}, centre {c}, radius {r}: got {got}, expected {want}",
-                case.why
-            ),
+            format!("p {p}, centre {c}, radius {r}: got {got}, expected {want}"),
         )
-    }));
+    });
+    let (mut error, mut detail) = match hand {
+        Ok(w) => w,
+        Err(check) => return check,
+    };
     // Drawn spheres from 10⁻³ to 10³ across, up to 10³ times that from the
     // origin, points inside, on and outside: to 10⁻⁵ of the radius and
     // the distance to the centre (what rounding allows).
@@ -219,11 +212,7 @@ pub const CENTRE_IGNORED: Symptom = Symptom {
 pub fn check_sphere_trace(f: TraceFn) -> Check {
     let sphere = |p: Vec3| sd_sphere(p, 1.0);
     let eps = 1e-4;
-    let cases: Vec<TraceCase> = match cases::of("ch4/sphere_trace") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    let (error, detail) = worst_of(cases.into_iter().map(|case| {
+    let hand = cases::worst("ch4/sphere_trace", |case: &TraceCase| {
         let sdf = |p: Vec3| case.sdf.distance(p);
         let (o, d, want) = (v3(case.o), v3(case.d), case.expect);
         crate::progress(format_args!(
@@ -237,9 +226,13 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         };
         (
             err,
-            format!("{}: ray from {o} along {d}: got {got:?}, expected {want:?}", case.why),
+            format!("ray from {o} along {d}: got {got:?}, expected {want:?}"),
         )
-    }));
+    });
+    let (error, detail) = match hand {
+        Ok(w) => w,
+        Err(check) => return check,
+    };
     // Drawn spheres from 10⁻² to 10² across, up to 100 times that from the
     // origin, ε a ten-thousandth of the radius, rays towards them (a hit
     // within 2ε/cos θ of the true one) and away (a miss).
@@ -354,19 +347,19 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
 /// exact normals.
 pub fn check_gradient_normal(f: NormalFn) -> Check {
     let sphere = |p: Vec3| sd_sphere(p - Vec3::new(1.0, 0.0, 0.0), 2.0);
-    let cases: Vec<NormalCase> = match cases::of("ch4/gradient_normal") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|case| {
+    let hand = cases::worst("ch4/gradient_normal", |case: &NormalCase| {
         let sdf = |p: Vec3| case.sdf.distance(p);
         let (p, want) = (v3(case.p), unit(case.expect));
         let got = f(&sdf, p, 1e-3);
         (
             (got - want).length() as f64,
-            format!("{}: at {p}: got {got}, expected {want}", case.why),
+            format!("at {p}: got {got}, expected {want}"),
         )
-    }));
+    });
+    let (mut error, mut detail) = match hand {
+        Ok(w) => w,
+        Err(check) => return check,
+    };
     // Drawn spheres from 10⁻² to 10² across, up to 10 times that from the
     // origin, points near their surface, h from 10⁻³ to 10⁻² of the radius,
     // half of them scaled (a bound whose gradient is not unit length),

@@ -8,7 +8,6 @@ use super::{AreaPdfFn, PDF_JACOBIAN, PDF_SIGN};
 use crate::cases::{self, unit, v3, V3};
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
-use crate::exercises::worst_of;
 
 /// A hand-worked case of the area-to-solid-angle density
 /// (`src/grading/cases.toml`).
@@ -20,16 +19,11 @@ struct AreaPdfCase {
     y: V3,
     n_light: V3,
     expect: f32,
-    why: String,
 }
 
 /// pdf_A d²/|cos θl| for hand-worked cases, and 0 edge-on.
 pub fn check_area_pdf(f: AreaPdfFn) -> Check {
-    let cases: Vec<AreaPdfCase> = match cases::of("ch5/area_pdf") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
+    let worst = cases::worst("ch5/area_pdf", |c: &AreaPdfCase| {
         let (pdf, x, y, n, want) = (c.pdf_area, v3(c.x), v3(c.y), unit(c.n_light), c.expect);
         let got = f(pdf, x, y, n);
         let err = if want == 0.0 {
@@ -39,12 +33,13 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
         };
         (
             err,
-            format!(
-                "{}: pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}",
-                c.why
-            ),
+            format!("pdf_A {pdf}, x {x}, y {y}, n_light {n}: got {got}, expected {want}"),
         )
-    }));
+    });
+    let (mut error, mut detail) = match worst {
+        Ok(w) => w,
+        Err(check) => return check,
+    };
     // Drawn points and lights: distances from 10⁻³ to 10³, up to 10³ times
     // that from the origin, either face, pdfs over six decades, lights
     // seen exactly edge-on, and lights seen at grazing angles.

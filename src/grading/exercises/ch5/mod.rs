@@ -132,16 +132,11 @@ struct LambertCase {
     wo: V3,
     wi: V3,
     same_side: bool,
-    why: String,
 }
 
 /// ρ/π on the same side, 0 across, for hand-picked directions.
 pub fn check_lambert_brdf(f: BrdfFn) -> Check {
-    let cases: Vec<LambertCase> = match cases::of("ch5/lambert_brdf") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
+    let worst = cases::worst("ch5/lambert_brdf", |c: &LambertCase| {
         let (rho, wo, wi) = (v3(c.rho), unit(c.wo), unit(c.wi));
         let want = if c.same_side {
             rho * FRAC_1_PI
@@ -156,12 +151,13 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
         };
         (
             err,
-            format!(
-                "{}: ρ {rho}, ωo {wo}, ωi {wi}: got {got}, expected {want}",
-                c.why
-            ),
+            format!("ρ {rho}, ωo {wo}, ωi {wi}: got {got}, expected {want}"),
         )
-    }));
+    });
+    let (mut error, mut detail) = match worst {
+        Ok(w) => w,
+        Err(check) => return check,
+    };
     // Drawn albedos (a channel may be 0 or 1) and directions, grazing ones
     // (|z| down to 10⁻⁶) among them.
     let mut draws = Draws::new(51);
@@ -279,16 +275,11 @@ struct PointCase {
     p: V3,
     n: V3,
     expect: V3,
-    why: String,
 }
 
 /// E = I cos θ / r² for hand-worked cases.
 pub fn check_point_light(f: PointFn) -> Check {
-    let cases: Vec<PointCase> = match cases::of("ch5/point_light") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    let (mut error, mut detail) = worst_of(cases.into_iter().map(|c| {
+    let worst = cases::worst("ch5/point_light", |c: &PointCase| {
         let (i, light, p, n, want) = (
             v3(c.intensity),
             v3(c.light),
@@ -304,12 +295,13 @@ pub fn check_point_light(f: PointFn) -> Check {
         };
         (
             err,
-            format!(
-                "{}: I {i}, light at {light}, p {p}, n {n}: got {got}, expected {want}",
-                c.why
-            ),
+            format!("I {i}, light at {light}, p {p}, n {n}: got {got}, expected {want}"),
         )
-    }));
+    });
+    let (mut error, mut detail) = match worst {
+        Ok(w) => w,
+        Err(check) => return check,
+    };
     // Drawn lights and surfaces: distances from 10⁻³ to 10³, up to 10³
     // times that from the origin, intensities over six decades; E worked
     // out in f64.

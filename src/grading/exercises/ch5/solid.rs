@@ -9,7 +9,6 @@ use crate::cases::{self, v3, V3};
 use crate::ch5_reflection::radiometry::triangle_solid_angle;
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
-use crate::exercises::worst_of;
 
 type SolidFn = fn(Vec3, [Vec3; 3]) -> f32;
 
@@ -88,21 +87,19 @@ fn error(got: f32, p: Vec3, tri: [Vec3; 3]) -> (f64, String) {
 struct SolidCase {
     p: V3,
     triangle: [V3; 3],
-    why: String,
 }
 
 /// Hand-made triangles, one per clause, then drawn ones over the whole
 /// domain.
 pub fn check_solid_angle(f: SolidFn) -> Check {
-    let cases: Vec<SolidCase> = match cases::of("ch5/solid_angle") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    let (mut worst, mut detail) = worst_of(cases.into_iter().map(|c| {
+    let hand = cases::worst("ch5/solid_angle", |c: &SolidCase| {
         let (p, t) = (v3(c.p), c.triangle.map(v3));
-        let (err, what) = error(f(p, t), p, t);
-        (err, format!("{}: {what}", c.why))
-    }));
+        error(f(p, t), p, t)
+    });
+    let (mut worst, mut detail) = match hand {
+        Ok(w) => w,
+        Err(check) => return check,
+    };
     fold_drawn(&mut worst, &mut detail, drawn(f));
     let check = Check {
         error: worst,

@@ -12,7 +12,6 @@ use crate::ch5_reflection::light::spot::Spot;
 use crate::ch5_reflection::radiometry::spot_flux;
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
-use crate::exercises::worst_of;
 
 type SpotFn = fn(Vec3, f32, f32) -> Vec3;
 
@@ -61,7 +60,6 @@ fn rel(got: Vec3, want: DVec3) -> f64 {
 struct SpotCase {
     inner: f32,
     outer: f32,
-    why: String,
 }
 
 /// Φ = ∫ I · falloff dω for hand-made cones (the falloff integrated
@@ -69,23 +67,20 @@ struct SpotCase {
 /// channel's power (as `point_light` does).
 pub fn check_spot(f: SpotFn) -> Check {
     let i = Vec3::new(4.0, 2.0, 0.5);
-    let cases: Vec<SpotCase> = match cases::of("ch5/spot") {
-        Ok(c) => c,
-        Err(e) => return cases::unreadable(e),
-    };
-    let (mut worst, mut detail) = worst_of(cases.into_iter().map(|c| {
+    let hand = cases::worst("ch5/spot", |c: &SpotCase| {
         let (inner, outer) = (c.inner, c.outer);
         let want = i.as_dvec3() * falloff_integral(inner, outer);
         let got = f(i, inner, outer);
+        let shown = want.as_vec3();
         (
             rel(got, want),
-            format!(
-                "{}: I {i}, inner {inner}, outer {outer}: got {got}, expected {}",
-                c.why,
-                want.as_vec3()
-            ),
+            format!("I {i}, inner {inner}, outer {outer}: got {got}, expected {shown}"),
         )
-    }));
+    });
+    let (mut worst, mut detail) = match hand {
+        Ok(w) => w,
+        Err(check) => return check,
+    };
     // Drawn cones from 10⁻³ rad to π, hard-edged, all soft or in between,
     // and intensities over six decades with a channel sometimes 0.
     let mut d = Draws::new(57);
