@@ -15,6 +15,7 @@ pub mod ch5;
 pub mod ch6;
 pub mod fresh;
 pub mod fresh_new;
+pub mod fresh_third;
 pub mod refraction;
 
 /// Runs `check` once under each of `seeds` (the seed of the inputs the
