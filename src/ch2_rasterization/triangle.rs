@@ -25,8 +25,9 @@ pub fn rasterize_triangle(
 ) {
     let (mut v, mut colors) = (v, colors);
     let area = edge_function(v[0].truncate(), v[1].truncate(), v[2].truncate());
-    // No area (or a NaN corner): nothing is inside.
-    if area == 0.0 || !area.is_finite() {
+    // No area, or a corner that is not finite (its depth too): nothing
+    // to draw.
+    if area == 0.0 || !area.is_finite() || !v.iter().all(|p| p.is_finite()) {
         return;
     }
     // Either winding: swap two corners, with their colours, so that the

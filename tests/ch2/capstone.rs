@@ -25,7 +25,7 @@ fn lecture(
 ) {
     let (mut v, mut colors) = (v, colors);
     let area = edge(v[0].truncate(), v[1].truncate(), v[2].truncate());
-    if area == 0.0 {
+    if area == 0.0 || !v.iter().all(|p| p.is_finite()) {
         return;
     }
     if area < 0.0 {

@@ -5,6 +5,8 @@
 //! seeded, so a grade is repeatable). The capstone's check is in
 //! `paths/`, refraction's and the bounce layers' in files of their own.
 
+use std::cell::Cell;
+
 use super::bounce_layers as layers;
 use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::refraction;
@@ -208,7 +210,8 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         (error, detail)
     };
     // Drawn intervals (anywhere, any width from 10⁻³ to 10³, either
-    // order) and a drawn constant, from drawn numbers: exact up to rounding.
+    // order) and a drawn constant, from drawn numbers: exact up to
+    // rounding, with f evaluated once per number, inside the interval.
     let mut draws = Draws::new(61);
     let drawn = worst_drawn((0..draws.count(20, 60)).map(|_| {
         draws.next_case();
@@ -219,8 +222,35 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
             .map(|_| draws.unit() as f64)
             .collect();
         let b = a + width;
-        let got = f(&|_| c, a, b, &u);
+        // One evaluation per number, each in [a, b] (to rounding).
+        let (calls, outside) = (Cell::new(0usize), Cell::new(None));
+        let (lo, hi) = (a.min(b), a.max(b));
+        let slack = 1e-12 * (lo.abs() + hi.abs());
+        let g = |x: f64| {
+            calls.set(calls.get() + 1);
+            if !(lo - slack..=hi + slack).contains(&x) {
+                outside.set(Some(x));
+            }
+            c
+        };
+        let got = f(&g, a, b, &u);
         let want = c * (b - a);
+        if calls.get() != u.len() {
+            return (
+                f64::INFINITY,
+                format!(
+                    "∫ from {a} to {b} from {} numbers evaluated f {} times: one evaluation per number",
+                    u.len(),
+                    calls.get()
+                ),
+            );
+        }
+        if let Some(x) = outside.get() {
+            return (
+                f64::INFINITY,
+                format!("∫ from {a} to {b}: f evaluated at {x}, outside the interval"),
+            );
+        }
         (
             (got - want).abs() / want.abs() * 1e3,
             format!("∫ from {a} to {b} of the constant {c} = {want}, got {got}"),
@@ -244,17 +274,18 @@ pub fn check_russian_roulette(f: RouletteFn) -> Check {
     let n = 10_000;
     let mut symptom = None;
     // The hand cases, then drawn ones: values over six decades (and of
-    // either sign), survival probabilities from 0.01 to 1.
+    // either sign), survival probabilities from 10⁻⁴ to 1.
     let mut draws = Draws::new(62);
     let mut cases = vec![(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0)];
     for k in 0..draws.count(4, 8) {
         draws.next_case();
         let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
-        // The first from 0.01 to 0.05, where paths rarely survive. A
-        // whole number of the 10,000 evenly spaced u survive: the mean is
-        // then exact.
+        // The first from 10⁻⁴ to 10⁻², the second from 0.01 to 0.05,
+        // where paths rarely survive. A whole number of the 10,000 evenly
+        // spaced u survive: the mean is then exact.
         let q = match k {
-            0 => draws.decades(-2.0, -1.3),
+            0 => draws.decades(-4.0, -2.0),
+            1 => draws.decades(-2.0, -1.3),
             _ if draws.unit() < 0.2 => 1.0,
             _ => draws.decades(-2.0, 0.0),
         };
@@ -286,6 +317,35 @@ pub fn check_russian_roulette(f: RouletteFn) -> Check {
             ),
         )
     }));
+    // Decided by u: the same (value, q, u) asked again, in the other
+    // order, gets the same answer (a path's fate is a function of its
+    // number, not of the calls before it).
+    let probes: Vec<(f64, f64, f64)> = (0..64)
+        .map(|_| {
+            draws.next_case();
+            let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
+            (value, draws.range(0.1, 0.9) as f64, draws.unit() as f64)
+        })
+        .collect();
+    let first: Vec<f64> = probes.iter().map(|&(v, q, u)| f(v, q, u)).collect();
+    let again: Vec<f64> = probes.iter().rev().map(|&(v, q, u)| f(v, q, u)).collect();
+    let changed = probes
+        .iter()
+        .zip(&first)
+        .zip(again.iter().rev())
+        .find(|((_, a), b)| a.to_bits() != b.to_bits());
+    if let Some(((&(v, q, u), a), b)) = changed {
+        return Check {
+            error: 1.0,
+            tolerance: 2e-3,
+            detail: format!(
+                "value {v}, q {q}, u {u}: returned {a}, and {b} when asked again: the \
+                 outcome must be decided by u alone"
+            ),
+            images: None,
+            symptom: None,
+        };
+    }
     Check {
         error,
         tolerance: 2e-3,

@@ -59,7 +59,7 @@ fn student(
 ) {
     let (mut v, mut c) = (v, c);
     let area = e(v[0].truncate(), v[1].truncate(), v[2].truncate());
-    if area == 0.0 || !area.is_finite() {
+    if area == 0.0 || !area.is_finite() || !v.iter().all(|q| q.is_finite()) {
         return;
     }
     if area < 0.0 && k.swap {
@@ -204,7 +204,7 @@ fn rule_before_orienting(
 ) {
     let [a, b, cc] = v.map(|p| p.truncate());
     let area = e(a, b, cc);
-    if area == 0.0 || !area.is_finite() {
+    if area == 0.0 || !area.is_finite() || !v.iter().all(|q| q.is_finite()) {
         return;
     }
     let s = area.signum();
@@ -243,7 +243,7 @@ fn alternative_signed(
 ) {
     let [a, b, cc] = v.map(|p| p.truncate());
     let area = e(a, b, cc);
-    if area == 0.0 || !area.is_finite() {
+    if area == 0.0 || !area.is_finite() || !v.iter().all(|q| q.is_finite()) {
         return;
     }
     let s = area.signum();
@@ -292,7 +292,7 @@ fn alternative_incremental(
         (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x)
     };
     let area = ed(p[0], p[1], p[2].x, p[2].y);
-    if area == 0.0 || !area.is_finite() {
+    if area == 0.0 || !area.is_finite() || !p.iter().all(|q| q.is_finite()) {
         return;
     }
     if area < 0.0 {

@@ -134,7 +134,8 @@ pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
         };
         let side = draws.in_square() * depth * draws.decades(-2.0, 1.0);
         let p = match draws.count(0, 9) {
-            0 => Vec3::new(side.x, side.y, 0.0),
+            // On the camera's plane, z = +0 or -0 (no image either way).
+            0 => Vec3::new(side.x, side.y, draws.sign() * 0.0),
             1 => Vec3::new(side.x, side.y, depth),
             _ => Vec3::new(side.x, side.y, -depth),
         };
@@ -236,14 +237,23 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
     // from the origin, `up` of any length and at least 17° from the view.
     // The axes to 1e-4; the translation to 1e-4 of the eye's distance
     // from the origin (what rounding allows there).
+    // A third of them keep the last camera's eye, or its up: the matrix
+    // depends on all three inputs, whichever stayed the same.
     let mut draws = Draws::new(12);
+    let mut last: Option<(Vec3, Vec3, f32)> = None;
     for _ in 0..draws.count(50, 200) {
         draws.next_case();
-        let size = draws.decades(-2.0, 2.0);
-        let eye = draws.place_for(size, 2.0) + draws.in_cube() * size;
+        let mut size = draws.decades(-2.0, 2.0);
+        let mut eye = draws.place_for(size, 2.0) + draws.in_cube() * size;
         let view = draws.direction();
+        let mut up = draws.direction() * draws.decades(-2.0, 2.0);
+        match (last, draws.count(0, 5)) {
+            (Some((e, _, s)), 0 | 1) => (eye, size) = (e, s),
+            (Some((_, u, _)), 2) => up = u,
+            _ => {}
+        }
         let target = eye + view * size * draws.range(0.5, 3.0);
-        let up = draws.direction() * draws.decades(-2.0, 2.0);
+        last = Some((eye, up, size));
         if up.normalize().cross(view).length() < 0.3 {
             continue;
         }

@@ -312,6 +312,16 @@ fn degenerate(f: RasterFn) -> Check {
         t((3.5, 3.5), (3.5, 3.5), (3.5, 3.5)),
         t((nan, 3.0), (10.0, 3.0), (5.0, 10.0)),
         t((f32::INFINITY, 3.0), (10.0, 3.0), (5.0, 10.0)),
+        {
+            let mut far = t((2.5, 3.0), (10.0, 3.0), (5.0, 10.0));
+            far[0].z = f32::INFINITY;
+            far
+        },
+        {
+            let mut lost = t((2.5, 3.0), (10.0, 3.0), (5.0, 10.0));
+            lost[2].z = f32::NAN;
+            lost
+        },
     ];
     for (k, tri) in tris.iter().enumerate() {
         crate::progress(format_args!(
@@ -328,14 +338,32 @@ fn degenerate(f: RasterFn) -> Check {
             let detail = format!(
                 "the triangle {} has {}: yours wrote {written} pixels (colour or depth), the reference none",
                 corners(tri),
-                if k < 5 { "no area" } else { "a corner that is not finite" }
+                if k < 5 { "no area" } else { "a corner that is not finite (its x, y or depth)" }
             );
             return failed((written as f64, 0.0), detail, None, Some(DEGENERATE));
         }
     }
+    // A triangle 0.02 pixels across (twice its area 4·10⁻⁴) around the
+    // centre of pixel (10, 10): small, but the sample is well inside.
+    let tiny = [(10.49, 10.49), (10.51, 10.49), (10.5, 10.51)].map(|(x, y)| Vec3::new(x, y, 2.0));
+    let mut depth = vec![f32::INFINITY; (W * H) as usize];
+    let mut image = vec![UNTOUCHED; (W * H) as usize];
+    f(tiny, [Vec3::ONE; 3], W, H, &mut depth, &mut image);
+    let drawn: Vec<usize> = (0..depth.len())
+        .filter(|&i| image[i] != UNTOUCHED || depth[i] != f32::INFINITY)
+        .collect();
+    if drawn != [(10 * W + 10) as usize] {
+        let detail = format!(
+            "the triangle {} (0.02 pixels across, around the centre of pixel (10, 10)): yours \
+             drew {} samples, the reference one, at (10, 10): a small area is still an area",
+            corners(&tiny),
+            drawn.len()
+        );
+        return failed((1.0, 0.0), detail, None, None);
+    }
     failed(
         (0.0, 0.0),
-        "no triangle without area drew".into(),
+        "no triangle without area drew, and a tiny one drew its sample".into(),
         None,
         None,
     )

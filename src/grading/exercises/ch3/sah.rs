@@ -121,7 +121,7 @@ fn drawn_scene(d: &mut Draws) -> (String, Vec<[Vec3; 3]>) {
             c + d.in_cube() * size,
         ]
     };
-    let kind = d.count(0, 7);
+    let kind = d.count(0, 9);
     let (what, mut tris): (&str, Vec<[Vec3; 3]>) = match kind {
         0 => {
             let centres: Vec<Vec3> = (0..d.count(1, 6)).map(|_| d.in_cube()).collect();
@@ -206,7 +206,7 @@ fn drawn_scene(d: &mut Draws) -> (String, Vec<[Vec3; 3]>) {
                 .collect();
             ("flat sheets a hair apart", tris)
         }
-        _ => {
+        7 => {
             let k = (n as f32).sqrt().ceil() as usize;
             let h = |d: &mut Draws| d.range(-0.1, 0.1);
             let p = |i: usize, j: usize, z: f32| Vec3::new(i as f32, j as f32, z) / k as f32;
@@ -217,6 +217,36 @@ fn drawn_scene(d: &mut Draws) -> (String, Vec<[Vec3; 3]>) {
                 })
                 .collect();
             ("a wavy sheet", tris)
+        }
+        8 => {
+            // A flat square grid of triangles half a cell across, apart:
+            // both axes in the plane are worth trying.
+            let k = (n as f32).sqrt().ceil() as usize;
+            let tris = (0..k * k)
+                .map(|q| {
+                    let p = Vec3::new((q % k) as f32, (q / k) as f32, 0.0) / k as f32;
+                    let half = 0.5 / k as f32;
+                    [p, p + Vec3::X * half, p + Vec3::Y * half]
+                })
+                .collect();
+            ("a grid of separate triangles", tris)
+        }
+        _ => {
+            // Two flat sheets of long thin triangles, all as long as the
+            // scene, their centroids spread along it: the sheets apart
+            // across the triangles' length is the split to find.
+            let (m, gap) = ((n / 2).max(1), d.range(0.02, 0.1));
+            let tris = (0..2 * m)
+                .map(|q| {
+                    let (y, cx) = (if q < m { 0.0 } else { gap }, d.range(0.1, 0.9));
+                    [
+                        Vec3::new(0.0, y, 0.0),
+                        Vec3::new(1.0, y, 0.0),
+                        Vec3::new(3.0 * cx - 1.0, y + 1e-4, 0.0),
+                    ]
+                })
+                .collect();
+            ("two sheets of long thin triangles", tris)
         }
     };
     if kind != 4 || place == Vec3::ZERO {

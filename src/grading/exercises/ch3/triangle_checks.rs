@@ -117,6 +117,16 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
         (Vec3::new(1.0, 1.0, 0.0), tri, Some((0.5, 0.5))),
         (Vec3::new(1.5, 1.5, 0.0), tri, None),
         (Vec3::new(-0.1, 0.5, 0.0), tri, None),
+        // A triangle standing in the plane x = 0 (seen edge-on from +z).
+        (
+            Vec3::new(0.0, 0.5, 0.5),
+            [
+                Vec3::ZERO,
+                Vec3::new(0.0, 2.0, 0.0),
+                Vec3::new(0.0, 0.0, 2.0),
+            ],
+            Some((0.25, 0.25)),
+        ),
         (
             Vec3::new(0.5, 0.5, 0.0),
             [Vec3::ZERO, Vec3::X, Vec3::X * 2.0],
@@ -251,7 +261,8 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
         ),
     ];
     // Drawn triangles and rays: from 10⁻³ (millimetre triangles) to 10³
-    // across, up to 10⁴ times their size from the origin, d of any length.
+    // across, up to 10⁴ times their size from the origin, d of any length
+    // (t up to 10⁵: t is in units of the d given, whatever its length).
     let mut draws = Draws::new(33);
     for _ in 0..draws.count(300, 900) {
         draws.next_case();
@@ -266,7 +277,7 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
         let (o, d) = (
             at(draws.in_cube() * 0.5),
             Vec3::new(draws.range(-1.0, 1.0), draws.range(-1.0, 1.0), -2.0)
-                * draws.decades(-2.0, 2.0),
+                * draws.decades(-5.0, 2.0),
         );
         let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
         let n = triangle::unit_normal(t).unwrap_or(Vec3::ZERO);
@@ -281,6 +292,18 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
                 t,
                 want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
             ));
+            // A hit again with d 10³ to 10⁵ times shorter: t that many
+            // times larger, the same point.
+            if want.is_some() {
+                let d = d * draws.decades(-5.0, -3.0);
+                let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
+                cases.push((
+                    o,
+                    d,
+                    t,
+                    want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
+                ));
+            }
         }
     }
     // Grazing rays: 10⁻⁹ to 10⁻⁵ rad off a triangle in the plane z = 0

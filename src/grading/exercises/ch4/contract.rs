@@ -210,6 +210,13 @@ pub fn cases() -> Vec<Case> {
             down(6001.0),
             m,
         ),
+        case(
+            "the same wall seen from (6000, 6000, 6001): ε at p scales with p's largest coordinate, not its length",
+            Clause::ScaledEpsilon,
+            far_half_wall,
+            (Vec3::new(6000.0, 6000.0, 6001.0), -Vec3::Z),
+            m,
+        ),
         {
             // From a drawn point near the world's origin.
             let mut draws = crate::exercises::draws::Draws::new(42);

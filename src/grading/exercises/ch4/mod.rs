@@ -4,7 +4,7 @@ use glam::Vec3;
 
 use super::draws::{fold_drawn, worst_drawn, Draws};
 use super::images;
-use crate::cases::{self, unit, v3, V3};
+use crate::cases::{self, v3, V3};
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch4_implicit_surfaces::march::{self, March};
 use crate::ch4_implicit_surfaces::normal::gradient_central;
@@ -12,18 +12,20 @@ use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere, sd_torus};
 use crate::exercise::{Check, Exercise, Symptom};
 
 mod contract;
+mod gradient;
 mod scene;
 pub use contract::{
     Case, Clause, Probe, BUDGET_OFF_BY_ONE, FIXED_EPSILON, IGNORES_MAX_DISTANCE, INSIDE_HIT,
     NOT_FACING, NOT_UNIT, NO_BUDGET, ZERO_GRADIENT,
 };
+pub use gradient::check_gradient_normal;
 pub use scene::{check_trace_scene, contract_failure, reference_trace_ray, TraceRayFn};
 
 /// The candidate types.
 type SdfFn = fn(Vec3, Vec3, f32) -> f32;
 /// A sphere-tracing loop as exercise 4.2 asks for it.
 pub type TraceFn = fn(&dyn Fn(Vec3) -> f32, Vec3, Vec3, f32, u32, f32) -> Option<f32>;
-type NormalFn = fn(&dyn Fn(Vec3) -> f32, Vec3, f32) -> Vec3;
+pub(super) type NormalFn = fn(&dyn Fn(Vec3) -> f32, Vec3, f32) -> Vec3;
 
 /// Chapter 4's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {
@@ -94,7 +96,7 @@ fn reference_trace(
 /// A shape of a hand-worked case (`src/grading/cases.toml`).
 #[derive(serde::Deserialize)]
 #[serde(rename_all = "lowercase", deny_unknown_fields)]
-enum Shape {
+pub(super) enum Shape {
     /// A sphere.
     Sphere { centre: V3, radius: f32 },
     /// A box, by its half sizes.
@@ -105,7 +107,7 @@ enum Shape {
 
 impl Shape {
     /// Its signed distance at `p`.
-    fn distance(&self, p: Vec3) -> f32 {
+    pub(super) fn distance(&self, p: Vec3) -> f32 {
         match *self {
             Shape::Sphere { centre, radius } => sd_sphere(p - v3(centre), radius),
             Shape::Box { centre, half } => sd_box(p - v3(centre), v3(half)),
@@ -133,15 +135,6 @@ struct TraceCase {
     o: V3,
     d: V3,
     expect: Option<f32>,
-}
-
-/// A hand-worked normal.
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct NormalCase {
-    sdf: Shape,
-    p: V3,
-    expect: V3,
 }
 
 /// The sphere's SDF against values worked out by hand.
@@ -340,66 +333,5 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
             images: None,
             symptom: None,
         },
-    }
-}
-
-/// Gradient normals of a sphere, a box face and a torus against their
-/// exact normals.
-pub fn check_gradient_normal(f: NormalFn) -> Check {
-    let sphere = |p: Vec3| sd_sphere(p - Vec3::new(1.0, 0.0, 0.0), 2.0);
-    let hand = cases::worst("ch4/gradient_normal", |case: &NormalCase| {
-        let sdf = |p: Vec3| case.sdf.distance(p);
-        let (p, want) = (v3(case.p), unit(case.expect));
-        let got = f(&sdf, p, 1e-3);
-        (
-            (got - want).length() as f64,
-            format!("at {p}: got {got}, expected {want}"),
-        )
-    });
-    let (mut error, mut detail) = match hand {
-        Ok(w) => w,
-        Err(check) => return check,
-    };
-    // Drawn spheres from 10⁻² to 10² across, up to 10 times that from the
-    // origin, points near their surface, h from 10⁻³ to 10⁻² of the radius,
-    // half of them scaled (a bound whose gradient is not unit length),
-    // against the reference's central differences (the same h: the same
-    // truncation, and rounding far below the tolerance).
-    let mut draws = Draws::new(44);
-    let drawn = worst_drawn((0..draws.count(50, 200)).map(|_| {
-        draws.next_case();
-        let r = draws.decades(-2.0, 2.0);
-        let centre = draws.place_for(r, 1.0);
-        let out = draws.direction();
-        let p = centre + out * r * draws.range(0.9, 1.1);
-        let h = r * draws.decades(-3.0, -2.0);
-        // Half of them a bound, not a distance: k times it, k from 1/10 to
-        // 10, whose gradient is k long (the normal is still unit).
-        let k = if draws.unit() < 0.5 {
-            1.0
-        } else {
-            draws.decades(-1.0, 1.0)
-        };
-        let sdf = move |q: Vec3| k * ((q - centre).length() - r);
-        let want = gradient_central(&sdf, p, h).normalize();
-        let got = f(&sdf, p, h);
-        (
-            (got - want).length() as f64,
-            format!("{k} × the distance to a sphere of radius {r} at {centre}, at {p} with h = {h}: got {got}, expected {want}"),
-        )
-    }));
-    fold_drawn(&mut error, &mut detail, drawn);
-    // Twice the sphere's distance: a gradient 2 long.
-    let twice = |p: Vec3| 2.0 * sphere(p);
-    let length = f(&twice, Vec3::new(3.0, 0.0, 0.0), 1e-3).length();
-    // A NaN length is not unit length either.
-    let unit = (length - 1.0).abs() <= 1e-2;
-    let symptom = (error > 1e-3 && !unit).then_some(NOT_UNIT);
-    Check {
-        error,
-        tolerance: 1e-3,
-        detail,
-        images: None,
-        symptom,
     }
 }

@@ -125,10 +125,10 @@ pub struct FurnaceRun {
     pub tally: Tally,
     /// How many paths made each number of bounces (the last entry: more).
     pub lengths: Vec<u64>,
-    /// The largest (radiance − 1) per light sample found of one path (max
-    /// channel): in a furnace of Le = 1, each sample brings β ρ, so this
+    /// Per channel, the largest (radiance − 1) per light sample found of
+    /// one path: in a furnace of Le = 1, each sample brings β ρ, so this
     /// is ρ times the path's mean throughput at its samples.
-    pub most_per_sample: f64,
+    pub most_per_sample: DVec3,
 }
 
 impl FurnaceRun {
@@ -187,13 +187,13 @@ pub fn trace_furnace(f: PathFn, scene: &PathScene, n: u64, seed: u64) -> Furnace
                 reset_tally();
                 let l = f(scene, FURNACE_ORIGIN, dir, &mut rng);
                 let t = tally();
-                let per_sample = (f64::from(l.max_element()) - 1.0) / f64::from(t.lights_found);
+                let per_sample = (l.as_dvec3() - 1.0) / f64::from(t.lights_found);
                 let one = FurnaceRun {
                     tally: t,
                     most_per_sample: if t.lights_found > 0 && per_sample.is_finite() {
                         per_sample
                     } else {
-                        0.0
+                        DVec3::ZERO
                     },
                     ..FurnaceRun::default()
                 };

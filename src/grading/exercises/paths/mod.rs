@@ -137,6 +137,15 @@ impl PathScene {
         }))
     }
 
+    /// [`PathScene::furnace`] with an albedo per channel.
+    pub fn furnace_coloured(albedo: Vec3, le: Vec3) -> PathScene {
+        PathScene::of(Inner::Furnace(Furnace {
+            albedo,
+            le,
+            hide_bounce_emission: false,
+        }))
+    }
+
     /// The furnace as a diagnostic: surfaces reached by a bounce report
     /// no emission (a loop that counts emission only where the camera sees
     /// it gives the same answer as in [`PathScene::furnace`]).

@@ -32,27 +32,43 @@ pub fn contract_failure(f: PathFn) -> Option<(String, Symptom)> {
 /// Paths traced in the bright furnace of [`unbounded_throughput`].
 const BRIGHT_PATHS: u64 = 20_000;
 
-/// Whether roulette keeps a survivor's throughput bounded: in a grey
-/// furnace of albedo ρ from 0.85 to 0.9 (drawn for the run) and Le = 1,
-/// each light sample found brings β ρ, so a path's radiance less 1, per
-/// sample, is ρ times its mean throughput there. Survival taken from the
-/// throughput (q = max β, or the bounce's own f cos θ / pdf, capped at
-/// 0.9 or above or not at all, from any bounce on) keeps β at most about
-/// 1; a fixed q below ρ lets it grow as (ρ/q)^k, which 20,000 paths show
-/// (a fixed 0.8 at ρ = 0.85 makes a mean of 2.3 by the 25th bounce,
-/// reached by 75 paths in 20,000). Past a mean of 2: what was seen.
+/// Whether roulette keeps a survivor's throughput bounded, in two bright
+/// furnaces of Le = 1, where each light sample found brings β ρ (per
+/// channel), so a path's radiance less 1, per sample and over ρ, is its
+/// mean throughput at its samples:
+///
+/// - grey, of albedo 0.85 to 0.9 (drawn for the run): survival taken from
+///   the throughput (q = max β, or the bounce's own f cos θ / pdf, capped
+///   at 0.9 or above or not at all, from any bounce on) keeps β at most
+///   about 1, while a fixed q below ρ lets it grow as (ρ/q)^k (a fixed 0.8
+///   at ρ = 0.85 makes a mean of 2.3 by the 25th bounce, reached by 75
+///   paths in 20,000). Past a mean of 2 fails.
+/// - coloured, one channel 0.85 to 0.9, one 0.3 to 0.5, one 0.05 to 0.15
+///   (drawn): q from the whole throughput (its largest channel, mean or
+///   luminance) keeps every channel of β within 1 / 0.0722 (luminance's
+///   smallest weight), while q from its smallest channel lets the largest
+///   grow by 6 a bounce. Past a mean of 20 fails.
 pub fn unbounded_throughput(f: PathFn) -> Option<String> {
-    let albedo = crate::exercises::draws::Draws::new(65).range(0.85, 0.9);
-    let scene = PathScene::furnace(albedo, Vec3::ONE);
-    let run = trace_furnace(f, &scene, BRIGHT_PATHS, 613 ^ crate::run_seed());
-    let mean_beta = run.most_per_sample / f64::from(albedo);
-    (mean_beta > 2.0).then(|| {
-        format!(
-            "a furnace of albedo {albedo:.3} and Le = 1, where every light sample brings β ρ: \
-             one of {BRIGHT_PATHS} paths had a mean throughput of {mean_beta:.1} at its light \
-             samples (a survival probability taken from the throughput keeps it at most about 1)"
-        )
-    })
+    let mut d = crate::exercises::draws::Draws::new(65);
+    let grey = d.range(0.85, 0.9);
+    let mut coloured = Vec3::new(d.range(0.85, 0.9), d.range(0.3, 0.5), d.range(0.05, 0.15));
+    let turn = d.count(0, 2);
+    coloured = Vec3::from_array(std::array::from_fn(|c| coloured[(c + turn) % 3]));
+    [(Vec3::splat(grey), 2.0, 613), (coloured, 20.0, 615)]
+        .into_iter()
+        .find_map(|(albedo, most, salt)| {
+            let scene = PathScene::furnace_coloured(albedo, Vec3::ONE);
+            let run = trace_furnace(f, &scene, BRIGHT_PATHS, salt ^ crate::run_seed());
+            let mean_beta = (run.most_per_sample / albedo.as_dvec3()).max_element();
+            (mean_beta > most).then(|| {
+                format!(
+                    "a furnace of albedo {albedo:.3} and Le = 1, where every light sample brings \
+                     β ρ: one of {BRIGHT_PATHS} paths had a mean throughput of {mean_beta:.1} \
+                     at its light samples (a survival probability taken from the whole \
+                     throughput keeps it below {most})"
+                )
+            })
+        })
 }
 
 /// A floor seen from above and, beside it and below its plane, a lamp

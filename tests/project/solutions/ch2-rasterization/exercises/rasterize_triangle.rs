@@ -25,7 +25,7 @@ pub fn rasterize_triangle(
     let [mut p0, mut p1, mut p2] = v;
     let [c0, mut c1, mut c2] = colors;
     let area = edge(p0.truncate(), p1.truncate(), p2.truncate());
-    if area == 0.0 || !area.is_finite() {
+    if area == 0.0 || !area.is_finite() || ![p0, p1, p2].iter().all(|p| p.is_finite()) {
         return;
     }
     if area < 0.0 {
