@@ -9,7 +9,7 @@
 //! alternatives that no other test covers must pass under every seed.
 //!
 //! The mutants that keep state between calls keep it in a `thread_local`,
-//! as the testers wrote; [`under_seeds`] runs the seeds one after another
+//! as the testers wrote; [`super::under_seeds`] runs the seeds one after another
 //! on this thread, so each seed's run starts from the state a fresh
 //! process would have (reset in the closure that runs the check), and no
 //! seed's run can pass on what an earlier one left behind.
@@ -26,7 +26,7 @@ use raystep::grading::exercise::Check;
 use raystep::grading::exercises::paths::{self, PathScene};
 use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6};
 
-use super::under_seeds;
+use super::{fails_every, passes_every};
 
 /// The seeds every mutant must fail under (and every alternative pass
 /// under): the testers' three and one more.
@@ -36,34 +36,12 @@ const SEEDS: [u64; 4] = [101, 202, 303, 0x2026_1130];
 /// mutant and alternative are tried under the first two seeds only.
 const PATH_SEEDS: &[u64] = &[101, 202];
 
-/// `check` fails under every one of `seeds`, naming the symptom called
-/// `symptom` when one is given.
-fn fails_under(seeds: &[u64], what: &str, symptom: Option<&str>, check: impl Fn() -> Check) {
-    for (seed, c) in under_seeds(seeds, check) {
-        assert!(!c.passed(), "{what} passed under seed {seed}: {}", c.detail);
-        if let Some(name) = symptom {
-            assert_eq!(
-                c.symptom.map(|s| s.name),
-                Some(name),
-                "{what}, seed {seed}: {}",
-                c.detail
-            );
-        }
-    }
-}
-
 fn fails(what: &str, symptom: Option<&str>, check: impl Fn() -> Check) {
-    fails_under(&SEEDS, what, symptom, check);
-}
-
-fn passes_under(seeds: &[u64], what: &str, check: impl Fn() -> Check) {
-    for (seed, c) in under_seeds(seeds, check) {
-        assert!(c.passed(), "{what} failed under seed {seed}: {}", c.detail);
-    }
+    fails_every(&SEEDS, what, symptom, check);
 }
 
 fn passes(what: &str, check: impl Fn() -> Check) {
-    passes_under(&SEEDS, what, check);
+    passes_every(&SEEDS, what, check);
 }
 
 // ---- 1.1 project_point -------------------------------------------------------
@@ -1028,7 +1006,7 @@ fn path_roulette_first(scene: &PathScene, o: Vec3, d: Vec3, rng: &mut dyn FnMut(
 
 #[test]
 fn path_radiance_q_min_fails() {
-    fails_under(
+    fails_every(
         PATH_SEEDS,
         "q from β's smallest channel",
         Some("survival not taken from the throughput"),
@@ -1038,7 +1016,7 @@ fn path_radiance_q_min_fails() {
 
 #[test]
 fn path_radiance_roulette_first_passes() {
-    passes_under(PATH_SEEDS, "the roulette from the first bounce", || {
+    passes_every(PATH_SEEDS, "the roulette from the first bounce", || {
         paths::check_path_radiance(path_roulette_first)
     });
 }

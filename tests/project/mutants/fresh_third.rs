@@ -17,7 +17,7 @@ use raystep::grading::exercise::Check;
 use raystep::grading::exercises::paths::{self, PathScene};
 use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6, refraction};
 
-use super::under_seeds;
+use super::{fails_every, passes_every};
 
 /// The seeds every mutant must fail under (and every alternative pass
 /// under): the testers' three and one more.
@@ -27,34 +27,12 @@ const SEEDS: [u64; 4] = [11, 22, 33, 0x2026_1129];
 /// mutants and alternative are tried under the first two seeds only.
 const PATH_SEEDS: &[u64] = &[11, 22];
 
-/// `check` fails under every one of `seeds`, naming the symptom called
-/// `symptom` when one is given.
-fn fails_under(seeds: &[u64], what: &str, symptom: Option<&str>, check: impl Fn() -> Check) {
-    for (seed, c) in under_seeds(seeds, check) {
-        assert!(!c.passed(), "{what} passed under seed {seed}: {}", c.detail);
-        if let Some(name) = symptom {
-            assert_eq!(
-                c.symptom.map(|s| s.name),
-                Some(name),
-                "{what}, seed {seed}: {}",
-                c.detail
-            );
-        }
-    }
-}
-
 fn fails(what: &str, symptom: Option<&str>, check: impl Fn() -> Check) {
-    fails_under(&SEEDS, what, symptom, check);
-}
-
-fn passes_under(seeds: &[u64], what: &str, check: impl Fn() -> Check) {
-    for (seed, c) in under_seeds(seeds, check) {
-        assert!(c.passed(), "{what} failed under seed {seed}: {}", c.detail);
-    }
+    fails_every(&SEEDS, what, symptom, check);
 }
 
 fn passes(what: &str, check: impl Fn() -> Check) {
-    passes_under(&SEEDS, what, check);
+    passes_every(&SEEDS, what, check);
 }
 
 // ---- 1.1 project_point -------------------------------------------------------
@@ -915,7 +893,7 @@ fn path_mean_roulette(
 
 #[test]
 fn path_radiance_fixed_q_fails() {
-    fails_under(
+    fails_every(
         PATH_SEEDS,
         "q = 0.8",
         Some("survival not taken from the throughput"),
@@ -925,7 +903,7 @@ fn path_radiance_fixed_q_fails() {
 
 #[test]
 fn path_radiance_unclamped_light_sample_fails() {
-    fails_under(
+    fails_every(
         PATH_SEEDS,
         "the light sample's cosine not clamped",
         Some("a light sample from behind the surface counted"),
@@ -935,7 +913,7 @@ fn path_radiance_unclamped_light_sample_fails() {
 
 #[test]
 fn path_radiance_mean_roulette_passes() {
-    passes_under(PATH_SEEDS, "roulette on β's mean", || {
+    passes_every(PATH_SEEDS, "roulette on β's mean", || {
         paths::check_path_radiance(path_mean_roulette)
     });
 }

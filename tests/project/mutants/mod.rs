@@ -80,3 +80,26 @@ pub fn fails_naming(check: Check, symptom: Symptom, exercises: &[Exercise], what
     );
     check.detail
 }
+
+/// `check` fails under every one of `seeds`, naming the symptom called
+/// `symptom` when one is given (the fresh sets' assertion).
+pub fn fails_every(seeds: &[u64], what: &str, symptom: Option<&str>, check: impl Fn() -> Check) {
+    for (seed, c) in under_seeds(seeds, check) {
+        assert!(!c.passed(), "{what} passed under seed {seed}: {}", c.detail);
+        if let Some(name) = symptom {
+            assert_eq!(
+                c.symptom.map(|s| s.name),
+                Some(name),
+                "{what}, seed {seed}: {}",
+                c.detail
+            );
+        }
+    }
+}
+
+/// `check` passes under every one of `seeds`.
+pub fn passes_every(seeds: &[u64], what: &str, check: impl Fn() -> Check) {
+    for (seed, c) in under_seeds(seeds, check) {
+        assert!(c.passed(), "{what} failed under seed {seed}: {}", c.detail);
+    }
+}
