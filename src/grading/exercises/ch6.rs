@@ -149,7 +149,7 @@ fn z_of(estimates: &[f64], expected: f64) -> f64 {
     }
 }
 
-/// The estimator on three integrals with known values: 64 independent
+/// The estimator on four integrals with known values: 64 independent
 /// estimates of 1024 samples each must average to the value (|z| ≤ 5), and
 /// their spread must be the one of an unbiased uniform estimator (within
 /// a factor 2 of σ/√N), which catches a wrong (b - a) factor that happens
@@ -159,9 +159,10 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     let sin = |x: f64| x.sin();
     let square = |x: f64| x * x;
     let inv = |x: f64| 1.0 / x;
+    let step = |x: f64| if x > 0.5 { 1.0 } else { 0.0 };
     // (f, a, b, value, σ of one sample of (b - a) f(x))
     type Case<'a> = (&'a dyn Fn(f64) -> f64, f64, f64, f64, f64, &'a str);
-    let cases: [Case; 3] = [
+    let cases: [Case; 4] = [
         (
             &sin,
             0.0,
@@ -186,6 +187,8 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
             (2.0 * (2.0 / 3.0) - 3f64.ln().powi(2)).sqrt(),
             "∫₁³ dx/x = ln 3",
         ),
+        // Zero on half the interval: a sample of 0 counts like any other.
+        (&step, 0.0, 1.0, 0.5, 0.5, "∫₀¹ [x > ½] dx = ½"),
     ];
     let n = 1024;
     let (error, detail) = worst_of(cases.iter().enumerate().map(|(k, (g, a, b, value, sigma, name))| {
@@ -210,14 +213,14 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         (error, detail)
     };
     // Drawn intervals (anywhere, any width from 10⁻³ to 10³, either
-    // order) and a drawn constant, from drawn numbers: exact up to
+    // order) and a drawn constant from 10⁻⁸ to 10⁸, from drawn numbers: exact up to
     // rounding, with f evaluated once per number, inside the interval.
     let mut draws = Draws::new(61);
     let drawn = worst_drawn((0..draws.count(20, 60)).map(|_| {
         draws.next_case();
         let a = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
         let width = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
-        let c = (draws.sign() * draws.decades(-2.0, 2.0)) as f64;
+        let c = (draws.sign() * draws.decades(-8.0, 8.0)) as f64;
         let u: Vec<f64> = (0..draws.count(1, 16))
             .map(|_| draws.unit() as f64)
             .collect();
@@ -276,7 +279,7 @@ pub fn check_russian_roulette(f: RouletteFn) -> Check {
     // The hand cases, then drawn ones: values over six decades (and of
     // either sign), survival probabilities from 10⁻⁴ to 1.
     let mut draws = Draws::new(62);
-    let mut cases = vec![(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0)];
+    let mut cases = vec![(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0), (-2.0, 0.5)];
     for k in 0..draws.count(4, 8) {
         draws.next_case();
         let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;

@@ -132,7 +132,10 @@ pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
             1 => draws.decades(4.0, 30.0),
             _ => draws.decades(-3.0, 4.0),
         };
-        let side = draws.in_square() * depth * draws.decades(-2.0, 1.0);
+        // Sideways up to ten times the depth, a tenth up to 10⁷ times
+        // (within 10⁻⁵ rad of the camera's plane: still an image).
+        let wide = if draws.unit() < 0.1 { 7.0 } else { 1.0 };
+        let side = draws.in_square() * depth * draws.decades(-2.0, wide);
         let p = match draws.count(0, 9) {
             // On the camera's plane, z = +0 or -0 (no image either way).
             0 => Vec3::new(side.x, side.y, draws.sign() * 0.0),

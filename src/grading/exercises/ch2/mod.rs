@@ -10,11 +10,13 @@ use crate::exercise::{Check, Exercise, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
 
 mod common;
+mod depth_test;
 pub mod manifold;
 pub mod model;
 pub mod raster;
 pub mod shading;
 
+pub use depth_test::check_depth_test;
 pub use manifold::{check_manifold, ManifoldFn};
 pub use raster::{check_rasterize_triangle, fill_rule_triangles, RasterFn};
 
@@ -138,7 +140,11 @@ pub fn exercises() -> Vec<Exercise> {
 }
 
 /// The worst case as a check, `ok` its detail when every case matches.
-fn worst_of(cases: impl Iterator<Item = (f64, String)>, tolerance: f64, ok: &str) -> Check {
+pub(super) fn worst_of(
+    cases: impl Iterator<Item = (f64, String)>,
+    tolerance: f64,
+    ok: &str,
+) -> Check {
     let (error, detail) = super::worst(cases).unwrap_or_else(|| (0.0, ok.to_string()));
     Check {
         error,
@@ -198,15 +204,22 @@ pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
     // Drawn edges from 10⁻³ to 10³ long, up to 10³ times that from the
     // origin: E to 10⁻⁵ of |b - a|·|p - a| (what rounding allows), and
     // exactly 0 at a, at b and on a horizontal or vertical edge.
+    // A fifth keep the last edge's a (E depends on all three points).
     let mut draws = Draws::new(21);
+    let mut last: Option<(Vec2, Vec2, f32)> = None;
     let drawn = worst_drawn((0..draws.count(300, 1500)).map(|_| {
         draws.next_case();
-        let scale = draws.decades(-3.0, 3.0);
-        let place = draws.place_for(scale, 3.0).truncate();
-        let (a, mut b) = (
+        let mut scale = draws.decades(-3.0, 3.0);
+        let mut place = draws.place_for(scale, 3.0).truncate();
+        let (mut a, mut b) = (
             place + draws.in_square() * scale,
             place + draws.in_square() * scale,
         );
+        if let Some((last_a, last_place, last_scale)) = last.filter(|_| draws.unit() < 0.2) {
+            (a, place, scale) = (last_a, last_place, last_scale);
+            b = place + draws.in_square() * scale;
+        }
+        last = Some((a, place, scale));
         let mut p = place + draws.in_square() * scale;
         match draws.count(0, 5) {
             0 => p = a,
@@ -266,9 +279,10 @@ pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check
         (a, b, c, v(4.0, 2.0), Some(Vec3::new(-1.0, 1.0, 1.0))),
         // Clockwise order gives the same φ.
         (a, c, b, v(1.0, 0.5), Some(Vec3::new(0.5, 0.25, 0.25))),
-        // No area, no coordinates.
+        // No area, no coordinates: on a line (the point off it too).
         (a, b, v(8.0, 0.0), v(1.0, 1.0), None),
         (a, a, a, a, None),
+        (v(0.1, 0.1), v(0.2, 0.2), v(0.3, 0.3), v(0.7, -0.4), None),
     ];
     // A few more whose φ must rebuild the point.
     for k in 0..5 {
@@ -349,103 +363,5 @@ pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check
     match symptom {
         Some(symptom) if !check.passed() => check.with_symptom(symptom),
         _ => check,
-    }
-}
-
-/// Runs a sequence of depth tests on a small buffer against the expected
-/// results and final contents.
-pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
-    let inf = f32::INFINITY;
-    // (index, z, passes)
-    let steps = [
-        (0, 5.0, true),
-        (0, 7.0, false),
-        (0, 5.0, false), // a tie keeps the first
-        (1, 2.0, true),
-        (0, 3.0, true),
-        (1, f32::NAN, false),
-        (2, inf, false),
-        (0, 0.5, true),
-    ];
-    let mut buffer = vec![inf; 3];
-    let mut fails = Vec::new();
-    let mut tie_passed = false;
-    for (i, (index, z, want)) in steps.into_iter().enumerate() {
-        let got = f(&mut buffer, index, z);
-        tie_passed |= i == 2 && got;
-        if got != want {
-            fails.push((
-                1.0,
-                format!(
-                    "step {i}: depth_test(index {index}, z {z}) returned {got}, expected {want}"
-                ),
-            ));
-        }
-    }
-    let expected = [0.5, 2.0, inf];
-    if buffer != expected {
-        fails.push((
-            1.0,
-            format!("buffer ends as {buffer:?}, expected {expected:?}"),
-        ));
-    }
-    // A drawn run of tests on a drawn buffer: depths over twelve decades,
-    // ties, depths one f32 step either side of the stored one, zeros,
-    // infinities and NaNs, as many as the run draws.
-    let mut draws = Draws::new(23);
-    let size = draws.count(1, 64);
-    let (mut theirs, mut ours) = (vec![inf; size], vec![inf; size]);
-    let mut last: Option<(usize, f32)> = None;
-    for step in 0..draws.count(200, 2000) {
-        draws.next_case();
-        let mut index = draws.count(0, size - 1);
-        // Now and then the last test again, exactly: now a tie at best.
-        let again = match last {
-            Some((i, z)) if draws.unit() < 0.1 => {
-                index = i;
-                Some(z)
-            }
-            _ => None,
-        };
-        // Next to the stored depth: one f32 step nearer or farther (a
-        // nearer depth by the smallest amount is still nearer).
-        let (stored, step_out) = (ours[index], draws.count(0, 11));
-        let z = match step_out {
-            0 => stored,
-            1 => f32::NAN,
-            2 => inf,
-            3 => 0.0,
-            4 if stored > 0.0 => stored.next_down(),
-            5 if stored > 0.0 && stored < inf => stored.next_up(),
-            6 if stored > 0.0 && stored < inf => stored * (1.0 - 4.0 * f32::EPSILON),
-            _ => draws.decades(-6.0, 6.0),
-        };
-        let z = again.unwrap_or(z);
-        last = Some((index, z));
-        let want = z < ours[index];
-        if want {
-            ours[index] = z;
-        }
-        let got = f(&mut theirs, index, z);
-        if got != want || theirs[index].to_bits() != ours[index].to_bits() {
-            fails.push((
-                1.0,
-                format!(
-                    "drawn step {step}: depth_test(index {index}, z {z}) returned {got} and left {}, expected {want} and {}",
-                    theirs[index], ours[index]
-                ),
-            ));
-            break;
-        }
-    }
-    let check = worst_of(fails.into_iter(), 0.0, "every step matches");
-    if check.passed() {
-        check
-    } else if buffer == [inf; 3] {
-        check.with_symptom(NOT_STORED)
-    } else if tie_passed {
-        check.with_symptom(TIE)
-    } else {
-        check
     }
 }

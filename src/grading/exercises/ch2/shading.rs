@@ -214,6 +214,15 @@ pub(super) fn depth_order(f: RasterFn) -> Check {
             "a red triangle at 2 m, then the same triangle in blue",
             [(t(2.0, 0.0), red), (t(2.0, 0.0), blue)],
         ),
+        // Any depth z > 0: very near and very far.
+        (
+            "a red triangle at 0.05 m, then a nearer (0.02 m) blue one",
+            [(t(0.05, 0.0), red), (t(0.02, 9.0), blue)],
+        ),
+        (
+            "a red triangle at 2,000 m, then a nearer (1,500 m) blue one",
+            [(t(2000.0, 0.0), red), (t(1500.0, 9.0), blue)],
+        ),
     ];
     for (n, (what, pair)) in cases.iter().enumerate() {
         let run = |g: Draw| {

@@ -118,55 +118,6 @@ pub fn sheet_rays(n: u64) -> Vec<Ray> {
         .collect()
 }
 
-/// The hand-built cases: a stack of sixteen small triangles along z,
-/// shuffled so that the list order is not the depth order, seen from
-/// above, from below, cut short by t_max, beside it and slanted.
-fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
-    let stack: Vec<[Vec3; 3]> = (0..16)
-        .map(|i| {
-            let z = -1.0 - ((i * 7) % 16) as f32;
-            let o = Vec3::new(0.1 * i as f32, 0.0, z);
-            [
-                o + Vec3::new(-2.0, -1.0, 0.0),
-                o + Vec3::new(2.0, -1.0, 0.0),
-                o + Vec3::new(0.0, 2.0, 0.0),
-            ]
-        })
-        .collect();
-    let down = |x: f32, y: f32| Ray::new(Vec3::new(x, y, 1.0), -Vec3::Z).expect("a ray");
-    let up = Ray::new(Vec3::new(0.5, 0.0, -30.0), Vec3::Z).expect("a ray");
-    let slant = Ray::new(Vec3::new(0.5, 0.0, 1.0), Vec3::new(0.05, 0.02, -1.0)).expect("a ray");
-    let inf = f32::INFINITY;
-    let cases = vec![
-        (down(0.5, 0.0), inf, "straight down a stack of 16 triangles"),
-        (up, inf, "straight up the same stack from below"),
-        (
-            down(0.5, 0.0),
-            1.5,
-            "down the stack, t_max before the first hit",
-        ),
-        (
-            down(0.5, 0.0),
-            2.5,
-            "down the stack, t_max just past the first hit",
-        ),
-        (up, 20.0, "up the stack, t_max = 20 past several hits"),
-        (down(50.0, 0.0), inf, "beside the stack: a miss"),
-        (slant, inf, "slanted through the stack"),
-        (
-            {
-                // A hit at t from 10⁻⁶ to 10⁻⁴, drawn for the run: the
-                // interval is (0, t_max), with no margin at its start.
-                let h = crate::exercises::draws::Draws::new(35).decades(-6.0, -4.0);
-                Ray::new(Vec3::new(0.5, 0.0, -1.0 + h), -Vec3::Z).expect("a ray")
-            },
-            inf,
-            "from just above the top triangle, a hit closer than 10⁻⁴",
-        ),
-    ];
-    (ReadableBvh::build(&stack), cases)
-}
-
 /// The closest hit of `ray` before `t_max` by testing every triangle in
 /// turn: the answer a traversal must give, found without any tree (so the
 /// grader does not check raystep's own traversal against itself).
@@ -261,7 +212,7 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
         }
     };
     progress("a stack of 16 triangles");
-    let (stack, cases) = stack_cases();
+    let (stack, cases) = super::bvh_cases::stack_cases();
     for (ray, t_max, what) in &cases {
         compare(&stack, ray, *t_max, &|| what.to_string());
     }
@@ -301,6 +252,11 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
                 ray.dir
             )
         });
+    }
+    progress("rays at a flat triangle");
+    let (flat, flat_rays) = super::bvh_cases::flat_triangle();
+    for (ray, what) in &flat_rays {
+        compare(&flat, ray, f32::INFINITY, &|| what.clone());
     }
     progress("a chain deeper than a fixed stack");
     let (deep, deep_rays) = super::bvh_deep::deep_chain();

@@ -4,6 +4,7 @@ use crate::ch3_ray_triangle::triangle;
 use crate::exercise::Exercise;
 
 mod bvh;
+mod bvh_cases;
 mod bvh_deep;
 mod bvh_symptoms;
 mod ray_plane;

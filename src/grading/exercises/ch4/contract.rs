@@ -155,6 +155,21 @@ fn low_ball(p: Vec3) -> f32 {
     (p - Vec3::new(0.0, 0.0, -4.0)).length() - 4.0
 }
 
+/// A wall at x = 1000 whose function understates by a hair: from the
+/// origin the first step lands 5·10⁻⁴ short of it, where ε at p (9.5e-4)
+/// calls it a hit; ε at the ray's origin or at the previous point (10⁻⁴)
+/// would not, and the march would take one more step.
+fn understating_far_wall(p: Vec3) -> f32 {
+    (1.0 - 5e-7) * (1000.0 - p.x)
+}
+
+/// A box of half size 0.5 at the origin: seen from 1,000 m away near an
+/// edge, a difference step of ε at the ray's origin (9.5e-4) reaches
+/// across the edge, one of ε at the hit (floored at 10⁻⁴) does not.
+fn box_at_origin(p: Vec3) -> f32 {
+    crate::ch4_implicit_surfaces::primitives::sd_box(p, Vec3::splat(0.5))
+}
+
 /// Flat (zero) below z = 0.5, twice the distance above: the first step
 /// from z = 1 lands at z = 0, where the gradient is zero.
 fn flat_floor(p: Vec3) -> f32 {
@@ -245,6 +260,29 @@ pub fn cases() -> Vec<Case> {
             flat_floor,
             down(1.0),
             m,
+        ),
+        case(
+            "a wall 1,000 m along x whose function understates by 5e-7: ε is taken at each point the march reaches",
+            Clause::ScaledEpsilon,
+            understating_far_wall,
+            (Vec3::ZERO, Vec3::X),
+            March {
+                max_distance: 2000.0,
+                ..m
+            },
+        ),
+        case(
+            "a box at the origin seen from (1000, 0, 0), hit 5e-4 from an edge: h from ε at the hit, not at the ray's origin",
+            Clause::Curved,
+            box_at_origin,
+            (
+                Vec3::new(1000.0, 0.0, 0.0),
+                (Vec3::new(0.5, 0.4995, 0.0) - Vec3::new(1000.0, 0.0, 0.0)).normalize(),
+            ),
+            March {
+                max_distance: 2000.0,
+                ..m
+            },
         ),
         case(
             "a wall whose distance function overstates by half: the first step lands inside, at f = -0.75",

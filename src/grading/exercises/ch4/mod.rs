@@ -159,7 +159,13 @@ pub fn check_sphere_sdf(f: SdfFn) -> Check {
         draws.next_case();
         let r = draws.decades(-3.0, 3.0);
         let c = draws.place_for(r, 3.0);
-        let p = c + draws.direction() * r * draws.range(0.0, 3.0);
+        // A third of the points within 10⁻⁶ to 10⁻² radii of the surface.
+        let out = if draws.unit() < 1.0 / 3.0 {
+            1.0 + draws.sign() * draws.decades(-6.0, -2.0)
+        } else {
+            draws.range(0.0, 3.0)
+        };
+        let p = c + draws.direction() * r * out;
         let to = (p - c).as_dvec3().length();
         let want = to - r as f64;
         let got = f(p, c, r);

@@ -40,13 +40,13 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
         Ok(w) => w,
         Err(check) => return check,
     };
-    // Drawn points and lights: distances from 10⁻³ to 10³, up to 10³ times
+    // Drawn points and lights: distances from 10⁻⁵ to 10³, up to 10³ times
     // that from the origin, either face, pdfs over six decades, lights
     // seen exactly edge-on, and lights seen at grazing angles.
     let mut draws = Draws::new(53);
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
-        let scale = draws.decades(-3.0, 3.0);
+        let scale = draws.decades(-5.0, 3.0);
         let x = draws.place_for(scale, 3.0);
         let axis = draws.count(0, 2);
         let mut offset = draws.direction();

@@ -205,8 +205,9 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
 }
 
 /// Statistical: every sample is a unit direction with z ≥ 0 whose pdf is
-/// z/π; over 40,000 samples, E(z) = 2/3, E(x) = E(y) = 0 and P(z < 1/2)
-/// = 1/4 (for cos θ/π, P(cos θ < c) = c²). The error is the worst
+/// z/π; over 40,000 samples, E(z) = 2/3, E(x) = E(y) = 0, P(z < 1/2)
+/// = 1/4 (for cos θ/π, P(cos θ < c) = c²), and the azimuth uniform (its
+/// first harmonics average to 0). The error is the worst
 /// deviation in standard errors (5 passes), or a large number when a
 /// sample is not even a direction on the hemisphere.
 pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
@@ -271,6 +272,7 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
         return check;
     }
     let (mut sx, mut sy, mut sz, mut low) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    let mut ring = [0.0f64; 4];
     for i in 0..n {
         let u = Vec2::new(random(seed, i, 0, 0), random(seed, i, 0, 1));
         let (w, pdf) = f(u);
@@ -281,15 +283,31 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
         sy += w.y as f64;
         sz += w.z as f64;
         low += f64::from(w.z < 0.5);
+        // The azimuth's harmonics, cos 2φ, sin 2φ, cos 4φ, sin 4φ (0 on
+        // average when φ is uniform, whatever the map).
+        let (x, y) = (w.x as f64, w.y as f64);
+        let r2 = x * x + y * y;
+        if r2 > 0.0 {
+            let (c2, s2) = ((x * x - y * y) / r2, 2.0 * x * y / r2);
+            ring[0] += c2;
+            ring[1] += s2;
+            ring[2] += c2 * c2 - s2 * s2;
+            ring[3] += 2.0 * c2 * s2;
+        }
     }
     let m = n as f64;
     // Standard deviations under cos θ/π: x and y have variance 1/4, z has
-    // 1/2 − 4/9, the indicator 1/4 · 3/4.
+    // 1/2 − 4/9, the indicator 1/4 · 3/4, each harmonic of a uniform
+    // azimuth 1/2.
     let stats = [
         ("mean x", sx / m, 0.0, 0.25f64),
         ("mean y", sy / m, 0.0, 0.25),
         ("mean z", sz / m, 2.0 / 3.0, 0.5 - 4.0 / 9.0),
         ("P(z < 1/2)", low / m, 0.25, 0.1875),
+        ("mean cos 2φ", ring[0] / m, 0.0, 0.5),
+        ("mean sin 2φ", ring[1] / m, 0.0, 0.5),
+        ("mean cos 4φ", ring[2] / m, 0.0, 0.5),
+        ("mean sin 4φ", ring[3] / m, 0.0, 0.5),
     ];
     let (error, detail) = worst_of(stats.into_iter().map(|(what, got, want, var)| {
         let z = (got - want).abs() / (var / m).sqrt();

@@ -23,7 +23,7 @@
 use glam::{DVec3, Vec2, Vec3};
 
 use super::super::images;
-use super::open::{self, LIGHT_FROM_BEHIND, UNBOUNDED_THROUGHPUT};
+use super::open::{self, BOUNCE_EMISSION_ADDED, LIGHT_FROM_BEHIND, UNBOUNDED_THROUGHPUT};
 use super::{reference_path, reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
 use crate::ch1_projection::camera::Camera;
 use crate::core::sampling::random;
@@ -87,10 +87,11 @@ pub const CORNELL_DIFFERS: Symptom = Symptom {
 };
 
 /// Every symptom [`check_path_radiance`] can name.
-pub const SYMPTOMS: [Symptom; 13] = [
+pub const SYMPTOMS: [Symptom; 14] = [
     NO_ROULETTE,
     UNBOUNDED_THROUGHPUT,
     LIGHT_FROM_BEHIND,
+    BOUNCE_EMISSION_ADDED,
     DEPTH_CAP,
     NO_FIRST_EMISSION,
     DOUBLE_EMISSION,

@@ -27,6 +27,38 @@ pub fn contract_failure(f: PathFn) -> Option<(String, Symptom)> {
     unbounded_throughput(f)
         .map(|d| (d, UNBOUNDED_THROUGHPUT))
         .or_else(|| light_from_behind(f).map(|d| (d, LIGHT_FROM_BEHIND)))
+        .or_else(|| bounce_emission_added(f).map(|d| (d, BOUNCE_EMISSION_ADDED)))
+}
+
+/// Emission a bounce finds, added (in part) to the light samples'.
+pub const BOUNCE_EMISSION_ADDED: Symptom = Symptom {
+    name: "emission a bounce finds added",
+};
+
+/// Whether the path adds emission that a bounce finds (the contract: the
+/// light sample has counted it): the run's furnace again, its surfaces
+/// reached by a bounce reporting no emission. A loop that never adds it
+/// sees the same Le / (1 − ρ); one that adds it, even in part (half the
+/// light sample and half the emission found is unbiased in the plain
+/// furnace), is too dark here. 50,000 paths, 5 standard errors.
+pub fn bounce_emission_added(f: PathFn) -> Option<String> {
+    let (albedo, le) = super::furnace_of_run();
+    let scene = PathScene::furnace_without_bounce_emission(albedo, le);
+    let n = 50_000u64;
+    let run = trace_furnace(f, &scene, n, 616 ^ crate::run_seed());
+    let m = n as f64;
+    let mean = run.sum / m;
+    let var = ((run.sum_sq / m - mean * mean) * (m / (m - 1.0))).max(glam::DVec3::ZERO);
+    let se = (var / m).max(glam::DVec3::splat(1e-12)).powf(0.5);
+    let want = le.as_dvec3() / (1.0 - f64::from(albedo));
+    let z = ((mean - want).abs() / se).max_element();
+    (z > 5.0 || run.non_finite > 0).then(|| {
+        format!(
+            "the same furnace with the emission of every surface a bounce reaches hidden (the \
+             light samples still see it): your mean is {mean:.3}, not {want:.3} (z = {z:.1}); \
+             emission a bounce finds must not be added, the light sample counts it"
+        )
+    })
 }
 
 /// Paths traced in the bright furnace of [`unbounded_throughput`].
@@ -127,11 +159,16 @@ pub fn light_from_behind(f: PathFn) -> Option<String> {
                 dim += 1;
                 random(seed, pixel, 0, dim).min(1.0 - f32::EPSILON)
             };
+            // Where the camera sees the floor, nothing reaches it: the
+            // lamp is below its horizon and its bounces leave the scene.
+            let floor = paths
+                .first_hit(ray.origin, ray.dir)
+                .is_some_and(|h| h.emitted == Vec3::ZERO);
             let l = f(&paths, ray.origin, ray.dir, &mut rng);
-            if l.min_element() < -1e-6 {
+            if l.min_element() < -1e-6 || (floor && l.abs().max_element() > 1e-6) {
                 return Some(format!(
                     "a floor lit by a lamp below its horizon (nothing between them): pixel ({x}, {y}) \
-                     got {l}, negative light; a light sample with cos θ ≤ 0 at the surface \
+                     got {l}, expected 0; a light sample with cos θ ≤ 0 at the surface \
                      brings nothing"
                 ));
             }

@@ -1,0 +1,84 @@
+//! Exercise 3.4's hand-built trees and rays: a shuffled stack of
+//! triangles, and one flat triangle (a box of no thickness).
+
+use glam::Vec3;
+
+use crate::ch3_ray_triangle::ray::Ray;
+use crate::counted::ReadableBvh;
+use crate::exercises::draws::Draws;
+
+/// The hand-built cases: a stack of sixteen small triangles along z,
+/// shuffled so that the list order is not the depth order, seen from
+/// above, from below, cut short by t_max, beside it and slanted.
+pub(super) fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
+    let stack: Vec<[Vec3; 3]> = (0..16)
+        .map(|i| {
+            let z = -1.0 - ((i * 7) % 16) as f32;
+            let o = Vec3::new(0.1 * i as f32, 0.0, z);
+            [
+                o + Vec3::new(-2.0, -1.0, 0.0),
+                o + Vec3::new(2.0, -1.0, 0.0),
+                o + Vec3::new(0.0, 2.0, 0.0),
+            ]
+        })
+        .collect();
+    let down = |x: f32, y: f32| Ray::new(Vec3::new(x, y, 1.0), -Vec3::Z).expect("a ray");
+    let up = Ray::new(Vec3::new(0.5, 0.0, -30.0), Vec3::Z).expect("a ray");
+    let slant = Ray::new(Vec3::new(0.5, 0.0, 1.0), Vec3::new(0.05, 0.02, -1.0)).expect("a ray");
+    let inf = f32::INFINITY;
+    let cases = vec![
+        (down(0.5, 0.0), inf, "straight down a stack of 16 triangles"),
+        (up, inf, "straight up the same stack from below"),
+        (
+            down(0.5, 0.0),
+            1.5,
+            "down the stack, t_max before the first hit",
+        ),
+        (
+            down(0.5, 0.0),
+            2.5,
+            "down the stack, t_max just past the first hit",
+        ),
+        (up, 20.0, "up the stack, t_max = 20 past several hits"),
+        (down(50.0, 0.0), inf, "beside the stack: a miss"),
+        (slant, inf, "slanted through the stack"),
+        (
+            {
+                // A hit at t from 10⁻⁶ to 10⁻⁴, drawn for the run: the
+                // interval is (0, t_max), with no margin at its start.
+                let h = Draws::new(39).decades(-6.0, -4.0);
+                Ray::new(Vec3::new(0.5, 0.0, -1.0 + h), -Vec3::Z).expect("a ray")
+            },
+            inf,
+            "from just above the top triangle, a hit closer than 10⁻⁴",
+        ),
+    ];
+    (ReadableBvh::build(&stack), cases)
+}
+
+/// One flat triangle (its box has no thickness: the box is entered where
+/// the triangle is hit, to rounding), and 500 rays from anywhere at drawn
+/// points of it: the hit is in (0, t_max), wherever the box starts.
+pub(super) fn flat_triangle() -> (ReadableBvh, Vec<(Ray, String)>) {
+    let mut d = Draws::new(36);
+    let z = d.range(-2.0, 2.0);
+    let flat = [
+        Vec3::new(d.range(-1.0, 0.0), d.range(-1.0, 0.0), z),
+        Vec3::new(d.range(0.0, 1.0), d.range(-1.0, 0.0), z),
+        Vec3::new(d.range(-1.0, 1.0), d.range(0.0, 1.0), z),
+    ];
+    let rays = (0..500)
+        .filter_map(|_| {
+            d.next_case();
+            let (u, v) = (d.range(0.05, 0.45), d.range(0.05, 0.45));
+            let target = flat[0] + u * (flat[1] - flat[0]) + v * (flat[2] - flat[0]);
+            let origin = target + d.direction() * d.range(1.0, 10.0);
+            let ray = Ray::new(origin, target - origin).ok()?;
+            Some((
+                ray,
+                format!("a flat triangle {flat:?}, a ray from {origin} at {target}"),
+            ))
+        })
+        .collect();
+    (ReadableBvh::build(&[flat]), rays)
+}
