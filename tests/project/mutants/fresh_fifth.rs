@@ -7,7 +7,9 @@
 //! dropped. The grader now catches each: it must fail under every seed
 //! tried, naming its symptom where the grader names one. The testers'
 //! correct alternatives that no other test covers must pass under every
-//! seed.
+//! seed. Where one copies a long solution body, it is a one-line call of
+//! that solution written once with knobs ([`super::knobs`]), its change a
+//! knob turned.
 //!
 //! The mutant that keeps state between calls keeps it in a
 //! `thread_local`, as the tester wrote; [`super::under_seeds`] runs the
@@ -28,6 +30,10 @@ use raystep::grading::exercise::Check;
 use raystep::grading::exercises::paths::{self, PathScene};
 use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6, refraction};
 
+use super::knobs::{
+    self, BvhKnobs, Cut, EdgeKnobs, Knobs, LightCos, MarchEps, MarchKnobs, NormalStep, PathKnobs,
+    Plane, RasterKnobs, SahKnobs, SceneKnobs, Survival, TMin, Weights,
+};
 use super::{fails_every, passes_every};
 
 /// The seeds every mutant must fail under (and every alternative pass
@@ -112,41 +118,15 @@ fn look_at_alternatives_pass() {
 
 // ---- 1.3 draw_edges -------------------------------------------------------------
 
-/// The solution's clip, with the distance past the near plane an end must
-/// be to count as behind it and the point where an edge meets the plane
-/// (given the ends and the first end's share of the way).
-fn edges_with(
-    camera: &Camera,
-    (a, b): (Vec3, Vec3),
-    near: f32,
-    behind: f32,
-    cut: fn(Vec3, Vec3, f32) -> Vec3,
-) -> Option<(Vec2, Vec2)> {
-    let (a, b) = (camera.to_camera(a), camera.to_camera(b));
-    let (da, db) = (a.z + near, b.z + near);
-    let on_plane = |from: Vec3, to: Vec3, d_from: f32, d_to: f32| {
-        let p = cut(from, to, d_from / (d_from - d_to));
-        Vec3::new(p.x, p.y, -near)
-    };
-    let (a, b) = match (da > behind, db > behind) {
-        (true, true) => return None,
-        (true, false) => (on_plane(a, b, da, db), b),
-        (false, true) => (a, on_plane(a, b, da, db)),
-        (false, false) => (a, b),
-    };
-    let raster = |p: Vec3| camera.raster_from_image_plane(Vec2::new(p.x / -p.z, p.y / -p.z));
-    Some((raster(a), raster(b)))
-}
-
 /// An end less than 1e-4 behind the near plane kept: it projects from
 /// behind the plane, past the image.
 fn edges_eps_behind(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(Vec2, Vec2)> {
-    edges_with(camera, (a, b), near, 1e-4, |f, t, s| f + (t - f) * s)
+    knobs::draw_edges(EdgeKnobs::with(|k| k.behind = 1e-4), camera, a, b, near)
 }
 
 /// Correct: the cut by glam's `lerp`, (1 - s) from + s to.
 fn edges_lerp(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(Vec2, Vec2)> {
-    edges_with(camera, (a, b), near, 0.0, Vec3::lerp)
+    knobs::draw_edges(EdgeKnobs::with(|k| k.cut = Cut::Lerp), camera, a, b, near)
 }
 
 #[test]
@@ -266,98 +246,24 @@ fn depth_test_mistakes_fail() {
 
 // ---- 2.4 rasterize_triangle -----------------------------------------------------
 
-fn edge(a: Vec2, b: Vec2, p: Vec2) -> f32 {
-    (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)
-}
-
-fn top_left(a: Vec2, b: Vec2) -> bool {
-    b.y < a.y || (b.y == a.y && b.x > a.x)
-}
-
-/// The current solution's rasterizer (corners not finite refused), with
-/// the perspective-correct weights φ/z (given the edge functions, the
-/// corners' z and the doubled area) and the depth test at a sample (given
-/// its z and the stored depth; whether the sample is drawn) given.
-fn raster_with(
-    v: [Vec3; 3],
-    colors: [Vec3; 3],
-    (width, height): (u32, u32),
-    depth: &mut [f32],
-    image: &mut [Vec3],
-    weights: fn(Vec3, Vec3, f32) -> Vec3,
-    test: fn(f32, &mut f32) -> bool,
-) {
-    let [p0, mut p1, mut p2] = v;
-    let [c0, mut c1, mut c2] = colors;
-    let area = edge(p0.truncate(), p1.truncate(), p2.truncate());
-    if area == 0.0 || !area.is_finite() || !v.iter().all(|p| p.is_finite()) {
-        return;
-    }
-    if area < 0.0 {
-        std::mem::swap(&mut p1, &mut p2);
-        std::mem::swap(&mut c1, &mut c2);
-    }
-    let area = area.abs();
-    let (a, b, c) = (p0.truncate(), p1.truncate(), p2.truncate());
-    let min = a.min(b).min(c).max(Vec2::ZERO);
-    let max = a.max(b).max(c).min(Vec2::new(width as f32, height as f32));
-    for y in min.y.floor() as u32..max.y.ceil() as u32 {
-        for x in min.x.floor() as u32..max.x.ceil() as u32 {
-            let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
-            let w = [(b, c), (c, a), (a, b)].map(|(s, t)| (edge(s, t, p), top_left(s, t)));
-            if !w.iter().all(|&(e, tl)| e > 0.0 || (e == 0.0 && tl)) {
-                continue;
-            }
-            let e = Vec3::new(w[0].0, w[1].0, w[2].0);
-            let q = weights(e, Vec3::new(p0.z, p1.z, p2.z), area);
-            let z = 1.0 / (q.x + q.y + q.z);
-            let i = (y * width + x) as usize;
-            if test(z, &mut depth[i]) {
-                image[i] = (c0 * q.x + c1 * q.y + c2 * q.z) * z;
-            }
-        }
-    }
-}
-
-/// The solution's weights: each edge function over its z, then over the
-/// area.
-fn weights_over_z_first(e: Vec3, z: Vec3, area: f32) -> Vec3 {
-    Vec3::new(e.x / z.x, e.y / z.y, e.z / z.z) / area
-}
-
-/// The solution's depth test: nearer is stored and drawn.
-fn test_nearer(z: f32, stored: &mut f32) -> bool {
-    let nearer = z < *stored;
-    if nearer {
-        *stored = z;
-    }
-    nearer
-}
-
 /// A near plane of the rasterizer's own: a sample nearer than 0.1 is not
 /// drawn.
 fn raster_near_skip(v: [Vec3; 3], c: [Vec3; 3], w: u32, h: u32, d: &mut [f32], i: &mut [Vec3]) {
-    let test = |z: f32, stored: &mut f32| z >= 0.1 && test_nearer(z, stored);
-    raster_with(v, c, (w, h), d, i, weights_over_z_first, test);
+    let k = RasterKnobs::with(|k| k.near = Some(0.1));
+    knobs::rasterize(k, v, c, (w, h), d, i);
 }
 
 /// The stored depth clamped to 1e3: a farther triangle drawn later wins
 /// where it should lose.
 fn raster_clamp_depth(v: [Vec3; 3], c: [Vec3; 3], w: u32, h: u32, d: &mut [f32], i: &mut [Vec3]) {
-    let test = |z: f32, stored: &mut f32| {
-        let nearer = z < *stored;
-        if nearer {
-            *stored = z.min(1.0e3);
-        }
-        nearer
-    };
-    raster_with(v, c, (w, h), d, i, weights_over_z_first, test);
+    let k = RasterKnobs::with(|k| k.depth_clamp = Some(1.0e3));
+    knobs::rasterize(k, v, c, (w, h), d, i);
 }
 
 /// Correct: the barycentric weights first, each then over its z.
 fn raster_bary_first(v: [Vec3; 3], c: [Vec3; 3], w: u32, h: u32, d: &mut [f32], i: &mut [Vec3]) {
-    let weights = |e: Vec3, z: Vec3, area: f32| e / area / z;
-    raster_with(v, c, (w, h), d, i, weights, test_nearer);
+    let k = RasterKnobs::with(|k| k.weights = Weights::BaryFirst);
+    knobs::rasterize(k, v, c, (w, h), d, i);
 }
 
 #[test]
@@ -482,53 +388,8 @@ fn moller_trumbore_alternative_passes() {
 /// The box's entry t as the leaf's t_min: a triangle poking out of its box
 /// in front is missed.
 fn bvh_t_min_enter(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
-    fn visit(
-        bvh: &ReadableBvh,
-        ray: &Ray,
-        inv: Vec3,
-        node: u32,
-        t_enter: f32,
-        best: &mut (f32, Option<Hit>),
-    ) {
-        if t_enter > best.0 {
-            return;
-        }
-        match bvh.nodes[node as usize].kind {
-            NodeKind::Leaf { first, count } => {
-                for &id in &bvh.order[first as usize..(first + count) as usize] {
-                    if let Some(hit) =
-                        intersect_watertight(ray, bvh.tris[id as usize], t_enter, best.0)
-                    {
-                        *best = (
-                            hit.t,
-                            Some(Hit {
-                                triangle: id,
-                                ..hit
-                            }),
-                        );
-                    }
-                }
-            }
-            NodeKind::Inner { left, right } => {
-                let tl = bvh.nodes[left as usize].bounds.enter(ray, inv, best.0);
-                let tr = bvh.nodes[right as usize].bounds.enter(ray, inv, best.0);
-                let mut kids = [(left, tl), (right, tr)];
-                if tr.unwrap_or(f32::INFINITY) < tl.unwrap_or(f32::INFINITY) {
-                    kids.swap(0, 1);
-                }
-                for (child, t) in kids {
-                    if let Some(t) = t {
-                        visit(bvh, ray, inv, child, t, best);
-                    }
-                }
-            }
-        }
-    }
-    let inv = ray.dir.recip();
-    let t_root = bvh.nodes.first()?.bounds.enter(ray, inv, t_max)?;
-    let mut best = (t_max, None);
-    visit(bvh, ray, inv, 0, t_root, &mut best);
-    best.1
+    let k = BvhKnobs::with(|k| k.t_min = TMin::BoxEntry);
+    knobs::closest_hit(k, bvh, ray, t_max)
 }
 
 /// Correct: recursive, each box entered as it is visited, the nearer child
@@ -594,46 +455,8 @@ fn bvh_traversal_mistake_fails() {
 /// Correct: the solution's sweep, the plane midway between the two
 /// centroids (at the upper one where the midpoint rounds down to the
 /// lower).
-fn sah_midway(boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f32)> {
-    let area = |lo: Vec3, hi: Vec3| {
-        let d = (hi - lo).max(Vec3::ZERO).as_dvec3();
-        2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
-    };
-    let n = boxes.len();
-    let (lo, hi) = boxes
-        .iter()
-        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(l, h), b| {
-            (l.min(b[0]), h.max(b[1]))
-        });
-    let whole = area(lo, hi);
-    let (mut best, mut split) = (n as f64, None);
-    for axis in [0, 1, 2] {
-        let mut order: Vec<usize> = (0..n).collect();
-        order.sort_by(|&a, &b| centroids[a][axis].total_cmp(&centroids[b][axis]));
-        let mut right = vec![0.0; n + 1];
-        let (mut rl, mut rh) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-        for k in (0..n).rev() {
-            (rl, rh) = (rl.min(boxes[order[k]][0]), rh.max(boxes[order[k]][1]));
-            right[k] = area(rl, rh);
-        }
-        let (mut ll, mut lh) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-        for k in 1..n {
-            (ll, lh) = (
-                ll.min(boxes[order[k - 1]][0]),
-                lh.max(boxes[order[k - 1]][1]),
-            );
-            let (a, b) = (centroids[order[k - 1]][axis], centroids[order[k]][axis]);
-            if a == b {
-                continue;
-            }
-            let cost = 1.0 + (area(ll, lh) * k as f64 + right[k] * (n - k) as f64) / whole;
-            if cost < best {
-                let m = 0.5 * (a + b);
-                (best, split) = (cost, Some((axis, if a < m { m } else { b })));
-            }
-        }
-    }
-    split
+fn sah_midway(b: &[[Vec3; 2]], c: &[Vec3]) -> Option<(usize, f32)> {
+    knobs::sah_sweep(SahKnobs::with(|k| k.plane = Plane::MidwaySafe), b, c)
 }
 
 #[test]
@@ -670,27 +493,8 @@ fn sphere_sdf_mistake_fails() {
 // ---- 4.2 sphere_trace -----------------------------------------------------------
 
 /// Correct: t summed in f64, each step's point from t rounded to f32.
-fn trace_f64_t(
-    sdf: &dyn Fn(Vec3) -> f32,
-    origin: Vec3,
-    dir: Vec3,
-    epsilon: f32,
-    max_steps: u32,
-    max_distance: f32,
-) -> Option<f32> {
-    let mut t = 0.0f64;
-    for _ in 0..max_steps {
-        let tf = t as f32;
-        let d = sdf(origin + tf * dir);
-        if d.abs() < epsilon {
-            return Some(tf);
-        }
-        if tf > max_distance {
-            return None;
-        }
-        t += d as f64;
-    }
-    None
+fn trace_f64_t(f: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, e: f32, n: u32, m: f32) -> Option<f32> {
+    knobs::sphere_trace(MarchKnobs::with(|k| k.t_f64 = true), f, (o, d), e, n, m)
 }
 
 #[test]
@@ -716,78 +520,23 @@ fn gradient_normal_alternative_passes() {
 
 // ---- 4.4 trace_scene ------------------------------------------------------------
 
-/// The solution's march, with the point whose ε ends it (given the point
-/// before the step and the point), the point whose ε is the normal's step
-/// (given the origin and the hit) and the normal where the gradient
-/// vanishes (given the direction) given.
-fn scene_with(
-    sdf: &dyn Fn(Vec3) -> f32,
-    (origin, dir): (Vec3, Vec3),
-    march: &March,
-    eps_point: fn(Vec3, Vec3) -> Vec3,
-    h_point: fn(Vec3, Vec3) -> Vec3,
-    fallback: fn(Vec3) -> Vec3,
-) -> Option<(f32, Vec3)> {
-    let (mut t, mut f, mut evaluations) = (0.0f32, sdf(origin), 1);
-    let mut before = origin;
-    let p = loop {
-        let p = origin + t * dir;
-        if f.abs() < march.epsilon_at(eps_point(before, p)) {
-            break p;
-        }
-        if t > march.max_distance || evaluations >= march.max_steps {
-            return None;
-        }
-        t += f;
-        f = sdf(origin + t * dir);
-        evaluations += 1;
-        before = p;
-    };
-    let h = march.epsilon_at(h_point(origin, p)).max(1e-4);
-    let partial = |axis: Vec3| (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h);
-    let gradient = Vec3::new(partial(Vec3::X), partial(Vec3::Y), partial(Vec3::Z));
-    let n = gradient.try_normalize().unwrap_or_else(|| fallback(dir));
-    Some((t, if n.dot(dir) > 0.0 { -n } else { n }))
-}
-
-/// The point itself, as the solution takes it.
-fn at_point(_other: Vec3, p: Vec3) -> Vec3 {
-    p
-}
-
 /// The normal's step ε at the origin: far from the origin the step is
 /// the origin's tiny ε, and the gradient rounds away.
-fn scene_h_at_origin(
-    sdf: &dyn Fn(Vec3) -> f32,
-    origin: Vec3,
-    dir: Vec3,
-    march: &March,
-) -> Option<(f32, Vec3)> {
-    let origin_only = |origin: Vec3, _p: Vec3| origin;
-    scene_with(sdf, (origin, dir), march, at_point, origin_only, |d| -d)
+fn scene_h_at_origin(f: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
+    knobs::trace_scene(SceneKnobs::with(|k| k.h = NormalStep::AtOrigin), f, o, d, m)
 }
 
 /// The ε of the point before the step: a far hit is judged with a nearer
 /// point's tighter ε.
-fn scene_eps_before(
-    sdf: &dyn Fn(Vec3) -> f32,
-    origin: Vec3,
-    dir: Vec3,
-    march: &March,
-) -> Option<(f32, Vec3)> {
-    let before = |before: Vec3, _p: Vec3| before;
-    scene_with(sdf, (origin, dir), march, before, at_point, |d| -d)
+fn scene_eps_before(f: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
+    let k = SceneKnobs::with(|k| k.eps = MarchEps::AtPointBefore);
+    knobs::trace_scene(k, f, o, d, m)
 }
 
 /// Correct: d where the gradient vanishes, then turned to face the ray as
 /// every normal is (so -d).
-fn scene_fallback_dir(
-    sdf: &dyn Fn(Vec3) -> f32,
-    origin: Vec3,
-    dir: Vec3,
-    march: &March,
-) -> Option<(f32, Vec3)> {
-    scene_with(sdf, (origin, dir), march, at_point, at_point, |d| d)
+fn scene_fallback_dir(f: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
+    knobs::trace_scene(SceneKnobs::with(|k| k.fallback_along = true), f, o, d, m)
 }
 
 #[test]
@@ -1087,99 +836,29 @@ fn mis_weight_alternative_passes() {
 
 // ---- 6.4 path_radiance ----------------------------------------------------------
 
-/// How a path loop departs from the solution's.
-#[derive(Clone, Copy, PartialEq)]
-enum PathVariant {
-    /// |cos| for the light sample's cosine.
-    AbsCos,
-    /// Half the light sample and half the emission found.
-    HalfHalf,
-    /// The roulette at the top of the loop, before the light sample.
-    RouletteFirst,
-    /// q from β before this bounce's factor.
-    RouletteStale,
-}
-
-/// The solution's loop, departing as `variant` says.
-fn path_with(
-    scene: &PathScene,
-    origin: Vec3,
-    dir: Vec3,
-    rng: &mut dyn FnMut() -> f32,
-    variant: PathVariant,
-) -> Vec3 {
-    use PathVariant::*;
-    let Some(mut hit) = scene.first_hit(origin, dir) else {
-        return Vec3::ZERO;
-    };
-    let (mut radiance, mut beta, mut bounces) = (hit.emitted, Vec3::ONE, 0);
-    let share = if variant == HalfHalf { 0.5 } else { 1.0 };
-    loop {
-        if variant == RouletteFirst && bounces > 1 {
-            let q = beta.max_element().min(1.0);
-            if rng() >= q {
-                break;
-            }
-            beta /= q;
-        }
-        let f = hit.albedo / PI;
-        if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
-            let cos = hit.n.dot(ls.wi);
-            let cos = if variant == AbsCos { cos.abs() } else { cos };
-            if cos > 0.0 && ls.pdf > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
-                radiance += share * beta * f * ls.li * cos / ls.pdf;
-            }
-        }
-        let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
-        if pdf <= 0.0 {
-            break;
-        }
-        let q_before = beta.max_element().min(1.0);
-        beta *= f * hit.n.dot(wi) / pdf;
-        bounces += 1;
-        if variant != RouletteFirst && bounces > 1 {
-            let q = if variant == RouletteStale {
-                q_before
-            } else {
-                beta.max_element().min(1.0)
-            };
-            if rng() >= q {
-                break;
-            }
-            beta /= q;
-        }
-        match scene.next_hit(&hit, wi) {
-            Some(next) => {
-                if variant == HalfHalf {
-                    radiance += 0.5 * beta * next.emitted;
-                }
-                hit = next;
-            }
-            None => break,
-        }
-    }
-    radiance
-}
-
 /// |cos| for the light sample: light behind the surface lights it.
 fn path_abs_cos(scene: &PathScene, o: Vec3, d: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3 {
-    path_with(scene, o, d, rng, PathVariant::AbsCos)
+    let k = PathKnobs::with(|k| k.light_cos = LightCos::Abs);
+    knobs::path(k, scene, o, d, rng)
 }
 
 /// Half the light sample plus half the emission found, with no MIS
 /// weights: the halves are not of one estimate.
 fn path_half_half(scene: &PathScene, o: Vec3, d: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3 {
-    path_with(scene, o, d, rng, PathVariant::HalfHalf)
+    let k = PathKnobs::with(|k| (k.light_weight, k.found_emission) = (0.5, Some(0.5)));
+    knobs::path(k, scene, o, d, rng)
 }
 
 /// Correct: the roulette at the top of the loop, before the light sample.
 fn path_roulette_top(scene: &PathScene, o: Vec3, d: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3 {
-    path_with(scene, o, d, rng, PathVariant::RouletteFirst)
+    let k = PathKnobs::with(|k| k.roulette_at_top = true);
+    knobs::path(k, scene, o, d, rng)
 }
 
 /// Correct: q from β before this bounce's factor.
 fn path_roulette_stale(scene: &PathScene, o: Vec3, d: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3 {
-    path_with(scene, o, d, rng, PathVariant::RouletteStale)
+    let k = PathKnobs::with(|k| k.q = Survival::LargestBefore);
+    knobs::path(k, scene, o, d, rng)
 }
 
 #[test]

@@ -7,6 +7,9 @@
 //! test. The grader now catches each: it must fail under every seed tried,
 //! naming its symptom where the grader names one. The testers' correct
 //! alternatives that no other test covers must pass under every seed.
+//! Where one copies a long solution body, it is a one-line call of that
+//! solution written once with knobs ([`super::knobs`]), its change a knob
+//! turned.
 //!
 //! The mutants that keep state between calls keep it in a `thread_local`,
 //! as the testers wrote; [`super::under_seeds`] runs the seeds one after another
@@ -17,7 +20,6 @@
 use std::cell::Cell;
 use std::collections::HashMap;
 use std::f32::consts::PI;
-use std::ops::Range;
 
 use glam::{Mat4, Vec2, Vec3};
 use raystep::ch1_projection::camera::Camera;
@@ -26,6 +28,10 @@ use raystep::grading::exercise::Check;
 use raystep::grading::exercises::paths::{self, PathScene};
 use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6};
 
+use super::knobs::{
+    self, surface_area, Axes, EdgeKnobs, Knobs, MarchEps, Measure, MollerKnobs, PathKnobs,
+    RasterKnobs, SahKnobs, SceneKnobs, Survival,
+};
 use super::{fails_every, passes_every};
 
 /// The seeds every mutant must fail under (and every alternative pass
@@ -107,23 +113,8 @@ fn look_at_mistake_fails() {
 
 /// An edge of no length (a == b) drawn as nothing, not as a point.
 fn edges_zero_length(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(Vec2, Vec2)> {
-    if a == b {
-        return None;
-    }
-    let (a, b) = (camera.to_camera(a), camera.to_camera(b));
-    let (da, db) = (a.z + near, b.z + near);
-    let on_plane = |from: Vec3, to: Vec3, d_from: f32, d_to: f32| {
-        let p = from + (to - from) * (d_from / (d_from - d_to));
-        Vec3::new(p.x, p.y, -near)
-    };
-    let (a, b) = match (da > 0.0, db > 0.0) {
-        (true, true) => return None,
-        (true, false) => (on_plane(a, b, da, db), b),
-        (false, true) => (a, on_plane(a, b, da, db)),
-        (false, false) => (a, b),
-    };
-    let raster = |p: Vec3| camera.raster_from_image_plane(Vec2::new(p.x / -p.z, p.y / -p.z));
-    Some((raster(a), raster(b)))
+    let k = EdgeKnobs::with(|k| k.zero_length_none = true);
+    knobs::draw_edges(k, camera, a, b, near)
 }
 
 #[test]
@@ -170,81 +161,17 @@ fn depth_test_mistake_fails() {
 
 // ---- 2.4 rasterize_triangle -----------------------------------------------------
 
-fn edge(a: Vec2, b: Vec2, p: Vec2) -> f32 {
-    (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)
-}
-
-fn top_left(a: Vec2, b: Vec2) -> bool {
-    b.y < a.y || (b.y == a.y && b.x > a.x)
-}
-
-/// The solution's rasterizer, with the test that refuses a triangle
-/// (given its signed doubled area and corners) and whether a row stops at
-/// the first sample outside after a run inside.
-fn raster_with(
-    v: [Vec3; 3],
-    colors: [Vec3; 3],
-    (width, height): (u32, u32),
-    depth: &mut [f32],
-    image: &mut [Vec3],
-    refuse: fn(f32, [Vec3; 3]) -> bool,
-    row_break: bool,
-) {
-    let [p0, mut p1, mut p2] = v;
-    let [c0, mut c1, mut c2] = colors;
-    let area = edge(p0.truncate(), p1.truncate(), p2.truncate());
-    if refuse(area, v) {
-        return;
-    }
-    if area < 0.0 {
-        std::mem::swap(&mut p1, &mut p2);
-        std::mem::swap(&mut c1, &mut c2);
-    }
-    let area = area.abs();
-    let (a, b, c) = (p0.truncate(), p1.truncate(), p2.truncate());
-    let min = a.min(b).min(c).max(Vec2::ZERO);
-    let max = a.max(b).max(c).min(Vec2::new(width as f32, height as f32));
-    for y in min.y.floor() as u32..max.y.ceil() as u32 {
-        let mut inside_run = false;
-        for x in min.x.floor() as u32..max.x.ceil() as u32 {
-            let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
-            let w = [(b, c), (c, a), (a, b)].map(|(s, t)| (edge(s, t, p), top_left(s, t)));
-            if !w.iter().all(|&(e, tl)| e > 0.0 || (e == 0.0 && tl)) {
-                if row_break && inside_run {
-                    break;
-                }
-                continue;
-            }
-            inside_run = true;
-            let q = Vec3::new(w[0].0 / p0.z, w[1].0 / p1.z, w[2].0 / p2.z) / area;
-            let z = 1.0 / (q.x + q.y + q.z);
-            let i = (y * width + x) as usize;
-            if z < depth[i] {
-                depth[i] = z;
-                image[i] = (c0 * q.x + c1 * q.y + c2 * q.z) * z;
-            }
-        }
-    }
-}
-
-/// The current solution's test: no area, or a corner not finite.
-fn refuse_flat_or_not_finite(area: f32, v: [Vec3; 3]) -> bool {
-    area == 0.0 || !area.is_finite() || !v.iter().all(|p| p.is_finite())
-}
-
 /// An area threshold: a triangle under 1e-3 px² (doubled) draws nothing,
 /// though it covers a sample centre.
 fn raster_area_eps(v: [Vec3; 3], c: [Vec3; 3], w: u32, h: u32, d: &mut [f32], i: &mut [Vec3]) {
-    let refuse = |area: f32, v: [Vec3; 3]| {
-        area.abs() < 1e-3 || !area.is_finite() || !v.iter().all(|p| p.is_finite())
-    };
-    raster_with(v, c, (w, h), d, i, refuse, false);
+    knobs::rasterize(RasterKnobs::with(|k| k.min_area = 1e-3), v, c, (w, h), d, i);
 }
 
 /// Correct: a row stops at the first sample outside after a run inside (a
 /// triangle is convex), corners not finite refused as the solution does.
 fn raster_row_break(v: [Vec3; 3], c: [Vec3; 3], w: u32, h: u32, d: &mut [f32], i: &mut [Vec3]) {
-    raster_with(v, c, (w, h), d, i, refuse_flat_or_not_finite, true);
+    let k = RasterKnobs::with(|k| k.row_break = true);
+    knobs::rasterize(k, v, c, (w, h), d, i);
 }
 
 #[test]
@@ -483,41 +410,14 @@ fn barycentric_inside_mistake_fails() {
 
 // ---- 3.3 moller_trumbore --------------------------------------------------------
 
-/// The solution's (t, u, v), with the hits kept to those `keep` allows and
-/// t then recomputed by `t_of` (given o, d, the corners, t, u and v).
-fn moller_with(
-    o: Vec3,
-    d: Vec3,
-    tri: [Vec3; 3],
-    keep: fn(f32, f32, f32) -> bool,
-    t_of: fn(Vec3, Vec3, [Vec3; 3], f32, f32, f32) -> f32,
-) -> Option<(f32, f32, f32)> {
-    let det3 = |a: Vec3, b: Vec3, c: Vec3| a.dot(b.cross(c));
-    let (e1, e2, s) = (tri[1] - tri[0], tri[2] - tri[0], o - tri[0]);
-    let det = det3(e1, e2, -d);
-    if det == 0.0 {
-        return None;
-    }
-    let u = det3(s, e2, -d) / det;
-    let v = det3(e1, s, -d) / det;
-    let t = det3(e1, e2, s) / det;
-    keep(t, u, v).then(|| (t_of(o, d, tri, t, u, v), u, v))
-}
-
 /// A far cut at t = 1e4: a short d puts a near triangle past it.
 fn moller_far_cut(o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)> {
-    let keep = |t: f32, u: f32, v: f32| !(u < 0.0 || v < 0.0 || u + v > 1.0 || t <= 0.0 || t > 1e4);
-    moller_with(o, d, tri, keep, |_, _, _, t, _, _| t)
+    knobs::moller(MollerKnobs::with(|k| k.far = Some(1e4)), o, d, tri)
 }
 
 /// Correct: t recomputed as the hit point's projection on d, over |d|².
 fn moller_t_projected(o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)> {
-    let keep = |t: f32, u: f32, v: f32| !(u < 0.0 || v < 0.0 || u + v > 1.0 || t <= 0.0);
-    let t_of = |o: Vec3, d: Vec3, tri: [Vec3; 3], _t: f32, u: f32, v: f32| {
-        let p = tri[0] + (tri[1] - tri[0]) * u + (tri[2] - tri[0]) * v;
-        (p - o).dot(d) / d.dot(d)
-    };
-    moller_with(o, d, tri, keep, t_of)
+    knobs::moller(MollerKnobs::with(|k| k.t_projected = true), o, d, tri)
 }
 
 #[test]
@@ -532,100 +432,21 @@ fn moller_trumbore_mistake_fails() {
 
 // ---- 3.5 sah --------------------------------------------------------------------
 
-/// The solution's surface area of the box lo..hi.
-fn surface_area(lo: Vec3, hi: Vec3) -> f64 {
-    let d = (hi - lo).max(Vec3::ZERO).as_dvec3();
-    2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
-}
-
-/// All three axes, as the solution sweeps.
-fn every_axis(_centroids: &[Vec3]) -> Range<usize> {
-    0..3
-}
-
-/// The solution's sweep, with the box's `area` and the `axes` swept (given
-/// the centroids).
-fn sah_with(
-    boxes: &[[Vec3; 2]],
-    centroids: &[Vec3],
-    area: fn(Vec3, Vec3) -> f64,
-    axes: fn(&[Vec3]) -> Range<usize>,
-) -> Option<(usize, f32)> {
-    let n = boxes.len();
-    let (lo, hi) = boxes
-        .iter()
-        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(l, h), b| {
-            (l.min(b[0]), h.max(b[1]))
-        });
-    let whole = area(lo, hi);
-    let (mut best, mut split) = (n as f64, None);
-    for axis in axes(centroids) {
-        let mut order: Vec<usize> = (0..n).collect();
-        order.sort_by(|&a, &b| centroids[a][axis].total_cmp(&centroids[b][axis]));
-        let mut right = vec![0.0; n + 1];
-        let (mut rl, mut rh) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-        for k in (0..n).rev() {
-            (rl, rh) = (rl.min(boxes[order[k]][0]), rh.max(boxes[order[k]][1]));
-            right[k] = area(rl, rh);
-        }
-        let (mut ll, mut lh) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-        for k in 1..n {
-            (ll, lh) = (
-                ll.min(boxes[order[k - 1]][0]),
-                lh.max(boxes[order[k - 1]][1]),
-            );
-            let (a, b) = (centroids[order[k - 1]][axis], centroids[order[k]][axis]);
-            if a == b {
-                continue;
-            }
-            let cost = 1.0 + (area(ll, lh) * k as f64 + right[k] * (n - k) as f64) / whole;
-            if cost < best {
-                (best, split) = (cost, Some((axis, b)));
-            }
-        }
-    }
-    split
-}
-
 /// Only the axis along which the centroids spread furthest is swept.
-fn sah_longest_axis(boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f32)> {
-    let longest = |centroids: &[Vec3]| {
-        let (mut cl, mut ch) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-        for c in centroids {
-            cl = cl.min(*c);
-            ch = ch.max(*c);
-        }
-        let ext = ch - cl;
-        let long = if ext.x >= ext.y && ext.x >= ext.z {
-            0
-        } else if ext.y >= ext.z {
-            1
-        } else {
-            2
-        };
-        long..long + 1
-    };
-    sah_with(boxes, centroids, surface_area, longest)
+fn sah_longest_axis(b: &[[Vec3; 2]], c: &[Vec3]) -> Option<(usize, f32)> {
+    knobs::sah_sweep(SahKnobs::with(|k| k.axes = Axes::Longest), b, c)
 }
 
 /// The half-perimeter dx + dy + dz for the surface area.
-fn sah_perimeter(boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f32)> {
-    let perimeter = |lo: Vec3, hi: Vec3| {
-        let d = (hi - lo).max(Vec3::ZERO).as_dvec3();
-        d.x + d.y + d.z
-    };
-    sah_with(boxes, centroids, perimeter, every_axis)
+fn sah_perimeter(b: &[[Vec3; 2]], c: &[Vec3]) -> Option<(usize, f32)> {
+    knobs::sah_sweep(SahKnobs::with(|k| k.measure = Measure::HalfPerimeter), b, c)
 }
 
 /// Correct: every plane at a distinct centroid value costed directly,
 /// counting the triangles on each side.
 fn sah_brute(boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f32)> {
     let n = boxes.len();
-    let (lo, hi) = boxes
-        .iter()
-        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(l, h), b| {
-            (l.min(b[0]), h.max(b[1]))
-        });
+    let (lo, hi) = knobs::bounds(boxes);
     let whole = surface_area(lo, hi);
     let (mut best, mut split) = (n as f64, None);
     for axis in 0..3 {
@@ -736,30 +557,8 @@ fn gradient_normal_mistakes_fail() {
 
 /// |p| for the largest coordinate in ε at p: far along a diagonal, the
 /// tolerance is √3 times the contract's.
-fn scene_eps_length(
-    sdf: &dyn Fn(Vec3) -> f32,
-    origin: Vec3,
-    dir: Vec3,
-    march: &March,
-) -> Option<(f32, Vec3)> {
-    let (mut t, mut f, mut evaluations) = (0.0f32, sdf(origin), 1);
-    let p = loop {
-        let p = origin + t * dir;
-        if f.abs() < march.epsilon.max(8.0 * f32::EPSILON * p.length()) {
-            break p;
-        }
-        if t > march.max_distance || evaluations >= march.max_steps {
-            return None;
-        }
-        t += f;
-        f = sdf(origin + t * dir);
-        evaluations += 1;
-    };
-    let h = march.epsilon_at(p).max(1e-4);
-    let partial = |axis: Vec3| (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h);
-    let gradient = Vec3::new(partial(Vec3::X), partial(Vec3::Y), partial(Vec3::Z));
-    let n = gradient.try_normalize().unwrap_or(-dir);
-    Some((t, if n.dot(dir) > 0.0 { -n } else { n }))
+fn scene_eps_length(f: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
+    knobs::trace_scene(SceneKnobs::with(|k| k.eps = MarchEps::ByLength), f, o, d, m)
 }
 
 #[test]
@@ -951,57 +750,15 @@ fn russian_roulette_mistakes_fail() {
 
 // ---- 6.4 path_radiance ----------------------------------------------------------
 
-/// The solution's loop, with its roulette's q and the bounce it starts
-/// after given.
-fn path_with(
-    scene: &PathScene,
-    origin: Vec3,
-    dir: Vec3,
-    rng: &mut dyn FnMut() -> f32,
-    q_of: fn(Vec3) -> f32,
-    roulette_after: u32,
-) -> Vec3 {
-    let Some(mut hit) = scene.first_hit(origin, dir) else {
-        return Vec3::ZERO;
-    };
-    let (mut radiance, mut beta, mut bounces) = (hit.emitted, Vec3::ONE, 0);
-    loop {
-        let f = hit.albedo / PI;
-        if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
-            let cos = hit.n.dot(ls.wi);
-            if cos > 0.0 && ls.pdf > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
-                radiance += beta * f * ls.li * cos / ls.pdf;
-            }
-        }
-        let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
-        if pdf <= 0.0 {
-            break;
-        }
-        beta *= f * hit.n.dot(wi) / pdf;
-        bounces += 1;
-        if bounces > roulette_after {
-            let q = q_of(beta);
-            if rng() >= q {
-                break;
-            }
-            beta /= q;
-        }
-        match scene.next_hit(&hit, wi) {
-            Some(next) => hit = next,
-            None => break,
-        }
-    }
-    radiance
-}
-
 /// q from β's smallest channel: a coloured path dies on its dimmest.
 fn path_q_min(scene: &PathScene, o: Vec3, d: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3 {
-    path_with(scene, o, d, rng, |beta| beta.min_element().min(1.0), 1)
+    let k = PathKnobs::with(|k| k.q = Survival::Smallest);
+    knobs::path(k, scene, o, d, rng)
 }
 
 /// Correct: the roulette from the first bounce on.
 fn path_roulette_first(scene: &PathScene, o: Vec3, d: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3 {
-    path_with(scene, o, d, rng, |beta| beta.max_element().min(1.0), 0)
+    knobs::path(PathKnobs::with(|k| k.roulette_after = 0), scene, o, d, rng)
 }
 
 #[test]

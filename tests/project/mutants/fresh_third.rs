@@ -5,18 +5,24 @@
 //! a strict comparison, a t_min) or a step left out. The grader now
 //! catches each: it must fail under every seed tried, naming its symptom
 //! where the grader names one. The testers' correct alternatives that no
-//! other test covers must pass under every seed.
+//! other test covers must pass under every seed. Where one copies a long
+//! solution body, it is a one-line call of that solution written once with
+//! knobs ([`super::knobs`]), its change a knob turned.
 
 use std::f32::consts::PI;
 
 use glam::{Mat4, Vec2, Vec3, Vec4};
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch4_implicit_surfaces::march::March;
-use raystep::grading::counted::{intersect_watertight, Hit, NodeKind, ReadableBvh};
+use raystep::grading::counted::{Hit, ReadableBvh};
 use raystep::grading::exercise::Check;
 use raystep::grading::exercises::paths::{self, PathScene};
 use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6, refraction};
 
+use super::knobs::{
+    self, BvhKnobs, Knobs, LightCos, MarchKnobs, MollerKnobs, NormalStep, PathKnobs, SahKnobs,
+    SceneKnobs, Singular, Survival, TMin,
+};
 use super::{fails_every, passes_every};
 
 /// The seeds every mutant must fail under (and every alternative pass
@@ -235,44 +241,20 @@ fn barycentric_inside_mistake_fails() {
 
 // ---- 3.3 moller_trumbore --------------------------------------------------------
 
-/// The solution's determinants, with the test on (t, u, v) given.
-fn moller_with(
-    o: Vec3,
-    d: Vec3,
-    tri: [Vec3; 3],
-    singular: impl Fn(f32, Vec3, Vec3) -> bool,
-    keep: impl Fn(f32, f32, f32) -> bool,
-) -> Option<(f32, f32, f32)> {
-    let det3 = |a: Vec3, b: Vec3, c: Vec3| a.dot(b.cross(c));
-    let (e1, e2, s) = (tri[1] - tri[0], tri[2] - tri[0], o - tri[0]);
-    let det = det3(e1, e2, -d);
-    if singular(det, e1, e2) {
-        return None;
-    }
-    let u = det3(s, e2, -d) / det;
-    let v = det3(e1, s, -d) / det;
-    let t = det3(e1, e2, s) / det;
-    keep(t, u, v).then_some((t, u, v))
-}
-
 /// t = 0 accepted: the ray's own origin on the triangle is a hit.
 fn moller_t_zero(o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)> {
-    let keep = |t: f32, u: f32, v: f32| !(u < 0.0 || v < 0.0 || u + v > 1.0 || t < 0.0);
-    moller_with(o, d, tri, |det, _, _| det == 0.0, keep)
+    knobs::moller(MollerKnobs::with(|k| k.t_zero = true), o, d, tri)
 }
 
 /// Strict comparisons: the edges and corners are outside.
 fn moller_strict(o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)> {
-    let keep = |t: f32, u: f32, v: f32| !(u <= 0.0 || v <= 0.0 || u + v >= 1.0 || t <= 0.0);
-    moller_with(o, d, tri, |det, _, _| det == 0.0, keep)
+    knobs::moller(MollerKnobs::with(|k| k.strict_edges = true), o, d, tri)
 }
 
 /// A relative ε on the determinant against |e1| |e2| |d|.
 fn moller_rel_eps(o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)> {
-    let singular =
-        |det: f32, e1: Vec3, e2: Vec3| det.abs() < 1e-6 * e1.length() * e2.length() * d.length();
-    let keep = |t: f32, u: f32, v: f32| !(u < 0.0 || v < 0.0 || u + v > 1.0 || t <= 0.0);
-    moller_with(o, d, tri, singular, keep)
+    let k = MollerKnobs::with(|k| k.singular = Singular::Relative(1e-6));
+    knobs::moller(k, o, d, tri)
 }
 
 /// Correct: the classic pvec, tvec, qvec form, with early outs.
@@ -318,53 +300,8 @@ fn moller_trumbore_mistakes_fail() {
 
 /// t_min 1e-4 for 0: a hit nearer than 1e-4 along the ray is missed.
 fn bvh_t_min_eps(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
-    fn visit(
-        bvh: &ReadableBvh,
-        ray: &Ray,
-        inv: Vec3,
-        node: u32,
-        t: f32,
-        best: &mut (f32, Option<Hit>),
-    ) {
-        if t > best.0 {
-            return;
-        }
-        match bvh.nodes[node as usize].kind {
-            NodeKind::Leaf { first, count } => {
-                for &id in &bvh.order[first as usize..(first + count) as usize] {
-                    if let Some(hit) =
-                        intersect_watertight(ray, bvh.tris[id as usize], 1e-4, best.0)
-                    {
-                        *best = (
-                            hit.t,
-                            Some(Hit {
-                                triangle: id,
-                                ..hit
-                            }),
-                        );
-                    }
-                }
-            }
-            NodeKind::Inner { left, right } => {
-                let tl = bvh.nodes[left as usize].bounds.enter(ray, inv, best.0);
-                let tr = bvh.nodes[right as usize].bounds.enter(ray, inv, best.0);
-                let mut kids = [(left, tl), (right, tr)];
-                if tr.unwrap_or(f32::INFINITY) < tl.unwrap_or(f32::INFINITY) {
-                    kids.swap(0, 1);
-                }
-                for (child, t) in kids {
-                    if let Some(t) = t {
-                        visit(bvh, ray, inv, child, t, best);
-                    }
-                }
-            }
-        }
-    }
-    let inv = ray.dir.recip();
-    let t_root = bvh.nodes.first()?.bounds.enter(ray, inv, t_max)?;
-    let mut best = (t_max, None);
-    visit(bvh, ray, inv, 0, t_root, &mut best);
-    best.1
+    let k = BvhKnobs::with(|k| k.t_min = TMin::Fixed(1e-4));
+    knobs::closest_hit(k, bvh, ray, t_max)
 }
 
 #[test]
@@ -377,46 +314,8 @@ fn bvh_traversal_mistake_fails() {
 // ---- 3.5 sah --------------------------------------------------------------------
 
 /// The traversal's cost left out: a split's cost is its children's alone.
-fn sah_no_traversal(boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f32)> {
-    let area = |lo: Vec3, hi: Vec3| {
-        let d = (hi - lo).max(Vec3::ZERO).as_dvec3();
-        2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
-    };
-    let n = boxes.len();
-    let (lo, hi) = boxes
-        .iter()
-        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(l, h), b| {
-            (l.min(b[0]), h.max(b[1]))
-        });
-    let whole = area(lo, hi);
-    let (mut best, mut split) = (n as f64, None);
-    for axis in [0, 1, 2] {
-        let mut order: Vec<usize> = (0..n).collect();
-        order.sort_by(|&a, &b| centroids[a][axis].total_cmp(&centroids[b][axis]));
-        let mut right = vec![0.0; n + 1];
-        let (mut rl, mut rh) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-        for k in (0..n).rev() {
-            (rl, rh) = (rl.min(boxes[order[k]][0]), rh.max(boxes[order[k]][1]));
-            right[k] = area(rl, rh);
-        }
-        let (mut ll, mut lh) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
-        for k in 1..n {
-            (ll, lh) = (
-                ll.min(boxes[order[k - 1]][0]),
-                lh.max(boxes[order[k - 1]][1]),
-            );
-            let (a, b) = (centroids[order[k - 1]][axis], centroids[order[k]][axis]);
-            if a == b {
-                continue;
-            }
-            // The solution's 1.0 + is the traversal's cost.
-            let cost = 0.0 + (area(ll, lh) * k as f64 + right[k] * (n - k) as f64) / whole;
-            if cost < best {
-                (best, split) = (cost, Some((axis, b)));
-            }
-        }
-    }
-    split
+fn sah_no_traversal(b: &[[Vec3; 2]], c: &[Vec3]) -> Option<(usize, f32)> {
+    knobs::sah_sweep(SahKnobs::with(|k| k.trav_cost = 0.0), b, c)
 }
 
 #[test]
@@ -431,26 +330,9 @@ fn sah_mistake_fails() {
 // ---- 4.2 sphere_trace -----------------------------------------------------------
 
 /// f < ε for |f| < ε: a point inside the surface is a hit.
-fn trace_no_abs(
-    sdf: &dyn Fn(Vec3) -> f32,
-    o: Vec3,
-    d: Vec3,
-    eps: f32,
-    steps: u32,
-    max: f32,
-) -> Option<f32> {
-    let mut t = 0.0;
-    for _ in 0..steps {
-        let f = sdf(o + t * d);
-        if f < eps {
-            return Some(t);
-        }
-        if t > max {
-            return None;
-        }
-        t += f;
-    }
-    None
+fn trace_no_abs(f: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, e: f32, n: u32, m: f32) -> Option<f32> {
+    let k = MarchKnobs::with(|k| k.signed_hit = true);
+    knobs::sphere_trace(k, f, (o, d), e, n, m)
 }
 
 #[test]
@@ -489,47 +371,15 @@ fn gradient_normal_mistake_fails() {
 
 // ---- 4.4 trace_scene ------------------------------------------------------------
 
-/// The solution's tracer, with the normal's difference step `h` at the hit.
-fn trace_with_h(
-    sdf: &dyn Fn(Vec3) -> f32,
-    origin: Vec3,
-    dir: Vec3,
-    march: &March,
-    h: impl Fn(Vec3) -> f32,
-) -> Option<(f32, Vec3)> {
-    let (mut t, mut f, mut evaluations) = (0.0f32, sdf(origin), 1);
-    let p = loop {
-        let p = origin + t * dir;
-        if f.abs() < march.epsilon_at(p) {
-            break p;
-        }
-        if t > march.max_distance || evaluations >= march.max_steps {
-            return None;
-        }
-        t += f;
-        f = sdf(origin + t * dir);
-        evaluations += 1;
-    };
-    let h = h(p);
-    let partial = |axis: Vec3| (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h);
-    let gradient = Vec3::new(partial(Vec3::X), partial(Vec3::Y), partial(Vec3::Z));
-    let n = gradient.try_normalize().unwrap_or(-dir);
-    Some((t, if n.dot(dir) > 0.0 { -n } else { n }))
-}
-
 /// The normal's step the fixed ε, not scaled to the hit point.
-fn scene_h_fixed_eps(
-    sdf: &dyn Fn(Vec3) -> f32,
-    o: Vec3,
-    d: Vec3,
-    m: &March,
-) -> Option<(f32, Vec3)> {
-    trace_with_h(sdf, o, d, m, |_| m.epsilon)
+fn scene_h_fixed_eps(f: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
+    let k = SceneKnobs::with(|k| (k.h, k.h_floor) = (NormalStep::Fixed, None));
+    knobs::trace_scene(k, f, o, d, m)
 }
 
 /// The normal's step ε at the point, without the floor of 1e-4.
-fn scene_h_no_floor(sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
-    trace_with_h(sdf, o, d, m, |p| m.epsilon_at(p))
+fn scene_h_no_floor(f: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
+    knobs::trace_scene(SceneKnobs::with(|k| k.h_floor = None), f, o, d, m)
 }
 
 /// Correct: a for loop over the budget, the hit kept, then the normal.
@@ -796,62 +646,16 @@ fn mis_weight_alternative_passes() {
 
 // ---- 6.4 path_radiance ----------------------------------------------------------
 
-/// The solution's loop, with its roulette's q and the test a light
-/// sample's cosine must pass given.
-fn path_with(
-    scene: &PathScene,
-    origin: Vec3,
-    dir: Vec3,
-    rng: &mut dyn FnMut() -> f32,
-    q_of: fn(Vec3) -> f32,
-    cos_ok: fn(f32) -> bool,
-) -> Vec3 {
-    let Some(mut hit) = scene.first_hit(origin, dir) else {
-        return Vec3::ZERO;
-    };
-    let (mut radiance, mut beta, mut bounces) = (hit.emitted, Vec3::ONE, 0);
-    loop {
-        let f = hit.albedo / PI;
-        if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
-            let cos = hit.n.dot(ls.wi);
-            if cos_ok(cos) && ls.pdf > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
-                radiance += beta * f * ls.li * cos / ls.pdf;
-            }
-        }
-        let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
-        if pdf <= 0.0 {
-            break;
-        }
-        beta *= f * hit.n.dot(wi) / pdf;
-        bounces += 1;
-        if bounces > 1 {
-            let q = q_of(beta);
-            if rng() >= q {
-                break;
-            }
-            beta /= q;
-        }
-        match scene.next_hit(&hit, wi) {
-            Some(next) => hit = next,
-            None => break,
-        }
-    }
-    radiance
-}
-
-/// The solution's q: β's largest channel, at most 1.
-fn q_from_beta(beta: Vec3) -> f32 {
-    beta.max_element().min(1.0)
-}
-
 /// Roulette at a fixed q = 0.8, not taken from the throughput.
 fn path_fixed_q(scene: &PathScene, o: Vec3, d: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3 {
-    path_with(scene, o, d, rng, |_| 0.8, |cos| cos > 0.0)
+    let k = PathKnobs::with(|k| k.q = Survival::Fixed(0.8));
+    knobs::path(k, scene, o, d, rng)
 }
 
 /// A light sample's cosine not clamped: light from behind subtracted.
 fn path_nee_unclamped(scene: &PathScene, o: Vec3, d: Vec3, rng: &mut dyn FnMut() -> f32) -> Vec3 {
-    path_with(scene, o, d, rng, q_from_beta, |_| true)
+    let k = PathKnobs::with(|k| k.light_cos = LightCos::Unclamped);
+    knobs::path(k, scene, o, d, rng)
 }
 
 /// Correct: roulette from the first bounce on β's mean, in [0.05, 1].

@@ -18,6 +18,7 @@ pub mod fresh_fifth;
 pub mod fresh_fourth;
 pub mod fresh_new;
 pub mod fresh_third;
+pub mod knobs;
 pub mod refraction;
 
 /// Runs `check` once under each of `seeds` (the seed of the inputs the

@@ -1,0 +1,796 @@
+//! The course's solutions (`tests/project/solutions/`) whose bodies the
+//! fresh sets' mutants and alternatives copy more than once, each written
+//! once with knobs: a small `Copy` struct whose `Default` is the course's
+//! solution exactly, one knob per departure a tester made, and the
+//! solution taking it. A mutant is then a one-line call with its knobs
+//! set by [`Knobs::with`] (as `Knobs` in `ch2.rs` does for the
+//! rasterizer). The tests at the
+//! end guard the defaults: with no knob turned, each passes its check.
+
+use std::f32::consts::PI;
+
+use glam::{Vec2, Vec3};
+use raystep::ch1_projection::camera::Camera;
+use raystep::ch3_ray_triangle::ray::Ray;
+use raystep::ch4_implicit_surfaces::march::March;
+use raystep::grading::counted::{intersect_watertight, Hit, NodeKind, ReadableBvh};
+use raystep::grading::exercises::paths::{self, PathScene};
+use raystep::grading::exercises::{ch1, ch2, ch3, ch4};
+
+use super::{passes_every, SEEDS};
+
+/// A set of knobs: the course's solution by default, some knobs turned by
+/// [`Knobs::with`] in one line, where a struct literal would take six.
+pub trait Knobs: Default {
+    /// The defaults with the knobs `turn` sets.
+    fn with(turn: impl FnOnce(&mut Self)) -> Self {
+        let mut k = Self::default();
+        turn(&mut k);
+        k
+    }
+}
+
+impl Knobs for EdgeKnobs {}
+impl Knobs for RasterKnobs {}
+impl Knobs for MollerKnobs {}
+impl Knobs for BvhKnobs {}
+impl Knobs for SahKnobs {}
+impl Knobs for MarchKnobs {}
+impl Knobs for SceneKnobs {}
+impl Knobs for PathKnobs {}
+
+// ---- 1.3 draw_edges -------------------------------------------------------------
+
+/// How the point where an edge meets the near plane is found, given the
+/// ends and the first end's share s of the way.
+#[derive(Clone, Copy, Default)]
+pub enum Cut {
+    /// from + (to - from) s, as the solution.
+    #[default]
+    Linear,
+    /// glam's `lerp`, (1 - s) from + s to.
+    Lerp,
+}
+
+/// How a clip departs from the solution of draw_edges.
+#[derive(Clone, Copy, Default)]
+pub struct EdgeKnobs {
+    /// An edge of no length (a == b) drawn as nothing.
+    pub zero_length_none: bool,
+    /// How far past the near plane an end must be to count as behind it.
+    pub behind: f32,
+    /// How the cut is found.
+    pub cut: Cut,
+}
+
+/// The solution of draw_edges, departing as `k` says.
+pub fn draw_edges(
+    k: EdgeKnobs,
+    camera: &Camera,
+    a: Vec3,
+    b: Vec3,
+    near: f32,
+) -> Option<(Vec2, Vec2)> {
+    if k.zero_length_none && a == b {
+        return None;
+    }
+    let (a, b) = (camera.to_camera(a), camera.to_camera(b));
+    let (da, db) = (a.z + near, b.z + near);
+    let on_plane = |from: Vec3, to: Vec3, d_from: f32, d_to: f32| {
+        let s = d_from / (d_from - d_to);
+        let p = match k.cut {
+            Cut::Linear => from + (to - from) * s,
+            Cut::Lerp => from.lerp(to, s),
+        };
+        Vec3::new(p.x, p.y, -near)
+    };
+    let (a, b) = match (da > k.behind, db > k.behind) {
+        (true, true) => return None,
+        (true, false) => (on_plane(a, b, da, db), b),
+        (false, true) => (a, on_plane(a, b, da, db)),
+        (false, false) => (a, b),
+    };
+    let raster = |p: Vec3| camera.raster_from_image_plane(Vec2::new(p.x / -p.z, p.y / -p.z));
+    Some((raster(a), raster(b)))
+}
+
+// ---- 2.4 rasterize_triangle -----------------------------------------------------
+
+fn edge(a: Vec2, b: Vec2, p: Vec2) -> f32 {
+    (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)
+}
+
+fn top_left(a: Vec2, b: Vec2) -> bool {
+    b.y < a.y || (b.y == a.y && b.x > a.x)
+}
+
+/// How the perspective-correct weights φ/z are formed from the edge
+/// functions e, the corners' z and the doubled area.
+#[derive(Clone, Copy, Default)]
+pub enum Weights {
+    /// Each edge function over its z, then over the area, as the solution.
+    #[default]
+    OverZFirst,
+    /// The barycentric weights e / area first, each then over its z.
+    BaryFirst,
+}
+
+/// How a rasterizer departs from the solution of rasterize_triangle.
+#[derive(Clone, Copy, Default)]
+pub struct RasterKnobs {
+    /// A triangle whose doubled area is under this draws nothing (the
+    /// solution refuses only an area of 0).
+    pub min_area: f32,
+    /// A row stops at the first sample outside after a run inside.
+    pub row_break: bool,
+    /// How the weights are formed.
+    pub weights: Weights,
+    /// A sample nearer than this is not drawn.
+    pub near: Option<f32>,
+    /// The depth stored clamped to this.
+    pub depth_clamp: Option<f32>,
+}
+
+/// The solution of rasterize_triangle (corners not finite refused),
+/// departing as `k` says.
+pub fn rasterize(
+    k: RasterKnobs,
+    v: [Vec3; 3],
+    colors: [Vec3; 3],
+    (width, height): (u32, u32),
+    depth: &mut [f32],
+    image: &mut [Vec3],
+) {
+    let [p0, mut p1, mut p2] = v;
+    let [c0, mut c1, mut c2] = colors;
+    let area = edge(p0.truncate(), p1.truncate(), p2.truncate());
+    if area == 0.0
+        || area.abs() < k.min_area
+        || !area.is_finite()
+        || !v.iter().all(|p| p.is_finite())
+    {
+        return;
+    }
+    if area < 0.0 {
+        std::mem::swap(&mut p1, &mut p2);
+        std::mem::swap(&mut c1, &mut c2);
+    }
+    let area = area.abs();
+    let (a, b, c) = (p0.truncate(), p1.truncate(), p2.truncate());
+    let min = a.min(b).min(c).max(Vec2::ZERO);
+    let max = a.max(b).max(c).min(Vec2::new(width as f32, height as f32));
+    for y in min.y.floor() as u32..max.y.ceil() as u32 {
+        let mut inside_run = false;
+        for x in min.x.floor() as u32..max.x.ceil() as u32 {
+            let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
+            let w = [(b, c), (c, a), (a, b)].map(|(s, t)| (edge(s, t, p), top_left(s, t)));
+            if !w.iter().all(|&(e, tl)| e > 0.0 || (e == 0.0 && tl)) {
+                if k.row_break && inside_run {
+                    break;
+                }
+                continue;
+            }
+            inside_run = true;
+            let (e, z) = (
+                Vec3::new(w[0].0, w[1].0, w[2].0),
+                Vec3::new(p0.z, p1.z, p2.z),
+            );
+            let q = match k.weights {
+                Weights::OverZFirst => Vec3::new(e.x / z.x, e.y / z.y, e.z / z.z) / area,
+                Weights::BaryFirst => e / area / z,
+            };
+            let z = 1.0 / (q.x + q.y + q.z);
+            let i = (y * width + x) as usize;
+            if k.near.is_none_or(|near| z >= near) && z < depth[i] {
+                depth[i] = k.depth_clamp.map_or(z, |most| z.min(most));
+                image[i] = (c0 * q.x + c1 * q.y + c2 * q.z) * z;
+            }
+        }
+    }
+}
+
+// ---- 3.3 moller_trumbore --------------------------------------------------------
+
+/// When the determinant counts as zero.
+#[derive(Clone, Copy, Default)]
+pub enum Singular {
+    /// Exactly 0, as the solution.
+    #[default]
+    Zero,
+    /// Under this fraction of |e1| |e2| |d|.
+    Relative(f32),
+}
+
+/// How a ray-triangle test departs from the solution of moller_trumbore.
+#[derive(Clone, Copy, Default)]
+pub struct MollerKnobs {
+    /// When the determinant counts as zero.
+    pub singular: Singular,
+    /// Strict comparisons on u, v and u + v: the edges are outside.
+    pub strict_edges: bool,
+    /// t = 0 accepted.
+    pub t_zero: bool,
+    /// A hit farther than this along the ray refused.
+    pub far: Option<f32>,
+    /// t recomputed as the hit point's projection on d, over |d|².
+    pub t_projected: bool,
+}
+
+/// The solution of moller_trumbore, departing as `k` says.
+pub fn moller(k: MollerKnobs, o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32, f32)> {
+    let det3 = |a: Vec3, b: Vec3, c: Vec3| a.dot(b.cross(c));
+    let (e1, e2, s) = (tri[1] - tri[0], tri[2] - tri[0], o - tri[0]);
+    let det = det3(e1, e2, -d);
+    let singular = match k.singular {
+        Singular::Zero => det == 0.0,
+        Singular::Relative(eps) => det.abs() < eps * e1.length() * e2.length() * d.length(),
+    };
+    if singular {
+        return None;
+    }
+    let u = det3(s, e2, -d) / det;
+    let v = det3(e1, s, -d) / det;
+    let t = det3(e1, e2, s) / det;
+    let outside = if k.strict_edges {
+        u <= 0.0 || v <= 0.0 || u + v >= 1.0
+    } else {
+        u < 0.0 || v < 0.0 || u + v > 1.0
+    };
+    let behind = if k.t_zero { t < 0.0 } else { t <= 0.0 };
+    if outside || behind || k.far.is_some_and(|far| t > far) {
+        return None;
+    }
+    if k.t_projected {
+        let p = tri[0] + (tri[1] - tri[0]) * u + (tri[2] - tri[0]) * v;
+        return Some(((p - o).dot(d) / d.dot(d), u, v));
+    }
+    Some((t, u, v))
+}
+
+// ---- 3.4 bvh_traversal ----------------------------------------------------------
+
+/// The t a leaf's triangles are tested from.
+#[derive(Clone, Copy)]
+pub enum TMin {
+    /// This t (the solution: 0).
+    Fixed(f32),
+    /// The t at which the ray enters the leaf's box.
+    BoxEntry,
+}
+
+/// How a traversal departs from the solution of bvh_traversal.
+#[derive(Clone, Copy)]
+pub struct BvhKnobs {
+    /// The t a leaf's triangles are tested from.
+    pub t_min: TMin,
+}
+
+impl Default for BvhKnobs {
+    fn default() -> Self {
+        BvhKnobs {
+            t_min: TMin::Fixed(0.0),
+        }
+    }
+}
+
+/// The solution of bvh_traversal (recursive, the nearer child first),
+/// departing as `k` says.
+pub fn closest_hit(k: BvhKnobs, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit> {
+    fn visit(
+        k: BvhKnobs,
+        (bvh, ray, inv): (&ReadableBvh, &Ray, Vec3),
+        node: u32,
+        t_enter: f32,
+        best: &mut (f32, Option<Hit>),
+    ) {
+        if t_enter > best.0 {
+            return;
+        }
+        match bvh.nodes[node as usize].kind {
+            NodeKind::Leaf { first, count } => {
+                let t_min = match k.t_min {
+                    TMin::Fixed(t) => t,
+                    TMin::BoxEntry => t_enter,
+                };
+                for &id in &bvh.order[first as usize..(first + count) as usize] {
+                    if let Some(hit) =
+                        intersect_watertight(ray, bvh.tris[id as usize], t_min, best.0)
+                    {
+                        *best = (
+                            hit.t,
+                            Some(Hit {
+                                triangle: id,
+                                ..hit
+                            }),
+                        );
+                    }
+                }
+            }
+            NodeKind::Inner { left, right } => {
+                let tl = bvh.nodes[left as usize].bounds.enter(ray, inv, best.0);
+                let tr = bvh.nodes[right as usize].bounds.enter(ray, inv, best.0);
+                let mut kids = [(left, tl), (right, tr)];
+                if tr.unwrap_or(f32::INFINITY) < tl.unwrap_or(f32::INFINITY) {
+                    kids.swap(0, 1);
+                }
+                for (child, t) in kids {
+                    if let Some(t) = t {
+                        visit(k, (bvh, ray, inv), child, t, best);
+                    }
+                }
+            }
+        }
+    }
+    let inv = ray.dir.recip();
+    let t_root = bvh.nodes.first()?.bounds.enter(ray, inv, t_max)?;
+    let mut best = (t_max, None);
+    visit(k, (bvh, ray, inv), 0, t_root, &mut best);
+    best.1
+}
+
+// ---- 3.5 sah --------------------------------------------------------------------
+
+/// The box's measure the costs are taken in.
+#[derive(Clone, Copy, Default)]
+pub enum Measure {
+    /// Its surface area, as the solution.
+    #[default]
+    Surface,
+    /// The half-perimeter dx + dy + dz.
+    HalfPerimeter,
+}
+
+/// The axes the sweep tries.
+#[derive(Clone, Copy, Default)]
+pub enum Axes {
+    /// All three, as the solution.
+    #[default]
+    All,
+    /// Only the one along which the centroids spread furthest.
+    Longest,
+}
+
+/// Where the plane between two neighbouring centroids a < b goes.
+#[derive(Clone, Copy, Default)]
+pub enum Plane {
+    /// At the upper centroid b, as the solution.
+    #[default]
+    Upper,
+    /// Midway, at b where the midpoint rounds down to a.
+    MidwaySafe,
+}
+
+/// How a sweep departs from the solution of sah.
+#[derive(Clone, Copy)]
+pub struct SahKnobs {
+    /// The traversal's cost added to a split's (the solution: 1).
+    pub trav_cost: f64,
+    /// The box's measure.
+    pub measure: Measure,
+    /// The axes swept.
+    pub axes: Axes,
+    /// Where the plane goes.
+    pub plane: Plane,
+}
+
+impl Default for SahKnobs {
+    fn default() -> Self {
+        SahKnobs {
+            trav_cost: 1.0,
+            measure: Measure::Surface,
+            axes: Axes::All,
+            plane: Plane::Upper,
+        }
+    }
+}
+
+/// The solution's surface area of the box lo..hi.
+pub fn surface_area(lo: Vec3, hi: Vec3) -> f64 {
+    let d = (hi - lo).max(Vec3::ZERO).as_dvec3();
+    2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
+}
+
+/// The box around `boxes`.
+pub fn bounds(boxes: &[[Vec3; 2]]) -> (Vec3, Vec3) {
+    boxes
+        .iter()
+        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(l, h), b| {
+            (l.min(b[0]), h.max(b[1]))
+        })
+}
+
+/// The solution of sah (a full sweep of the centroids sorted on each
+/// axis, the leaf's cost the price to beat), departing as `k` says.
+pub fn sah_sweep(k: SahKnobs, boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f32)> {
+    let area = |lo: Vec3, hi: Vec3| match k.measure {
+        Measure::Surface => surface_area(lo, hi),
+        Measure::HalfPerimeter => {
+            let d = (hi - lo).max(Vec3::ZERO).as_dvec3();
+            d.x + d.y + d.z
+        }
+    };
+    let axes = match k.axes {
+        Axes::All => 0..3,
+        Axes::Longest => {
+            let (cl, ch) = centroids
+                .iter()
+                .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(l, h), c| {
+                    (l.min(*c), h.max(*c))
+                });
+            let ext = ch - cl;
+            let long = if ext.x >= ext.y && ext.x >= ext.z {
+                0
+            } else if ext.y >= ext.z {
+                1
+            } else {
+                2
+            };
+            long..long + 1
+        }
+    };
+    let n = boxes.len();
+    let (lo, hi) = bounds(boxes);
+    let whole = area(lo, hi);
+    let (mut best, mut split) = (n as f64, None);
+    for axis in axes {
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_by(|&a, &b| centroids[a][axis].total_cmp(&centroids[b][axis]));
+        let mut right = vec![0.0; n + 1];
+        let (mut rl, mut rh) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+        for i in (0..n).rev() {
+            (rl, rh) = (rl.min(boxes[order[i]][0]), rh.max(boxes[order[i]][1]));
+            right[i] = area(rl, rh);
+        }
+        let (mut ll, mut lh) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+        for i in 1..n {
+            (ll, lh) = (
+                ll.min(boxes[order[i - 1]][0]),
+                lh.max(boxes[order[i - 1]][1]),
+            );
+            let (a, b) = (centroids[order[i - 1]][axis], centroids[order[i]][axis]);
+            if a == b {
+                continue;
+            }
+            let cost = k.trav_cost + (area(ll, lh) * i as f64 + right[i] * (n - i) as f64) / whole;
+            if cost < best {
+                let at = match k.plane {
+                    Plane::Upper => b,
+                    Plane::MidwaySafe => {
+                        let m = 0.5 * (a + b);
+                        if a < m {
+                            m
+                        } else {
+                            b
+                        }
+                    }
+                };
+                (best, split) = (cost, Some((axis, at)));
+            }
+        }
+    }
+    split
+}
+
+// ---- 4.2 sphere_trace -----------------------------------------------------------
+
+/// How a march departs from the solution of sphere_trace.
+#[derive(Clone, Copy, Default)]
+pub struct MarchKnobs {
+    /// f < ε for |f| < ε: a point inside the surface is a hit.
+    pub signed_hit: bool,
+    /// t summed in f64, each step's point from t rounded to f32.
+    pub t_f64: bool,
+}
+
+/// The solution of sphere_trace, departing as `k` says.
+pub fn sphere_trace(
+    k: MarchKnobs,
+    sdf: &dyn Fn(Vec3) -> f32,
+    (origin, dir): (Vec3, Vec3),
+    epsilon: f32,
+    max_steps: u32,
+    max_distance: f32,
+) -> Option<f32> {
+    // t holds an f32's value unless k.t_f64: each step is then the
+    // solution's f32 sum.
+    let mut t = 0.0f64;
+    for _ in 0..max_steps {
+        let tf = t as f32;
+        let d = sdf(origin + tf * dir);
+        if (if k.signed_hit { d } else { d.abs() }) < epsilon {
+            return Some(tf);
+        }
+        if tf > max_distance {
+            return None;
+        }
+        t = if k.t_f64 {
+            t + d as f64
+        } else {
+            (tf + d) as f64
+        };
+    }
+    None
+}
+
+// ---- 4.4 trace_scene ------------------------------------------------------------
+
+/// The tolerance that ends the march.
+#[derive(Clone, Copy, Default)]
+pub enum MarchEps {
+    /// ε at the point, as the solution.
+    #[default]
+    AtPoint,
+    /// ε at the point before the step.
+    AtPointBefore,
+    /// ε with |p| for p's largest coordinate.
+    ByLength,
+}
+
+/// Where the normal's difference step is taken.
+#[derive(Clone, Copy, Default)]
+pub enum NormalStep {
+    /// ε at the hit, as the solution.
+    #[default]
+    AtHit,
+    /// ε at the ray's origin.
+    AtOrigin,
+    /// The march's fixed ε.
+    Fixed,
+}
+
+/// How a tracer departs from the solution of trace_scene.
+#[derive(Clone, Copy)]
+pub struct SceneKnobs {
+    /// The tolerance that ends the march.
+    pub eps: MarchEps,
+    /// Where the normal's step is taken.
+    pub h: NormalStep,
+    /// The floor under the normal's step (the solution: 1e-4).
+    pub h_floor: Option<f32>,
+    /// The normal where the gradient vanishes is d, not -d.
+    pub fallback_along: bool,
+}
+
+impl Default for SceneKnobs {
+    fn default() -> Self {
+        SceneKnobs {
+            eps: MarchEps::AtPoint,
+            h: NormalStep::AtHit,
+            h_floor: Some(1e-4),
+            fallback_along: false,
+        }
+    }
+}
+
+/// The solution of trace_scene, departing as `k` says.
+pub fn trace_scene(
+    k: SceneKnobs,
+    sdf: &dyn Fn(Vec3) -> f32,
+    origin: Vec3,
+    dir: Vec3,
+    march: &March,
+) -> Option<(f32, Vec3)> {
+    let (mut t, mut f, mut evaluations) = (0.0f32, sdf(origin), 1);
+    let mut before = origin;
+    let p = loop {
+        let p = origin + t * dir;
+        let eps = match k.eps {
+            MarchEps::AtPoint => march.epsilon_at(p),
+            MarchEps::AtPointBefore => march.epsilon_at(before),
+            MarchEps::ByLength => march.epsilon.max(8.0 * f32::EPSILON * p.length()),
+        };
+        if f.abs() < eps {
+            break p;
+        }
+        if t > march.max_distance || evaluations >= march.max_steps {
+            return None;
+        }
+        t += f;
+        f = sdf(origin + t * dir);
+        evaluations += 1;
+        before = p;
+    };
+    let h = match k.h {
+        NormalStep::AtHit => march.epsilon_at(p),
+        NormalStep::AtOrigin => march.epsilon_at(origin),
+        NormalStep::Fixed => march.epsilon,
+    };
+    let h = k.h_floor.map_or(h, |floor| h.max(floor));
+    let partial = |axis: Vec3| (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h);
+    let gradient = Vec3::new(partial(Vec3::X), partial(Vec3::Y), partial(Vec3::Z));
+    let n = gradient
+        .try_normalize()
+        .unwrap_or(if k.fallback_along { dir } else { -dir });
+    Some((t, if n.dot(dir) > 0.0 { -n } else { n }))
+}
+
+// ---- 6.4 path_radiance ----------------------------------------------------------
+
+/// How the roulette's survival probability q is taken (at most 1).
+#[derive(Clone, Copy, Default)]
+pub enum Survival {
+    /// β's largest channel, as the solution.
+    #[default]
+    Largest,
+    /// β's smallest channel.
+    Smallest,
+    /// β's largest channel before this bounce's factor.
+    LargestBefore,
+    /// This q, whatever β is.
+    Fixed(f32),
+}
+
+/// How the light sample's cosine is tested.
+#[derive(Clone, Copy, Default)]
+pub enum LightCos {
+    /// Counted where it is positive, as the solution.
+    #[default]
+    Clamped,
+    /// Counted with its sign, whatever it is.
+    Unclamped,
+    /// Its absolute value counted.
+    Abs,
+}
+
+/// How a path loop departs from the solution of path_radiance.
+#[derive(Clone, Copy)]
+pub struct PathKnobs {
+    /// How q is taken.
+    pub q: Survival,
+    /// The bounces after which the roulette plays (the solution: 1).
+    pub roulette_after: u32,
+    /// The roulette at the top of the loop, before the light sample.
+    pub roulette_at_top: bool,
+    /// How the light sample's cosine is tested.
+    pub light_cos: LightCos,
+    /// The weight of the light sample (the solution: 1).
+    pub light_weight: f32,
+    /// The emission a bounce finds added, with this weight.
+    pub found_emission: Option<f32>,
+}
+
+impl Default for PathKnobs {
+    fn default() -> Self {
+        PathKnobs {
+            q: Survival::Largest,
+            roulette_after: 1,
+            roulette_at_top: false,
+            light_cos: LightCos::Clamped,
+            light_weight: 1.0,
+            found_emission: None,
+        }
+    }
+}
+
+/// The solution of path_radiance (next-event estimation, Russian
+/// roulette on the throughput), departing as `k` says.
+pub fn path(
+    k: PathKnobs,
+    scene: &PathScene,
+    origin: Vec3,
+    dir: Vec3,
+    rng: &mut dyn FnMut() -> f32,
+) -> Vec3 {
+    let q_of = |beta: Vec3, before: Vec3| match k.q {
+        Survival::Largest => beta.max_element().min(1.0),
+        Survival::Smallest => beta.min_element().min(1.0),
+        Survival::LargestBefore => before.max_element().min(1.0),
+        Survival::Fixed(q) => q,
+    };
+    let Some(mut hit) = scene.first_hit(origin, dir) else {
+        return Vec3::ZERO;
+    };
+    let (mut radiance, mut beta, mut bounces) = (hit.emitted, Vec3::ONE, 0);
+    loop {
+        if k.roulette_at_top && bounces > k.roulette_after {
+            let q = q_of(beta, beta);
+            if rng() >= q {
+                break;
+            }
+            beta /= q;
+        }
+        let f = hit.albedo / PI;
+        if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
+            let cos = hit.n.dot(ls.wi);
+            let (cos, counted) = match k.light_cos {
+                LightCos::Clamped => (cos, cos > 0.0),
+                LightCos::Unclamped => (cos, true),
+                LightCos::Abs => (cos.abs(), cos.abs() > 0.0),
+            };
+            if counted && ls.pdf > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
+                radiance += k.light_weight * beta * f * ls.li * cos / ls.pdf;
+            }
+        }
+        let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
+        if pdf <= 0.0 {
+            break;
+        }
+        let before = beta;
+        beta *= f * hit.n.dot(wi) / pdf;
+        bounces += 1;
+        if !k.roulette_at_top && bounces > k.roulette_after {
+            let q = q_of(beta, before);
+            if rng() >= q {
+                break;
+            }
+            beta /= q;
+        }
+        match scene.next_hit(&hit, wi) {
+            Some(next) => {
+                if let Some(weight) = k.found_emission {
+                    radiance += weight * beta * next.emitted;
+                }
+                hit = next;
+            }
+            None => break,
+        }
+    }
+    radiance
+}
+
+// ---- the defaults are the course's solutions ------------------------------------
+
+#[test]
+fn draw_edges_defaults_pass() {
+    passes_every(&SEEDS, "draw_edges' defaults", || {
+        ch1::check_draw_edges(|c, a, b, near| draw_edges(EdgeKnobs::default(), c, a, b, near))
+    });
+}
+
+#[test]
+fn rasterize_defaults_pass() {
+    passes_every(&SEEDS, "rasterize_triangle's defaults", || {
+        ch2::check_rasterize_triangle(|v, c, w, h, d, i| {
+            rasterize(RasterKnobs::default(), v, c, (w, h), d, i)
+        })
+    });
+}
+
+#[test]
+fn moller_defaults_pass() {
+    passes_every(&SEEDS, "moller_trumbore's defaults", || {
+        ch3::check_moller_trumbore(|o, d, tri| moller(MollerKnobs::default(), o, d, tri))
+    });
+}
+
+#[test]
+fn closest_hit_defaults_pass() {
+    passes_every(&SEEDS, "bvh_traversal's defaults", || {
+        ch3::check_bvh_traversal(|bvh, ray, t_max| {
+            closest_hit(BvhKnobs::default(), bvh, ray, t_max)
+        })
+    });
+}
+
+#[test]
+fn sah_sweep_defaults_pass() {
+    passes_every(&SEEDS, "sah's defaults", || {
+        ch3::check_sah(|b, c| sah_sweep(SahKnobs::default(), b, c))
+    });
+}
+
+#[test]
+fn sphere_trace_defaults_pass() {
+    passes_every(&SEEDS, "sphere_trace's defaults", || {
+        ch4::check_sphere_trace(|sdf, o, d, eps, steps, max| {
+            sphere_trace(MarchKnobs::default(), sdf, (o, d), eps, steps, max)
+        })
+    });
+}
+
+#[test]
+fn trace_scene_defaults_pass() {
+    passes_every(&SEEDS, "trace_scene's defaults", || {
+        ch4::check_trace_scene(|sdf, o, d, m| trace_scene(SceneKnobs::default(), sdf, o, d, m))
+    });
+}
+
+/// The path loop's check traces 200,000 paths in a furnace per seed: its
+/// defaults are tried under the first two seeds only, as the fresh sets'
+/// path mutants are.
+#[test]
+fn path_defaults_pass() {
+    passes_every(&SEEDS[..2], "path_radiance's defaults", || {
+        paths::check_path_radiance(|s, o, d, rng| path(PathKnobs::default(), s, o, d, rng))
+    });
+}
