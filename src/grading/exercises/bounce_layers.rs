@@ -167,11 +167,17 @@ fn slots_error(got: &[Vec3; LAYER_SLOTS], want: &[(DVec3, DVec3); LAYER_SLOTS]) 
 }
 
 /// A drawn contribution's value: channels over six decades, now and then
-/// NaN or infinite.
+/// up to 10²⁵, NaN, or infinite of either sign.
 fn drawn_value(draws: &mut Draws) -> Vec3 {
-    let mut v = Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(-3.0, 3.0);
+    // Now and then huge (up to 10²⁵: finite, though its length is not).
+    let size = if draws.unit() < 0.05 {
+        draws.decades(15.0, 25.0)
+    } else {
+        draws.decades(-3.0, 3.0)
+    };
+    let mut v = Vec3::new(draws.unit(), draws.unit(), draws.unit()) * size;
     if draws.unit() < 0.03 {
-        v[draws.count(0, 2)] = [f32::NAN, f32::INFINITY][draws.count(0, 1)];
+        v[draws.count(0, 2)] = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY][draws.count(0, 2)];
     }
     v
 }

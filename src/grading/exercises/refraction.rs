@@ -216,8 +216,9 @@ pub fn check_refraction(f: RefractFn) -> Check {
         let side = draws.sign() as f64;
         let ratio = if side < 0.0 { eo / ei } else { ei / eo } as f64;
         let cos = match draws.count(0, 9) {
-            // Straight through.
-            0 => 1.0,
+            // Straight through, or within 10⁻⁴ to 0.02 rad of it.
+            0 if draws.unit() < 0.5 => 1.0,
+            0 => (draws.decades(-4.0, -1.7) as f64).cos(),
             // Grazing.
             1 | 2 => draws.decades(-6.0, -1.0) as f64,
             // About the critical angle (grazing where there is none).

@@ -91,6 +91,15 @@ fn hand_nodes() -> Vec<HandNode> {
         vec![Vec3::ZERO; 3],
         None,
     ));
+    // Three cubes at x = 10, 0, 0, in that order: the two equal centroids
+    // are neighbours only once sorted (a split between 0 and 10 pays).
+    let cube = |x: f32| [v(x - 0.5, -0.5, -0.5), v(x + 0.5, 0.5, 0.5)];
+    nodes.push((
+        "three unit cubes at x = 10, 0 and 0, in that order",
+        vec![cube(10.0), cube(0.0), cube(0.0)],
+        vec![v(10.0, 0.0, 0.0), Vec3::ZERO, Vec3::ZERO],
+        Some(0),
+    ));
     let mut d = Draws::new(38);
     // Two unit cubes s apart along x (s from 0.2 to 0.9, drawn): the
     // children's areas over the node's are 12 / (6 + 4s), between 1 and
@@ -321,8 +330,8 @@ pub fn check_sah(f: SahFn) -> Check {
             }
             (None, Some(_)) => return failed(detail + "None (a leaf is cheaper)", NEVER_LEAF),
             (Some(axis), got) if got.is_none_or(|(a, _)| a != *axis) => {
-                // Right along x, wrong along y or z.
-                let named = if k > 1 && answers[1].is_some() {
+                // Right along x, wrong along y or z (nodes 2 and 3).
+                let named = if (2..=3).contains(&k) && answers[1].is_some() {
                     ONE_AXIS
                 } else {
                     COSTLY
