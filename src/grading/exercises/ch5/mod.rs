@@ -124,6 +124,16 @@ fn rel(got: Vec3, want: Vec3) -> f64 {
     ((got - want).abs().max_element() / want.abs().max_element().max(1e-6)) as f64
 }
 
+/// A hand case's error: relative to what was expected, or the size of
+/// what came back where nothing was.
+fn off(got: Vec3, want: Vec3) -> f64 {
+    if want == Vec3::ZERO {
+        got.abs().max_element() as f64
+    } else {
+        rel(got, want)
+    }
+}
+
 /// A hand-worked case of the Lambertian BRDF (`src/grading/cases.toml`).
 #[derive(serde::Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -144,13 +154,8 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
             Vec3::ZERO
         };
         let got = f(rho, wo, wi);
-        let err = if want == Vec3::ZERO {
-            got.abs().max_element() as f64
-        } else {
-            rel(got, want)
-        };
         (
-            err,
+            off(got, want),
             format!("ρ {rho}, ωo {wo}, ωi {wi}: got {got}, expected {want}"),
         )
     });
@@ -347,13 +352,8 @@ pub fn check_point_light(f: PointFn) -> Check {
             v3(c.expect),
         );
         let got = f(i, light, p, n);
-        let err = if want == Vec3::ZERO {
-            got.abs().max_element() as f64
-        } else {
-            rel(got, want)
-        };
         (
-            err,
+            off(got, want),
             format!("I {i}, light at {light}, p {p}, n {n}: got {got}, expected {want}"),
         )
     });

@@ -20,11 +20,16 @@
 //!    within 5 standard errors (shadows and the light's cosines, which
 //!    the furnace cannot see). Its images are the check's images.
 
-use glam::{DVec3, Vec2, Vec3};
+use glam::{DVec3, Vec3};
 
 use super::super::images;
-use super::open::{self, BOUNCE_EMISSION_ADDED, LIGHT_FROM_BEHIND, UNBOUNDED_THROUGHPUT};
-use super::{reference_path, reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
+use super::open::{
+    self, hidden_emission, BOUNCE_EMISSION_ADDED, HIDDEN_EMISSION_PATHS, LIGHT_FROM_BEHIND,
+    UNBOUNDED_THROUGHPUT,
+};
+use super::{
+    camera_sample, reference_path, reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET,
+};
 use crate::ch1_projection::camera::Camera;
 use crate::core::sampling::random;
 use crate::exercise::{Check, Symptom};
@@ -133,6 +138,15 @@ pub struct FurnaceRun {
 }
 
 impl FurnaceRun {
+    /// The mean radiance of its `n` paths and its standard error, per
+    /// channel (the error at least 10⁻⁶, so a z-score is always finite).
+    pub fn mean_and_error(&self, n: u64) -> (DVec3, DVec3) {
+        let m = n as f64;
+        let mean = self.sum / m;
+        let var = ((self.sum_sq / m - mean * mean) * (m / (m - 1.0))).max(DVec3::ZERO);
+        (mean, (var / m).max(DVec3::splat(1e-12)).powf(0.5))
+    }
+
     fn merge(mut self, o: FurnaceRun) -> FurnaceRun {
         self.sum += o.sum;
         self.sum_sq += o.sum_sq;
@@ -281,13 +295,10 @@ pub fn judge_furnace_of(
         );
         return (f64::INFINITY, detail, Some(TOO_BRIGHT));
     }
-    let m = n as f64;
-    let mean = r.sum / m;
-    let var = ((r.sum_sq / m - mean * mean) * (m / (m - 1.0))).max(DVec3::ZERO);
+    let (mean, se) = r.mean_and_error(n);
     let rho = albedo as f64;
     let le = furnace_le.as_dvec3();
     let want = le / (1.0 - rho);
-    let se = (var / m).max(DVec3::splat(1e-12)).powf(0.5);
     let z = ((mean - want).abs() / se).max_element();
     let rel = ((mean - want) / want).abs().max_element();
     let ratio = (mean / want).element_sum() / 3.0;
@@ -314,9 +325,8 @@ pub fn judge_furnace_of(
     } else if fits(le + 2.0 * rho * want) {
         // Emission counted twice, or each light sample doubled: the
         // furnace without emission at bounced hits tells them apart.
-        let scene = PathScene::furnace_without_bounce_emission(albedo, furnace_le);
-        let again = trace_furnace(f, &scene, n / 4, 612 ^ crate::run_seed());
-        let mean = again.sum / (n / 4) as f64;
+        let (mean, _) =
+            hidden_emission(f, albedo, furnace_le).mean_and_error(HIDDEN_EMISSION_PATHS);
         if ((mean - want) / want).abs().max_element() < 0.05 {
             Some(DOUBLE_EMISSION)
         } else {
@@ -346,32 +356,6 @@ fn cap_spike(lengths: &[u64]) -> Option<(usize, u64)> {
     (at >= 20 && at * 1000 >= total && at > 2 * before).then_some((k, at))
 }
 
-/// One sample of pixel (x, y) of the Cornell box with `g`.
-fn cornell_sample<'a>(
-    g: PathFn,
-    paths: &'a PathScene,
-    camera: &'a Camera,
-    seed: u64,
-) -> impl Fn(u32, u32, u32) -> Vec3 + Sync + 'a {
-    move |x: u32, y: u32, s: u32| -> Vec3 {
-        let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
-        let pixel = (y * camera.width + x) as u64;
-        let mut dim = 0u64;
-        let mut rng = || {
-            dim += 1;
-            random(seed, pixel, s as u64, dim).min(1.0 - f32::EPSILON)
-        };
-        if x == 0 && s == 0 {
-            crate::progress(format_args!(
-                "calling path_radiance for the Cornell box's camera rays, row {y} of {}",
-                camera.height
-            ));
-        }
-        reset_tally();
-        g(paths, ray.origin, ray.dir, &mut rng)
-    }
-}
-
 /// The Cornell box with `f` and with the reference: the z-test's check.
 fn cornell(f: PathFn) -> Check {
     let scene = images::scene("cornell-box.toml");
@@ -382,7 +366,12 @@ fn cornell(f: PathFn) -> Check {
     // finding nothing (see `PathScene::ran_away`).
     let (mine, theirs) = (PathScene::new(&scene), PathScene::new(&scene));
     let (w, h) = (camera.width, camera.height);
-    let student = images::Estimate::gather(w, h, 64, &cornell_sample(f, &mine, &camera, 601));
+    let student = images::Estimate::gather(
+        w,
+        h,
+        64,
+        &camera_sample(f, &mine, &camera, 601, "the Cornell box"),
+    );
     // The reference's paths call no student function: on the grader's
     // threads (see `bridge::on_grader_pool`).
     let reference = crate::bridge::on_grader_pool(|| {
@@ -390,7 +379,7 @@ fn cornell(f: PathFn) -> Check {
             w,
             h,
             64,
-            &cornell_sample(reference_path, &theirs, &camera, 602),
+            &camera_sample(reference_path, &theirs, &camera, 602, "the Cornell box"),
         )
     });
     images::z_test(student, reference, 8, 5.0, "radiance")

@@ -16,10 +16,12 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use glam::{Vec2, Vec3};
 
+use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch5_reflection::material::Frame;
 use crate::ch5_reflection::warp::cosine_hemisphere;
 use crate::ch5_reflection::world::World;
+use crate::core::sampling::random;
 
 mod check;
 mod furnace;
@@ -130,11 +132,7 @@ impl PathScene {
     /// emitting `le`, all of it one light. Every ray from inside sees
     /// le / (1 − albedo) per channel.
     pub fn furnace(albedo: f32, le: Vec3) -> PathScene {
-        PathScene::of(Inner::Furnace(Furnace {
-            albedo: Vec3::splat(albedo),
-            le,
-            hide_bounce_emission: false,
-        }))
+        PathScene::furnace_coloured(Vec3::splat(albedo), le)
     }
 
     /// [`PathScene::furnace`] with an albedo per channel.
@@ -316,4 +314,32 @@ pub fn reference_path(
         }
     }
     radiance
+}
+
+/// One sample of pixel (x, y) of the scene `paths` seen by `camera`
+/// (called `what` in the progress lines) with `g`.
+pub(crate) fn camera_sample<'a>(
+    g: PathFn,
+    paths: &'a PathScene,
+    camera: &'a Camera,
+    seed: u64,
+    what: &'a str,
+) -> impl Fn(u32, u32, u32) -> Vec3 + Sync + 'a {
+    move |x: u32, y: u32, s: u32| -> Vec3 {
+        let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
+        let pixel = (y * camera.width + x) as u64;
+        let mut dim = 0u64;
+        let mut rng = || {
+            dim += 1;
+            random(seed, pixel, s as u64, dim).min(1.0 - f32::EPSILON)
+        };
+        if x == 0 && s == 0 {
+            crate::progress(format_args!(
+                "calling path_radiance for {what}'s camera rays, row {y} of {}",
+                camera.height
+            ));
+        }
+        reset_tally();
+        g(paths, ray.origin, ray.dir, &mut rng)
+    }
 }

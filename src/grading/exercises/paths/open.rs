@@ -5,9 +5,8 @@
 
 use glam::{Vec2, Vec3};
 
-use super::{trace_furnace, PathFn, PathScene};
+use super::{camera_sample, trace_furnace, FurnaceRun, PathFn, PathScene};
 use crate::ch1_projection::camera::Camera;
-use crate::core::sampling::random;
 use crate::exercise::Symptom;
 use crate::scene::Scene;
 
@@ -35,21 +34,30 @@ pub const BOUNCE_EMISSION_ADDED: Symptom = Symptom {
     name: "emission a bounce finds added",
 };
 
+/// Paths traced in the furnace whose surfaces reached by a bounce report
+/// no emission ([`hidden_emission`]).
+pub const HIDDEN_EMISSION_PATHS: u64 = super::FURNACE_PATHS / 4;
+
+/// `f`'s run in the furnace of albedo `albedo` and emission `le` whose
+/// surfaces reached by a bounce report no emission (the light samples
+/// still see it): a loop that never adds the emission a bounce finds sees
+/// Le / (1 − ρ) there too.
+pub fn hidden_emission(f: PathFn, albedo: f32, le: Vec3) -> FurnaceRun {
+    let scene = PathScene::furnace_without_bounce_emission(albedo, le);
+    trace_furnace(f, &scene, HIDDEN_EMISSION_PATHS, 612 ^ crate::run_seed())
+}
+
 /// Whether the path adds emission that a bounce finds (the contract: the
 /// light sample has counted it): the run's furnace again, its surfaces
 /// reached by a bounce reporting no emission. A loop that never adds it
 /// sees the same Le / (1 − ρ); one that adds it, even in part (half the
 /// light sample and half the emission found is unbiased in the plain
-/// furnace), is too dark here. 50,000 paths, 5 standard errors.
+/// furnace), is too dark here. 50,000 paths, 5 standard errors; a path
+/// that is not finite fails too.
 pub fn bounce_emission_added(f: PathFn) -> Option<String> {
     let (albedo, le) = super::furnace_of_run();
-    let scene = PathScene::furnace_without_bounce_emission(albedo, le);
-    let n = 50_000u64;
-    let run = trace_furnace(f, &scene, n, 616 ^ crate::run_seed());
-    let m = n as f64;
-    let mean = run.sum / m;
-    let var = ((run.sum_sq / m - mean * mean) * (m / (m - 1.0))).max(glam::DVec3::ZERO);
-    let se = (var / m).max(glam::DVec3::splat(1e-12)).powf(0.5);
+    let run = hidden_emission(f, albedo, le);
+    let (mean, se) = run.mean_and_error(HIDDEN_EMISSION_PATHS);
     let want = le.as_dvec3() / (1.0 - f64::from(albedo));
     let z = ((mean - want).abs() / se).max_element();
     (z > 5.0 || run.non_finite > 0).then(|| {
@@ -146,25 +154,17 @@ pub fn light_from_behind(f: PathFn) -> Option<String> {
         Scene::from_text(OPEN_FLOOR, "open-floor").expect("the open floor is a valid scene");
     let camera = Camera::of(&scene);
     let paths = PathScene::new(&scene);
-    let seed = 614 ^ crate::run_seed();
-    crate::progress(format_args!(
-        "calling path_radiance on a floor lit only from below its horizon"
-    ));
+    let what = "a floor lit only from below its horizon";
+    let sample = camera_sample(f, &paths, &camera, 614 ^ crate::run_seed(), what);
     for y in 0..camera.height {
         for x in 0..camera.width {
             let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
-            let pixel = u64::from(y * camera.width + x);
-            let mut dim = 0u64;
-            let mut rng = || {
-                dim += 1;
-                random(seed, pixel, 0, dim).min(1.0 - f32::EPSILON)
-            };
             // Where the camera sees the floor, nothing reaches it: the
             // lamp is below its horizon and its bounces leave the scene.
             let floor = paths
                 .first_hit(ray.origin, ray.dir)
                 .is_some_and(|h| h.emitted == Vec3::ZERO);
-            let l = f(&paths, ray.origin, ray.dir, &mut rng);
+            let l = sample(x, y, 0);
             if l.min_element() < -1e-6 || (floor && l.abs().max_element() > 1e-6) {
                 return Some(format!(
                     "a floor lit by a lamp below its horizon (nothing between them): pixel ({x}, {y}) \
