@@ -360,11 +360,13 @@ fn probe(f: LayersFn) -> Option<(String, Symptom)> {
     use How::{Found, LightSample as Light};
     let nan = Vec3::new(f32::NAN, 1.0, 1.0);
     let inf = Vec3::new(1.0, f32::INFINITY, 1.0);
+    let neg_inf = Vec3::new(1.0, 1.0, f32::NEG_INFINITY);
     let max = LAYERS_SHOWN;
     let probes = [
         (one(0, Light, nan, 1.0), LAYERS_NOT_FINITE),
         (one(3, Found, inf, 0.0), LAYERS_NOT_FINITE),
         (one(2, Light, inf, 0.5), LAYERS_NOT_FINITE),
+        (one(1, Found, neg_inf, 1.0), LAYERS_NOT_FINITE),
         (one(0, Light, v, 0.5), LAYERS_WEIGHT),
         (one(4, Found, v, 0.25), LAYERS_WEIGHT),
         (one(0, Found, v, 1.0), LAYERS_EMITTED),

@@ -34,6 +34,12 @@ enum Bug {
     NoFiniteTest,
     /// Everything in slot E (the pixel's total in one layer).
     AllInOne,
+    /// The finite test on the contribution's length, which overflows for
+    /// finite values above about 1e19 (fourth fresh set).
+    LengthFilter,
+    /// A test for NaN and +inf only, which lets -inf through (fourth
+    /// fresh set).
+    PositiveInfOnly,
 }
 
 fn layers(path: &[Gathered], bug: Bug) -> [Vec3; LAYER_SLOTS] {
@@ -65,7 +71,13 @@ fn layers(path: &[Gathered], bug: Bug) -> [Vec3; LAYER_SLOTS] {
         } else {
             g.value * g.weight
         };
-        if c.is_finite() || bug == Bug::NoFiniteTest {
+        let kept = match bug {
+            Bug::NoFiniteTest => true,
+            Bug::LengthFilter => c.length().is_finite(),
+            Bug::PositiveInfOnly => !c.is_nan() && c.max_element() < f32::INFINITY,
+            _ => c.is_finite(),
+        };
+        if kept {
             out[slot] += c;
         }
     }
@@ -103,7 +115,7 @@ type Case = (&'static str, fn() -> Check, Option<Symptom>);
 
 #[test]
 fn wrong_filings_fail_and_are_named() {
-    let cases: [Case; 8] = [
+    let cases: [Case; 10] = [
         (
             "light sample one low",
             || check_bounce_layers(with_bug!(Bug::LightOneLow)),
@@ -143,6 +155,16 @@ fn wrong_filings_fail_and_are_named() {
             "all in one layer",
             || check_bounce_layers(with_bug!(Bug::AllInOne)),
             None,
+        ),
+        (
+            "finite test on the length",
+            || check_bounce_layers(with_bug!(Bug::LengthFilter)),
+            None,
+        ),
+        (
+            "no test for -inf",
+            || check_bounce_layers(with_bug!(Bug::PositiveInfOnly)),
+            Some(b::LAYERS_NOT_FINITE),
         ),
     ];
     for (what, check, symptom) in cases {

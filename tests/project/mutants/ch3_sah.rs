@@ -31,6 +31,9 @@ struct Knobs {
     ties: bool,
     /// Leaves of up to 4 triangles, whatever the cost.
     leaf_of_four: bool,
+    /// Equal centroids looked for in the unsorted list (position s - 1
+    /// and s of the input, not of the order) (fourth fresh set).
+    ties_unsorted: bool,
 }
 
 fn measure(k: Knobs, lo: Vec3, hi: Vec3) -> f32 {
@@ -78,7 +81,12 @@ fn sweep(k: Knobs, boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f3
         ids.sort_by(|&a, &b| centroids[a][axis].total_cmp(&centroids[b][axis]));
         for s in 1..n {
             let (l, r) = (centroids[ids[s - 1]][axis], centroids[ids[s]][axis]);
-            if l == r && !k.ties {
+            let equal = if k.ties_unsorted {
+                centroids[s - 1][axis] == centroids[s][axis]
+            } else {
+                l == r
+            };
+            if equal && !k.ties {
                 continue;
             }
             let (nl, nr) = if k.no_counts {
@@ -289,6 +297,12 @@ fn wrong_splits_fail_under_every_seed() {
     fails(&mut wrong, "leaves of four", None, || {
         ch3::check_sah(knob!(leaf_of_four))
     });
+    fails(
+        &mut wrong,
+        "equal centroids read from the unsorted list",
+        Some(sah::COSTLY),
+        || ch3::check_sah(knob!(ties_unsorted)),
+    );
     assert!(wrong.is_empty(), "{wrong:#?}");
 }
 

@@ -35,6 +35,10 @@ enum Bug {
     NotNormalised,
     /// The reflected ray with f = 1 instead of None.
     ReflectInsteadOfNone,
+    /// Near normal incidence (cos θ_i > 0.9999), d itself with the
+    /// reflectance of normal incidence: a shortcut off by up to 0.014 rad
+    /// (fourth fresh set).
+    NearNormalShortcut,
 }
 
 fn refract(d: Vec3, n: Vec3, eo: f32, ei: f32, bug: Bug) -> Option<(Vec3, f32)> {
@@ -51,6 +55,9 @@ fn refract(d: Vec3, n: Vec3, eo: f32, ei: f32, bug: Bug) -> Option<(Vec3, f32)> 
         m = -m;
     }
     let cos_i = -dd.dot(m);
+    if bug == Bug::NearNormalShortcut && cos_i > 0.9999 {
+        return Some((d, ((eta_i - eta_t) / (eta_i + eta_t)).powi(2)));
+    }
     let eta = match bug {
         Bug::RatioInverted => eta_t / eta_i,
         _ => eta_i / eta_t,
@@ -121,7 +128,7 @@ type Case = (&'static str, fn() -> Check, Symptom);
 
 #[test]
 fn wrong_refractions_fail_and_are_named() {
-    let cases: [Case; 9] = [
+    let cases: [Case; 10] = [
         (
             "ratio inverted",
             || check_refraction(with_bug!(Bug::RatioInverted)),
@@ -166,6 +173,11 @@ fn wrong_refractions_fail_and_are_named() {
             "reflects under TIR",
             || check_refraction(with_bug!(Bug::ReflectInsteadOfNone)),
             r::REFRACT_TIR,
+        ),
+        (
+            "d kept near normal incidence",
+            || check_refraction(with_bug!(Bug::NearNormalShortcut)),
+            r::REFRACT_SNELL,
         ),
     ];
     for (what, check, symptom) in cases {
