@@ -213,10 +213,18 @@ impl Wire for paths::Tally {
         let t = self;
         (t.bounces, t.vertices, t.light_samples, t.lights_found).put(out);
         (t.shadow_rays, t.below, t.over_budget).put(out);
+        for [a, b, c, d] in t.cosine_quarters {
+            (a, b, c, d).put(out);
+        }
     }
     fn get(input: &mut &[u8]) -> Option<Self> {
         let (bounces, vertices, light_samples, lights_found) = Wire::get(input)?;
         let (shadow_rays, below, over_budget) = Wire::get(input)?;
+        let mut cosine_quarters = [[0; 4]; 2];
+        for q in &mut cosine_quarters {
+            let (a, b, c, d) = Wire::get(input)?;
+            *q = [a, b, c, d];
+        }
         Some(paths::Tally {
             bounces,
             vertices,
@@ -225,6 +233,7 @@ impl Wire for paths::Tally {
             shadow_rays,
             below,
             over_budget,
+            cosine_quarters,
         })
     }
 }

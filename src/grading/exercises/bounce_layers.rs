@@ -189,9 +189,12 @@ fn drawn_path(draws: &mut Draws) -> Vec<Gathered> {
     let mut path = Vec::new();
     let mut add = |draws: &mut Draws, vertex, how| {
         let value = drawn_value(draws);
-        let weight = match draws.count(0, 9) {
-            0 => 0.0,
-            1..=3 => 1.0,
+        // Now and then a weight that is not finite (0/0 in a pdf): the
+        // product is what must be finite.
+        let weight = match draws.count(0, 60) {
+            0 => [f32::NAN, f32::INFINITY][draws.count(0, 1)],
+            1..=6 => 0.0,
+            7..=24 => 1.0,
             _ => draws.unit(),
         };
         path.push(Gathered {

@@ -237,7 +237,8 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
         }
     }
     // Drawn cameras: scenes from 10⁻² to 10² across, up to 100 times that
-    // from the origin, `up` of any length and at least 17° from the view.
+    // from the origin, `up` of any length and at least 17° from the view
+    // (a fifth 1° to 8° from it).
     // The axes to 1e-4; the translation to 1e-4 of the eye's distance
     // from the origin (what rounding allows there).
     // A third of them keep the last camera's eye, or its up: the matrix
@@ -255,9 +256,21 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
             (Some((_, u, _)), 2) => up = u,
             _ => {}
         }
+        // A fifth with `up` 1° to 8° from the view (either way along it),
+        // the eye near the origin so that no other rounding is magnified:
+        // up is still not parallel, and it still points up.
+        let near_parallel = draws.unit() < 0.2;
+        if near_parallel {
+            eye = draws.in_cube() * size;
+            let (a, b) = view.any_orthonormal_pair();
+            let (s, c) = draws.range(0.0, std::f32::consts::TAU).sin_cos();
+            let side = a * c + b * s;
+            let (sin, cos) = draws.range(0.02, 0.14).sin_cos();
+            up = (view * cos * draws.sign() + side * sin) * draws.decades(-2.0, 2.0);
+        }
         let target = eye + view * size * draws.range(0.5, 3.0);
         last = Some((eye, up, size));
-        if up.normalize().cross(view).length() < 0.3 {
+        if !near_parallel && up.normalize().cross(view).length() < 0.3 {
             continue;
         }
         let Some(want) = camera_from_world_look_at(eye, target, up) else {

@@ -18,6 +18,7 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
         (1, 2.0, true),
         (0, 3.0, true),
         (1, f32::NAN, false),
+        (2, f32::NAN, false), // NaN on an empty sample: nothing stored
         (2, inf, false),
         (0, 0.5, true),
     ];

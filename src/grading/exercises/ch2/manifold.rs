@@ -280,17 +280,18 @@ pub fn check_manifold(f: ManifoldFn) -> Check {
         draws.next_case();
         let mut tris = drawn_mesh(&mut draws);
         // A third renumbered so that many vertices are alike in their
-        // low 16 bits (the k-th is (k + 1)·2¹⁶ + k mod 2 to 5): a vertex
-        // is its whole index.
+        // low 16 bits (the k-th is (k + 1)·2¹⁶ + k mod 2 to 5), the last
+        // u32::MAX: a vertex is its whole index, any u32.
         if draws.unit() < 1.0 / 3.0 {
             let low = draws.count(2, 5) as u32;
             let mut order: Vec<u32> = tris.iter().flatten().copied().collect();
             order.sort_unstable();
             order.dedup();
             if order.len() < 65_535 {
-                let far = |i: &u32| {
-                    let k = order.binary_search(i).unwrap_or_default() as u32;
-                    (k + 1) * 65_536 + k % low
+                let last = order.len() as u32 - 1;
+                let far = |i: &u32| match order.binary_search(i).unwrap_or_default() as u32 {
+                    k if k == last => u32::MAX,
+                    k => (k + 1) * 65_536 + k % low,
                 };
                 tris = tris
                     .iter()

@@ -203,7 +203,8 @@ pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
     let (mut error, mut detail) = (check.error, check.detail.clone());
     // Drawn edges from 10⁻³ to 10³ long, up to 10³ times that from the
     // origin: E to 10⁻⁵ of |b - a|·|p - a| (what rounding allows), and
-    // exactly 0 at a, at b and on a horizontal or vertical edge.
+    // exactly 0 at a, at b and on a horizontal or vertical edge; points
+    // nearly on the line, near a.
     // A fifth keep the last edge's a (E depends on all three points).
     let mut draws = Draws::new(21);
     let mut last: Option<(Vec2, Vec2, f32)> = None;
@@ -221,7 +222,7 @@ pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
         }
         last = Some((a, place, scale));
         let mut p = place + draws.in_square() * scale;
-        match draws.count(0, 5) {
+        match draws.count(0, 7) {
             0 => p = a,
             1 => p = b,
             2 => {
@@ -231,6 +232,14 @@ pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
             3 => {
                 b.x = a.x;
                 p.x = a.x;
+            }
+            // Nearly on the line, 10⁻⁶ to 10⁻¹ rad off it, and 10⁻⁶ to 1
+            // times as far from a as b is: E is still exact to rounding.
+            4 | 5 => {
+                let (s, c) = (draws.sign() * draws.decades(-6.0, -1.0)).sin_cos();
+                let e = b - a;
+                let turned = Vec2::new(e.x * c - e.y * s, e.x * s + e.y * c);
+                p = a + turned * draws.sign() * draws.decades(-6.0, 0.0);
             }
             _ => {}
         }

@@ -229,7 +229,8 @@ fn coverage(f: RasterFn) -> Check {
 
 /// A fan around a sample point and a grid of triangles, every corner on a
 /// sample point, so that edges run through samples and the fill rule
-/// decides; both windings occur.
+/// decides; both windings occur. And small triangles with a sample a hair
+/// inside one edge.
 pub fn fill_rule_triangles() -> Vec<[Vec3; 3]> {
     let v = |x: f32, y: f32| Vec3::new(x + 0.5, y + 0.5, 1.0);
     let c = v(16.0, 16.0);
@@ -253,6 +254,17 @@ pub fn fill_rule_triangles() -> Vec<[Vec3; 3]> {
             tris.push([a, b, cc]);
             tris.push([a, d, cc]);
         }
+    }
+    // Triangles 0.2 pixels across with the sample (1.5, 1.5) 10⁻⁵ pixels
+    // inside one edge (its edge function 2·10⁻⁶, where rounding is 10⁻⁹),
+    // turned so that the edge is top, left, bottom or right, both
+    // windings: the sample is strictly inside, so it is drawn.
+    let s = Vec3::new(1.5, 1.5, 1.0);
+    for k in 0..16 {
+        let (sin, cos) = (0.1 + k as f32 * std::f32::consts::FRAC_PI_4).sin_cos();
+        let turn = |x: f32, y: f32| s + Vec3::new(x * cos - y * sin, x * sin + y * cos, 0.0);
+        let t = [turn(-0.1, -1e-5), turn(0.1, -1e-5), turn(0.0, 0.1)];
+        tris.push(if k < 8 { t } else { [t[0], t[2], t[1]] });
     }
     tris
 }

@@ -9,7 +9,8 @@ use crate::exercises::draws::Draws;
 
 /// The hand-built cases: a stack of sixteen small triangles along z,
 /// shuffled so that the list order is not the depth order, seen from
-/// above, from below, cut short by t_max, beside it and slanted.
+/// above, from below, cut short by t_max,
+/// beside it and slanted; and a thin stack beside it.
 pub(super) fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
     let stack: Vec<[Vec3; 3]> = (0..16)
         .map(|i| {
@@ -21,6 +22,16 @@ pub(super) fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
                 o + Vec3::new(0.0, 2.0, 0.0),
             ]
         })
+        .chain((0..6).map(|k| {
+            // A thin stack beside it, 3·10⁻⁵ apart, farthest first in the
+            // list: the nearest is nearer by less than 10⁻⁴.
+            let o = Vec3::new(10.0, 0.0, -1.0 - (5 - k) as f32 * 3e-5);
+            [
+                o + Vec3::new(-1.0, -1.0, 0.0),
+                o + Vec3::new(1.0, -1.0, 0.0),
+                o + Vec3::new(0.0, 1.0, 0.0),
+            ]
+        }))
         .collect();
     let down = |x: f32, y: f32| Ray::new(Vec3::new(x, y, 1.0), -Vec3::Z).expect("a ray");
     let up = Ray::new(Vec3::new(0.5, 0.0, -30.0), Vec3::Z).expect("a ray");
@@ -40,6 +51,11 @@ pub(super) fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
             "down the stack, t_max just past the first hit",
         ),
         (up, 20.0, "up the stack, t_max = 20 past several hits"),
+        (
+            down(10.0, 0.0),
+            inf,
+            "down a thin stack of 6 triangles 3·10⁻⁵ apart, the farthest listed first",
+        ),
         (down(50.0, 0.0), inf, "beside the stack: a miss"),
         (slant, inf, "slanted through the stack"),
         (

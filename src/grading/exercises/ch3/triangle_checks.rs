@@ -339,6 +339,37 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
             ));
         }
     }
+    // Hits close by: an origin 10⁻⁷ to 10⁻⁴ (in units of a d about 1
+    // long) in front of a triangle at most 100 times that size (so that
+    // rounding leaves t to 10⁻⁵), in the plane z = 0: any t > 0 is a hit.
+    for _ in 0..draws.count(20, 60) {
+        draws.next_case();
+        let near = draws.decades(-7.0, -4.0);
+        let scale = near * draws.decades(0.0, 2.0);
+        let t = [0, 1, 2].map(|_| {
+            let q = draws.in_cube() * scale;
+            Vec3::new(q.x, q.y, 0.0)
+        });
+        let (u, v) = (draws.range(0.1, 0.45), draws.range(0.1, 0.45));
+        let hit = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
+        let along = draws.direction();
+        let d = Vec3::new(along.x, along.y, -along.z.abs().max(0.3));
+        let o = hit - d * near;
+        let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
+        let area = (t[1] - t[0]).cross(t[2] - t[0]).length();
+        let clear = match want {
+            Some((_, u, v)) => u.min(v).min(1.0 - u - v) > 1e-3,
+            None => false,
+        };
+        if clear && area > 0.05 * scale * scale {
+            cases.push((
+                o,
+                d,
+                t,
+                want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
+            ));
+        }
+    }
     check(
         cases.into_iter().map(|(o, d, t, want)| {
             let got = f(o, d, t);

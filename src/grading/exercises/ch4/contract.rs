@@ -176,6 +176,11 @@ fn flat_floor(p: Vec3) -> f32 {
     2.0 * (p.z - 0.5).max(0.0)
 }
 
+/// A wall at z = 0 whose function is the exact distance (signed).
+fn wall(p: Vec3) -> f32 {
+    p.z
+}
+
 /// The contract's cases, in the order they are checked.
 pub fn cases() -> Vec<Case> {
     let m = March::default();
@@ -252,6 +257,14 @@ pub fn cases() -> Vec<Case> {
             Clause::Normal,
             eager_wall,
             down(1.0),
+            m,
+        ),
+        case(
+            "a ray starting on a wall and leaving it 5e-4 rad above its plane: a hit at t = 0 whose \
+             gradient points along the ray, by a hair, so the normal turns round",
+            Clause::Normal,
+            wall,
+            (Vec3::ZERO, Vec3::new(1.0, 0.0, 5e-4).normalize()),
             m,
         ),
         case(

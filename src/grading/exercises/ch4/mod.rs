@@ -219,6 +219,8 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         ));
         let got = f(&sdf, o, d, eps, 512, 50.0);
         let err = match (got, want) {
+            // A hit at t = 0 is the first evaluation's: exactly 0.
+            (Some(g), Some(0.0)) => g.abs() as f64,
             (Some(g), Some(w)) => ((g - w).abs() as f64 - eps as f64).max(0.0),
             (None, None) => 0.0,
             _ => f64::INFINITY,

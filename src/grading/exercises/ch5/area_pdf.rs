@@ -41,13 +41,13 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
         Err(check) => return check,
     };
     // Drawn points and lights: distances from 10⁻⁵ to 10³, up to 10³ times
-    // that from the origin, either face, pdfs over six decades, lights
+    // that from the origin (grazing ones up to 10^3.5), either face, pdfs over six decades, lights
     // seen exactly edge-on, and lights seen at grazing angles.
     let mut draws = Draws::new(53);
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
         let scale = draws.decades(-5.0, 3.0);
-        let x = draws.place_for(scale, 3.0);
+        let mut x = draws.place_for(scale, 3.0);
         let axis = draws.count(0, 2);
         let mut offset = draws.direction();
         let mut n = draws.direction();
@@ -63,6 +63,11 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
             // Grazing, not edge-on: |cos θl| from 10⁻⁵ to 10⁻³.
             let tilt = draws.sign() * draws.decades(-5.0, -3.0);
             n = (offset.any_orthonormal_vector() + offset * tilt).normalize();
+            // Half of them 10^2.5 to 10^3.5 times the distance from the
+            // origin, where n · x and n · y round alike.
+            if draws.unit() < 0.5 {
+                x = draws.direction() * scale * draws.decades(2.5, 3.5);
+            }
         }
         let y = x + offset * scale;
         let pdf = draws.decades(-3.0, 3.0);

@@ -1,5 +1,6 @@
-//! Capstone 5's drawn cases: a shading point and a light point anywhere,
-//! at any scale, each facing any way, the light's area, emission and the
+//! Capstone 5's drawn cases: a shading point and a light point anywhere
+//! (up to 10⁵ times their distance from the origin), at any scale, each
+//! facing any way (a fifth with the light near p's horizon), the light's area, emission and the
 //! albedo drawn too, and a fifth of them blocked. The answer is the
 //! estimator's closed form worked out in f64; cases where a cosine is so
 //! small that rounding decides its sign are left out.
@@ -21,9 +22,23 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
     worst_drawn((0..draws.count(100, 400)).filter_map(|_| {
         draws.next_case();
         let s = draws.decades(-2.0, 2.0);
-        let p = draws.place_for(s, 2.0);
-        let n = draws.direction();
+        // A third up to 10⁵ times their size from the origin (where the
+        // plane's equation in absolute coordinates rounds).
+        let far = draws.unit() < 1.0 / 3.0;
+        let mut p = draws.place_for(s, if far { 5.0 } else { 2.0 });
+        let mut n = draws.direction();
+        // A fifth with y just above or below p's horizon (|cos θ| from
+        // 10⁻³ to 10⁻²), 10⁵ to 10⁶ times their distance from the origin.
+        let horizon = draws.unit() < 0.2;
+        if horizon {
+            p = draws.direction() * s * draws.decades(5.0, 6.0);
+        }
         let y = p + draws.direction() * s * draws.range(0.5, 5.0);
+        if horizon {
+            let wi = (y - p).normalize();
+            let tilt = draws.sign() * draws.decades(-3.0, -2.0);
+            n = (wi.any_orthonormal_vector() + wi * tilt).normalize();
+        }
         let n_light = draws.direction();
         let area = s * s * draws.decades(-2.0, 1.0);
         let le = Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(-1.0, 2.0);

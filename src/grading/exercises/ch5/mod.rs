@@ -4,11 +4,13 @@
 mod area_pdf;
 mod direct;
 mod drawn;
+mod point;
 mod solid;
 mod spot;
 mod symptoms;
 pub use area_pdf::check_area_pdf;
 pub use direct::*;
+pub use point::check_point_light;
 pub use solid::check_solid_angle;
 pub use spot::{check_spot, falloff_integral};
 pub use symptoms::*;
@@ -29,7 +31,6 @@ use crate::exercise::{Check, Exercise, Symptom};
 
 type BrdfFn = fn(Vec3, Vec3, Vec3) -> Vec3;
 type CosineFn = fn(Vec2) -> (Vec3, f32);
-type PointFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
 pub(super) type AreaPdfFn = fn(f32, Vec3, Vec3, Vec3) -> f32;
 
 /// Chapter 5's exercises, in order.
@@ -164,7 +165,7 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
         Err(check) => return check,
     };
     // Drawn albedos (a channel may be 0 or 1) and directions, grazing ones
-    // (|z| down to 10⁻⁶) among them.
+    // (|z| down to 10⁻³⁰) among them.
     let mut draws = Draws::new(51);
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
@@ -178,15 +179,21 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
             channel(&mut draws),
             channel(&mut draws),
         );
-        let dir = |d: &mut Draws| {
+        // One of the two down to 10⁻³⁰, the other to 10⁻⁶ (their product
+        // still above f32's smallest number).
+        let dir = |d: &mut Draws, lowest: f32| {
             let mut w = d.direction();
             if d.unit() < 0.3 {
-                w.z = d.sign() * d.decades(-6.0, -1.0);
+                w.z = d.sign() * d.decades(lowest, -1.0);
                 w = w.normalize();
             }
             w
         };
-        let (wo, wi) = (dir(&mut draws), dir(&mut draws));
+        let lowest = match draws.unit() < 0.5 {
+            true => [-30.0, -6.0],
+            false => [-6.0, -30.0],
+        };
+        let (wo, wi) = (dir(&mut draws, lowest[0]), dir(&mut draws, lowest[1]));
         let want = if (wo.z > 0.0) == (wi.z > 0.0) && wo.z != 0.0 && wi.z != 0.0 {
             rho * FRAC_1_PI
         } else {
@@ -233,6 +240,12 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
                 Vec2::new(t, top),
             ]
         })
+        // And the eight largest u.x below 1, at drawn u.y: the most
+        // grazing directions, where x² + y² may round past 1.
+        .chain((0..2048u64).map(|i| {
+            let x = 1.0 - (1 + i % 8) as f32 * f32::EPSILON / 2.0;
+            Vec2::new(x, random(seed ^ 0x5eed, i, 0, 0))
+        }))
         .collect();
     let first: Vec<(Vec3, f32)> = edges.iter().map(|&u| f(u)).collect();
     let again: Vec<(Vec3, f32)> = edges.iter().rev().map(|&u| f(u)).collect();
@@ -330,85 +343,6 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
     }
 }
 
-/// A hand-worked case of the point light (`src/grading/cases.toml`).
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct PointCase {
-    intensity: V3,
-    light: V3,
-    p: V3,
-    n: V3,
-    expect: V3,
-}
-
-/// E = I cos θ / r² for hand-worked cases.
-pub fn check_point_light(f: PointFn) -> Check {
-    let worst = cases::worst("ch5/point_light", |c: &PointCase| {
-        let (i, light, p, n, want) = (
-            v3(c.intensity),
-            v3(c.light),
-            v3(c.p),
-            unit(c.n),
-            v3(c.expect),
-        );
-        let got = f(i, light, p, n);
-        (
-            off(got, want),
-            format!("I {i}, light at {light}, p {p}, n {n}: got {got}, expected {want}"),
-        )
-    });
-    let (mut error, mut detail) = match worst {
-        Ok(w) => w,
-        Err(check) => return check,
-    };
-    // Drawn lights and surfaces: distances from 10⁻³ to 10³, up to 10³
-    // times that from the origin, intensities over six decades, a fifth of
-    // them at grazing angles; E worked out in f64.
-    let mut draws = Draws::new(52);
-    let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
-        draws.next_case();
-        let scale = draws.decades(-3.0, 3.0);
-        let p = draws.place_for(scale, 3.0);
-        let way = draws.direction();
-        let light = p + way * scale;
-        let mut n = draws.direction();
-        if draws.unit() < 0.2 {
-            // Grazing: |cos θ| from 10⁻⁵ to 10⁻³, in front or behind.
-            let tilt = draws.sign() * draws.decades(-5.0, -3.0);
-            n = (way.any_orthonormal_vector() + way * tilt).normalize();
-        }
-        let intensity =
-            Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(-3.0, 3.0);
-        let to = (light - p).as_dvec3();
-        let cos = n.as_dvec3().dot(to) / to.length();
-        let want = (intensity.as_dvec3() * cos.max(0.0) / to.length_squared()).as_vec3();
-        let got = f(intensity, light, p, n);
-        let err = if cos <= 0.0 {
-            // Behind: nothing, but for what the rounding of an f32 cosine
-            // lets through (a few 10⁻⁸ of E at normal incidence).
-            got.abs().max_element() as f64 * to.length_squared()
-                / f64::from(intensity.max_element())
-        } else {
-            // Relative to what rounding allows: 10⁻⁴, plus what an f32
-            // cosine's own rounding (a few 10⁻⁸; 10⁻⁶ to be generous)
-            // does at grazing angles. A light cut off short of 90° fails.
-            rel(got, want) * 1e-4 / (1e-4 + 1e-6 / cos)
-        };
-        (
-            err,
-            format!("I {intensity}, light at {light}, p {p}, n {n}: got {got}, expected {want}"),
-        )
-    }));
-    fold_drawn(&mut error, &mut detail, drawn);
-    Check {
-        error,
-        tolerance: 1e-4,
-        detail,
-        images: None,
-        symptom: (error > 1e-4).then(|| point_symptom(f)).flatten(),
-    }
-}
-
 /// What a failing Lambertian BRDF got wrong, from two probes.
 fn lambert_symptom(f: BrdfFn) -> Option<Symptom> {
     let rho = Vec3::new(0.9, 0.5, 0.1);
@@ -419,21 +353,6 @@ fn lambert_symptom(f: BrdfFn) -> Option<Symptom> {
         Some(LAMBERT_PI)
     } else if rel(up, want) < 1e-4 && below.abs().max_element() < 1e-6 {
         Some(LAMBERT_ONE_SIDED)
-    } else {
-        None
-    }
-}
-
-/// What a failing point light got wrong: the light straight above at
-/// 2 m (I/4 expected), or one behind the surface (0 expected).
-fn point_symptom(f: PointFn) -> Option<Symptom> {
-    let i = Vec3::ONE;
-    let above = f(i, Vec3::new(0.0, 0.0, 2.0), Vec3::ZERO, Vec3::Z);
-    let behind = f(i, Vec3::new(0.0, 0.0, -2.0), Vec3::ZERO, Vec3::Z);
-    if behind.abs().max_element() > 1e-6 {
-        Some(POINT_BEHIND)
-    } else if rel(above, i / 4.0) > 1e-4 {
-        Some(INVERSE_SQUARE)
     } else {
         None
     }

@@ -159,6 +159,11 @@ impl FurnaceRun {
         a.shadow_rays += b.shadow_rays;
         a.below += b.below;
         a.over_budget |= b.over_budget;
+        for (x, y) in a.cosine_quarters.iter_mut().zip(b.cosine_quarters) {
+            for (x, y) in x.iter_mut().zip(y) {
+                *x += y;
+            }
+        }
         self.most_per_sample = self.most_per_sample.max(o.most_per_sample);
         if self.lengths.is_empty() {
             self.lengths = o.lengths;
@@ -287,6 +292,24 @@ pub fn judge_furnace_of(
             t.shadow_rays, t.lights_found
         );
         return (bad, detail, Some(NO_SHADOW_RAY));
+    }
+    // The numbers a bounce is drawn from must be uniform on [0, 1)²
+    // (sample_cosine's density assumes it): each quarter of u.x's and of
+    // u.y's range gets a quarter of them (χ² with 3 degrees of freedom
+    // under 30: a false alarm about once in a million runs).
+    for (axis, q) in ["u.x", "u.y"].iter().zip(t.cosine_quarters) {
+        let all: u32 = q.iter().sum();
+        let e = f64::from(all) / 4.0;
+        let chi2: f64 = q.iter().map(|&o| (f64::from(o) - e).powi(2) / e).sum();
+        if all >= 1000 && chi2 > 30.0 {
+            let detail = format!(
+                "closed furnace: the numbers your bounces gave sample_cosine are not uniform on \
+                 [0, 1): their {axis} fell {q:?} in the four quarters of [0, 1) (χ² = {chi2:.0}); \
+                 each bounce needs fresh uniform numbers (a number already used for a decision, \
+                 such as roulette's, is not uniform any more)"
+            );
+            return (bad, detail, None);
+        }
     }
     if r.non_finite > 0 {
         let detail = format!(

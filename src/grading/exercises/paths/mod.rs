@@ -72,12 +72,15 @@ pub struct Tally {
     pub below: u32,
     /// Whether a path ran into [`BOUNCE_BUDGET`].
     pub over_budget: bool,
+    /// The numbers handed to `sample_cosine`, by quarter of [0, 1): u.x's,
+    /// then u.y's (a number outside [0, 1) in the first or last).
+    pub cosine_quarters: [[u32; 4]; 2],
 }
 
 thread_local! {
     static TALLY: Cell<Tally> = const { Cell::new(Tally {
         bounces: 0, vertices: 0, light_samples: 0, lights_found: 0,
-        shadow_rays: 0, below: 0, over_budget: false,
+        shadow_rays: 0, below: 0, over_budget: false, cosine_quarters: [[0; 4]; 2],
     }) };
 }
 
@@ -258,6 +261,11 @@ impl PathScene {
     /// A direction about `at.n` with density cos θ / π, from `u`: the
     /// direction and its density.
     pub fn sample_cosine(&self, at: &Hit, u: Vec2) -> (Vec3, f32) {
+        let quarter = |v: f32| ((v * 4.0) as usize).min(3);
+        count(|t| {
+            t.cosine_quarters[0][quarter(u.x)] += 1;
+            t.cosine_quarters[1][quarter(u.y)] += 1;
+        });
         let local = cosine_hemisphere(u);
         (
             Frame::from_normal(at.n).to_world(local),

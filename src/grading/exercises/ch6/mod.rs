@@ -5,7 +5,10 @@
 //! seeded, so a grade is repeatable). The capstone's check is in
 //! `paths/`, refraction's and the bounce layers' in files of their own.
 
-use std::cell::Cell;
+mod integral;
+
+pub use integral::check_mc_integral;
+use integral::reference_integral;
 
 use super::bounce_layers as layers;
 use super::draws::{fold_drawn, worst_drawn, Draws};
@@ -15,7 +18,6 @@ use crate::cases;
 use crate::core::sampling::random;
 use crate::exercise::{Check, Exercise, Symptom};
 
-type IntegralFn = fn(&dyn Fn(f64) -> f64, f64, f64, &[f64]) -> f64;
 type RouletteFn = fn(f64, f64, f64) -> f64;
 type WeightFn = fn(f64, f64) -> f64;
 
@@ -104,15 +106,6 @@ fn reference_weight(f: f64, g: f64) -> f64 {
     1.0 / (1.0 + r * r)
 }
 
-/// Exercise 6.1's answer: x = a + u (b − a) is uniform on [a, b], with
-/// density 1/(b − a), so f(x)/p(x) = (b − a) f(x).
-// ANCHOR: mc_integral
-fn reference_integral(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64 {
-    let sum: f64 = u.iter().map(|u| f(a + u * (b - a))).sum();
-    (b - a) * sum / u.len().max(1) as f64
-}
-// ANCHOR_END: mc_integral
-
 /// Exercise 6.2's answer: survive with probability q, carry value / q.
 // ANCHOR: russian_roulette
 fn reference_roulette(value: f64, q: f64, u: f64) -> f64 {
@@ -124,20 +117,8 @@ fn reference_roulette(value: f64, q: f64, u: f64) -> f64 {
 }
 // ANCHOR_END: russian_roulette
 
-/// Seeded uniform numbers.
-fn uniforms(seed: u64, n: usize) -> Vec<f64> {
-    (0..n)
-        .map(|i| {
-            // 48 random bits from two draws, so values are never exactly 1.
-            let hi = random(seed, i as u64, 0, 0) as f64;
-            let lo = random(seed, i as u64, 0, 1) as f64;
-            (hi + lo / (1u64 << 24) as f64).min(1.0 - 1e-15)
-        })
-        .collect()
-}
-
 /// z = |mean - expected| / (s / √n) over repeated estimates.
-fn z_of(estimates: &[f64], expected: f64) -> f64 {
+pub(super) fn z_of(estimates: &[f64], expected: f64) -> f64 {
     let n = estimates.len() as f64;
     let mean = estimates.iter().sum::<f64>() / n;
     let var = estimates.iter().map(|e| (e - mean).powi(2)).sum::<f64>() / (n - 1.0);
@@ -149,146 +130,30 @@ fn z_of(estimates: &[f64], expected: f64) -> f64 {
     }
 }
 
-/// The estimator on four integrals with known values: 64 independent
-/// estimates of 1024 samples each must average to the value (|z| ≤ 5), and
-/// their spread must be the one of an unbiased uniform estimator (within
-/// a factor 2 of σ/√N), which catches a wrong (b - a) factor that happens
-/// to be right on average nowhere. A constant integrates exactly.
-pub fn check_mc_integral(f: IntegralFn) -> Check {
-    use std::f64::consts::PI;
-    let sin = |x: f64| x.sin();
-    let square = |x: f64| x * x;
-    let inv = |x: f64| 1.0 / x;
-    let step = |x: f64| if x > 0.5 { 1.0 } else { 0.0 };
-    // (f, a, b, value, σ of one sample of (b - a) f(x))
-    type Case<'a> = (&'a dyn Fn(f64) -> f64, f64, f64, f64, f64, &'a str);
-    let cases: [Case; 4] = [
-        (
-            &sin,
-            0.0,
-            PI,
-            2.0,
-            (PI * PI / 2.0 - 4.0).sqrt(),
-            "∫₀^π sin x dx = 2",
-        ),
-        (
-            &square,
-            0.0,
-            1.0,
-            1.0 / 3.0,
-            (1.0f64 / 5.0 - 1.0 / 9.0).sqrt(),
-            "∫₀¹ x² dx = 1/3",
-        ),
-        (
-            &inv,
-            1.0,
-            3.0,
-            3f64.ln(),
-            (2.0 * (2.0 / 3.0) - 3f64.ln().powi(2)).sqrt(),
-            "∫₁³ dx/x = ln 3",
-        ),
-        // Zero on half the interval: a sample of 0 counts like any other.
-        (&step, 0.0, 1.0, 0.5, 0.5, "∫₀¹ [x > ½] dx = ½"),
-    ];
-    let n = 1024;
-    let (error, detail) = worst_of(cases.iter().enumerate().map(|(k, (g, a, b, value, sigma, name))| {
-        let estimates: Vec<f64> = (0..64)
-            .map(|r| f(*g, *a, *b, &uniforms(1000 * k as u64 + r, n)))
-            .collect();
-        let z = z_of(&estimates, *value);
-        let mean = estimates.iter().sum::<f64>() / 64.0;
-        let sd = (estimates.iter().map(|e| (e - mean).powi(2)).sum::<f64>() / 63.0).sqrt();
-        let ratio = sd / (sigma / (n as f64).sqrt());
-        // Spread outside [0.5, 2] of the expected counts as failing.
-        let spread_err = if (0.5..=2.0).contains(&ratio) { 0.0 } else { 100.0 };
-        (
-            (z / 5.0).max(spread_err) * 1e-3,
-            format!("{name}: mean of 64 estimates {mean:.5} (z = {z:.1}), spread {ratio:.2}× the expected"),
-        )
-    }));
-    let constant = f(&|_| 2.5, -1.0, 3.0, &[0.1, 0.7]);
-    let (mut error, mut detail) = if (constant - 10.0).abs() > 1e-9 {
-        (1.0, format!("∫₋₁³ 2.5 dx = 10, got {constant}"))
-    } else {
-        (error, detail)
-    };
-    // Drawn intervals (anywhere, any width from 10⁻³ to 10³, either
-    // order) and a drawn constant from 10⁻⁸ to 10⁸, from drawn numbers: exact up to
-    // rounding, with f evaluated once per number, inside the interval.
-    let mut draws = Draws::new(61);
-    let drawn = worst_drawn((0..draws.count(20, 60)).map(|_| {
-        draws.next_case();
-        let a = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
-        let width = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
-        let c = (draws.sign() * draws.decades(-8.0, 8.0)) as f64;
-        let u: Vec<f64> = (0..draws.count(1, 16))
-            .map(|_| draws.unit() as f64)
-            .collect();
-        let b = a + width;
-        // One evaluation per number, each in [a, b] (to rounding).
-        let (calls, outside) = (Cell::new(0usize), Cell::new(None));
-        let (lo, hi) = (a.min(b), a.max(b));
-        let slack = 1e-12 * (lo.abs() + hi.abs());
-        let g = |x: f64| {
-            calls.set(calls.get() + 1);
-            if !(lo - slack..=hi + slack).contains(&x) {
-                outside.set(Some(x));
-            }
-            c
-        };
-        let got = f(&g, a, b, &u);
-        let want = c * (b - a);
-        if calls.get() != u.len() {
-            return (
-                f64::INFINITY,
-                format!(
-                    "∫ from {a} to {b} from {} numbers evaluated f {} times: one evaluation per number",
-                    u.len(),
-                    calls.get()
-                ),
-            );
-        }
-        if let Some(x) = outside.get() {
-            return (
-                f64::INFINITY,
-                format!("∫ from {a} to {b}: f evaluated at {x}, outside the interval"),
-            );
-        }
-        (
-            (got - want).abs() / want.abs() * 1e3,
-            format!("∫ from {a} to {b} of the constant {c} = {want}, got {got}"),
-        )
-    }));
-    fold_drawn(&mut error, &mut detail, drawn);
-    // Off by (b − a): the constant 1 on [0, 2] comes out as 1, not 2.
-    let unit = f(&|_| 1.0, 0.0, 2.0, &[0.25, 0.75]);
-    Check {
-        error,
-        tolerance: 1e-3,
-        detail,
-        images: None,
-        symptom: (error > 1e-3 && (unit - 1.0).abs() < 1e-9).then_some(NO_INTERVAL),
-    }
-}
-
 /// Roulette keeps the mean (stratified numbers: the mean is exact) and
 /// actually ends paths: the fraction of zeros is 1 - q.
 pub fn check_russian_roulette(f: RouletteFn) -> Check {
     let n = 10_000;
     let mut symptom = None;
     // The hand cases, then drawn ones: values over six decades (and of
-    // either sign), survival probabilities from 10⁻⁴ to 1.
+    // either sign, one tiny), survival probabilities from 10⁻⁴ to 1.
     let mut draws = Draws::new(62);
     let mut cases = vec![(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0), (-2.0, 0.5)];
     for k in 0..draws.count(4, 8) {
         draws.next_case();
-        let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
-        // The first from 10⁻⁴ to 10⁻², the second from 0.01 to 0.05,
-        // where paths rarely survive. A whole number of the 10,000 evenly
-        // spaced u survive: the mean is then exact.
+        // The fourth a value from 10⁻³⁰ to 10⁻⁶: small is not zero.
+        let value = match k {
+            3 => draws.sign() * draws.decades(-30.0, -6.0),
+            _ => draws.sign() * draws.decades(-3.0, 3.0),
+        } as f64;
+        // The first from 10⁻⁴ to 3·10⁻⁴, the second from 3·10⁻⁴ to 0.05,
+        // where paths rarely survive; the third from 0.991 to 0.998, where
+        // they rarely die. A whole number of the 10,000 evenly spaced u
+        // survive: the mean is then exact.
         let q = match k {
-            0 => draws.decades(-4.0, -2.0),
-            1 => draws.decades(-2.0, -1.3),
+            0 => draws.decades(-4.0, -3.5),
+            1 => draws.decades(-3.5, -1.3),
+            2 => draws.range(0.991, 0.998),
             _ if draws.unit() < 0.2 => 1.0,
             _ => draws.decades(-2.0, 0.0),
         };

@@ -1,0 +1,125 @@
+//! Exercise 5.3, the point light: hand-worked cases from the case file,
+//! then drawn lights and surfaces (grazing ones among them, some with a
+//! normal along an axis, where the cosine is exact).
+
+use glam::Vec3;
+
+use super::super::draws::{fold_drawn, worst_drawn, Draws};
+use super::{off, rel, INVERSE_SQUARE, POINT_BEHIND};
+use crate::cases::{self, unit, v3, V3};
+use crate::exercise::{Check, Symptom};
+
+type PointFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
+
+/// A hand-worked case of the point light (`src/grading/cases.toml`).
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PointCase {
+    intensity: V3,
+    light: V3,
+    p: V3,
+    n: V3,
+    expect: V3,
+}
+
+/// E = I cos θ / r² for hand-worked cases.
+pub fn check_point_light(f: PointFn) -> Check {
+    let worst = cases::worst("ch5/point_light", |c: &PointCase| {
+        let (i, light, p, n, want) = (
+            v3(c.intensity),
+            v3(c.light),
+            v3(c.p),
+            unit(c.n),
+            v3(c.expect),
+        );
+        let got = f(i, light, p, n);
+        (
+            off(got, want),
+            format!("I {i}, light at {light}, p {p}, n {n}: got {got}, expected {want}"),
+        )
+    });
+    let (mut error, mut detail) = match worst {
+        Ok(w) => w,
+        Err(check) => return check,
+    };
+    // Drawn lights and surfaces: distances from 10⁻³ to 10³, up to 10³
+    // times that from the origin, intensities over six decades, a fifth of
+    // them at grazing angles; E worked out in f64.
+    let mut draws = Draws::new(52);
+    let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
+        draws.next_case();
+        let scale = draws.decades(-3.0, 3.0);
+        let mut p = draws.place_for(scale, 3.0);
+        let way = draws.direction();
+        let mut light = p + way * scale;
+        let mut n = draws.direction();
+        // With a normal along an axis and p in the plane through the
+        // origin across it, the light's height above the surface is one
+        // exact coordinate, and so is the cosine's numerator: no slack.
+        let mut exact = false;
+        match draws.count(0, 9) {
+            // Grazing: |cos θ| from 10⁻⁵ to 10⁻³, in front or behind.
+            0 | 1 => {
+                let tilt = draws.sign() * draws.decades(-5.0, -3.0);
+                n = (way.any_orthonormal_vector() + way * tilt).normalize();
+            }
+            // The same along an axis.
+            2 => {
+                let axis = draws.count(0, 2);
+                n = Vec3::AXES[axis] * draws.sign();
+                p[axis] = 0.0;
+                light = p + way * scale;
+                light[axis] = draws.sign() * draws.decades(-5.0, -3.0) * scale;
+                exact = true;
+            }
+            _ => {}
+        }
+        let intensity =
+            Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(-3.0, 3.0);
+        let to = (light - p).as_dvec3();
+        let cos = n.as_dvec3().dot(to) / to.length();
+        let want = (intensity.as_dvec3() * cos.max(0.0) / to.length_squared()).as_vec3();
+        let got = f(intensity, light, p, n);
+        let err = if cos <= 0.0 {
+            // Behind: nothing, but for what the rounding of an f32 cosine
+            // lets through (a few 10⁻⁸ of E at normal incidence).
+            got.abs().max_element() as f64 * to.length_squared()
+                / f64::from(intensity.max_element())
+        } else {
+            // Relative to what rounding allows: 10⁻⁴, plus what an f32
+            // cosine's own rounding (a few 10⁻⁸; 10⁻⁶ to be generous)
+            // does at grazing angles. A light cut off short of 90° fails.
+            match exact {
+                true => rel(got, want),
+                false => rel(got, want) * 1e-4 / (1e-4 + 1e-6 / cos),
+            }
+        };
+        (
+            err,
+            format!("I {intensity}, light at {light}, p {p}, n {n}: got {got}, expected {want}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
+    Check {
+        error,
+        tolerance: 1e-4,
+        detail,
+        images: None,
+        symptom: (error > 1e-4).then(|| point_symptom(f)).flatten(),
+    }
+}
+
+/// What a failing point light got wrong: the light straight above at
+/// 2 m (I/4 expected), or one behind the surface (0 expected).
+fn point_symptom(f: PointFn) -> Option<Symptom> {
+    let i = Vec3::ONE;
+    let above = f(i, Vec3::new(0.0, 0.0, 2.0), Vec3::ZERO, Vec3::Z);
+    let behind = f(i, Vec3::new(0.0, 0.0, -2.0), Vec3::ZERO, Vec3::Z);
+    if behind.abs().max_element() > 1e-6 {
+        Some(POINT_BEHIND)
+    } else if rel(above, i / 4.0) > 1e-4 {
+        Some(INVERSE_SQUARE)
+    } else {
+        None
+    }
+}

@@ -1,0 +1,217 @@
+//! Exercise 6.1, a Monte Carlo integral: five integrals with known
+//! values (unbiased, with a plain estimator's spread), a constant that
+//! integrates exactly, drawn intervals where f is counted and located, and
+//! evenly spaced numbers whose points must spread evenly over [a, b].
+
+use std::cell::Cell;
+
+use super::super::draws::{fold_drawn, worst_drawn, Draws};
+use super::super::worst_of;
+use super::{z_of, NO_INTERVAL};
+use crate::core::sampling::random;
+use crate::exercise::Check;
+
+/// Exercise 6.1's signature.
+pub(super) type IntegralFn = fn(&dyn Fn(f64) -> f64, f64, f64, &[f64]) -> f64;
+
+/// Exercise 6.1's answer: x = a + u (b − a) is uniform on [a, b], with
+/// density 1/(b − a), so f(x)/p(x) = (b − a) f(x).
+// ANCHOR: mc_integral
+pub(super) fn reference_integral(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64 {
+    let sum: f64 = u.iter().map(|u| f(a + u * (b - a))).sum();
+    (b - a) * sum / u.len().max(1) as f64
+}
+// ANCHOR_END: mc_integral
+
+/// Seeded uniform numbers.
+fn uniforms(seed: u64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|i| {
+            // 48 random bits from two draws, so values are never exactly 1.
+            let hi = random(seed, i as u64, 0, 0) as f64;
+            let lo = random(seed, i as u64, 0, 1) as f64;
+            (hi + lo / (1u64 << 24) as f64).min(1.0 - 1e-15)
+        })
+        .collect()
+}
+
+/// The estimator on five integrals with known values: 64 independent
+/// estimates of 1024 samples each must average to the value (|z| ≤ 5), and
+/// their spread must be the one of an unbiased uniform estimator (within
+/// a factor 2 of σ/√N), which catches a wrong (b - a) factor that happens
+/// to be right on average nowhere. A constant integrates exactly.
+pub fn check_mc_integral(f: IntegralFn) -> Check {
+    use std::f64::consts::PI;
+    let sin = |x: f64| x.sin();
+    let square = |x: f64| x * x;
+    let inv = |x: f64| 1.0 / x;
+    let step = |x: f64| if x > 0.5 { 1.0 } else { 0.0 };
+    let spike = |x: f64| {
+        if (0.3..0.301).contains(&x) {
+            1000.0
+        } else {
+            0.0
+        }
+    };
+    // (f, a, b, value, σ of one sample of (b - a) f(x))
+    type Case<'a> = (&'a dyn Fn(f64) -> f64, f64, f64, f64, f64, &'a str);
+    let cases: [Case; 5] = [
+        (
+            &sin,
+            0.0,
+            PI,
+            2.0,
+            (PI * PI / 2.0 - 4.0).sqrt(),
+            "∫₀^π sin x dx = 2",
+        ),
+        (
+            &square,
+            0.0,
+            1.0,
+            1.0 / 3.0,
+            (1.0f64 / 5.0 - 1.0 / 9.0).sqrt(),
+            "∫₀¹ x² dx = 1/3",
+        ),
+        (
+            &inv,
+            1.0,
+            3.0,
+            3f64.ln(),
+            (2.0 * (2.0 / 3.0) - 3f64.ln().powi(2)).sqrt(),
+            "∫₁³ dx/x = ln 3",
+        ),
+        // Zero on half the interval: a sample of 0 counts like any other.
+        (&step, 0.0, 1.0, 0.5, 0.5, "∫₀¹ [x > ½] dx = ½"),
+        // A narrow spike: most estimates see it once or not at all, and
+        // their mean is still the integral.
+        (
+            &spike,
+            0.0,
+            1.0,
+            1.0,
+            999f64.sqrt(),
+            "∫₀¹ 1000·[0.3 ≤ x < 0.301] dx = 1",
+        ),
+    ];
+    let n = 1024;
+    let (error, detail) = worst_of(cases.iter().enumerate().map(|(k, (g, a, b, value, sigma, name))| {
+        let estimates: Vec<f64> = (0..64)
+            .map(|r| f(*g, *a, *b, &uniforms(1000 * k as u64 + r, n)))
+            .collect();
+        let z = z_of(&estimates, *value);
+        let mean = estimates.iter().sum::<f64>() / 64.0;
+        let sd = (estimates.iter().map(|e| (e - mean).powi(2)).sum::<f64>() / 63.0).sqrt();
+        let ratio = sd / (sigma / (n as f64).sqrt());
+        // Spread outside [0.5, 2] of the expected counts as failing.
+        let spread_err = if (0.5..=2.0).contains(&ratio) { 0.0 } else { 100.0 };
+        (
+            (z / 5.0).max(spread_err) * 1e-3,
+            format!("{name}: mean of 64 estimates {mean:.5} (z = {z:.1}), spread {ratio:.2}× the expected"),
+        )
+    }));
+    let constant = f(&|_| 2.5, -1.0, 3.0, &[0.1, 0.7]);
+    let (mut error, mut detail) = if (constant - 10.0).abs() > 1e-9 {
+        (1.0, format!("∫₋₁³ 2.5 dx = 10, got {constant}"))
+    } else {
+        (error, detail)
+    };
+    // Drawn intervals (anywhere, any width from 10⁻³ to 10³, either
+    // order) and a drawn constant from 10⁻⁸ to 10⁸, from drawn numbers: exact up to
+    // rounding, with f evaluated once per number, inside the interval.
+    let mut draws = Draws::new(61);
+    let drawn = worst_drawn((0..draws.count(20, 60)).map(|_| {
+        draws.next_case();
+        let a = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
+        let width = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
+        let c = (draws.sign() * draws.decades(-8.0, 8.0)) as f64;
+        let u: Vec<f64> = (0..draws.count(1, 16))
+            .map(|_| draws.unit() as f64)
+            .collect();
+        let b = a + width;
+        // One evaluation per number, each in [a, b] (to rounding).
+        let (calls, outside) = (Cell::new(0usize), Cell::new(None));
+        let (lo, hi) = (a.min(b), a.max(b));
+        let slack = 1e-12 * (lo.abs() + hi.abs());
+        let g = |x: f64| {
+            calls.set(calls.get() + 1);
+            if !(lo - slack..=hi + slack).contains(&x) {
+                outside.set(Some(x));
+            }
+            c
+        };
+        let got = f(&g, a, b, &u);
+        let want = c * (b - a);
+        if calls.get() != u.len() {
+            return (
+                f64::INFINITY,
+                format!(
+                    "∫ from {a} to {b} from {} numbers evaluated f {} times: one evaluation per number",
+                    u.len(),
+                    calls.get()
+                ),
+            );
+        }
+        if let Some(x) = outside.get() {
+            return (
+                f64::INFINITY,
+                format!("∫ from {a} to {b}: f evaluated at {x}, outside the interval"),
+            );
+        }
+        (
+            (got - want).abs() / want.abs() * 1e3,
+            format!("∫ from {a} to {b} of the constant {c} = {want}, got {got}"),
+        )
+    }));
+    fold_drawn(&mut error, &mut detail, drawn);
+    // Uniform there when the number is: 1,024 evenly spaced numbers give
+    // evaluation points spread evenly over a drawn [a, b] (sorted, each
+    // within 2/1,024 of the width of its place on the even grid).
+    let (a, width) = (
+        (draws.sign() * draws.decades(-3.0, 3.0)) as f64,
+        draws.decades(-3.0, 3.0) as f64,
+    );
+    let m = 1024;
+    let points = std::cell::RefCell::new(Vec::with_capacity(m));
+    let evenly: Vec<f64> = (0..m).map(|i| (i as f64 + 0.5) / m as f64).collect();
+    f(
+        &|x| {
+            points.borrow_mut().push(x);
+            1.0
+        },
+        a,
+        a + width,
+        &evenly,
+    );
+    let mut points = points.into_inner();
+    points.sort_by(f64::total_cmp);
+    let off = match points.len() == m {
+        true => points
+            .iter()
+            .zip(&evenly)
+            .map(|(x, u)| (x - (a + width * u)).abs() / width)
+            .fold(
+                0.0,
+                |w: f64, d| if d.is_nan() { f64::INFINITY } else { w.max(d) },
+            ),
+        false => f64::INFINITY,
+    };
+    if off > 2.0 / m as f64 && error <= 1e-3 {
+        (error, detail) = (
+            1.0,
+            format!(
+                "1,024 evenly spaced numbers on [{a}, {}] put f's points up to {off:.4} of the \
+                 width from an even spread: the points must be uniform on [a, b] when the numbers are",
+                a + width
+            ),
+        );
+    }
+    // Off by (b − a): the constant 1 on [0, 2] comes out as 1, not 2.
+    let unit = f(&|_| 1.0, 0.0, 2.0, &[0.25, 0.75]);
+    Check {
+        error,
+        tolerance: 1e-3,
+        detail,
+        images: None,
+        symptom: (error > 1e-3 && (unit - 1.0).abs() < 1e-9).then_some(NO_INTERVAL),
+    }
+}
