@@ -40,6 +40,9 @@ enum Bug {
     /// A test for NaN and +inf only, which lets -inf through (fourth
     /// fresh set).
     PositiveInfOnly,
+    /// The finite test on the value alone, before the weight (a NaN or
+    /// infinite weight let through; sixth fresh set).
+    ValueOnly,
 }
 
 fn layers(path: &[Gathered], bug: Bug) -> [Vec3; LAYER_SLOTS] {
@@ -75,6 +78,7 @@ fn layers(path: &[Gathered], bug: Bug) -> [Vec3; LAYER_SLOTS] {
             Bug::NoFiniteTest => true,
             Bug::LengthFilter => c.length().is_finite(),
             Bug::PositiveInfOnly => !c.is_nan() && c.max_element() < f32::INFINITY,
+            Bug::ValueOnly => g.value.is_finite(),
             _ => c.is_finite(),
         };
         if kept {
@@ -115,7 +119,7 @@ type Case = (&'static str, fn() -> Check, Option<Symptom>);
 
 #[test]
 fn wrong_filings_fail_and_are_named() {
-    let cases: [Case; 10] = [
+    let cases: [Case; 11] = [
         (
             "light sample one low",
             || check_bounce_layers(with_bug!(Bug::LightOneLow)),
@@ -165,6 +169,11 @@ fn wrong_filings_fail_and_are_named() {
             "no test for -inf",
             || check_bounce_layers(with_bug!(Bug::PositiveInfOnly)),
             Some(b::LAYERS_NOT_FINITE),
+        ),
+        (
+            "the finite test on the value alone",
+            || check_bounce_layers(with_bug!(Bug::ValueOnly)),
+            None,
         ),
     ];
     for (what, check, symptom) in cases {

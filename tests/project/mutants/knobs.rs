@@ -129,6 +129,9 @@ pub struct RasterKnobs {
     pub near: Option<f32>,
     /// The depth stored clamped to this.
     pub depth_clamp: Option<f32>,
+    /// A sample counts as inside an edge that is neither top nor left
+    /// only where its edge function exceeds this (the solution: 0).
+    pub edge_slack: f32,
 }
 
 /// The solution of rasterize_triangle (corners not finite refused),
@@ -164,7 +167,11 @@ pub fn rasterize(
         for x in min.x.floor() as u32..max.x.ceil() as u32 {
             let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
             let w = [(b, c), (c, a), (a, b)].map(|(s, t)| (edge(s, t, p), top_left(s, t)));
-            if !w.iter().all(|&(e, tl)| e > 0.0 || (e == 0.0 && tl)) {
+            let inside = |&(e, tl): &(f32, bool)| match tl {
+                true => e >= 0.0,
+                false => e > k.edge_slack,
+            };
+            if !w.iter().all(inside) {
                 if k.row_break && inside_run {
                     break;
                 }
@@ -214,6 +221,8 @@ pub struct MollerKnobs {
     pub far: Option<f32>,
     /// t recomputed as the hit point's projection on d, over |d|².
     pub t_projected: bool,
+    /// A hit at t up to this refused (the solution: 0).
+    pub t_floor: f32,
 }
 
 /// The solution of moller_trumbore, departing as `k` says.
@@ -236,7 +245,7 @@ pub fn moller(k: MollerKnobs, o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, 
     } else {
         u < 0.0 || v < 0.0 || u + v > 1.0
     };
-    let behind = if k.t_zero { t < 0.0 } else { t <= 0.0 };
+    let behind = if k.t_zero { t < 0.0 } else { t <= k.t_floor };
     if outside || behind || k.far.is_some_and(|far| t > far) {
         return None;
     }
@@ -263,12 +272,16 @@ pub enum TMin {
 pub struct BvhKnobs {
     /// The t a leaf's triangles are tested from.
     pub t_min: TMin,
+    /// A later hit kept only where it is nearer than the best by more
+    /// than this (the solution: any nearer one, 0).
+    pub improve_by: f32,
 }
 
 impl Default for BvhKnobs {
     fn default() -> Self {
         BvhKnobs {
             t_min: TMin::Fixed(0.0),
+            improve_by: 0.0,
         }
     }
 }
@@ -293,8 +306,11 @@ pub fn closest_hit(k: BvhKnobs, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Opt
                     TMin::BoxEntry => t_enter,
                 };
                 for &id in &bvh.order[first as usize..(first + count) as usize] {
+                    let kept = |hit: &Hit| {
+                        k.improve_by == 0.0 || best.1.is_none() || hit.t < best.0 - k.improve_by
+                    };
                     if let Some(hit) =
-                        intersect_watertight(ray, bvh.tris[id as usize], t_min, best.0)
+                        intersect_watertight(ray, bvh.tris[id as usize], t_min, best.0).filter(kept)
                     {
                         *best = (
                             hit.t,
@@ -480,6 +496,9 @@ pub struct MarchKnobs {
     pub signed_hit: bool,
     /// t summed in f64, each step's point from t rounded to f32.
     pub t_f64: bool,
+    /// The evaluation at t = 0 not tested for a hit (the first step is
+    /// taken whatever it says).
+    pub first_untested: bool,
 }
 
 /// The solution of sphere_trace, departing as `k` says.
@@ -494,10 +513,11 @@ pub fn sphere_trace(
     // t holds an f32's value unless k.t_f64: each step is then the
     // solution's f32 sum.
     let mut t = 0.0f64;
-    for _ in 0..max_steps {
+    for step in 0..max_steps {
         let tf = t as f32;
         let d = sdf(origin + tf * dir);
-        if (if k.signed_hit { d } else { d.abs() }) < epsilon {
+        let tested = !(k.first_untested && step == 0);
+        if tested && (if k.signed_hit { d } else { d.abs() }) < epsilon {
             return Some(tf);
         }
         if tf > max_distance {
@@ -549,6 +569,9 @@ pub struct SceneKnobs {
     pub h_floor: Option<f32>,
     /// The normal where the gradient vanishes is d, not -d.
     pub fallback_along: bool,
+    /// The normal turned round only where n · d exceeds this (the
+    /// solution: 0).
+    pub flip_above: f32,
 }
 
 impl Default for SceneKnobs {
@@ -558,6 +581,7 @@ impl Default for SceneKnobs {
             h: NormalStep::AtHit,
             h_floor: Some(1e-4),
             fallback_along: false,
+            flip_above: 0.0,
         }
     }
 }
@@ -601,7 +625,7 @@ pub fn trace_scene(
     let n = gradient
         .try_normalize()
         .unwrap_or(if k.fallback_along { dir } else { -dir });
-    Some((t, if n.dot(dir) > 0.0 { -n } else { n }))
+    Some((t, if n.dot(dir) > k.flip_above { -n } else { n }))
 }
 
 // ---- 6.4 path_radiance ----------------------------------------------------------
@@ -647,6 +671,9 @@ pub struct PathKnobs {
     pub light_weight: f32,
     /// The emission a bounce finds added, with this weight.
     pub found_emission: Option<f32>,
+    /// The roulette's number, known to be below q, used again as the next
+    /// bounce's u.x.
+    pub reuse_roulette_u: bool,
 }
 
 impl Default for PathKnobs {
@@ -658,6 +685,7 @@ impl Default for PathKnobs {
             light_cos: LightCos::Clamped,
             light_weight: 1.0,
             found_emission: None,
+            reuse_roulette_u: false,
         }
     }
 }
@@ -681,6 +709,7 @@ pub fn path(
         return Vec3::ZERO;
     };
     let (mut radiance, mut beta, mut bounces) = (hit.emitted, Vec3::ONE, 0);
+    let mut kept_u: Option<f32> = None;
     loop {
         if k.roulette_at_top && bounces > k.roulette_after {
             let q = q_of(beta, beta);
@@ -701,7 +730,8 @@ pub fn path(
                 radiance += k.light_weight * beta * f * ls.li * cos / ls.pdf;
             }
         }
-        let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
+        let ux = kept_u.take().unwrap_or_else(&mut *rng);
+        let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(ux, rng()));
         if pdf <= 0.0 {
             break;
         }
@@ -710,10 +740,12 @@ pub fn path(
         bounces += 1;
         if !k.roulette_at_top && bounces > k.roulette_after {
             let q = q_of(beta, before);
-            if rng() >= q {
+            let u = rng();
+            if u >= q {
                 break;
             }
             beta /= q;
+            kept_u = k.reuse_roulette_u.then_some(u);
         }
         match scene.next_hit(&hit, wi) {
             Some(next) => {
