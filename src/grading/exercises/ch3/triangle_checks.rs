@@ -306,68 +306,49 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
             }
         }
     }
-    // Grazing rays: 10⁻⁹ to 10⁻⁵ rad off a triangle in the plane z = 0
-    // (the determinant one exact product: small is not zero), at any scale.
-    for _ in 0..draws.count(20, 60) {
-        draws.next_case();
-        let scale = draws.triangle_scale();
-        let t = [
-            draws.in_cube() * scale,
-            draws.in_cube() * scale,
-            draws.in_cube() * scale,
-        ]
-        .map(|q| Vec3::new(q.x, q.y, 0.0));
-        let (u, v) = (draws.range(0.1, 0.45), draws.range(0.1, 0.45));
-        let hit = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
-        let k = draws.decades(-9.0, -5.0);
-        let along = draws.direction();
-        let d = Vec3::new(along.x, along.y, -k) * scale;
-        let tau = draws.range(0.5, 2.0);
-        let o = hit - d * tau;
-        let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
-        let area = (t[1] - t[0]).cross(t[2] - t[0]).length();
-        let clear = match want {
-            Some((_, u, v)) => u.min(v).min(1.0 - u - v) > 1e-3,
-            None => false,
-        };
-        if clear && area > 0.05 * scale * scale {
-            cases.push((
-                o,
-                d,
-                t,
-                want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
-            ));
-        }
-    }
-    // Hits close by: an origin 10⁻⁷ to 10⁻⁴ (in units of a d about 1
-    // long) in front of a triangle at most 100 times that size (so that
-    // rounding leaves t to 10⁻⁵), in the plane z = 0: any t > 0 is a hit.
-    for _ in 0..draws.count(20, 60) {
-        draws.next_case();
-        let near = draws.decades(-7.0, -4.0);
-        let scale = near * draws.decades(0.0, 2.0);
-        let t = [0, 1, 2].map(|_| {
-            let q = draws.in_cube() * scale;
-            Vec3::new(q.x, q.y, 0.0)
-        });
-        let (u, v) = (draws.range(0.1, 0.45), draws.range(0.1, 0.45));
-        let hit = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
-        let along = draws.direction();
-        let d = Vec3::new(along.x, along.y, -along.z.abs().max(0.3));
-        let o = hit - d * near;
-        let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
-        let area = (t[1] - t[0]).cross(t[2] - t[0]).length();
-        let clear = match want {
-            Some((_, u, v)) => u.min(v).min(1.0 - u - v) > 1e-3,
-            None => false,
-        };
-        if clear && area > 0.05 * scale * scale {
-            cases.push((
-                o,
-                d,
-                t,
-                want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
-            ));
+    // Rays at a triangle in the plane z = 0, where the products are
+    // exact. Grazing: 10⁻⁹ to 10⁻⁵ rad off its plane, at any scale (the
+    // determinant one exact product: small is not zero). Close by: from
+    // 10⁻⁷ to 10⁻⁴ in front of it (in units of a d about 1 long), the
+    // triangle at most 100 times that size, so that rounding leaves t to
+    // 10⁻⁵: any t > 0 is a hit.
+    for grazing in [true, false] {
+        for _ in 0..draws.count(20, 60) {
+            draws.next_case();
+            let near = draws.decades(-7.0, -4.0);
+            let scale = match grazing {
+                true => draws.triangle_scale(),
+                false => near * draws.decades(0.0, 2.0),
+            };
+            let t = [0, 1, 2].map(|_| {
+                let q = draws.in_cube() * scale;
+                Vec3::new(q.x, q.y, 0.0)
+            });
+            let (u, v) = (draws.range(0.1, 0.45), draws.range(0.1, 0.45));
+            let hit = t[0] + u * (t[1] - t[0]) + v * (t[2] - t[0]);
+            let along = draws.direction();
+            let (d, tau) = match grazing {
+                true => (
+                    Vec3::new(along.x, along.y, -draws.decades(-9.0, -5.0)) * scale,
+                    draws.range(0.5, 2.0),
+                ),
+                false => (Vec3::new(along.x, along.y, -along.z.abs().max(0.3)), near),
+            };
+            let o = hit - d * tau;
+            let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
+            let area = (t[1] - t[0]).cross(t[2] - t[0]).length();
+            let clear = match want {
+                Some((_, u, v)) => u.min(v).min(1.0 - u - v) > 1e-3,
+                None => false,
+            };
+            if clear && area > 0.05 * scale * scale {
+                cases.push((
+                    o,
+                    d,
+                    t,
+                    want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
+                ));
+            }
         }
     }
     check(
