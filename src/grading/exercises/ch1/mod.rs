@@ -132,10 +132,15 @@ pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
             1 => draws.decades(4.0, 30.0),
             _ => draws.decades(-3.0, 4.0),
         };
-        // Sideways up to ten times the depth, a tenth up to 10⁷ times
-        // (within 10⁻⁵ rad of the camera's plane: still an image).
-        let wide = if draws.unit() < 0.1 { 7.0 } else { 1.0 };
-        let side = draws.in_square() * depth * draws.decades(-2.0, wide);
+        // Sideways up to ten times the depth, a tenth from 10⁻¹² up to 10⁷
+        // times (within 10⁻⁵ rad of the camera's plane: still an image).
+        // A tenth near the view axis, 10⁻¹² to 10⁻⁶ of the depth.
+        let (narrow, wide) = match draws.count(0, 9) {
+            0 => (-12.0, 7.0),
+            1 => (-12.0, -6.0),
+            _ => (-2.0, 1.0),
+        };
+        let side = draws.in_square() * depth * draws.decades(narrow, wide);
         let p = match draws.count(0, 9) {
             // On the camera's plane, z = +0 or -0 (no image either way).
             0 => Vec3::new(side.x, side.y, draws.sign() * 0.0),
@@ -161,7 +166,10 @@ pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
             (None, Some(_)) => mirrored = false,
         }
         let err = match (got, want) {
-            (Some(g), Some(w)) => ((g - w).length() / w.length().max(1.0)) as f64,
+            // Each coordinate relative to itself: one division makes it.
+            (Some(g), Some(w)) => {
+                ((g - w).abs() / w.abs().max(Vec2::splat(1e-30))).max_element() as f64
+            }
             (None, None) => 0.0,
             _ => f64::INFINITY,
         };
@@ -236,7 +244,7 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
             );
         }
     }
-    // Drawn cameras: scenes from 10⁻² to 10² across, up to 100 times that
+    // Drawn cameras: scenes from 10⁻⁴ to 10² across, up to 100 times that
     // from the origin, `up` of any length and at least 17° from the view
     // (a fifth 1° to 8° from it).
     // The axes to 1e-4; the translation to 1e-4 of the eye's distance
@@ -247,7 +255,7 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
     let mut last: Option<(Vec3, Vec3, f32)> = None;
     for _ in 0..draws.count(50, 200) {
         draws.next_case();
-        let mut size = draws.decades(-2.0, 2.0);
+        let mut size = draws.decades(-4.0, 2.0);
         let mut eye = draws.place_for(size, 2.0) + draws.in_cube() * size;
         let view = draws.direction();
         let mut up = draws.direction() * draws.decades(-2.0, 2.0);

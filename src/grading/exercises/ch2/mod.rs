@@ -201,7 +201,7 @@ pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
         return check.with_symptom(EDGE_SIGN);
     }
     let (mut error, mut detail) = (check.error, check.detail.clone());
-    // Drawn edges from 10⁻³ to 10³ long, up to 10³ times that from the
+    // Drawn edges from 10⁻⁹ to 10⁶ long, up to 10³ times that from the
     // origin: E to 10⁻⁵ of |b - a|·|p - a| (what rounding allows), and
     // exactly 0 at a, at b and on a horizontal or vertical edge; points
     // nearly on the line, near a.
@@ -210,7 +210,7 @@ pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
     let mut last: Option<(Vec2, Vec2, f32)> = None;
     let drawn = worst_drawn((0..draws.count(300, 1500)).map(|_| {
         draws.next_case();
-        let mut scale = draws.decades(-3.0, 3.0);
+        let mut scale = draws.decades(-9.0, 6.0);
         let mut place = draws.place_for(scale, 3.0).truncate();
         let (mut a, mut b) = (
             place + draws.in_square() * scale,

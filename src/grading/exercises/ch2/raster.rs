@@ -255,12 +255,17 @@ pub fn fill_rule_triangles() -> Vec<[Vec3; 3]> {
             tris.push([a, d, cc]);
         }
     }
-    // Triangles 0.2 pixels across with the sample (1.5, 1.5) 10⁻⁵ pixels
-    // inside one edge (its edge function 2·10⁻⁶, where rounding is 10⁻⁹),
-    // turned so that the edge is top, left, bottom or right, both
-    // windings: the sample is strictly inside, so it is drawn.
-    let s = Vec3::new(1.5, 1.5, 1.0);
-    for k in 0..16 {
+    // Triangles 0.2 pixels across with the sample (1.5, 1.5), and then
+    // (60.5, 40.5), 10⁻⁵ pixels inside one edge (its edge function
+    // 2·10⁻⁶, where rounding of differences is 10⁻⁹, and of products of
+    // coordinates 10⁻⁴), turned so that the edge is top, left, bottom or
+    // right, both windings: the sample is strictly inside, so it is drawn.
+    for (k, s) in (0..32).map(|k| {
+        (
+            k % 16,
+            [Vec3::new(1.5, 1.5, 1.0), Vec3::new(60.5, 40.5, 1.0)][k / 16],
+        )
+    }) {
         let (sin, cos) = (0.1 + k as f32 * std::f32::consts::FRAC_PI_4).sin_cos();
         let turn = |x: f32, y: f32| s + Vec3::new(x * cos - y * sin, x * sin + y * cos, 0.0);
         let t = [turn(-0.1, -1e-5), turn(0.1, -1e-5), turn(0.0, 0.1)];

@@ -19,7 +19,7 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::render::{films_from_sums, render_sum};
 use crate::ch3_ray_triangle::triangle::{intersect_watertight, Hit};
 use crate::core::sampling::random;
-use crate::counted::{self, ReadableBvh};
+use crate::counted::{self, NodeKind, ReadableBvh};
 use crate::exercise::{Check, Symptom};
 use crate::scene::Scene;
 use crate::work::Work;
@@ -49,7 +49,7 @@ fn mismatch(
     match (got, want) {
         (None, None) => None,
         (None, Some(_)) => Some(Some(MISSED_HIT)),
-        (Some(g), _) if g.t >= t_max => Some(Some(IGNORES_T_MAX)),
+        (Some(g), _) if g.t > t_max => Some(Some(IGNORES_T_MAX)),
         (Some(_), None) => Some(None),
         (Some(g), Some(w)) if same_t(g.t, w.t) => {
             // Two triangles hit at the same t (a shared edge, coplanar
@@ -216,6 +216,22 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
     for (ray, t_max, what) in &cases {
         compare(&stack, ray, *t_max, &|| what.to_string());
     }
+    // The same triangles in a tree of one leaf that holds them all (a
+    // tree's leaves may hold any number).
+    let mut one_leaf = ReadableBvh {
+        nodes: stack.nodes[..1].to_vec(),
+        order: stack.order.clone(),
+        tris: stack.tris.clone(),
+    };
+    one_leaf.nodes[0].kind = NodeKind::Leaf {
+        first: 0,
+        count: one_leaf.order.len() as u32,
+    };
+    for (ray, t_max, what) in &cases {
+        compare(&one_leaf, ray, *t_max, &|| {
+            format!("{what}, in a tree of one leaf")
+        });
+    }
     // The Cornell box, primary rays and rays from inside it.
     let scene = Scene::builtin()
         .with_resolution(32, 32)
@@ -252,6 +268,16 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
                 ray.dir
             )
         });
+        // Every fourth again with t_max exactly at its closest hit, which
+        // (0, t_max] keeps.
+        if let Some(hit) = every_triangle(&bvh.tris, &ray, f32::INFINITY).filter(|_| i % 4 == 0) {
+            compare(&bvh, &ray, hit.t, &|| {
+                format!(
+                    "a ray inside the Cornell box from {origin} along {}, t_max exactly its closest hit's t",
+                    ray.dir
+                )
+            });
+        }
     }
     progress("rays at a flat triangle");
     let (flat, flat_rays) = super::bvh_cases::flat_triangle();

@@ -9,7 +9,7 @@ use crate::exercises::draws::Draws;
 
 /// The hand-built cases: a stack of sixteen small triangles along z,
 /// shuffled so that the list order is not the depth order, seen from
-/// above, from below, cut short by t_max,
+/// above, from below, cut short by t_max (before, at and past a hit),
 /// beside it and slanted; and a thin stack beside it.
 pub(super) fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
     let stack: Vec<[Vec3; 3]> = (0..16)
@@ -49,6 +49,11 @@ pub(super) fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
             down(0.5, 0.0),
             2.5,
             "down the stack, t_max just past the first hit",
+        ),
+        (
+            down(0.5, 0.0),
+            2.0,
+            "down the stack, t_max exactly at the first hit (the interval (0, t_max] keeps it)",
         ),
         (up, 20.0, "up the stack, t_max = 20 past several hits"),
         (

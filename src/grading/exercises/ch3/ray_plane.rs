@@ -33,6 +33,7 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
     // their size from the origin, N and d of any length from 10⁻³ to 10³.
     let mut draws = Draws::new(31);
     let mut drawn = Vec::new();
+    let mut last_n: Option<Vec3> = None;
     for _ in 0..draws.count(200, 800) {
         draws.next_case();
         let scale = draws.decades(-3.0, 3.0);
@@ -44,14 +45,26 @@ pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
         );
         // A sixth of the cases with N and d both short: Nᵀd far below
         // any absolute threshold, and nothing parallel about it.
-        let (d, n) = if draws.unit() < 1.0 / 6.0 {
-            (
+        // A sixth with N and d 10⁻¹² to 10⁻¹¹ long (Nᵀd down to 10⁻²⁵,
+        // whose square is below f32's range).
+        let (d, n) = match draws.count(0, 5) {
+            0 => (
                 d.normalize() * draws.decades(-4.0, -2.5),
                 n.normalize() * draws.decades(-4.0, -2.5),
-            )
-        } else {
-            (d, n)
+            ),
+            1 => (
+                d.normalize() * draws.decades(-12.0, -11.0),
+                n.normalize() * draws.decades(-12.0, -11.0),
+            ),
+            _ => (d, n),
         };
+        // A fifth keep the last plane's N, with another c (a plane
+        // parallel to it): t depends on c too.
+        let n = match last_n {
+            Some(last) if draws.unit() < 0.2 => last,
+            _ => n,
+        };
+        last_n = Some(n);
         if n.normalize().dot(d.normalize()).abs() > 0.1 {
             let c = n.dot(place + draws.in_cube() * scale);
             let f64s = |v: Vec3| v.as_dvec3();

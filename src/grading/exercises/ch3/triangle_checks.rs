@@ -2,7 +2,7 @@
 //! Möller–Trumbore. Each against hand-worked cases and random ones, with
 //! the common mistakes named.
 
-use glam::Vec3;
+use glam::{DVec3, Vec3};
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
@@ -134,17 +134,26 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
         ),
     ];
     // Drawn triangles from 10⁻³ to 10³ across, up to 10³ times their size
-    // from the origin, and points in and around them.
+    // from the origin (a fifth 10^3.5 to 10⁴ times, in a plane z = const
+    // so that p is exactly in it), and points in and around them; a tenth
+    // exactly at p0 (u and v exactly 0, of either sign).
     let mut draws = Draws::new(32);
     for _ in 0..draws.count(300, 900) {
         draws.next_case();
         let scale = draws.triangle_scale();
-        let place = draws.place_for(scale, 3.0);
-        let t = [
-            place + draws.in_cube() * scale,
-            place + draws.in_cube() * scale,
-            place + draws.in_cube() * scale,
-        ];
+        let far = draws.unit() < 0.2;
+        let place = match far {
+            true => draws.direction() * scale * draws.decades(3.5, 4.0),
+            false => draws.place_for(scale, 3.0),
+        };
+        let t = [0; 3].map(|_| {
+            let v = place + draws.in_cube() * scale;
+            if far {
+                Vec3::new(v.x, v.y, place.z)
+            } else {
+                v
+            }
+        });
         let (mut u, mut v) = (draws.range(-0.5, 1.1), draws.range(-0.5, 1.1));
         // A third of them near the origin, where rounding is 10⁻⁶ of the
         // size: points 10⁻⁴ to 10⁻³ of the way inside or outside an edge.
@@ -174,6 +183,9 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
         let margin = if near_edge { 5e-5 } else { 1e-3 };
         if u.abs().min(v.abs()).min((1.0 - u - v).abs()) > margin {
             cases.push((p, t, uv_f64(p, t)));
+        }
+        if draws.unit() < 0.1 {
+            cases.push((t[0], t, Some((0.0, 0.0))));
         }
     }
     check(
@@ -260,6 +272,25 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
             None,
         ),
     ];
+    // Axis-aligned triangles in all eight orientations, hit at p0 and at
+    // the middle of the edges from it: u and v exactly 0, of either sign.
+    for k in 0..8 {
+        let (sx, sy) = ([1.0, -1.0][k & 1], [1.0, -1.0][(k >> 1) & 1]);
+        let (a, b) = (Vec3::new(2.0 * sx, 0.0, 0.0), Vec3::new(0.0, 2.0 * sy, 0.0));
+        let (a, b) = if k >= 4 { (b, a) } else { (a, b) };
+        let p0 = Vec3::new(1.0, -1.0, -2.0);
+        let tri = [p0, p0 + a, p0 + b];
+        for at in [p0, p0 + 0.5 * a, p0 + 0.5 * b] {
+            let o = Vec3::new(at.x, at.y, 0.0);
+            let want = intersect_f64(o.as_dvec3(), DVec3::NEG_Z, tri.map(|p| p.as_dvec3()));
+            cases.push((
+                o,
+                -Vec3::Z,
+                tri,
+                want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
+            ));
+        }
+    }
     // Drawn triangles and rays: from 10⁻³ (millimetre triangles) to 10³
     // across, up to 10⁴ times their size from the origin, d of any length
     // (t up to 10⁵: t is in units of the d given, whatever its length).

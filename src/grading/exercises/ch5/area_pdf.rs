@@ -44,6 +44,7 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
     // that from the origin (grazing ones up to 10^3.5), either face, pdfs over six decades, lights
     // seen exactly edge-on, and lights seen at grazing angles.
     let mut draws = Draws::new(53);
+    let mut last: Option<(Vec3, Vec3, f32)> = None;
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
         let scale = draws.decades(-5.0, 3.0);
@@ -69,7 +70,17 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
                 x = draws.direction() * scale * draws.decades(2.5, 3.5);
             }
         }
-        let y = x + offset * scale;
+        let mut y = x + offset * scale;
+        // A tenth keep the last light point and its normal, seen from
+        // another x: the density depends on x too.
+        if let Some((last_y, last_n, last_scale)) = last.filter(|_| draws.unit() < 0.1) {
+            let moved = last_y + draws.direction() * last_scale * draws.range(0.5, 2.0);
+            // Not where rounding puts x on the light point.
+            if (moved - last_y).length() > 0.25 * last_scale {
+                (y, n, x) = (last_y, last_n, moved);
+            }
+        }
+        last = Some((y, n, scale));
         let pdf = draws.decades(-3.0, 3.0);
         let to = (y - x).as_dvec3();
         let cos = (n.as_dvec3().dot(to) / to.length()).abs();

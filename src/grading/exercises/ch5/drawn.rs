@@ -19,6 +19,7 @@ type Direct = fn(Vec3, Vec3, Vec3, Vec3, Vec3, f32, Vec3, &dyn Fn(Vec3, Vec3) ->
 /// bring facing p, what it was).
 pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
     let mut draws = Draws::new(54);
+    let mut last: Option<(Vec3, Vec3, bool)> = None;
     worst_drawn((0..draws.count(100, 400)).filter_map(|_| {
         draws.next_case();
         let s = draws.decades(-2.0, 2.0);
@@ -33,17 +34,29 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
         if horizon {
             p = draws.direction() * s * draws.decades(5.0, 6.0);
         }
-        let y = p + draws.direction() * s * draws.range(0.5, 5.0);
+        let mut y = p + draws.direction() * s * draws.range(0.5, 5.0);
         if horizon {
             let wi = (y - p).normalize();
             let tilt = draws.sign() * draws.decades(-3.0, -2.0);
             n = (wi.any_orthonormal_vector() + wi * tilt).normalize();
         }
-        let n_light = draws.direction();
+        let mut n_light = draws.direction();
         let area = s * s * draws.decades(-2.0, 1.0);
-        let le = Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(-1.0, 2.0);
+        // Emission from 10⁻¹ to 10², a tenth from 10⁻¹² (dim is not dark).
+        let dim = if draws.unit() < 0.1 { -12.0 } else { -1.0 };
+        let le = Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(dim, 2.0);
         let rho = Vec3::new(draws.unit(), draws.unit(), draws.unit());
-        let blocked = draws.unit() < 0.2;
+        let mut blocked = draws.unit() < 0.2;
+        // A quarter keep the last light point, seen from another p, and
+        // blocked or not afresh: visibility is a question about p too.
+        if let Some((last_y, last_n, last_blocked)) = last.filter(|_| draws.unit() < 0.25) {
+            let moved = last_y + draws.direction() * s * draws.range(0.5, 5.0);
+            // Not where rounding puts p on the light point.
+            if (moved - last_y).length() > 0.25 * s {
+                (y, n_light, blocked, p) = (last_y, last_n, !last_blocked, moved);
+            }
+        }
+        last = Some((y, n_light, blocked));
         let to = (y - p).as_dvec3();
         let d2 = to.length_squared();
         let wi = to / d2.sqrt();

@@ -289,6 +289,33 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
     if let Some(check) = edges.iter().zip(first).find_map(|(&u, r)| invalid(u, r)) {
         return check;
     }
+    // A density has no lumps: 4,096 evenly spaced u.y (and then u.x)
+    // give as many different directions, not a table's few.
+    for axis in 0..2 {
+        let mut seen: Vec<[u32; 3]> = (0..4096)
+            .map(|k| {
+                let mut u = Vec2::new(0.5, 0.3);
+                u[axis] = (k as f32 + 0.5) / 4096.0;
+                f(u).0.to_array().map(f32::to_bits)
+            })
+            .collect();
+        seen.sort_unstable();
+        seen.dedup();
+        if seen.len() < 4000 {
+            return Check {
+                error: 1e9,
+                tolerance: 5.0,
+                detail: format!(
+                    "4,096 evenly spaced u.{} gave only {} different directions: a density has no \
+                     lumps (no angle or radius taken from a table)",
+                    ["x", "y"][axis],
+                    seen.len()
+                ),
+                images: None,
+                symptom: None,
+            };
+        }
+    }
     let (mut sx, mut sy, mut sz, mut low) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     let mut ring = [0.0f64; 4];
     for i in 0..n {

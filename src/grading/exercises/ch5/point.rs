@@ -46,12 +46,23 @@ pub fn check_point_light(f: PointFn) -> Check {
     // times that from the origin, intensities over six decades, a fifth of
     // them at grazing angles; E worked out in f64.
     let mut draws = Draws::new(52);
+    let mut last_light: Option<(Vec3, f32)> = None;
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
         let scale = draws.decades(-3.0, 3.0);
         let mut p = draws.place_for(scale, 3.0);
-        let way = draws.direction();
+        let mut way = draws.direction();
         let mut light = p + way * scale;
+        // A tenth keep the last light and move p (a light lights many
+        // points): E depends on p too.
+        if let Some((last, last_scale)) = last_light.filter(|_| draws.unit() < 0.1) {
+            let moved = last + draws.direction() * last_scale * draws.range(0.5, 2.0);
+            // Not where rounding puts p on the light.
+            if (moved - last).length() > 0.25 * last_scale {
+                (light, p) = (last, moved);
+                way = (light - p).normalize();
+            }
+        }
         let mut n = draws.direction();
         // With a normal along an axis and p in the plane through the
         // origin across it, the light's height above the surface is one
@@ -76,6 +87,7 @@ pub fn check_point_light(f: PointFn) -> Check {
         }
         let intensity =
             Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(-3.0, 3.0);
+        last_light = Some((light, scale));
         let to = (light - p).as_dvec3();
         let cos = n.as_dvec3().dot(to) / to.length();
         let want = (intensity.as_dvec3() * cos.max(0.0) / to.length_squared()).as_vec3();

@@ -119,9 +119,11 @@ pub fn check_solid_angle(f: SolidFn) -> Check {
 
 /// Triangles of any shape (slivers down to 1:1000) from 10⁻³·⁵ to 10³ m,
 /// up to 10⁴ sizes from the origin, seen from anywhere: 0.3 to 1000 sizes
-/// away, just above (10⁻³ to 10⁻¹ sizes), grazing, and in their plane.
+/// away, just above (10⁻³ to 10⁻¹ sizes), grazing, and in their plane; a
+/// tenth with the last one's first corner.
 fn drawn(f: SolidFn) -> (f64, String) {
     let mut d = Draws::new(56);
+    let mut last_corner: Option<Vec3> = None;
     worst_drawn((0..d.count(300, 800)).map(|_| {
         d.next_case();
         let s = d.triangle_scale();
@@ -134,6 +136,14 @@ fn drawn(f: SolidFn) -> (f64, String) {
             let k = d.unit();
             tri[2] = tri[0] + (tri[1] - tri[0]) * k + d.direction() * s * d.decades(-3.0, -1.0);
         }
+        // A tenth of those not seen from just above share their first
+        // corner with the last triangle: Ω depends on all three corners.
+        if let Some(corner) = last_corner.filter(|_| kind >= 0.2 && d.unit() < 0.1) {
+            let shift = corner - tri[0];
+            tri = tri.map(|v| v + shift);
+            tri[0] = corner;
+        }
+        last_corner = Some(tri[0]);
         let centre = (tri[0] + tri[1] + tri[2]) / 3.0;
         let n = (tri[1] - tri[0])
             .cross(tri[2] - tri[0])

@@ -240,7 +240,7 @@ pub fn judge_furnace(f: PathFn, r: &FurnaceRun, n: u64) -> (f64, String, Option<
 }
 
 /// The furnace of this grading run: its albedo from 0.8 to 0.9 and its
-/// emission from 0.2 to 2 per channel, drawn from the run's seed (a
+/// emission from 0.2 to 20 per channel (one of them from 10), drawn from the run's seed (a
 /// solution cannot recognise the furnace by fixed numbers and answer it in
 /// closed form). Below 0.8 the means that the symptoms' hypotheses predict
 /// (the first emission missing, roulette's survivors not divided by q)
@@ -248,11 +248,14 @@ pub fn judge_furnace(f: PathFn, r: &FurnaceRun, n: u64) -> (f64, String, Option<
 pub fn furnace_of_run() -> (f32, Vec3) {
     let mut draws = crate::exercises::draws::Draws::new(64);
     let albedo = draws.range(0.8, 0.9);
-    let le = Vec3::new(
-        draws.range(0.2, 2.0),
-        draws.range(0.2, 2.0),
-        draws.range(0.2, 2.0),
+    let mut le = Vec3::new(
+        draws.decades(-0.7, 1.3),
+        draws.decades(-0.7, 1.3),
+        draws.decades(-0.7, 1.3),
     );
+    // One channel from 10 to 20: a light sample then brings more than
+    // ρ·10 (a clamp on what one sample brings is a bias).
+    le[draws.count(0, 2)] = draws.range(10.0, 20.0);
     (albedo, le)
 }
 
