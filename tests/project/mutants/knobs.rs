@@ -132,6 +132,9 @@ pub struct RasterKnobs {
     /// A sample counts as inside an edge that is neither top nor left
     /// only where its edge function exceeds this (the solution: 0).
     pub edge_slack: f32,
+    /// The edge function as the shoelace sum of absolute coordinates'
+    /// products, a × b + b × p + p × a.
+    pub shoelace: bool,
 }
 
 /// The solution of rasterize_triangle (corners not finite refused),
@@ -166,7 +169,11 @@ pub fn rasterize(
         let mut inside_run = false;
         for x in min.x.floor() as u32..max.x.ceil() as u32 {
             let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
-            let w = [(b, c), (c, a), (a, b)].map(|(s, t)| (edge(s, t, p), top_left(s, t)));
+            let e = |s: Vec2, t: Vec2| match k.shoelace {
+                true => s.perp_dot(t) + t.perp_dot(p) + p.perp_dot(s),
+                false => edge(s, t, p),
+            };
+            let w = [(b, c), (c, a), (a, b)].map(|(s, t)| (e(s, t), top_left(s, t)));
             let inside = |&(e, tl): &(f32, bool)| match tl {
                 true => e >= 0.0,
                 false => e > k.edge_slack,
@@ -223,6 +230,8 @@ pub struct MollerKnobs {
     pub t_projected: bool,
     /// A hit at t up to this refused (the solution: 0).
     pub t_floor: f32,
+    /// u and v tested by their sign bit (a -0 outside).
+    pub sign_bits: bool,
 }
 
 /// The solution of moller_trumbore, departing as `k` says.
@@ -240,7 +249,9 @@ pub fn moller(k: MollerKnobs, o: Vec3, d: Vec3, tri: [Vec3; 3]) -> Option<(f32, 
     let u = det3(s, e2, -d) / det;
     let v = det3(e1, s, -d) / det;
     let t = det3(e1, e2, s) / det;
-    let outside = if k.strict_edges {
+    let outside = if k.sign_bits {
+        u.is_sign_negative() || v.is_sign_negative() || u + v > 1.0
+    } else if k.strict_edges {
         u <= 0.0 || v <= 0.0 || u + v >= 1.0
     } else {
         u < 0.0 || v < 0.0 || u + v > 1.0
@@ -275,6 +286,8 @@ pub struct BvhKnobs {
     /// A later hit kept only where it is nearer than the best by more
     /// than this (the solution: any nearer one, 0).
     pub improve_by: f32,
+    /// Only this many of a leaf's triangles tested.
+    pub leaf_cap: Option<u32>,
 }
 
 impl Default for BvhKnobs {
@@ -282,6 +295,7 @@ impl Default for BvhKnobs {
         BvhKnobs {
             t_min: TMin::Fixed(0.0),
             improve_by: 0.0,
+            leaf_cap: None,
         }
     }
 }
@@ -305,6 +319,7 @@ pub fn closest_hit(k: BvhKnobs, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Opt
                     TMin::Fixed(t) => t,
                     TMin::BoxEntry => t_enter,
                 };
+                let count = k.leaf_cap.map_or(count, |cap| count.min(cap));
                 for &id in &bvh.order[first as usize..(first + count) as usize] {
                     let kept = |hit: &Hit| {
                         k.improve_by == 0.0 || best.1.is_none() || hit.t < best.0 - k.improve_by
@@ -674,6 +689,8 @@ pub struct PathKnobs {
     /// The roulette's number, known to be below q, used again as the next
     /// bounce's u.x.
     pub reuse_roulette_u: bool,
+    /// What one light sample brings clamped to this, per channel.
+    pub light_clamp: Option<f32>,
 }
 
 impl Default for PathKnobs {
@@ -686,6 +703,7 @@ impl Default for PathKnobs {
             light_weight: 1.0,
             found_emission: None,
             reuse_roulette_u: false,
+            light_clamp: None,
         }
     }
 }
@@ -727,7 +745,10 @@ pub fn path(
                 LightCos::Abs => (cos.abs(), cos.abs() > 0.0),
             };
             if counted && ls.pdf > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
-                radiance += k.light_weight * beta * f * ls.li * cos / ls.pdf;
+                let brought = k.light_weight * beta * f * ls.li * cos / ls.pdf;
+                radiance += k
+                    .light_clamp
+                    .map_or(brought, |most| brought.min(Vec3::splat(most)));
             }
         }
         let ux = kept_u.take().unwrap_or_else(&mut *rng);

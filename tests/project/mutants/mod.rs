@@ -17,6 +17,7 @@ pub mod fresh;
 pub mod fresh_fifth;
 pub mod fresh_fourth;
 pub mod fresh_new;
+pub mod fresh_seventh;
 pub mod fresh_sixth;
 pub mod fresh_third;
 pub mod knobs;
