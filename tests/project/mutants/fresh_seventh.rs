@@ -23,7 +23,9 @@ use raystep::grading::exercises::paths::{self, PathScene};
 use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5};
 
 use super::fails_every;
-use super::knobs::{self, BvhKnobs, Knobs, MollerKnobs, PathKnobs, RasterKnobs, SceneKnobs};
+use super::knobs::{
+    self, BvhKnobs, InsideKnobs, Knobs, MollerKnobs, PathKnobs, RasterKnobs, SceneKnobs,
+};
 
 /// The seeds every mutant must fail under: the testers' two and two more.
 const SEEDS: [u64; 4] = [61, 62, 71, 0x2026_1129];
@@ -139,28 +141,13 @@ fn edge_function_scale_mistakes_fail() {
 
 /// u, v tested with `is_sign_positive`: a -0 is outside.
 fn inside_sign_bits(p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)> {
-    let (e1, e2, q) = (tri[1] - tri[0], tri[2] - tri[0], p - tri[0]);
-    let n = e1.cross(e2);
-    let nn = n.dot(n);
-    if nn == 0.0 {
-        return None;
-    }
-    let (u, v) = (n.dot(q.cross(e2)) / nn, n.dot(e1.cross(q)) / nn);
-    (u.is_sign_positive() && v.is_sign_positive() && u + v <= 1.0).then_some((u, v))
+    knobs::inside(InsideKnobs::with(|k| k.sign_bits = true), p, tri)
 }
 
 /// The cross products from absolute positions, p × e2 − p0 × e2: they
 /// cancel far from the origin.
 fn inside_absolute(p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)> {
-    let (e1, e2) = (tri[1] - tri[0], tri[2] - tri[0]);
-    let n = e1.cross(e2);
-    let nn = n.dot(n);
-    if nn == 0.0 {
-        return None;
-    }
-    let u = n.dot(p.cross(e2) - tri[0].cross(e2)) / nn;
-    let v = n.dot(e1.cross(p) - e1.cross(tri[0])) / nn;
-    (u >= 0.0 && v >= 0.0 && u + v <= 1.0).then_some((u, v))
+    knobs::inside(InsideKnobs::with(|k| k.absolute = true), p, tri)
 }
 
 /// Only a leaf's first four triangles tested.

@@ -32,6 +32,7 @@ pub trait Knobs: Default {
 
 impl Knobs for EdgeKnobs {}
 impl Knobs for RasterKnobs {}
+impl Knobs for InsideKnobs {}
 impl Knobs for MollerKnobs {}
 impl Knobs for BvhKnobs {}
 impl Knobs for SahKnobs {}
@@ -201,6 +202,39 @@ pub fn rasterize(
             }
         }
     }
+}
+
+// ---- 3.2 barycentric_inside -----------------------------------------------------
+
+/// How an inside test departs from the solution of barycentric_inside.
+#[derive(Clone, Copy, Default)]
+pub struct InsideKnobs {
+    /// u and v tested by their sign bits (a -0 outside).
+    pub sign_bits: bool,
+    /// The cross products from absolute positions, p × e2 − p0 × e2.
+    pub absolute: bool,
+}
+
+/// The solution of barycentric_inside, departing as `k` says.
+pub fn inside(k: InsideKnobs, p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)> {
+    let (e1, e2, q) = (tri[1] - tri[0], tri[2] - tri[0], p - tri[0]);
+    let n = e1.cross(e2);
+    let nn = n.dot(n);
+    if nn == 0.0 {
+        return None;
+    }
+    let (u, v) = match k.absolute {
+        true => (
+            n.dot(p.cross(e2) - tri[0].cross(e2)) / nn,
+            n.dot(e1.cross(p) - e1.cross(tri[0])) / nn,
+        ),
+        false => (n.dot(q.cross(e2)) / nn, n.dot(e1.cross(q)) / nn),
+    };
+    let inside = match k.sign_bits {
+        true => u.is_sign_positive() && v.is_sign_positive(),
+        false => u >= 0.0 && v >= 0.0,
+    };
+    (inside && u + v <= 1.0).then_some((u, v))
 }
 
 // ---- 3.3 moller_trumbore --------------------------------------------------------
@@ -796,6 +830,13 @@ fn rasterize_defaults_pass() {
         ch2::check_rasterize_triangle(|v, c, w, h, d, i| {
             rasterize(RasterKnobs::default(), v, c, (w, h), d, i)
         })
+    });
+}
+
+#[test]
+fn inside_defaults_pass() {
+    passes_every(&SEEDS, "barycentric_inside's defaults", || {
+        ch3::check_barycentric_inside(|p, t| inside(InsideKnobs::default(), p, t))
     });
 }
 
