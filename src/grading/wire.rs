@@ -212,6 +212,7 @@ impl Wire for paths::Tally {
     fn put(&self, out: &mut Vec<u8>) {
         let t = self;
         (t.bounces, t.vertices, t.light_samples, t.lights_found).put(out);
+        t.lights_useful.put(out);
         (t.shadow_rays, t.below, t.over_budget).put(out);
         for [a, b, c, d] in t.cosine_quarters {
             (a, b, c, d).put(out);
@@ -219,6 +220,7 @@ impl Wire for paths::Tally {
     }
     fn get(input: &mut &[u8]) -> Option<Self> {
         let (bounces, vertices, light_samples, lights_found) = Wire::get(input)?;
+        let lights_useful = Wire::get(input)?;
         let (shadow_rays, below, over_budget) = Wire::get(input)?;
         let mut cosine_quarters = [[0; 4]; 2];
         for q in &mut cosine_quarters {
@@ -230,6 +232,7 @@ impl Wire for paths::Tally {
             vertices,
             light_samples,
             lights_found,
+            lights_useful,
             shadow_rays,
             below,
             over_budget,

@@ -136,14 +136,14 @@ fn clauses(f: EdgeFn) -> Check {
             symptom,
         };
     }
-    // Drawn edges: near planes from 10⁻² to 3, ends from the pinhole to
+    // Drawn edges: near planes from 10⁻⁶ to 3, ends from the pinhole to
     // 100 times the near distance in front or behind, in every
     // combination; left out are ends within 10⁻³ of the plane, where
     // rounding decides the side, and edges almost parallel to it.
     let mut draws = Draws::new(13);
     let drawn = worst_drawn((0..draws.count(200, 800)).filter_map(|_| {
         draws.next_case();
-        let near = draws.decades(-2.0, 0.5);
+        let near = draws.decades(-6.0, 0.5);
         let end = |d: &mut Draws| {
             let z = -near * d.sign() * d.decades(-1.0, 2.0);
             let side = d.in_square() * z.abs() * d.range(0.0, 1.5);

@@ -94,6 +94,12 @@ fn hand_cases() -> Vec<(&'static str, Vec<[u32; 3]>)> {
             moved(&TETRA, big),
         ),
         (
+            // Edges {1, 2} and {0, 65538}, {2, 3} and {1, 65539} would
+            // share a key packed as low · 2¹⁶ + high.
+            "two triangles whose indices pack alike in 16-bit halves",
+            vec![[1, 2, 3], [0, 65538, 65539]],
+        ),
+        (
             "a tetrahedron and four triangles with a repeated index",
             degenerate,
         ),

@@ -279,6 +279,18 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
             });
         }
     }
+    // A ray along -z, 10⁻⁶ inside the side x = 10 of a flat triangle's box
+    // (its direction's x exactly 0, where 1/d is infinite), from 1,000
+    // away: the slab test must keep the box for the hit.
+    let wall = ReadableBvh::build(&[[
+        Vec3::new(-10.0, -10.0, 0.0),
+        Vec3::new(10.0, -10.0, 0.0),
+        Vec3::new(10.0, 10.0, 0.0),
+    ]]);
+    let inside = Ray::new(Vec3::new(10.0 - 1e-6, 0.0, 1000.0), -Vec3::Z).expect("a ray");
+    compare(&wall, &inside, f32::INFINITY, &|| {
+        "a ray along -z 10⁻⁶ inside its box's side x = 10, the hit 1,000 away".to_string()
+    });
     progress("rays at a flat triangle");
     let (flat, flat_rays) = super::bvh_cases::flat_triangle();
     for (ray, what) in &flat_rays {

@@ -181,6 +181,12 @@ fn wall(p: Vec3) -> f32 {
     p.z
 }
 
+/// A wall at z = 0 whose function is a quarter of the distance: its
+/// gradient is a quarter long, and still not zero.
+fn quarter_wall(p: Vec3) -> f32 {
+    0.25 * p.z
+}
+
 /// The contract's cases, in the order they are checked.
 pub fn cases() -> Vec<Case> {
     let m = March::default();
@@ -264,6 +270,14 @@ pub fn cases() -> Vec<Case> {
             Clause::Normal,
             flat_floor,
             down(1.0),
+            m,
+        ),
+        case(
+            "a wall whose function is a quarter of the distance, seen obliquely: its gradient is \
+             short, not zero, so the normal is the gradient's direction",
+            Clause::Normal,
+            quarter_wall,
+            (Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.6, 0.0, -0.8)),
             m,
         ),
         case(

@@ -58,8 +58,8 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
             // different axes.
             offset = Vec3::ZERO;
             offset[axis] = draws.sign();
-            n = Vec3::ZERO;
-            n[(axis + 1) % 3] = draws.sign();
+            // -axis has zeros of sign -: the cosine may be -0.
+            n = Vec3::AXES[(axis + 1) % 3] * draws.sign();
         } else if kind < 0.3 {
             // Grazing, not edge-on: |cos θl| from 10⁻⁵ to 10⁻³.
             let tilt = draws.sign() * draws.decades(-5.0, -3.0);

@@ -42,9 +42,14 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
         }
         let mut n_light = draws.direction();
         let area = s * s * draws.decades(-2.0, 1.0);
-        // Emission from 10⁻¹ to 10², a tenth from 10⁻¹² (dim is not dark).
-        let dim = if draws.unit() < 0.1 { -12.0 } else { -1.0 };
-        let le = Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(dim, 2.0);
+        // Emission from 10⁻¹ to 10², a tenth from 10⁻¹² (dim is not dark),
+        // a fifth from 10³ to 10⁸ (bright is not a firefly).
+        let (dim, bright) = match draws.count(0, 9) {
+            0 => (-12.0, 2.0),
+            1 | 2 => (3.0, 8.0),
+            _ => (-1.0, 2.0),
+        };
+        let le = Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(dim, bright);
         let rho = Vec3::new(draws.unit(), draws.unit(), draws.unit());
         let mut blocked = draws.unit() < 0.2;
         // A quarter keep the last light point, seen from another p, and

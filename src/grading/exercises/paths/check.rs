@@ -22,15 +22,12 @@
 
 use glam::{DVec3, Vec3};
 
-use super::super::images;
+use super::cornell::cornell;
 use super::open::{
     self, hidden_emission, BOUNCE_EMISSION_ADDED, HIDDEN_EMISSION_PATHS, LIGHT_FROM_BEHIND,
     UNBOUNDED_THROUGHPUT,
 };
-use super::{
-    camera_sample, reference_path, reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET,
-};
-use crate::ch1_projection::camera::Camera;
+use super::{reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
 use crate::core::sampling::random;
 use crate::exercise::{Check, Symptom};
 
@@ -129,6 +126,9 @@ pub struct FurnaceRun {
     pub non_finite: u64,
     /// The sum of every path's tally (`over_budget`: any path's).
     pub tally: Tally,
+    /// Light samples that could light their surface beyond the shadow
+    /// rays cast, path by path, summed.
+    pub unshadowed: u64,
     /// How many paths made each number of bounces (the last entry: more).
     pub lengths: Vec<u64>,
     /// Per channel, the largest (radiance − 1) per light sample found of
@@ -151,11 +151,13 @@ impl FurnaceRun {
         self.sum += o.sum;
         self.sum_sq += o.sum_sq;
         self.non_finite += o.non_finite;
+        self.unshadowed += o.unshadowed;
         let (a, b) = (&mut self.tally, o.tally);
         a.bounces += b.bounces;
         a.vertices += b.vertices;
         a.light_samples += b.light_samples;
         a.lights_found += b.lights_found;
+        a.lights_useful += b.lights_useful;
         a.shadow_rays += b.shadow_rays;
         a.below += b.below;
         a.over_budget |= b.over_budget;
@@ -210,6 +212,7 @@ pub fn trace_furnace(f: PathFn, scene: &PathScene, n: u64, seed: u64) -> Furnace
                 let per_sample = (l.as_dvec3() - 1.0) / f64::from(t.lights_found);
                 let one = FurnaceRun {
                     tally: t,
+                    unshadowed: u64::from(t.lights_useful.saturating_sub(t.shadow_rays)),
                     most_per_sample: if t.lights_found > 0 && per_sample.is_finite() {
                         per_sample
                     } else {
@@ -288,6 +291,14 @@ pub fn judge_furnace_of(
             t.light_samples, t.vertices
         );
         return (bad, detail, Some(NO_NEE));
+    }
+    if r.unshadowed > 0 {
+        let detail = format!(
+            "closed furnace: {} light samples that could light their surface counted without a \
+             shadow ray (each needs its own before it counts, however small it is)",
+            r.unshadowed
+        );
+        return (bad, detail, Some(NO_SHADOW_RAY));
     }
     if t.shadow_rays * 2 < t.lights_found {
         let detail = format!(
@@ -380,35 +391,6 @@ fn cap_spike(lengths: &[u64]) -> Option<(usize, u64)> {
     let at = lengths[k];
     let before = if k > 0 { lengths[k - 1] } else { 0 };
     (at >= 20 && at * 1000 >= total && at > 2 * before).then_some((k, at))
-}
-
-/// The Cornell box with `f` and with the reference: the z-test's check.
-fn cornell(f: PathFn) -> Check {
-    let scene = images::scene("cornell-box.toml");
-    let camera = Camera::of(&scene)
-        .with_resolution(32, 32)
-        .expect("a valid camera");
-    // One scene each: a candidate whose paths never end leaves its scene
-    // finding nothing (see `PathScene::ran_away`).
-    let (mine, theirs) = (PathScene::new(&scene), PathScene::new(&scene));
-    let (w, h) = (camera.width, camera.height);
-    let student = images::Estimate::gather(
-        w,
-        h,
-        64,
-        &camera_sample(f, &mine, &camera, 601, "the Cornell box"),
-    );
-    // The reference's paths call no student function: on the grader's
-    // threads (see `bridge::on_grader_pool`).
-    let reference = crate::bridge::on_grader_pool(|| {
-        images::Estimate::gather(
-            w,
-            h,
-            64,
-            &camera_sample(reference_path, &theirs, &camera, 602, "the Cornell box"),
-        )
-    });
-    images::z_test(student, reference, 8, 5.0, "radiance")
 }
 
 /// The capstone: the closed furnace, then the Cornell box (see the

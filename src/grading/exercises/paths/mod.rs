@@ -12,7 +12,7 @@
 
 use std::cell::Cell;
 use std::f32::consts::FRAC_1_PI;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
 use glam::{Vec2, Vec3};
 
@@ -24,6 +24,7 @@ use crate::ch5_reflection::world::World;
 use crate::core::sampling::random;
 
 mod check;
+mod cornell;
 mod furnace;
 mod open;
 
@@ -66,6 +67,10 @@ pub struct Tally {
     pub light_samples: u32,
     /// Light samples returned (the light could be seen from that side).
     pub lights_found: u32,
+    /// Of those, the ones that could light the surface (cos > 0 at it, a
+    /// positive density and radiance, an albedo not black): each needs
+    /// its shadow ray before it counts.
+    pub lights_useful: u32,
     /// Calls of `unoccluded`.
     pub shadow_rays: u32,
     /// Bounces along a direction on the far side of the surface.
@@ -79,7 +84,7 @@ pub struct Tally {
 
 thread_local! {
     static TALLY: Cell<Tally> = const { Cell::new(Tally {
-        bounces: 0, vertices: 0, light_samples: 0, lights_found: 0,
+        bounces: 0, vertices: 0, light_samples: 0, lights_found: 0, lights_useful: 0,
         shadow_rays: 0, below: 0, over_budget: false, cosine_quarters: [[0; 4]; 2],
     }) };
 }
@@ -119,6 +124,9 @@ pub struct PathScene {
     /// Set once a path ran into [`BOUNCE_BUDGET`]: every later path then
     /// finds nothing, so that a loop without an end fails fast.
     ran_away: AtomicBool,
+    /// Light samples that could light their surface and were counted, or
+    /// dropped, without a shadow ray, over every path so far.
+    unshadowed: AtomicU64,
 }
 
 /// The scene's building blocks run raystep's own code (lights, sampling,
@@ -162,6 +170,7 @@ impl PathScene {
         PathScene {
             inner,
             ran_away: AtomicBool::new(false),
+            unshadowed: AtomicU64::new(0),
         }
     }
 
@@ -174,6 +183,20 @@ impl PathScene {
     /// (the grader's replay of its transcript).
     pub(crate) fn note_ran_away(&self, ran_away: bool) {
         self.ran_away.fetch_or(ran_away, Ordering::Relaxed);
+    }
+
+    /// Adds what one path's tally says: its light samples that could
+    /// light their surface, less its shadow rays.
+    pub(crate) fn note_shadow_rays(&self, t: &Tally) {
+        let short = t.lights_useful.saturating_sub(t.shadow_rays);
+        self.unshadowed
+            .fetch_add(u64::from(short), Ordering::Relaxed);
+    }
+
+    /// Light samples that could light their surface, over every path so
+    /// far, beyond the shadow rays cast.
+    pub fn unshadowed(&self) -> u64 {
+        self.unshadowed.load(Ordering::Relaxed)
     }
 
     fn world_hit(world: &World, ray: &Ray) -> Option<Hit> {
@@ -242,8 +265,12 @@ impl PathScene {
                 .and_then(|l| l.sample_li(at.p, at.n, u)),
             Inner::Furnace(f) => f.sample_light(at, u),
         };
-        if s.is_some() {
+        if let Some(s) = &s {
             count(|t| t.lights_found += 1);
+            let lights = at.n.dot(s.wi) > 0.0 && s.pdf > 0.0 && s.li.max_element() > 0.0;
+            if lights && at.albedo.max_element() > 0.0 {
+                count(|t| t.lights_useful += 1);
+            }
         }
         s
     }
@@ -348,6 +375,8 @@ pub(crate) fn camera_sample<'a>(
             ));
         }
         reset_tally();
-        g(paths, ray.origin, ray.dir, &mut rng)
+        let radiance = g(paths, ray.origin, ray.dir, &mut rng);
+        paths.note_shadow_rays(&tally());
+        radiance
     }
 }
