@@ -62,6 +62,8 @@ pub struct EdgeKnobs {
     pub behind: f32,
     /// How the cut is found.
     pub cut: Cut,
+    /// An end nearer the pinhole than this, after the clip, gives None.
+    pub min_depth: Option<f32>,
 }
 
 /// The solution of draw_edges, departing as `k` says.
@@ -91,6 +93,9 @@ pub fn draw_edges(
         (false, true) => (a, on_plane(a, b, da, db)),
         (false, false) => (a, b),
     };
+    if k.min_depth.is_some_and(|d| -a.z < d || -b.z < d) {
+        return None;
+    }
     let raster = |p: Vec3| camera.raster_from_image_plane(Vec2::new(p.x / -p.z, p.y / -p.z));
     Some((raster(a), raster(b)))
 }
@@ -322,6 +327,8 @@ pub struct BvhKnobs {
     pub improve_by: f32,
     /// Only this many of a leaf's triangles tested.
     pub leaf_cap: Option<u32>,
+    /// A direction's zero components made f32::EPSILON before 1/d.
+    pub nudge_zero_dir: bool,
 }
 
 impl Default for BvhKnobs {
@@ -330,6 +337,7 @@ impl Default for BvhKnobs {
             t_min: TMin::Fixed(0.0),
             improve_by: 0.0,
             leaf_cap: None,
+            nudge_zero_dir: false,
         }
     }
 }
@@ -386,7 +394,15 @@ pub fn closest_hit(k: BvhKnobs, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Opt
             }
         }
     }
-    let inv = ray.dir.recip();
+    let dir = match k.nudge_zero_dir {
+        true => Vec3::select(
+            ray.dir.cmpeq(Vec3::ZERO),
+            Vec3::splat(f32::EPSILON),
+            ray.dir,
+        ),
+        false => ray.dir,
+    };
+    let inv = dir.recip();
     let t_root = bvh.nodes.first()?.bounds.enter(ray, inv, t_max)?;
     let mut best = (t_max, None);
     visit(k, (bvh, ray, inv), 0, t_root, &mut best);
@@ -621,6 +637,9 @@ pub struct SceneKnobs {
     /// The normal turned round only where n · d exceeds this (the
     /// solution: 0).
     pub flip_above: f32,
+    /// -dir also where the gradient is shorter than this (the solution:
+    /// only where it is zero).
+    pub fallback_below: Option<f32>,
 }
 
 impl Default for SceneKnobs {
@@ -631,6 +650,7 @@ impl Default for SceneKnobs {
             h_floor: Some(1e-4),
             fallback_along: false,
             flip_above: 0.0,
+            fallback_below: None,
         }
     }
 }
@@ -671,8 +691,10 @@ pub fn trace_scene(
     let h = k.h_floor.map_or(h, |floor| h.max(floor));
     let partial = |axis: Vec3| (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h);
     let gradient = Vec3::new(partial(Vec3::X), partial(Vec3::Y), partial(Vec3::Z));
+    let short = k.fallback_below.is_some_and(|l| gradient.length() < l);
     let n = gradient
         .try_normalize()
+        .filter(|_| !short)
         .unwrap_or(if k.fallback_along { dir } else { -dir });
     Some((t, if n.dot(dir) > k.flip_above { -n } else { n }))
 }
@@ -725,6 +747,9 @@ pub struct PathKnobs {
     pub reuse_roulette_u: bool,
     /// What one light sample brings clamped to this, per channel.
     pub light_clamp: Option<f32>,
+    /// A light sample that brings less than this counted without its
+    /// shadow ray.
+    pub lazy_below: Option<f32>,
 }
 
 impl Default for PathKnobs {
@@ -738,6 +763,7 @@ impl Default for PathKnobs {
             found_emission: None,
             reuse_roulette_u: false,
             light_clamp: None,
+            lazy_below: None,
         }
     }
 }
@@ -778,8 +804,9 @@ pub fn path(
                 LightCos::Unclamped => (cos, true),
                 LightCos::Abs => (cos.abs(), cos.abs() > 0.0),
             };
-            if counted && ls.pdf > 0.0 && scene.unoccluded(&hit, ls.wi, ls.dist) {
-                let brought = k.light_weight * beta * f * ls.li * cos / ls.pdf;
+            let brought = k.light_weight * beta * f * ls.li * cos / ls.pdf;
+            let lazy = k.lazy_below.is_some_and(|l| brought.max_element() < l);
+            if counted && ls.pdf > 0.0 && (lazy || scene.unoccluded(&hit, ls.wi, ls.dist)) {
                 radiance += k
                     .light_clamp
                     .map_or(brought, |most| brought.min(Vec3::splat(most)));
