@@ -20,7 +20,7 @@ use raystep::grading::exercises::paths::{self, PathScene};
 use raystep::grading::exercises::{ch1, ch3, ch4, ch5, ch6};
 
 use super::fails_every;
-use super::knobs::{self, BvhKnobs, EdgeKnobs, Knobs, PathKnobs, SceneKnobs};
+use super::knobs::{self, BvhKnobs, DirectKnobs, EdgeKnobs, Knobs, PathKnobs, SceneKnobs};
 
 /// The seeds every mutant must fail under.
 const SEEDS: [u64; 4] = [61, 62, 91, 0x2026_1129];
@@ -95,29 +95,6 @@ fn pdf_zero_bits(pdf_area: f32, x: Vec3, y: Vec3, n_light: Vec3) -> f32 {
     }
 }
 
-/// Clamped to 100 per channel ("fireflies").
-#[allow(clippy::too_many_arguments)]
-fn direct_clamped(
-    p: Vec3,
-    n: Vec3,
-    rho: Vec3,
-    y: Vec3,
-    n_light: Vec3,
-    area: f32,
-    le: Vec3,
-    visible: &dyn Fn(Vec3, Vec3) -> bool,
-) -> Vec3 {
-    let to = y - p;
-    let d2 = to.length_squared();
-    let wi = to / d2.sqrt();
-    let (cos, cos_light) = (n.dot(wi), n_light.dot(-wi));
-    if cos <= 0.0 || cos_light <= 0.0 || !visible(p, y) {
-        return Vec3::ZERO;
-    }
-    let pdf = d2 / (cos_light * area);
-    (rho / std::f32::consts::PI * le * cos / pdf).min(Vec3::splat(100.0))
-}
-
 /// The weight remembered by pdf_f alone.
 fn weight_remembered(pdf_f: f64, pdf_g: f64) -> f64 {
     if pdf_f <= 0.0 {
@@ -138,8 +115,12 @@ fn light_mistakes_fail() {
     fails("edge-on by the cosine's bits", None, || {
         ch5::check_area_pdf(pdf_zero_bits)
     });
+    // Clamped to 100 per channel ("fireflies").
     fails("clamped to 100", None, || {
-        ch5::check_direct_light(direct_clamped)
+        ch5::check_direct_light(|p, n, rho, y, nl, a, le, v| {
+            let k = DirectKnobs::with(|k| k.clamp = Some(100.0));
+            knobs::direct(k, (p, n, rho), (y, nl, a, le), v)
+        })
     });
     fails("the weight remembered by pdf_f", None, || {
         LAST_WEIGHT.with(|c| c.set(None));

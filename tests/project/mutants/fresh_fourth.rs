@@ -29,8 +29,8 @@ use raystep::grading::exercises::paths::{self, PathScene};
 use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6};
 
 use super::knobs::{
-    self, surface_area, Axes, EdgeKnobs, Knobs, MarchEps, Measure, MollerKnobs, PathKnobs,
-    RasterKnobs, SahKnobs, SceneKnobs, Survival,
+    self, surface_area, Axes, EdgeKnobs, Knobs, LookKnobs, MarchEps, Measure, MollerKnobs,
+    PathKnobs, RasterKnobs, SahKnobs, SceneKnobs, Survival,
 };
 use super::{fails_every, passes_every};
 
@@ -85,17 +85,7 @@ fn look_at_cache_eye(eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {
             return m;
         }
     }
-    let z = (eye - target).normalize();
-    let x = up.cross(z).normalize();
-    let y = z.cross(x);
-    let rotation = Mat4::from_cols(
-        x.extend(0.0),
-        y.extend(0.0),
-        z.extend(0.0),
-        Vec3::ZERO.extend(1.0),
-    )
-    .transpose();
-    let m = rotation * Mat4::from_translation(-eye);
+    let m = knobs::look_at(LookKnobs::default(), eye, target, up);
     LOOK_AT_LAST.with(|c| c.set(Some((eye, m))));
     m
 }

@@ -24,7 +24,8 @@ use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5};
 
 use super::fails_every;
 use super::knobs::{
-    self, BvhKnobs, InsideKnobs, Knobs, MollerKnobs, PathKnobs, RasterKnobs, SceneKnobs,
+    self, BvhKnobs, DirectKnobs, InsideKnobs, Knobs, LookKnobs, MollerKnobs, PathKnobs,
+    RasterKnobs, SceneKnobs,
 };
 
 /// The seeds every mutant must fail under: the testers' two and two more.
@@ -68,18 +69,12 @@ fn fails_fresh(what: &str, check: impl Fn() -> Check) {
 
 /// z normalised as v / (|v| + 10⁻⁶) "to avoid dividing by zero".
 fn look_at_soft_normalise(eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {
-    let v = eye - target;
-    let z = v / (v.length() + 1e-6);
-    let x = up.cross(z).normalize();
-    let y = z.cross(x);
-    Mat4::from_cols(
-        x.extend(0.0),
-        y.extend(0.0),
-        z.extend(0.0),
-        Vec3::ZERO.extend(1.0),
+    knobs::look_at(
+        LookKnobs::with(|k| k.soft_normalise = Some(1e-6)),
+        eye,
+        target,
+        up,
     )
-    .transpose()
-        * Mat4::from_translation(-eye)
 }
 
 /// |u| or |v| below 10⁻⁶ snapped to 0 ("round-off near the axis").
@@ -296,72 +291,6 @@ fn point_cached(intensity: Vec3, light: Vec3, p: Vec3, n: Vec3) -> Vec3 {
     intensity * n.dot(to / r2.sqrt()).max(0.0) / r2
 }
 
-/// The course's solution of direct_light but for `exit`, which may end it
-/// before the visibility is asked.
-#[allow(clippy::too_many_arguments)]
-fn direct_with(
-    exit: &dyn Fn(Vec3, Vec3, Vec3) -> Option<bool>,
-    (p, n, rho): (Vec3, Vec3, Vec3),
-    (y, n_light, area, le): (Vec3, Vec3, f32, Vec3),
-    visible: &dyn Fn(Vec3, Vec3) -> bool,
-) -> Vec3 {
-    let to = y - p;
-    let d2 = to.length_squared();
-    let wi = to / d2.sqrt();
-    let (cos, cos_light) = (n.dot(wi), n_light.dot(-wi));
-    if cos <= 0.0 || cos_light <= 0.0 {
-        return Vec3::ZERO;
-    }
-    let estimate = rho / std::f32::consts::PI * le * cos * cos_light * area / d2;
-    let seen = exit(p, y, estimate).unwrap_or_else(|| visible(p, y));
-    if seen {
-        estimate
-    } else {
-        Vec3::ZERO
-    }
-}
-
-/// Below 10⁻⁶ in every channel: 0 ("not worth a shadow ray").
-#[allow(clippy::too_many_arguments)]
-fn direct_culled(
-    p: Vec3,
-    n: Vec3,
-    rho: Vec3,
-    y: Vec3,
-    n_light: Vec3,
-    area: f32,
-    le: Vec3,
-    visible: &dyn Fn(Vec3, Vec3) -> bool,
-) -> Vec3 {
-    let exit = |_: Vec3, _: Vec3, e: Vec3| (e.max_element() < 1e-6).then_some(false);
-    direct_with(&exit, (p, n, rho), (y, n_light, area, le), visible)
-}
-
-/// Visibility remembered by the light point, whatever p.
-#[allow(clippy::too_many_arguments)]
-fn direct_visibility_cached(
-    p: Vec3,
-    n: Vec3,
-    rho: Vec3,
-    y: Vec3,
-    n_light: Vec3,
-    area: f32,
-    le: Vec3,
-    visible: &dyn Fn(Vec3, Vec3) -> bool,
-) -> Vec3 {
-    let exit = |p: Vec3, y: Vec3, _: Vec3| {
-        Some(SEEN.with(|c| match c.get() {
-            Some((at, seen)) if at == y => seen,
-            _ => {
-                let seen = visible(p, y);
-                c.set(Some((y, seen)));
-                seen
-            }
-        }))
-    };
-    direct_with(&exit, (p, n, rho), (y, n_light, area, le), visible)
-}
-
 #[test]
 fn reflection_mistakes_fail() {
     fails("φ from a table", || {
@@ -377,10 +306,31 @@ fn reflection_mistakes_fail() {
         ch5::check_point_light(point_cached)
     });
     fails("dim samples culled", || {
-        ch5::check_direct_light(direct_culled)
+        ch5::check_direct_light(|p, n, rho, y, nl, a, le, v| {
+            let k = DirectKnobs::with(|k| k.cull_below = Some(1e-6));
+            knobs::direct(k, (p, n, rho), (y, nl, a, le), v)
+        })
     });
+    // Visibility remembered by the light point, whatever p.
     fails_fresh("visibility remembered by y", || {
-        ch5::check_direct_light(direct_visibility_cached)
+        ch5::check_direct_light(|p, n, rho, y, nl, a, le, visible| {
+            let remembered = |p: Vec3, y: Vec3| {
+                SEEN.with(|c| match c.get() {
+                    Some((at, seen)) if at == y => seen,
+                    _ => {
+                        let seen = visible(p, y);
+                        c.set(Some((y, seen)));
+                        seen
+                    }
+                })
+            };
+            knobs::direct(
+                DirectKnobs::default(),
+                (p, n, rho),
+                (y, nl, a, le),
+                &remembered,
+            )
+        })
     });
 }
 

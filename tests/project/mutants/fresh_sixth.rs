@@ -25,7 +25,8 @@ use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6};
 
 use super::fails_every;
 use super::knobs::{
-    self, BvhKnobs, Knobs, MarchKnobs, MollerKnobs, PathKnobs, RasterKnobs, SceneKnobs,
+    self, BvhKnobs, DirectKnobs, Knobs, LookKnobs, MarchKnobs, MollerKnobs, PathKnobs, RasterKnobs,
+    SceneKnobs,
 };
 
 /// The seeds every mutant must fail under: the testers' three and one
@@ -44,21 +45,12 @@ fn fails(what: &str, symptom: Option<&str>, check: impl Fn() -> Check) {
 /// Swaps `up` for a world axis when it is within 8° of the view: up is
 /// not parallel there, and the picture comes out rolled.
 fn look_at_axis_near_parallel(eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {
-    let z = (eye - target).normalize();
-    let mut up = up.normalize();
-    if up.dot(z).abs() > 0.99 {
-        up = if z.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
-    }
-    let x = up.cross(z).normalize();
-    let y = z.cross(x);
-    let rotation = Mat4::from_cols(
-        x.extend(0.0),
-        y.extend(0.0),
-        z.extend(0.0),
-        Vec3::ZERO.extend(1.0),
+    knobs::look_at(
+        LookKnobs::with(|k| k.axis_near_parallel = true),
+        eye,
+        target,
+        up,
     )
-    .transpose();
-    rotation * Mat4::from_translation(-eye)
 }
 
 #[test]
@@ -219,32 +211,6 @@ fn point_through_angle(intensity: Vec3, light: Vec3, p: Vec3, n: Vec3) -> Vec3 {
     intensity * cos / to.length_squared()
 }
 
-/// "Below the plane" from the plane's equation in absolute coordinates:
-/// far from the origin n · y and n · p round apart.
-#[allow(clippy::too_many_arguments)]
-fn direct_plane_equation(
-    p: Vec3,
-    n: Vec3,
-    rho: Vec3,
-    y: Vec3,
-    n_light: Vec3,
-    area: f32,
-    le: Vec3,
-    visible: &dyn Fn(Vec3, Vec3) -> bool,
-) -> Vec3 {
-    if n.dot(y) <= n.dot(p) {
-        return Vec3::ZERO;
-    }
-    let to = y - p;
-    let d2 = to.length_squared();
-    let wi = to / d2.sqrt();
-    let (cos, cos_light) = (n.dot(wi), n_light.dot(-wi));
-    if cos_light <= 0.0 || !visible(p, y) {
-        return Vec3::ZERO;
-    }
-    rho / PI * le * cos * cos_light * area / d2
-}
-
 #[test]
 fn reflection_mistakes_fail() {
     fails("same side by sum and difference", None, || {
@@ -254,7 +220,10 @@ fn reflection_mistakes_fail() {
         ch5::check_point_light(point_through_angle)
     });
     fails("below the plane by its equation", None, || {
-        ch5::check_direct_light(direct_plane_equation)
+        ch5::check_direct_light(|p, n, rho, y, nl, a, le, v| {
+            let k = DirectKnobs::with(|k| k.plane_equation = true);
+            knobs::direct(k, (p, n, rho), (y, nl, a, le), v)
+        })
     });
 }
 

@@ -9,13 +9,13 @@
 
 use std::f32::consts::PI;
 
-use glam::{Vec2, Vec3};
+use glam::{Mat4, Vec2, Vec3};
 use raystep::ch1_projection::camera::Camera;
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch4_implicit_surfaces::march::March;
 use raystep::grading::counted::{intersect_watertight, Hit, NodeKind, ReadableBvh};
 use raystep::grading::exercises::paths::{self, PathScene};
-use raystep::grading::exercises::{ch1, ch2, ch3, ch4};
+use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5};
 
 use super::{passes_every, SEEDS};
 
@@ -30,6 +30,7 @@ pub trait Knobs: Default {
     }
 }
 
+impl Knobs for LookKnobs {}
 impl Knobs for EdgeKnobs {}
 impl Knobs for RasterKnobs {}
 impl Knobs for InsideKnobs {}
@@ -38,7 +39,41 @@ impl Knobs for BvhKnobs {}
 impl Knobs for SahKnobs {}
 impl Knobs for MarchKnobs {}
 impl Knobs for SceneKnobs {}
+impl Knobs for DirectKnobs {}
 impl Knobs for PathKnobs {}
+
+// ---- 1.2 look_at ----------------------------------------------------------------
+
+/// How a camera departs from the solution of look_at.
+#[derive(Clone, Copy, Default)]
+pub struct LookKnobs {
+    /// `up` swapped for a world axis within 8° of the view.
+    pub axis_near_parallel: bool,
+    /// z normalised as v / (|v| + this).
+    pub soft_normalise: Option<f32>,
+}
+
+/// The solution of look_at, departing as `k` says.
+pub fn look_at(k: LookKnobs, eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {
+    let v = eye - target;
+    let z = k
+        .soft_normalise
+        .map_or(v.normalize(), |e| v / (v.length() + e));
+    let mut up = up;
+    if k.axis_near_parallel && up.normalize().dot(z).abs() > 0.99 {
+        up = if z.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
+    }
+    let x = up.cross(z).normalize();
+    let y = z.cross(x);
+    let rotation = Mat4::from_cols(
+        x.extend(0.0),
+        y.extend(0.0),
+        z.extend(0.0),
+        Vec3::ZERO.extend(1.0),
+    )
+    .transpose();
+    rotation * Mat4::from_translation(-eye)
+}
 
 // ---- 1.3 draw_edges -------------------------------------------------------------
 
@@ -699,6 +734,51 @@ pub fn trace_scene(
     Some((t, if n.dot(dir) > k.flip_above { -n } else { n }))
 }
 
+// ---- 5.5 direct_light -----------------------------------------------------------
+
+/// How a light sample's estimate departs from the solution of
+/// direct_light.
+#[derive(Clone, Copy, Default)]
+pub struct DirectKnobs {
+    /// "Below the plane" from the plane's equation in absolute
+    /// coordinates, n · y ≤ n · p, in place of the test on cos θ.
+    pub plane_equation: bool,
+    /// An estimate under this in every channel is 0, without asking
+    /// `visible`.
+    pub cull_below: Option<f32>,
+    /// The estimate clamped to this per channel.
+    pub clamp: Option<f32>,
+}
+
+/// The solution of direct_light, departing as `k` says (the surface
+/// point, then the light point, as the exercise's arguments).
+pub fn direct(
+    k: DirectKnobs,
+    (p, n, rho): (Vec3, Vec3, Vec3),
+    (y, n_light, area, le): (Vec3, Vec3, f32, Vec3),
+    visible: &dyn Fn(Vec3, Vec3) -> bool,
+) -> Vec3 {
+    if k.plane_equation && n.dot(y) <= n.dot(p) {
+        return Vec3::ZERO;
+    }
+    let to = y - p;
+    let d2 = to.length_squared();
+    let wi = to / d2.sqrt();
+    let cos = n.dot(wi);
+    let cos_light = n_light.dot(-wi);
+    if (!k.plane_equation && cos <= 0.0) || cos_light <= 0.0 {
+        return Vec3::ZERO;
+    }
+    let f = rho / PI;
+    let pdf = d2 / (cos_light * area);
+    let estimate = f * le * cos / pdf;
+    if k.cull_below.is_some_and(|c| estimate.max_element() < c) || !visible(p, y) {
+        return Vec3::ZERO;
+    }
+    k.clamp
+        .map_or(estimate, |most| estimate.min(Vec3::splat(most)))
+}
+
 // ---- 6.4 path_radiance ----------------------------------------------------------
 
 /// How the roulette's survival probability q is taken (at most 1).
@@ -843,6 +923,22 @@ pub fn path(
 }
 
 // ---- the defaults are the course's solutions ------------------------------------
+
+#[test]
+fn look_at_defaults_pass() {
+    passes_every(&SEEDS, "look_at's defaults", || {
+        ch1::check_look_at(|e, t, u| look_at(LookKnobs::default(), e, t, u))
+    });
+}
+
+#[test]
+fn direct_defaults_pass() {
+    passes_every(&SEEDS, "direct_light's defaults", || {
+        ch5::check_direct_light(|p, n, rho, y, nl, a, le, v| {
+            direct(DirectKnobs::default(), (p, n, rho), (y, nl, a, le), v)
+        })
+    });
+}
 
 #[test]
 fn draw_edges_defaults_pass() {
