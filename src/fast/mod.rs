@@ -61,7 +61,7 @@ use crate::ch5_reflection::world::{Queries, World};
 use crate::ch6_global_illumination::engine::{
     trace_row, EngineChoice, PassSpec, PathEngine, RowSums,
 };
-use crate::ch6_global_illumination::integrator::{PathSettings, PathStats};
+use crate::ch6_global_illumination::integrator::{Path, PathSettings, PathStats};
 use crate::ch6_global_illumination::layers::{Contributions, LAYER_SLOTS};
 use crate::scene::Scene;
 
@@ -185,14 +185,18 @@ fn wave_row(world: &World, tree: &Bvh8, pass: &PassSpec, row: RowSums<'_>, stats
     } = row;
     let per_pixel = pass.count as usize;
     let chunk = (4096 / per_pixel).max(1);
+    let mut lanes = Vec::new();
     for x0 in (0..sum.len()).step_by(chunk) {
         let x1 = (x0 + chunk).min(sum.len());
-        let starts = || {
-            let pixels = (x0..x1, y);
-            let samples = (pass.first, pass.count);
-            starts::camera_starts(pass.camera, tree.level(), pass.sampler, pixels, samples)
-                .into_iter()
-        };
+        lanes.clear();
+        starts::camera_lanes(
+            (pass.camera, tree.level()),
+            pass.sampler,
+            (x0..x1, y),
+            (pass.first, pass.count),
+            |ray| Path::from_camera(ray, pass.settings.strategy, world),
+            &mut lanes,
+        );
         let n = (x1 - x0) * per_pixel;
         match layers.as_deref_mut() {
             None => {
@@ -201,7 +205,7 @@ fn wave_row(world: &World, tree: &Bvh8, pass: &PassSpec, row: RowSums<'_>, stats
                     caught: 0,
                 };
                 let mut outs = vec![empty; n];
-                wave::trace_paths(world, tree, starts(), pass.settings, &mut outs, stats);
+                wave::trace_paths(world, tree, &mut lanes, pass.settings, &mut outs, stats);
                 for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
                     for l in ls {
                         sum[x] += l.light;
@@ -216,7 +220,7 @@ fn wave_row(world: &World, tree: &Bvh8, pass: &PassSpec, row: RowSums<'_>, stats
                     caught: 0,
                 };
                 let mut outs = vec![empty; n];
-                wave::trace_paths(world, tree, starts(), pass.settings, &mut outs, stats);
+                wave::trace_paths(world, tree, &mut lanes, pass.settings, &mut outs, stats);
                 for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
                     for path in ls {
                         for (acc, v) in layers[x].iter_mut().zip(path.light) {

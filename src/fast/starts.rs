@@ -1,68 +1,37 @@
-//! The camera rays that start the fast engine's paths, with the pixel
-//! positions of eight Sobol samples drawn at once.
+//! The camera rays that start the fast engine's paths, eight at a time.
 
-use glam::Vec2;
+use glam::Vec3;
 
 use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::render::camera_sample;
+use crate::ch6_global_illumination::integrator::Path;
 use crate::ch6_global_illumination::sampler::{PathSampler, SamplerKind};
 
+use super::gather8::Lane;
 use super::lanes::W;
 use super::level::Level;
 
-/// The camera rays and samplers of samples `first .. first + count` of
-/// pixels `xs` of row `y`, in that order: what chapter 6's `camera_sample`
-/// gives (chapter 3's, which hands the closure this same pixel index), with
-/// the pixel positions of eight Sobol samples drawn at once
-/// ([`sobol_groups8_wanted_at`](super::simd::sobol_groups8_wanted_at), the same bits). The
-/// eight may belong to different pixels: a pass of fewer than eight
-/// samples per pixel (the terminal UI's) is drawn eight at a time too
-/// (`across_pixels`).
-pub fn camera_starts(
-    camera: &Camera,
-    level: Level,
+/// The paths of samples `first .. first + count` of pixels `xs` of row
+/// `y`, in that order, pushed on `lanes` (each lane's `out` its place in
+/// that order): what chapter 6's `camera_sample` gives (chapter 3's, which
+/// hands the closure this same pixel index), eight at a time where eight
+/// samplers draw from the tables or independent numbers alike (their
+/// pixel positions drawn at once, [`sobol_groups8_wanted_at`](super::simd::sobol_groups8_wanted_at)
+/// or [`independent8_wanted_at`](super::simd::independent8_wanted_at), and
+/// their rays made at once, [`rays8`]: the same bits). The eight may belong
+/// to different pixels: a pass of fewer than eight samples per pixel (the
+/// terminal UI's) is drawn eight at a time too.
+pub(super) fn camera_lanes(
+    (camera, level): (&Camera, Level),
     (kind, seed): (SamplerKind, u64),
     (xs, y): (std::ops::Range<usize>, usize),
     (first, count): (u32, u32),
-) -> Vec<(Ray, PathSampler)> {
-    if count < W as u32 {
-        return across_pixels(camera, level, (kind, seed), (xs, y), (first, count));
-    }
-    let mut starts = Vec::with_capacity(xs.len() * count as usize);
-    for x in xs {
-        let pixel = (y * camera.width as usize + x) as u64;
-        let one_by_one =
-            |sampler: PathSampler| camera_sample(camera, (x as u32, y as u32), |_| sampler);
-        let mut s = first;
-        while s < first + count {
-            if s + W as u32 > first + count {
-                // The last few samples of the pixel.
-                let (sampler, ray) = one_by_one(PathSampler::new(kind, seed, pixel, s as u64));
-                starts.push((ray, sampler));
-                s += 1;
-                continue;
-            }
-            let samplers: [PathSampler; W] =
-                std::array::from_fn(|j| PathSampler::new(kind, seed, pixel, (s + j as u32) as u64));
-            s += W as u32;
-            eight_starts((camera, level), ([x; W], y), samplers, &mut starts);
-        }
-    }
-    starts
-}
-
-/// [`camera_starts`] for fewer than eight samples per pixel: eight starts
-/// at once whatever pixels they belong to.
-fn across_pixels(
-    camera: &Camera,
-    level: Level,
-    (kind, seed): (SamplerKind, u64),
-    (xs, y): (std::ops::Range<usize>, usize),
-    (first, count): (u32, u32),
-) -> Vec<(Ray, PathSampler)> {
+    new_path: impl Fn(&Ray) -> Path,
+    lanes: &mut Vec<Lane>,
+) {
     let total = xs.len() * count as usize;
-    let mut starts = Vec::with_capacity(total);
+    lanes.reserve(total);
     // Every (pixel, sample) in order: sample `first .. first + count` of
     // each pixel of `xs`.
     let mut all = xs.flat_map(|x| (first..first + count).map(move |s| (x, s)));
@@ -70,56 +39,95 @@ fn across_pixels(
         let pixel = (y * camera.width as usize + x) as u64;
         PathSampler::new(kind, seed, pixel, s as u64)
     };
-    let one_by_one = |(x, s): (usize, u32)| {
-        let (sampler, ray) = camera_sample(camera, (x as u32, y as u32), |_| sampler((x, s)));
-        (ray, sampler)
+    let push = |ray: Ray, sampler: PathSampler, lanes: &mut Vec<Lane>| {
+        let out = lanes.len() as u32;
+        lanes.push(Lane {
+            path: new_path(&ray),
+            ray,
+            sampler,
+            out,
+        });
     };
     let mut left = total;
     while left > 0 {
         if left < W {
-            // The last few.
-            starts.extend(all.by_ref().map(one_by_one));
+            // The last few, one at a time.
+            for (x, s) in all.by_ref() {
+                let (sampler, ray) =
+                    camera_sample(camera, (x as u32, y as u32), |_| sampler((x, s)));
+                push(ray, sampler, lanes);
+            }
             break;
         }
         left -= W;
         let at: [(usize, u32); W] = std::array::from_fn(|_| all.next().unwrap_or((0, 0)));
-        eight_starts(
-            (camera, level),
-            (at.map(|(x, _)| x), y),
-            at.map(sampler),
-            &mut starts,
-        );
+        let mut samplers = at.map(sampler);
+        let Some(u) = pixel_numbers(level, &samplers) else {
+            // Sobol points and independent numbers mixed (indices past
+            // the tables): the lesson's steps, one at a time.
+            for ((x, _), sampler) in at.into_iter().zip(samplers) {
+                let (sampler, ray) = camera_sample(camera, (x as u32, y as u32), |_| sampler);
+                push(ray, sampler, lanes);
+            }
+            continue;
+        };
+        // `jittered`: the pixel's corner plus the first two numbers.
+        let raster_x = std::array::from_fn(|j| at[j].0 as f32 + u[0][j]);
+        let raster_y = std::array::from_fn(|j| y as f32 + u[1][j]);
+        let rays = rays8(camera, &raster_x, &raster_y);
+        for (ray, sampler) in rays.into_iter().zip(samplers.iter_mut()) {
+            sampler.skip(2);
+            push(ray, sampler.clone(), lanes);
+        }
     }
-    starts
 }
 
-/// The camera rays of eight samplers, lane j's in pixel (`xs[j]`, `y`),
-/// pushed on `starts` in order: their pixel positions drawn at once where
-/// all eight draw Sobol points from the tables, one at a time by
-/// `camera_sample` otherwise.
-#[inline(always)]
-fn eight_starts(
-    (camera, level): (&Camera, Level),
-    (xs, y): ([usize; W], usize),
-    samplers: [PathSampler; W],
-    starts: &mut Vec<(Ray, PathSampler)>,
-) {
-    let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) else {
-        // Independent numbers, or Sobol indices past the tables.
-        for (x, sampler) in xs.into_iter().zip(samplers) {
-            let (sampler, ray) = camera_sample(camera, (x as u32, y as u32), |_| sampler);
-            starts.push((ray, sampler));
-        }
-        return;
-    };
-    // Only the first two numbers: the pixel position.
-    let [g] = super::simd::sobol_groups8_wanted_at(level, &sample, &scramble, 0, 0b11);
-    for (j, (x, mut sampler)) in xs.into_iter().zip(samplers).enumerate() {
-        // `jittered`: the pixel's corner plus the first two numbers.
-        let raster = Vec2::new(x as f32, y as f32) + Vec2::new(g[0][j], g[1][j]);
-        sampler.skip(2);
-        starts.push((camera.ray(raster), sampler));
+/// The first two numbers (the pixel position) of eight samplers,
+/// `u[d][j]`, drawn at once: where all eight draw Sobol points from the
+/// tables, or all eight independent numbers (`None` otherwise).
+fn pixel_numbers(level: Level, samplers: &[PathSampler; W]) -> Option<[[f32; W]; 2]> {
+    if let Some((sample, scramble)) = sobol_lanes(|j| &samplers[j]) {
+        let [g] = super::simd::sobol_groups8_wanted_at(level, &sample, &scramble, 0, 0b11);
+        return Some([g[0], g[1]]);
     }
+    let prefix: [Option<u64>; W] = std::array::from_fn(|j| samplers[j].independent_prefix());
+    prefix.iter().all(Option::is_some).then(|| {
+        let prefix = prefix.map(|p| p.unwrap_or(0));
+        let u = super::simd::independent8_wanted_at(level, &prefix, 0, 0b11);
+        [u[0], u[1]]
+    })
+}
+
+/// Eight camera rays through the raster positions (`raster_x[j]`,
+/// `raster_y[j]`): [`Camera::ray`]'s steps, one pass over eight lanes
+/// each, in the same order (so the same bits: the image plane's point,
+/// glam's `transform_vector3` as its sums fall, and `normalize` as one
+/// over the square root of x² + y² + z², times each component).
+// Lane loops index several arrays by lane, on purpose (vector code).
+#[allow(clippy::needless_range_loop)]
+pub fn rays8(camera: &Camera, raster_x: &[f32; W], raster_y: &[f32; W]) -> [Ray; W] {
+    let m = &camera.world_from_camera;
+    let origin = m.transform_point3(Vec3::ZERO);
+    let (t, aspect) = (camera.tan_half_fov, camera.aspect);
+    let (w, h) = (camera.width as f32, camera.height as f32);
+    let mut d = [[0.0f32; W]; 3];
+    for j in 0..W {
+        let u = (raster_x[j] / w * 2.0 - 1.0) * aspect * t;
+        let v = (1.0 - raster_y[j] / h * 2.0) * t;
+        // The camera-space direction (u, v, -1) in world space (z's
+        // axis times -1 is its negation, exactly).
+        for (c, d) in d.iter_mut().enumerate() {
+            d[j] = -m.z_axis[c] + (m.y_axis[c] * v + m.x_axis[c] * u);
+        }
+    }
+    let mut r = [0.0f32; W];
+    for j in 0..W {
+        r[j] = 1.0 / (d[0][j] * d[0][j] + d[1][j] * d[1][j] + d[2][j] * d[2][j]).sqrt();
+    }
+    std::array::from_fn(|j| Ray {
+        origin,
+        dir: Vec3::new(d[0][j] * r[j], d[1][j] * r[j], d[2][j] * r[j]),
+    })
 }
 
 /// The sample indices and pixel scrambles of eight samplers (`sampler(j)`

@@ -48,7 +48,6 @@ use crate::ch6_global_illumination::integrator::{
     direct_light, sky_emission, surface_emission, Path, PathOut, PathSettings, PathStats,
 };
 use crate::ch6_global_illumination::layers::Contributions;
-use crate::ch6_global_illumination::sampler::PathSampler;
 use crate::ch6_global_illumination::vertex::Vertex;
 use crate::scene::LightSampling;
 
@@ -142,27 +141,19 @@ struct Round {
     count_cut: bool,
 }
 
-/// Traces one path per (camera ray, sampler) of `starts`, adding path i's
-/// light to `outs[i]` (which must hold one entry per start): one sum, or
-/// one per bounce layer. Each round extends every live path by one
+/// Traces the paths `lanes` (made by
+/// [`camera_lanes`](super::starts::camera_lanes)), adding path i's light
+/// to `outs[lanes[i].out]` (which must hold one entry per path): one sum,
+/// or one per bounce layer. Each round extends every live path by one
 /// bounce, in three phases: closest hits, shading, shadow rays.
-pub fn trace_paths<C: Contributions>(
+pub(super) fn trace_paths<C: Contributions>(
     world: &World,
     tree: &Bvh8,
-    starts: impl Iterator<Item = (Ray, PathSampler)>,
+    lanes: &mut [Lane],
     settings: &PathSettings,
     outs: &mut [C],
     stats: &mut PathStats,
 ) {
-    let mut lanes: Vec<Lane> = starts
-        .enumerate()
-        .map(|(i, (ray, sampler))| Lane {
-            path: Path::from_camera(&ray, settings.strategy, world),
-            ray,
-            sampler,
-            out: i as u32,
-        })
-        .collect();
     stats.paths += lanes.len() as u64;
     let mut shade = Shade::new(world, tree.level(), settings);
     let mut q = Queues::new(lanes.len());
@@ -175,8 +166,8 @@ pub fn trace_paths<C: Contributions>(
             count_cut: settings.max_bounces.is_none(),
         };
         stats.rays += q.live.len() as u64;
-        closest_hits(tree, &lanes, k, &mut q);
-        shade_hits(&mut shade, &mut lanes, round, &mut q, outs, stats);
+        closest_hits(tree, lanes, k, &mut q);
+        shade_hits(&mut shade, lanes, round, &mut q, outs, stats);
         trace_shadows(tree, k, &mut q, outs, stats);
         std::mem::swap(&mut q.live, &mut q.leaving.next);
         k += 1;

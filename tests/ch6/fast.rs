@@ -640,3 +640,64 @@ fn the_lane_mask_has_a_bit_for_each_true_lane() {
         assert_eq!(raystep::fast::lanes::mask(lanes), bits, "{lanes:?}");
     }
 }
+
+#[test]
+fn eight_camera_rays_at_once_are_the_lessons_bit_for_bit() {
+    use glam::DVec3;
+    use raystep::fast::starts::rays8;
+    use raystep::scene::camera::CameraDesc;
+    let mut h = 0x2545_f491_4f6c_dd1du64;
+    let mut next = || {
+        h = h
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (h >> 40) as f64 / (1u64 << 24) as f64
+    };
+    let mut checked = 0;
+    for c in 0..200 {
+        // Eyes from the origin to 10⁶ away, scenes from 10⁻³ to 10⁴ across,
+        // fields of view from narrow to wide, odd image sizes.
+        let far = 10f64.powf(6.0 * next() - 1.0);
+        let size = 10f64.powf(7.0 * next() - 3.0);
+        let mut v = || DVec3::new(next() - 0.5, next() - 0.5, next() - 0.5);
+        let eye = v() * far;
+        let target = eye + v().normalize_or(DVec3::Z) * size;
+        let desc = CameraDesc {
+            eye,
+            target,
+            up: v(),
+            fov_degrees: 0.5 + 170.0 * next(),
+            width: 1 + (next() * 700.0) as u32,
+            height: 1 + (next() * 500.0) as u32,
+        };
+        let Ok(camera) = Camera::new(desc) else {
+            continue;
+        };
+        let (w, hh) = (camera.width as f64, camera.height as f64);
+        // Raster positions anywhere on the image, on its edges, and one
+        // exactly at each corner.
+        let xs: [f32; 8] = std::array::from_fn(|j| match (c + j) % 5 {
+            0 => 0.0,
+            1 => w as f32,
+            _ => (next() * w) as f32,
+        });
+        let ys: [f32; 8] = std::array::from_fn(|j| match (c + 2 * j) % 5 {
+            0 => 0.0,
+            1 => hh as f32,
+            _ => (next() * hh) as f32,
+        });
+        let rays = rays8(&camera, &xs, &ys);
+        for j in 0..8 {
+            let want = camera.ray(glam::Vec2::new(xs[j], ys[j]));
+            let bits = |v: glam::Vec3| v.to_array().map(f32::to_bits);
+            assert_eq!(
+                bits(rays[j].origin),
+                bits(want.origin),
+                "camera {c} lane {j}"
+            );
+            assert_eq!(bits(rays[j].dir), bits(want.dir), "camera {c} lane {j}");
+            checked += 1;
+        }
+    }
+    assert!(checked > 1000, "only {checked} rays checked");
+}
