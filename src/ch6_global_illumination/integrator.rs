@@ -188,6 +188,7 @@ pub fn trace_path(
 
 /// A path under way: how it is traced, its throughput, and what the
 /// emission its current ray finds must know about the vertex it left.
+#[derive(Clone)]
 pub struct Path {
     strategy: Strategy,
     /// Whether vertices sample lights (then emission that a sampled

@@ -30,6 +30,10 @@ pub(super) fn camera_lanes(
     new_path: impl Fn(&Ray) -> Path,
     lanes: &mut Vec<Lane>,
 ) {
+    // Every camera ray leaves the eye, so every path starts alike: one
+    // start, copied (built once, it is also never read back while its
+    // fields are still being written).
+    let start = new_path(&camera.ray(glam::Vec2::ZERO));
     let total = xs.len() * count as usize;
     lanes.reserve(total);
     // Every (pixel, sample) in order: sample `first .. first + count` of
@@ -42,7 +46,7 @@ pub(super) fn camera_lanes(
     let push = |ray: Ray, sampler: PathSampler, lanes: &mut Vec<Lane>| {
         let out = lanes.len() as u32;
         lanes.push(Lane {
-            path: new_path(&ray),
+            path: start.clone(),
             ray,
             sampler,
             out,
@@ -74,10 +78,13 @@ pub(super) fn camera_lanes(
         // `jittered`: the pixel's corner plus the first two numbers.
         let raster_x = std::array::from_fn(|j| at[j].0 as f32 + u[0][j]);
         let raster_y = std::array::from_fn(|j| y as f32 + u[1][j]);
-        let rays = rays8(camera, &raster_x, &raster_y);
-        for (ray, sampler) in rays.into_iter().zip(samplers.iter_mut()) {
+        // The numbers taken, before the samplers are copied into the lanes.
+        for sampler in &mut samplers {
             sampler.skip(2);
-            push(ray, sampler.clone(), lanes);
+        }
+        let rays = rays8(camera, &raster_x, &raster_y);
+        for (ray, sampler) in rays.iter().zip(&samplers) {
+            push(*ray, sampler.clone(), lanes);
         }
     }
 }
@@ -136,9 +143,14 @@ pub fn rays8(camera: &Camera, raster_x: &[f32; W], raster_y: &[f32; W]) -> [Ray;
 pub(super) fn sobol_lanes<'a>(
     sampler: impl Fn(usize) -> &'a PathSampler,
 ) -> Option<([u32; W], [u64; W])> {
-    let index: [Option<u32>; W] = std::array::from_fn(|j| sampler(j).sobol_index());
-    index.iter().all(Option::is_some).then(|| {
-        let sample = std::array::from_fn(|j| index[j].unwrap_or(0));
-        (sample, std::array::from_fn(|j| sampler(j).pixel_scramble()))
-    })
+    let (mut sample, mut scramble) = ([0; W], [0; W]);
+    let mut all = true;
+    for j in 0..W {
+        let s = sampler(j);
+        match s.sobol_index() {
+            Some(i) => (sample[j], scramble[j]) = (i, s.pixel_scramble()),
+            None => all = false,
+        }
+    }
+    all.then_some((sample, scramble))
 }
