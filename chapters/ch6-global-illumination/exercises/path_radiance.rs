@@ -14,8 +14,8 @@
 //! * `scene.next_hit(&hit, wi)`: the next surface leaving `hit` along `wi`;
 //! * `scene.sample_light(&hit, u)`: a direction to a point on the light,
 //!   its distance, the radiance Le arriving along it (`li`) and its
-//!   density per steradian (`None`: the light cannot be seen from that
-//!   side);
+//!   density per steradian (`None`: no sample, for instance where the
+//!   light cannot be seen from that side);
 //! * `scene.unoccluded(&hit, wi, dist)`: the shadow ray;
 //! * `scene.sample_cosine(&hit, u)`: a direction about the normal with
 //!   density cos θ / π.

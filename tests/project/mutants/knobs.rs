@@ -793,6 +793,8 @@ pub enum Survival {
     LargestBefore,
     /// This q, whatever β is.
     Fixed(f32),
+    /// One channel of β.
+    Channel(usize),
 }
 
 /// How the light sample's cosine is tested.
@@ -830,6 +832,9 @@ pub struct PathKnobs {
     /// A light sample that brings less than this counted without its
     /// shadow ray.
     pub lazy_below: Option<f32>,
+    /// The emission the bounce finds added where the light sampler found
+    /// no sample.
+    pub found_emission_without_light: bool,
 }
 
 impl Default for PathKnobs {
@@ -844,6 +849,7 @@ impl Default for PathKnobs {
             reuse_roulette_u: false,
             light_clamp: None,
             lazy_below: None,
+            found_emission_without_light: false,
         }
     }
 }
@@ -862,6 +868,7 @@ pub fn path(
         Survival::Smallest => beta.min_element().min(1.0),
         Survival::LargestBefore => before.max_element().min(1.0),
         Survival::Fixed(q) => q,
+        Survival::Channel(c) => beta[c].min(1.0),
     };
     let Some(mut hit) = scene.first_hit(origin, dir) else {
         return Vec3::ZERO;
@@ -877,7 +884,9 @@ pub fn path(
             beta /= q;
         }
         let f = hit.albedo / PI;
-        if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
+        let light = scene.sample_light(&hit, Vec2::new(rng(), rng()));
+        let no_light = light.is_none();
+        if let Some(ls) = light {
             let cos = hit.n.dot(ls.wi);
             let (cos, counted) = match k.light_cos {
                 LightCos::Clamped => (cos, cos > 0.0),
@@ -913,6 +922,9 @@ pub fn path(
             Some(next) => {
                 if let Some(weight) = k.found_emission {
                     radiance += weight * beta * next.emitted;
+                }
+                if k.found_emission_without_light && no_light {
+                    radiance += beta * next.emitted;
                 }
                 hit = next;
             }

@@ -18,6 +18,7 @@ pub mod fresh_eighth;
 pub mod fresh_fifth;
 pub mod fresh_fourth;
 pub mod fresh_new;
+pub mod fresh_ninth;
 pub mod fresh_seventh;
 pub mod fresh_sixth;
 pub mod fresh_third;

@@ -246,7 +246,9 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
     }
     // Drawn cameras: scenes from 10⁻⁴ to 10² across, up to 100 times that
     // from the origin, `up` of any length and at least 17° from the view
-    // (a fifth 1° to 8° from it).
+    // (a fifth 1° to 8° from it; some 10⁻⁴ to 10^-2.5 rad short of
+    // perpendicular to it, where up itself is nearly, not quite, the
+    // picture's y).
     // The axes to 1e-4; the translation to 1e-4 of the eye's distance
     // from the origin (what rounding allows there).
     // A third of them keep the last camera's eye, or its up: the matrix
@@ -275,6 +277,11 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
             let side = a * c + b * s;
             let (sin, cos) = draws.range(0.02, 0.14).sin_cos();
             up = (view * cos * draws.sign() + side * sin) * draws.decades(-2.0, 2.0);
+        } else if draws.unit() < 0.15 {
+            let (a, b) = view.any_orthonormal_pair();
+            let (s, c) = draws.range(0.0, std::f32::consts::TAU).sin_cos();
+            let tilt = draws.sign() * draws.decades(-4.0, -2.5);
+            up = ((a * c + b * s) + view * tilt) * draws.decades(-2.0, 2.0);
         }
         let target = eye + view * size * draws.range(0.5, 3.0);
         last = Some((eye, up, size));

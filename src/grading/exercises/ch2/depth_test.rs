@@ -22,7 +22,9 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
         (2, inf, false),
         (0, 0.5, true),
     ];
-    let mut buffer = vec![inf; 3];
+    // A fourth sample holds a depth from before the first test, and no
+    // test touches it: it must stay.
+    let mut buffer = vec![inf, inf, inf, 9.0];
     let mut fails = Vec::new();
     let mut tie_passed = false;
     for (i, (index, z, want)) in steps.into_iter().enumerate() {
@@ -37,7 +39,7 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
             ));
         }
     }
-    let expected = [0.5, 2.0, inf];
+    let expected = [0.5, 2.0, inf, 9.0];
     if buffer != expected {
         fails.push((
             1.0,
@@ -51,6 +53,13 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
     let mut draws = Draws::new(23);
     let size = draws.count(1, 64);
     let (mut theirs, mut ours) = (vec![inf; size], vec![inf; size]);
+    // A third of the samples hold a depth before the first test.
+    for (t, o) in theirs.iter_mut().zip(&mut ours) {
+        if draws.unit() < 1.0 / 3.0 {
+            *o = draws.decades(-6.0, 6.0);
+            *t = *o;
+        }
+    }
     let mut last: Option<(usize, f32)> = None;
     for step in 0..draws.count(200, 2000) {
         draws.next_case();
@@ -78,6 +87,14 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
             7 => -f32::NAN,
             8 if stored == 0.0 => -stored,
             9 => -inf,
+            // The largest finite depth, on an empty sample where there is
+            // one: it passes.
+            10 => {
+                if let Some(empty) = ours.iter().position(|&d| d == inf) {
+                    index = empty;
+                }
+                f32::MAX
+            }
             _ => draws.decades(-6.0, 6.0),
         };
         let z = again.unwrap_or(z);
@@ -87,12 +104,20 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
             ours[index] = z;
         }
         let got = f(&mut theirs, index, z);
-        if got != want || theirs[index].to_bits() != ours[index].to_bits() {
+        // The tested sample, then the others: as they were.
+        let other = (0..size).find(|&i| theirs[i].to_bits() != ours[i].to_bits());
+        let at = if got != want { Some(index) } else { other };
+        if let Some(i) = at {
+            let what = match i == index {
+                true => "",
+                false => " at another sample",
+            };
             fails.push((
                 1.0,
                 format!(
-                    "drawn step {step}: depth_test(index {index}, z {z}) returned {got} and left {}, expected {want} and {}",
-                    theirs[index], ours[index]
+                    "drawn step {step}: depth_test(index {index}, z {z}) returned {got} and left {}{what} \
+                     (index {i}), expected {want} and {}",
+                    theirs[i], ours[i]
                 ),
             ));
             break;
@@ -101,7 +126,7 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
     let check = worst_of(fails.into_iter(), 0.0, "every step matches");
     if check.passed() {
         check
-    } else if buffer == [inf; 3] {
+    } else if buffer[..3] == [inf; 3] {
         check.with_symptom(NOT_STORED)
     } else if tie_passed {
         check.with_symptom(TIE)

@@ -236,13 +236,22 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
     };
     // Drawn spheres from 10⁻² to 10² across, up to 100 times that from the
     // origin, ε a ten-thousandth of the radius, rays towards them (a hit
-    // within 2ε/cos θ of the true one) and away (a miss).
+    // within 2ε/cos θ of the true one) and away (a miss), max_distance
+    // 200 radii or just past the sphere.
     let (mut error, mut detail) = (error, detail);
     let mut draws = Draws::new(43);
     let drawn = worst_drawn((0..draws.count(20, 60)).map(|_| {
         draws.next_case();
         let r = draws.decades(-2.0, 2.0);
-        let centre = draws.place_for(r, 2.0);
+        // Half of them with max_distance just past the sphere (1.5 times
+        // its far side's distance) and the sphere 30 to 100 radii from the
+        // world's origin: t, not the distance from the origin, is what
+        // max_distance limits.
+        let short = draws.unit() < 0.5;
+        let centre = match short {
+            true => draws.direction() * r * draws.decades(1.5, 2.0),
+            false => draws.place_for(r, 2.0),
+        };
         let from = draws.direction();
         let origin = centre + from * r * draws.range(1.5, 10.0);
         let towards = (centre + draws.in_cube() * r * 0.5 - origin).normalize();
@@ -259,7 +268,11 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
             let cos = ((o + d * t - c).normalize().dot(-d)).max(1e-3);
             (t, 2.0 * eps as f64 / cos)
         });
-        let got = f(&sdf, origin, dir, eps, 4096, 200.0 * r);
+        let max_distance = match short {
+            false => 200.0 * r,
+            true => 1.5 * ((origin - centre).length() + r),
+        };
+        let got = f(&sdf, origin, dir, eps, 4096, max_distance);
         let err = match (got, want) {
             (Some(g), Some((w, slack))) => ((g as f64 - w).abs() - slack).max(0.0) / r as f64,
             (None, None) => 0.0,
@@ -268,7 +281,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         (
             err,
             format!(
-                "a sphere of radius {r} at {centre}, ray from {origin} along {dir} (ε = {eps}):                  got {got:?}, expected {:?}",
+                "a sphere of radius {r} at {centre}, ray from {origin} along {dir} (ε = {eps}, max_distance = {max_distance}): got {got:?}, expected {:?}",
                 want.map(|w| w.0)
             ),
         )

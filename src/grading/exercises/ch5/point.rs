@@ -42,14 +42,16 @@ pub fn check_point_light(f: PointFn) -> Check {
         Ok(w) => w,
         Err(check) => return check,
     };
-    // Drawn lights and surfaces: distances from 10⁻³ to 10³, up to 10³
-    // times that from the origin, intensities over six decades, a fifth of
-    // them at grazing angles; E worked out in f64.
+    // Drawn lights and surfaces: distances from 10⁻³ to 10⁶ (the
+    // inverse-square law has no range), up to 10³ times that from the
+    // origin, intensities over six decades, a fifth of them at grazing
+    // angles (half of those 10^2.5 to 10^3.5 times the distance from the
+    // origin, where n · light and n · p round alike); E worked out in f64.
     let mut draws = Draws::new(52);
     let mut last_light: Option<(Vec3, f32)> = None;
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
-        let scale = draws.decades(-3.0, 3.0);
+        let scale = draws.decades(-3.0, 6.0);
         let mut p = draws.place_for(scale, 3.0);
         let mut way = draws.direction();
         let mut light = p + way * scale;
@@ -73,6 +75,10 @@ pub fn check_point_light(f: PointFn) -> Check {
             0 | 1 => {
                 let tilt = draws.sign() * draws.decades(-5.0, -3.0);
                 n = (way.any_orthonormal_vector() + way * tilt).normalize();
+                if draws.unit() < 0.5 {
+                    p = draws.direction() * scale * draws.decades(2.5, 3.5);
+                    light = p + way * scale;
+                }
             }
             // The same along an axis.
             2 => {

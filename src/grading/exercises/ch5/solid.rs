@@ -161,7 +161,7 @@ fn drawn(f: SolidFn) -> (f64, String) {
             };
             let inside = tri[0] + (tri[1] - tri[0]) * u + (tri[2] - tri[0]) * w;
             inside + n * d.sign() * s * d.decades(-3.0, -1.0)
-        } else if kind < 0.6 {
+        } else if kind < 0.45 {
             centre + d.direction() * s * d.decades(-0.5, 3.0)
         } else if kind < 0.8 {
             let lift = n * d.sign() * d.decades(-4.0, -1.0);

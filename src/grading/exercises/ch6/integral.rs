@@ -124,9 +124,13 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         let a = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
         let width = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
         let c = (draws.sign() * draws.decades(-8.0, 8.0)) as f64;
-        let u: Vec<f64> = (0..draws.count(1, 16))
+        let mut u: Vec<f64> = (0..draws.count(1, 16))
             .map(|_| draws.unit() as f64)
             .collect();
+        // A third of them with a number given twice: evaluated twice.
+        if draws.unit() < 1.0 / 3.0 {
+            u.push(u[draws.count(0, u.len() - 1)]);
+        }
         let b = a + width;
         // One evaluation per number, each in [a, b] (to rounding).
         let (calls, outside) = (Cell::new(0usize), Cell::new(None));
@@ -163,16 +167,20 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         )
     }));
     fold_drawn(&mut error, &mut detail, drawn);
-    // Uniform there when the number is: 1,024 evenly spaced numbers give
-    // evaluation points spread evenly over a drawn [a, b] (sorted, each
-    // within 2/1,024 of the width of its place on the even grid).
+    // Uniform there when the number is: 4,096 evenly spaced numbers (at a
+    // drawn offset from the grid's cells) give evaluation points spread
+    // evenly over a drawn [a, b] (sorted, each within 2/4,096 of the width
+    // of its place on the even grid), and all different (points snapped
+    // to a grid of their own are not uniform).
     let (a, width) = (
         (draws.sign() * draws.decades(-3.0, 3.0)) as f64,
         draws.decades(-3.0, 3.0) as f64,
     );
-    let m = 1024;
+    let m = 4096;
     let points = std::cell::RefCell::new(Vec::with_capacity(m));
-    let evenly: Vec<f64> = (0..m).map(|i| (i as f64 + 0.5) / m as f64).collect();
+    // Not half way: u and 1 - u never meet on the grid.
+    let phase = draws.range(0.05, 0.45) as f64 + 0.5 * draws.count(0, 1) as f64;
+    let evenly: Vec<f64> = (0..m).map(|i| (i as f64 + phase) / m as f64).collect();
     f(
         &|x| {
             points.borrow_mut().push(x);
@@ -195,13 +203,24 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
             ),
         false => f64::INFINITY,
     };
+    let repeated = points.windows(2).filter(|w| w[0] == w[1]).count();
     if off > 2.0 / m as f64 && error <= 1e-3 {
         (error, detail) = (
             1.0,
             format!(
-                "1,024 evenly spaced numbers on [{a}, {}] put f's points up to {off:.4} of the \
+                "4,096 evenly spaced numbers on [{a}, {}] put f's points up to {off:.4} of the \
                  width from an even spread: the points must be uniform on [a, b] when the numbers are",
                 a + width
+            ),
+        );
+    } else if repeated > 0 && error <= 1e-3 {
+        (error, detail) = (
+            1.0,
+            format!(
+                "4,096 different numbers on [{a}, {}] put f's points at only {} different places: \
+                 points snapped to a grid are not uniform on [a, b]",
+                a + width,
+                m - repeated
             ),
         );
     }

@@ -14,7 +14,8 @@
 //!    means nothing). Besides the mean, the scene's [`Tally`] checks that
 //!    every path ends (a path over [`BOUNCE_BUDGET`] bounces: no
 //!    roulette), that bounces leave on the lit side, that each surface
-//!    gets a light sample and each light sample its shadow ray.
+//!    gets a light sample and each light sample its shadow ray; the
+//!    furnace's variants ([`open`]) show what its mean cannot.
 //! 2. The Cornell box (`cornell-box.toml`, 32 × 32, 64 paths per pixel)
 //!    against the reference with other random numbers, 8 × 8-pixel blocks
 //!    within 5 standard errors (shadows and the light's cosines, which

@@ -24,6 +24,12 @@ pub(super) struct Furnace {
     /// answer does not change; one that counts emission twice loses the
     /// second count.
     pub hide_bounce_emission: bool,
+    /// A diagnostic: the share of the light sampler's numbers (u.x below
+    /// it) that find no sample (`None`, as a sampler choosing among
+    /// lights may choose none), the others' density carrying that share,
+    /// so the light samples are still unbiased. A loop that adds nothing
+    /// where there is no sample keeps its answer.
+    pub no_sample: f32,
 }
 
 impl Furnace {
@@ -64,6 +70,11 @@ impl Furnace {
     /// A point uniform by area on the sphere (pdf_A = 1/4π), as a
     /// direction from `at` with its solid-angle density d² / (cos θl 4π).
     pub fn sample_light(&self, at: &Hit, u: Vec2) -> Option<LightSample> {
+        if u.x < self.no_sample {
+            return None;
+        }
+        let found = 1.0 - self.no_sample;
+        let u = Vec2::new((u.x - self.no_sample) / found, u.y);
         let z = 1.0 - 2.0 * u.x;
         let r = (1.0 - z * z).max(0.0).sqrt();
         let phi = std::f32::consts::TAU * u.y;
@@ -79,7 +90,7 @@ impl Furnace {
         if cos_l.is_nan() || cos_l <= 0.0 {
             return None;
         }
-        let pdf = dist * dist / (cos_l * 4.0 * std::f32::consts::PI);
+        let pdf = found * dist * dist / (cos_l * 4.0 * std::f32::consts::PI);
         Some(LightSample {
             wi,
             li: self.le,

@@ -152,6 +152,7 @@ impl PathScene {
             albedo,
             le,
             hide_bounce_emission: false,
+            no_sample: 0.0,
         }))
     }
 
@@ -163,6 +164,20 @@ impl PathScene {
             albedo: Vec3::splat(albedo),
             le,
             hide_bounce_emission: true,
+            no_sample: 0.0,
+        }))
+    }
+
+    /// The furnace as a diagnostic: its light sampler finds no sample
+    /// (`None`) for an eighth of its numbers, and the others' density
+    /// carries that eighth (a loop that adds nothing where there is no
+    /// sample gives the same answer as in [`PathScene::furnace`]).
+    pub fn furnace_with_missing_light_samples(albedo: f32, le: Vec3) -> PathScene {
+        PathScene::of(Inner::Furnace(Furnace {
+            albedo: Vec3::splat(albedo),
+            le,
+            hide_bounce_emission: false,
+            no_sample: 0.125,
         }))
     }
 
@@ -253,8 +268,9 @@ impl PathScene {
     }
 
     /// A point on the light drawn from the two numbers `u` (in [0, 1)),
-    /// as a direction from `at` with its solid-angle density; `None` when
-    /// the light cannot be seen from that side.
+    /// as a direction from `at` with its solid-angle density; `None`: no
+    /// sample (the light cannot be seen from that side, or, in one of the
+    /// check's furnaces, the sampler found none).
     pub fn sample_light(&self, at: &Hit, u: Vec2) -> Option<LightSample> {
         count(|t| t.light_samples += 1);
         let s = match &self.inner {
