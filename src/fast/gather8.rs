@@ -12,7 +12,6 @@ use crate::ch6_global_illumination::sampler::PathSampler;
 use super::lanes::W;
 use super::level::Level;
 use super::shade8::{dim, In8};
-use super::starts::sobol_lanes;
 
 /// One path under way.
 pub(super) struct Lane {
@@ -143,4 +142,22 @@ pub(super) fn gather(
         x.two_sided[j] = light.two_sided;
     }
     lesson_light
+}
+
+/// The sample indices and pixel scrambles of eight samplers (`sampler(j)`
+/// for lane j), when all of them draw Sobol points from the tables: what
+/// [`sobol_groups8_at`](super::simd::sobol_groups8_at) needs to draw for them.
+pub(super) fn sobol_lanes<'a>(
+    sampler: impl Fn(usize) -> &'a PathSampler,
+) -> Option<([u32; W], [u64; W])> {
+    let (mut sample, mut scramble) = ([0; W], [0; W]);
+    let mut all = true;
+    for j in 0..W {
+        let s = sampler(j);
+        match s.sobol_index() {
+            Some(i) => (sample[j], scramble[j]) = (i, s.pixel_scramble()),
+            None => all = false,
+        }
+    }
+    all.then_some((sample, scramble))
 }

@@ -8,7 +8,7 @@ use crate::ch3_ray_triangle::render::camera_sample;
 use crate::ch6_global_illumination::integrator::Path;
 use crate::ch6_global_illumination::sampler::{PathSampler, SamplerKind};
 
-use super::gather8::Lane;
+use super::gather8::{sobol_lanes, Lane};
 use super::lanes::W;
 use super::level::Level;
 
@@ -135,22 +135,4 @@ pub fn rays8(camera: &Camera, raster_x: &[f32; W], raster_y: &[f32; W]) -> [Ray;
         origin,
         dir: Vec3::new(d[0][j] * r[j], d[1][j] * r[j], d[2][j] * r[j]),
     })
-}
-
-/// The sample indices and pixel scrambles of eight samplers (`sampler(j)`
-/// for lane j), when all of them draw Sobol points from the tables: what
-/// [`sobol_groups8_at`](super::simd::sobol_groups8_at) needs to draw for them.
-pub(super) fn sobol_lanes<'a>(
-    sampler: impl Fn(usize) -> &'a PathSampler,
-) -> Option<([u32; W], [u64; W])> {
-    let (mut sample, mut scramble) = ([0; W], [0; W]);
-    let mut all = true;
-    for j in 0..W {
-        let s = sampler(j);
-        match s.sobol_index() {
-            Some(i) => (sample[j], scramble[j]) = (i, s.pixel_scramble()),
-            None => all = false,
-        }
-    }
-    all.then_some((sample, scramble))
 }

@@ -41,18 +41,18 @@ pub fn check_area_pdf(f: AreaPdfFn) -> Check {
         Err(check) => return check,
     };
     // Drawn points and lights: distances from 10⁻⁵ to 10³ (a tenth from
-    // 10⁻¹⁵ to 10⁻⁵ and a tenth from 10³ to 10¹², where d³ or cos/d³ leaves
-    // f32's range though the density does not), up to 10³ times that from
-    // the origin (grazing ones up to 10^3.5), either face, pdfs over six
-    // decades, lights seen exactly edge-on, and lights seen at grazing
+    // 10⁻¹¹ to 10⁻⁵ and a tenth from 10³ to 10¹¹: as far as pdf · d³, the
+    // other right way round, stays in f32's range), up to 10³ times that
+    // from the origin (grazing ones up to 10^3.5), either face, pdfs over
+    // six decades, lights seen exactly edge-on, and lights seen at grazing
     // angles.
     let mut draws = Draws::new(53);
     let mut last: Option<(Vec3, Vec3, f32)> = None;
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
         let scale = match draws.unit() {
-            u if u < 0.1 => draws.decades(-15.0, -5.0),
-            u if u < 0.2 => draws.decades(3.0, 12.0),
+            u if u < 0.1 => draws.decades(-11.0, -5.0),
+            u if u < 0.2 => draws.decades(3.0, 11.0),
             _ => draws.decades(-5.0, 3.0),
         };
         let mut x = draws.place_for(scale, 3.0);
