@@ -190,11 +190,13 @@ fn drawn_path(draws: &mut Draws) -> Vec<Gathered> {
     let mut add = |draws: &mut Draws, vertex, how| {
         let value = drawn_value(draws);
         // Now and then a weight that is not finite (0/0 in a pdf): the
-        // product is what must be finite.
+        // product is what must be finite. And some tiny (10⁻⁸ to 10⁻⁴),
+        // which still count.
         let weight = match draws.count(0, 60) {
             0 => [f32::NAN, f32::INFINITY][draws.count(0, 1)],
             1..=6 => 0.0,
             7..=24 => 1.0,
+            25..=28 => draws.decades(-8.0, -4.0),
             _ => draws.unit(),
         };
         path.push(Gathered {

@@ -297,3 +297,25 @@ fn path_radiance_roulette_from_one_channel_fails() {
         });
     }
 }
+
+/// Right: each point shifted by its number's place in `u` (a Weyl
+/// sequence), which leaves it uniform when the number is.
+fn integral_shifted_by_place(f: &dyn Fn(f64) -> f64, a: f64, b: f64, u: &[f64]) -> f64 {
+    if u.is_empty() {
+        return 0.0;
+    }
+    let golden = 0.618_033_988_749_894_9;
+    let sum: f64 = u
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| f(a + (v + i as f64 * golden).fract() * (b - a)))
+        .sum();
+    (b - a) * sum / u.len() as f64
+}
+
+#[test]
+fn a_point_shifted_by_its_place_passes() {
+    super::passes_every(&SEEDS, "points shifted by their place", || {
+        ch6::check_mc_integral(integral_shifted_by_place)
+    });
+}

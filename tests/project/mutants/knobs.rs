@@ -364,6 +364,8 @@ pub struct BvhKnobs {
     pub leaf_cap: Option<u32>,
     /// A direction's zero components made f32::EPSILON before 1/d.
     pub nudge_zero_dir: bool,
+    /// 1/d from the bit trick and one Newton step (about 2.6·10⁻³ off).
+    pub approx_recip: bool,
 }
 
 impl Default for BvhKnobs {
@@ -373,6 +375,7 @@ impl Default for BvhKnobs {
             improve_by: 0.0,
             leaf_cap: None,
             nudge_zero_dir: false,
+            approx_recip: false,
         }
     }
 }
@@ -437,7 +440,14 @@ pub fn closest_hit(k: BvhKnobs, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Opt
         ),
         false => ray.dir,
     };
-    let inv = dir.recip();
+    let approx = |x: f32| {
+        let r = f32::from_bits(0x7EF3_11C7u32.wrapping_sub(x.abs().to_bits()));
+        (r * (2.0 - x.abs() * r)).copysign(x)
+    };
+    let inv = match k.approx_recip {
+        true => Vec3::new(approx(dir.x), approx(dir.y), approx(dir.z)),
+        false => dir.recip(),
+    };
     let t_root = bvh.nodes.first()?.bounds.enter(ray, inv, t_max)?;
     let mut best = (t_max, None);
     visit(k, (bvh, ray, inv), 0, t_root, &mut best);

@@ -248,26 +248,8 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
             });
         }
     }
-    let (lo, hi) = geometry
-        .triangles
-        .tris
-        .iter()
-        .flatten()
-        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| {
-            (lo.min(*p), hi.max(*p))
-        });
-    for i in 0..2000u64 {
-        let r = |d| random(34 ^ crate::run_seed(), i, 0, d);
-        let origin = lo + (hi - lo) * Vec3::new(r(0), r(1), r(2));
-        let Ok(ray) = Ray::new(origin, Vec3::new(r(3), r(4), r(5)) * 2.0 - 1.0) else {
-            continue;
-        };
-        compare(&bvh, &ray, f32::INFINITY, &|| {
-            format!(
-                "a ray inside the Cornell box from {origin} along {}",
-                ray.dir
-            )
-        });
+    for (ray, what) in super::bvh_cases::cornell_inside_rays(&geometry.triangles.tris) {
+        compare(&bvh, &ray, f32::INFINITY, &|| what.clone());
     }
     // A ray along -z, 10⁻⁶ inside the side x = 10 of a flat triangle's box
     // (its direction's x exactly 0, where 1/d is infinite), from 1,000

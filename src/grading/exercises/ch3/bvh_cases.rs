@@ -1,9 +1,11 @@
 //! Exercise 3.4's hand-built trees and rays: a shuffled stack of
-//! triangles, and one flat triangle (a box of no thickness).
+//! triangles, one flat triangle (a box of no thickness), and rays from
+//! inside the Cornell box.
 
 use glam::Vec3;
 
 use crate::ch3_ray_triangle::ray::Ray;
+use crate::core::sampling::random;
 use crate::counted::ReadableBvh;
 use crate::exercises::draws::Draws;
 
@@ -102,4 +104,48 @@ pub(super) fn flat_triangle() -> (ReadableBvh, Vec<(Ray, String)>) {
         })
         .collect();
     (ReadableBvh::build(&[flat]), rays)
+}
+
+/// Rays from inside the Cornell box (`tris`), new for every grading run:
+/// 2,000 along drawn directions, and 2,000 aimed at points 10⁻⁵ to 10⁻³
+/// of an edge's length inside a triangle's edge, where a wall's box has
+/// its side (a slab test a hair off, an approximate 1/d, loses those
+/// hits).
+pub(super) fn cornell_inside_rays(tris: &[[Vec3; 3]]) -> Vec<(Ray, String)> {
+    let (lo, hi) = tris
+        .iter()
+        .flatten()
+        .fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(lo, hi), p| {
+            (lo.min(*p), hi.max(*p))
+        });
+    let mut rays = Vec::new();
+    for i in 0..2000u64 {
+        let r = |d| random(34 ^ crate::run_seed(), i, 0, d);
+        let origin = lo + (hi - lo) * Vec3::new(r(0), r(1), r(2));
+        if let Ok(ray) = Ray::new(origin, Vec3::new(r(3), r(4), r(5)) * 2.0 - 1.0) {
+            let what = format!(
+                "a ray inside the Cornell box from {origin} along {}",
+                ray.dir
+            );
+            rays.push((ray, what));
+        }
+    }
+    for i in 0..2000u64 {
+        let r = |d| random(35 ^ crate::run_seed(), i, 0, d);
+        let origin = lo + (hi - lo) * Vec3::new(r(0), r(1), r(2));
+        let tri = tris[((r(3) * tris.len() as f32) as usize).min(tris.len() - 1)];
+        let k = ((r(4) * 3.0) as usize).min(2);
+        let (a, b, c) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);
+        let inward = 10f32.powf(-5.0 + 2.0 * r(5));
+        let at = a + (b - a) * r(6) + (c - a) * inward * 0.5;
+        if let Ok(ray) = Ray::new(origin, at - origin) {
+            let what = format!(
+                "a ray inside the Cornell box from {origin} along {}, aimed just inside a \
+                 triangle's edge",
+                ray.dir
+            );
+            rays.push((ray, what));
+        }
+    }
+    rays
 }

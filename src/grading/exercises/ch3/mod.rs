@@ -10,6 +10,7 @@ mod bvh_symptoms;
 mod ray_plane;
 pub mod sah;
 mod triangle_checks;
+mod triangle_edges;
 pub use bvh::*;
 pub use ray_plane::check_ray_plane;
 pub use sah::{check_sah, SahFn};

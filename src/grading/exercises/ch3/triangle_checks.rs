@@ -397,6 +397,7 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
             }
         }
     }
+    cases.extend(super::triangle_edges::near_edges(&mut draws));
     check(
         cases.into_iter().map(|(o, d, t, want)| {
             let got = f(o, d, t);

@@ -223,6 +223,13 @@ pub fn cases() -> Vec<Case> {
             budget(14),
         ),
         case(
+            "the same wall from half as high, a budget of exactly the 13 evaluations needed (an odd budget)",
+            Clause::Budget,
+            half_wall,
+            down(0.5),
+            budget(13),
+        ),
+        case(
             "the same wall 150 m below, max_distance = 100",
             Clause::MaxDistance,
             half_wall,

@@ -219,7 +219,8 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
 /// Statistical: every sample is a unit direction with z ≥ 0 whose pdf is
 /// z/π; over 40,000 samples, E(z) = 2/3, E(x) = E(y) = 0, P(z < 1/2)
 /// = 1/4 (for cos θ/π, P(cos θ < c) = c²), and the azimuth uniform (its
-/// first harmonics average to 0). The error is the worst
+/// first harmonics average to 0), and a grid of u spread evenly over
+/// the hemisphere ([`grid_spread`]). The error is the worst
 /// deviation in standard errors (5 passes), or a large number when a
 /// sample is not even a direction on the hemisphere.
 pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
@@ -316,6 +317,9 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
             };
         }
     }
+    if let Some(check) = grid_spread(f) {
+        return check;
+    }
     let (mut sx, mut sy, mut sz, mut low) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     let mut ring = [0.0f64; 4];
     for i in 0..n {
@@ -368,6 +372,49 @@ pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
         images: None,
         symptom: (error > 5.0).then_some(NOT_COSINE),
     }
+}
+
+/// The density over the whole hemisphere, not only its moments: under
+/// cos θ / π both z² and the azimuth / 2π are uniform on [0, 1], so the
+/// directions of a 256 × 256 grid of u (each cell's centre) must put them
+/// within 0.02 of an even spread (the largest gap between the share below
+/// t and t). A right map is within 0.008 (the concentric map's grid; the
+/// polar one 0.002); a radius a few percent off, or an angle bent, is
+/// not.
+fn grid_spread(f: CosineFn) -> Option<Check> {
+    let n = 256;
+    let (mut z2, mut azimuth) = (Vec::with_capacity(n * n), Vec::with_capacity(n * n));
+    for i in 0..n {
+        for j in 0..n {
+            let u = Vec2::new((i as f32 + 0.5) / n as f32, (j as f32 + 0.5) / n as f32);
+            let w = f(u).0.as_dvec3();
+            z2.push(w.z * w.z);
+            azimuth.push((w.y.atan2(w.x) / std::f64::consts::TAU).rem_euclid(1.0));
+        }
+    }
+    let gap = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        let m = v.len() as f64;
+        v.iter().enumerate().fold(0.0f64, |g, (k, &x)| {
+            let below = (k as f64 / m - x).abs().max(((k + 1) as f64 / m - x).abs());
+            if below.is_nan() {
+                f64::INFINITY
+            } else {
+                g.max(below)
+            }
+        })
+    };
+    let (gz, ga) = (gap(z2), gap(azimuth));
+    (gz > 0.02 || ga > 0.02).then(|| Check {
+        error: 1e9,
+        tolerance: 5.0,
+        detail: format!(
+            "a 256 × 256 grid of u: z² is up to {gz:.3} and the azimuth up to {ga:.3} from an \
+             even spread on [0, 1] (under cos θ / π both are uniform; at most 0.02)"
+        ),
+        images: None,
+        symptom: Some(NOT_COSINE),
+    })
 }
 
 /// What a failing Lambertian BRDF got wrong, from two probes.

@@ -168,10 +168,12 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     }));
     fold_drawn(&mut error, &mut detail, drawn);
     // Uniform there when the number is: 4,096 evenly spaced numbers (at a
-    // drawn offset from the grid's cells) give evaluation points spread
-    // evenly over a drawn [a, b] (sorted, each within 2/4,096 of the width
-    // of its place on the even grid), and all different (points snapped
-    // to a grid of their own are not uniform).
+    // drawn offset from the grid's cells), each alone in its call (a
+    // point may depend on the number's place in `u` too, as long as it is
+    // uniform), give evaluation points spread evenly over a drawn [a, b]
+    // (sorted, each within 2/4,096 of the width of its place on the even
+    // grid), and all different (points snapped to a grid of their own are
+    // not uniform).
     let (a, width) = (
         (draws.sign() * draws.decades(-3.0, 3.0)) as f64,
         draws.decades(-3.0, 3.0) as f64,
@@ -181,15 +183,17 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     // Not half way: u and 1 - u never meet on the grid.
     let phase = draws.range(0.05, 0.45) as f64 + 0.5 * draws.count(0, 1) as f64;
     let evenly: Vec<f64> = (0..m).map(|i| (i as f64 + phase) / m as f64).collect();
-    f(
-        &|x| {
-            points.borrow_mut().push(x);
-            1.0
-        },
-        a,
-        a + width,
-        &evenly,
-    );
+    for u in &evenly {
+        f(
+            &|x| {
+                points.borrow_mut().push(x);
+                1.0
+            },
+            a,
+            a + width,
+            std::slice::from_ref(u),
+        );
+    }
     let mut points = points.into_inner();
     points.sort_by(f64::total_cmp);
     let off = match points.len() == m {
@@ -208,7 +212,7 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         (error, detail) = (
             1.0,
             format!(
-                "4,096 evenly spaced numbers on [{a}, {}] put f's points up to {off:.4} of the \
+                "4,096 evenly spaced numbers, one per call, on [{a}, {}] put f's points up to {off:.4} of the \
                  width from an even spread: the points must be uniform on [a, b] when the numbers are",
                 a + width
             ),
@@ -217,7 +221,7 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         (error, detail) = (
             1.0,
             format!(
-                "4,096 different numbers on [{a}, {}] put f's points at only {} different places: \
+                "4,096 different numbers, one per call, on [{a}, {}] put f's points at only {} different places: \
                  points snapped to a grid are not uniform on [a, b]",
                 a + width,
                 m - repeated
