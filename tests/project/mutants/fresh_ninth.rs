@@ -20,7 +20,7 @@ use raystep::grading::exercises::refraction::check_refraction;
 use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6, paths};
 
 use super::fails_every;
-use super::knobs::{self, Knobs, PathKnobs, Survival};
+use super::knobs::{self, InsideKnobs, Knobs, LookKnobs, MarchKnobs, PathKnobs, Survival};
 
 /// The seeds every mutant must fail under.
 const SEEDS: [u64; 4] = [71, 72, 93, 0x2026_1129];
@@ -35,22 +35,12 @@ fn fails(what: &str, check: impl Fn() -> Check) {
 /// `up` itself as the picture's y when it is within 10⁻³ of
 /// perpendicular to the view.
 fn look_at_perpendicular_shortcut(eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {
-    let z = (eye - target).normalize();
-    let u = up.normalize();
-    let (x, y) = if u.dot(z).abs() < 1e-3 {
-        (u.cross(z), u)
-    } else {
-        let x = u.cross(z).normalize();
-        (x, z.cross(x))
-    };
-    let rotation = Mat4::from_cols(
-        x.extend(0.0),
-        y.extend(0.0),
-        z.extend(0.0),
-        Vec3::ZERO.extend(1.0),
+    knobs::look_at(
+        LookKnobs::with(|k| k.up_as_y_within = Some(1e-3)),
+        eye,
+        target,
+        up,
     )
-    .transpose();
-    rotation * Mat4::from_translation(-eye)
 }
 
 thread_local! {
@@ -87,45 +77,7 @@ fn depth_max_sentinel(depth: &mut [f32], index: usize, z: f32) -> bool {
 
 /// A corner's (u, v) returned at once, before the test for no area.
 fn inside_corner_first(p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)> {
-    for (k, uv) in [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)].into_iter().enumerate() {
-        if p == tri[k] {
-            return Some(uv);
-        }
-    }
-    let (e1, e2, q) = (tri[1] - tri[0], tri[2] - tri[0], p - tri[0]);
-    let n = e1.cross(e2);
-    let nn = n.dot(n);
-    if nn == 0.0 {
-        return None;
-    }
-    let u = n.dot(q.cross(e2)) / nn;
-    let v = n.dot(e1.cross(q)) / nn;
-    (u >= 0.0 && v >= 0.0 && u + v <= 1.0).then_some((u, v))
-}
-
-/// Gives up when the point is farther than max_distance from the world's
-/// origin, not when t is.
-fn trace_point_length(
-    sdf: &dyn Fn(Vec3) -> f32,
-    origin: Vec3,
-    dir: Vec3,
-    epsilon: f32,
-    max_steps: u32,
-    max_distance: f32,
-) -> Option<f32> {
-    let mut t = 0.0f32;
-    for _ in 0..max_steps {
-        let p = origin + dir * t;
-        let d = sdf(p);
-        if d.abs() < epsilon {
-            return Some(t);
-        }
-        if p.length() > max_distance {
-            return None;
-        }
-        t += d;
-    }
-    None
+    knobs::inside(InsideKnobs::with(|k| k.corners_first = true), p, tri)
 }
 
 #[test]
@@ -143,8 +95,13 @@ fn geometry_mistakes_fail() {
     fails("a corner answered before the area test", || {
         ch3::check_barycentric_inside(inside_corner_first)
     });
+    // Gives up when the point is farther than max_distance from the
+    // world's origin, not when t is.
     fails("max_distance from the world's origin", || {
-        ch4::check_sphere_trace(trace_point_length)
+        ch4::check_sphere_trace(|sdf, o, d, eps, steps, max| {
+            let k = MarchKnobs::with(|k| k.max_from_origin = true);
+            knobs::sphere_trace(k, sdf, (o, d), eps, steps, max)
+        })
     });
 }
 

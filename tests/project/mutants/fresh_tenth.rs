@@ -13,16 +13,14 @@
 use glam::{Vec2, Vec3};
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch4_implicit_surfaces::march::March;
-use raystep::ch6_global_illumination::layers::{
-    LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND, SLOT_EMITTED,
-};
+use raystep::ch6_global_illumination::layers::LAYER_SLOTS;
 use raystep::grading::counted::{Hit, ReadableBvh};
 use raystep::grading::exercise::Check;
-use raystep::grading::exercises::bounce_layers::{check_bounce_layers, Gathered, How};
+use raystep::grading::exercises::bounce_layers::{check_bounce_layers, Gathered};
 use raystep::grading::exercises::{ch3, ch4, ch5};
 
 use super::fails_every;
-use super::knobs::{self, BvhKnobs, Knobs};
+use super::knobs::{self, BvhKnobs, DirectKnobs, Knobs, LayersKnobs, MarchKnobs, SceneKnobs};
 
 /// The seeds every mutant must fail under.
 const SEEDS: [u64; 4] = [81, 82, 97, 0x2026_1129];
@@ -41,36 +39,17 @@ fn cosine_bit_sqrt(u: Vec2) -> (Vec3, f32) {
     (Vec3::new(x, y, z), z * std::f32::consts::FRAC_1_PI)
 }
 
-/// 10⁻⁶ added to cos θl "against division by 0".
-#[allow(clippy::too_many_arguments)]
-fn direct_cos_epsilon(
-    p: Vec3,
-    n: Vec3,
-    rho: Vec3,
-    y: Vec3,
-    n_light: Vec3,
-    area: f32,
-    le: Vec3,
-    visible: &dyn Fn(Vec3, Vec3) -> bool,
-) -> Vec3 {
-    let to = y - p;
-    let d2 = to.length_squared();
-    let wi = to / d2.sqrt();
-    let (cos, cos_light) = (n.dot(wi), n_light.dot(-wi));
-    if cos <= 0.0 || cos_light <= 0.0 || !visible(p, y) {
-        return Vec3::ZERO;
-    }
-    let pdf = d2 / ((cos_light + 1e-6) * area);
-    rho * std::f32::consts::FRAC_1_PI * le * cos / pdf
-}
-
 #[test]
 fn light_mistakes_fail() {
     fails("a bit-trick √u.x", || {
         ch5::check_cosine_hemisphere(cosine_bit_sqrt)
     });
+    // 10⁻⁶ added to cos θl "against division by 0".
     fails("10⁻⁶ added to cos θl", || {
-        ch5::check_direct_light(direct_cos_epsilon)
+        ch5::check_direct_light(|p, n, rho, y, nl, a, le, v| {
+            let k = DirectKnobs::with(|k| k.cos_light_plus = 1e-6);
+            knobs::direct(k, (p, n, rho), (y, nl, a, le), v)
+        })
     });
 }
 
@@ -94,32 +73,6 @@ fn bvh_approximate_recip(bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Option<Hit
     knobs::closest_hit(BvhKnobs::with(|k| k.approx_recip = true), bvh, ray, t_max)
 }
 
-/// Two evaluations a turn for max_steps / 2 turns: an odd budget loses its
-/// last evaluation.
-fn trace_unrolled(
-    sdf: &dyn Fn(Vec3) -> f32,
-    origin: Vec3,
-    dir: Vec3,
-    epsilon: f32,
-    max_steps: u32,
-    max_distance: f32,
-) -> Option<f32> {
-    let mut t = 0.0f32;
-    for _ in 0..max_steps / 2 {
-        for _ in 0..2 {
-            let d = sdf(origin + t * dir);
-            if d.abs() < epsilon {
-                return Some(t);
-            }
-            if t > max_distance {
-                return None;
-            }
-            t += d;
-        }
-    }
-    None
-}
-
 /// The capstone's march unrolled the same way.
 fn scene_unrolled(
     sdf: &dyn Fn(Vec3) -> f32,
@@ -127,28 +80,13 @@ fn scene_unrolled(
     dir: Vec3,
     march: &March,
 ) -> Option<(f32, Vec3)> {
-    let mut t = 0.0;
-    let mut hit = None;
-    'march: for _ in 0..march.max_steps / 2 {
-        for _ in 0..2 {
-            let p = origin + t * dir;
-            let f = sdf(p);
-            if f.abs() < march.epsilon_at(p) {
-                hit = Some(p);
-                break 'march;
-            }
-            if t > march.max_distance {
-                return None;
-            }
-            t += f;
-        }
-    }
-    let p = hit?;
-    let h = march.epsilon_at(p).max(1e-4);
-    let partial = |axis: Vec3| (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h);
-    let gradient = Vec3::new(partial(Vec3::X), partial(Vec3::Y), partial(Vec3::Z));
-    let n = gradient.try_normalize().unwrap_or(-dir);
-    Some((t, if n.dot(dir) > 0.0 { -n } else { n }))
+    knobs::trace_scene(
+        SceneKnobs::with(|k| k.unrolled = true),
+        sdf,
+        origin,
+        dir,
+        march,
+    )
 }
 
 #[test]
@@ -159,8 +97,13 @@ fn geometry_mistakes_fail() {
     fails("an approximate 1/d in the slab test", || {
         ch3::check_bvh_traversal(bvh_approximate_recip)
     });
+    // Two evaluations a turn for max_steps / 2 turns: an odd budget loses
+    // its last evaluation.
     fails("sphere tracing unrolled by two", || {
-        ch4::check_sphere_trace(trace_unrolled)
+        ch4::check_sphere_trace(|sdf, o, d, eps, steps, max| {
+            let k = MarchKnobs::with(|k| k.unrolled = true);
+            knobs::sphere_trace(k, sdf, (o, d), eps, steps, max)
+        })
     });
     fails("the capstone's march unrolled by two", || {
         ch4::check_trace_scene(scene_unrolled)
@@ -169,24 +112,10 @@ fn geometry_mistakes_fail() {
 
 /// Contributions whose MIS weight is under 10⁻⁴ skipped.
 fn layers_skip_small_weights(path: &[Gathered]) -> [Vec3; LAYER_SLOTS] {
-    let mut layers = [Vec3::ZERO; LAYER_SLOTS];
-    for g in path {
-        let k = match g.how {
-            How::Found if g.vertex == 0 => None,
-            How::Found => Some(g.vertex - 1),
-            How::LightSample => Some(g.vertex),
-        };
-        let slot = match k {
-            None => SLOT_EMITTED,
-            Some(k) if k <= LAYERS_SHOWN => k as usize + 1,
-            Some(_) => SLOT_BEYOND,
-        };
-        let c = g.value * g.weight;
-        if g.weight >= 1e-4 && c.is_finite() {
-            layers[slot] += c;
-        }
-    }
-    layers
+    knobs::layers(
+        LayersKnobs::with(|k| k.skip_weight_below = Some(1e-4)),
+        path,
+    )
 }
 
 #[test]

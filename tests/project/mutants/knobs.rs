@@ -13,7 +13,11 @@ use glam::{Mat4, Vec2, Vec3};
 use raystep::ch1_projection::camera::Camera;
 use raystep::ch3_ray_triangle::ray::Ray;
 use raystep::ch4_implicit_surfaces::march::March;
+use raystep::ch6_global_illumination::layers::{
+    LAYERS_SHOWN, LAYER_SLOTS, SLOT_BEYOND, SLOT_EMITTED,
+};
 use raystep::grading::counted::{intersect_watertight, Hit, NodeKind, ReadableBvh};
+use raystep::grading::exercises::bounce_layers::{check_bounce_layers, Gathered, How};
 use raystep::grading::exercises::paths::{self, PathScene};
 use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5};
 
@@ -41,6 +45,7 @@ impl Knobs for MarchKnobs {}
 impl Knobs for SceneKnobs {}
 impl Knobs for DirectKnobs {}
 impl Knobs for PathKnobs {}
+impl Knobs for LayersKnobs {}
 
 // ---- 1.2 look_at ----------------------------------------------------------------
 
@@ -51,6 +56,9 @@ pub struct LookKnobs {
     pub axis_near_parallel: bool,
     /// z normalised as v / (|v| + this).
     pub soft_normalise: Option<f32>,
+    /// `up` itself (normalised) as y, and up × z as x, where |up · z| is
+    /// under this.
+    pub up_as_y_within: Option<f32>,
 }
 
 /// The solution of look_at, departing as `k` says.
@@ -63,8 +71,14 @@ pub fn look_at(k: LookKnobs, eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {
     if k.axis_near_parallel && up.normalize().dot(z).abs() > 0.99 {
         up = if z.y.abs() < 0.9 { Vec3::Y } else { Vec3::X };
     }
-    let x = up.cross(z).normalize();
-    let y = z.cross(x);
+    let u = up.normalize();
+    let (x, y) = match k.up_as_y_within {
+        Some(w) if u.dot(z).abs() < w => (u.cross(z), u),
+        _ => {
+            let x = up.cross(z).normalize();
+            (x, z.cross(x))
+        }
+    };
     let rotation = Mat4::from_cols(
         x.extend(0.0),
         y.extend(0.0),
@@ -253,10 +267,18 @@ pub struct InsideKnobs {
     pub sign_bits: bool,
     /// The cross products from absolute positions, p × e2 − p0 × e2.
     pub absolute: bool,
+    /// A corner's (u, v) returned before the test for no area.
+    pub corners_first: bool,
 }
 
 /// The solution of barycentric_inside, departing as `k` says.
 pub fn inside(k: InsideKnobs, p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)> {
+    if k.corners_first {
+        let corner = (0..3).find(|&c| p == tri[c]);
+        if let Some(c) = corner {
+            return Some([(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)][c]);
+        }
+    }
     let (e1, e2, q) = (tri[1] - tri[0], tri[2] - tri[0], p - tri[0]);
     let n = e1.cross(e2);
     let nn = n.dot(n);
@@ -609,6 +631,10 @@ pub struct MarchKnobs {
     /// The evaluation at t = 0 not tested for a hit (the first step is
     /// taken whatever it says).
     pub first_untested: bool,
+    /// Gives up where |o + t d|, not t, is past max_distance.
+    pub max_from_origin: bool,
+    /// Unrolled by two: an odd budget loses its last evaluation.
+    pub unrolled: bool,
 }
 
 /// The solution of sphere_trace, departing as `k` says.
@@ -623,14 +649,23 @@ pub fn sphere_trace(
     // t holds an f32's value unless k.t_f64: each step is then the
     // solution's f32 sum.
     let mut t = 0.0f64;
-    for step in 0..max_steps {
+    let steps = if k.unrolled {
+        max_steps / 2 * 2
+    } else {
+        max_steps
+    };
+    for step in 0..steps {
         let tf = t as f32;
         let d = sdf(origin + tf * dir);
         let tested = !(k.first_untested && step == 0);
         if tested && (if k.signed_hit { d } else { d.abs() }) < epsilon {
             return Some(tf);
         }
-        if tf > max_distance {
+        let gone = match k.max_from_origin {
+            true => (origin + tf * dir).length(),
+            false => tf,
+        };
+        if gone > max_distance {
             return None;
         }
         t = if k.t_f64 {
@@ -685,6 +720,8 @@ pub struct SceneKnobs {
     /// -dir also where the gradient is shorter than this (the solution:
     /// only where it is zero).
     pub fallback_below: Option<f32>,
+    /// Unrolled by two: an odd budget loses its last evaluation.
+    pub unrolled: bool,
 }
 
 impl Default for SceneKnobs {
@@ -696,6 +733,7 @@ impl Default for SceneKnobs {
             fallback_along: false,
             flip_above: 0.0,
             fallback_below: None,
+            unrolled: false,
         }
     }
 }
@@ -720,7 +758,11 @@ pub fn trace_scene(
         if f.abs() < eps {
             break p;
         }
-        if t > march.max_distance || evaluations >= march.max_steps {
+        let budget = match k.unrolled {
+            true => march.max_steps / 2 * 2,
+            false => march.max_steps,
+        };
+        if t > march.max_distance || evaluations >= budget {
             return None;
         }
         t += f;
@@ -758,6 +800,8 @@ pub struct DirectKnobs {
     pub cull_below: Option<f32>,
     /// The estimate clamped to this per channel.
     pub clamp: Option<f32>,
+    /// Added to cos θl in the pdf "against division by 0".
+    pub cos_light_plus: f32,
 }
 
 /// The solution of direct_light, departing as `k` says (the surface
@@ -780,13 +824,45 @@ pub fn direct(
         return Vec3::ZERO;
     }
     let f = rho / PI;
-    let pdf = d2 / (cos_light * area);
+    let pdf = d2 / ((cos_light + k.cos_light_plus) * area);
     let estimate = f * le * cos / pdf;
     if k.cull_below.is_some_and(|c| estimate.max_element() < c) || !visible(p, y) {
         return Vec3::ZERO;
     }
     k.clamp
         .map_or(estimate, |most| estimate.min(Vec3::splat(most)))
+}
+
+// ---- 6.6 bounce_layers ----------------------------------------------------------
+
+/// How a path's layers depart from the solution of bounce_layers.
+#[derive(Clone, Copy, Default)]
+pub struct LayersKnobs {
+    /// Contributions whose MIS weight is under this skipped.
+    pub skip_weight_below: Option<f32>,
+}
+
+/// The solution of bounce_layers, departing as `k` says.
+pub fn layers(k: LayersKnobs, path: &[Gathered]) -> [Vec3; LAYER_SLOTS] {
+    let mut slots = [Vec3::ZERO; LAYER_SLOTS];
+    for g in path {
+        let k_bounce = match g.how {
+            How::Found if g.vertex == 0 => None,
+            How::Found => Some(g.vertex - 1),
+            How::LightSample => Some(g.vertex),
+        };
+        let slot = match k_bounce {
+            None => SLOT_EMITTED,
+            Some(b) if b <= LAYERS_SHOWN => b as usize + 1,
+            Some(_) => SLOT_BEYOND,
+        };
+        let c = g.value * g.weight;
+        let skipped = k.skip_weight_below.is_some_and(|w| g.weight < w);
+        if c.is_finite() && !skipped {
+            slots[slot] += c;
+        }
+    }
+    slots
 }
 
 // ---- 6.4 path_radiance ----------------------------------------------------------
@@ -1031,5 +1107,12 @@ fn trace_scene_defaults_pass() {
 fn path_defaults_pass() {
     passes_every(&SEEDS[..2], "path_radiance's defaults", || {
         paths::check_path_radiance(|s, o, d, rng| path(PathKnobs::default(), s, o, d, rng))
+    });
+}
+
+#[test]
+fn layers_defaults_pass() {
+    passes_every(&SEEDS, "bounce_layers' defaults", || {
+        check_bounce_layers(|path| layers(LayersKnobs::default(), path))
     });
 }
