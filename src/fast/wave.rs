@@ -13,7 +13,7 @@
 //!
 //! A round's paths all sit at the same bounce, so they draw the same
 //! dimensions of their sampler: eight numbers per path per round
-//! ([`PathSampler::eight_at`]), the very numbers
+//! ([`PathSampler::eight_at`](crate::ch6_global_illumination::sampler::PathSampler::eight_at)), the very numbers
 //! [`trace_path`](crate::ch6_global_illumination::integrator::trace_path)
 //! draws one by one.
 //!

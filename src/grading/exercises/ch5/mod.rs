@@ -220,7 +220,7 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
 /// z/π; over 40,000 samples, E(z) = 2/3, E(x) = E(y) = 0, P(z < 1/2)
 /// = 1/4 (for cos θ/π, P(cos θ < c) = c²), and the azimuth uniform (its
 /// first harmonics average to 0), and a grid of u spread evenly over
-/// the hemisphere ([`grid_spread`]). The error is the worst
+/// the hemisphere (`grid_spread`). The error is the worst
 /// deviation in standard errors (5 passes), or a large number when a
 /// sample is not even a direction on the hemisphere.
 pub fn check_cosine_hemisphere(f: CosineFn) -> Check {
