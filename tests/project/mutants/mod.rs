@@ -15,6 +15,7 @@ pub mod ch5;
 pub mod ch6;
 pub mod fresh;
 pub mod fresh_eighth;
+pub mod fresh_eleventh;
 pub mod fresh_fifth;
 pub mod fresh_fourth;
 pub mod fresh_new;

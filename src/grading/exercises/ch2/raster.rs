@@ -105,12 +105,23 @@ pub fn general_triangles() -> Vec<[Vec3; 3]> {
 }
 
 /// Clause 1: which samples each triangle covers, on a fan and a grid
-/// whose edges run exactly through sample points and on triangles at
-/// general positions (both windings). Exact: one sample more or less is a
+/// whose edges run exactly through sample points, on triangles with
+/// corners on the image's borders, and on triangles at general positions
+/// (both windings). Exact: one sample more or less is a
 /// failure.
 fn coverage(f: RasterFn) -> Check {
     let general = general_triangles();
     let mut tris = fill_rule_triangles();
+    // Corners on the image's left and top borders (a coordinate exactly
+    // 0, an ordinary number), both windings.
+    for t in [
+        [(0.0, 0.0), (9.7, 0.0), (0.0, 7.9)],
+        [(0.0, 20.5), (6.2, 25.0), (0.0, 31.0)],
+        [(30.5, 0.0), (37.25, 6.5), (24.0, 0.0)],
+    ] {
+        let t = t.map(|(x, y)| Vec3::new(x, y, 1.5));
+        tris.extend([t, [t[0], t[2], t[1]]]);
+    }
     let first_general = tris.len();
     tris.extend(general.iter().copied());
     let (cand, want) = (

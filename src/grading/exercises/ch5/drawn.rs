@@ -104,7 +104,9 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
             false => facing.max_element(),
         }
         .max(f64::MIN_POSITIVE);
-        let err = if asked_other.get() {
+        // Where the answer is 0 (a back face, below p's horizon, blocked:
+        // each well decided here), exactly 0.
+        let err = if asked_other.get() || (want == glam::DVec3::ZERO && got != glam::DVec3::ZERO) {
             f64::INFINITY
         } else {
             (got - want).abs().max_element() / scale

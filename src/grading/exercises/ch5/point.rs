@@ -98,9 +98,14 @@ pub fn check_point_light(f: PointFn) -> Check {
         let cos = n.as_dvec3().dot(to) / to.length();
         let want = (intensity.as_dvec3() * cos.max(0.0) / to.length_squared()).as_vec3();
         let got = f(intensity, light, p, n);
-        let err = if cos <= 0.0 {
-            // Behind: nothing, but for what the rounding of an f32 cosine
-            // lets through (a few 10⁻⁸ of E at normal incidence).
+        let err = if cos < -1e-4 && got.abs().max_element() > 0.0 {
+            // Well behind (no rounding of a cosine brings it in front):
+            // exactly nothing.
+            1.0
+        } else if cos <= 0.0 {
+            // Behind, near the horizon: nothing, but for what the rounding
+            // of an f32 cosine lets through (a few 10⁻⁸ of E at normal
+            // incidence).
             got.abs().max_element() as f64 * to.length_squared()
                 / f64::from(intensity.max_element())
         } else {
