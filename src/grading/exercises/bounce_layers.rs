@@ -213,6 +213,11 @@ fn drawn_path(draws: &mut Draws) -> Vec<Gathered> {
         }
         if i < vertices && draws.unit() < 0.8 {
             add(draws, i, How::LightSample);
+            // Now and then a second light sample at the same vertex (one
+            // per light, say): both count.
+            if draws.unit() < 0.1 {
+                add(draws, i, How::LightSample);
+            }
         }
     }
     path

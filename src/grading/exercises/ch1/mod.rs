@@ -259,7 +259,7 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
         draws.next_case();
         let mut size = draws.decades(-4.0, 2.0);
         let mut eye = draws.place_for(size, 2.0) + draws.in_cube() * size;
-        let view = draws.direction();
+        let mut view = draws.direction();
         let mut up = draws.direction() * draws.decades(-2.0, 2.0);
         match (last, draws.count(0, 5)) {
             (Some((e, _, s)), 0 | 1) => (eye, size) = (e, s),
@@ -277,6 +277,14 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
             let side = a * c + b * s;
             let (sin, cos) = draws.range(0.02, 0.14).sin_cos();
             up = (view * cos * draws.sign() + side * sin) * draws.decades(-2.0, 2.0);
+        } else if draws.unit() < 0.3 {
+            // Exactly along an axis, up along another (a view straight
+            // down z is no special case).
+            let axis = draws.count(0, 2);
+            view = Vec3::AXES[axis] * draws.sign();
+            up = Vec3::AXES[(axis + 1 + draws.count(0, 1)) % 3]
+                * draws.sign()
+                * draws.decades(-2.0, 2.0);
         } else if draws.unit() < 0.15 {
             let (a, b) = view.any_orthonormal_pair();
             let (s, c) = draws.range(0.0, std::f32::consts::TAU).sin_cos();

@@ -117,6 +117,10 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
         (Vec3::new(1.0, 1.0, 0.0), tri, Some((0.5, 0.5))),
         (Vec3::new(1.5, 1.5, 0.0), tri, None),
         (Vec3::new(-0.1, 0.5, 0.0), tri, None),
+        // On the line of an edge (v or u exactly 0), beyond its ends.
+        (Vec3::new(3.0, 0.0, 0.0), tri, None),
+        (Vec3::new(-1.0, 0.0, 0.0), tri, None),
+        (Vec3::new(0.0, 3.0, 0.0), tri, None),
         // A triangle standing in the plane x = 0 (seen edge-on from +z).
         (
             Vec3::new(0.0, 0.5, 0.5),

@@ -6,12 +6,12 @@
 //! walls' distance functions are exact dyadic numbers along the rays, so
 //! every right tracer takes the same steps, bit for bit.
 
-use std::cell::Cell;
-
 use glam::Vec3;
 
 use crate::ch4_implicit_surfaces::march::March;
 use crate::exercise::Symptom;
+
+pub use super::probe::Probe;
 
 /// Evaluates the distance function past the budget.
 pub const NO_BUDGET: Symptom = Symptom {
@@ -43,30 +43,6 @@ pub const ZERO_GRADIENT: Symptom = Symptom {
 pub const INSIDE_HIT: Symptom = Symptom {
     name: "inside taken for a hit",
 };
-
-/// A distance function that counts its evaluations.
-pub struct Probe {
-    /// The function.
-    pub f: fn(Vec3) -> f32,
-    /// Evaluations so far.
-    pub calls: Cell<u32>,
-}
-
-impl Probe {
-    /// A probe of `f`, no evaluations yet.
-    pub fn new(f: fn(Vec3) -> f32) -> Probe {
-        Probe {
-            f,
-            calls: Cell::new(0),
-        }
-    }
-
-    /// `f(p)`, counted.
-    pub fn eval(&self, p: Vec3) -> f32 {
-        self.calls.set(self.calls.get() + 1);
-        (self.f)(p)
-    }
-}
 
 /// Which clause a case tests.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -230,11 +206,32 @@ pub fn cases() -> Vec<Case> {
             budget(13),
         ),
         case(
+            "the same wall, a budget of u32::MAX evaluations (no limit to speak of)",
+            Clause::Budget,
+            half_wall,
+            down(1.0),
+            budget(u32::MAX),
+        ),
+        case(
+            "the same wall 10⁻⁴ below, within ε at once: a budget of one evaluation is enough",
+            Clause::Budget,
+            half_wall,
+            down(1e-4),
+            budget(1),
+        ),
+        case(
             "the same wall 150 m below, max_distance = 100",
             Clause::MaxDistance,
             half_wall,
             down(150.0),
             m,
+        ),
+        case(
+            "an exact wall 1 m below, max_distance = 1: the step lands on it exactly at max_distance, not beyond",
+            Clause::MaxDistance,
+            wall,
+            down(1.0),
+            March { max_distance: 1.0, ..m },
         ),
         case(
             "the same wall 6,000 m from the world's origin, 1 m below the ray's origin",
@@ -385,7 +382,7 @@ pub fn judge(
         ))
     };
     // Evaluations beyond the budget: a hit may add a few for its normal.
-    let over = |calls: u32, extra: u32| calls > m.max_steps + extra;
+    let over = |calls: u32, extra: u32| calls > m.max_steps.saturating_add(extra);
     match (got.0, want.0) {
         (Some(_), None) if case.clause == Clause::MaxDistance => say(Some(IGNORES_MAX_DISTANCE)),
         (Some(_), None) if case.clause == Clause::Budget => {

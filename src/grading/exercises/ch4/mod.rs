@@ -13,6 +13,7 @@ use crate::exercise::{Check, Exercise, Symptom};
 
 mod contract;
 mod gradient;
+mod probe;
 mod scene;
 pub use contract::{
     Case, Clause, Probe, BUDGET_OFF_BY_ONE, FIXED_EPSILON, IGNORES_MAX_DISTANCE, INSIDE_HIT,

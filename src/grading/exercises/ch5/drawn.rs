@@ -22,7 +22,7 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
     let mut last: Option<(Vec3, Vec3, bool)> = None;
     worst_drawn((0..draws.count(100, 400)).filter_map(|_| {
         draws.next_case();
-        let s = draws.decades(-2.0, 2.0);
+        let s = draws.decades(-2.0, 4.0);
         // A third up to 10⁵ times their size from the origin (where the
         // plane's equation in absolute coordinates rounds).
         let far = draws.unit() < 1.0 / 3.0;

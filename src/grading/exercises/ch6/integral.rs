@@ -109,9 +109,16 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
             format!("{name}: mean of 64 estimates {mean:.5} (z = {z:.1}), spread {ratio:.2}× the expected"),
         )
     }));
+    // From any numbers: 0 is one of them.
     let constant = f(&|_| 2.5, -1.0, 3.0, &[0.1, 0.7]);
+    let at_zero = f(&|_| 2.5, -1.0, 3.0, &[0.0, 0.0]);
     let (mut error, mut detail) = if (constant - 10.0).abs() > 1e-9 {
         (1.0, format!("∫₋₁³ 2.5 dx = 10, got {constant}"))
+    } else if (at_zero - 10.0).abs() > 1e-9 {
+        (
+            1.0,
+            format!("∫₋₁³ 2.5 dx = 10 from the numbers [0, 0], got {at_zero}"),
+        )
     } else {
         (error, detail)
     };
@@ -130,6 +137,10 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         // A third of them with a number given twice: evaluated twice.
         if draws.unit() < 1.0 / 3.0 {
             u.push(u[draws.count(0, u.len() - 1)]);
+        }
+        // A tenth with a number exactly 0, which is one of them.
+        if draws.unit() < 0.1 {
+            u[0] = 0.0;
         }
         let b = a + width;
         // One evaluation per number, each in [a, b] (to rounding).
