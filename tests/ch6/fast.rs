@@ -644,14 +644,14 @@ fn the_lane_mask_has_a_bit_for_each_true_lane() {
 #[test]
 fn eight_camera_rays_at_once_are_the_lessons_bit_for_bit() {
     use glam::DVec3;
+    use raystep::core::sampling::random;
     use raystep::fast::starts::rays8;
     use raystep::scene::camera::CameraDesc;
-    let mut h = 0x2545_f491_4f6c_dd1du64;
+    // The project's own numbers, one dimension after another.
+    let mut d = 0;
     let mut next = || {
-        h = h
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (h >> 40) as f64 / (1u64 << 24) as f64
+        d += 1;
+        f64::from(random(0x2545, 0, 0, d))
     };
     let mut checked = 0;
     for c in 0..200 {

@@ -3,9 +3,8 @@
 //! on the line of an edge, a normal along an axis but not unit, a point
 //! on a sphere's axis, a budget of u32::MAX or of one evaluation, a zero
 //! density edge-on, a direction straight down, a number exactly 0). Of 63
-//! wrong ones, 23 passed; these now fail under every seed tried, and
-//! `fresh_twelfth`'s closures are the testers' mistakes on the course's
-//! solutions.
+//! wrong ones, 23 passed; these, written as closures over the course's
+//! solutions, now fail under every seed tried.
 
 use glam::{Mat4, Vec3};
 use raystep::grading::exercise::Check;
