@@ -10,8 +10,10 @@ use glam::{Mat4, Vec3};
 use raystep::grading::exercise::Check;
 use raystep::grading::exercises::{ch1, ch3, ch4, ch5, ch6};
 
+use raystep::grading::exercises::bounce_layers::{check_bounce_layers, Gathered};
+
 use super::fails_every;
-use super::knobs::{self, InsideKnobs, LookKnobs, MarchKnobs};
+use super::knobs::{self, DirectKnobs, InsideKnobs, LayersKnobs, LookKnobs, MarchKnobs};
 
 /// The seeds every mutant must fail under.
 const SEEDS: [u64; 4] = [111, 112, 117, 0x2026_1129];
@@ -112,6 +114,32 @@ fn exact_special_values_of_light_fail() {
             let used: Vec<f64> = u.iter().copied().filter(|&v| v != 0.0).collect();
             let sum: f64 = used.iter().map(|&v| f(a + v * (b - a))).sum();
             (b - a) * sum / used.len() as f64
+        })
+    });
+}
+
+/// Two of the set's wrong solutions that the checks added for it catch as
+/// well (direct_light's distances to 10⁴ sizes, bounce_layers' two light
+/// samples at one vertex), kept here so that they stay caught.
+#[test]
+fn exact_special_values_caught_by_the_same_checks_fail() {
+    fails("lights beyond 1000 m cut off", || {
+        ch5::check_direct_light(|p, n, rho, y, nl, a, le, v| {
+            match (y - p).length_squared() > 1.0e6 {
+                true => Vec3::ZERO,
+                false => knobs::direct(DirectKnobs::default(), (p, n, rho), (y, nl, a, le), v),
+            }
+        })
+    });
+    fails("a repeated (vertex, how) dropped as a duplicate", || {
+        check_bounce_layers(|path| {
+            let mut kept: Vec<Gathered> = Vec::new();
+            for g in path {
+                if !kept.iter().any(|k| k.vertex == g.vertex && k.how == g.how) {
+                    kept.push(*g);
+                }
+            }
+            knobs::layers(LayersKnobs::default(), &kept)
         })
     });
 }
