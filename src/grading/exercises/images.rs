@@ -7,6 +7,7 @@ use glam::Vec3;
 
 use crate::core::film::Film;
 use crate::exercise::Check;
+use crate::exercises::AbsMax;
 use crate::scene::Scene;
 
 /// The scenes of `scenes/` the checks draw.
@@ -61,7 +62,7 @@ pub fn compare(
         for x in 0..w {
             let d = student.get(x, y) - reference.get(x, y);
             let d = if d.is_finite() {
-                d.abs().max_element()
+                d.abs_max()
             } else {
                 f32::INFINITY
             };
@@ -177,7 +178,7 @@ pub fn z_test(student: Estimate, reference: Estimate, block: u32, z_max: f64, wh
             let sd = ((va + vb) / (n * n)).sqrt().max(1e-6);
             // Not clamped: an infinite mean gives z = inf, printed as `inf`
             // (a NaN counts as infinitely far off).
-            let z = (a - b).abs().max_element() / sd;
+            let z = (a - b).abs_max() / sd;
             let z = if z.is_nan() { f64::INFINITY } else { z };
             if z > worst.0 {
                 worst = (

@@ -20,6 +20,37 @@ pub mod images;
 pub mod paths;
 pub mod refraction;
 
+/// The largest |channel| of a colour or vector, +∞ where a channel is NaN.
+/// glam's `max_element` passes over a NaN in some channels (the
+/// comparisons it is made of are false for NaN), so an answer with one NaN
+/// channel would read as close; a NaN must count as infinitely far off.
+pub trait AbsMax {
+    /// The scalar type.
+    type Out;
+    /// max |channel|, +∞ if any channel is NaN.
+    fn abs_max(self) -> Self::Out;
+}
+
+impl AbsMax for glam::Vec3 {
+    type Out = f32;
+    fn abs_max(self) -> f32 {
+        match self.is_nan() {
+            true => f32::INFINITY,
+            false => self.abs().max_element(),
+        }
+    }
+}
+
+impl AbsMax for glam::DVec3 {
+    type Out = f64;
+    fn abs_max(self) -> f64 {
+        match self.is_nan() {
+            true => f64::INFINITY,
+            false => self.abs().max_element(),
+        }
+    }
+}
+
 /// The case with the largest error over `(error, what)` pairs, a NaN
 /// counting as infinite; `None` when no error is above 0. What a case
 /// carries is the check's own (its description, its symptom).

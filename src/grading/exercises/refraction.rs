@@ -9,6 +9,7 @@ use super::worst;
 use crate::ch5_reflection::material::dielectric::{fresnel_dielectric, refract_local};
 use crate::ch5_reflection::material::Frame;
 use crate::exercise::{Check, Symptom};
+use crate::exercises::AbsMax;
 
 /// The candidate: (d, n, η outside, η inside) to (t, F), `None` under
 /// total internal reflection.
@@ -126,8 +127,8 @@ fn case(f: RefractFn, d: Vec3, n: Vec3, eo: f32, ei: f32) -> (f64, String, Optio
     let (dt, df) = match want {
         // Where rounding decides, f is not checked: computed from cosines
         // that rounding leaves with few correct digits, it can be anything.
-        Some((tw, _)) if in_band => ((t64 - tw).abs().max_element(), 0.0),
-        Some((tw, fw)) => ((t64 - tw).abs().max_element(), (f64::from(fr) - fw).abs()),
+        Some((tw, _)) if in_band => ((t64 - tw).abs_max(), 0.0),
+        Some((tw, fw)) => ((t64 - tw).abs_max(), (f64::from(fr) - fw).abs()),
         None => (0.0, 0.0),
     };
     let symptom = if side > 1e-3 {

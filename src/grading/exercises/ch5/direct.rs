@@ -31,6 +31,7 @@ use crate::ch1_projection::camera::Camera;
 use crate::core::film::Film;
 use crate::core::sampling::random;
 use crate::exercise::{Check, Symptom};
+use crate::exercises::AbsMax;
 
 /// The capstone's candidate: (p, n, ρ, y, n_light, A, Le, visible) to one
 /// sample of the reflected radiance.
@@ -211,13 +212,10 @@ fn hand_cases(f: DirectFn) -> (f64, String, Option<Symptom>) {
                 _ => COS_SURFACE,
             };
             // Relative to what the same light would bring facing p.
-            (got.abs().max_element() as f64 / facing, s)
+            (got.abs_max() as f64 / facing, s)
         } else {
             ratios.push((c.what, (got / c.want).element_sum() as f64 / 3.0));
-            (
-                ((got - c.want) / c.want).abs().max_element() as f64,
-                CONSTANT_FACTOR,
-            )
+            (((got - c.want) / c.want).abs_max() as f64, CONSTANT_FACTOR)
         };
         let err = if err.is_nan() { f64::INFINITY } else { err };
         if err > worst.0 {
@@ -345,7 +343,7 @@ fn same_picture(student: Film, reference: Film) -> Check {
     let mut differ = 0usize;
     let mut worst = (0.0f32, 0usize);
     for (i, (s, r)) in student.pixels.iter().zip(&reference.pixels).enumerate() {
-        let d = (*s - *r).abs().max_element() / r.max_element().max(level);
+        let d = (*s - *r).abs_max() / r.max_element().max(level);
         let d = if d.is_nan() { f32::INFINITY } else { d };
         if d > 1e-4 {
             differ += 1;

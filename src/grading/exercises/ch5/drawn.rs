@@ -11,6 +11,7 @@ use std::f64::consts::PI;
 use glam::Vec3;
 
 use crate::exercises::draws::{worst_drawn, Draws};
+use crate::exercises::AbsMax;
 
 /// Capstone 5's signature (the checks' `DirectFn`).
 type Direct = fn(Vec3, Vec3, Vec3, Vec3, Vec3, f32, Vec3, &dyn Fn(Vec3, Vec3) -> bool) -> Vec3;
@@ -109,7 +110,7 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
         let err = if asked_other.get() || (want == glam::DVec3::ZERO && got != glam::DVec3::ZERO) {
             f64::INFINITY
         } else {
-            (got - want).abs().max_element() / scale
+            (got - want).abs_max() / scale
         };
         Some((
             err,

@@ -28,6 +28,7 @@ use crate::ch5_reflection::radiometry::{spot_flux, triangle_solid_angle};
 use crate::ch5_reflection::warp::{cosine_hemisphere as warp_cosine, cosine_hemisphere_pdf};
 use crate::core::sampling::random;
 use crate::exercise::{Check, Exercise, Symptom};
+use crate::exercises::AbsMax;
 
 type BrdfFn = fn(Vec3, Vec3, Vec3) -> Vec3;
 type CosineFn = fn(Vec2) -> (Vec3, f32);
@@ -122,14 +123,14 @@ pub fn exercises() -> Vec<Exercise> {
 }
 
 fn rel(got: Vec3, want: Vec3) -> f64 {
-    ((got - want).abs().max_element() / want.abs().max_element().max(1e-6)) as f64
+    ((got - want).abs_max() / want.abs_max().max(1e-6)) as f64
 }
 
 /// A hand case's error: relative to what was expected, or the size of
 /// what came back where nothing was.
 fn off(got: Vec3, want: Vec3) -> f64 {
     if want == Vec3::ZERO {
-        got.abs().max_element() as f64
+        got.abs_max() as f64
     } else {
         rel(got, want)
     }
@@ -200,7 +201,7 @@ pub fn check_lambert_brdf(f: BrdfFn) -> Check {
             Vec3::ZERO
         };
         let got = f(rho, wo, wi);
-        let err = (got - want).abs().max_element() as f64 / (FRAC_1_PI as f64);
+        let err = (got - want).abs_max() as f64 / (FRAC_1_PI as f64);
         (
             err,
             format!("ρ {rho}, ωo {wo}, ωi {wi}: got {got}, expected {want}"),
@@ -425,7 +426,7 @@ fn lambert_symptom(f: BrdfFn) -> Option<Symptom> {
     let want = rho * FRAC_1_PI;
     if rel(up, rho) < 1e-3 || rel(up, want * FRAC_1_PI) < 1e-3 {
         Some(LAMBERT_PI)
-    } else if rel(up, want) < 1e-4 && below.abs().max_element() < 1e-6 {
+    } else if rel(up, want) < 1e-4 && below.abs_max() < 1e-6 {
         Some(LAMBERT_ONE_SIDED)
     } else {
         None

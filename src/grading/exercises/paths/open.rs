@@ -8,6 +8,7 @@ use glam::{Vec2, Vec3};
 use super::{camera_sample, trace_furnace, FurnaceRun, PathFn, PathScene};
 use crate::ch1_projection::camera::Camera;
 use crate::exercise::Symptom;
+use crate::exercises::AbsMax;
 use crate::scene::Scene;
 
 /// Roulette whose survival probability does not follow the throughput:
@@ -192,7 +193,7 @@ pub fn light_from_behind(f: PathFn) -> Option<String> {
                 .first_hit(ray.origin, ray.dir)
                 .is_some_and(|h| h.emitted == Vec3::ZERO);
             let l = sample(x, y, 0);
-            if l.min_element() < -1e-6 || (floor && l.abs().max_element() > 1e-6) {
+            if l.min_element() < -1e-6 || (floor && l.abs_max() > 1e-6) {
                 return Some(format!(
                     "a floor lit by a lamp below its horizon (nothing between them): pixel ({x}, {y}) \
                      got {l}, expected 0; a light sample with cos θ ≤ 0 at the surface \
