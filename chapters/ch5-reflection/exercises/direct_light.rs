@@ -7,7 +7,8 @@
 //!
 //! The inputs:
 //! * `p`: the shading point; `n`: its unit normal (facing the camera);
-//!   `rho`: its Lambertian albedo;
+//!   `rho`: its Lambertian albedo, each channel in [0, 1] (as a scene
+//!   file's `reflectance`);
 //! * `y`: a point on the light, drawn uniformly by area over the light's
 //!   total area `area` (its density is 1/area per square metre);
 //!   `n_light`: the light's unit normal at y;

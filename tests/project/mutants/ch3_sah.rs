@@ -34,11 +34,16 @@ struct Knobs {
     /// Equal centroids looked for in the unsorted list (position s - 1
     /// and s of the input, not of the order) (fourth fresh set).
     ties_unsorted: bool,
+    /// 5·10⁻⁷ added to every (half) area "against dividing by zero",
+    /// which swamps the areas of a scene 10⁻⁴ across (thirteenth set).
+    area_floor: bool,
 }
 
 fn measure(k: Knobs, lo: Vec3, hi: Vec3) -> f32 {
     let d = (hi - lo).max(Vec3::ZERO);
-    if k.volume {
+    if k.area_floor {
+        d.x * d.y + d.y * d.z + d.z * d.x + 5e-7
+    } else if k.volume {
         d.x * d.y * d.z
     } else if k.two_pairs {
         d.x * d.y + d.y * d.z
@@ -303,6 +308,9 @@ fn wrong_splits_fail_under_every_seed() {
         Some(sah::COSTLY),
         || ch3::check_sah(knob!(ties_unsorted)),
     );
+    fails(&mut wrong, "a floor under every area", None, || {
+        ch3::check_sah(knob!(area_floor))
+    });
     assert!(wrong.is_empty(), "{wrong:#?}");
 }
 

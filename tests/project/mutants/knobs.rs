@@ -168,6 +168,9 @@ pub enum Weights {
     OverZFirst,
     /// The barycentric weights e / area first, each then over its z.
     BaryFirst,
+    /// Affine (e / area over the corners' mean z) where the corners'
+    /// depths are within 1 % of each other.
+    AffineWhenFlat,
 }
 
 /// How a rasterizer departs from the solution of rasterize_triangle.
@@ -247,6 +250,10 @@ pub fn rasterize(
             let q = match k.weights {
                 Weights::OverZFirst => Vec3::new(e.x / z.x, e.y / z.y, e.z / z.z) / area,
                 Weights::BaryFirst => e / area / z,
+                Weights::AffineWhenFlat if z.max_element() <= 1.01 * z.min_element() => {
+                    e / (area * (z.element_sum() / 3.0))
+                }
+                Weights::AffineWhenFlat => Vec3::new(e.x / z.x, e.y / z.y, e.z / z.z) / area,
             };
             let z = 1.0 / (q.x + q.y + q.z);
             let i = (y * width + x) as usize;

@@ -24,6 +24,7 @@ pub mod fresh_seventh;
 pub mod fresh_sixth;
 pub mod fresh_tenth;
 pub mod fresh_third;
+pub mod fresh_thirteenth;
 pub mod fresh_twelfth;
 pub mod knobs;
 pub mod refraction;

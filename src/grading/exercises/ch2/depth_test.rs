@@ -1,6 +1,7 @@
 //! Exercise 2.3, the depth test: a sequence of tests on a small buffer,
-//! then a drawn run over every kind of depth (ties, neighbouring f32
-//! numbers, zeros and infinities and NaNs of both signs, repeats).
+//! then drawn runs on fresh buffers small and large over every kind of
+//! depth (ties, neighbouring f32 numbers, subnormals, zeros and
+//! infinities and NaNs of both signs, repeats).
 
 use super::{worst_of, NOT_STORED, TIE};
 use crate::exercise::Check;
@@ -46,12 +47,51 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
             format!("buffer ends as {buffer:?}, expected {expected:?}"),
         ));
     }
-    // A drawn run of tests on a drawn buffer: depths over twelve decades,
-    // ties (-0 against 0 too), depths one f32 step either side of the
-    // stored one, zeros, infinities of both signs and NaNs of both signs,
-    // as many as the run draws.
+    // Drawn runs of tests, each on a fresh drawn buffer: two small ones
+    // and one of 2^16 to 2^17 samples (an index past 65,535 is an index
+    // like any other). Each run starts with the last run's last passing
+    // test again, on an empty sample: nothing of the last buffer may carry
+    // over to the next.
     let mut draws = Draws::new(23);
-    let size = draws.count(1, 64);
+    let mut last_pass = None;
+    for run in 0..3 {
+        let size = match run {
+            1 => draws.count(1 << 16, 1 << 17),
+            _ => draws.count(1, 64),
+        };
+        match drawn_run(f, &mut draws, size, last_pass) {
+            Ok(pass) => last_pass = pass.or(last_pass),
+            Err(fail) => {
+                fails.push((1.0, format!("run {run} on {size} samples, {fail}")));
+                break;
+            }
+        }
+    }
+    let check = worst_of(fails.into_iter(), 0.0, "every step matches");
+    if check.passed() {
+        check
+    } else if buffer[..3] == [inf; 3] {
+        check.with_symptom(NOT_STORED)
+    } else if tie_passed {
+        check.with_symptom(TIE)
+    } else {
+        check
+    }
+}
+
+/// One drawn run of tests on a drawn buffer of `size` samples (the first
+/// test `first`, where it is given, on an empty sample): depths over
+/// twelve decades of both signs, subnormal ones, ties (-0 against 0 too),
+/// depths one f32 step either side of the stored one, zeros, infinities
+/// and NaNs of both signs, repeats. Its last passing test, or what went
+/// wrong.
+fn drawn_run(
+    f: fn(&mut [f32], usize, f32) -> bool,
+    draws: &mut Draws,
+    size: usize,
+    first: Option<(usize, f32)>,
+) -> Result<Option<(usize, f32)>, String> {
+    let inf = f32::INFINITY;
     let (mut theirs, mut ours) = (vec![inf; size], vec![inf; size]);
     // A third of the samples hold a depth before the first test.
     for (t, o) in theirs.iter_mut().zip(&mut ours) {
@@ -60,10 +100,21 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
             *t = *o;
         }
     }
+    let first = first.map(|(i, z)| (i % size, z));
+    if let Some((i, _)) = first {
+        (theirs[i], ours[i]) = (inf, inf);
+    }
+    let mut last_pass = None;
+    // Every sample is compared after each test on a small buffer; on a
+    // large one the tested sample after each, and all of them at the end.
+    let small = size <= 64;
     let mut last: Option<(usize, f32)> = None;
     for step in 0..draws.count(200, 2000) {
         draws.next_case();
-        let mut index = draws.count(0, size - 1);
+        let mut index = match (step, first) {
+            (0, Some((i, _))) => i,
+            _ => draws.count(0, size - 1),
+        };
         // Now and then the last test again, exactly: now a tie at best.
         let again = match last {
             Some((i, z)) if draws.unit() < 0.1 => {
@@ -74,7 +125,7 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
         };
         // Next to the stored depth: one f32 step nearer or farther (a
         // nearer depth by the smallest amount is still nearer).
-        let (stored, step_out) = (ours[index], draws.count(0, 14));
+        let (stored, step_out) = (ours[index], draws.count(0, 17));
         let z = match step_out {
             0 => stored,
             1 => f32::NAN,
@@ -95,42 +146,52 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
                 }
                 f32::MAX
             }
+            // A subnormal depth of either sign: a depth like any other.
+            11 => draws.sign() * f32::from_bits(draws.count(1, 0x007f_ffff) as u32),
+            // A negative depth (behind the camera is not this test's
+            // business: smaller is nearer).
+            12 => -draws.decades(-6.0, 6.0),
             _ => draws.decades(-6.0, 6.0),
         };
-        let z = again.unwrap_or(z);
+        let z = match (step, first) {
+            (0, Some((_, z))) => z,
+            _ => again.unwrap_or(z),
+        };
         last = Some((index, z));
         let want = z < ours[index];
         if want {
             ours[index] = z;
+            last_pass = Some((index, z));
         }
         let got = f(&mut theirs, index, z);
         // The tested sample, then the others: as they were.
-        let other = (0..size).find(|&i| theirs[i].to_bits() != ours[i].to_bits());
-        let at = if got != want { Some(index) } else { other };
+        let differs = |i: usize| theirs[i].to_bits() != ours[i].to_bits();
+        let other = match small {
+            true => (0..size).find(|&i| differs(i)),
+            false => None,
+        };
+        let at = if got != want || differs(index) {
+            Some(index)
+        } else {
+            other
+        };
         if let Some(i) = at {
             let what = match i == index {
                 true => "",
                 false => " at another sample",
             };
-            fails.push((
-                1.0,
-                format!(
-                    "drawn step {step}: depth_test(index {index}, z {z}) returned {got} and left {}{what} \
-                     (index {i}), expected {want} and {}",
-                    theirs[i], ours[i]
-                ),
+            return Err(format!(
+                "drawn step {step}: depth_test(index {index}, z {z}) returned {got} and left {}{what} \
+                 (index {i}), expected {want} and {}",
+                theirs[i], ours[i]
             ));
-            break;
         }
     }
-    let check = worst_of(fails.into_iter(), 0.0, "every step matches");
-    if check.passed() {
-        check
-    } else if buffer[..3] == [inf; 3] {
-        check.with_symptom(NOT_STORED)
-    } else if tie_passed {
-        check.with_symptom(TIE)
-    } else {
-        check
+    match (0..size).find(|&i| theirs[i].to_bits() != ours[i].to_bits()) {
+        Some(i) => Err(format!(
+            "after the run, sample {i} holds {}, expected {}",
+            theirs[i], ours[i]
+        )),
+        None => Ok(last_pass),
     }
 }

@@ -69,6 +69,8 @@ fn hand_cases() -> Vec<(&'static str, Vec<[u32; 3]>)> {
             .iter()
             .map(|t| t.map(|i| if i == 6 { 3 } else { i })),
     );
+    let mut repeated = TETRA.to_vec();
+    repeated.push(TETRA[2]);
     let big = u32::MAX - 3;
     vec![
         ("a closed tetrahedron", TETRA.to_vec()),
@@ -99,6 +101,12 @@ fn hand_cases() -> Vec<(&'static str, Vec<[u32; 3]>)> {
             "two triangles whose indices pack alike in 16-bit halves",
             vec![[1, 2, 3], [0, 65538, 65539]],
         ),
+        (
+            "one triangle twice, corners in the same order",
+            vec![[0, 1, 2], [0, 1, 2]],
+        ),
+        ("a tetrahedron with one face twice", repeated),
+        // Last: a failure here names the repeated index.
         (
             "a tetrahedron and four triangles with a repeated index",
             degenerate,
@@ -145,7 +153,15 @@ fn closed(d: &mut Draws, first: u32) -> (Vec<[u32; 3]>, u32) {
             (grid(m, n, first), first + m * n)
         }
         1 => {
-            let (r, m) = (d.count(1, 16) as u32, d.count(3, 24) as u32);
+            // A third of them with poles of 65 to 150 triangles (more than
+            // the bits of a word).
+            // (Few rings then, so that the mesh stays as large as the
+            // others.)
+            let (r, m) = match d.unit() < 1.0 / 3.0 {
+                true => (d.count(1, 4), d.count(65, 150)),
+                false => (d.count(1, 16), d.count(3, 24)),
+            };
+            let (r, m) = (r as u32, m as u32);
             (sphere(r, m, first), first + 2 + r * m)
         }
         _ => (moved(&TETRA, first), first + 4),

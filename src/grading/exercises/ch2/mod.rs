@@ -8,6 +8,7 @@ use crate::cases;
 use crate::ch2_rasterization::{depth, edge, triangle};
 use crate::exercise::{Check, Exercise, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
+use crate::exercises::AbsMax;
 
 mod common;
 mod depth_test;
@@ -269,6 +270,19 @@ pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
     }
 }
 
+/// φ of `p` in the triangle `t`, worked out in f64 from the f32 corners
+/// (a triangle with area).
+fn exact_phi(t: [Vec2; 3], p: Vec2) -> Vec3 {
+    let [i, j, k] = t.map(|c| c.as_dvec2());
+    let q = p.as_dvec2();
+    let area = (j - i).perp_dot(k - i);
+    Vec3::new(
+        ((k - j).perp_dot(q - j) / area) as f32,
+        ((i - k).perp_dot(q - k) / area) as f32,
+        ((j - i).perp_dot(q - i) / area) as f32,
+    )
+}
+
 /// Compares barycentric coordinates with hand values and checks that they
 /// rebuild the point.
 pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check {
@@ -302,9 +316,9 @@ pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check
         cases.push((pi, pj, pk, p, Some(phi)));
     }
     // Drawn well-shaped triangles from 10⁻³ to 10³ across, up to 10³ times
-    // that from the origin, either winding, points in and around them;
-    // φ worked out in f64 from the f32 corners. (The symptoms are read
-    // from the hand cases only.)
+    // that from the origin, either winding, points in and around them and
+    // just off their edges, and their neighbours; φ worked out in f64 from
+    // the f32 corners. (The symptoms are read from the hand cases only.)
     let hand = cases.len();
     let mut draws = Draws::new(22);
     for _ in 0..draws.count(200, 800) {
@@ -317,18 +331,28 @@ pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check
             place + draws.in_square() * scale,
         );
         let p = place + draws.in_square() * scale * 1.5;
-        let (i, j, k, q) = (pi.as_dvec2(), pj.as_dvec2(), pk.as_dvec2(), p.as_dvec2());
+        let (i, j, k) = (pi.as_dvec2(), pj.as_dvec2(), pk.as_dvec2());
         let area = (j - i).perp_dot(k - i);
         let longest = (j - i).length().max((k - i).length()).max((k - j).length());
         if area.abs() < 0.05 * longest * longest {
             continue;
         }
-        let phi = Vec3::new(
-            ((k - j).perp_dot(q - j) / area) as f32,
-            ((i - k).perp_dot(q - k) / area) as f32,
-            ((j - i).perp_dot(q - i) / area) as f32,
-        );
-        cases.push((pi, pj, pk, p, Some(phi)));
+        cases.push((pi, pj, pk, p, Some(exact_phi([pi, pj, pk], p))));
+        // A point just off one edge (φ of that edge's corner 10⁻⁷ to 10⁻³,
+        // either sign), and then, the very next call, the neighbour across
+        // the edge (pi, pj) with its own point: φ owes nothing to the call
+        // before.
+        let near = draws.count(0, 2);
+        let small = (draws.sign() * draws.decades(-7.0, -3.0)) as f64;
+        let t = draws.range(-0.2, 1.2) as f64;
+        let mut w = [t, 1.0 - t - small, small];
+        w.rotate_right(near);
+        let p_near = (i * w[0] + j * w[1] + k * w[2]).as_vec2();
+        cases.push((pi, pj, pk, p_near, Some(exact_phi([pi, pj, pk], p_near))));
+        let across = pi + pj - pk;
+        let p_across = place + draws.in_square() * scale * 1.5;
+        let phi_across = exact_phi([pi, pj, across], p_across);
+        cases.push((pi, pj, across, p_across, Some(phi_across)));
     }
     // The mistakes it can name: φ that are right but belong to other
     // corners, or right up to a common factor (not divided by the area).
@@ -336,7 +360,7 @@ pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check
     for &(pi, pj, pk, p, want) in &cases[..hand] {
         if let (Some(g), Some(w)) = (f(pi, pj, pk, p), want) {
             some = true;
-            let close = |a: Vec3| (a - w).abs().max_element() <= 1e-4;
+            let close = |a: Vec3| (a - w).abs_max() <= 1e-4;
             let perms = [g.yzx(), g.zxy(), g.xzy(), g.zyx(), g.yxz()];
             permuted &= close(g) || perms.iter().any(|q| close(*q));
             let sum = g.x + g.y + g.z;
@@ -355,9 +379,7 @@ pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check
             // far from it (where φ grows with the distance, and so does
             // its rounding).
             let err = match (got, want) {
-                (Some(g), Some(w)) => {
-                    ((g - w).abs().max_element() / w.abs().max_element().max(1.0)) as f64
-                }
+                (Some(g), Some(w)) => ((g - w).abs_max() / w.abs_max().max(1.0)) as f64,
                 (None, None) => 0.0,
                 _ => f64::INFINITY,
             };

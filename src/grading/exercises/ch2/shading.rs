@@ -14,13 +14,15 @@ use crate::core::film::Film;
 use crate::exercise::Check;
 use crate::exercises::draws::Draws;
 use crate::exercises::images;
+use crate::exercises::AbsMax;
 
 /// A slanted quad, as a floor seen at a shallow angle: a different colour
 /// at every corner; its two triangles have opposite windings. The first
 /// is the hand-made one (depth 1 m at the bottom, 8 m at the top); the
 /// second is drawn for the run: its depths from 10⁻² to 10² m, the far
 /// edge up to 100 times farther, and colours of any brightness from 0 to
-/// 10 (radiance, not a display colour: nothing is clamped).
+/// 10 (radiance, not a display colour: nothing is clamped); the third is
+/// the second nearly facing the camera.
 fn slanted() -> Vec<([Vec3; 3], [Vec3; 3])> {
     let (nl, nr) = (Vec3::new(2.3, 46.1, 1.0), Vec3::new(61.7, 45.4, 1.0));
     let (fr, fl) = (Vec3::new(39.6, 4.2, 8.0), Vec3::new(23.8, 5.3, 8.0));
@@ -43,6 +45,12 @@ fn slanted() -> Vec<([Vec3; 3], [Vec3; 3])> {
         )
     };
     let (r, g, b, k) = (colour(), colour(), colour(), colour());
+    quads.push(([nl, nr, fr], [r, g, b]));
+    quads.push(([nl, fl, fr], [r, k, b]));
+    // And one nearly facing the camera: the far edge 0.03 % to 1 % farther
+    // (perspective still bends φ there, by more than the tolerance).
+    let far = near * (1.0 + draws.decades(-3.5, -2.0));
+    let (fr, fl) = (at(fr, far), at(fl, far));
     quads.push(([nl, nr, fr], [r, g, b]));
     quads.push(([nl, fl, fr], [r, k, b]));
     quads
@@ -81,7 +89,7 @@ pub(super) fn interpolation(f: RasterFn) -> Check {
                 if b[k].0[i] == f32::INFINITY {
                     continue;
                 }
-                let dc = (a[k].1[i] - b[k].1[i]).abs().max_element() as f64;
+                let dc = (a[k].1[i] - b[k].1[i]).abs_max() as f64;
                 let dz = ((a[k].0[i] - b[k].0[i]).abs() / b[k].0[i]) as f64;
                 let (dc, dz) = (
                     if dc.is_nan() { f64::INFINITY } else { dc },
@@ -241,7 +249,7 @@ pub(super) fn depth_order(f: RasterFn) -> Check {
         // weights sum to 1 up to rounding): 1e-4 separates them from
         // another triangle's colour or depth by far.
         let differs = |i: usize| {
-            !((fs.pixels[i] - fr.pixels[i]).abs().max_element() <= 1e-4
+            !((fs.pixels[i] - fr.pixels[i]).abs_max() <= 1e-4
                 && (ds[i] == dr[i] || (ds[i] - dr[i]).abs() <= 1e-4 * dr[i]))
         };
         if let Some(i) = (0..ds.len()).find(|&i| differs(i)) {

@@ -169,9 +169,13 @@ fn hand_nodes() -> Vec<HandNode> {
     nodes
 }
 
-/// A drawn scene: what it is, and its triangles.
-fn drawn_scene(d: &mut Draws) -> (String, Vec<[Vec3; 3]>) {
-    let scale = d.decades(-3.0, 3.0);
+/// A drawn scene (`tiny`: 10⁻⁴ to 10⁻³ across, else 10⁻³ to 10³): what it
+/// is, and its triangles.
+fn drawn_scene(d: &mut Draws, tiny: bool) -> (String, Vec<[Vec3; 3]>) {
+    let scale = match tiny {
+        true => d.decades(-4.0, -3.0),
+        false => d.decades(-3.0, 3.0),
+    };
     let place = d.place_for(scale, 3.0);
     let n = d.count(2, 400);
     let small = |d: &mut Draws, c: Vec3, size: f32| {
@@ -395,9 +399,11 @@ pub fn check_sah(f: SahFn) -> Check {
     let mut draws = Draws::new(37);
     let mut worst = (0.0f64, "every tree within the margins".to_string());
     let (mut work_all, mut work_ref) = (0u64, 0u64);
-    for _ in 0..draws.count(16, 24) {
+    // The first three scenes tiny (areas of 10⁻⁸ m² and less are areas
+    // like any other).
+    for scene in 0..draws.count(16, 24) {
         draws.next_case();
-        let (what, tris) = drawn_scene(&mut draws);
+        let (what, tris) = drawn_scene(&mut draws, scene < 3);
         let theirs = match build_with(&tris, &mut |b, c| f(b, c)) {
             Ok(tree) => tree,
             Err(e) => return failed(format!("{what} (a drawn scene): {e}"), EMPTY_CHILD),

@@ -2,7 +2,7 @@
 //! Möller–Trumbore. Each against hand-worked cases and random ones, with
 //! the common mistakes named.
 
-use glam::{DVec3, Vec3};
+use glam::Vec3;
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
@@ -292,19 +292,27 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
         ),
     ];
     // Axis-aligned triangles in all eight orientations, hit at p0 and at
-    // the middle of the edges from it: u and v exactly 0, of either sign.
-    for k in 0..8 {
+    // the middle of the edges from it: u and v exactly 0, of either sign;
+    // in a plane of each axis (a box's walls: the x and y coordinates of
+    // an upright triangle enclose no area).
+    let turn = |v: Vec3, axis: usize| match axis {
+        0 => v,
+        1 => Vec3::new(v.z, v.x, v.y),
+        _ => Vec3::new(v.y, v.z, v.x),
+    };
+    for (k, axis) in (0..8).flat_map(|k| (0..3).map(move |axis| (k, axis))) {
         let (sx, sy) = ([1.0, -1.0][k & 1], [1.0, -1.0][(k >> 1) & 1]);
         let (a, b) = (Vec3::new(2.0 * sx, 0.0, 0.0), Vec3::new(0.0, 2.0 * sy, 0.0));
         let (a, b) = if k >= 4 { (b, a) } else { (a, b) };
         let p0 = Vec3::new(1.0, -1.0, -2.0);
-        let tri = [p0, p0 + a, p0 + b];
+        let tri = [p0, p0 + a, p0 + b].map(|p| turn(p, axis));
+        let d = turn(-Vec3::Z, axis);
         for at in [p0, p0 + 0.5 * a, p0 + 0.5 * b] {
-            let o = Vec3::new(at.x, at.y, 0.0);
-            let want = intersect_f64(o.as_dvec3(), DVec3::NEG_Z, tri.map(|p| p.as_dvec3()));
+            let o = turn(Vec3::new(at.x, at.y, 0.0), axis);
+            let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), tri.map(|p| p.as_dvec3()));
             cases.push((
                 o,
-                -Vec3::Z,
+                d,
                 tri,
                 want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
             ));

@@ -12,6 +12,7 @@ use crate::ch4_implicit_surfaces::march::March;
 use crate::exercise::Symptom;
 
 pub use super::probe::Probe;
+use super::walls::*;
 
 /// Evaluates the distance function past the budget.
 pub const NO_BUDGET: Symptom = Symptom {
@@ -60,6 +61,9 @@ pub enum Clause {
     /// A curved surface's normal, where the difference step h matters
     /// (h = max(ε at p, 10⁻⁴)): hits agree to a few ε, normals to 0.02.
     Curved,
+    /// A ray that skims a surface, f just above ε step after step, on its
+    /// way to another: the march goes on while |f| ≥ ε.
+    Skim,
 }
 
 /// One ray against one wall.
@@ -77,90 +81,6 @@ pub struct Case {
     pub dir: Vec3,
     /// The limits.
     pub march: March,
-}
-
-/// A wall at z = 0 whose function is half its distance: from z = 1 each
-/// step goes half the remaining way, f = 2^-(k+1) after k steps, exact in
-/// f32. Below ε = 1e-4 first at k = 13: the 14th evaluation hits.
-fn half_wall(p: Vec3) -> f32 {
-    0.5 * p.z
-}
-
-/// The same wall 6,000 m up, where ε is scaled to 8 f32 spacings of the
-/// coordinates (5.7e-3): the 8th evaluation (f = 2^-8) hits; with a fixed
-/// ε = 1e-4 the march goes on.
-fn far_half_wall(p: Vec3) -> f32 {
-    0.5 * (p.z - 6000.0)
-}
-
-/// A wall 6,000 m up seen from near the world's origin: ε must be taken
-/// where the march is (5.7e-3 there), not at the ray's origin (1e-4),
-/// which a march so far away never reaches before it lands on the wall.
-fn far_ahead_wall(p: Vec3) -> f32 {
-    0.5 * (6000.0 - p.z)
-}
-
-/// A wall at z = 0 whose function overstates the distance by a hair: the
-/// first step from z = 1 lands 2^-16 behind it, within ε, where the
-/// gradient points away from a viewer above.
-fn eager_wall(p: Vec3) -> f32 {
-    p.z.abs() * (1.0 + 2f32.powi(-16))
-}
-
-/// A wall at z = 0 whose function overstates the distance by half: from
-/// z = 1 the first step lands at z = -1/2, inside (f = -3/4), and every
-/// step after it halves the distance and changes side, exact in f32.
-/// |f| is below 1e-4 first at z = 2^-14, the 15th evaluation; a march
-/// that takes f < ε for a hit stops inside, at the second.
-fn overshooting_wall(p: Vec3) -> f32 {
-    1.5 * p.z
-}
-
-/// A ball of radius 1 6,000 m along x: ε at its surface is 5.7e-3, and
-/// a difference step of 10⁻⁴ vanishes in the rounding of x there.
-fn far_ball(p: Vec3) -> f32 {
-    (p - Vec3::new(6000.0, 0.0, 0.0)).length() - 1.0
-}
-
-/// A ball of radius 4 whose top touches the origin, for a march with ε
-/// far below 10⁻⁴: near the top ε at p is below 10⁻⁶, while f, computed
-/// from a distance near 4, moves in steps of 2.4e-7, so a difference step
-/// of ε alone gives a gradient in steps of a quarter; 10⁻⁴ gives it to
-/// 10⁻³.
-fn low_ball(p: Vec3) -> f32 {
-    (p - Vec3::new(0.0, 0.0, -4.0)).length() - 4.0
-}
-
-/// A wall at x = 1000 whose function understates by a hair: from the
-/// origin the first step lands 5·10⁻⁴ short of it, where ε at p (9.5e-4)
-/// calls it a hit; ε at the ray's origin or at the previous point (10⁻⁴)
-/// would not, and the march would take one more step.
-fn understating_far_wall(p: Vec3) -> f32 {
-    (1.0 - 5e-7) * (1000.0 - p.x)
-}
-
-/// A box of half size 0.5 at the origin: seen from 1,000 m away near an
-/// edge, a difference step of ε at the ray's origin (9.5e-4) reaches
-/// across the edge, one of ε at the hit (floored at 10⁻⁴) does not.
-fn box_at_origin(p: Vec3) -> f32 {
-    crate::ch4_implicit_surfaces::primitives::sd_box(p, Vec3::splat(0.5))
-}
-
-/// Flat (zero) below z = 0.5, twice the distance above: the first step
-/// from z = 1 lands at z = 0, where the gradient is zero.
-fn flat_floor(p: Vec3) -> f32 {
-    2.0 * (p.z - 0.5).max(0.0)
-}
-
-/// A wall at z = 0 whose function is the exact distance (signed).
-fn wall(p: Vec3) -> f32 {
-    p.z
-}
-
-/// A wall at z = 0 whose function is a quarter of the distance: its
-/// gradient is a quarter long, and still not zero.
-fn quarter_wall(p: Vec3) -> f32 {
-    0.25 * p.z
 }
 
 /// The contract's cases, in the order they are checked.
@@ -234,6 +154,36 @@ pub fn cases() -> Vec<Case> {
             March { max_distance: 1.0, ..m },
         ),
         case(
+            "the same wall 1 m below, max_distance = 0.9995: the 13th step goes past it (t = 1 - 2^-12) \
+             without a hit; the next would hit, beyond the limit",
+            Clause::MaxDistance,
+            half_wall,
+            down(1.0),
+            March {
+                max_distance: 0.9995,
+                ..m
+            },
+        ),
+        case(
+            "a floor skimmed at 1.2 ε on the way to a wall 2^-9 ahead: 16 steps with f just above ε, \
+             then the hit",
+            Clause::Skim,
+            skimmed_floor,
+            (Vec3::new(0.0, 0.0, 2f32.powi(-13)), Vec3::X),
+            m,
+        ),
+        case(
+            "a slab 0.05 thick 1,200 m along x whose function is half the distance: steps of f, however small, \
+             far from the origin too",
+            Clause::Skim,
+            far_thin_slab,
+            (Vec3::ZERO, Vec3::X),
+            March {
+                max_distance: 2000.0,
+                ..m
+            },
+        ),
+        case(
             "the same wall 6,000 m from the world's origin, 1 m below the ray's origin",
             Clause::ScaledEpsilon,
             far_half_wall,
@@ -245,6 +195,14 @@ pub fn cases() -> Vec<Case> {
             Clause::ScaledEpsilon,
             far_half_wall,
             (Vec3::new(6000.0, 6000.0, 6001.0), -Vec3::Z),
+            m,
+        ),
+        case(
+            "the same wall 6,000 m below the world's origin, seen from (0, 0, -5999): ε at p scales with \
+             p's largest |coordinate|",
+            Clause::ScaledEpsilon,
+            far_half_floor,
+            (Vec3::new(0.0, 0.0, -5999.0), -Vec3::Z),
             m,
         ),
         {

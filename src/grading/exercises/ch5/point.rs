@@ -8,6 +8,7 @@ use super::super::draws::{fold_drawn, worst_drawn, Draws};
 use super::{off, rel, INVERSE_SQUARE, POINT_BEHIND};
 use crate::cases::{self, unit, v3, V3};
 use crate::exercise::{Check, Symptom};
+use crate::exercises::AbsMax;
 
 type PointFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
 
@@ -44,8 +45,8 @@ pub fn check_point_light(f: PointFn) -> Check {
     };
     // Drawn lights and surfaces: distances from 10⁻³ to 10⁶ (the
     // inverse-square law has no range), up to 10³ times that from the
-    // origin, intensities over six decades, a fifth of them at grazing
-    // angles (half of those 10^2.5 to 10^3.5 times the distance from the
+    // origin, intensities over six decades, a tenth nearly facing the
+    // light, a fifth of them at grazing angles (half of those 10^2.5 to 10^3.5 times the distance from the
     // origin, where n · light and n · p round alike); E worked out in f64.
     let mut draws = Draws::new(52);
     let mut last_light: Option<(Vec3, f32)> = None;
@@ -80,6 +81,12 @@ pub fn check_point_light(f: PointFn) -> Check {
                     light = p + way * scale;
                 }
             }
+            // Nearly facing the light: 1 - cos θ from 1.3·10⁻⁴ to 10⁻³
+            // (the cosine still counts there).
+            3 => {
+                let tilt = draws.decades(-1.8, -1.35);
+                n = (way + way.any_orthonormal_vector() * tilt).normalize();
+            }
             // The same along an axis.
             2 => {
                 let axis = draws.count(0, 2);
@@ -98,7 +105,7 @@ pub fn check_point_light(f: PointFn) -> Check {
         let cos = n.as_dvec3().dot(to) / to.length();
         let want = (intensity.as_dvec3() * cos.max(0.0) / to.length_squared()).as_vec3();
         let got = f(intensity, light, p, n);
-        let err = if cos < -1e-4 && got.abs().max_element() > 0.0 {
+        let err = if cos < -1e-4 && got.abs_max() > 0.0 {
             // Well behind (no rounding of a cosine brings it in front):
             // exactly nothing.
             1.0
@@ -106,8 +113,7 @@ pub fn check_point_light(f: PointFn) -> Check {
             // Behind, near the horizon: nothing, but for what the rounding
             // of an f32 cosine lets through (a few 10⁻⁸ of E at normal
             // incidence).
-            got.abs().max_element() as f64 * to.length_squared()
-                / f64::from(intensity.max_element())
+            got.abs_max() as f64 * to.length_squared() / f64::from(intensity.max_element())
         } else {
             // Relative to what rounding allows: 10⁻⁴, plus what an f32
             // cosine's own rounding (a few 10⁻⁸; 10⁻⁶ to be generous)
@@ -138,7 +144,7 @@ fn point_symptom(f: PointFn) -> Option<Symptom> {
     let i = Vec3::ONE;
     let above = f(i, Vec3::new(0.0, 0.0, 2.0), Vec3::ZERO, Vec3::Z);
     let behind = f(i, Vec3::new(0.0, 0.0, -2.0), Vec3::ZERO, Vec3::Z);
-    if behind.abs().max_element() > 1e-6 {
+    if behind.abs_max() > 1e-6 {
         Some(POINT_BEHIND)
     } else if rel(above, i / 4.0) > 1e-4 {
         Some(INVERSE_SQUARE)

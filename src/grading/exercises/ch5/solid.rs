@@ -119,8 +119,9 @@ pub fn check_solid_angle(f: SolidFn) -> Check {
 
 /// Triangles of any shape (slivers down to 1:1000) from 10⁻³·⁵ to 10³ m,
 /// up to 10⁴ sizes from the origin, seen from anywhere: 0.3 to 1000 sizes
-/// away, just above (10⁻³ to 10⁻¹ sizes), grazing, and in their plane; a
-/// tenth with the last one's first corner.
+/// away, just above (10⁻⁴·⁵ to 10⁻¹ sizes, a third of those about as near
+/// an edge), grazing, and in their plane; a tenth with the last one's
+/// first corner.
 fn drawn(f: SolidFn) -> (f64, String) {
     let mut d = Draws::new(56);
     let mut last_corner: Option<Vec3> = None;
@@ -160,7 +161,22 @@ fn drawn(f: SolidFn) -> (f64, String) {
                 (u, w)
             };
             let inside = tri[0] + (tri[1] - tri[0]) * u + (tri[2] - tri[0]) * w;
-            inside + n * d.sign() * s * d.decades(-3.0, -1.0)
+            let height = s * d.decades(-4.5, -1.0);
+            // A third of them over a point as near the edge (p0, p1) as
+            // they are high, or up to 30 times nearer or farther: there Ω
+            // is far from 2π however close to the plane p is.
+            let under = match d.unit() < 1.0 / 3.0 {
+                true => {
+                    let edge = tri[1] - tri[0];
+                    let mut inward = n.cross(edge).normalize_or_zero();
+                    if inward.dot(tri[2] - tri[0]) < 0.0 {
+                        inward = -inward;
+                    }
+                    tri[0] + edge * d.range(0.1, 0.9) + inward * height * d.decades(-1.5, 1.5)
+                }
+                false => inside,
+            };
+            under + n * d.sign() * height
         } else if kind < 0.45 {
             centre + d.direction() * s * d.decades(-0.5, 3.0)
         } else if kind < 0.8 {

@@ -248,8 +248,9 @@ pub fn check_mis_weight(f: WeightFn) -> Check {
         Ok(w) => w,
         Err(check) => return check,
     };
-    // Drawn densities over 400 decades, a tenth of them 0, in a number of
-    // calls that changes from run to run.
+    // Drawn densities over 400 decades, a tenth of them 0, half of the
+    // pairs within three decades of each other, in a number of calls that
+    // changes from run to run.
     let mut draws = Draws::new(63);
     let n = draws.count(500, 3000);
     let mut last_f: Option<f64> = None;
@@ -262,10 +263,17 @@ pub fn check_mis_weight(f: WeightFn) -> Check {
                 10f64.powf(d.range(-200.0, 200.0) as f64)
             }
         };
-        let (mut a, b) = (density(&mut draws), density(&mut draws));
+        let (mut a, mut b) = (density(&mut draws), density(&mut draws));
         // A fifth keep the last pdf_f with a new pdf_g: w depends on both.
         if let Some(last) = last_f.filter(|_| draws.unit() < 0.2) {
             a = last;
+        }
+        // Half of them with pdf_g within three decades of pdf_f, where w
+        // moves most, a tenth within 10⁻⁶ to 10⁻² of it (w near 1/2).
+        match draws.count(0, 9) {
+            0..=3 => b = a * 10f64.powf(draws.range(-3.0, 3.0) as f64),
+            4 => b = a * (1.0 + (draws.sign() * draws.decades(-6.0, -2.0)) as f64),
+            _ => {}
         }
         last_f = Some(a);
         let want = if a == 0.0 {

@@ -4,8 +4,8 @@
 //! drawn so far (it starts at infinity). A new surface at depth `z` is
 //! visible at that sample only if it is nearer.
 //!
-//! The contract (checked on a sequence of tests on a small buffer, and the
-//! buffer's contents after them):
+//! The contract (checked on sequences of tests on buffers small and large,
+//! and the buffers' contents after them):
 //! * nearer (smaller z) passes: the buffer then holds z, and the function
 //!   returns `true`;
 //! * farther fails and leaves the buffer as it was (`false`);
