@@ -230,9 +230,12 @@ pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
         let err = (got - want)
             .to_cols_array()
             .iter()
-            .map(|d| d.abs() as f64)
+            .map(|d| match d.is_nan() {
+                // (f64::max passes over a NaN: one NaN entry is infinitely off.)
+                true => f64::INFINITY,
+                false => d.abs() as f64,
+            })
             .fold(0.0, f64::max);
-        let err = if err.is_nan() { f64::INFINITY } else { err };
         if err > worst.0 {
             worst = (
                 err,
