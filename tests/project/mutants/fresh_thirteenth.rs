@@ -12,6 +12,7 @@ use std::cell::Cell;
 use glam::{Vec2, Vec3};
 use raystep::grading::exercise::Check;
 use raystep::grading::exercises::bounce_layers::check_bounce_layers;
+use raystep::grading::exercises::ch2::manifold;
 use raystep::grading::exercises::{ch2, ch3, ch4, ch5, ch6};
 
 use super::fails_every;
@@ -134,61 +135,45 @@ fn small_biases_and_course_assumptions_in_chapters_2_and_3_fail() {
 }
 
 /// The fans at each vertex by a flood fill over one bit per triangle in a
-/// u64 (bit i mod 64): right for poles of up to 64 triangles.
+/// u64 (bit i mod 64): right for poles of up to 64 triangles. (The edge
+/// counts are the lesson's.)
 fn manifold_bitmask(triangles: &[[u32; 3]]) -> (usize, usize, usize, usize) {
-    use std::collections::HashMap;
+    let (boundary, many, _, inconsistent) = manifold::reference_counts(triangles);
     let good: Vec<[u32; 3]> = triangles
         .iter()
         .copied()
         .filter(|&[a, b, c]| a != b && b != c && c != a)
         .collect();
-    let mut edges: HashMap<(u32, u32), (usize, usize)> = HashMap::new();
-    let mut around: HashMap<u32, Vec<usize>> = HashMap::new();
-    for (t, &[a, b, c]) in good.iter().enumerate() {
-        for (i, j) in [(a, b), (b, c), (c, a)] {
-            let e = edges.entry((i.min(j), i.max(j))).or_default();
-            if i < j {
-                e.0 += 1;
-            } else {
-                e.1 += 1;
-            }
-        }
-        for v in [a, b, c] {
-            around.entry(v).or_default().push(t);
+    let mut around: std::collections::HashMap<u32, Vec<usize>> = Default::default();
+    for (t, tri) in good.iter().enumerate() {
+        for v in tri {
+            around.entry(*v).or_default().push(t);
         }
     }
-    let (mut boundary, mut many, mut inconsistent) = (0, 0, 0);
-    for &(up, down) in edges.values() {
-        match up + down {
-            1 => boundary += 1,
-            2 if up != 1 => inconsistent += 1,
-            2 => {}
-            _ => many += 1,
-        }
-    }
-    let mut fanned = 0;
-    for (&v, tris) in &around {
-        let n = tris.len();
-        let bit = |i: usize| 1u64.wrapping_shl(i as u32);
-        let all = if n >= 64 { u64::MAX } else { bit(n) - 1 };
-        let mut reached = bit(0);
-        loop {
-            let mut grown = reached;
-            for i in (0..n).filter(|&i| reached & bit(i) != 0) {
-                let others: Vec<u32> = good[tris[i]].into_iter().filter(|&u| u != v).collect();
-                for j in 0..n {
-                    if others.iter().any(|u| good[tris[j]].contains(u)) {
-                        grown |= bit(j);
-                    }
+    let bit = |i: usize| 1u64.wrapping_shl(i as u32);
+    let fanned = around
+        .iter()
+        .filter(|&(&v, tris)| {
+            let n = tris.len();
+            let all = if n >= 64 { u64::MAX } else { bit(n) - 1 };
+            let mut reached = bit(0);
+            loop {
+                let mut grown = reached;
+                for i in (0..n).filter(|&i| reached & bit(i) != 0) {
+                    let shared = |j: usize| {
+                        good[tris[i]]
+                            .iter()
+                            .any(|&u| u != v && good[tris[j]].contains(&u))
+                    };
+                    (0..n).filter(|&j| shared(j)).for_each(|j| grown |= bit(j));
                 }
+                if grown == reached {
+                    return reached & all != all;
+                }
+                reached = grown;
             }
-            if grown == reached {
-                break;
-            }
-            reached = grown;
-        }
-        fanned += usize::from(reached & all != all);
-    }
+        })
+        .count();
     (boundary, many, fanned, inconsistent)
 }
 
