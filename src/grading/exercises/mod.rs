@@ -31,6 +31,16 @@ pub trait AbsMax {
     fn abs_max(self) -> Self::Out;
 }
 
+impl AbsMax for glam::Vec2 {
+    type Out = f32;
+    fn abs_max(self) -> f32 {
+        match self.is_nan() {
+            true => f32::INFINITY,
+            false => self.abs().max_element(),
+        }
+    }
+}
+
 impl AbsMax for glam::Vec3 {
     type Out = f32;
     fn abs_max(self) -> f32 {
@@ -38,6 +48,15 @@ impl AbsMax for glam::Vec3 {
             true => f32::INFINITY,
             false => self.abs().max_element(),
         }
+    }
+}
+
+/// The larger of two errors, +∞ if either is NaN (`f64::max` passes over
+/// a NaN, so a NaN error beside a finite one would vanish).
+pub fn worse(a: f64, b: f64) -> f64 {
+    match a.is_nan() || b.is_nan() {
+        true => f64::INFINITY,
+        false => a.max(b),
     }
 }
 

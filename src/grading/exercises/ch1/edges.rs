@@ -14,6 +14,7 @@ use crate::core::film::Film;
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
 use crate::exercises::images;
+use crate::exercises::worse;
 
 /// The capstone's candidate: a world-space edge to its two raster ends.
 pub type EdgeFn = fn(&Camera, Vec3, Vec3, f32) -> Option<(Vec2, Vec2)>;
@@ -336,9 +337,15 @@ fn railroad(f: EdgeFn) -> Check {
             (Some(g), Some(w)) if clipped => {
                 let (dg, dw) = ((g.1 - g.0).normalize(), (w.1 - w.0).normalize());
                 let angle = dg.dot(dw).clamp(-1.0, 1.0).acos() as f64;
-                (angle / 5e-3).max((g.0 - w.0).length().min((g.1 - w.1).length()) as f64 / 5e-2)
+                let end = (g.0 - w.0).length().min((g.1 - w.1).length());
+                let end = if (g.0 - w.0).is_nan() || (g.1 - w.1).is_nan() {
+                    f32::NAN
+                } else {
+                    end
+                };
+                worse(angle / 5e-3, end as f64 / 5e-2)
             }
-            (Some(g), Some(w)) => rel(g.0, w.0).max(rel(g.1, w.1)) / 1e-4,
+            (Some(g), Some(w)) => worse(rel(g.0, w.0), rel(g.1, w.1)) / 1e-4,
             (None, None) => 0.0,
             _ => f64::INFINITY,
         };

@@ -9,6 +9,7 @@ use crate::ch1_projection::camera::{
 use crate::ch1_projection::wireframe::draw_scene;
 use crate::exercise::{Check, Exercise, Symptom};
 use crate::exercises::draws::Draws;
+use crate::exercises::AbsMax;
 use crate::scene::Material;
 
 pub mod edges;
@@ -167,9 +168,7 @@ pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
         }
         let err = match (got, want) {
             // Each coordinate relative to itself: one division makes it.
-            (Some(g), Some(w)) => {
-                ((g - w).abs() / w.abs().max(Vec2::splat(1e-30))).max_element() as f64
-            }
+            (Some(g), Some(w)) => ((g - w) / w.abs().max(Vec2::splat(1e-30))).abs_max() as f64,
             (None, None) => 0.0,
             _ => f64::INFINITY,
         };

@@ -29,11 +29,18 @@ pub use super::bvh_symptoms::*;
 /// A BVH traversal as the exercise asks for it.
 pub type TraversalFn = fn(&ReadableBvh, &Ray, f32) -> Option<Hit>;
 
-/// The same t: within 1e-5 relative (the watertight test gives the same
-/// t bit for bit for the same triangle and ray; the tolerance only lets a
-/// different order of the same arithmetic pass).
-fn same_t(a: f32, b: f32) -> bool {
-    (a - b).abs() <= 1e-5 * a.abs().max(b.abs()).max(1e-3)
+/// The same t: `got` within 1e-5 of `want`, relative to `want` (the
+/// watertight test gives the same t bit for bit for the same triangle and
+/// ray; the tolerance only lets a different order of the same arithmetic
+/// pass). An infinite or NaN `got` is never the same.
+fn same_t(got: f32, want: f32) -> bool {
+    (got - want).abs() <= 1e-5 * want.abs().max(1e-3)
+}
+
+/// The same barycentric coordinates, for a hit of the same triangle
+/// (written so that a NaN differs).
+fn same_uv(got: &Hit, want: &Hit) -> bool {
+    (got.u - want.u).abs() <= 1e-5 && (got.v - want.v).abs() <= 1e-5
 }
 
 /// How `got` differs from the closest hit `want` of `ray` in (0, t_max)
@@ -59,7 +66,10 @@ fn mismatch(
                     .and_then(|&tri| intersect_watertight(ray, tri, 0.0, t_max))
                     .is_some_and(|h| same_t(h.t, w.t))
             };
-            (g.triangle != w.triangle && !really_hit(g.triangle)).then_some(Some(WRONG_TRIANGLE))
+            match g.triangle == w.triangle {
+                true => (!same_uv(&g, &w)).then_some(None),
+                false => (!really_hit(g.triangle)).then_some(Some(WRONG_TRIANGLE)),
+            }
         }
         (Some(g), Some(w)) if g.t > w.t => Some(Some(NOT_CLOSEST)),
         _ => Some(None),

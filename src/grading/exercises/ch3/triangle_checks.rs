@@ -8,6 +8,7 @@ use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::Draws;
+use crate::exercises::worse;
 use crate::exercises::worst;
 
 /// Barycentric (u, v).
@@ -211,7 +212,7 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
         cases.into_iter().map(|(p, t, want)| {
             let got = f(p, t);
             let err = match (got, want) {
-                (Some(g), Some(w)) => ((g.0 - w.0).abs().max((g.1 - w.1).abs())) as f64,
+                (Some(g), Some(w)) => worse((g.0 - w.0).abs().into(), (g.1 - w.1).abs().into()),
                 (None, None) => 0.0,
                 _ => f64::INFINITY,
             };
@@ -414,9 +415,10 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
         cases.into_iter().map(|(o, d, t, want)| {
             let got = f(o, d, t);
             let err = match (got, want) {
-                (Some(g), Some(w)) => ((g.0 - w.0).abs() / w.0.abs())
-                    .max((g.1 - w.1).abs())
-                    .max((g.2 - w.2).abs()) as f64,
+                (Some(g), Some(w)) => worse(
+                    ((g.0 - w.0).abs() / w.0.abs()).into(),
+                    worse((g.1 - w.1).abs().into(), (g.2 - w.2).abs().into()),
+                ),
                 (None, None) => 0.0,
                 _ => f64::INFINITY,
             };

@@ -10,6 +10,7 @@ use crate::ch4_implicit_surfaces::march::{self, March};
 use crate::ch4_implicit_surfaces::normal::gradient_central;
 use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere, sd_torus};
 use crate::exercise::{Check, Exercise, Symptom};
+use crate::exercises::worse;
 
 mod contract;
 mod gradient;
@@ -232,7 +233,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         let err = match (got, want) {
             // A hit at t = 0 is the first evaluation's: exactly 0.
             (Some(g), Some(0.0)) => g.abs() as f64,
-            (Some(g), Some(w)) => ((g - w).abs() as f64 - eps as f64).max(0.0),
+            (Some(g), Some(w)) => worse((g - w).abs() as f64 - eps as f64, 0.0),
             (None, None) => 0.0,
             _ => f64::INFINITY,
         };
@@ -285,7 +286,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         };
         let got = f(&sdf, origin, dir, eps, 4096, max_distance);
         let err = match (got, want) {
-            (Some(g), Some((w, slack))) => ((g as f64 - w).abs() - slack).max(0.0) / r as f64,
+            (Some(g), Some((w, slack))) => worse((g as f64 - w).abs() - slack, 0.0) / r as f64,
             (None, None) => 0.0,
             _ => f64::INFINITY,
         };

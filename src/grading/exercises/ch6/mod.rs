@@ -175,7 +175,7 @@ pub fn check_russian_roulette(f: RouletteFn) -> Check {
         } else if bias > 2e-3 && symptom.is_none() {
             symptom = Some(ROULETTE_BIASED);
         }
-        let err = bias.max(fraction);
+        let err = super::worse(bias, fraction);
         (
             err,
             format!(

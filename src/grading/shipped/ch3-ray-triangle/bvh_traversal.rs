@@ -9,11 +9,12 @@
 //!
 //! Contract (what the grader checks):
 //! * The closest hit along `ray` in (0, t_max], as the naive loop over
-//!   every triangle would find it: the same t and the same triangle, with
-//!   `Hit::triangle` the triangle's index in `bvh.tris` (where two
-//!   triangles are hit at exactly the same t, either). `None` for a miss,
-//!   for a hit only beyond t_max, and for an empty tree. (The interval is
-//!   `intersect_watertight`'s: it keeps a hit exactly at its t_max.)
+//!   every triangle would find it: the same t, the same triangle and its
+//!   u and v, with `Hit::triangle` the triangle's index in `bvh.tris`
+//!   (where two triangles are hit at exactly the same t, either). `None`
+//!   for a miss, for a hit only beyond t_max, and for an empty tree. (The
+//!   interval is `intersect_watertight`'s: it keeps a hit exactly at its
+//!   t_max.)
 //! * Boxes are tested with `bounds.enter` and triangles with
 //!   `intersect_watertight`: the grader counts both. On eight stacked
 //!   sheets of triangles your traversal may do at most twice the slab
