@@ -19,6 +19,7 @@ pub mod draws;
 pub mod images;
 pub mod paths;
 pub mod refraction;
+pub mod stateless;
 
 /// The largest |channel| of a colour or vector, +∞ where a channel is NaN.
 /// glam's `max_element` passes over a NaN in some channels (the

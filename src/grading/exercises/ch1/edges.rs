@@ -13,8 +13,7 @@ use crate::core::draw;
 use crate::core::film::Film;
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
-use crate::exercises::images;
-use crate::exercises::worse;
+use crate::exercises::{images, stateless, worse};
 
 /// The capstone's candidate: a world-space edge to its two raster ends.
 pub type EdgeFn = fn(&Camera, Vec3, Vec3, f32) -> Option<(Vec2, Vec2)>;
@@ -42,7 +41,10 @@ pub fn check_draw_edges(f: EdgeFn) -> Check {
             ..clauses
         };
     }
-    railroad(f)
+    let camera = origin_camera();
+    stateless::unless_changed(railroad(f), || {
+        stateless::probes::draw_edges(|a, b, near| f(&camera, a, b, near))
+    })
 }
 
 /// What kind of edge a clause case is.

@@ -9,7 +9,7 @@ use crate::ch1_projection::camera::{
 use crate::ch1_projection::wireframe::draw_scene;
 use crate::exercise::{Check, Exercise, Symptom};
 use crate::exercises::draws::Draws;
-use crate::exercises::AbsMax;
+use crate::exercises::{stateless, AbsMax};
 use crate::scene::Material;
 
 pub mod edges;
@@ -99,7 +99,15 @@ pub fn exercises() -> Vec<Exercise> {
 }
 
 /// Compares a pinhole projection with values worked out by hand.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
+    stateless::unless_changed(project_point_values(f), || {
+        stateless::probes::project_point(f)
+    })
+}
+
+/// [`check_project_point`]'s checks of the values.
+fn project_point_values(f: fn(Vec3) -> Option<Vec2>) -> Check {
     // (point, expected image): in front of the camera, worked out by hand...
     let mut cases: Vec<(Vec3, Option<Vec2>)> = vec![
         (Vec3::new(1.0, 2.0, -2.0), Some(Vec2::new(0.5, 1.0))),
@@ -206,7 +214,13 @@ fn show(p: Option<Vec2>) -> String {
 
 /// Compares a look-at matrix with the reference on several cameras, then
 /// renders the lecture's tetrahedron through it.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
+    stateless::unless_changed(look_at_values(f), || stateless::probes::look_at(f))
+}
+
+/// [`check_look_at`]'s checks of the values.
+fn look_at_values(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
     let cameras = [
         (Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, Vec3::Y),
         (Vec3::new(3.0, 2.0, 4.0), Vec3::new(0.0, 0.5, 0.0), Vec3::Y),

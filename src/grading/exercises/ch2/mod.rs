@@ -8,7 +8,7 @@ use crate::cases;
 use crate::ch2_rasterization::{depth, edge, triangle};
 use crate::exercise::{Check, Exercise, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
-use crate::exercises::AbsMax;
+use crate::exercises::{stateless, AbsMax};
 
 mod common;
 mod depth_test;
@@ -167,7 +167,15 @@ struct EdgeCase {
 }
 
 /// Compares an edge function with values worked out by hand.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
+    stateless::unless_changed(edge_function_values(f), || {
+        stateless::probes::edge_function(f)
+    })
+}
+
+/// [`check_edge_function`]'s checks of the values.
+fn edge_function_values(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
     let cases: Vec<cases::Case<EdgeCase>> = match cases::of("ch2/edge_function") {
         Ok(c) => c,
         Err(e) => return cases::unreadable(e),
@@ -285,7 +293,13 @@ fn exact_phi(t: [Vec2; 3], p: Vec2) -> Vec3 {
 
 /// Compares barycentric coordinates with hand values and checks that they
 /// rebuild the point.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check {
+    stateless::unless_changed(barycentric_values(f), || stateless::probes::barycentric(f))
+}
+
+/// [`check_barycentric`]'s checks of the values.
+fn barycentric_values(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check {
     let v = Vec2::new;
     let (a, b, c) = (v(0.0, 0.0), v(4.0, 0.0), v(0.0, 2.0));
     let mut cases: Vec<(Vec2, Vec2, Vec2, Vec2, Option<Vec3>)> = vec![

@@ -13,8 +13,7 @@ use crate::ch2_rasterization::triangle::rasterize_triangle;
 use crate::core::film::Film;
 use crate::exercise::Check;
 use crate::exercises::draws::Draws;
-use crate::exercises::images;
-use crate::exercises::AbsMax;
+use crate::exercises::{images, AbsMax};
 
 /// A slanted quad, as a floor seen at a shallow angle: a different colour
 /// at every corner; its two triangles have opposite windings. The first
@@ -22,7 +21,8 @@ use crate::exercises::AbsMax;
 /// second is drawn for the run: its depths from 10⁻² to 10² m, the far
 /// edge up to 100 times farther, and colours of any brightness from 0 to
 /// 10 (radiance, not a display colour: nothing is clamped); the third is
-/// the second nearly facing the camera.
+/// the second nearly facing the camera; the last two the first at depths
+/// 10¹³ times larger and smaller.
 fn slanted() -> Vec<([Vec3; 3], [Vec3; 3])> {
     let (nl, nr) = (Vec3::new(2.3, 46.1, 1.0), Vec3::new(61.7, 45.4, 1.0));
     let (fr, fl) = (Vec3::new(39.6, 4.2, 8.0), Vec3::new(23.8, 5.3, 8.0));
@@ -53,6 +53,13 @@ fn slanted() -> Vec<([Vec3; 3], [Vec3; 3])> {
     let (fr, fl) = (at(fr, far), at(fl, far));
     quads.push(([nl, nr, fr], [r, g, b]));
     quads.push(([nl, fl, fr], [r, k, b]));
+    // And the first one 10¹³ times farther and nearer: depth is any
+    // positive number, and scaling every depth alike leaves φ as it was.
+    for scale in [1e13, 1e-13] {
+        let deeper = |t: [Vec3; 3]| t.map(|v| Vec3::new(v.x, v.y, v.z * scale));
+        quads.push((deeper(quads[0].0), quads[0].1));
+        quads.push((deeper(quads[1].0), quads[1].1));
+    }
     quads
 }
 

@@ -11,10 +11,12 @@ mod ray_plane;
 pub mod sah;
 mod triangle_checks;
 mod triangle_edges;
+mod triangle_symptoms;
 pub use bvh::*;
 pub use ray_plane::check_ray_plane;
 pub use sah::{check_sah, SahFn};
 pub use triangle_checks::*;
+pub use triangle_symptoms::*;
 
 /// Chapter 3's exercises, in order.
 pub fn exercises() -> Vec<Exercise> {

@@ -4,10 +4,12 @@
 
 use glam::Vec3;
 
-use super::triangle_checks::{check, near, rel, PARALLEL, PLANE_SIGN};
+use super::triangle_checks::{check, near, rel};
+use super::triangle_symptoms::{PARALLEL, PLANE_SIGN};
 use crate::cases::{self, v3, V3};
 use crate::exercise::Check;
 use crate::exercises::draws::Draws;
+use crate::exercises::stateless;
 
 /// A hand-worked plane and ray (`src/grading/cases.toml`): `expect` is
 /// t, left out for a parallel ray.
@@ -24,7 +26,13 @@ struct PlaneCase {
 /// Hand-worked planes, a parallel ray, then random cases against the
 /// closed form t = (c - N·o) / (N·d) worked in f64 here (not against
 /// raystep's `ray_plane`, which would check the reference against itself).
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
+    stateless::unless_changed(ray_plane_values(f), || stateless::probes::ray_plane(f))
+}
+
+/// [`check_ray_plane`]'s checks of the values.
+fn ray_plane_values(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
     let cases: Vec<cases::Case<PlaneCase>> = match cases::of("ch3/ray_plane") {
         Ok(c) => c,
         Err(e) => return cases::unreadable(e),

@@ -4,12 +4,12 @@
 
 use glam::Vec3;
 
+use super::triangle_symptoms::*;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::{self, intersect_f64};
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::Draws;
-use crate::exercises::worse;
-use crate::exercises::worst;
+use crate::exercises::{stateless, worse, worst};
 
 /// Barycentric (u, v).
 pub type Uv = (f32, f32);
@@ -70,35 +70,6 @@ pub(super) fn check(
     }
 }
 
-/// t = (Nᵀo - c) / Nᵀd: the right size, the wrong sign.
-pub const PLANE_SIGN: Symptom = Symptom {
-    name: "t with the wrong sign",
-};
-/// A hit reported for a ray parallel to the plane or triangle.
-pub const PARALLEL: Symptom = Symptom {
-    name: "parallel ray",
-};
-/// (v, u) for (u, v).
-pub const SWAPPED_UV: Symptom = Symptom {
-    name: "u and v swapped",
-};
-/// A point on an edge or a vertex counted as outside.
-pub const EDGES_OUTSIDE: Symptom = Symptom {
-    name: "edges left out",
-};
-/// Something returned for a triangle with no area.
-pub const DEGENERATE: Symptom = Symptom {
-    name: "degenerate triangle",
-};
-/// A hit at t ≤ 0.
-pub const BEHIND: Symptom = Symptom {
-    name: "hit behind the origin",
-};
-/// t for the unit direction, not for the d given.
-pub const UNIT_T: Symptom = Symptom {
-    name: "t for a unit direction",
-};
-
 /// Whether `g` is `w` to 1e-4, relative to `w` (at least 1).
 pub(super) fn near(g: f32, w: f32) -> bool {
     (g - w).abs() <= 1e-4 * w.abs().max(1.0)
@@ -106,7 +77,15 @@ pub(super) fn near(g: f32, w: f32) -> bool {
 
 /// Hand-worked points of one triangle, a degenerate triangle, and random
 /// points against `uv_f64`, an independent f64 solution worked here.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Check {
+    stateless::unless_changed(barycentric_inside_values(f), || {
+        stateless::probes::barycentric_inside(f)
+    })
+}
+
+/// [`check_barycentric_inside`]'s checks of the values.
+fn barycentric_inside_values(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Check {
     let tri = [
         Vec3::ZERO,
         Vec3::new(2.0, 0.0, 0.0),
@@ -238,7 +217,15 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
 /// Hand-worked rays, parallel and degenerate cases, and random rays against
 /// an f64 solution of the same 3x3 system (Cramer's rule, `intersect_f64`:
 /// not the Möller–Trumbore under test).
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check {
+    stateless::unless_changed(moller_trumbore_values(f), || {
+        stateless::probes::moller_trumbore(f)
+    })
+}
+
+/// [`check_moller_trumbore`]'s checks of the values.
+fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check {
     let tri = [
         Vec3::new(0.0, 0.0, -2.0),
         Vec3::new(2.0, 0.0, -2.0),
@@ -289,6 +276,13 @@ pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Che
             Vec3::ZERO,
             -Vec3::Z,
             [Vec3::ZERO, Vec3::X, Vec3::X * 2.0],
+            None,
+        ),
+        // A corner given twice: no area either.
+        (
+            Vec3::new(0.2, 0.1, 1.0),
+            -Vec3::Z,
+            [Vec3::ZERO, Vec3::ZERO, Vec3::X],
             None,
         ),
     ];

@@ -64,6 +64,9 @@ pub enum Clause {
     /// A ray that skims a surface, f just above ε step after step, on its
     /// way to another: the march goes on while |f| ≥ ε.
     Skim,
+    /// A ray marched on its own terms: nothing carried over from the ray
+    /// before it, no limit that overflows.
+    Fresh,
 }
 
 /// One ray against one wall.
@@ -180,6 +183,31 @@ pub fn cases() -> Vec<Case> {
             (Vec3::ZERO, Vec3::X),
             March {
                 max_distance: 2000.0,
+                ..m
+            },
+        ),
+        case(
+            "a wall 10 m below (exact): a hit at t = 10",
+            Clause::Fresh,
+            wall,
+            down(10.0),
+            m,
+        ),
+        case(
+            "then a slab 0.5 thick 5 m below: a hit at t = 5, whatever the ray before found",
+            Clause::Fresh,
+            slab_below,
+            down(10.0),
+            m,
+        ),
+        case(
+            "a wall 2·10²⁰ m below whose function is half the distance, max_distance = 1.2·10²⁰: past \
+             it at the second step (a squared distance overflows there)",
+            Clause::Fresh,
+            very_far_half_wall,
+            down(0.0),
+            March {
+                max_distance: 1.2e20,
                 ..m
             },
         ),

@@ -11,6 +11,7 @@ use crate::ch4_implicit_surfaces::normal::gradient_central;
 use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere};
 use crate::exercise::Check;
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
+use crate::exercises::stateless;
 
 /// A hand-worked normal.
 #[derive(serde::Deserialize)]
@@ -92,7 +93,15 @@ fn near_edges(f: NormalFn, draws: &mut Draws) -> (f64, String) {
 
 /// Gradient normals of a sphere, a box face and a torus against their
 /// exact normals.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_gradient_normal(f: NormalFn) -> Check {
+    stateless::unless_changed(gradient_normal_values(f), || {
+        stateless::probes::gradient_normal(f)
+    })
+}
+
+/// [`check_gradient_normal`]'s checks of the values.
+fn gradient_normal_values(f: NormalFn) -> Check {
     let sphere = |p: Vec3| sd_sphere(p - Vec3::new(1.0, 0.0, 0.0), 2.0);
     let hand = cases::worst("ch4/gradient_normal", |case: &NormalCase| {
         let sdf = |p: Vec3| case.sdf.distance(p);

@@ -10,7 +10,7 @@ use crate::ch4_implicit_surfaces::march::{self, March};
 use crate::ch4_implicit_surfaces::normal::gradient_central;
 use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere, sd_torus};
 use crate::exercise::{Check, Exercise, Symptom};
-use crate::exercises::worse;
+use crate::exercises::{stateless, worse};
 
 mod contract;
 mod gradient;
@@ -141,7 +141,13 @@ struct TraceCase {
 }
 
 /// The sphere's SDF against values worked out by hand.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_sphere_sdf(f: SdfFn) -> Check {
+    stateless::unless_changed(sphere_sdf_values(f), || stateless::probes::sphere_sdf(f))
+}
+
+/// [`check_sphere_sdf`]'s checks of the values.
+fn sphere_sdf_values(f: SdfFn) -> Check {
     let hand = cases::worst("ch4/sphere_sdf", |case: &SdfCase| {
         let (p, c, r, want) = (v3(case.p), v3(case.centre), case.radius, case.expect);
         let got = f(p, c, r);
@@ -161,7 +167,9 @@ pub fn check_sphere_sdf(f: SdfFn) -> Check {
     // another sphere around it (one point, several spheres: a scene's).
     let mut draws = Draws::new(41);
     let mut last: Option<Vec3> = None;
-    let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
+    // (Thousands of them: the answer after the 2,000th call counts as much
+    // as the first.)
+    let drawn = worst_drawn((0..draws.count(3000, 5000)).map(|_| {
         draws.next_case();
         let r = draws.decades(-3.0, 3.0);
         // A third of the points within 10⁻⁶ to 10⁻² radii of the surface.
@@ -324,7 +332,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
     let clause = contract::cases().into_iter().find_map(|case| {
         if !matches!(
             case.clause,
-            Clause::Budget | Clause::MaxDistance | Clause::Overshoot | Clause::Skim
+            Clause::Budget | Clause::MaxDistance | Clause::Overshoot | Clause::Skim | Clause::Fresh
         ) {
             return None;
         }

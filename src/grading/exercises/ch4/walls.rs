@@ -99,6 +99,19 @@ pub(super) fn skimmed_floor(p: Vec3) -> f32 {
     p.z.min(2f32.powi(-9) - p.x)
 }
 
+/// A slab between z = 4.5 and z = 5 (exact distance): from z = 10 the
+/// first step lands on its top.
+pub(super) fn slab_below(p: Vec3) -> f32 {
+    (p.z - 5.0).max(4.5 - p.z)
+}
+
+/// A wall 2·10²⁰ m below the origin whose function is half the distance:
+/// from the origin the steps halve the way there, past a max_distance of
+/// 1.2·10²⁰ (whose square is past f32's range) at the second.
+pub(super) fn very_far_half_wall(p: Vec3) -> f32 {
+    0.5 * (p.z + 2e20)
+}
+
 /// A wall at z = 0 whose function is the exact distance (signed).
 pub(super) fn wall(p: Vec3) -> f32 {
     p.z

@@ -8,6 +8,7 @@ use super::{AreaPdfFn, PDF_JACOBIAN, PDF_SIGN};
 use crate::cases::{self, unit, v3, V3};
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
+use crate::exercises::stateless;
 
 /// A hand-worked case of the area-to-solid-angle density
 /// (`src/grading/cases.toml`).
@@ -22,7 +23,13 @@ struct AreaPdfCase {
 }
 
 /// pdf_A d²/|cos θl| for hand-worked cases, and 0 edge-on.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_area_pdf(f: AreaPdfFn) -> Check {
+    stateless::unless_changed(area_pdf_values(f), || stateless::probes::area_pdf(f))
+}
+
+/// [`check_area_pdf`]'s checks of the values.
+fn area_pdf_values(f: AreaPdfFn) -> Check {
     let worst = cases::worst("ch5/area_pdf", |c: &AreaPdfCase| {
         let (pdf, x, y, n, want) = (c.pdf_area, v3(c.x), v3(c.y), unit(c.n_light), c.expect);
         let got = f(pdf, x, y, n);

@@ -8,7 +8,7 @@ use super::super::draws::{fold_drawn, worst_drawn, Draws};
 use super::{off, rel, INVERSE_SQUARE, POINT_BEHIND};
 use crate::cases::{self, unit, v3, V3};
 use crate::exercise::{Check, Symptom};
-use crate::exercises::AbsMax;
+use crate::exercises::{stateless, AbsMax};
 
 type PointFn = fn(Vec3, Vec3, Vec3, Vec3) -> Vec3;
 
@@ -24,7 +24,13 @@ struct PointCase {
 }
 
 /// E = I cos θ / r² for hand-worked cases.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_point_light(f: PointFn) -> Check {
+    stateless::unless_changed(point_light_values(f), || stateless::probes::point_light(f))
+}
+
+/// [`check_point_light`]'s checks of the values.
+fn point_light_values(f: PointFn) -> Check {
     let worst = cases::worst("ch5/point_light", |c: &PointCase| {
         let (i, light, p, n, want) = (
             v3(c.intensity),
@@ -49,6 +55,7 @@ pub fn check_point_light(f: PointFn) -> Check {
     // light, a fifth of them at grazing angles (half of those 10^2.5 to 10^3.5 times the distance from the
     // origin, where n · light and n · p round alike); E worked out in f64.
     let mut draws = Draws::new(52);
+    let mut off = Draws::new(152);
     let mut last_light: Option<(Vec3, f32)> = None;
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
@@ -100,6 +107,13 @@ pub fn check_point_light(f: PointFn) -> Check {
         }
         let intensity =
             Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(-3.0, 3.0);
+        // Now and then a light that is off: nothing arrives, not 0/0
+        // (drawn apart, so that the other draws stay as they were).
+        let intensity = if off.unit() < 0.05 {
+            Vec3::ZERO
+        } else {
+            intensity
+        };
         last_light = Some((light, scale));
         let to = (light - p).as_dvec3();
         let cos = n.as_dvec3().dot(to) / to.length();
@@ -113,7 +127,8 @@ pub fn check_point_light(f: PointFn) -> Check {
             // Behind, near the horizon: nothing, but for what the rounding
             // of an f32 cosine lets through (a few 10⁻⁸ of E at normal
             // incidence).
-            got.abs_max() as f64 * to.length_squared() / f64::from(intensity.max_element())
+            got.abs_max() as f64 * to.length_squared()
+                / f64::from(intensity.max_element()).max(f64::MIN_POSITIVE)
         } else {
             // Relative to what rounding allows: 10⁻⁴, plus what an f32
             // cosine's own rounding (a few 10⁻⁸; 10⁻⁶ to be generous)

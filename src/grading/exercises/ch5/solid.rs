@@ -9,6 +9,7 @@ use crate::cases::{self, v3, V3};
 use crate::ch5_reflection::radiometry::triangle_solid_angle;
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
+use crate::exercises::stateless;
 
 type SolidFn = fn(Vec3, [Vec3; 3]) -> f32;
 
@@ -91,7 +92,13 @@ struct SolidCase {
 
 /// Hand-made triangles, one per clause, then drawn ones over the whole
 /// domain.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_solid_angle(f: SolidFn) -> Check {
+    stateless::unless_changed(solid_angle_values(f), || stateless::probes::solid_angle(f))
+}
+
+/// [`check_solid_angle`]'s checks of the values.
+fn solid_angle_values(f: SolidFn) -> Check {
     let hand = cases::worst("ch5/solid_angle", |c: &SolidCase| {
         let (p, t) = (v3(c.p), c.triangle.map(v3));
         error(f(p, t), p, t)

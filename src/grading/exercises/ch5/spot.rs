@@ -12,7 +12,7 @@ use crate::ch5_reflection::light::spot::Spot;
 use crate::ch5_reflection::radiometry::spot_flux;
 use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::{fold_drawn, worst_drawn, Draws};
-use crate::exercises::AbsMax;
+use crate::exercises::{stateless, AbsMax};
 
 type SpotFn = fn(Vec3, f32, f32) -> Vec3;
 
@@ -66,7 +66,13 @@ struct SpotCase {
 /// Φ = ∫ I · falloff dω for hand-made cones (the falloff integrated
 /// numerically), then drawn ones, each channel to 10⁻⁵ of the brightest
 /// channel's power (as `point_light` does).
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_spot(f: SpotFn) -> Check {
+    stateless::unless_changed(spot_values(f), || stateless::probes::spot(f))
+}
+
+/// [`check_spot`]'s checks of the values.
+fn spot_values(f: SpotFn) -> Check {
     let i = Vec3::new(4.0, 2.0, 0.5);
     let hand = cases::worst("ch5/spot", |c: &SpotCase| {
         let (inner, outer) = (c.inner, c.outer);

@@ -17,6 +17,7 @@ use super::worst_of;
 use crate::cases;
 use crate::core::sampling::random;
 use crate::exercise::{Check, Exercise, Symptom};
+use crate::exercises::stateless;
 
 type RouletteFn = fn(f64, f64, f64) -> f64;
 type WeightFn = fn(f64, f64) -> f64;
@@ -132,7 +133,15 @@ pub(super) fn z_of(estimates: &[f64], expected: f64) -> f64 {
 
 /// Roulette keeps the mean (stratified numbers: the mean is exact) and
 /// actually ends paths: the fraction of zeros is 1 - q.
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_russian_roulette(f: RouletteFn) -> Check {
+    stateless::unless_changed(russian_roulette_values(f), || {
+        stateless::probes::russian_roulette(f)
+    })
+}
+
+/// [`check_russian_roulette`]'s checks of the values.
+fn russian_roulette_values(f: RouletteFn) -> Check {
     let n = 10_000;
     let mut symptom = None;
     // The hand cases, then drawn ones: values over six decades (and of
@@ -235,7 +244,13 @@ struct WeightCase {
 /// The weight against hand values and extremes, the two weights summing
 /// to one, and an unbiased two-strategy MIS estimate of ∫₀¹ 3x² dx = 1
 /// (uniform sampling, pdf 1, and sampling by 2x, pdf 2x).
+/// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_mis_weight(f: WeightFn) -> Check {
+    stateless::unless_changed(mis_weight_values(f), || stateless::probes::mis_weight(f))
+}
+
+/// [`check_mis_weight`]'s checks of the values.
+fn mis_weight_values(f: WeightFn) -> Check {
     let hand = cases::worst("ch6/mis_weight", |c: &WeightCase| {
         let (a, b, want) = (c.pdf_f, c.pdf_g, c.expect);
         let got = f(a, b);

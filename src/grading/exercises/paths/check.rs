@@ -25,8 +25,8 @@ use glam::{DVec3, Vec3};
 
 use super::cornell::cornell;
 use super::open::{
-    self, hidden_emission, BOUNCE_EMISSION_ADDED, HIDDEN_EMISSION_PATHS, LIGHT_FROM_BEHIND,
-    UNBOUNDED_THROUGHPUT,
+    self, hidden_emission, BLACK_SURFACE, BOUNCE_EMISSION_ADDED, HIDDEN_EMISSION_PATHS,
+    LIGHT_FROM_BEHIND, PATHS_BEFORE, UNBOUNDED_THROUGHPUT,
 };
 use super::{reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
 use crate::core::sampling::random;
@@ -90,11 +90,13 @@ pub const CORNELL_DIFFERS: Symptom = Symptom {
 };
 
 /// Every symptom [`check_path_radiance`] can name.
-pub const SYMPTOMS: [Symptom; 14] = [
+pub const SYMPTOMS: [Symptom; 16] = [
     NO_ROULETTE,
     UNBOUNDED_THROUGHPUT,
     LIGHT_FROM_BEHIND,
     BOUNCE_EMISSION_ADDED,
+    BLACK_SURFACE,
+    PATHS_BEFORE,
     DEPTH_CAP,
     NO_FIRST_EMISSION,
     DOUBLE_EMISSION,
@@ -113,8 +115,6 @@ pub const FURNACE_ALBEDO: f32 = 0.85;
 pub const FURNACE_LE: Vec3 = Vec3::new(1.0, 0.75, 0.5);
 /// Paths traced in the furnace.
 pub const FURNACE_PATHS: u64 = 200_000;
-/// Where the furnace's camera rays start (any point inside sees the same).
-const FURNACE_ORIGIN: Vec3 = Vec3::new(0.3, -0.2, 0.1);
 
 /// What the candidate did in the furnace.
 #[derive(Clone, Debug, Default)]
@@ -208,7 +208,7 @@ pub fn trace_furnace(f: PathFn, scene: &PathScene, n: u64, seed: u64) -> Furnace
                     ));
                 }
                 reset_tally();
-                let l = f(scene, FURNACE_ORIGIN, dir, &mut rng);
+                let l = f(scene, super::FURNACE_ORIGIN, dir, &mut rng);
                 let t = tally();
                 let per_sample = (l.as_dvec3() - 1.0) / f64::from(t.lights_found);
                 let one = FurnaceRun {
@@ -413,7 +413,7 @@ pub fn check_path_radiance(f: PathFn) -> Check {
         }
     }
     let box_check = cornell(f);
-    let error = fz.max(box_check.error);
+    let error = crate::exercises::worse(fz, box_check.error);
     let (detail, symptom) = if fz > 5.0 {
         (fdetail, fsymptom)
     } else if !box_check.passed() {

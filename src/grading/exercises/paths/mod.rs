@@ -89,6 +89,9 @@ thread_local! {
     }) };
 }
 
+/// Where the furnace's camera rays start (any point inside sees the same).
+pub(super) const FURNACE_ORIGIN: Vec3 = Vec3::new(0.3, -0.2, 0.1);
+
 /// Starts a fresh [`Tally`] on this thread.
 pub fn reset_tally() {
     TALLY.with(|t| t.set(Tally::default()));

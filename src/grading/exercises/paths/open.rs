@@ -7,6 +7,7 @@ use glam::{Vec2, Vec3};
 
 use super::{camera_sample, trace_furnace, FurnaceRun, PathFn, PathScene};
 use crate::ch1_projection::camera::Camera;
+use crate::core::sampling::random;
 use crate::exercise::Symptom;
 use crate::exercises::AbsMax;
 use crate::scene::Scene;
@@ -29,6 +30,82 @@ pub fn contract_failure(f: PathFn) -> Option<(String, Symptom)> {
         .or_else(|| light_from_behind(f).map(|d| (d, LIGHT_FROM_BEHIND)))
         .or_else(|| bounce_emission_added(f).map(|d| (d, BOUNCE_EMISSION_ADDED)))
         .or_else(|| emission_without_light_sample(f).map(|d| (d, BOUNCE_EMISSION_ADDED)))
+        .or_else(|| black_furnace(f).map(|d| (d, BLACK_SURFACE)))
+        .or_else(|| same_ray_other_scene(f).map(|d| (d, PATHS_BEFORE)))
+}
+
+/// A path's radiance that depends on the paths traced before it.
+pub const PATHS_BEFORE: Symptom = Symptom {
+    name: "a path depends on the paths before it",
+};
+
+/// The same ray and numbers in another scene right before must not
+/// change a path's radiance: a path owes nothing to the paths before it
+/// (a first hit cached by its ray, say, answers the ray in the last
+/// scene).
+pub fn same_ray_other_scene(f: PathFn) -> Option<String> {
+    let (albedo, le) = super::furnace_of_run();
+    let here = PathScene::furnace(albedo, le);
+    let there =
+        PathScene::furnace_coloured(Vec3::new(0.2, 0.5, 0.7), Vec3::new(le.z, le.x, le.y) * 0.5);
+    let seed = 614 ^ crate::run_seed();
+    let path = |scene: &PathScene, i: u64| {
+        let (u, v) = (random(seed, i, 0, 0), random(seed, i, 0, 1));
+        let z = 1.0 - 2.0 * u;
+        let r = (1.0 - z * z).max(0.0).sqrt();
+        let phi = std::f32::consts::TAU * v;
+        let dir = Vec3::new(r * phi.cos(), r * phi.sin(), z);
+        let mut dim = 1u64;
+        let mut rng = || {
+            dim += 1;
+            random(seed, i, 0, dim).min(1.0 - f32::EPSILON)
+        };
+        super::reset_tally();
+        f(scene, super::FURNACE_ORIGIN, dir, &mut rng)
+    };
+    (0..16).find_map(|i| {
+        [(&here, &there), (&there, &here)]
+            .into_iter()
+            .find_map(|(x, y)| {
+                path(x, i + 1000);
+                let alone = path(x, i);
+                path(x, i + 2000);
+                path(y, i);
+                let after = path(x, i);
+                (alone.to_array().map(f32::to_bits) != after.to_array().map(f32::to_bits)).then(
+                    || {
+                        format!(
+                    "the same path (ray and numbers) in a furnace gave {alone} after another \
+                     ray, and {after} right after the same ray in another furnace: a path owes \
+                     nothing to the paths traced before it"
+                )
+                    },
+                )
+            })
+    })
+}
+
+/// Something other than Le from a furnace of black walls.
+pub const BLACK_SURFACE: Symptom = Symptom {
+    name: "a black surface",
+};
+
+/// A furnace whose walls are black (albedo 0): every path sees the wall's
+/// Le and nothing more, exactly, and finite (a throughput of 0 is not
+/// 0/0).
+pub fn black_furnace(f: PathFn) -> Option<String> {
+    let (_, le) = super::furnace_of_run();
+    let scene = PathScene::furnace(0.0, le);
+    let run = trace_furnace(f, &scene, 2_000, 613 ^ crate::run_seed());
+    let (mean, _) = run.mean_and_error(2_000);
+    let exact = (mean - le.as_dvec3()).abs_max() <= 1e-6 * le.as_dvec3().abs_max();
+    (run.non_finite > 0 || !exact).then(|| {
+        format!(
+            "a furnace of black walls (albedo 0, Le {le:.2}): every path sees Le and nothing \
+             more, yet {} of 2000 paths were not finite and their mean is {mean:.4}",
+            run.non_finite
+        )
+    })
 }
 
 /// Emission a bounce finds, added (in part) to the light samples'.
