@@ -17,6 +17,7 @@ pub mod fresh;
 pub mod fresh_eighth;
 pub mod fresh_eleventh;
 pub mod fresh_fifth;
+pub mod fresh_fourteenth;
 pub mod fresh_fourth;
 pub mod fresh_new;
 pub mod fresh_ninth;

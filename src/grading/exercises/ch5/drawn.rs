@@ -20,7 +20,7 @@ type Direct = fn(Vec3, Vec3, Vec3, Vec3, Vec3, f32, Vec3, &dyn Fn(Vec3, Vec3) ->
 /// bring facing p, what it was).
 pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
     let mut draws = Draws::new(54);
-    let mut black = Draws::new(154);
+    let (mut black, mut black_asked) = (Draws::new(154), false);
     let mut last: Option<(Vec3, Vec3, bool)> = None;
     worst_drawn((0..draws.count(100, 400)).filter_map(|_| {
         draws.next_case();
@@ -113,24 +113,22 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
         } else {
             (got - want).abs_max() / scale
         };
-        // A tenth asked again with the light off or the surface black:
-        // exactly 0, not 0/0 (drawn apart, so that the other draws stay as
-        // they were).
-        let (le, rho, got, want, err) = match black.count(0, 19) {
-            k @ (0 | 1) => {
-                let (le, rho) = match k {
-                    0 => (Vec3::ZERO, rho),
-                    _ => (le, Vec3::ZERO),
-                };
-                let got = f(p, n, rho, y, n_light, area, le, &visible).as_dvec3();
-                let err = if got == glam::DVec3::ZERO {
-                    err
-                } else {
-                    f64::INFINITY
-                };
-                (le, rho, got, glam::DVec3::ZERO, err)
-            }
-            _ => (le, rho, got, want, err),
+        // The first that brings light, and a fifth of the others, asked
+        // again with the light off and with the surface black: exactly 0,
+        // not 0/0 (drawn apart, so that the other draws stay as they were).
+        let again = want != glam::DVec3::ZERO && (!black_asked || black.unit() < 0.2);
+        black_asked |= again;
+        let black_case = |le: Vec3, rho: Vec3| {
+            let got = f(p, n, rho, y, n_light, area, le, &visible).as_dvec3();
+            (got != glam::DVec3::ZERO).then_some((le, rho, got))
+        };
+        let failed = match again {
+            true => black_case(Vec3::ZERO, rho).or_else(|| black_case(le, Vec3::ZERO)),
+            false => None,
+        };
+        let (le, rho, got, want, err) = match failed {
+            Some((le, rho, got)) => (le, rho, got, glam::DVec3::ZERO, f64::INFINITY),
+            None => (le, rho, got, want, err),
         };
         Some((
             err,
