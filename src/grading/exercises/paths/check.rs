@@ -29,7 +29,6 @@ use super::open::{
     LIGHT_FROM_BEHIND, PATHS_BEFORE, UNBOUNDED_THROUGHPUT,
 };
 use super::{reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
-use crate::core::sampling::random;
 use crate::exercise::{Check, Symptom};
 
 /// A path was still going after [`BOUNCE_BUDGET`] bounces in the closed
@@ -192,16 +191,7 @@ pub fn trace_furnace(f: PathFn, scene: &PathScene, n: u64, seed: u64) -> Furnace
                 ..FurnaceRun::default()
             };
             for i in c * chunk..((c + 1) * chunk).min(n) {
-                let (u, v) = (random(seed, i, 0, 0), random(seed, i, 0, 1));
-                let z = 1.0 - 2.0 * u;
-                let r = (1.0 - z * z).max(0.0).sqrt();
-                let phi = std::f32::consts::TAU * v;
-                let dir = Vec3::new(r * phi.cos(), r * phi.sin(), z);
-                let mut dim = 1u64;
-                let mut rng = || {
-                    dim += 1;
-                    random(seed, i, 0, dim).min(1.0 - f32::EPSILON)
-                };
+                let (dir, mut rng) = super::furnace_path(seed, i);
                 if i % 50_000 == 0 {
                     crate::progress(format_args!(
                         "calling path_radiance in the closed furnace, path {i} of {n}"

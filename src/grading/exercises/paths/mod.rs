@@ -89,6 +89,22 @@ thread_local! {
     }) };
 }
 
+/// Path `i` of a furnace run drawn from `seed`: its direction from
+/// [`FURNACE_ORIGIN`] (uniform over the sphere), and its random numbers.
+pub(super) fn furnace_path(seed: u64, i: u64) -> (Vec3, impl FnMut() -> f32) {
+    use crate::core::sampling::random;
+    let (u, v) = (random(seed, i, 0, 0), random(seed, i, 0, 1));
+    let z = 1.0 - 2.0 * u;
+    let r = (1.0 - z * z).max(0.0).sqrt();
+    let phi = std::f32::consts::TAU * v;
+    let mut dim = 1u64;
+    let numbers = move || {
+        dim += 1;
+        random(seed, i, 0, dim).min(1.0 - f32::EPSILON)
+    };
+    (Vec3::new(r * phi.cos(), r * phi.sin(), z), numbers)
+}
+
 /// Where the furnace's camera rays start (any point inside sees the same).
 pub(super) const FURNACE_ORIGIN: Vec3 = Vec3::new(0.3, -0.2, 0.1);
 

@@ -7,7 +7,6 @@ use glam::{Vec2, Vec3};
 
 use super::{camera_sample, trace_furnace, FurnaceRun, PathFn, PathScene};
 use crate::ch1_projection::camera::Camera;
-use crate::core::sampling::random;
 use crate::exercise::Symptom;
 use crate::exercises::AbsMax;
 use crate::scene::Scene;
@@ -50,16 +49,7 @@ pub fn same_ray_other_scene(f: PathFn) -> Option<String> {
         PathScene::furnace_coloured(Vec3::new(0.2, 0.5, 0.7), Vec3::new(le.z, le.x, le.y) * 0.5);
     let seed = 614 ^ crate::run_seed();
     let path = |scene: &PathScene, i: u64| {
-        let (u, v) = (random(seed, i, 0, 0), random(seed, i, 0, 1));
-        let z = 1.0 - 2.0 * u;
-        let r = (1.0 - z * z).max(0.0).sqrt();
-        let phi = std::f32::consts::TAU * v;
-        let dir = Vec3::new(r * phi.cos(), r * phi.sin(), z);
-        let mut dim = 1u64;
-        let mut rng = || {
-            dim += 1;
-            random(seed, i, 0, dim).min(1.0 - f32::EPSILON)
-        };
+        let (dir, mut rng) = super::furnace_path(seed, i);
         super::reset_tally();
         f(scene, super::FURNACE_ORIGIN, dir, &mut rng)
     };
