@@ -16,6 +16,7 @@ pub mod ch6;
 pub mod fresh;
 pub mod fresh_eighth;
 pub mod fresh_eleventh;
+pub mod fresh_fifteenth;
 pub mod fresh_fifth;
 pub mod fresh_fourteenth;
 pub mod fresh_fourth;

@@ -316,6 +316,11 @@ fn barycentric_values(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check {
         (a, b, c, v(4.0, 2.0), Some(Vec3::new(-1.0, 1.0, 1.0))),
         // Clockwise order gives the same φ.
         (a, c, b, v(1.0, 0.5), Some(Vec3::new(0.5, 0.25, 0.25))),
+        // Each corner exactly, either winding: 1 at its own corner.
+        (a, b, c, a, Some(Vec3::X)),
+        (a, b, c, c, Some(Vec3::Z)),
+        (a, c, b, b, Some(Vec3::Z)),
+        (a, c, b, c, Some(Vec3::Y)),
         // No area, no coordinates: on a line (the point off it too).
         (a, b, v(8.0, 0.0), v(1.0, 1.0), None),
         (a, a, a, a, None),

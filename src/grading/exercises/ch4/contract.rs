@@ -129,6 +129,14 @@ pub fn cases() -> Vec<Case> {
             budget(13),
         ),
         case(
+            "a wall 1 m below whose function is 2 % of the distance, a budget of 256 evaluations \
+             (more than a byte counts)",
+            Clause::Budget,
+            slow_wall,
+            down(1.0),
+            budget(256),
+        ),
+        case(
             "the same wall, a budget of u32::MAX evaluations (no limit to speak of)",
             Clause::Budget,
             half_wall,

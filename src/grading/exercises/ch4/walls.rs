@@ -112,6 +112,13 @@ pub(super) fn very_far_half_wall(p: Vec3) -> f32 {
     0.5 * (p.z + 2e20)
 }
 
+/// A wall at z = 0 whose function is 2 % of the distance: from z = 1 each
+/// step leaves 98 % of the way, and f first falls below ε = 10⁻⁴ after
+/// about 260 evaluations.
+pub(super) fn slow_wall(p: Vec3) -> f32 {
+    0.02 * p.z
+}
+
 /// A wall at z = 0 whose function is the exact distance (signed).
 pub(super) fn wall(p: Vec3) -> f32 {
     p.z

@@ -112,6 +112,9 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     // From any numbers: 0 is one of them.
     let constant = f(&|_| 2.5, -1.0, 3.0, &[0.1, 0.7]);
     let at_zero = f(&|_| 2.5, -1.0, 3.0, &[0.0, 0.0]);
+    // And from 70,000 numbers (more than a u16 counts).
+    let many: Vec<f64> = (0..70_000).map(|i| (i as f64 + 0.5) / 70_000.0).collect();
+    let from_many = f(&|_| 2.5, -1.0, 3.0, &many);
     // (Written so that a NaN fails.)
     let ten = |x: f64| (x - 10.0).abs() <= 1e-9;
     let (mut error, mut detail) = if !ten(constant) {
@@ -120,6 +123,11 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         (
             1.0,
             format!("∫₋₁³ 2.5 dx = 10 from the numbers [0, 0], got {at_zero}"),
+        )
+    } else if !ten(from_many) {
+        (
+            1.0,
+            format!("∫₋₁³ 2.5 dx = 10 from 70,000 numbers, got {from_many}"),
         )
     } else {
         (error, detail)
