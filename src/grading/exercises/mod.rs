@@ -32,25 +32,22 @@ pub trait AbsMax {
     fn abs_max(self) -> Self::Out;
 }
 
-impl AbsMax for glam::Vec2 {
-    type Out = f32;
-    fn abs_max(self) -> f32 {
-        match self.is_nan() {
-            true => f32::INFINITY,
-            false => self.abs().max_element(),
+/// [`AbsMax`] for glam's vectors of `f32` and of `f64`.
+macro_rules! abs_max {
+    ($($vector:ty => $scalar:ty),*) => {$(
+        impl AbsMax for $vector {
+            type Out = $scalar;
+            fn abs_max(self) -> $scalar {
+                match self.is_nan() {
+                    true => <$scalar>::INFINITY,
+                    false => self.abs().max_element(),
+                }
+            }
         }
-    }
+    )*};
 }
 
-impl AbsMax for glam::Vec3 {
-    type Out = f32;
-    fn abs_max(self) -> f32 {
-        match self.is_nan() {
-            true => f32::INFINITY,
-            false => self.abs().max_element(),
-        }
-    }
-}
+abs_max!(glam::Vec2 => f32, glam::Vec3 => f32, glam::DVec3 => f64);
 
 /// The larger of two errors, +∞ if either is NaN (`f64::max` passes over
 /// a NaN, so a NaN error beside a finite one would vanish).
@@ -58,16 +55,6 @@ pub fn worse(a: f64, b: f64) -> f64 {
     match a.is_nan() || b.is_nan() {
         true => f64::INFINITY,
         false => a.max(b),
-    }
-}
-
-impl AbsMax for glam::DVec3 {
-    type Out = f64;
-    fn abs_max(self) -> f64 {
-        match self.is_nan() {
-            true => f64::INFINITY,
-            false => self.abs().max_element(),
-        }
     }
 }
 

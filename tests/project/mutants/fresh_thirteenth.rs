@@ -16,7 +16,7 @@ use raystep::grading::exercises::ch2::manifold;
 use raystep::grading::exercises::{ch2, ch3, ch4, ch5, ch6};
 
 use super::fails_every;
-use super::knobs::{self, Knobs, LayersKnobs, RasterKnobs, Weights};
+use super::knobs::{self, Knobs, LayersKnobs, MarchEps, RasterKnobs, SceneKnobs, Weights};
 
 /// The seeds every mutant must fail under.
 const SEEDS: [u64; 4] = [131, 132, 137, 0x2026_1129];
@@ -266,25 +266,8 @@ fn small_biases_and_course_assumptions_in_chapter_4_fail() {
     });
     fails("ε from p's largest coordinate, not |coordinate|", || {
         ch4::check_trace_scene(|sdf, o, d, m| {
-            let eps = |p: Vec3| m.epsilon.max(8.0 * f32::EPSILON * p.max_element());
-            let (mut t, mut f, mut evaluations) = (0.0f32, sdf(o), 1);
-            let p = loop {
-                let p = o + t * d;
-                if f.abs() < eps(p) {
-                    break p;
-                }
-                if t > m.max_distance || evaluations >= m.max_steps {
-                    return None;
-                }
-                t += f;
-                f = sdf(o + t * d);
-                evaluations += 1;
-            };
-            let h = eps(p).max(1e-4);
-            let partial = |axis: Vec3| (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h);
-            let g = Vec3::new(partial(Vec3::X), partial(Vec3::Y), partial(Vec3::Z));
-            let n = g.try_normalize().unwrap_or(-d);
-            Some((t, if n.dot(d) > 0.0 { -n } else { n }))
+            let k = SceneKnobs::with(|k| k.eps = MarchEps::SignedLargest);
+            knobs::trace_scene(k, sdf, o, d, m)
         })
     });
 }

@@ -696,6 +696,9 @@ pub enum MarchEps {
     AtPointBefore,
     /// ε with |p| for p's largest coordinate.
     ByLength,
+    /// ε with p's largest coordinate, not its largest |coordinate|
+    /// (fourteenth set).
+    SignedLargest,
 }
 
 /// Where the normal's difference step is taken.
@@ -761,6 +764,7 @@ pub fn trace_scene(
             MarchEps::AtPoint => march.epsilon_at(p),
             MarchEps::AtPointBefore => march.epsilon_at(before),
             MarchEps::ByLength => march.epsilon.max(8.0 * f32::EPSILON * p.length()),
+            MarchEps::SignedLargest => march.epsilon.max(8.0 * f32::EPSILON * p.max_element()),
         };
         if f.abs() < eps {
             break p;

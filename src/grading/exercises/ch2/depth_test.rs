@@ -165,15 +165,12 @@ fn drawn_run(
         }
         let got = f(&mut theirs, index, z);
         // The tested sample, then the others: as they were.
-        let differs = |i: usize| theirs[i].to_bits() != ours[i].to_bits();
-        let other = match small {
-            true => (0..size).find(|&i| differs(i)),
-            false => None,
-        };
-        let at = if got != want || differs(index) {
+        let at = if got != want || first_difference(&theirs, &ours, index..index + 1).is_some() {
             Some(index)
+        } else if small {
+            first_difference(&theirs, &ours, 0..size)
         } else {
-            other
+            None
         };
         if let Some(i) = at {
             let what = match i == index {
@@ -187,11 +184,18 @@ fn drawn_run(
             ));
         }
     }
-    match (0..size).find(|&i| theirs[i].to_bits() != ours[i].to_bits()) {
+    match first_difference(&theirs, &ours, 0..size) {
         Some(i) => Err(format!(
             "after the run, sample {i} holds {}, expected {}",
             theirs[i], ours[i]
         )),
         None => Ok(last_pass),
     }
+}
+
+/// The first sample of `range` whose bits differ between the two buffers.
+fn first_difference(theirs: &[f32], ours: &[f32], range: std::ops::Range<usize>) -> Option<usize> {
+    range
+        .into_iter()
+        .find(|&i| theirs[i].to_bits() != ours[i].to_bits())
 }
