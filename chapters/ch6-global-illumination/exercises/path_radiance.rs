@@ -16,7 +16,9 @@
 //!   its distance, the radiance Le arriving along it (`li`) and its
 //!   density per steradian (`None`: no sample, for instance where the
 //!   light cannot be seen from that side);
-//! * `scene.unoccluded(&hit, wi, dist)`: the shadow ray;
+//! * `scene.unoccluded(&hit, wi, dist)`: the shadow ray, the whole way
+//!   to the light's point (it stops a hair short of the light by itself:
+//!   give it the sample's own `wi` and `dist`);
 //! * `scene.sample_cosine(&hit, u)`: a direction about the normal with
 //!   density cos θ / π.
 //!

@@ -26,7 +26,7 @@ use glam::{DVec3, Vec3};
 use super::cornell::cornell;
 use super::open::{
     self, hidden_emission, BLACK_SURFACE, BOUNCE_EMISSION_ADDED, HIDDEN_EMISSION_PATHS,
-    LIGHT_FROM_BEHIND, PATHS_BEFORE, UNBOUNDED_THROUGHPUT,
+    LIGHT_FROM_BEHIND, LIGHT_THROUGH_OCCLUDER, PATHS_BEFORE, UNBOUNDED_THROUGHPUT,
 };
 use super::{reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
 use crate::exercise::{Check, Symptom};
@@ -89,10 +89,11 @@ pub const CORNELL_DIFFERS: Symptom = Symptom {
 };
 
 /// Every symptom [`check_path_radiance`] can name.
-pub const SYMPTOMS: [Symptom; 16] = [
+pub const SYMPTOMS: [Symptom; 17] = [
     NO_ROULETTE,
     UNBOUNDED_THROUGHPUT,
     LIGHT_FROM_BEHIND,
+    LIGHT_THROUGH_OCCLUDER,
     BOUNCE_EMISSION_ADDED,
     BLACK_SURFACE,
     PATHS_BEFORE,

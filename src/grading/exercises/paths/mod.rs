@@ -30,6 +30,7 @@ mod open;
 
 pub use check::*;
 use furnace::Furnace;
+pub use open::LIGHT_THROUGH_OCCLUDER;
 
 /// Where a path meets a surface (every surface of the capstone's scenes is
 /// Lambertian).

@@ -27,6 +27,7 @@ pub fn contract_failure(f: PathFn) -> Option<(String, Symptom)> {
     unbounded_throughput(f)
         .map(|d| (d, UNBOUNDED_THROUGHPUT))
         .or_else(|| light_from_behind(f).map(|d| (d, LIGHT_FROM_BEHIND)))
+        .or_else(|| shaded_lamp(f).map(|d| (d, LIGHT_THROUGH_OCCLUDER)))
         .or_else(|| bounce_emission_added(f).map(|d| (d, BOUNCE_EMISSION_ADDED)))
         .or_else(|| emission_without_light_sample(f).map(|d| (d, BOUNCE_EMISSION_ADDED)))
         .or_else(|| black_furnace(f).map(|d| (d, BLACK_SURFACE)))
@@ -266,6 +267,90 @@ pub fn light_from_behind(f: PathFn) -> Option<String> {
                      got {l}, expected 0; a light sample with cos θ ≤ 0 at the surface \
                      brings nothing"
                 ));
+            }
+        }
+    }
+    None
+}
+
+/// A light sample counted though something blocks it: the shadow ray's
+/// answer ignored, or the ray stopped short of its light point so that an
+/// occluder near the light is missed.
+pub const LIGHT_THROUGH_OCCLUDER: Symptom = Symptom {
+    name: "light counted through an occluder",
+};
+
+/// A lamp facing down inside a closed box whose floor lies `gap` below
+/// it, over a floor: no light leaves the box, so every path gives 0.
+fn shaded_lamp_scene(gap: f64) -> String {
+    let (height, top) = (gap + 0.1, 1.1);
+    format!(
+        r#"
+[camera]
+eye = [0.0, 2.5, 3.0]
+target = [0.0, 0.3, 0.0]
+fov = 50.0
+width = 24
+height = 24
+
+[[materials]]
+name = "white"
+reflectance = [0.8, 0.8, 0.8]
+
+[[materials]]
+name = "glow"
+reflectance = [0.0, 0.0, 0.0]
+emission = [5.0, 5.0, 5.0]
+
+[[objects]]
+shape = "rectangle"
+size = [4.0, 4.0]
+rotate = {{ axis = [1.0, 0.0, 0.0], degrees = -90.0 }}
+material = "white"
+
+[[objects]]
+shape = "rectangle"
+size = [0.5, 0.5]
+rotate = {{ axis = [1.0, 0.0, 0.0], degrees = 90.0 }}
+translate = [0.0, 1.0, 0.0]
+material = "glow"
+
+[[objects]]
+shape = "box"
+size = [0.6, {height:?}, 0.6]
+translate = [0.0, {:?}, 0.0]
+material = "white"
+"#,
+        top - height / 2.0
+    )
+}
+
+/// Whether `f`'s shadow rays stop short of the light: in a scene whose
+/// lamp sits in a closed box, the box's floor a drawn 2·10⁻⁴ to 10⁻³ below
+/// the lamp (far more than the scene's own stop at the light, about
+/// 10⁻⁵ there), nothing is lit, so every path's radiance is 0. A shadow
+/// ray cut short by as little as 1 % of its length passes through the
+/// box's floor.
+pub fn shaded_lamp(f: PathFn) -> Option<String> {
+    let gap = f64::from(crate::exercises::draws::Draws::new(615).decades(-3.7, -3.0));
+    let scene = Scene::from_text(&shaded_lamp_scene(gap), "shaded-lamp")
+        .expect("the shaded lamp is a valid scene");
+    let camera = Camera::of(&scene);
+    let paths = PathScene::new(&scene);
+    let what = "a lamp shut in a box";
+    let sample = camera_sample(f, &paths, &camera, 615 ^ crate::run_seed(), what);
+    for s in 0..2 {
+        for y in 0..camera.height {
+            for x in 0..camera.width {
+                let l = sample(x, y, s);
+                if l.abs_max() > 1e-6 {
+                    return Some(format!(
+                        "a lamp shut in a closed box whose floor lies {gap:.1e} below it: no \
+                         light leaves the box, yet pixel ({x}, {y}) got {l}; a light sample counts \
+                         only when its shadow ray, run the whole way to the light's point, is \
+                         clear"
+                    ));
+                }
             }
         }
     }
