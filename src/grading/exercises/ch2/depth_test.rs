@@ -22,7 +22,13 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
         (2, f32::NAN, false), // NaN on an empty sample: nothing stored
         (2, inf, false),
         (0, 0.5, true),
+        // Zeros of both signs: equal, so the second of each pair is a tie.
+        (1, 0.0, true),
+        (1, -0.0, false),
+        (2, -0.0, true),
+        (2, 0.0, false),
     ];
+    let ties = [2, 10, 12];
     // A fourth sample holds a depth from before the first test, and no
     // test touches it: it must stay.
     let mut buffer = vec![inf, inf, inf, 9.0];
@@ -30,7 +36,7 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
     let mut tie_passed = false;
     for (i, (index, z, want)) in steps.into_iter().enumerate() {
         let got = f(&mut buffer, index, z);
-        tie_passed |= i == 2 && got;
+        tie_passed |= ties.contains(&i) && got;
         if got != want {
             fails.push((
                 1.0,
@@ -40,8 +46,13 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
             ));
         }
     }
-    let expected = [0.5, 2.0, inf, 9.0];
-    if buffer != expected {
+    // By bits: a tie of zeros keeps the zero drawn first.
+    let expected: [f32; 4] = [0.5, 0.0, -0.0, 9.0];
+    if buffer
+        .iter()
+        .map(|z| z.to_bits())
+        .ne(expected.iter().map(|z| z.to_bits()))
+    {
         fails.push((
             1.0,
             format!("buffer ends as {buffer:?}, expected {expected:?}"),
