@@ -157,6 +157,19 @@ fn hostile_files() -> Vec<(&'static str, &'static str, String)> {
              pub fn gradient_normal(sdf: &dyn Fn(Vec3) -> f32, p: Vec3, h: f32) -> Vec3 { Vec3::Z }\n"
                 .into(),
         ),
+        // A path that clears the scene's count of what it asked (its
+        // light samples, shadow rays, bounces).
+        (
+            "ch6-global-illumination",
+            "path_radiance",
+            "use glam::Vec3;\n\
+             use raystep::grading::exercises::paths::{self, PathScene};\n\
+             pub fn path_radiance(scene: &PathScene, origin: Vec3, dir: Vec3, \
+             _rng: &mut dyn FnMut() -> f32) -> Vec3 {\n\
+             let l = scene.first_hit(origin, dir).map_or(Vec3::ZERO, |h| h.emitted);\n\
+             paths::reset_tally();\n l\n}\n"
+                .into(),
+        ),
         // Right for its first calls only.
         (
             "ch6-global-illumination",
@@ -239,6 +252,7 @@ fn hostile_exercises_fail_and_leave_nothing_behind() {
             "ch4/sphere_sdf",
             "ch4/gradient_normal",
             "ch6/mis_weight",
+            "ch6/path_radiance",
             "--timeout",
             "3",
             "--json",
@@ -264,6 +278,7 @@ fn hostile_exercises_fail_and_leave_nothing_behind() {
     refused("ch3/bvh_traversal", "may not use `std::thread`");
     refused("ch4/sphere_sdf", "no_mangle");
     refused("ch4/gradient_normal", "may not use `include_str!`");
+    refused("ch6/path_radiance", "may not use `reset_tally`");
 
     // What the student's code prints is never read as a grade.
     let look_at = line(&text, "ch1/look_at");
