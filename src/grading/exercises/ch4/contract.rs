@@ -310,6 +310,14 @@ pub fn cases() -> Vec<Case> {
             },
         ),
         case(
+            "a wall tilted 45° between x and y, 2^20 m along x (the coordinates' spacing 1/16 there): \
+             the normal's difference step is ε at the hit, 1 m, not a fixed fraction of a metre",
+            Clause::Normal,
+            far_tilted_wall,
+            (Vec3::new(1_048_512.0, 0.0, 0.0), Vec3::X),
+            m,
+        ),
+        case(
             "a wall whose distance function overstates by half: the first step lands inside, at f = -0.75",
             Clause::Overshoot,
             overshooting_wall,
@@ -344,9 +352,9 @@ pub type Answer = (Option<(f32, Vec3)>, u32);
 /// 1e-5 relative (the walls make every right tracer's steps exact, so
 /// this only allows another order of the same arithmetic; the nearest
 /// wrong answer, one step more or less, is 6e-5 away), the normal to 1e-3
-/// (every wall's gradient points exactly along z, so a right normal is
-/// exactly ±z; the nearest wrong one, unnormalised or turned, is 0.5 or 2
-/// away).
+/// (a wall's gradient comes out the same from every right tracer: along z
+/// exactly, or for the far tilted wall from the same six exact points;
+/// the nearest wrong one, unnormalised or turned, is 0.5 or 2 away).
 pub fn judge(
     case: &Case,
     got: Answer,

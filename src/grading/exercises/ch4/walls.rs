@@ -42,6 +42,17 @@ pub(super) fn overshooting_wall(p: Vec3) -> f32 {
     1.5 * p.z
 }
 
+/// A wall through (2^20, 0, 0) tilted 45° between x and y: along the x
+/// axis its function is half the distance to x = 2^20, exact in f32, so
+/// from x = 2^20 − 64 the steps are 32, 16, …, 1, and ε there is 8 f32
+/// spacings of x (1 − 10⁻⁶): the 7th evaluation (f = 1/2) hits at
+/// x = 2^20 − 1. Its normal (−1, 1, 0)/√2 needs the contract's difference
+/// step, ε at p: there x moves in steps of 1/16, so a step of 10⁻² rounds
+/// away in x and leaves only the y part of the gradient.
+pub(super) fn far_tilted_wall(p: Vec3) -> f32 {
+    0.5 * (1_048_576.0 - p.x) + 0.5 * p.y
+}
+
 /// A ball of radius 1 6,000 m along x: ε at its surface is 5.7e-3, and
 /// a difference step of 10⁻⁴ vanishes in the rounding of x there.
 pub(super) fn far_ball(p: Vec3) -> f32 {
