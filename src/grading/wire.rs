@@ -217,6 +217,7 @@ impl Wire for paths::Tally {
         for [a, b, c, d] in t.cosine_quarters {
             (a, b, c, d).put(out);
         }
+        t.light_from_bounce_numbers.put(out);
     }
     fn get(input: &mut &[u8]) -> Option<Self> {
         let (bounces, vertices, light_samples, lights_found) = Wire::get(input)?;
@@ -227,6 +228,7 @@ impl Wire for paths::Tally {
             let (a, b, c, d) = Wire::get(input)?;
             *q = [a, b, c, d];
         }
+        let light_from_bounce_numbers = Wire::get(input)?;
         Some(paths::Tally {
             bounces,
             vertices,
@@ -237,6 +239,7 @@ impl Wire for paths::Tally {
             below,
             over_budget,
             cosine_quarters,
+            light_from_bounce_numbers,
         })
     }
 }

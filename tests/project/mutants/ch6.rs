@@ -39,6 +39,9 @@ enum Bug {
     /// The shadow ray stopped at 99 % of the light's distance (an
     /// occluder close to the light is missed).
     ShadowShort,
+    /// The light sample at each surface after the first drawn from the
+    /// two numbers of the bounce that reached it.
+    LightFromBounceNumbers,
     /// The light sample without its cos θ at the hit.
     LightWithoutCos,
     /// No light sample at all (and no emission on bounces: only Le).
@@ -68,10 +71,15 @@ fn path(
     };
     let mut beta = Vec3::ONE;
     let mut depth = 0;
+    let mut bounce_numbers = None;
     loop {
         let f = hit.albedo * FRAC_1_PI;
         if bug != Bug::NoLightSample {
-            if let Some(ls) = scene.sample_light(&hit, Vec2::new(rng(), rng())) {
+            let u = match (bug, bounce_numbers) {
+                (Bug::LightFromBounceNumbers, Some(u)) => u,
+                _ => Vec2::new(rng(), rng()),
+            };
+            if let Some(ls) = scene.sample_light(&hit, u) {
                 let cos = hit.n.dot(ls.wi);
                 let visible = match bug {
                     Bug::NoShadowRay => true,
@@ -92,7 +100,9 @@ fn path(
                 }
             }
         }
-        let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
+        let u = Vec2::new(rng(), rng());
+        bounce_numbers = Some(u);
+        let (wi, pdf) = scene.sample_cosine(&hit, u);
         if pdf <= 0.0 {
             break;
         }
@@ -205,6 +215,14 @@ fn light_through_an_occluder_fails_even_when_it_is_close_to_the_light() {
     // that stops 1 % short of the lamp, lets its light out.
     fails_with(mutant!(Bug::ShadowIgnored), paths::LIGHT_THROUGH_OCCLUDER);
     fails_with(mutant!(Bug::ShadowShort), paths::LIGHT_THROUGH_OCCLUDER);
+}
+
+#[test]
+fn a_light_sample_from_the_numbers_of_the_bounce_before_it_fails() {
+    fails_with(
+        mutant!(Bug::LightFromBounceNumbers),
+        paths::LIGHT_FROM_BOUNCE_NUMBERS,
+    );
 }
 
 #[test]

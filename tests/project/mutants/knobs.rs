@@ -722,6 +722,8 @@ pub struct SceneKnobs {
     pub h: NormalStep,
     /// The floor under the normal's step (the solution: 1e-4).
     pub h_floor: Option<f32>,
+    /// A ceiling over it (the solution: none).
+    pub h_cap: Option<f32>,
     /// The normal where the gradient vanishes is d, not -d.
     pub fallback_along: bool,
     /// The normal turned round only where n · d exceeds this (the
@@ -740,6 +742,7 @@ impl Default for SceneKnobs {
             eps: MarchEps::AtPoint,
             h: NormalStep::AtHit,
             h_floor: Some(1e-4),
+            h_cap: None,
             fallback_along: false,
             flip_above: 0.0,
             fallback_below: None,
@@ -787,6 +790,7 @@ pub fn trace_scene(
         NormalStep::Fixed => march.epsilon,
     };
     let h = k.h_floor.map_or(h, |floor| h.max(floor));
+    let h = k.h_cap.map_or(h, |cap| h.min(cap));
     let partial = |axis: Vec3| (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h);
     let gradient = Vec3::new(partial(Vec3::X), partial(Vec3::Y), partial(Vec3::Z));
     let short = k.fallback_below.is_some_and(|l| gradient.length() < l);

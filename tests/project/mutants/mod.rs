@@ -23,6 +23,7 @@ pub mod fresh_fourth;
 pub mod fresh_new;
 pub mod fresh_ninth;
 pub mod fresh_seventh;
+pub mod fresh_sixteenth;
 pub mod fresh_sixth;
 pub mod fresh_tenth;
 pub mod fresh_third;

@@ -78,6 +78,12 @@ pub const NO_NEE: Symptom = Symptom {
     name: "no light sample at each surface",
 };
 
+/// A light sample drawn from the numbers of the bounce that reached its
+/// surface.
+pub const LIGHT_FROM_BOUNCE_NUMBERS: Symptom = Symptom {
+    name: "a light sample reuses the numbers of the bounce before it",
+};
+
 /// Light samples without a shadow ray.
 pub const NO_SHADOW_RAY: Symptom = Symptom {
     name: "light samples without a shadow ray",
@@ -89,7 +95,7 @@ pub const CORNELL_DIFFERS: Symptom = Symptom {
 };
 
 /// Every symptom [`check_path_radiance`] can name.
-pub const SYMPTOMS: [Symptom; 17] = [
+pub const SYMPTOMS: [Symptom; 18] = [
     NO_ROULETTE,
     UNBOUNDED_THROUGHPUT,
     LIGHT_FROM_BEHIND,
@@ -105,6 +111,7 @@ pub const SYMPTOMS: [Symptom; 17] = [
     BELOW_SURFACE,
     NO_NEE,
     NO_SHADOW_RAY,
+    LIGHT_FROM_BOUNCE_NUMBERS,
     CORNELL_DIFFERS,
     LIGHT_SAMPLE_WRONG,
 ];
@@ -162,6 +169,7 @@ impl FurnaceRun {
         a.shadow_rays += b.shadow_rays;
         a.below += b.below;
         a.over_budget |= b.over_budget;
+        a.light_from_bounce_numbers += b.light_from_bounce_numbers;
         for (x, y) in a.cosine_quarters.iter_mut().zip(b.cosine_quarters) {
             for (x, y) in x.iter_mut().zip(y) {
                 *x += y;
@@ -291,6 +299,14 @@ pub fn judge_furnace_of(
             r.unshadowed
         );
         return (bad, detail, Some(NO_SHADOW_RAY));
+    }
+    if t.light_from_bounce_numbers > 0 {
+        let detail = format!(
+            "closed furnace: {} light samples were drawn from the same two numbers as the bounce \
+             that reached their surface (the light point then depends on where the surface is)",
+            t.light_from_bounce_numbers
+        );
+        return (bad, detail, Some(LIGHT_FROM_BOUNCE_NUMBERS));
     }
     if t.shadow_rays * 2 < t.lights_found {
         let detail = format!(

@@ -81,13 +81,21 @@ pub struct Tally {
     /// The numbers handed to `sample_cosine`, by quarter of [0, 1): u.x's,
     /// then u.y's (a number outside [0, 1) in the first or last).
     pub cosine_quarters: [[u32; 4]; 2],
+    /// Light samples drawn from the very numbers of the bounce that
+    /// reached their surface (the light point then depends on where the
+    /// surface is: biased).
+    pub light_from_bounce_numbers: u32,
 }
 
 thread_local! {
     static TALLY: Cell<Tally> = const { Cell::new(Tally {
         bounces: 0, vertices: 0, light_samples: 0, lights_found: 0, lights_useful: 0,
         shadow_rays: 0, below: 0, over_budget: false, cosine_quarters: [[0; 4]; 2],
+        light_from_bounce_numbers: 0,
     }) };
+    /// The numbers and the surface point of this thread's last
+    /// `sample_cosine`, as bits.
+    static LAST_BOUNCE: Cell<Option<([u32; 2], [u32; 3])>> = const { Cell::new(None) };
 }
 
 /// Path `i` of a furnace run drawn from `seed`: its direction from
@@ -112,6 +120,7 @@ pub(super) const FURNACE_ORIGIN: Vec3 = Vec3::new(0.3, -0.2, 0.1);
 /// Starts a fresh [`Tally`] on this thread.
 pub fn reset_tally() {
     TALLY.with(|t| t.set(Tally::default()));
+    LAST_BOUNCE.with(|b| b.set(None));
 }
 
 /// This thread's [`Tally`] since the last [`reset_tally`].
@@ -293,6 +302,16 @@ impl PathScene {
     /// check's furnaces, the sampler found none).
     pub fn sample_light(&self, at: &Hit, u: Vec2) -> Option<LightSample> {
         count(|t| t.light_samples += 1);
+        let bits = (
+            u.to_array().map(f32::to_bits),
+            at.p.to_array().map(f32::to_bits),
+        );
+        if LAST_BOUNCE
+            .with(|b| b.get())
+            .is_some_and(|(v, p)| v == bits.0 && p != bits.1)
+        {
+            count(|t| t.light_from_bounce_numbers += 1);
+        }
         let s = match &self.inner {
             Inner::World(w) => w
                 .lights
@@ -324,6 +343,12 @@ impl PathScene {
     /// A direction about `at.n` with density cos θ / π, from `u`: the
     /// direction and its density.
     pub fn sample_cosine(&self, at: &Hit, u: Vec2) -> (Vec3, f32) {
+        LAST_BOUNCE.with(|b| {
+            b.set(Some((
+                u.to_array().map(f32::to_bits),
+                at.p.to_array().map(f32::to_bits),
+            )))
+        });
         let quarter = |v: f32| ((v * 4.0) as usize).min(3);
         count(|t| {
             t.cosine_quarters[0][quarter(u.x)] += 1;
