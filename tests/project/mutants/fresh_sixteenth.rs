@@ -3,9 +3,10 @@
 //! capped where the scene is far, a filter that also drops zeros), and
 //! random numbers reused where they must be fresh. Of 68 wrong ones, 8
 //! passed under at least one of three seeds; these five, written as
-//! closures over the course's solutions, now fail under every seed tried. (The path loop that reuses a bounce's
-//! numbers for the next light sample, and the shadow ray cut short, are in
-//! `ch6.rs`, with their symptoms.)
+//! closures over the course's solutions, now fail under every seed tried.
+//! (The path loop that reuses a bounce's numbers for the next light
+//! sample, and the shadow ray cut short, are in `ch6.rs`, with their
+//! symptoms.)
 
 use glam::{Vec2, Vec3};
 use raystep::grading::exercise::Check;
