@@ -1,14 +1,12 @@
 //! What an exercise file may not use, found in its text before it is
 //! compiled: the parts of the standard library that reach outside the
 //! function (processes, threads, files, the environment, the network, the
-//! operating system), `extern` (foreign functions, other crates), the
-//! ways to read other files at compile time (`#[path]`, `mod x;`,
-//! `include!`), and the call that clears the grader's count of what a
-//! path asks of its scene (`reset_tally`). An exercise is a function of
-//! its arguments; none of this is needed to write one. (`unsafe` is
-//! refused by the compiler: the exercises are built with
-//! `#![forbid(unsafe_code)]`, which also refuses `#[no_mangle]` and
-//! `#[export_name]`.)
+//! operating system), `extern` (foreign functions, other crates), and
+//! the ways to read other files at compile time (`#[path]`, `mod x;`,
+//! `include!`). An exercise is a function of its arguments; none of this
+//! is needed to write one. (`unsafe` is refused by the compiler: the
+//! exercises are built with `#![forbid(unsafe_code)]`, which also refuses
+//! `#[no_mangle]` and `#[export_name]`.)
 //!
 //! The scan reads tokens, not text: comments and string literals are
 //! skipped, so a comment that names `std::thread` is no refusal, and
@@ -190,12 +188,6 @@ pub fn refusals(text: &str) -> Vec<Refusal> {
             "extern" => refuse(
                 *line,
                 "`extern` (foreign functions and other crates are not part of an exercise)".into(),
-            ),
-            "reset_tally" => refuse(
-                *line,
-                "`reset_tally` (the grader counts what a path asks of its scene; the path may not \
-                 reset the count)"
-                    .into(),
             ),
             "include" | "include_str" | "include_bytes" if is_punct(next, '!') => refuse(
                 *line,

@@ -157,7 +157,7 @@ fn hostile_files() -> Vec<(&'static str, &'static str, String)> {
              pub fn gradient_normal(sdf: &dyn Fn(Vec3) -> f32, p: Vec3, h: f32) -> Vec3 { Vec3::Z }\n"
                 .into(),
         ),
-        // A path that clears the scene's count of what it asked (its
+        // A path that would clear the scene's count of what it asked (its
         // light samples, shadow rays, bounces).
         (
             "ch6-global-illumination",
@@ -278,7 +278,9 @@ fn hostile_exercises_fail_and_leave_nothing_behind() {
     refused("ch3/bvh_traversal", "may not use `std::thread`");
     refused("ch4/sphere_sdf", "no_mangle");
     refused("ch4/gradient_normal", "may not use `include_str!`");
-    refused("ch6/path_radiance", "may not use `reset_tally`");
+    // The scene's own count is the grader's: the crate the file is built
+    // in does not reach it.
+    refused("ch6/path_radiance", "reset_tally");
 
     // What the student's code prints is never read as a grade.
     let look_at = line(&text, "ch1/look_at");
