@@ -211,14 +211,35 @@ pub fn unbounded_throughput(f: PathFn) -> Option<String> {
 /// facing up: from every point of the floor the lamp lies below the
 /// horizon (cos θ < 0), and no surface stands in between to stop a
 /// shadow ray, so only the path's own test keeps that light out.
-const OPEN_FLOOR: &str = r#"
+fn open_floor() -> String {
+    format!(
+        r#"
 [camera]
 eye = [0.0, 3.0, 3.0]
 target = [0.0, 0.0, 0.0]
 fov = 40.0
 width = 24
 height = 24
+{FLOOR_AND_GLOW}
+[[objects]]
+shape = "rectangle"
+size = [2.0, 2.0]
+rotate = {{ axis = [1.0, 0.0, 0.0], degrees = -90.0 }}
+material = "floor"
 
+[[objects]]
+shape = "rectangle"
+size = [1.0, 1.0]
+rotate = {{ axis = [1.0, 0.0, 0.0], degrees = -90.0 }}
+translate = [2.0, -0.5, 0.0]
+material = "glow"
+"#
+    )
+}
+
+/// The materials of [`open_floor`] and [`shaded_lamp_scene`]: a grey
+/// floor, and a black lamp that glows.
+const FLOOR_AND_GLOW: &str = r#"
 [[materials]]
 name = "floor"
 reflectance = [0.8, 0.8, 0.8]
@@ -227,27 +248,14 @@ reflectance = [0.8, 0.8, 0.8]
 name = "glow"
 reflectance = [0.0, 0.0, 0.0]
 emission = [5.0, 5.0, 5.0]
-
-[[objects]]
-shape = "rectangle"
-size = [2.0, 2.0]
-rotate = { axis = [1.0, 0.0, 0.0], degrees = -90.0 }
-material = "floor"
-
-[[objects]]
-shape = "rectangle"
-size = [1.0, 1.0]
-rotate = { axis = [1.0, 0.0, 0.0], degrees = -90.0 }
-translate = [2.0, -0.5, 0.0]
-material = "glow"
 "#;
 
-/// Whether `f` lets light in from below the surface: in [`OPEN_FLOOR`],
+/// Whether `f` lets light in from below the surface: in [`open_floor`],
 /// every path's radiance is a sum of non-negative terms, so a negative
 /// channel means a light sample with cos θ < 0 was counted.
 pub fn light_from_behind(f: PathFn) -> Option<String> {
     let scene =
-        Scene::from_text(OPEN_FLOOR, "open-floor").expect("the open floor is a valid scene");
+        Scene::from_text(&open_floor(), "open-floor").expect("the open floor is a valid scene");
     let camera = Camera::of(&scene);
     let paths = PathScene::new(&scene);
     let what = "a floor lit only from below its horizon";
@@ -292,21 +300,12 @@ target = [0.0, 0.3, 0.0]
 fov = 50.0
 width = 24
 height = 24
-
-[[materials]]
-name = "white"
-reflectance = [0.8, 0.8, 0.8]
-
-[[materials]]
-name = "glow"
-reflectance = [0.0, 0.0, 0.0]
-emission = [5.0, 5.0, 5.0]
-
+{FLOOR_AND_GLOW}
 [[objects]]
 shape = "rectangle"
 size = [4.0, 4.0]
 rotate = {{ axis = [1.0, 0.0, 0.0], degrees = -90.0 }}
-material = "white"
+material = "floor"
 
 [[objects]]
 shape = "rectangle"
@@ -319,7 +318,7 @@ material = "glow"
 shape = "box"
 size = [0.6, {height:?}, 0.6]
 translate = [0.0, {:?}, 0.0]
-material = "white"
+material = "floor"
 "#,
         top - height / 2.0
     )
