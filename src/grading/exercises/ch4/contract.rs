@@ -137,6 +137,14 @@ pub fn cases() -> Vec<Case> {
             budget(256),
         ),
         case(
+            "a floor 2^-8 below the ray and a wall 0.75 m ahead, a budget of 256: 192 steps of 2^-8, \
+             the hit at the 193rd evaluation (no budget of its own below the one given)",
+            Clause::Budget,
+            corridor,
+            (Vec3::ZERO, Vec3::X),
+            budget(256),
+        ),
+        case(
             "the same wall, a budget of u32::MAX evaluations (no limit to speak of)",
             Clause::Budget,
             half_wall,
