@@ -51,8 +51,8 @@ fn area_pdf_values(f: AreaPdfFn) -> Check {
     // 10⁻¹¹ to 10⁻⁵ and a tenth from 10³ to 10¹¹: as far as pdf · d³, the
     // other right way round, stays in f32's range), up to 10³ times that
     // from the origin (grazing ones up to 10^3.5), either face, pdfs over
-    // six decades, lights seen exactly edge-on, and lights seen at grazing
-    // angles.
+    // six decades, lights seen exactly edge-on, at grazing angles, and
+    // nearly face-on.
     let mut draws = Draws::new(53);
     let mut last: Option<(Vec3, Vec3, f32)> = None;
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
@@ -83,6 +83,12 @@ fn area_pdf_values(f: AreaPdfFn) -> Check {
             if draws.unit() < 0.5 {
                 x = draws.direction() * scale * draws.decades(2.5, 3.5);
             }
+        } else if kind < 0.4 {
+            // Nearly face-on: θl from 1° to 2.5°, where a cosine taken as
+            // 1 is 1.5·10⁻⁴ to 10⁻³ off.
+            let tilt = draws.range(1.0, 2.5).to_radians();
+            let side = offset.any_orthonormal_vector() * tilt.sin();
+            n = (offset * tilt.cos() + side) * draws.sign();
         }
         let mut y = x + offset * scale;
         // A tenth keep the last light point and its normal, seen from

@@ -1,7 +1,8 @@
 //! Capstone 5's drawn cases: a shading point and a light point anywhere
 //! (up to 10⁵ times their distance from the origin), at any scale, each
-//! facing any way (a fifth with the light near p's horizon), the light's area, emission and the
-//! albedo drawn too, and a fifth of them blocked. The answer is the
+//! facing any way (a fifth with the light near p's horizon), the light's
+//! area, emission and the albedo drawn too (a tenth of the albedos dark,
+//! down to 10⁻⁶), and a fifth of them blocked. The answer is the
 //! estimator's closed form worked out in f64; cases where a cosine is so
 //! small that rounding decides its sign are left out.
 
@@ -21,9 +22,13 @@ type Direct = fn(Vec3, Vec3, Vec3, Vec3, Vec3, f32, Vec3, &dyn Fn(Vec3, Vec3) ->
 pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
     let mut draws = Draws::new(54);
     let (mut black, mut black_asked) = (Draws::new(154), false);
+    // A tenth of the albedos 10⁻⁶ to 10⁻³ times as bright (dark is not
+    // black), from a stream of their own.
+    let mut dark = Draws::new(254);
     let mut last: Option<(Vec3, Vec3, bool)> = None;
     worst_drawn((0..draws.count(100, 400)).filter_map(|_| {
         draws.next_case();
+        dark.next_case();
         let s = draws.decades(-2.0, 4.0);
         // A third up to 10⁵ times their size from the origin (where the
         // plane's equation in absolute coordinates rounds).
@@ -52,7 +57,10 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
             _ => (-1.0, 2.0),
         };
         let le = Vec3::new(draws.unit(), draws.unit(), draws.unit()) * draws.decades(dim, bright);
-        let rho = Vec3::new(draws.unit(), draws.unit(), draws.unit());
+        let mut rho = Vec3::new(draws.unit(), draws.unit(), draws.unit());
+        if dark.unit() < 0.1 {
+            rho *= dark.decades(-6.0, -3.0);
+        }
         let mut blocked = draws.unit() < 0.2;
         // A quarter keep the last light point, seen from another p, and
         // blocked or not afresh: visibility is a question about p too.
