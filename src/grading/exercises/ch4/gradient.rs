@@ -122,8 +122,13 @@ fn gradient_normal_values(f: NormalFn) -> Check {
     // against the reference's central differences (the same h: the same
     // truncation, and rounding far below the tolerance).
     let mut draws = Draws::new(44);
+    // From a stream of their own, a sixth of the bounds within 1 % of a
+    // distance, k from 1 ± 0.2 % to 1 ± 0.9 % (a gradient nearly unit is
+    // not unit: it is normalised all the same).
+    let mut nearly = Draws::new(144);
     let drawn = worst_drawn((0..draws.count(50, 200)).map(|_| {
         draws.next_case();
+        nearly.next_case();
         let r = draws.decades(-2.0, 2.0);
         let centre = draws.place_for(r, 1.0);
         let out = draws.direction();
@@ -135,6 +140,10 @@ fn gradient_normal_values(f: NormalFn) -> Check {
             1.0
         } else {
             draws.decades(-1.0, 1.0)
+        };
+        let k = match nearly.unit() < 1.0 / 6.0 {
+            true => 1.0 + nearly.sign() * nearly.range(0.002, 0.009),
+            false => k,
         };
         let sdf = move |q: Vec3| k * ((q - centre).length() - r);
         let want = gradient_central(&sdf, p, h).normalize();

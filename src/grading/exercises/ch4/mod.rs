@@ -166,11 +166,15 @@ fn sphere_sdf_values(f: SdfFn) -> Check {
     // A quarter of them asked at the point asked just before, about
     // another sphere around it (one point, several spheres: a scene's).
     let mut draws = Draws::new(41);
+    // From a stream of their own, a tenth of the new centres within 10⁻⁶
+    // to 10⁻³ of the origin (near it is not at it).
+    let mut near_origin = Draws::new(141);
     let mut last: Option<Vec3> = None;
     // (Thousands of them: the answer after the 2,000th call counts as much
     // as the first.)
     let drawn = worst_drawn((0..draws.count(3000, 5000)).map(|_| {
         draws.next_case();
+        near_origin.next_case();
         let r = draws.decades(-3.0, 3.0);
         // A third of the points within 10⁻⁶ to 10⁻² radii of the surface.
         let out = if draws.unit() < 1.0 / 3.0 {
@@ -181,7 +185,11 @@ fn sphere_sdf_values(f: SdfFn) -> Check {
         let (p, c) = match last.filter(|_| draws.unit() < 0.25) {
             Some(p) => (p, p - draws.direction() * r * out),
             None => {
-                let c = draws.place_for(r, 3.0);
+                let placed = draws.place_for(r, 3.0);
+                let c = match near_origin.unit() < 0.1 {
+                    true => near_origin.direction() * near_origin.decades(-6.0, -3.0),
+                    false => placed,
+                };
                 (c + draws.direction() * r * out, c)
             }
         };
