@@ -331,26 +331,25 @@ fn off_image(f: RasterFn) -> Check {
 fn degenerate(f: RasterFn) -> Check {
     let t =
         |a: (f32, f32), b: (f32, f32), c: (f32, f32)| [a, b, c].map(|(x, y)| Vec3::new(x, y, 2.0));
-    let nan = f32::NAN;
-    let tris = [
+    let flat = [
         t((2.5, 5.5), (10.5, 5.5), (6.5, 5.5)),
         t((4.5, 2.5), (4.5, 20.5), (4.5, 9.5)),
         t((2.5, 2.5), (8.5, 8.5), (5.5, 5.5)),
         t((8.5, 8.5), (2.5, 2.5), (20.5, 20.5)),
         t((3.5, 3.5), (3.5, 3.5), (3.5, 3.5)),
-        t((nan, 3.0), (10.0, 3.0), (5.0, 10.0)),
-        t((f32::INFINITY, 3.0), (10.0, 3.0), (5.0, 10.0)),
-        {
-            let mut far = t((2.5, 3.0), (10.0, 3.0), (5.0, 10.0));
-            far[0].z = f32::INFINITY;
-            far
-        },
-        {
-            let mut lost = t((2.5, 3.0), (10.0, 3.0), (5.0, 10.0));
-            lost[2].z = f32::NAN;
-            lost
-        },
     ];
+    // Each corner in turn with an x, y or depth that is not finite (a
+    // depth of ±∞ gives a weight 1/z of 0, which draws if nothing stops
+    // it).
+    let (inf, nan) = (f32::INFINITY, f32::NAN);
+    let not_finite = (0..3).flat_map(|corner| {
+        [(0, nan), (1, inf), (2, inf), (2, -inf), (2, nan)].map(|(axis, v)| {
+            let mut tri = t((2.5, 3.0), (10.0, 3.0), (5.0, 10.0));
+            tri[corner][axis] = v;
+            tri
+        })
+    });
+    let tris: Vec<[Vec3; 3]> = flat.into_iter().chain(not_finite).collect();
     for (k, tri) in tris.iter().enumerate() {
         crate::progress(format_args!(
             "rasterizing triangle without area {k}: {}",

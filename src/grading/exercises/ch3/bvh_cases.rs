@@ -75,6 +75,11 @@ pub(super) fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
             inf,
             "from just above the top triangle, a hit closer than 10⁻⁴",
         ),
+        (
+            Ray::new(Vec3::new(0.5, 0.0, -1.0 + 2e-5), -Vec3::Z).expect("a ray"),
+            5e-5,
+            "from 2·10⁻⁵ above the top triangle, t_max = 5·10⁻⁵: a hit however short the interval",
+        ),
     ];
     (ReadableBvh::build(&stack), cases)
 }

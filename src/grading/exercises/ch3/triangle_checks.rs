@@ -116,6 +116,30 @@ fn barycentric_inside_values(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Ch
             [Vec3::ZERO, Vec3::X, Vec3::X * 2.0],
             None,
         ),
+        // Triangles in the diagonal planes x = y, y = z, z = x and
+        // x + y + z = 2: two or three of the normal's components equal
+        // (a test that picks an axis to drop must not drop the one that
+        // is 0).
+        (
+            Vec3::splat(0.25),
+            [Vec3::ZERO, Vec3::new(1.0, 1.0, 0.0), Vec3::Z],
+            Some((0.25, 0.25)),
+        ),
+        (
+            Vec3::splat(0.25),
+            [Vec3::ZERO, Vec3::new(0.0, 1.0, 1.0), Vec3::X],
+            Some((0.25, 0.25)),
+        ),
+        (
+            Vec3::splat(0.25),
+            [Vec3::ZERO, Vec3::new(1.0, 0.0, 1.0), Vec3::Y],
+            Some((0.25, 0.25)),
+        ),
+        (
+            Vec3::new(1.0, 0.5, 0.5),
+            [Vec3::X * 2.0, Vec3::Y * 2.0, Vec3::Z * 2.0],
+            Some((0.25, 0.25)),
+        ),
     ];
     // Drawn triangles from 10⁻³ to 10³ across, up to 10³ times their size
     // from the origin (a fifth 10^3.5 to 10⁴ times, in a plane z = const
