@@ -73,10 +73,9 @@ fn shortcuts_and_slips_in_chapters_1_to_3_fail() {
                 // The slip's guard never sees corner 2: an infinite depth
                 // there weighs 1/z = 0, as f32::MAX's nearly does.
                 let mut v = v;
-                if v[..2].iter().all(|p| p.is_finite()) && v[2].truncate().is_finite() {
-                    if v[2].z.is_infinite() {
-                        v[2].z = f32::MAX.copysign(v[2].z);
-                    }
+                let first_two = v[..2].iter().all(|p| p.is_finite());
+                if first_two && v[2].truncate().is_finite() && v[2].z.is_infinite() {
+                    v[2].z = f32::MAX.copysign(v[2].z);
                 }
                 knobs::rasterize(RasterKnobs::default(), v, c, (w, h), depth, image)
             })
