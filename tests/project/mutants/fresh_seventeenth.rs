@@ -1,14 +1,15 @@
 //! The seventeenth fresh set (2026-11-29): shortcuts taken for speed (a
 //! cap on a loop, a cull, a cosine snapped to 1, a normalisation skipped)
 //! and copy-paste slips in one of three symmetric lines. Of 106 wrong
-//! ones, 10 passed under at least one of three seeds; these, written as
-//! closures over the course's solutions, now fail under every seed tried.
+//! ones, 10 passed under at least one of three seeds, and an eleventh
+//! under one of the next two; these, written as closures over the
+//! course's solutions, now fail under every seed tried.
 
 use glam::{Vec2, Vec3};
 use raystep::ch1_projection::camera::Camera;
 use raystep::ch4_implicit_surfaces::march::March;
 use raystep::grading::exercise::Check;
-use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5};
+use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6};
 
 use super::fails_every;
 use super::knobs::{self, BvhKnobs, DirectKnobs, MarchKnobs, RasterKnobs, SceneKnobs};
@@ -134,6 +135,13 @@ fn shortcuts_in_chapters_4_and_5_fail() {
                 c if c > 0.999 => pdf * d2,
                 c => pdf * d2 / c,
             }
+        })
+    });
+    fails("no roulette for a value under 1e-3", || {
+        ch6::check_russian_roulette(|value, q, u| match (value.abs() < 1e-3, u < q) {
+            (true, _) => value,
+            (false, true) => value / q,
+            (false, false) => 0.0,
         })
     });
     fails("nothing where the albedo is under 1e-3", || {

@@ -274,9 +274,11 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
         "a ray along -z 10⁻⁶ inside its box's side x = 10, the hit 1,000 away".to_string()
     });
     progress("rays at a flat triangle");
-    let (flat, flat_rays) = super::bvh_cases::flat_triangle();
-    for (ray, what) in &flat_rays {
-        compare(&flat, ray, f32::INFINITY, &|| what.clone());
+    for far in [false, true] {
+        let (flat, flat_rays) = super::bvh_cases::flat_triangle(far);
+        for (ray, what) in &flat_rays {
+            compare(&flat, ray, f32::INFINITY, &|| what.clone());
+        }
     }
     progress("a chain deeper than a fixed stack");
     let (deep, deep_rays) = super::bvh_deep::deep_chain();

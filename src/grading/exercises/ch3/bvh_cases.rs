@@ -87,21 +87,40 @@ pub(super) fn stack_cases() -> (ReadableBvh, Vec<(Ray, f32, &'static str)>) {
 /// One flat triangle (its box has no thickness: the box is entered where
 /// the triangle is hit, to rounding), and 500 rays from anywhere at drawn
 /// points of it: the hit is in (0, t_max), wherever the box starts.
-pub(super) fn flat_triangle() -> (ReadableBvh, Vec<(Ray, String)>) {
-    let mut d = Draws::new(36);
+/// `far`: the triangle 10^3.5 to 10^4 of its size from the origin, the rays
+/// from 0.05 to 1 of its size away and aimed a hair off their drawn
+/// points, so that a hit point rounds by far more than 10⁻⁵ of t (a t
+/// measured back from that point is not the test's).
+pub(super) fn flat_triangle(far: bool) -> (ReadableBvh, Vec<(Ray, String)>) {
+    let mut d = Draws::new(if far { 37 } else { 36 });
     let z = d.range(-2.0, 2.0);
+    let shift = match far {
+        true => d.direction() * d.decades(3.5, 4.0),
+        false => Vec3::ZERO,
+    };
     let flat = [
         Vec3::new(d.range(-1.0, 0.0), d.range(-1.0, 0.0), z),
         Vec3::new(d.range(0.0, 1.0), d.range(-1.0, 0.0), z),
         Vec3::new(d.range(-1.0, 1.0), d.range(0.0, 1.0), z),
-    ];
+    ]
+    .map(|p| p + shift);
     let rays = (0..500)
         .filter_map(|_| {
             d.next_case();
             let (u, v) = (d.range(0.05, 0.45), d.range(0.05, 0.45));
             let target = flat[0] + u * (flat[1] - flat[0]) + v * (flat[2] - flat[0]);
-            let origin = target + d.direction() * d.range(1.0, 10.0);
-            let ray = Ray::new(origin, target - origin).ok()?;
+            let away = match far {
+                true => d.range(0.05, 1.0),
+                false => d.range(1.0, 10.0),
+            };
+            let origin = target + d.direction() * away;
+            // Far, a hair off the drawn point: the hit is then where the
+            // line meets the plane, not a point f32 holds exactly.
+            let tilt = match far {
+                true => d.in_cube() * 0.01 * away,
+                false => Vec3::ZERO,
+            };
+            let ray = Ray::new(origin, target - origin + tilt).ok()?;
             Some((
                 ray,
                 format!("a flat triangle {flat:?}, a ray from {origin} at {target}"),

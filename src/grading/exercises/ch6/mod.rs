@@ -147,7 +147,17 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
     // The hand cases, then drawn ones: values over six decades (and of
     // either sign, one tiny), survival probabilities from 10⁻⁴ to 1.
     let mut draws = Draws::new(62);
-    let mut cases = vec![(3.0, 0.1), (0.7, 0.5), (2.0, 0.9), (5.0, 1.0), (-2.0, 0.5)];
+    // Small values too: a path's throughput of 10⁻⁵ or 10⁻²⁰ plays the
+    // same game (small is not zero, and it is not a reason to skip it).
+    let mut cases = vec![
+        (3.0, 0.1),
+        (0.7, 0.5),
+        (2.0, 0.9),
+        (5.0, 1.0),
+        (-2.0, 0.5),
+        (1e-5, 0.5),
+        (-3e-20, 0.25),
+    ];
     for k in 0..draws.count(4, 8) {
         draws.next_case();
         // The fourth a value from 10⁻³⁰ to 10⁻⁶: small is not zero.
