@@ -2,9 +2,9 @@
 //! (the sign of zero, degrees for radians) and in precision (a step
 //! capped where the scene is far, a filter that also drops zeros), and
 //! random numbers reused where they must be fresh. Of 68 wrong ones, 8
-//! passed under at least one of three seeds; these five and a sixth that
-//! passed one seed of the next two, written as
-//! closures over the course's solutions, now fail under every seed tried.
+//! passed under at least one of three seeds; these five, and a sixth
+//! that passed one seed of the next two, written as closures over the
+//! course's solutions, now fail under every seed tried.
 //! (The path loop that reuses a bounce's numbers for the next light
 //! sample, and the shadow ray cut short, are in `ch6.rs`, with their
 //! symptoms.)
