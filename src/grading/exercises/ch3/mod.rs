@@ -7,6 +7,7 @@ mod bvh;
 mod bvh_cases;
 mod bvh_deep;
 mod bvh_symptoms;
+mod inside_cases;
 mod ray_plane;
 pub mod sah;
 mod triangle_checks;

@@ -86,61 +86,7 @@ pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) ->
 
 /// [`check_barycentric_inside`]'s checks of the values.
 fn barycentric_inside_values(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Check {
-    let tri = [
-        Vec3::ZERO,
-        Vec3::new(2.0, 0.0, 0.0),
-        Vec3::new(0.0, 2.0, 0.0),
-    ];
-    let mut cases: Vec<(Vec3, [Vec3; 3], Option<Uv>)> = vec![
-        (Vec3::new(1.0, 0.5, 0.0), tri, Some((0.5, 0.25))),
-        (Vec3::ZERO, tri, Some((0.0, 0.0))),
-        (Vec3::new(1.0, 1.0, 0.0), tri, Some((0.5, 0.5))),
-        (Vec3::new(1.5, 1.5, 0.0), tri, None),
-        (Vec3::new(-0.1, 0.5, 0.0), tri, None),
-        // On the line of an edge (v or u exactly 0), beyond its ends.
-        (Vec3::new(3.0, 0.0, 0.0), tri, None),
-        (Vec3::new(-1.0, 0.0, 0.0), tri, None),
-        (Vec3::new(0.0, 3.0, 0.0), tri, None),
-        // A triangle standing in the plane x = 0 (seen edge-on from +z).
-        (
-            Vec3::new(0.0, 0.5, 0.5),
-            [
-                Vec3::ZERO,
-                Vec3::new(0.0, 2.0, 0.0),
-                Vec3::new(0.0, 0.0, 2.0),
-            ],
-            Some((0.25, 0.25)),
-        ),
-        (
-            Vec3::new(0.5, 0.5, 0.0),
-            [Vec3::ZERO, Vec3::X, Vec3::X * 2.0],
-            None,
-        ),
-        // Triangles in the diagonal planes x = y, y = z, z = x and
-        // x + y + z = 2: two or three of the normal's components equal
-        // (a test that picks an axis to drop must not drop the one that
-        // is 0).
-        (
-            Vec3::splat(0.25),
-            [Vec3::ZERO, Vec3::new(1.0, 1.0, 0.0), Vec3::Z],
-            Some((0.25, 0.25)),
-        ),
-        (
-            Vec3::splat(0.25),
-            [Vec3::ZERO, Vec3::new(0.0, 1.0, 1.0), Vec3::X],
-            Some((0.25, 0.25)),
-        ),
-        (
-            Vec3::splat(0.25),
-            [Vec3::ZERO, Vec3::new(1.0, 0.0, 1.0), Vec3::Y],
-            Some((0.25, 0.25)),
-        ),
-        (
-            Vec3::new(1.0, 0.5, 0.5),
-            [Vec3::X * 2.0, Vec3::Y * 2.0, Vec3::Z * 2.0],
-            Some((0.25, 0.25)),
-        ),
-    ];
+    let mut cases = super::inside_cases::hand_cases();
     // Drawn triangles from 10⁻³ to 10³ across, up to 10³ times their size
     // from the origin (a fifth 10^3.5 to 10⁴ times, in a plane z = const
     // so that p is exactly in it), and points in and around them; a tenth

@@ -39,7 +39,10 @@ pub(super) fn grid_spread(f: CosineFn) -> Option<Check> {
             }
         })
     };
-    if let Some(detail) = grid_moments(&z2, &azimuth) {
+    // The moments after the spread, which names the bigger mistakes.
+    let moments = grid_moments(&z2, &azimuth);
+    let (gz, ga) = (gap(z2), gap(azimuth));
+    if let (Some(detail), false) = (moments, gz > 0.02 || ga > 0.02) {
         return Some(Check {
             error: 1e9,
             tolerance: 5.0,
@@ -48,7 +51,6 @@ pub(super) fn grid_spread(f: CosineFn) -> Option<Check> {
             symptom: Some(NOT_COSINE),
         });
     }
-    let (gz, ga) = (gap(z2), gap(azimuth));
     (gz > 0.02 || ga > 0.02).then(|| Check {
         error: 1e9,
         tolerance: 5.0,
