@@ -10,7 +10,8 @@
 //!   (where some φ are negative);
 //! * the same φ for either winding (pi, pj, pk) or (pi, pk, pj) of the same
 //!   corners, each φ staying with its own corner;
-//! * `None` when the triangle has no area.
+//! * `None` when the triangle has no area (a sliver, however thin, has
+//!   one).
 //!
 //! Grade it with: `cargo grade ch2`
 

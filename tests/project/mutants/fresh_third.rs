@@ -215,7 +215,8 @@ fn inside_fat_eps(p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)> {
     (u >= -1e-3 && v >= -1e-3 && u + v <= 1.0 + 1e-3).then_some((u, v))
 }
 
-/// Correct: Ericson's normal equations from dot products.
+/// Ericson's normal equations from dot products, in f32: right but for
+/// slivers, whose determinant (their thinness squared) rounds to 0.
 fn inside_ericson(p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)> {
     let (v0, v1, v2) = (tri[1] - tri[0], tri[2] - tri[0], p - tri[0]);
     let (d00, d01, d11) = (v0.dot(v0), v0.dot(v1), v1.dot(v1));
@@ -234,7 +235,11 @@ fn barycentric_inside_mistake_fails() {
     fails("a fat ε of 1e-3", None, || {
         ch3::check_barycentric_inside(inside_fat_eps)
     });
-    passes("Ericson's normal equations", || {
+    // Right for most triangles, and once counted right here; but a sliver
+    // 1 : 8192 thin has an inside, and in f32 the normal equations'
+    // determinant (the thinness squared) rounds to 0 there (the stub says
+    // so since the seventeenth set).
+    fails("Ericson's normal equations in f32", None, || {
         ch3::check_barycentric_inside(inside_ericson)
     });
 }

@@ -114,6 +114,12 @@ fn project_point_values(f: fn(Vec3) -> Option<Vec2>) -> Check {
         (Vec3::new(-3.0, 0.0, -1.0), Some(Vec2::new(-3.0, 0.0))),
         (Vec3::new(0.2, -0.4, -4.0), Some(Vec2::new(0.05, -0.1))),
         (Vec3::new(0.0, 0.0, -1e6), Some(Vec2::ZERO)),
+        // A subnormal depth, z < 0 all the same: (2⁻¹²⁶, -2⁻¹²⁵, -2⁻¹²⁷)
+        // (1/z, 2¹²⁷, is still finite).
+        (
+            Vec3::new(2f32.powi(-126), -(2f32.powi(-125)), -(2f32.powi(-127))),
+            Some(Vec2::new(2.0, -4.0)),
+        ),
         // ... and points with no image.
         (Vec3::new(0.0, 0.0, 1.0), None),
         (Vec3::new(1.0, 1.0, 0.0), None),

@@ -62,5 +62,11 @@ pub(super) fn hand_cases() -> Vec<(Vec3, [Vec3; 3], Option<Uv>)> {
             [Vec3::X * 2.0, Vec3::Y * 2.0, Vec3::Z * 2.0],
             Some((0.25, 0.25)),
         ),
+        // Thin, but with an area (its unit edges' cosine rounds to 1).
+        (
+            Vec3::new(0.5, 2f32.powi(-14), 0.0),
+            [Vec3::ZERO, Vec3::X, Vec3::new(0.5, 2f32.powi(-13), 0.0)],
+            Some((0.25, 0.5)),
+        ),
     ]
 }
