@@ -14,6 +14,7 @@ pub mod ch4;
 pub mod ch5;
 pub mod ch6;
 pub mod fresh;
+pub mod fresh_eighteenth;
 pub mod fresh_eighth;
 pub mod fresh_eleventh;
 pub mod fresh_fifteenth;
