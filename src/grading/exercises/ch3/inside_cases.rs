@@ -4,8 +4,11 @@
 
 use glam::Vec3;
 
+/// Barycentric (u, v).
+pub type Uv = (f32, f32);
+
 /// (p, triangle, the expected (u, v) or None).
-pub(super) fn hand_cases() -> Vec<(Vec3, [Vec3; 3], Option<(f32, f32)>)> {
+pub(super) fn hand_cases() -> Vec<(Vec3, [Vec3; 3], Option<Uv>)> {
     let tri = [
         Vec3::ZERO,
         Vec3::new(2.0, 0.0, 0.0),

@@ -11,8 +11,8 @@ use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::Draws;
 use crate::exercises::{stateless, worse, worst};
 
-/// Barycentric (u, v).
-pub type Uv = (f32, f32);
+pub use super::inside_cases::Uv;
+
 /// A hit as (t, u, v).
 pub type Tuv = (f32, f32, f32);
 
