@@ -197,6 +197,13 @@ fn refraction_values(f: RefractFn) -> Check {
             "equal indices: no bending, F = 0",
         ),
         (at_cos(n, -1e-4, tilt), n, 1.0, 1.5, "grazing: F near 1"),
+        (
+            at_cos(n, 0.99, tilt),
+            n,
+            1.0,
+            2.5,
+            "from inside a dense glass 8° off the normal: F is not yet the normal incidence's",
+        ),
     ];
     let cases = hand.into_iter().map(|(d, n, eo, ei, name)| {
         let (e, what, s) = case(f, d, n, eo, ei);
