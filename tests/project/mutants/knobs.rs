@@ -113,6 +113,9 @@ pub struct EdgeKnobs {
     pub cut: Cut,
     /// An end nearer the pinhole than this, after the clip, gives None.
     pub min_depth: Option<f32>,
+    /// The end behind kept as it is where the cut lies less than this
+    /// share of the edge from it.
+    pub keep_end_within: Option<f32>,
 }
 
 /// The solution of draw_edges, departing as `k` says.
@@ -136,10 +139,16 @@ pub fn draw_edges(
         };
         Vec3::new(p.x, p.y, -near)
     };
+    // The end behind, where the cut is within `keep_end_within` of it.
+    let kept = |end: Vec3, d_end: f32, d_other: f32| {
+        k.keep_end_within
+            .filter(|&w| d_end / (d_end - d_other) < w)
+            .map(|_| end)
+    };
     let (a, b) = match (da > k.behind, db > k.behind) {
         (true, true) => return None,
-        (true, false) => (on_plane(a, b, da, db), b),
-        (false, true) => (a, on_plane(a, b, da, db)),
+        (true, false) => (kept(a, da, db).unwrap_or_else(|| on_plane(a, b, da, db)), b),
+        (false, true) => (a, kept(b, db, da).unwrap_or_else(|| on_plane(a, b, da, db))),
         (false, false) => (a, b),
     };
     if k.min_depth.is_some_and(|d| -a.z < d || -b.z < d) {

@@ -39,25 +39,20 @@ pub(super) fn grid_spread(f: CosineFn) -> Option<Check> {
             }
         })
     };
-    // The moments after the spread, which names the bigger mistakes.
+    // The spread first, which names the bigger mistakes; then the moments.
     let moments = grid_moments(&z2, &azimuth);
     let (gz, ga) = (gap(z2), gap(azimuth));
-    if let (Some(detail), false) = (moments, gz > 0.02 || ga > 0.02) {
-        return Some(Check {
-            error: 1e9,
-            tolerance: 5.0,
-            detail,
-            images: None,
-            symptom: Some(NOT_COSINE),
-        });
-    }
-    (gz > 0.02 || ga > 0.02).then(|| Check {
-        error: 1e9,
-        tolerance: 5.0,
-        detail: format!(
+    let detail = match gz > 0.02 || ga > 0.02 {
+        true => format!(
             "a 256 × 256 grid of u: z² is up to {gz:.3} and the azimuth up to {ga:.3} from an \
              even spread on [0, 1] (under cos θ / π both are uniform; at most 0.02)"
         ),
+        false => moments?,
+    };
+    Some(Check {
+        error: 1e9,
+        tolerance: 5.0,
+        detail,
         images: None,
         symptom: Some(NOT_COSINE),
     })
