@@ -24,7 +24,10 @@ use crate::ch3_ray_triangle::wide_build::{
     triangles_under, AnyHit, ClosestHit, Nearest, WideTree,
 };
 
-use super::lanes::{enter, leaf_test, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
+use super::lanes::{enter, leaf_test, Hits8, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
+
+/// The lanes a narrow node or leaf uses.
+const NARROW: usize = 4;
 use super::level::Level;
 
 /// The eight-wide tree.
@@ -38,6 +41,11 @@ pub struct Bvh8 {
     tris: Vec<SoaTriangle>,
     /// `original[8 l + lane]`: the triangle's index in the build list.
     pub(super) original: Vec<u32>,
+    /// Per node and per leaf: whether only its first four lanes are used,
+    /// so that a four-lane test suffices (half the work where vectors hold
+    /// four numbers, as on the portable path).
+    narrow_nodes: Vec<bool>,
+    narrow_leaves: Vec<bool>,
     /// Which vector instructions the queries use: private, and set only by
     /// [`Bvh8::build`] to a level this CPU has ([`super::simd`]'s
     /// dispatchers rely on it).
@@ -171,6 +179,8 @@ impl Bvh8 {
             depth: 0,
             tris: Vec::new(),
             original: Vec::new(),
+            narrow_nodes: Vec::new(),
+            narrow_leaves: Vec::new(),
             level: level.or_portable(),
         };
         b.root = b.collapse((&bvh2, &counts, &boxes, room(&bvh2)), 0, tris, 1);
@@ -227,6 +237,7 @@ impl Bvh8 {
         self.depth = self.depth.max(level);
         let children = open_children(bvh2, counts, n, W, LEAF_SIZE);
         let index = self.nodes.len();
+        self.narrow_nodes.push(children.len() <= NARROW);
         self.nodes.push(Node8 {
             min: [[f32::INFINITY; W]; 3],
             max: [[f32::NEG_INFINITY; W]; 3],
@@ -248,6 +259,7 @@ impl Bvh8 {
                 .sum();
             let ids = triangles_under(bvh2, n);
             if let Some(groups) = pack_leaves(&ids, boxes, area, room) {
+                self.narrow_nodes[index] = groups.len() <= NARROW;
                 for (lane, group) in groups.iter().enumerate() {
                     let child = self.leaf(group, tris);
                     set(self, lane, child, bounds(group, boxes));
@@ -284,6 +296,7 @@ impl Bvh8 {
             }
         }
         self.leaves.push(leaf);
+        self.narrow_leaves.push(ids.len() <= NARROW);
         (self.leaves.len() - 1) as u32 | LEAF
     }
 
@@ -320,6 +333,16 @@ impl Bvh8 {
         any_checked(&r.wt, self.leaf_tris(l), check, t_max)
     }
 
+    /// The lane test of leaf `l`'s triangles, four lanes wide where it
+    /// holds at most four.
+    #[inline(always)]
+    fn leaf_test(&self, r: &RayData, l: usize, t_max: f32) -> Hits8 {
+        match self.narrow_leaves[l] {
+            true => leaf_test::<NARROW>(r, &self.leaves[l], t_max),
+            false => leaf_test::<W>(r, &self.leaves[l], t_max),
+        }
+    }
+
     /// Leaf `l`'s triangles one by one, for the rare lanes.
     fn leaf_tris(&self, l: usize) -> &[SoaTriangle] {
         &self.tris[l * W..(l + 1) * W]
@@ -346,8 +369,12 @@ impl WideTree<W> for Bvh8 {
 
     #[inline(always)]
     fn enter(&self, r: &RayData, node: usize, t_max: f32) -> (u32, [f32; W], &[u32; W]) {
+        let narrow = self.narrow_nodes[node];
         let node = &self.nodes[node];
-        let (entered, t_near) = enter(r, node, t_max);
+        let (entered, t_near) = match narrow {
+            true => enter::<NARROW>(r, node, t_max),
+            false => enter::<W>(r, node, t_max),
+        };
         (entered, t_near, &node.child)
     }
 }
@@ -357,7 +384,7 @@ impl ClosestHit<W> for Bvh8 {
 
     #[inline(always)]
     fn leaf_closest(&self, r: &RayData, leaf: usize, found: &mut Nearest) {
-        let h = leaf_test(r, &self.leaves[leaf], found.t);
+        let h = self.leaf_test(r, leaf, found.t);
         let best = nearest_lane(h.hit, &h.t, &h.u, &h.v);
         let best = match h.check {
             0 => best,
@@ -370,7 +397,7 @@ impl ClosestHit<W> for Bvh8 {
 impl AnyHit<W> for Bvh8 {
     #[inline(always)]
     fn leaf_any(&self, r: &RayData, leaf: usize, t_max: f32) -> bool {
-        let h = leaf_test(r, &self.leaves[leaf], t_max);
+        let h = self.leaf_test(r, leaf, t_max);
         h.hit != 0 || (h.check != 0 && self.leaf_any_checked(r, leaf, h.check, t_max))
     }
 }

@@ -112,11 +112,12 @@ pub(super) fn smaller(x: f32, y: f32) -> f32 {
     }
 }
 
-/// The slab test of a node's eight boxes against (0, t_max): the mask of
+/// The slab test of a node's first `N` boxes (all eight, or the first
+/// four where the others are empty) against (0, t_max): the mask of
 /// children entered and where the ray enters each.
 // ANCHOR: slab8
 #[inline(always)]
-pub(super) fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
+pub(super) fn enter<const N: usize>(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
     let mut t_near = [0.0f32; W];
     let mut t_far = [t_max; W];
     for axis in 0..3 {
@@ -124,7 +125,7 @@ pub(super) fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
             true => (&node.max[axis], &node.min[axis]),
             false => (&node.min[axis], &node.max[axis]),
         };
-        for i in 0..W {
+        for i in 0..N {
             let enters = (near[i] - r.o[axis]) * r.inv[axis];
             let leaves = (far[i] - r.o[axis]) * r.inv[axis];
             t_near[i] = larger(t_near[i], enters);
@@ -132,7 +133,7 @@ pub(super) fn enter(r: &RayData, node: &Node8, t_max: f32) -> (u32, [f32; W]) {
         }
     }
     let mut entered = [false; W];
-    for i in 0..W {
+    for i in 0..N {
         entered[i] = t_near[i] <= t_far[i] * FAR_STRETCH;
     }
     (mask(entered), t_near)
@@ -271,15 +272,16 @@ pub(super) fn trust_lane(f: &FrontLane) -> (f32, f32, bool) {
 }
 // ANCHOR_END: trust_lane
 
-/// The watertight test on a leaf's eight triangles in (0, t_max), lane
-/// by lane ([`front_lane`], [`trust_lane`]) in the order of the four-wide
+/// The watertight test on a leaf's first `N` triangles (all eight, or
+/// the first four where the others are empty) in (0, t_max), lane by
+/// lane ([`front_lane`], [`trust_lane`]) in the order of the four-wide
 /// test. One loop without branches (bitwise `&` and `|` on the
 /// comparisons, no early exit), which the compiler turns into vector
 /// instructions.
 // ANCHOR: leaf8
 #[allow(clippy::needless_range_loop)] // lane loops, on purpose
 #[inline(always)]
-pub(super) fn leaf_test(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
+pub(super) fn leaf_test<const N: usize>(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
     let (px, py, pz) = (&leaf.p[r.k[0]], &leaf.p[r.k[1]], &leaf.p[r.k[2]]);
     let mut h = Hits8 {
         hit: 0,
@@ -292,7 +294,7 @@ pub(super) fn leaf_test(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
     // division and the error bound only when one can (most leaves a ray
     // enters hold no hit).
     let mut f = Fronts::default();
-    for i in 0..W {
+    for i in 0..N {
         let tri = (
             [px[0][i], px[1][i], px[2][i]],
             [py[0][i], py[1][i], py[2][i]],
@@ -306,7 +308,7 @@ pub(super) fn leaf_test(r: &RayData, leaf: &Leaf8, t_max: f32) -> Hits8 {
         return h;
     }
     let mut trusted = [false; W];
-    for i in 0..W {
+    for i in 0..N {
         let (t, inv_det, trust) = trust_lane(&f.get(i));
         trusted[i] = trust;
         h.t[i] = t;
