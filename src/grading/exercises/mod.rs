@@ -20,6 +20,7 @@ pub mod images;
 pub mod paths;
 pub mod refraction;
 pub mod stateless;
+pub mod twins;
 
 /// The largest |channel| of a colour or vector, +∞ where a channel is NaN.
 /// glam's `max_element` passes over a NaN in some channels (the

@@ -43,7 +43,10 @@ pub fn check_draw_edges(f: EdgeFn) -> Check {
     }
     let camera = origin_camera();
     stateless::unless_changed(railroad(f), || {
-        stateless::probes::draw_edges(|a, b, near| f(&camera, a, b, near))
+        stateless::probes::draw_edges(
+            |a, b, near| f(&camera, a, b, near),
+            |a, b, near| reference_edge(&camera, a, b, near),
+        )
     })
 }
 
@@ -308,6 +311,15 @@ fn railroad(f: EdgeFn) -> Check {
     desc.width = 160;
     desc.height = 120;
     let camera = Camera::new(desc).expect("a valid camera");
+    // The same view at another size: each edge is asked through both, one
+    // after the other (a raster point kept for a world point would be the
+    // other camera's).
+    let wide = Camera::new(CameraDesc {
+        width: 224,
+        height: 96,
+        ..desc
+    })
+    .expect("a valid camera");
     let edges: Vec<(Vec3, Vec3)> = scene
         .meshes
         .iter()
@@ -330,9 +342,9 @@ fn railroad(f: EdgeFn) -> Check {
         film
     };
     let mut worst = (0.0f64, String::new());
-    for (a, b) in &edges {
-        let got = f(&camera, *a, *b, NEAR);
-        let want = reference_edge(&camera, *a, *b, NEAR);
+    for ((a, b), camera) in edges.iter().flat_map(|e| [(e, &camera), (e, &wide)]) {
+        let got = f(camera, *a, *b, NEAR);
+        let want = reference_edge(camera, *a, *b, NEAR);
         let (ca, cb) = (camera.to_camera(*a), camera.to_camera(*b));
         let clipped = ca.z > -NEAR || cb.z > -NEAR;
         let err = match (got, want) {
@@ -356,10 +368,12 @@ fn railroad(f: EdgeFn) -> Check {
             worst = (
                 err,
                 format!(
-                    "the railroad edge from {a} to {b} (camera space z = {} m and {} m): yours gave {}, \
-                     the reference {} (raster pixels)",
+                    "the railroad edge from {a} to {b} (camera space z = {} m and {} m) on a {}×{} \
+                     image: yours gave {}, the reference {} (raster pixels)",
                     ca.z,
                     cb.z,
+                    camera.width,
+                    camera.height,
                     show(got),
                     show(want)
                 ),

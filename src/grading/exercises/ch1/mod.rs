@@ -102,14 +102,17 @@ pub fn exercises() -> Vec<Exercise> {
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_project_point(f: fn(Vec3) -> Option<Vec2>) -> Check {
     stateless::unless_changed(project_point_values(f), || {
-        stateless::probes::project_point(f)
+        stateless::probes::project_point(f, project_pinhole)
     })
 }
 
 /// [`check_project_point`]'s checks of the values.
 fn project_point_values(f: fn(Vec3) -> Option<Vec2>) -> Check {
-    // (point, expected image): in front of the camera, worked out by hand...
+    // (point, expected image): first one behind the camera (a side taken
+    // from the first point asked would be the wrong one), then in front of
+    // it, worked out by hand...
     let mut cases: Vec<(Vec3, Option<Vec2>)> = vec![
+        (Vec3::new(0.5, -1.0, 2.0), None),
         (Vec3::new(1.0, 2.0, -2.0), Some(Vec2::new(0.5, 1.0))),
         (Vec3::new(-3.0, 0.0, -1.0), Some(Vec2::new(-3.0, 0.0))),
         (Vec3::new(0.2, -0.4, -4.0), Some(Vec2::new(0.05, -0.1))),
@@ -222,7 +225,11 @@ fn show(p: Option<Vec2>) -> String {
 /// renders the lecture's tetrahedron through it.
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_look_at(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
-    stateless::unless_changed(look_at_values(f), || stateless::probes::look_at(f))
+    stateless::unless_changed(look_at_values(f), || {
+        stateless::probes::look_at(f, |e, t, u| {
+            camera_from_world_look_at(e, t, u).unwrap_or(Mat4::NAN)
+        })
+    })
 }
 
 /// [`check_look_at`]'s checks of the values.

@@ -170,7 +170,7 @@ struct EdgeCase {
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_edge_function(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
     stateless::unless_changed(edge_function_values(f), || {
-        stateless::probes::edge_function(f)
+        stateless::probes::edge_function(f, edge::edge_function)
     })
 }
 
@@ -300,7 +300,9 @@ fn exact_phi(t: [Vec2; 3], p: Vec2) -> Vec3 {
 /// rebuild the point.
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_barycentric(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check {
-    stateless::unless_changed(barycentric_values(f), || stateless::probes::barycentric(f))
+    stateless::unless_changed(barycentric_values(f), || {
+        stateless::probes::barycentric(f, edge::barycentric)
+    })
 }
 
 /// [`check_barycentric`]'s checks of the values.

@@ -28,7 +28,9 @@ struct PlaneCase {
 /// raystep's `ray_plane`, which would check the reference against itself).
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_ray_plane(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
-    stateless::unless_changed(ray_plane_values(f), || stateless::probes::ray_plane(f))
+    stateless::unless_changed(ray_plane_values(f), || {
+        stateless::probes::ray_plane(f, crate::ch3_ray_triangle::triangle::ray_plane)
+    })
 }
 
 /// [`check_ray_plane`]'s checks of the values.

@@ -80,7 +80,7 @@ pub(super) fn near(g: f32, w: f32) -> bool {
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Check {
     stateless::unless_changed(barycentric_inside_values(f), || {
-        stateless::probes::barycentric_inside(f)
+        stateless::probes::barycentric_inside(f, triangle::barycentric_inside)
     })
 }
 
@@ -190,7 +190,7 @@ fn barycentric_inside_values(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Ch
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_moller_trumbore(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check {
     stateless::unless_changed(moller_trumbore_values(f), || {
-        stateless::probes::moller_trumbore(f)
+        stateless::probes::moller_trumbore(f, reference_moller_trumbore)
     })
 }
 
@@ -238,6 +238,18 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
         ),
         // The origin on the triangle: t = 0, not a hit (t > 0).
         (Vec3::new(1.0, 0.5, -2.0), -Vec3::Z, tri, None),
+        // 2^-17 above a triangle 2,000 across: every t > 0 is a hit, however
+        // small beside the triangle (exact in f32 by any of the formulas).
+        (
+            Vec3::new(3.0, 7.0, 2f32.powi(-17)),
+            -Vec3::Z,
+            [
+                Vec3::new(-1000.0, -1000.0, 0.0),
+                Vec3::new(1000.0, -1000.0, 0.0),
+                Vec3::new(0.0, 1000.0, 0.0),
+            ],
+            Some((2f32.powi(-17), 0.24975, 0.5035)),
+        ),
         // Behind the origin, outside, parallel, degenerate: no hit.
         (Vec3::new(1.0, 0.5, 0.0), Vec3::Z, tri, None),
         (Vec3::new(3.0, 3.0, 0.0), -Vec3::Z, tri, None),

@@ -295,6 +295,14 @@ pub fn cases() -> Vec<Case> {
             m,
         ),
         case(
+            "a ray starting 2^-16 above a wall (within ε) and running along it: a hit at t = 0 whose \
+             gradient is square to the ray (n · dir = 0), so the normal stays as it is, unit length",
+            Clause::Normal,
+            wall,
+            (Vec3::new(0.0, 0.0, 2f32.powi(-16)), Vec3::X),
+            m,
+        ),
+        case(
             "a wall 1,000 m along x whose function understates by 5e-7: ε is taken at each point the march reaches",
             Clause::ScaledEpsilon,
             understating_far_wall,

@@ -96,7 +96,7 @@ fn near_edges(f: NormalFn, draws: &mut Draws) -> (f64, String) {
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_gradient_normal(f: NormalFn) -> Check {
     stateless::unless_changed(gradient_normal_values(f), || {
-        stateless::probes::gradient_normal(f)
+        stateless::probes::gradient_normal(f, |f, p, h| gradient_central(f, p, h).normalize())
     })
 }
 

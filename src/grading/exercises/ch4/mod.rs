@@ -143,7 +143,9 @@ struct TraceCase {
 /// The sphere's SDF against values worked out by hand.
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_sphere_sdf(f: SdfFn) -> Check {
-    stateless::unless_changed(sphere_sdf_values(f), || stateless::probes::sphere_sdf(f))
+    stateless::unless_changed(sphere_sdf_values(f), || {
+        stateless::probes::sphere_sdf(f, |p, c, r| sd_sphere(p - c, r))
+    })
 }
 
 /// [`check_sphere_sdf`]'s checks of the values.

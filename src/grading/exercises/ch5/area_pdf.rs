@@ -25,7 +25,9 @@ struct AreaPdfCase {
 /// pdf_A d²/|cos θl| for hand-worked cases, and 0 edge-on.
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_area_pdf(f: AreaPdfFn) -> Check {
-    stateless::unless_changed(area_pdf_values(f), || stateless::probes::area_pdf(f))
+    stateless::unless_changed(area_pdf_values(f), || {
+        stateless::probes::area_pdf(f, super::reference_area_pdf)
+    })
 }
 
 /// [`check_area_pdf`]'s checks of the values.

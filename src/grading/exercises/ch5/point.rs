@@ -26,7 +26,9 @@ struct PointCase {
 /// E = I cos θ / r² for hand-worked cases.
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_point_light(f: PointFn) -> Check {
-    stateless::unless_changed(point_light_values(f), || stateless::probes::point_light(f))
+    stateless::unless_changed(point_light_values(f), || {
+        stateless::probes::point_light(f, super::reference_point)
+    })
 }
 
 /// [`check_point_light`]'s checks of the values.

@@ -94,7 +94,9 @@ struct SolidCase {
 /// domain.
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_solid_angle(f: SolidFn) -> Check {
-    stateless::unless_changed(solid_angle_values(f), || stateless::probes::solid_angle(f))
+    stateless::unless_changed(solid_angle_values(f), || {
+        stateless::probes::solid_angle(f, super::reference_solid_angle)
+    })
 }
 
 /// [`check_solid_angle`]'s checks of the values.

@@ -68,7 +68,9 @@ struct SpotCase {
 /// channel's power (as `point_light` does).
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_spot(f: SpotFn) -> Check {
-    stateless::unless_changed(spot_values(f), || stateless::probes::spot(f))
+    stateless::unless_changed(spot_values(f), || {
+        stateless::probes::spot(f, super::reference_spot)
+    })
 }
 
 /// [`check_spot`]'s checks of the values.

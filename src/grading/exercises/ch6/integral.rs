@@ -113,8 +113,19 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     let constant = f(&|_| 2.5, -1.0, 3.0, &[0.1, 0.7]);
     let at_zero = f(&|_| 2.5, -1.0, 3.0, &[0.0, 0.0]);
     // And from 70,000 numbers (more than a u16 counts).
+    // (Each one evaluated: a buffer sized by an earlier, shorter call
+    // would still average 2.5 exactly.)
     let many: Vec<f64> = (0..70_000).map(|i| (i as f64 + 0.5) / 70_000.0).collect();
-    let from_many = f(&|_| 2.5, -1.0, 3.0, &many);
+    let many_calls = Cell::new(0usize);
+    let from_many = f(
+        &|_| {
+            many_calls.set(many_calls.get() + 1);
+            2.5
+        },
+        -1.0,
+        3.0,
+        &many,
+    );
     // (Written so that a NaN fails.)
     let ten = |x: f64| (x - 10.0).abs() <= 1e-9;
     let (mut error, mut detail) = if !ten(constant) {
@@ -128,6 +139,14 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         (
             1.0,
             format!("∫₋₁³ 2.5 dx = 10 from 70,000 numbers, got {from_many}"),
+        )
+    } else if many_calls.get() != many.len() {
+        (
+            1.0,
+            format!(
+                "∫₋₁³ 2.5 dx from 70,000 numbers evaluated f {} times: one evaluation per number",
+                many_calls.get()
+            ),
         )
     } else {
         (error, detail)
@@ -153,39 +172,16 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
             u[0] = 0.0;
         }
         let b = a + width;
-        // One evaluation per number, each in [a, b] (to rounding).
-        let (calls, outside) = (Cell::new(0usize), Cell::new(None));
-        let (lo, hi) = (a.min(b), a.max(b));
-        let slack = 1e-12 * (lo.abs() + hi.abs());
-        let g = |x: f64| {
-            calls.set(calls.get() + 1);
-            if !(lo - slack..=hi + slack).contains(&x) {
-                outside.set(Some(x));
-            }
-            c
-        };
-        let got = f(&g, a, b, &u);
-        let want = c * (b - a);
-        if calls.get() != u.len() {
-            return (
-                f64::INFINITY,
-                format!(
-                    "∫ from {a} to {b} from {} numbers evaluated f {} times: one evaluation per number",
-                    u.len(),
-                    calls.get()
-                ),
-            );
-        }
-        if let Some(x) = outside.get() {
-            return (
-                f64::INFINITY,
-                format!("∫ from {a} to {b}: f evaluated at {x}, outside the interval"),
-            );
-        }
-        (
-            (got - want).abs() / want.abs() * 1e3,
-            format!("∫ from {a} to {b} of the constant {c} = {want}, got {got}"),
-        )
+        // Each asked twice in a row: the same interval and numbers, another
+        // integrand (c, then -2c): each its own answer.
+        let (first, second) = (
+            drawn_once(f, a, b, c, &u),
+            drawn_once(f, a, b, -2.0 * c, &u),
+        );
+        [first, second]
+            .into_iter()
+            .max_by(|p, q| p.0.total_cmp(&q.0))
+            .expect("two")
     }));
     fold_drawn(&mut error, &mut detail, drawn);
     // Uniform there when the number is: 4,096 evenly spaced numbers (at a
@@ -258,4 +254,43 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         images: None,
         symptom: (error > 1e-3 && (unit - 1.0).abs() < 1e-9).then_some(NO_INTERVAL),
     }
+}
+
+/// ∫ₐᵇ c dx from the numbers `u`: its error (10³ times the relative
+/// error; infinite where f is not evaluated once per number, inside
+/// [a, b]) and what was asked.
+fn drawn_once(f: IntegralFn, a: f64, b: f64, c: f64, u: &[f64]) -> (f64, String) {
+    // One evaluation per number, each in [a, b] (to rounding).
+    let (calls, outside) = (Cell::new(0usize), Cell::new(None));
+    let (lo, hi) = (a.min(b), a.max(b));
+    let slack = 1e-12 * (lo.abs() + hi.abs());
+    let g = |x: f64| {
+        calls.set(calls.get() + 1);
+        if !(lo - slack..=hi + slack).contains(&x) {
+            outside.set(Some(x));
+        }
+        c
+    };
+    let got = f(&g, a, b, u);
+    let want = c * (b - a);
+    if calls.get() != u.len() {
+        return (
+            f64::INFINITY,
+            format!(
+                "∫ from {a} to {b} from {} numbers evaluated f {} times: one evaluation per number",
+                u.len(),
+                calls.get()
+            ),
+        );
+    }
+    if let Some(x) = outside.get() {
+        return (
+            f64::INFINITY,
+            format!("∫ from {a} to {b}: f evaluated at {x}, outside the interval"),
+        );
+    }
+    (
+        (got - want).abs() / want.abs() * 1e3,
+        format!("∫ from {a} to {b} of the constant {c} = {want}, got {got}"),
+    )
 }

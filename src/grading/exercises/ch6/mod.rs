@@ -136,7 +136,7 @@ pub(super) fn z_of(estimates: &[f64], expected: f64) -> f64 {
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_russian_roulette(f: RouletteFn) -> Check {
     stateless::unless_changed(russian_roulette_values(f), || {
-        stateless::probes::russian_roulette(f)
+        stateless::probes::russian_roulette(f, reference_roulette)
     })
 }
 
@@ -277,7 +277,9 @@ struct WeightCase {
 /// (uniform sampling, pdf 1, and sampling by 2x, pdf 2x).
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_mis_weight(f: WeightFn) -> Check {
-    stateless::unless_changed(mis_weight_values(f), || stateless::probes::mis_weight(f))
+    stateless::unless_changed(mis_weight_values(f), || {
+        stateless::probes::mis_weight(f, reference_weight)
+    })
 }
 
 /// [`check_mis_weight`]'s checks of the values.

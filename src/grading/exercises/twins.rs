@@ -1,0 +1,146 @@
+//! Near questions get their own answers: the second probe of
+//! [`stateless`](super::stateless). A memo keyed on rounded arguments (a
+//! point to the millimetre, directions to 0.01, every number to 10⁻³)
+//! answers a question with the answer of an earlier one that rounds the
+//! same way; [`changed_answer`](super::stateless::changed_answer) does not
+//! see it, because such a memo answers each question the same way every
+//! time.
+//!
+//! The probe asks a question and then its twin: the same question with
+//! the numbers of one argument moved by 5 % to 30 % of themselves (a memo
+//! may round one argument and key on the others exactly). Where the
+//! reference's two answers differ by more than 2 % of their size, a
+//! solution within any exercise's tolerance (10⁻⁴ or tighter) must answer
+//! the two differently too; the same answer, bit for bit, is a kept one.
+//! Questions are also shrunk, their lengths scaled together by 10⁻⁷ to 1
+//! (each exercise's contract holds at every scale), so that twins fall
+//! in one cell of a fine grid too.
+//!
+//! Where the answer hangs on its arguments' last digits (a point a hair
+//! off a surface, a light seen edge-on), a tolerance can be wider than
+//! the answer itself, and two right answers may agree: a question whose
+//! reference answer moves by 1 % when its numbers move by 10⁻⁴ is left
+//! out, and so is its twin.
+
+use std::fmt::Debug;
+use std::ops::Range;
+
+use super::draws::Draws;
+
+/// Which numbers of a question a twin may change.
+pub struct Twins<'a> {
+    /// The arguments a twin may move, one at a time: each of its numbers
+    /// towards zero by 5 % to 30 % of itself (a number bounded above or
+    /// below by zero stays in range).
+    pub nudged: &'a [Range<usize>],
+    /// Lengths, scaled together (question and twin alike).
+    pub lengths: &'a [Range<usize>],
+}
+
+/// The numbers in an answer's `Debug` text, and the text around them.
+fn numbers(answer: &str) -> (Vec<f64>, String) {
+    let (mut nums, mut rest) = (Vec::new(), String::new());
+    for token in answer.split(|c: char| " ,()[]{}:;".contains(c)) {
+        match token.parse::<f64>() {
+            Ok(x) => nums.push(x),
+            Err(_) => rest.push_str(token),
+        }
+        rest.push('|');
+    }
+    (nums, rest)
+}
+
+/// How far apart two answers are, relative to the larger number in them
+/// (`None` where they are not the same kind, or not finite).
+fn apart(a: &str, b: &str) -> Option<f64> {
+    let ((x, skeleton_a), (y, skeleton_b)) = (numbers(a), numbers(b));
+    if skeleton_a != skeleton_b || x.len() != y.len() || x.is_empty() {
+        return None;
+    }
+    if !x.iter().chain(&y).all(|v| v.is_finite()) {
+        return None;
+    }
+    let size = x.iter().chain(&y).fold(0.0f64, |m, v| m.max(v.abs()));
+    let gap = x
+        .iter()
+        .zip(&y)
+        .fold(0.0f64, |m, (p, q)| m.max((p - q).abs()));
+    (size > 0.0).then(|| gap / size)
+}
+
+/// Each of `cases` and two twins of it per argument that may move, at
+/// drawn scales: `None` if every
+/// twin whose reference answer differs by more than 2 % got an answer of
+/// its own, else the first that did not. (Numbers are f32 values held in
+/// f64, and stay so.)
+pub fn same_for_near<R: Debug>(
+    cases: &[Vec<f64>],
+    twins: &Twins,
+    salt: u64,
+    ask: impl Fn(&[f64]) -> R,
+    reference: impl Fn(&[f64]) -> R,
+) -> Option<String> {
+    let mut d = Draws::new(salt);
+    let within = |ranges: &[Range<usize>], i: usize| ranges.iter().any(|r| r.contains(&i));
+    let twice = twins.nudged.iter().chain(twins.nudged);
+    for (case, moved) in cases
+        .iter()
+        .flat_map(|c| twice.clone().map(move |m| (c, m)))
+    {
+        {
+            d.next_case();
+            let scale = match twins.lengths.is_empty() {
+                true => 1.0,
+                false => d.decades(-7.0, 0.0) as f64,
+            };
+            let base: Vec<f64> = (0..case.len())
+                .map(|i| match within(twins.lengths, i) {
+                    true => (case[i] * scale) as f32 as f64,
+                    false => case[i],
+                })
+                .collect();
+            let twin: Vec<f64> = (0..base.len())
+                .map(|i| match moved.contains(&i) {
+                    true => (base[i] * (1.0 - d.range(0.05, 0.3) as f64)) as f32 as f64,
+                    false => base[i],
+                })
+                .collect();
+            let (a, b) = (format!("{:?}", ask(&base)), format!("{:?}", ask(&twin)));
+            if a != b {
+                continue;
+            }
+            let (ra, rb) = (
+                format!("{:?}", reference(&base)),
+                format!("{:?}", reference(&twin)),
+            );
+            // Each of the two, with its numbers moved by 10⁻⁴: steady?
+            let steady = |q: &[f64], answer: &str, d: &mut Draws| {
+                let moved: Vec<f64> = (0..q.len())
+                    .map(
+                        |i| match within(twins.nudged, i) || within(twins.lengths, i) {
+                            true => (q[i] * (1.0 + 1e-4 * d.range(-1.0, 1.0) as f64)) as f32 as f64,
+                            false => q[i],
+                        },
+                    )
+                    .collect();
+                apart(answer, &format!("{:?}", reference(&moved))).is_some_and(|g| g < 1e-2)
+            };
+            if !steady(&base, &ra, &mut d) || !steady(&twin, &rb, &mut d) {
+                continue;
+            }
+            match apart(&ra, &rb) {
+                Some(gap) if gap > 0.02 => {
+                    return Some(format!(
+                        "the arguments {base:?} and then {twin:?} both got {a}, though the right \
+                         answers ({ra} and {rb}) differ by {:.0}% of their size: an answer must be \
+                         worked out from its own arguments, not kept from a question that rounds \
+                         the same way",
+                        gap * 100.0
+                    ))
+                }
+                _ => {}
+            }
+        }
+    }
+    None
+}
