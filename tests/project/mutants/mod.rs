@@ -22,6 +22,7 @@ pub mod fresh_fifth;
 pub mod fresh_fourteenth;
 pub mod fresh_fourth;
 pub mod fresh_new;
+pub mod fresh_nineteenth;
 pub mod fresh_ninth;
 pub mod fresh_seventeenth;
 pub mod fresh_seventh;
