@@ -63,6 +63,14 @@ pub fn vec2_at(n: &[f64], at: usize) -> Vec2 {
     Vec2::new(n[at] as f32, n[at + 1] as f32)
 }
 
+/// A question's numbers as the f32 values they are, in order.
+pub fn show(numbers: &[f64]) -> String {
+    format!(
+        "{:?}",
+        numbers.iter().map(|x| *x as f32).collect::<Vec<f32>>()
+    )
+}
+
 /// Asks every question, then each again right after each of its decoys,
 /// and each decoy once after an unrelated question and once right after
 /// its question: `None` if every answer came back the same, else what
@@ -73,9 +81,11 @@ pub fn changed_answer<R: Debug>(q: &Questions, ask: impl Fn(&[f64]) -> R) -> Opt
     let n = q.cases.len();
     let changed = |what: &[f64], before: &str, then: &str, after: &[f64]| {
         format!(
-            "the arguments {what:?}: answered {before} the first time, and {then} when asked \
-             again right after {after:?}: an answer must depend on its arguments alone, never on \
-             what was asked before"
+            "the arguments {}: answered {before} the first time, and {then} when asked \
+             again right after {}: an answer must depend on its arguments alone, never on \
+             what was asked before",
+            show(what),
+            show(after)
         )
     };
     for (k, case) in q.cases.iter().enumerate() {

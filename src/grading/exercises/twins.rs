@@ -26,6 +26,7 @@ use std::fmt::Debug;
 use std::ops::Range;
 
 use super::draws::Draws;
+use super::stateless::show;
 
 /// Which numbers of a question a twin may change.
 pub struct Twins<'a> {
@@ -131,10 +132,12 @@ pub fn same_for_near<R: Debug>(
             match apart(&ra, &rb) {
                 Some(gap) if gap > 0.02 => {
                     return Some(format!(
-                        "the arguments {base:?} and then {twin:?} both got {a}, though the right \
+                        "the arguments {} and then {} both got {a}, though the right \
                          answers ({ra} and {rb}) differ by {:.0}% of their size: an answer must be \
                          worked out from its own arguments, not kept from a question that rounds \
                          the same way",
+                        show(&base),
+                        show(&twin),
                         gap * 100.0
                     ))
                 }

@@ -58,6 +58,19 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
             format!("buffer ends as {buffer:?}, expected {expected:?}"),
         ));
     }
+    // The last passing step again, at the same index of a fresh buffer:
+    // it passes there (nothing of the last buffer carries over).
+    let mut fresh = vec![inf; 4];
+    if !f(&mut fresh, 2, -0.0) || fresh[2].to_bits() != (-0.0f32).to_bits() {
+        fails.push((
+            1.0,
+            format!(
+                "on a fresh buffer of infinities, depth_test(index 2, z -0) after the steps above \
+                 returned false or did not store -0 (the buffer: {fresh:?}): each test reads the \
+                 buffer it is given"
+            ),
+        ));
+    }
     // Drawn runs of tests, each on a fresh drawn buffer: two small ones
     // and one of 2^16 to 2^17 samples (an index past 65,535 is an index
     // like any other). Each run starts with the last run's last passing

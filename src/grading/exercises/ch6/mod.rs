@@ -157,6 +157,10 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
         (-2.0, 0.5),
         (1e-5, 0.5),
         (-3e-20, 0.25),
+        // Small q close together: each its own 1/q.
+        (3.0, 0.0041),
+        (-2.0, 0.0046),
+        (0.5, 0.0013),
     ];
     for k in 0..draws.count(4, 8) {
         draws.next_case();
