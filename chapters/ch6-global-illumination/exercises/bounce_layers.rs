@@ -21,7 +21,8 @@
 //!   sees directly, slot k + 1 for bounce count k up to `LAYERS_SHOWN`,
 //!   `SLOT_BEYOND` for every larger k;
 //! * a contribution whose value · weight is NaN or infinite is left out
-//!   (as the render leaves it out);
+//!   (as the render leaves it out): the product as f32 forms it, where
+//!   10³⁰ · 10¹⁰ is infinite;
 //! * each slot within 10⁻⁵ of the sum of the magnitudes filed into it (so
 //!   any order of summing in f32 passes), and exactly 0 where nothing is;
 //! * on paths drawn anew for every grading run (up to 40 vertices), and on

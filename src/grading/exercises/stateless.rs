@@ -128,6 +128,4 @@ pub fn unless_changed(check: Check, found: impl FnOnce() -> Option<String>) -> C
     }
 }
 
-/// Each exercise's probe: its questions drawn in its domain, and how a
-/// question is asked.
 pub mod probes;

@@ -71,6 +71,29 @@ pub fn check_depth_test(f: fn(&mut [f32], usize, f32) -> bool) -> Check {
             ),
         ));
     }
+    // A buffer of 2^24 + 3 samples (a 4,096 x 4,097 image): its last
+    // indices are as exact as the first, and a test there touches that
+    // sample alone.
+    let top = (1usize << 24) + 1;
+    let mut large = vec![inf; top + 2];
+    let passed = [f(&mut large, top, 2.0), f(&mut large, top + 1, 3.0)];
+    if passed != [true, true]
+        || large[top - 1..]
+            .iter()
+            .map(|z| z.to_bits())
+            .ne([inf, 2.0, 3.0].map(f32::to_bits))
+    {
+        fails.push((
+            1.0,
+            format!(
+                "on a buffer of 2^24 + 3 samples, depth_test(index 2^24 + 1, z 2) then (index 2^24 + 2, z 3) \
+                 returned {passed:?} and left its last three samples {:?}, expected [true, true] and \
+                 [inf, 2, 3]",
+                &large[top - 1..]
+            ),
+        ));
+    }
+    drop(large);
     // Drawn runs of tests, each on a fresh drawn buffer: two small ones
     // and one of 2^16 to 2^17 samples (an index past 65,535 is an index
     // like any other). Each run starts with the last run's last passing

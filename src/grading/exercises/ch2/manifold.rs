@@ -106,6 +106,15 @@ fn hand_cases() -> Vec<(&'static str, Vec<[u32; 3]>)> {
             vec![[0, 1, 2], [0, 1, 2]],
         ),
         ("a tetrahedron with one face twice", repeated),
+        // More triangles at one vertex than a byte counts.
+        (
+            "a sphere whose poles have 300 triangles each",
+            sphere(2, 300, 0),
+        ),
+        (
+            "two closed discs of 150 triangles sharing their centre (two fans of 150)",
+            disc(150, 1).into_iter().chain(disc(150, 151)).collect(),
+        ),
         // Last: a failure here names the repeated index.
         (
             "a tetrahedron and four triangles with a repeated index",
@@ -126,6 +135,14 @@ fn grid(m: u32, n: u32, first: u32) -> Vec<[u32; 3]> {
         }
     }
     tris
+}
+
+/// A closed fan of `m` triangles round vertex 0, its rim's indices from
+/// `first`.
+fn disc(m: u32, first: u32) -> Vec<[u32; 3]> {
+    (0..m)
+        .map(|k| [0, first + k, first + (k + 1) % m])
+        .collect()
 }
 
 /// A closed sphere: two poles and `rings` rings of `m` vertices.

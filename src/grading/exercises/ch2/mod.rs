@@ -276,6 +276,27 @@ fn edge_function_values(f: fn(Vec2, Vec2, Vec2) -> f32) -> Check {
         )
     }));
     fold_drawn(&mut error, &mut detail, drawn);
+    // Edges about 3·10⁻²⁰ long near the origin: |b - a|·|p - a| from 10⁻³⁹
+    // up, E among f32's subnormal numbers (below 1.2·10⁻³⁸), where f32's
+    // products still keep it to 10⁻⁵ of that (a stream of its own).
+    let mut tiny = Draws::new(121);
+    let subnormal = worst_drawn((0..tiny.count(20, 40)).filter_map(|_| {
+        tiny.next_case();
+        let scale = tiny.decades(-19.8, -19.2);
+        let place = tiny.place_for(scale, 1.0).truncate();
+        let [a, b, p] = [0; 3].map(|_| place + tiny.in_square() * scale);
+        let (ab, ap) = ((b - a).as_dvec2(), (p - a).as_dvec2());
+        let size = ab.length() * ap.length();
+        if size < 1e-39 {
+            return None;
+        }
+        let (want, got) = (ab.perp_dot(ap), f(a, b, p));
+        Some((
+            (got as f64 - want).abs() / size,
+            format!("a = {a}, b = {b}, p = {p}: got {got:e}, expected {want:e}"),
+        ))
+    }));
+    fold_drawn(&mut error, &mut detail, subnormal);
     Check {
         error,
         detail,
@@ -355,9 +376,16 @@ fn barycentric_values(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check {
     // the f32 corners. (The symptoms are read from the hand cases only.)
     let hand = cases.len();
     let mut draws = Draws::new(22);
+    let mut tiny = Draws::new(122);
     for _ in 0..draws.count(200, 800) {
         draws.next_case();
+        tiny.next_case();
         let scale = draws.decades(-3.0, 3.0);
+        // A tenth from 10⁻¹² to 10⁻³ across (from a stream of their own).
+        let scale = match tiny.unit() < 0.1 {
+            true => tiny.decades(-12.0, -3.0),
+            false => scale,
+        };
         let place = draws.place_for(scale, 3.0).truncate();
         let (pi, pj, pk) = (
             place + draws.in_square() * scale,

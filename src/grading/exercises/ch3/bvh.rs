@@ -273,6 +273,9 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
     compare(&wall, &inside, f32::INFINITY, &|| {
         "a ray along -z 10⁻⁶ inside its box's side x = 10, the hit 1,000 away".to_string()
     });
+    for (tree, ray, what) in super::bvh_cases::far_rays(&wall) {
+        compare(&tree, &ray, f32::INFINITY, &|| what.clone());
+    }
     progress("rays at a flat triangle");
     for far in [false, true] {
         let (flat, flat_rays) = super::bvh_cases::flat_triangle(far);
@@ -281,10 +284,11 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
         }
     }
     progress("a chain deeper than a fixed stack");
-    let (deep, deep_rays) = super::bvh_deep::deep_chain();
-    let deep = ReadableBvh::of(&deep);
-    for (ray, what) in &deep_rays {
-        compare(&deep, ray, f32::INFINITY, &|| what.clone());
+    for (deep, deep_rays) in [super::bvh_deep::deep_chain(), super::bvh_deep::long_chain()] {
+        let deep = ReadableBvh::of(&deep);
+        for (ray, what) in &deep_rays {
+            compare(&deep, ray, f32::INFINITY, &|| what.clone());
+        }
     }
     // The sheets: the same answers, and the work.
     progress("rays through eight sheets of triangles");

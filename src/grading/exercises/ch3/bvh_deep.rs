@@ -16,6 +16,21 @@ pub(super) fn deep_chain() -> (ReadableBvh, Vec<(Ray, String)>) {
     let mut draws = Draws::new(35);
     let n = draws.count(100, 300);
     let hit = draws.count(n / 2, n - 1);
+    chain(draws, n, hit)
+}
+
+/// A longer chain, 600 to 900 deep, whose hit hangs a quarter to an
+/// eighth of the way down: a front-to-back traversal opens 450 leaves or
+/// more before it (no count of leaves may stop it).
+pub(super) fn long_chain() -> (ReadableBvh, Vec<(Ray, String)>) {
+    let mut draws = Draws::new(135);
+    let n = draws.count(600, 900);
+    let hit = draws.count(n / 8, n / 4);
+    chain(draws, n, hit)
+}
+
+/// A chain of `n` with the hit at `hit`, the rest drawn from `draws`.
+fn chain(mut draws: Draws, n: usize, hit: usize) -> (ReadableBvh, Vec<(Ray, String)>) {
     let spacing = draws.decades(-2.0, 1.0);
     let size = spacing * 0.4;
     let place = draws.place_for(size, 2.0);

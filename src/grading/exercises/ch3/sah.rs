@@ -169,12 +169,12 @@ fn hand_nodes() -> Vec<HandNode> {
     nodes
 }
 
-/// A drawn scene (`tiny`: 10⁻⁴ to 10⁻³ across, else 10⁻³ to 10³): what it
+/// A drawn scene (across: 10^`decades`, 10⁻³ to 10³ where `None`): what it
 /// is, and its triangles.
-fn drawn_scene(d: &mut Draws, tiny: bool) -> (String, Vec<[Vec3; 3]>) {
-    let scale = match tiny {
-        true => d.decades(-4.0, -3.0),
-        false => d.decades(-3.0, 3.0),
+fn drawn_scene(d: &mut Draws, decades: Option<(f32, f32)>) -> (String, Vec<[Vec3; 3]>) {
+    let scale = match decades {
+        Some((lo, hi)) => d.decades(lo, hi),
+        None => d.decades(-3.0, 3.0),
     };
     let place = d.place_for(scale, 3.0);
     let n = d.count(2, 400);
@@ -399,11 +399,17 @@ pub fn check_sah(f: SahFn) -> Check {
     let mut draws = Draws::new(37);
     let mut worst = (0.0f64, "every tree within the margins".to_string());
     let (mut work_all, mut work_ref) = (0u64, 0u64);
-    // The first three scenes tiny (areas of 10⁻⁸ m² and less are areas
-    // like any other).
+    // The first three scenes tiny, the next two tinier still (areas of
+    // 10⁻⁸ m² and less are areas like any other, and centroids 10⁻⁷ apart
+    // are apart).
     for scene in 0..draws.count(16, 24) {
         draws.next_case();
-        let (what, tris) = drawn_scene(&mut draws, scene < 3);
+        let decades = match scene {
+            0..=2 => Some((-4.0, -3.0)),
+            3 | 4 => Some((-7.0, -5.0)),
+            _ => None,
+        };
+        let (what, tris) = drawn_scene(&mut draws, decades);
         let theirs = match build_with(&tris, &mut |b, c| f(b, c)) {
             Ok(tree) => tree,
             Err(e) => return failed(format!("{what} (a drawn scene): {e}"), EMPTY_CHILD),

@@ -254,6 +254,14 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
         (Vec3::new(1.0, 0.5, 0.0), Vec3::Z, tri, None),
         (Vec3::new(3.0, 3.0, 0.0), -Vec3::Z, tri, None),
         (Vec3::new(0.0, 0.0, -2.0), Vec3::X, tri, None),
+        // Parallel 2^-14 above the triangle's plane, across it: no hit,
+        // however near (a ray tilted by 10⁻⁴ would hit).
+        (
+            Vec3::new(0.2, 0.5, -2.0 + 2f32.powi(-14)),
+            Vec3::X,
+            tri,
+            None,
+        ),
         (
             Vec3::ZERO,
             -Vec3::Z,

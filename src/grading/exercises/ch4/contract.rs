@@ -9,41 +9,12 @@
 use glam::Vec3;
 
 use crate::ch4_implicit_surfaces::march::March;
-use crate::exercise::Symptom;
 
 pub use super::probe::Probe;
 use super::walls::*;
 
-/// Evaluates the distance function past the budget.
-pub const NO_BUDGET: Symptom = Symptom {
-    name: "no step budget",
-};
-/// One evaluation too many or too few.
-pub const BUDGET_OFF_BY_ONE: Symptom = Symptom {
-    name: "budget off by one",
-};
-/// Marches on past max_distance.
-pub const IGNORES_MAX_DISTANCE: Symptom = Symptom {
-    name: "ignores max_distance",
-};
-/// Compares |f| with march.epsilon, not with march.epsilon_at(p).
-pub const FIXED_EPSILON: Symptom = Symptom { name: "fixed ε" };
-/// A normal that is not unit length.
-pub const NOT_UNIT: Symptom = Symptom {
-    name: "normal not unit length",
-};
-/// A normal pointing away from the viewer.
-pub const NOT_FACING: Symptom = Symptom {
-    name: "normal faces away",
-};
-/// NaN where the gradient is zero.
-pub const ZERO_GRADIENT: Symptom = Symptom {
-    name: "zero gradient",
-};
-/// A point inside the surface (f ≤ -ε) taken for a hit: f < ε, not |f| < ε.
-pub const INSIDE_HIT: Symptom = Symptom {
-    name: "inside taken for a hit",
-};
+pub use super::contract_symptoms::*;
+use crate::exercise::Symptom;
 
 /// Which clause a case tests.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -143,6 +114,17 @@ pub fn cases() -> Vec<Case> {
             corridor,
             (Vec3::ZERO, Vec3::X),
             budget(256),
+        ),
+        case(
+            "an exact wall 3,000,000 m below, max_distance = 10⁷: a hit at t = 3·10⁶ (no distance \
+             too far below the limit given)",
+            Clause::MaxDistance,
+            wall,
+            down(3e6),
+            March {
+                max_distance: 1e7,
+                ..m
+            },
         ),
         case(
             "the same wall, a budget of u32::MAX evaluations (no limit to speak of)",

@@ -126,14 +126,31 @@ fn gradient_normal_values(f: NormalFn) -> Check {
     // distance, k from 1 ± 0.2 % to 1 ± 0.9 % (a gradient nearly unit is
     // not unit: it is normalised all the same).
     let mut nearly = Draws::new(144);
+    // And from another, a tenth of the bounds 10⁻⁶ to 10⁻³·⁵ times the
+    // distance (a gradient that short is still a direction), and a tenth
+    // of the points 10³ to 10⁵ radii out (f there is large, and still
+    // what it is).
+    let mut extreme = Draws::new(244);
     let drawn = worst_drawn((0..draws.count(50, 200)).map(|_| {
         draws.next_case();
         nearly.next_case();
+        extreme.next_case();
         let r = draws.decades(-2.0, 2.0);
         let centre = draws.place_for(r, 1.0);
         let out = draws.direction();
         let p = centre + out * r * draws.range(0.9, 1.1);
+        let far = extreme.unit() < 0.1;
+        let p = match far {
+            true => centre + out * r * extreme.decades(3.0, 5.0),
+            false => p,
+        };
         let h = r * draws.decades(-3.0, -2.0);
+        // (Far out, h from 10⁻⁵ to 10⁻⁴ of p's largest coordinate: p ± h
+        // must be other points than p in f32.)
+        let h = match far {
+            true => p.abs().max_element() * extreme.decades(-5.0, -4.0),
+            false => h,
+        };
         // Half of them a bound, not a distance: k times it, k from 1/10 to
         // 10, whose gradient is k long (the normal is still unit).
         let k = if draws.unit() < 0.5 {
@@ -143,6 +160,10 @@ fn gradient_normal_values(f: NormalFn) -> Check {
         };
         let k = match nearly.unit() < 1.0 / 6.0 {
             true => 1.0 + nearly.sign() * nearly.range(0.002, 0.009),
+            false => k,
+        };
+        let k = match extreme.unit() < 0.1 {
+            true => extreme.decades(-6.0, -3.5),
             false => k,
         };
         let sdf = move |q: Vec3| k * ((q - centre).length() - r);

@@ -13,6 +13,7 @@ use crate::exercise::{Check, Exercise, Symptom};
 use crate::exercises::{stateless, worse};
 
 mod contract;
+mod contract_symptoms;
 mod gradient;
 mod probe;
 mod scene;
@@ -270,9 +271,18 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
     // 200 radii or just past the sphere.
     let (mut error, mut detail) = (error, detail);
     let mut draws = Draws::new(43);
-    let drawn = worst_drawn((0..draws.count(20, 60)).map(|_| {
+    // From a stream of its own, the first and a tenth of the others 10⁵·⁵
+    // to 10⁶·⁵ across (hits up to 10⁸ away: no distance is too far for
+    // the march).
+    let mut huge = Draws::new(243);
+    let drawn = worst_drawn((0..draws.count(20, 60)).map(|k| {
         draws.next_case();
+        huge.next_case();
         let r = draws.decades(-2.0, 2.0);
+        let r = match huge.unit() < 0.1 || k == 0 {
+            true => huge.decades(5.5, 6.5),
+            false => r,
+        };
         // Half of them with max_distance just past the sphere (1.5 times
         // its far side's distance) and the sphere 30 to 100 radii from the
         // world's origin: t, not the distance from the origin, is what

@@ -155,10 +155,18 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     // order) and a drawn constant from 10⁻⁸ to 10⁸, from drawn numbers: exact up to
     // rounding, with f evaluated once per number, inside the interval.
     let mut draws = Draws::new(61);
-    let drawn = worst_drawn((0..draws.count(20, 60)).map(|_| {
+    let mut narrow = Draws::new(261);
+    let drawn = worst_drawn((0..draws.count(20, 60)).map(|k| {
         draws.next_case();
+        narrow.next_case();
         let a = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
         let width = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
+        // The first and a tenth of the others from 10⁻¹² to 10⁻⁹ wide (a
+        // stream of their own): narrow is not empty.
+        let width = match narrow.unit() < 0.1 || k == 0 {
+            true => width.signum() * narrow.decades(-12.0, -9.0) as f64,
+            false => width,
+        };
         let c = (draws.sign() * draws.decades(-8.0, 8.0)) as f64;
         let mut u: Vec<f64> = (0..draws.count(1, 16))
             .map(|_| draws.unit() as f64)
@@ -191,59 +199,69 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     // (sorted, each within 2/4,096 of the width of its place on the even
     // grid), and all different (points snapped to a grid of their own are
     // not uniform).
-    let (a, width) = (
+    let drawn = (
         (draws.sign() * draws.decades(-3.0, 3.0)) as f64,
         draws.decades(-3.0, 3.0) as f64,
     );
     let m = 4096;
-    let points = std::cell::RefCell::new(Vec::with_capacity(m));
     // Not half way: u and 1 - u never meet on the grid.
     let phase = draws.range(0.05, 0.45) as f64 + 0.5 * draws.count(0, 1) as f64;
     let evenly: Vec<f64> = (0..m).map(|i| (i as f64 + phase) / m as f64).collect();
-    for u in &evenly {
-        f(
-            &|x| {
-                points.borrow_mut().push(x);
-                1.0
-            },
-            a,
-            a + width,
-            std::slice::from_ref(u),
-        );
-    }
-    let mut points = points.into_inner();
-    points.sort_by(f64::total_cmp);
-    let off = match points.len() == m {
-        true => points
-            .iter()
-            .zip(&evenly)
-            .map(|(x, u)| (x - (a + width * u)).abs() / width)
-            .fold(
-                0.0,
-                |w: f64, d| if d.is_nan() { f64::INFINITY } else { w.max(d) },
-            ),
-        false => f64::INFINITY,
-    };
-    let repeated = points.windows(2).filter(|w| w[0] == w[1]).count();
-    if off > 2.0 / m as f64 && error <= 1e-3 {
-        (error, detail) = (
-            1.0,
-            format!(
-                "4,096 evenly spaced numbers, one per call, on [{a}, {}] put f's points up to {off:.4} of the \
-                 width from an even spread: the points must be uniform on [a, b] when the numbers are",
-                a + width
-            ),
-        );
-    } else if repeated > 0 && error <= 1e-3 {
-        (error, detail) = (
-            1.0,
-            format!(
-                "4,096 different numbers, one per call, on [{a}, {}] put f's points at only {} different places: \
-                 points snapped to a grid are not uniform on [a, b]",
+    // Then again on a narrow interval far from 0 (10³ to 10⁵ out, 10⁻³ to
+    // 10⁻¹ wide, from a stream of its own), where a point worked out in
+    // f32 lands on f32's own coarse grid.
+    let mut afar = Draws::new(161);
+    let far = (
+        (afar.sign() * afar.decades(3.0, 5.0)) as f64,
+        afar.decades(-3.0, -1.0) as f64,
+    );
+    for (a, width) in [drawn, far] {
+        let points = std::cell::RefCell::new(Vec::with_capacity(m));
+        for u in &evenly {
+            f(
+                &|x| {
+                    points.borrow_mut().push(x);
+                    1.0
+                },
+                a,
                 a + width,
-                m - repeated
-            ),
-        );
+                std::slice::from_ref(u),
+            );
+        }
+        let mut points = points.into_inner();
+        points.sort_by(f64::total_cmp);
+        let off = match points.len() == m {
+            true => points
+                .iter()
+                .zip(&evenly)
+                .map(|(x, u)| (x - (a + width * u)).abs() / width)
+                .fold(
+                    0.0,
+                    |w: f64, d| if d.is_nan() { f64::INFINITY } else { w.max(d) },
+                ),
+            false => f64::INFINITY,
+        };
+        let repeated = points.windows(2).filter(|w| w[0] == w[1]).count();
+        if off > 2.0 / m as f64 && error <= 1e-3 {
+            (error, detail) = (
+                1.0,
+                format!(
+                    "4,096 evenly spaced numbers, one per call, on [{a}, {}] put f's points up to {off:.4} of the \
+                     width from an even spread: the points must be uniform on [a, b] when the numbers are",
+                    a + width
+                ),
+            );
+        } else if repeated > 0 && error <= 1e-3 {
+            (error, detail) = (
+                1.0,
+                format!(
+                    "4,096 different numbers, one per call, on [{a}, {}] put f's points at only {} different places: \
+                     points snapped to a grid are not uniform on [a, b]",
+                    a + width,
+                    m - repeated
+                ),
+            );
+        }
     }
     // Off by (b − a): the constant 1 on [0, 2] comes out as 1, not 2.
     let unit = f(&|_| 1.0, 0.0, 2.0, &[0.25, 0.75]);

@@ -23,13 +23,12 @@
 
 use glam::{DVec3, Vec3};
 
-use super::cornell::cornell;
 use super::open::{
-    self, hidden_emission, BLACK_SURFACE, BOUNCE_EMISSION_ADDED, HIDDEN_EMISSION_PATHS,
+    hidden_emission, BLACK_SURFACE, BOUNCE_EMISSION_ADDED, HIDDEN_EMISSION_PATHS,
     LIGHT_FROM_BEHIND, LIGHT_THROUGH_OCCLUDER, PATHS_BEFORE, UNBOUNDED_THROUGHPUT,
 };
 use super::{reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
-use crate::exercise::{Check, Symptom};
+use crate::exercise::Symptom;
 
 /// A path was still going after [`BOUNCE_BUDGET`] bounces in the closed
 /// furnace.
@@ -94,7 +93,7 @@ pub const CORNELL_DIFFERS: Symptom = Symptom {
     name: "right in the furnace, wrong in the Cornell box",
 };
 
-/// Every symptom [`check_path_radiance`] can name.
+/// Every symptom [`check_path_radiance`](super::check_path_radiance) can name.
 pub const SYMPTOMS: [Symptom; 18] = [
     NO_ROULETTE,
     UNBOUNDED_THROUGHPUT,
@@ -399,46 +398,4 @@ fn cap_spike(lengths: &[u64]) -> Option<(usize, u64)> {
     let at = lengths[k];
     let before = if k > 0 { lengths[k - 1] } else { 0 };
     (at >= 20 && at * 1000 >= total && at > 2 * before).then_some((k, at))
-}
-
-/// The capstone: the closed furnace, then the Cornell box (see the
-/// module's doc). The error is the larger z of the two (5 passes).
-pub fn check_path_radiance(f: PathFn) -> Check {
-    let (albedo, le) = furnace_of_run();
-    let scene = PathScene::furnace(albedo, le);
-    let furnace = trace_furnace(f, &scene, FURNACE_PATHS, 611 ^ crate::run_seed());
-    let (fz, fdetail, fsymptom) = judge_furnace_of(f, &furnace, FURNACE_PATHS, (albedo, le));
-    if fz <= 5.0 {
-        if let Some((detail, symptom)) = open::contract_failure(f) {
-            return Check {
-                error: 1e3,
-                tolerance: 5.0,
-                detail: format!("{fdetail}; but in {detail}"),
-                images: None,
-                symptom: Some(symptom),
-            };
-        }
-    }
-    let box_check = cornell(f);
-    let error = crate::exercises::worse(fz, box_check.error);
-    let (detail, symptom) = if fz > 5.0 {
-        (fdetail, fsymptom)
-    } else if !box_check.passed() {
-        (
-            format!("{fdetail}; but in the Cornell box, {}", box_check.detail),
-            Some(CORNELL_DIFFERS),
-        )
-    } else {
-        (
-            format!("{fdetail}; Cornell box: {}", box_check.detail),
-            None,
-        )
-    };
-    Check {
-        error,
-        tolerance: 5.0,
-        detail,
-        images: box_check.images,
-        symptom,
-    }
 }

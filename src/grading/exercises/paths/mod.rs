@@ -23,11 +23,14 @@ use crate::ch5_reflection::warp::cosine_hemisphere;
 use crate::ch5_reflection::world::World;
 use crate::core::sampling::random;
 
+mod bright;
+mod capstone;
 mod check;
 mod cornell;
 mod furnace;
 mod open;
 
+pub use capstone::check_path_radiance;
 pub use check::*;
 use furnace::Furnace;
 pub use open::LIGHT_THROUGH_OCCLUDER;

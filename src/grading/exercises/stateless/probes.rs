@@ -1,11 +1,11 @@
 //! Each exercise's probe: its questions drawn in its domain (the numbers
 //! of its arguments in order), and how a question is asked, by the
-//! student's function and by the reference. Each asks its questions again
-//! after decoys ([`changed_answer`]), then beside their twins
+//! student's function and by the reference. Each asks its questions
+//! again after decoys ([`changed_answer`]), then beside their twins
 //! ([`same_for_near`]): which arguments a twin moves (one at a time) and
-//! which numbers are lengths. The statistical exercises (the cosine map,
-//! roulette) have no twins: a right answer there may differ from the
-//! reference's at every point.
+//! which numbers are lengths.
+//! The statistical exercises (the cosine map, roulette) have no twins: a
+//! right answer there may differ from the reference's at every point.
 
 // (`&[3..6]` is a list of the ranges taken whole, with one in it.)
 #![allow(clippy::single_range_in_vec_init)]

@@ -1,0 +1,39 @@
+//! The path capstone's brighter furnace (albedo 0.97): paths of 33
+//! bounces on average and a few of several hundred, where what a path
+//! loses or gains at each bounce adds up. A denominator nudged "to be
+//! safe" (pdf + 10⁻⁴ loses 0.06 % a bounce, 2 % here) or a count that
+//! stops a path at some depth (a byte's 255) shows here, while in the
+//! run's own furnace (albedo 0.8 to 0.9, about 7 bounces) it hides in
+//! the noise. Below 0.97, so that no right path runs past
+//! [`BOUNCE_BUDGET`](super::BOUNCE_BUDGET) (0.97¹⁰⁰⁰ is 6·10⁻¹⁴).
+
+use super::check::{furnace_of_run, judge_furnace_of, trace_furnace, DEPTH_CAP};
+use super::{PathFn, PathScene};
+use crate::exercise::Symptom;
+
+/// The brighter furnace's albedo.
+const ALBEDO: f32 = 0.97;
+/// Paths traced in it: a 2 % bias is then about 7 standard errors.
+const PATHS: u64 = 200_000;
+
+/// `None` if the brighter furnace's mean is within 5 standard errors of
+/// Le / (1 − ρ) and no depth ends many paths at once; else (error, what
+/// was seen, the symptom).
+pub fn bright_furnace(f: PathFn) -> Option<(f64, String, Option<Symptom>)> {
+    let (_, le) = furnace_of_run();
+    let scene = PathScene::furnace(ALBEDO, le);
+    let run = trace_furnace(f, &scene, PATHS, 613 ^ crate::run_seed());
+    // Under roulette the longest paths are a thin tail, one or two at the
+    // longest length; a depth that ends paths piles them up there.
+    let k = run.lengths.iter().rposition(|c| *c > 0)?;
+    let (at, before) = (run.lengths[k], run.lengths[k.saturating_sub(1)]);
+    if at >= 20 && at > 2 * before {
+        let detail = format!(
+            "a brighter closed furnace (albedo {ALBEDO}): {at} of {PATHS} paths end at exactly {k} \
+             bounces (a depth that stops paths is a bias: only roulette may end them)"
+        );
+        return Some((1e3, detail, Some(DEPTH_CAP)));
+    }
+    let (error, detail, symptom) = judge_furnace_of(f, &run, PATHS, (ALBEDO, le));
+    (error > 5.0).then(|| (error, format!("in a brighter {detail}"), symptom))
+}
