@@ -233,10 +233,12 @@ fn accumulate_then_shift(path: &[Gathered]) -> [Vec3; LAYER_SLOTS] {
             How::Found => g.vertex as usize,
             How::LightSample => g.vertex as usize + 1,
         };
-        let c = g.value.as_dvec3() * g.weight as f64;
-        if !c.is_finite() {
+        // Left out where the product as f32 forms it is not finite (the
+        // stub's clause), then summed in f64.
+        if !(g.value * g.weight).is_finite() {
             continue;
         }
+        let c = g.value.as_dvec3() * g.weight as f64;
         if by_scatterings.len() <= s {
             by_scatterings.resize(s + 1, glam::DVec3::ZERO);
         }

@@ -30,10 +30,14 @@ fn fails(what: &str, check: impl Fn() -> Check) {
     fails_every(&SEEDS, what, None, check);
 }
 
+/// Memos' answers, by the memo's name and its (rounded) key.
+type Memos = HashMap<(&'static str, Vec<i64>), Vec<f32>>;
+/// The last integral: (a, b, how many numbers, the first one, the answer).
+type LastIntegral = Option<(f64, f64, usize, f64, f64)>;
+
 thread_local! {
-    /// Every memo's answers, by the memo's name and its (rounded) key.
-    static MEMO: RefCell<HashMap<(&'static str, Vec<i64>), Vec<f32>>> =
-        RefCell::new(HashMap::new());
+    /// Every memo's answers.
+    static MEMO: RefCell<Memos> = RefCell::new(HashMap::new());
 }
 
 /// The answer kept under `key` in the memo `name`, or `answer()` kept there.
@@ -166,8 +170,8 @@ thread_local! {
     static FRONT: Cell<Option<bool>> = const { Cell::new(None) };
     /// The integral's scratch buffer, sized by the first call.
     static BUFFER: RefCell<Option<Vec<f64>>> = const { RefCell::new(None) };
-    /// The last integral: (a, b, how many numbers, the first one, the answer).
-    static LAST: Cell<Option<(f64, f64, usize, f64, f64)>> = const { Cell::new(None) };
+    /// The last integral.
+    static LAST: Cell<LastIntegral> = const { Cell::new(None) };
     /// The last depth test that passed: (index, z's bits).
     static LAST_PASS: Cell<Option<(usize, u32)>> = const { Cell::new(None) };
 }

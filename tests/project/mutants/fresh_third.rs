@@ -480,7 +480,7 @@ fn cosine_hemisphere_alternative_passes() {
 
 // ---- 5.3 point_light ------------------------------------------------------------
 
-/// Correct: n · to / r³, no normalised direction.
+/// n · to / r³, no normalised direction (wrong for far lights: below).
 fn point_light_cube(intensity: Vec3, light: Vec3, p: Vec3, n: Vec3) -> Vec3 {
     let to = light - p;
     let r = to.length();
@@ -491,9 +491,14 @@ fn point_light_cube(intensity: Vec3, light: Vec3, p: Vec3, n: Vec3) -> Vec3 {
     intensity * (ndotl / (r * r * r))
 }
 
+/// Once counted right, n · to / r³ is wrong (since the nineteenth set):
+/// r³ leaves f32's range for lights past 7·10¹² m, where r² does not, and
+/// the irradiance comes out 0.
 #[test]
-fn point_light_alternative_passes() {
-    passes("n · to / r³", || ch5::check_point_light(point_light_cube));
+fn point_light_cube_fails_for_far_lights() {
+    fails("n · to / r³", None, || {
+        ch5::check_point_light(point_light_cube)
+    });
 }
 
 // ---- 5.4 area_pdf ---------------------------------------------------------------

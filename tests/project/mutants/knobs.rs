@@ -404,6 +404,8 @@ pub struct BvhKnobs {
     pub nudge_zero_dir: bool,
     /// 1/d from the bit trick and one Newton step (about 2.6·10⁻³ off).
     pub approx_recip: bool,
+    /// Leaves opened at most, the rest passed by.
+    pub leaf_budget: Option<u32>,
 }
 
 impl Default for BvhKnobs {
@@ -414,6 +416,7 @@ impl Default for BvhKnobs {
             leaf_cap: None,
             nudge_zero_dir: false,
             approx_recip: false,
+            leaf_budget: None,
         }
     }
 }
@@ -426,13 +429,17 @@ pub fn closest_hit(k: BvhKnobs, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Opt
         (bvh, ray, inv): (&ReadableBvh, &Ray, Vec3),
         node: u32,
         t_enter: f32,
-        best: &mut (f32, Option<Hit>),
+        best: &mut (f32, Option<Hit>, u32),
     ) {
         if t_enter > best.0 {
             return;
         }
         match bvh.nodes[node as usize].kind {
             NodeKind::Leaf { first, count } => {
+                best.2 += 1;
+                if k.leaf_budget.is_some_and(|most| best.2 > most) {
+                    return;
+                }
                 let t_min = match k.t_min {
                     TMin::Fixed(t) => t,
                     TMin::BoxEntry => t_enter,
@@ -445,7 +452,7 @@ pub fn closest_hit(k: BvhKnobs, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Opt
                     if let Some(hit) =
                         intersect_watertight(ray, bvh.tris[id as usize], t_min, best.0).filter(kept)
                     {
-                        *best = (
+                        (best.0, best.1) = (
                             hit.t,
                             Some(Hit {
                                 triangle: id,
@@ -487,7 +494,7 @@ pub fn closest_hit(k: BvhKnobs, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Opt
         false => dir.recip(),
     };
     let t_root = bvh.nodes.first()?.bounds.enter(ray, inv, t_max)?;
-    let mut best = (t_max, None);
+    let mut best = (t_max, None, 0);
     visit(k, (bvh, ray, inv), 0, t_root, &mut best);
     best.1
 }
@@ -945,6 +952,10 @@ pub struct PathKnobs {
     /// The emission the bounce finds added where the light sampler found
     /// no sample.
     pub found_emission_without_light: bool,
+    /// Added to the bounce's pdf before dividing by it (the solution: 0).
+    pub pdf_eps: f32,
+    /// The path ends after this many bounces, roulette or not.
+    pub max_bounces: Option<u32>,
 }
 
 impl Default for PathKnobs {
@@ -960,6 +971,8 @@ impl Default for PathKnobs {
             light_clamp: None,
             lazy_below: None,
             found_emission_without_light: false,
+            pdf_eps: 0.0,
+            max_bounces: None,
         }
     }
 }
@@ -1017,8 +1030,11 @@ pub fn path(
             break;
         }
         let before = beta;
-        beta *= f * hit.n.dot(wi) / pdf;
+        beta *= f * hit.n.dot(wi) / (pdf + k.pdf_eps);
         bounces += 1;
+        if k.max_bounces.is_some_and(|most| bounces >= most) {
+            break;
+        }
         if !k.roulette_at_top && bounces > k.roulette_after {
             let q = q_of(beta, before);
             let u = rng();
