@@ -59,8 +59,9 @@ fn point_light_values(f: PointFn) -> Check {
     let mut draws = Draws::new(52);
     let mut off = Draws::new(152);
     // From streams of their own: a tenth of the lights 10⁹ to 10¹⁵ away
-    // (r³ past f32's range there, r² not), and a tenth of the others
-    // faint, 10⁻¹² to 10⁻⁶ of the drawn intensity (faint is not off).
+    // (r³ past f32's range there, r² not) and a tenth 10⁻⁶ to 10⁻³ away,
+    // and a tenth of the others faint, 10⁻¹² to 10⁻⁶ of the drawn
+    // intensity (faint is not off).
     let (mut reach, mut faint) = (Draws::new(252), Draws::new(253));
     let mut last_light: Option<(Vec3, f32)> = None;
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
@@ -68,10 +69,14 @@ fn point_light_values(f: PointFn) -> Check {
         reach.next_case();
         faint.next_case();
         let scale = draws.decades(-3.0, 6.0);
-        let far = reach.unit() < 0.1;
-        let scale = match far {
-            true => reach.decades(9.0, 15.0),
-            false => scale,
+        let (far, near) = match reach.unit() {
+            u if u < 0.1 => (true, false),
+            u => (false, u < 0.2),
+        };
+        let scale = match (far, near) {
+            (true, _) => reach.decades(9.0, 15.0),
+            (_, true) => reach.decades(-6.0, -3.0),
+            _ => scale,
         };
         let mut p = draws.place_for(scale, 3.0);
         let mut way = draws.direction();
