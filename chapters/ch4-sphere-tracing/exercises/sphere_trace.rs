@@ -7,9 +7,9 @@
 //! * `Some(t)` for the first t the march reaches where
 //!   |sdf(o + t d)| < `epsilon` (hits to within ε of the true distance).
 //! * `None` when t is beyond `max_distance` before a hit.
-//! * The step budget: at most `max_steps` evaluations of `sdf`, the one
-//!   at t = 0 included, every one of them tested for a hit; `None` when
-//!   they are used up.
+//! * The step budget: at most `max_steps` evaluations of `sdf` (at least
+//!   one), the one at t = 0 included, every one of them tested for a hit;
+//!   `None` when they are used up.
 //!
 //! The idea: no surface is closer to a point than the distance function
 //! says there, so that distance is a step that cannot cross a surface.
