@@ -67,6 +67,27 @@ fn f32_spread(p: DVec3, tri: [DVec3; 3]) -> f64 {
         .into_iter()
         .map(|(q, t)| (exact(q, t) - base).abs())
         .fold(0.0, f64::max)
+        .max(f32_sum_spread(p, tri))
+}
+
+/// What f32 rounding of Van Oosterom and Strackee's denominator alone can
+/// do to 2 atan2(N, D): the sum rounded to about 8 f32 steps of its terms'
+/// magnitudes, moved through atan2's derivative in D, 2|N|/(N² + D²). It
+/// matters only where the four terms cancel to almost nothing (D small
+/// beside them, N small too), which moving the inputs by 10⁻⁶ does not
+/// always reach; elsewhere it is a few f32 steps of Ω.
+fn f32_sum_spread(p: DVec3, tri: [DVec3; 3]) -> f64 {
+    let [a, b, c] = tri.map(|v| v - p);
+    let (la, lb, lc) = (a.length(), b.length(), c.length());
+    let n = a.dot(b.cross(c));
+    let terms = [la * lb * lc, a.dot(b) * lc, a.dot(c) * lb, b.dot(c) * la];
+    let d: f64 = terms.iter().sum();
+    let dd = 8.0 * f64::from(f32::EPSILON) * terms.iter().map(|t| t.abs()).sum::<f64>();
+    let r2 = n * n + d * d;
+    match r2 > 0.0 {
+        true => 2.0 * n.abs() * dd / r2,
+        false => 0.0,
+    }
 }
 
 /// The error of `got` for the triangle `tri` seen from `p`: relative to
