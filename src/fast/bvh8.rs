@@ -25,10 +25,10 @@ use crate::ch3_ray_triangle::wide_build::{
 };
 
 use super::lanes::{enter, leaf_test, Hits8, Leaf8, Node8, RayData, LEAF, LEAF_SIZE, W};
+use super::level::Level;
 
 /// The lanes a narrow node or leaf uses.
 const NARROW: usize = 4;
-use super::level::Level;
 
 /// The eight-wide tree.
 pub struct Bvh8 {

@@ -70,10 +70,9 @@ fn apart(a: &str, b: &str) -> Option<f64> {
 }
 
 /// Each of `cases` and two twins of it per argument that may move, at
-/// drawn scales: `None` if every
-/// twin whose reference answer differs by more than 2 % got an answer of
-/// its own, else the first that did not. (Numbers are f32 values held in
-/// f64, and stay so.)
+/// drawn scales: `None` if every twin whose reference answer differs by
+/// more than 2 % got an answer of its own, else the first that did not.
+/// (Numbers are f32 values held in f64, and stay so.)
 pub fn same_for_near<R: Debug>(
     cases: &[Vec<f64>],
     twins: &Twins,
@@ -88,61 +87,55 @@ pub fn same_for_near<R: Debug>(
         .iter()
         .flat_map(|c| twice.clone().map(move |m| (c, m)))
     {
-        {
-            d.next_case();
-            let scale = match twins.lengths.is_empty() {
-                true => 1.0,
-                false => d.decades(-7.0, 0.0) as f64,
-            };
-            let base: Vec<f64> = (0..case.len())
-                .map(|i| match within(twins.lengths, i) {
-                    true => (case[i] * scale) as f32 as f64,
-                    false => case[i],
-                })
+        d.next_case();
+        let scale = match twins.lengths.is_empty() {
+            true => 1.0,
+            false => d.decades(-7.0, 0.0) as f64,
+        };
+        let base: Vec<f64> = (0..case.len())
+            .map(|i| match within(twins.lengths, i) {
+                true => (case[i] * scale) as f32 as f64,
+                false => case[i],
+            })
+            .collect();
+        let twin: Vec<f64> = (0..base.len())
+            .map(|i| match moved.contains(&i) {
+                true => (base[i] * (1.0 - d.range(0.05, 0.3) as f64)) as f32 as f64,
+                false => base[i],
+            })
+            .collect();
+        let (a, b) = (format!("{:?}", ask(&base)), format!("{:?}", ask(&twin)));
+        if a != b {
+            continue;
+        }
+        let (ra, rb) = (
+            format!("{:?}", reference(&base)),
+            format!("{:?}", reference(&twin)),
+        );
+        // Each of the two, with its numbers moved by 10⁻⁴: steady?
+        let steady = |q: &[f64], answer: &str, d: &mut Draws| {
+            let moved: Vec<f64> = (0..q.len())
+                .map(
+                    |i| match within(twins.nudged, i) || within(twins.lengths, i) {
+                        true => (q[i] * (1.0 + 1e-4 * d.range(-1.0, 1.0) as f64)) as f32 as f64,
+                        false => q[i],
+                    },
+                )
                 .collect();
-            let twin: Vec<f64> = (0..base.len())
-                .map(|i| match moved.contains(&i) {
-                    true => (base[i] * (1.0 - d.range(0.05, 0.3) as f64)) as f32 as f64,
-                    false => base[i],
-                })
-                .collect();
-            let (a, b) = (format!("{:?}", ask(&base)), format!("{:?}", ask(&twin)));
-            if a != b {
-                continue;
-            }
-            let (ra, rb) = (
-                format!("{:?}", reference(&base)),
-                format!("{:?}", reference(&twin)),
-            );
-            // Each of the two, with its numbers moved by 10⁻⁴: steady?
-            let steady = |q: &[f64], answer: &str, d: &mut Draws| {
-                let moved: Vec<f64> = (0..q.len())
-                    .map(
-                        |i| match within(twins.nudged, i) || within(twins.lengths, i) {
-                            true => (q[i] * (1.0 + 1e-4 * d.range(-1.0, 1.0) as f64)) as f32 as f64,
-                            false => q[i],
-                        },
-                    )
-                    .collect();
-                apart(answer, &format!("{:?}", reference(&moved))).is_some_and(|g| g < 1e-2)
-            };
-            if !steady(&base, &ra, &mut d) || !steady(&twin, &rb, &mut d) {
-                continue;
-            }
-            match apart(&ra, &rb) {
-                Some(gap) if gap > 0.02 => {
-                    return Some(format!(
-                        "the arguments {} and then {} both got {a}, though the right \
-                         answers ({ra} and {rb}) differ by {:.0}% of their size: an answer must be \
-                         worked out from its own arguments, not kept from a question that rounds \
-                         the same way",
-                        show(&base),
-                        show(&twin),
-                        gap * 100.0
-                    ))
-                }
-                _ => {}
-            }
+            apart(answer, &format!("{:?}", reference(&moved))).is_some_and(|g| g < 1e-2)
+        };
+        if !steady(&base, &ra, &mut d) || !steady(&twin, &rb, &mut d) {
+            continue;
+        }
+        if let Some(gap) = apart(&ra, &rb).filter(|gap| *gap > 0.02) {
+            return Some(format!(
+                "the arguments {} and then {} both got {a}, though the right answers ({ra} and \
+                 {rb}) differ by {:.0}% of their size: an answer must be worked out from its own \
+                 arguments, not kept from a question that rounds the same way",
+                show(&base),
+                show(&twin),
+                gap * 100.0
+            ));
         }
     }
     None

@@ -273,8 +273,12 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
     compare(&wall, &inside, f32::INFINITY, &|| {
         "a ray along -z 10⁻⁶ inside its box's side x = 10, the hit 1,000 away".to_string()
     });
-    for (tree, ray, what) in super::bvh_cases::far_rays(&wall) {
-        compare(&tree, &ray, f32::INFINITY, &|| what.clone());
+    for (ray, what) in super::bvh_cases::side_rays() {
+        compare(&wall, &ray, f32::INFINITY, &|| what.clone());
+    }
+    let (far, far_rays) = super::bvh_cases::far_triangle();
+    for (ray, what) in &far_rays {
+        compare(&far, ray, f32::INFINITY, &|| what.clone());
     }
     progress("rays at a flat triangle");
     for far in [false, true] {

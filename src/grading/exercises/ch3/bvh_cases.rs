@@ -174,15 +174,14 @@ pub(super) fn cornell_inside_rays(tris: &[[Vec3; 3]]) -> Vec<(Ray, String)> {
     rays
 }
 
-/// Rays from far off: along -z from 10,000 away, 10⁻⁶ inside two sides of
-/// the box of `wall` (its direction's zeros of both signs: +0 towards the
-/// side x = 10, -0 towards y = -10; a zero stands for no drift at all,
-/// however far the ray goes, and a tiny stand-in for it drifts out of the
-/// box before the hit), and rays at a triangle 2·10⁶ to 3·10⁷ away, with
-/// t_max infinite (no distance is too far): (tree, ray, what to call it).
-pub(super) fn far_rays(wall: &ReadableBvh) -> Vec<(ReadableBvh, Ray, String)> {
-    let mut out = Vec::new();
-    for (origin, dir, side) in [
+/// Rays along -z from 10,000 away, 10⁻⁶ inside two sides of the box of
+/// [`check_bvh_traversal`](super::check_bvh_traversal)'s wall (its
+/// direction's zeros of both signs: +0 towards the side x = 10, -0
+/// towards y = -10; a zero stands for no drift at all, however far the
+/// ray goes, and a tiny stand-in for it drifts out of the box before the
+/// hit).
+pub(super) fn side_rays() -> Vec<(Ray, String)> {
+    [
         (
             Vec3::new(10.0 - 1e-6, 0.0, 1e4),
             Vec3::new(0.0, 0.0, -1.0),
@@ -193,14 +192,22 @@ pub(super) fn far_rays(wall: &ReadableBvh) -> Vec<(ReadableBvh, Ray, String)> {
             Vec3::new(-0.0, -0.0, -1.0),
             "y = -10",
         ),
-    ] {
+    ]
+    .into_iter()
+    .map(|(origin, dir, side)| {
         let ray = Ray::new(origin, dir).expect("a ray");
         let what = format!(
             "a ray along {} 10⁻⁶ inside its box's side {side}, the hit 10,000 away",
             ray.dir
         );
-        out.push((wall.clone(), ray, what));
-    }
+        (ray, what)
+    })
+    .collect()
+}
+
+/// A triangle 2·10⁶ to 3·10⁷ away and rays at it, for t_max infinite (no
+/// distance is too far).
+pub(super) fn far_triangle() -> (ReadableBvh, Vec<(Ray, String)>) {
     let mut afar = Draws::new(236);
     let d = afar.decades(6.3, 7.5);
     let far_wall = ReadableBvh::build(&[[
@@ -208,12 +215,14 @@ pub(super) fn far_rays(wall: &ReadableBvh) -> Vec<(ReadableBvh, Ray, String)> {
         Vec3::new(0.25 * d, -0.25 * d, -d),
         Vec3::new(0.0, 0.25 * d, -d),
     ]]);
-    for _ in 0..4 {
-        afar.next_case();
-        let dir = Vec3::new(afar.range(-0.1, 0.1), afar.range(-0.1, 0.1), -1.0);
-        let ray = Ray::new(Vec3::ZERO, dir).expect("a ray");
-        let what = format!("a triangle {d:e} away, along {}", ray.dir);
-        out.push((far_wall.clone(), ray, what));
-    }
-    out
+    let rays = (0..4)
+        .map(|_| {
+            afar.next_case();
+            let dir = Vec3::new(afar.range(-0.1, 0.1), afar.range(-0.1, 0.1), -1.0);
+            let ray = Ray::new(Vec3::ZERO, dir).expect("a ray");
+            let what = format!("a triangle {d:e} away, along {}", ray.dir);
+            (ray, what)
+        })
+        .collect();
+    (far_wall, rays)
 }

@@ -80,7 +80,7 @@ pub(super) fn near(g: f32, w: f32) -> bool {
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_barycentric_inside(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Check {
     stateless::unless_changed(barycentric_inside_values(f), || {
-        stateless::probes::barycentric_inside(f, triangle::barycentric_inside)
+        stateless::probes::barycentric_inside(f)
     })
 }
 

@@ -157,7 +157,7 @@ fn point_light_values(f: PointFn) -> Check {
             // does at grazing angles. A light cut off short of 90° fails.
             // (Relative to E itself, however small: a faint or far light's
             // E is as exact in f32 as any other.)
-            let rel = |got: Vec3, want: Vec3| {
+            let relative = |got: Vec3, want: Vec3| {
                 let e = match (want == Vec3::ZERO, got == Vec3::ZERO) {
                     (true, true) => 0.0,
                     (true, false) => f64::INFINITY,
@@ -170,8 +170,8 @@ fn point_light_values(f: PointFn) -> Check {
                 }
             };
             match exact {
-                true => rel(got, want),
-                false => rel(got, want) * 1e-4 / (1e-4 + 1e-6 / cos),
+                true => relative(got, want),
+                false => relative(got, want) * 1e-4 / (1e-4 + 1e-6 / cos),
             }
         };
         (

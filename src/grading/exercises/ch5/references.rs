@@ -1,6 +1,7 @@
 //! raystep's answers to chapter 5's exercises, each in its exercise's
 //! form: what a check's reference run grades, and what the probes of
-//! [`twins`](super::super::twins) compare near answers with.
+//! [`twins`](super::super::twins) compare near answers with (all but the
+//! cosine map's, a sampling exercise with no twins).
 
 use glam::{Vec2, Vec3};
 

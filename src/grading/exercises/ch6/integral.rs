@@ -182,14 +182,11 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         let b = a + width;
         // Each asked twice in a row: the same interval and numbers, another
         // integrand (c, then -2c): each its own answer.
-        let (first, second) = (
-            drawn_once(f, a, b, c, &u),
-            drawn_once(f, a, b, -2.0 * c, &u),
-        );
-        [first, second]
-            .into_iter()
-            .max_by(|p, q| p.0.total_cmp(&q.0))
-            .expect("two")
+        worst_drawn(
+            [c, -2.0 * c]
+                .into_iter()
+                .map(|c| drawn_once(f, a, b, c, &u)),
+        )
     }));
     fold_drawn(&mut error, &mut detail, drawn);
     // Uniform there when the number is: 4,096 evenly spaced numbers (at a

@@ -136,7 +136,7 @@ pub(super) fn z_of(estimates: &[f64], expected: f64) -> f64 {
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_russian_roulette(f: RouletteFn) -> Check {
     stateless::unless_changed(russian_roulette_values(f), || {
-        stateless::probes::russian_roulette(f, reference_roulette)
+        stateless::probes::russian_roulette(f)
     })
 }
 

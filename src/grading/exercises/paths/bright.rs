@@ -7,7 +7,7 @@
 //! the noise. Below 0.97, so that no right path runs past
 //! [`BOUNCE_BUDGET`](super::BOUNCE_BUDGET) (0.97¹⁰⁰⁰ is 6·10⁻¹⁴).
 
-use super::check::{furnace_of_run, judge_furnace_of, trace_furnace, DEPTH_CAP};
+use super::check::{cap_spike, furnace_of_run, judge_furnace_of, trace_furnace, DEPTH_CAP};
 use super::{PathFn, PathScene};
 use crate::exercise::Symptom;
 
@@ -23,11 +23,9 @@ pub fn bright_furnace(f: PathFn) -> Option<(f64, String, Option<Symptom>)> {
     let (_, le) = furnace_of_run();
     let scene = PathScene::furnace(ALBEDO, le);
     let run = trace_furnace(f, &scene, PATHS, 613 ^ crate::run_seed());
-    // Under roulette the longest paths are a thin tail, one or two at the
-    // longest length; a depth that ends paths piles them up there.
-    let k = run.lengths.iter().rposition(|c| *c > 0)?;
-    let (at, before) = (run.lengths[k], run.lengths[k.saturating_sub(1)]);
-    if at >= 20 && at > 2 * before {
+    // A depth that ends paths piles them up at the longest length, here
+    // however few of them reach it.
+    if let Some((k, at)) = cap_spike(&run.lengths, 0) {
         let detail = format!(
             "a brighter closed furnace (albedo {ALBEDO}): {at} of {PATHS} paths end at exactly {k} \
              bounces (a depth that stops paths is a bias: only roulette may end them)"

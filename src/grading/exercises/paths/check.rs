@@ -376,8 +376,8 @@ pub fn judge_furnace_of(
         } else {
             Some(LIGHT_SAMPLE_WRONG)
         }
-    } else if ratio < 1.0 && cap_spike(&r.lengths).is_some() {
-        let (k, count) = cap_spike(&r.lengths).unwrap_or_default();
+    } else if ratio < 1.0 && cap_spike(&r.lengths, 1).is_some() {
+        let (k, count) = cap_spike(&r.lengths, 1).unwrap_or_default();
         detail += &format!("; {count} paths end at exactly {k} bounces");
         Some(DEPTH_CAP)
     } else if ratio < 1.0 {
@@ -389,13 +389,13 @@ pub fn judge_furnace_of(
 }
 
 /// A fixed maximum depth shows as a spike in the path lengths: many
-/// paths (≥ 20, ≥ 0.1%) at the longest length, more than twice as many
-/// as one bounce shorter (under roulette the longest lengths are a thin
-/// geometric tail: one or two paths).
-fn cap_spike(lengths: &[u64]) -> Option<(usize, u64)> {
+/// paths (≥ 20, and at least `per_mille` ‰ of them all) at the longest
+/// length, more than twice as many as one bounce shorter (under roulette
+/// the longest lengths are a thin geometric tail: one or two paths).
+pub(super) fn cap_spike(lengths: &[u64], per_mille: u64) -> Option<(usize, u64)> {
     let k = lengths.iter().rposition(|c| *c > 0)?;
     let total: u64 = lengths.iter().sum();
     let at = lengths[k];
     let before = if k > 0 { lengths[k - 1] } else { 0 };
-    (at >= 20 && at * 1000 >= total && at > 2 * before).then_some((k, at))
+    (at >= 20 && at * 1000 >= total * per_mille && at > 2 * before).then_some((k, at))
 }
