@@ -116,6 +116,8 @@ pub struct EdgeKnobs {
     /// The end behind kept as it is where the cut lies less than this
     /// share of the edge from it.
     pub keep_end_within: Option<f32>,
+    /// The cut's share of the edge, from the end behind, capped at this.
+    pub cut_at_most: Option<f32>,
 }
 
 /// The solution of draw_edges, departing as `k` says.
@@ -133,6 +135,7 @@ pub fn draw_edges(
     let (da, db) = (a.z + near, b.z + near);
     let on_plane = |from: Vec3, to: Vec3, d_from: f32, d_to: f32| {
         let s = d_from / (d_from - d_to);
+        let s = k.cut_at_most.map_or(s, |most| s.min(most));
         let p = match k.cut {
             Cut::Linear => from + (to - from) * s,
             Cut::Lerp => from.lerp(to, s),
@@ -202,6 +205,9 @@ pub struct RasterKnobs {
     /// The edge function as the shoelace sum of absolute coordinates'
     /// products, a × b + b × p + p × a.
     pub shoelace: bool,
+    /// The (doubled) area the weights are divided by raised to at least
+    /// this (the solution: 0).
+    pub area_floor: f32,
 }
 
 /// The solution of rasterize_triangle (corners not finite refused),
@@ -228,7 +234,7 @@ pub fn rasterize(
         std::mem::swap(&mut p1, &mut p2);
         std::mem::swap(&mut c1, &mut c2);
     }
-    let area = area.abs();
+    let area = area.abs().max(k.area_floor);
     let (a, b, c) = (p0.truncate(), p1.truncate(), p2.truncate());
     let min = a.min(b).min(c).max(Vec2::ZERO);
     let max = a.max(b).max(c).min(Vec2::new(width as f32, height as f32));
