@@ -1178,17 +1178,18 @@ fn the_comparison_with_mitsuba_says_what_its_tables_show() {
     let (sobol, mj) = ("raystep-fast_sobol", "mitsuba-llvm_ad_rgb-multijitter");
 
     assert!(cornell.throughput > 1.2, "{}", cornell.throughput);
-    assert!((0.85..1.2).contains(&cornell.efficiency));
+    assert!((1.05..1.5).contains(&cornell.efficiency));
+    assert!(cornell.efficiency < cornell.throughput);
     assert!(rmse(&cornell, mj) < rmse(&cornell, sobol));
 
     let gap = |t: &SideBySide| (rmse(t, sobol) - rmse(t, mj)).abs();
     assert!(gap(&rr5) < gap(&cornell));
     assert!(1.0 < rr5.throughput && rr5.throughput < cornell.throughput);
 
-    assert!((0.9..1.1).contains(&portable.throughput));
+    assert!(portable.throughput > 1.1, "{}", portable.throughput);
     assert!(portable.efficiency < 1.0);
     let share = time(&cornell, sobol) / time(&portable, sobol);
-    assert!((0.5..0.62).contains(&share), "{share}");
+    assert!((0.6..0.72).contains(&share), "{share}");
 
     assert!(glass.throughput > 1.0 && glass.efficiency > 1.0);
     let share = time(&glass, sobol) / time(&glass, "raystep-readable_sobol");
@@ -1233,11 +1234,13 @@ fn the_comparison_with_mitsuba_says_what_its_tables_show() {
     // What the page says of those tables.
     for phrase in [
         "The fast engine runs the most paths per second of all, and its best",
-        "RMSE²·s is level with Mitsuba's best",
+        "RMSE²·s is lower than Mitsuba's best, by less than its lead in speed",
         "samples Mitsuba's multijitter sampler leaves less error than raystep's",
+        "Sobol points, and the faster engine more than buys that back",
         "closer to multijitter's, and its lead in speed shrinks",
-        "There raystep is about as fast as Mitsuba's compiled code and less",
-        "with the vector kernels",
+        "There raystep still runs more paths per second than Mitsuba's compiled",
+        "code but is less efficient, and its fast engine runs at about two thirds of",
+        "the speed it has with the vector kernels",
         "raystep is ahead on both ratios here, and its fast engine takes",
         "less than half the readable engine's time",
         "numbers the RMSE columns agree",
