@@ -34,6 +34,11 @@ pub struct Twins<'a> {
     /// towards zero by 5 % to 30 % of itself (a number bounded above or
     /// below by zero stays in range).
     pub nudged: &'a [Range<usize>],
+    /// Pairs of points (indices into `nudged`) a twin moves towards each
+    /// other by the same step, 5 % to 30 % of the way: their sum stays,
+    /// so a memo keyed on it (a centroid, a midpoint) answers the twin
+    /// with the question's answer.
+    pub balanced: &'a [(usize, usize)],
     /// Lengths, scaled together (question and twin alike).
     pub lengths: &'a [Range<usize>],
 }
@@ -80,63 +85,105 @@ pub fn same_for_near<R: Debug>(
     ask: impl Fn(&[f64]) -> R,
     reference: impl Fn(&[f64]) -> R,
 ) -> Option<String> {
-    let mut d = Draws::new(salt);
     let within = |ranges: &[Range<usize>], i: usize| ranges.iter().any(|r| r.contains(&i));
+    // A case at a drawn scale (its lengths scaled together).
+    let scaled = |case: &[f64], d: &mut Draws| -> Vec<f64> {
+        let scale = match twins.lengths.is_empty() {
+            true => 1.0,
+            false => d.decades(-7.0, 0.0) as f64,
+        };
+        (0..case.len())
+            .map(|i| match within(twins.lengths, i) {
+                true => (case[i] * scale) as f32 as f64,
+                false => case[i],
+            })
+            .collect()
+    };
+    let mut d = Draws::new(salt);
     let twice = twins.nudged.iter().chain(twins.nudged);
     for (case, moved) in cases
         .iter()
         .flat_map(|c| twice.clone().map(move |m| (c, m)))
     {
         d.next_case();
-        let scale = match twins.lengths.is_empty() {
-            true => 1.0,
-            false => d.decades(-7.0, 0.0) as f64,
-        };
-        let base: Vec<f64> = (0..case.len())
-            .map(|i| match within(twins.lengths, i) {
-                true => (case[i] * scale) as f32 as f64,
-                false => case[i],
-            })
-            .collect();
+        let base = scaled(case, &mut d);
         let twin: Vec<f64> = (0..base.len())
             .map(|i| match moved.contains(&i) {
                 true => (base[i] * (1.0 - d.range(0.05, 0.3) as f64)) as f32 as f64,
                 false => base[i],
             })
             .collect();
-        let (a, b) = (format!("{:?}", ask(&base)), format!("{:?}", ask(&twin)));
-        if a != b {
-            continue;
+        if let Some(kept) = kept_for_twin(&base, &twin, twins, &mut d, &ask, &reference) {
+            return Some(kept);
         }
-        let (ra, rb) = (
-            format!("{:?}", reference(&base)),
-            format!("{:?}", reference(&twin)),
-        );
-        // Each of the two, with its numbers moved by 10⁻⁴: steady?
-        let steady = |q: &[f64], answer: &str, d: &mut Draws| {
-            let moved: Vec<f64> = (0..q.len())
-                .map(
-                    |i| match within(twins.nudged, i) || within(twins.lengths, i) {
-                        true => (q[i] * (1.0 + 1e-4 * d.range(-1.0, 1.0) as f64)) as f32 as f64,
-                        false => q[i],
-                    },
-                )
-                .collect();
-            apart(answer, &format!("{:?}", reference(&moved))).is_some_and(|g| g < 1e-2)
-        };
-        if !steady(&base, &ra, &mut d) || !steady(&twin, &rb, &mut d) {
-            continue;
+    }
+    // The pairs moved towards each other, from a stream of their own.
+    let mut d = Draws::new(salt + 1000);
+    let twice = twins.balanced.iter().chain(twins.balanced);
+    for (case, &(p, q)) in cases
+        .iter()
+        .flat_map(|c| twice.clone().map(move |m| (c, m)))
+    {
+        d.next_case();
+        let mut twin = scaled(case, &mut d);
+        let base = twin.clone();
+        let t = d.range(0.05, 0.3) as f64;
+        for (i, j) in twins.nudged[p].clone().zip(twins.nudged[q].clone()) {
+            let step = t * (base[j] - base[i]);
+            twin[i] = (base[i] + step) as f32 as f64;
+            twin[j] = (base[j] - step) as f32 as f64;
         }
-        if let Some(gap) = apart(&ra, &rb).filter(|gap| *gap > 0.02) {
-            return Some(format!(
-                "the arguments {} and then {} both got {a}, though the right answers ({ra} and \
+        if let Some(kept) = kept_for_twin(&base, &twin, twins, &mut d, &ask, &reference) {
+            return Some(kept);
+        }
+    }
+    None
+}
+
+/// Whether the student's function answered `base` and `twin` alike (bit
+/// for bit) where the reference's answers, steady under moves of 10⁻⁴,
+/// differ by more than 2 %: the message saying so.
+fn kept_for_twin<R: Debug>(
+    base: &[f64],
+    twin: &[f64],
+    twins: &Twins,
+    d: &mut Draws,
+    ask: impl Fn(&[f64]) -> R,
+    reference: impl Fn(&[f64]) -> R,
+) -> Option<String> {
+    let within = |ranges: &[Range<usize>], i: usize| ranges.iter().any(|r| r.contains(&i));
+    let (a, b) = (format!("{:?}", ask(base)), format!("{:?}", ask(twin)));
+    if a != b {
+        return None;
+    }
+    let (ra, rb) = (
+        format!("{:?}", reference(base)),
+        format!("{:?}", reference(twin)),
+    );
+    // Each of the two, with its numbers moved by 10⁻⁴: steady?
+    let steady = |q: &[f64], answer: &str, d: &mut Draws| {
+        let moved: Vec<f64> = (0..q.len())
+            .map(
+                |i| match within(twins.nudged, i) || within(twins.lengths, i) {
+                    true => (q[i] * (1.0 + 1e-4 * d.range(-1.0, 1.0) as f64)) as f32 as f64,
+                    false => q[i],
+                },
+            )
+            .collect();
+        apart(answer, &format!("{:?}", reference(&moved))).is_some_and(|g| g < 1e-2)
+    };
+    if !steady(base, &ra, d) || !steady(twin, &rb, d) {
+        return None;
+    }
+    if let Some(gap) = apart(&ra, &rb).filter(|gap| *gap > 0.02) {
+        return Some(format!(
+            "the arguments {} and then {} both got {a}, though the right answers ({ra} and \
                  {rb}) differ by {:.0}% of their size: an answer must be worked out from its own \
                  arguments, not kept from a question that rounds the same way",
-                show(&base),
-                show(&twin),
-                gap * 100.0
-            ));
-        }
+            show(base),
+            show(twin),
+            gap * 100.0
+        ));
     }
     None
 }

@@ -201,7 +201,7 @@ fn sah<const B: u8>(boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option<(usize, f
             let cost =
                 1.0 + (area(left, B) * k as f32 + area(right[k], B) * (n - k) as f32) / a_node;
             if best.is_none_or(|b| cost < b.0) {
-                let at = if B == 8 { lo } else { 0.5 * (lo + hi) };
+                let at = if B == 8 { lo } else { hi };
                 best = Some((cost, axis, at));
             }
         }

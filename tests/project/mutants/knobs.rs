@@ -412,6 +412,9 @@ pub struct BvhKnobs {
     pub approx_recip: bool,
     /// Leaves opened at most, the rest passed by.
     pub leaf_budget: Option<u32>,
+    /// A subtree passed by where the ray enters it at the best t so far,
+    /// not only beyond it.
+    pub prune_at_equal: bool,
 }
 
 impl Default for BvhKnobs {
@@ -423,6 +426,7 @@ impl Default for BvhKnobs {
             nudge_zero_dir: false,
             approx_recip: false,
             leaf_budget: None,
+            prune_at_equal: false,
         }
     }
 }
@@ -437,7 +441,7 @@ pub fn closest_hit(k: BvhKnobs, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Opt
         t_enter: f32,
         best: &mut (f32, Option<Hit>, u32),
     ) {
-        if t_enter > best.0 {
+        if t_enter > best.0 || (k.prune_at_equal && t_enter == best.0) {
             return;
         }
         match bvh.nodes[node as usize].kind {
@@ -535,6 +539,8 @@ pub enum Plane {
     Upper,
     /// Midway, at b where the midpoint rounds down to a.
     MidwaySafe,
+    /// Midway, however it rounds.
+    Midway,
 }
 
 /// How a sweep departs from the solution of sah.
@@ -640,6 +646,7 @@ pub fn sah_sweep(k: SahKnobs, boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option
                             b
                         }
                     }
+                    Plane::Midway => 0.5 * (a + b),
                 };
                 (best, split) = (cost, Some((axis, at)));
             }

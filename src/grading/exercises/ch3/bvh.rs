@@ -276,6 +276,19 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
     for (ray, what) in super::bvh_cases::side_rays() {
         compare(&wall, &ray, f32::INFINITY, &|| what.clone());
     }
+    // A triangle 2·10⁻⁹ across, 1 away, with t_max = 1: its hit is at
+    // t_max exactly, and so is the entry to its box (the box's padding is
+    // far below the rounding of 1), and (0, t_max] keeps both.
+    let speck = ReadableBvh::build(&[[
+        Vec3::new(-1e-9, -1e-9, 0.0),
+        Vec3::new(1e-9, -1e-9, 0.0),
+        Vec3::new(0.0, 1e-9, 0.0),
+    ]]);
+    let above = Ray::new(Vec3::Z, -Vec3::Z).expect("a ray");
+    compare(&speck, &above, 1.0, &|| {
+        "a triangle 2·10⁻⁹ across, 1 away, t_max = 1: its hit and the entry to its box both at t_max"
+            .to_string()
+    });
     let (far, far_rays) = super::bvh_cases::far_triangle();
     for (ray, what) in &far_rays {
         compare(&far, ray, f32::INFINITY, &|| what.clone());

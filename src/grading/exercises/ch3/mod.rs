@@ -10,6 +10,7 @@ mod bvh_symptoms;
 mod inside_cases;
 mod ray_plane;
 pub mod sah;
+mod sah_nodes;
 mod triangle_checks;
 mod triangle_edges;
 mod triangle_symptoms;

@@ -42,6 +42,7 @@ fn ray_plane_values(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
     // Drawn rays and planes: at scales from 10⁻³ to 10³, up to 100 times
     // their size from the origin, N and d of any length from 10⁻³ to 10³.
     let mut draws = Draws::new(31);
+    let mut long = Draws::new(131);
     let mut drawn = Vec::new();
     let mut last_n: Option<Vec3> = None;
     for _ in 0..draws.count(200, 800) {
@@ -68,6 +69,17 @@ fn ray_plane_values(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
             ),
             _ => (d, n),
         };
+        // A tenth of those with d 10⁻³ long or more: N 10²⁰ to 10²⁵ or
+        // 10⁻²⁶ to 10⁻²⁰ long (from a stream of their own), where |N|² is
+        // past f32's range or subnormal and N·d and c are not.
+        long.next_case();
+        let n = match long.unit() < 0.1 && d.length() >= 1e-3 {
+            true => match long.unit() < 0.5 {
+                true => n.normalize() * long.decades(20.0, 25.0),
+                false => n.normalize() * long.decades(-26.0, -20.0),
+            },
+            false => n,
+        };
         // A fifth keep the last plane's N, with another c (a plane
         // parallel to it): t depends on c too.
         let n = match last_n {
@@ -75,7 +87,7 @@ fn ray_plane_values(f: fn(Vec3, Vec3, Vec3, f32) -> Option<f32>) -> Check {
             _ => n,
         };
         last_n = Some(n);
-        if n.normalize().dot(d.normalize()).abs() > 0.1 {
+        if n.as_dvec3().normalize().dot(d.as_dvec3().normalize()).abs() > 0.1 {
             let c = n.dot(place + draws.in_cube() * scale);
             let f64s = |v: Vec3| v.as_dvec3();
             let t = (c as f64 - f64s(n).dot(f64s(o))) / f64s(n).dot(f64s(d));

@@ -17,6 +17,8 @@ use crate::exercise::{Check, Symptom};
 use crate::exercises::draws::Draws;
 use crate::work::Work;
 
+use super::sah_nodes::hand_nodes;
+
 /// A node's split as the exercise asks for it.
 pub type SahFn = fn(&[[Vec3; 2]], &[Vec3]) -> Split;
 
@@ -92,82 +94,6 @@ pub const ONE_AXIS: Symptom = Symptom {
 pub const COSTLY: Symptom = Symptom {
     name: "the tree costs more than the SAH's",
 };
-
-/// A hand-made node: what it is, its boxes and centroids, and the axis
-/// it must be split on (`None`: it must stay a leaf).
-type HandNode = (&'static str, Vec<[Vec3; 2]>, Vec<Vec3>, Option<usize>);
-
-/// The hand-made nodes. Boxes are given directly, as the node passes them.
-fn hand_nodes() -> Vec<HandNode> {
-    let v = Vec3::new;
-    // Four triangles whose boxes are all the unit cube: any split costs
-    // 1 + 4, the leaf 4.
-    let cube = [v(0.0, 0.0, 0.0), v(1.0, 1.0, 1.0)];
-    let spread = vec![
-        v(0.2, 0.5, 0.4),
-        v(0.6, 0.3, 0.5),
-        v(0.4, 0.7, 0.6),
-        v(0.8, 0.4, 0.3),
-    ];
-    let mut nodes = vec![(
-        "four triangles whose boxes are all the unit cube",
-        vec![cube; 4],
-        spread,
-        None,
-    )];
-    // Two small triangles far apart along each axis: a split on it.
-    for (axis, what) in [
-        (0, "two small triangles 10 apart along x"),
-        (1, "two small triangles 10 apart along y"),
-        (2, "two small triangles 10 apart along z"),
-    ] {
-        let mut far = Vec3::ZERO;
-        far[axis] = 10.0;
-        let b = |c: Vec3| [c - 0.1, c + 0.1];
-        nodes.push((
-            what,
-            vec![b(Vec3::ZERO), b(far)],
-            vec![Vec3::ZERO, far],
-            Some(axis),
-        ));
-    }
-    // One centroid, three different boxes: no plane separates them.
-    nodes.push((
-        "three triangles with one centroid",
-        vec![
-            [v(-1.0, -0.1, -0.1), v(1.0, 0.1, 0.1)],
-            [v(-0.1, -1.0, -0.1), v(0.1, 1.0, 0.1)],
-            [v(-0.1, -0.1, -1.0), v(0.1, 0.1, 1.0)],
-        ],
-        vec![Vec3::ZERO; 3],
-        None,
-    ));
-    // Three cubes at x = 10, 0, 0, in that order: the two equal centroids
-    // are neighbours only once sorted (a split between 0 and 10 pays).
-    let cube = |x: f32| [v(x - 0.5, -0.5, -0.5), v(x + 0.5, 0.5, 0.5)];
-    nodes.push((
-        "three unit cubes at x = 10, 0 and 0, in that order",
-        vec![cube(10.0), cube(0.0), cube(0.0)],
-        vec![v(10.0, 0.0, 0.0), Vec3::ZERO, Vec3::ZERO],
-        Some(0),
-    ));
-    let mut d = Draws::new(38);
-    // Two unit cubes s apart along x (s from 0.2 to 0.9, drawn): the
-    // children's areas over the node's are 12 / (6 + 4s), between 1 and
-    // 2, so the split costs more than the leaf only with C_trav counted.
-    let s = d.range(0.2, 0.9);
-    let at = d.place_for(1.0, 2.0);
-    nodes.push((
-        "two unit cubes overlapping along x (a split saves less than C_trav)",
-        vec![
-            [at, at + 1.0],
-            [at + v(s, 0.0, 0.0), at + v(1.0 + s, 1.0, 1.0)],
-        ],
-        vec![at + 0.5, at + v(0.5 + s, 0.5, 0.5)],
-        None,
-    ));
-    nodes
-}
 
 /// A drawn scene (across: 10^`decades`, 10⁻³ to 10³ where `None`): what it
 /// is, and its triangles.

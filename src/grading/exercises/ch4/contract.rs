@@ -261,6 +261,14 @@ pub fn cases() -> Vec<Case> {
             m,
         ),
         case(
+            "a floor flat below z = 0.5 that rises along x from 1.5e-4 on: flat over the \
+             difference step h = 1e-4 at the hit, not over 2h, so the normal is -dir",
+            Clause::Normal,
+            flat_then_rising,
+            down(1.0),
+            m,
+        ),
+        case(
             "a wall whose function is a quarter of the distance, seen obliquely: its gradient is \
              short, not zero, so the normal is the gradient's direction",
             Clause::Normal,

@@ -327,6 +327,30 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         )
     }));
     fold_drawn(&mut error, &mut detail, drawn);
+    // Any ε > 0 holds, however small: with ε = 10⁻³⁰ (whose square is 0
+    // in f32) the first step from 5 away lands exactly on the unit sphere,
+    // where f is 0.
+    crate::progress("calling sphere_trace with ε = 1e-30 on a ray that lands on the sphere");
+    let exact = f(
+        &sphere,
+        Vec3::new(0.0, 0.0, 5.0),
+        Vec3::NEG_Z,
+        1e-30,
+        64,
+        50.0,
+    );
+    if exact != Some(4.0) {
+        return Check {
+            error: f64::INFINITY,
+            tolerance: 1e-5,
+            detail: format!(
+                "ε = 1e-30, the unit sphere straight ahead from (0, 0, 5): the first step lands \
+                 on it (f = 0 < ε), a hit at t = 4; got {exact:?}"
+            ),
+            images: None,
+            symptom: None,
+        };
+    }
     // The step budget is respected: a ray passing 5e-5 above the sphere
     // counts as a hit with ε = 1e-4, but not within 3 steps from 40 away
     // (it creeps along the silhouette).

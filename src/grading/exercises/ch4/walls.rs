@@ -89,6 +89,13 @@ pub(super) fn flat_floor(p: Vec3) -> f32 {
     2.0 * (p.z - 0.5).max(0.0)
 }
 
+/// [`flat_floor`] with a rise along x that starts 1.5·10⁻⁴ from the hit
+/// at the origin: the six differences of step h = 10⁻⁴ there are all
+/// zero (the gradient is zero: the normal is -dir), those of 2h are not.
+pub(super) fn flat_then_rising(p: Vec3) -> f32 {
+    flat_floor(p) + (p.x - 1.5e-4).max(0.0)
+}
+
 /// [`far_half_wall`] mirrored: the wall 6,000 m below the world's origin,
 /// where every coordinate of p is 0 or negative, and ε still 5.7e-3 (it
 /// scales with the largest |coordinate|).

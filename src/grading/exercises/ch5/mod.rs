@@ -250,6 +250,14 @@ fn cosine_hemisphere_values(f: CosineFn) -> Check {
             let x = 1.0 - (1 + i % 8) as f32 * f32::EPSILON / 2.0;
             Vec2::new(x, random(seed ^ 0x5eed, i, 0, 0))
         }))
+        // And the round numbers in every pair: u = (1/2, 1/2) is the
+        // centre of the square, where a map to the disk divides 0 by 0.
+        .chain({
+            let round = [0.0, 0.25, 0.5, 0.75, top];
+            round
+                .into_iter()
+                .flat_map(move |x| round.map(|y| Vec2::new(x, y)))
+        })
         .collect();
     let first: Vec<(Vec3, f32)> = edges.iter().map(|&u| f(u)).collect();
     let again: Vec<(Vec3, f32)> = edges.iter().rev().map(|&u| f(u)).collect();

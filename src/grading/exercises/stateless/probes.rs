@@ -34,9 +34,33 @@ fn both<R: Debug>(
     ask: impl Fn(&[f64]) -> R,
     right: impl Fn(&[f64]) -> R,
 ) -> Option<String> {
-    changed_answer(q, &ask)
-        .or_else(|| same_for_near(&q.cases, &Twins { nudged, lengths }, salt, &ask, &right))
+    balanced(q, (nudged, &[], lengths), salt, ask, right)
 }
+
+/// A probe's twins: the arguments nudged one at a time, the pairs of them
+/// moved towards each other, and the lengths ([`Twins`]'s fields).
+type Moves<'a> = (&'a [Range<usize>], &'a [(usize, usize)], &'a [Range<usize>]);
+
+/// [`both`], whose twins also move the pairs of points `balanced`
+/// (indices into `nudged`) towards each other.
+fn balanced<R: Debug>(
+    q: &Questions,
+    (nudged, balanced, lengths): Moves,
+    salt: u64,
+    ask: impl Fn(&[f64]) -> R,
+    right: impl Fn(&[f64]) -> R,
+) -> Option<String> {
+    let twins = Twins {
+        nudged,
+        balanced,
+        lengths,
+    };
+    changed_answer(q, &ask).or_else(|| same_for_near(&q.cases, &twins, salt, &ask, &right))
+}
+
+/// Every pair of three arguments, and of four.
+const PAIRS_OF_3: [(usize, usize); 3] = [(0, 1), (0, 2), (1, 2)];
+const PAIRS_OF_4: [(usize, usize); 6] = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
 
 fn draw(
     salt: u64,
@@ -79,7 +103,7 @@ pub fn look_at<R: Debug>(
     let q = draw(92, &[6..9], |d| cat(&[point(d), point(d), d.direction()]));
     let ask = |n: &[f64]| f(vec3_at(n, 0), vec3_at(n, 3), vec3_at(n, 6));
     let right = |n: &[f64]| reference(vec3_at(n, 0), vec3_at(n, 3), vec3_at(n, 6));
-    both(&q, (&[0..3, 3..6], &[0..6]), 192, ask, right)
+    balanced(&q, (&[0..3, 3..6], &[(0, 1)], &[0..6]), 192, ask, right)
 }
 
 /// draw_edges(camera, a, b, near) with one camera.
@@ -94,7 +118,13 @@ pub fn draw_edges<R: Debug>(
     });
     let ask = |n: &[f64]| f(vec3_at(n, 0), vec3_at(n, 3), n[6] as f32);
     let right = |n: &[f64]| reference(vec3_at(n, 0), vec3_at(n, 3), n[6] as f32);
-    both(&q, (&[0..3, 3..6, 6..7], &[0..7]), 209, ask, right)
+    balanced(
+        &q,
+        (&[0..3, 3..6, 6..7], &[(0, 1)], &[0..7]),
+        209,
+        ask,
+        right,
+    )
 }
 
 /// edge_function(a, b, p).
@@ -110,7 +140,13 @@ pub fn edge_function<R: Debug>(
     });
     let ask = |n: &[f64]| f(vec2_at(n, 0), vec2_at(n, 2), vec2_at(n, 4));
     let right = |n: &[f64]| reference(vec2_at(n, 0), vec2_at(n, 2), vec2_at(n, 4));
-    both(&q, (&[0..2, 2..4, 4..6], &[0..6]), 193, ask, right)
+    balanced(
+        &q,
+        (&[0..2, 2..4, 4..6], &PAIRS_OF_3, &[0..6]),
+        193,
+        ask,
+        right,
+    )
 }
 
 /// barycentric(pi, pj, pk, p).
@@ -123,7 +159,13 @@ pub fn barycentric<R: Debug>(
     });
     let ask = |n: &[f64]| f(vec2_at(n, 0), vec2_at(n, 2), vec2_at(n, 4), vec2_at(n, 6));
     let right = |n: &[f64]| reference(vec2_at(n, 0), vec2_at(n, 2), vec2_at(n, 4), vec2_at(n, 6));
-    both(&q, (&[0..2, 2..4, 4..6, 6..8], &[0..8]), 194, ask, right)
+    balanced(
+        &q,
+        (&[0..2, 2..4, 4..6, 6..8], &PAIRS_OF_4, &[0..8]),
+        194,
+        ask,
+        right,
+    )
 }
 
 /// ray_plane(o, d, n, c), the direction and the normal taken whole.
@@ -182,9 +224,10 @@ pub fn moller_trumbore<R: Debug>(
             [vec3_at(n, 6), vec3_at(n, 9), vec3_at(n, 12)],
         )
     };
-    both(
+    let triangle = [(1, 2), (1, 3), (2, 3)];
+    balanced(
         &q,
-        (&[0..3, 6..9, 9..12, 12..15], &[0..3, 6..15]),
+        (&[0..3, 6..9, 9..12, 12..15], &triangle, &[0..3, 6..15]),
         197,
         ask,
         right,
@@ -203,7 +246,13 @@ pub fn sphere_sdf<R: Debug>(
     });
     let ask = |n: &[f64]| f(vec3_at(n, 0), vec3_at(n, 3), n[6] as f32);
     let right = |n: &[f64]| reference(vec3_at(n, 0), vec3_at(n, 3), n[6] as f32);
-    both(&q, (&[0..3, 3..6, 6..7], &[0..7]), 198, ask, right)
+    balanced(
+        &q,
+        (&[0..3, 3..6, 6..7], &[(0, 1)], &[0..7]),
+        198,
+        ask,
+        right,
+    )
 }
 
 /// gradient_normal(sdf, p, h) on a box and a ball, h from 10⁻⁴ to 10⁻².
@@ -258,7 +307,13 @@ pub fn point_light<R: Debug>(
     });
     let ask = |n: &[f64]| f(vec3_at(n, 0), vec3_at(n, 3), vec3_at(n, 6), vec3_at(n, 9));
     let right = |n: &[f64]| reference(vec3_at(n, 0), vec3_at(n, 3), vec3_at(n, 6), vec3_at(n, 9));
-    both(&q, (&[0..3, 3..6, 6..9], &[3..9]), 202, ask, right)
+    balanced(
+        &q,
+        (&[0..3, 3..6, 6..9], &[(1, 2)], &[3..9]),
+        202,
+        ask,
+        right,
+    )
 }
 
 /// area_to_solid_angle(pdf_area, x, y, n_light), the normal taken whole.
@@ -273,7 +328,13 @@ pub fn area_pdf<R: Debug>(
     });
     let ask = |n: &[f64]| f(n[0] as f32, vec3_at(n, 1), vec3_at(n, 4), vec3_at(n, 7));
     let right = |n: &[f64]| reference(n[0] as f32, vec3_at(n, 1), vec3_at(n, 4), vec3_at(n, 7));
-    both(&q, (&[0..1, 1..4, 4..7], &[1..7]), 203, ask, right)
+    balanced(
+        &q,
+        (&[0..1, 1..4, 4..7], &[(1, 2)], &[1..7]),
+        203,
+        ask,
+        right,
+    )
 }
 
 /// solid_angle(p, tri).
@@ -284,7 +345,13 @@ pub fn solid_angle<R: Debug>(
     let q = draw(104, &[], |d| cat(&[point(d), point(d), point(d), point(d)]));
     let ask = |n: &[f64]| f(vec3_at(n, 0), [vec3_at(n, 3), vec3_at(n, 6), vec3_at(n, 9)]);
     let right = |n: &[f64]| reference(vec3_at(n, 0), [vec3_at(n, 3), vec3_at(n, 6), vec3_at(n, 9)]);
-    both(&q, (&[0..3, 3..6, 6..9, 9..12], &[0..12]), 204, ask, right)
+    balanced(
+        &q,
+        (&[0..3, 3..6, 6..9, 9..12], &PAIRS_OF_4, &[0..12]),
+        204,
+        ask,
+        right,
+    )
 }
 
 /// spot_power(I, inner, outer), the two angles taken together (inner
