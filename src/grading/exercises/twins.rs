@@ -16,6 +16,11 @@
 //! (each exercise's contract holds at every scale), so that twins fall
 //! in one cell of a fine grid too.
 //!
+//! A second kind of twin moves two points of the question towards each
+//! other by the same step (two corners of a triangle, an eye and its
+//! target): their sum stays, so a memo keyed on a centroid or a midpoint
+//! answers it with the question's answer.
+//!
 //! Where the answer hangs on its arguments' last digits (a point a hair
 //! off a surface, a light seen edge-on), a tolerance can be wider than
 //! the answer itself, and two right answers may agree: a question whose
@@ -41,6 +46,11 @@ pub struct Twins<'a> {
     pub balanced: &'a [(usize, usize)],
     /// Lengths, scaled together (question and twin alike).
     pub lengths: &'a [Range<usize>],
+}
+
+/// Whether number `i` of a question is in one of `ranges`.
+fn within(ranges: &[Range<usize>], i: usize) -> bool {
+    ranges.iter().any(|r| r.contains(&i))
 }
 
 /// The numbers in an answer's `Debug` text, and the text around them.
@@ -85,7 +95,6 @@ pub fn same_for_near<R: Debug>(
     ask: impl Fn(&[f64]) -> R,
     reference: impl Fn(&[f64]) -> R,
 ) -> Option<String> {
-    let within = |ranges: &[Range<usize>], i: usize| ranges.iter().any(|r| r.contains(&i));
     // A case at a drawn scale (its lengths scaled together).
     let scaled = |case: &[f64], d: &mut Draws| -> Vec<f64> {
         let scale = match twins.lengths.is_empty() {
@@ -151,7 +160,6 @@ fn kept_for_twin<R: Debug>(
     ask: impl Fn(&[f64]) -> R,
     reference: impl Fn(&[f64]) -> R,
 ) -> Option<String> {
-    let within = |ranges: &[Range<usize>], i: usize| ranges.iter().any(|r| r.contains(&i));
     let (a, b) = (format!("{:?}", ask(base)), format!("{:?}", ask(twin)));
     if a != b {
         return None;
@@ -178,8 +186,8 @@ fn kept_for_twin<R: Debug>(
     if let Some(gap) = apart(&ra, &rb).filter(|gap| *gap > 0.02) {
         return Some(format!(
             "the arguments {} and then {} both got {a}, though the right answers ({ra} and \
-                 {rb}) differ by {:.0}% of their size: an answer must be worked out from its own \
-                 arguments, not kept from a question that rounds the same way",
+             {rb}) differ by {:.0}% of their size: an answer must be worked out from its own \
+             arguments, not kept from a question that rounds the same way",
             show(base),
             show(twin),
             gap * 100.0
