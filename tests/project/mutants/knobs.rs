@@ -519,6 +519,9 @@ pub enum Measure {
     Surface,
     /// The half-perimeter dx + dy + dz.
     HalfPerimeter,
+    /// The surface area as (dx + dy + dz)² − (dx² + dy² + dz²) in f32,
+    /// which cancels for a needle.
+    SquareIdentity,
 }
 
 /// The axes the sweep tries.
@@ -590,6 +593,11 @@ pub fn sah_sweep(k: SahKnobs, boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option
         Measure::HalfPerimeter => {
             let d = (hi - lo).max(Vec3::ZERO).as_dvec3();
             d.x + d.y + d.z
+        }
+        Measure::SquareIdentity => {
+            let d = (hi - lo).max(Vec3::ZERO);
+            let s = d.x + d.y + d.z;
+            (s * s - d.length_squared()) as f64
         }
     };
     let axes = match k.axes {
@@ -846,6 +854,9 @@ pub struct DirectKnobs {
     pub clamp: Option<f32>,
     /// Added to cos θl in the pdf "against division by 0".
     pub cos_light_plus: f32,
+    /// The estimate from unnormalised cosines over d⁴ in f32 (which
+    /// leaves f32's range at scales of 10¹⁰ and 10⁻¹⁰).
+    pub over_d4: bool,
 }
 
 /// The solution of direct_light, departing as `k` says (the surface
@@ -869,7 +880,10 @@ pub fn direct(
     }
     let f = rho / PI;
     let pdf = d2 / ((cos_light + k.cos_light_plus) * area);
-    let estimate = f * le * cos / pdf;
+    let estimate = match k.over_d4 {
+        true => f * le * n.dot(to) * -n_light.dot(to) / (d2 * d2) * area,
+        false => f * le * cos / pdf,
+    };
     if k.cull_below.is_some_and(|c| estimate.max_element() < c) || !visible(p, y) {
         return Vec3::ZERO;
     }

@@ -97,5 +97,23 @@ pub(super) fn hand_nodes() -> Vec<HandNode> {
         vec![at + 0.5, at + v(0.5 + s, 0.5, 0.5)],
         None,
     ));
+    // A needle: twelve boxes half a step long, a step apart along x
+    // (steps from 10⁻² to 10³, drawn), 10⁻⁹ of a step thick. Splitting
+    // it pays; its area, 4 · length · thickness, cancels to 0 if taken
+    // as a square of the sum of extents less the sum of their squares.
+    let step = d.decades(-2.0, 3.0);
+    let w = step * 1e-9;
+    let needle = |i: usize| {
+        let x = i as f32 * step;
+        [v(x, 0.0, 0.0), v(x + 0.5 * step, w, w)]
+    };
+    nodes.push((
+        "a needle of twelve boxes along x, 10^-9 of a step thick",
+        (0..12).map(needle).collect(),
+        (0..12)
+            .map(|i| (needle(i)[0] + needle(i)[1]) * 0.5)
+            .collect(),
+        Some(0),
+    ));
     nodes
 }

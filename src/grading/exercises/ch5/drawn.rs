@@ -1,5 +1,6 @@
 //! Capstone 5's drawn cases: a shading point and a light point anywhere
-//! (up to 10⁵ times their distance from the origin), at any scale, each
+//! (up to 10⁵ times their distance from the origin), at any scale (a
+//! seventh from 10⁻¹⁵ to 10⁻⁴ and 10⁴ to 10¹⁵), each
 //! facing any way (a fifth with the light near p's horizon), the light's
 //! area, emission and the albedo drawn too (a tenth of the albedos dark,
 //! down to 10⁻⁶), and a fifth of them blocked. The answer is the
@@ -25,11 +26,21 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
     // A tenth of the albedos 10⁻⁶ to 10⁻³ times as bright (dark is not
     // black), from a stream of their own.
     let mut dark = Draws::new(254);
+    // A seventh at scales from 10⁻¹⁵ to 10⁻⁴ or 10⁴ to 10¹⁵ (the answer
+    // does not depend on the scene's scale; d⁴ or d³ leaves f32's range
+    // there), from a stream of their own.
+    let mut wide = Draws::new(354);
     let mut last: Option<(Vec3, Vec3, bool)> = None;
     worst_drawn((0..draws.count(100, 400)).filter_map(|_| {
         draws.next_case();
         dark.next_case();
+        wide.next_case();
         let s = draws.decades(-2.0, 4.0);
+        let s = match (wide.unit() < 1.0 / 7.0, wide.sign() < 0.0) {
+            (true, true) => wide.decades(-15.0, -4.0),
+            (true, false) => wide.decades(4.0, 15.0),
+            (false, _) => s,
+        };
         // A third up to 10⁵ times their size from the origin (where the
         // plane's equation in absolute coordinates rounds).
         let far = draws.unit() < 1.0 / 3.0;
