@@ -10,7 +10,8 @@
 //! * when ωo and ωi are on the same side of the surface (z of the same
 //!   sign, above or below: the BRDF is two-sided), f is the constant whose
 //!   integral ∫ f cos θ dω over the hemisphere is ρ, per channel;
-//! * on opposite sides, f = 0.
+//! * on opposite sides, f = 0; and so when either direction lies in the
+//!   surface's plane (z = 0 or −0): it is on neither side.
 //!
 //! Hints: `cargo grade --hint ch5/lambert_brdf`.
 //! Grade it with: `cargo grade ch5`
