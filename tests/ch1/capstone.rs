@@ -14,10 +14,11 @@ fn lecture_edges(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(Vec2, 
     if da > 0.0 && db > 0.0 {
         return None;
     }
+    // The cut, placed on the plane (its z from the ends' would round).
     if da > 0.0 {
-        a = a.lerp(b, da / (da - db));
+        a = a.lerp(b, da / (da - db)).with_z(-near);
     } else if db > 0.0 {
-        b = b.lerp(a, db / (db - da));
+        b = b.lerp(a, db / (db - da)).with_z(-near);
     }
     let project = |p: Vec3| camera.raster_from_image_plane(Vec2::new(p.x / -p.z, p.y / -p.z));
     Some((project(a), project(b)))

@@ -23,9 +23,9 @@ fn book(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Option<(Vec2, Vec2)> {
         return None;
     }
     if da > 0.0 {
-        a = b.lerp(a, db / (db - da));
+        a = b.lerp(a, db / (db - da)).with_z(-near);
     } else if db > 0.0 {
-        b = a.lerp(b, da / (da - db));
+        b = a.lerp(b, da / (da - db)).with_z(-near);
     }
     Some((raster(camera, a), raster(camera, b)))
 }
@@ -74,7 +74,8 @@ fn alternative_parametric(camera: &Camera, a: Vec3, b: Vec3, near: f32) -> Optio
         } else if t == 1.0 {
             b
         } else {
-            a + d * t
+            // A cut: on the plane, as the contract says.
+            (a + d * t).with_z(-near)
         }
     };
     Some((raster(camera, at(t0)), raster(camera, at(t1))))

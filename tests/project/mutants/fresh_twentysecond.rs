@@ -4,11 +4,14 @@
 //! geometry term from unnormalised vectors over d⁴ (which leaves f32's
 //! range at scales of 10¹⁰ and 10⁻¹⁰).
 
+use std::f32::consts::FRAC_1_PI;
+
+use glam::Vec3;
 use raystep::grading::exercise::Check;
-use raystep::grading::exercises::{ch3, ch5};
+use raystep::grading::exercises::{ch1, ch3, ch5};
 
 use super::fails_every;
-use super::knobs::{self, DirectKnobs, Knobs, Measure, SahKnobs};
+use super::knobs::{self, DirectKnobs, EdgeKnobs, Knobs, Measure, SahKnobs};
 
 /// The seeds every mutant must fail under.
 const SEEDS: [u64; 4] = [221, 222, 227, 0x2026_1130];
@@ -31,4 +34,33 @@ fn gaps_of_the_twenty_first_set_fail() {
             knobs::direct(k, (p, n, rho), (y, nl, a, le), v)
         })
     });
+}
+
+#[test]
+fn contracts_read_otherwise_fail() {
+    fails(
+        "lambert_brdf: a direction in the plane counts as the same side",
+        || {
+            ch5::check_lambert_brdf(|rho, wo, wi| {
+                if wo.z * wi.z < 0.0 {
+                    Vec3::ZERO
+                } else {
+                    rho * FRAC_1_PI
+                }
+            })
+        },
+    );
+}
+
+#[test]
+fn shortcuts_fail() {
+    fails(
+        "draw_edges: the cut's z interpolated, not set to -near",
+        || {
+            ch1::check_draw_edges(|camera, a, b, near| {
+                let k = EdgeKnobs::with(|k| k.unsnapped_z = true);
+                knobs::draw_edges(k, camera, a, b, near)
+            })
+        },
+    );
 }

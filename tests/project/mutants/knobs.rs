@@ -118,6 +118,8 @@ pub struct EdgeKnobs {
     pub keep_end_within: Option<f32>,
     /// The cut's share of the edge, from the end behind, capped at this.
     pub cut_at_most: Option<f32>,
+    /// The cut's z interpolated like x and y, not set to -near.
+    pub unsnapped_z: bool,
 }
 
 /// The solution of draw_edges, departing as `k` says.
@@ -140,7 +142,7 @@ pub fn draw_edges(
             Cut::Linear => from + (to - from) * s,
             Cut::Lerp => from.lerp(to, s),
         };
-        Vec3::new(p.x, p.y, -near)
+        Vec3::new(p.x, p.y, if k.unsnapped_z { p.z } else { -near })
     };
     // The end behind, where the cut is within `keep_end_within` of it.
     let kept = |end: Vec3, d_end: f32, d_other: f32| {
