@@ -50,20 +50,31 @@ fn area_pdf_values(f: AreaPdfFn) -> Check {
         Err(check) => return check,
     };
     // Drawn points and lights: distances from 10⁻⁵ to 10³ (a tenth from
-    // 10⁻¹¹ to 10⁻⁵ and a tenth from 10³ to 10¹¹: as far as pdf · d³, the
-    // other right way round, stays in f32's range), up to 10³ times that
+    // 10⁻¹¹ to 10⁻⁵ and a tenth from 10³ to 10¹¹), up to 10³ times that
     // from the origin (grazing ones up to 10^3.5), either face, pdfs over
     // six decades, lights seen exactly edge-on, at grazing angles, and
     // nearly face-on.
+    // Then, from a stream of their own, a seventh of the scenes scaled
+    // to 10⁻¹⁵ to 10⁻¹¹ or 10¹¹ to 10¹⁵ with the density scaled as a
+    // light's area would (pdf · d² from 0.1 to 10): the answer does not
+    // change with the scene's scale, but d³ leaves f32's range.
     let mut draws = Draws::new(53);
+    let mut scaled = Draws::new(353);
     let mut last: Option<(Vec3, Vec3, f32)> = None;
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
+        scaled.next_case();
         let scale = match draws.unit() {
             u if u < 0.1 => draws.decades(-11.0, -5.0),
             u if u < 0.2 => draws.decades(3.0, 11.0),
             _ => draws.decades(-5.0, 3.0),
         };
+        let stiff = match (scaled.unit() < 1.0 / 7.0, scaled.sign() < 0.0) {
+            (true, true) => Some(scaled.decades(-15.0, -11.0)),
+            (true, false) => Some(scaled.decades(11.0, 15.0)),
+            (false, _) => None,
+        };
+        let scale = stiff.unwrap_or(scale);
         let mut x = draws.place_for(scale, 3.0);
         let axis = draws.count(0, 2);
         let mut offset = draws.direction();
@@ -95,16 +106,22 @@ fn area_pdf_values(f: AreaPdfFn) -> Check {
         let mut y = x + offset * scale;
         // A tenth keep the last light point and its normal, seen from
         // another x: the density depends on x too.
-        if let Some((last_y, last_n, last_scale)) = last.filter(|_| draws.unit() < 0.1) {
+        // (Not a scaled scene's: its density belongs to its own scale.)
+        let again = draws.unit() < 0.1 && stiff.is_none();
+        if let Some((last_y, last_n, last_scale)) = last.filter(|_| again) {
             let moved = last_y + draws.direction() * last_scale * draws.range(0.5, 2.0);
             // Not where rounding puts x on the light point.
             if (moved - last_y).length() > 0.25 * last_scale {
                 (y, n, x) = (last_y, last_n, moved);
             }
         }
-        last = Some((y, n, scale));
+        last = stiff.is_none().then_some((y, n, scale)).or(last);
         let pdf = draws.decades(-3.0, 3.0);
         let to = (y - x).as_dvec3();
+        let pdf = match stiff {
+            Some(_) => (scaled.decades(-1.0, 1.0) as f64 / to.length_squared()) as f32,
+            None => pdf,
+        };
         let cos = (n.as_dvec3().dot(to) / to.length()).abs();
         let want = if cos == 0.0 {
             0.0
