@@ -218,6 +218,9 @@ impl Wire for paths::Tally {
             (a, b, c, d).put(out);
         }
         t.light_from_bounce_numbers.put(out);
+        for [a, b, c, d] in t.cosine_went_on {
+            (a, b, c, d).put(out);
+        }
     }
     fn get(input: &mut &[u8]) -> Option<Self> {
         let (bounces, vertices, light_samples, lights_found) = Wire::get(input)?;
@@ -229,6 +232,11 @@ impl Wire for paths::Tally {
             *q = [a, b, c, d];
         }
         let light_from_bounce_numbers = Wire::get(input)?;
+        let mut cosine_went_on = [[0; 4]; 2];
+        for q in &mut cosine_went_on {
+            let (a, b, c, d) = Wire::get(input)?;
+            *q = [a, b, c, d];
+        }
         Some(paths::Tally {
             bounces,
             vertices,
@@ -240,6 +248,7 @@ impl Wire for paths::Tally {
             over_budget,
             cosine_quarters,
             light_from_bounce_numbers,
+            cosine_went_on,
         })
     }
 }

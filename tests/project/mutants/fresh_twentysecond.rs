@@ -8,10 +8,10 @@ use std::f32::consts::FRAC_1_PI;
 
 use glam::Vec3;
 use raystep::grading::exercise::Check;
-use raystep::grading::exercises::{ch1, ch3, ch5};
+use raystep::grading::exercises::{ch1, ch3, ch5, paths};
 
 use super::fails_every;
-use super::knobs::{self, DirectKnobs, EdgeKnobs, Knobs, Measure, SahKnobs};
+use super::knobs::{self, DirectKnobs, EdgeKnobs, Knobs, Measure, PathKnobs, SahKnobs};
 
 /// The seeds every mutant must fail under.
 const SEEDS: [u64; 4] = [221, 222, 227, 0x2026_1130];
@@ -54,12 +54,36 @@ fn contracts_read_otherwise_fail() {
 
 #[test]
 fn shortcuts_fail() {
+    fails("area_pdf: d³ / |n · (x − y)| in f32", || {
+        ch5::check_area_pdf(|pdf, x, y, n| {
+            let to = x - y;
+            let (d2, dot) = (to.length_squared(), n.dot(to).abs());
+            if dot == 0.0 {
+                return 0.0;
+            }
+            pdf * (d2 * d2.sqrt()) / dot
+        })
+    });
+
     fails(
         "draw_edges: the cut's z interpolated, not set to -near",
         || {
             ch1::check_draw_edges(|camera, a, b, near| {
                 let k = EdgeKnobs::with(|k| k.unsnapped_z = true);
                 knobs::draw_edges(k, camera, a, b, near)
+            })
+        },
+    );
+}
+
+#[test]
+fn monte_carlo_mistakes_fail() {
+    fails(
+        "path_radiance: roulette decided by the bounce's own u.x",
+        || {
+            paths::check_path_radiance(|scene, o, d, rng| {
+                let k = PathKnobs::with(|k| k.roulette_on_bounce_u = true);
+                knobs::path(k, scene, o, d, rng)
             })
         },
     );

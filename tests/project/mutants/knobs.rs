@@ -985,6 +985,9 @@ pub struct PathKnobs {
     pub pdf_eps: f32,
     /// The path ends after this many bounces, roulette or not.
     pub max_bounces: Option<u32>,
+    /// The roulette decided by the bounce's own u.x, not a number of its
+    /// own.
+    pub roulette_on_bounce_u: bool,
 }
 
 impl Default for PathKnobs {
@@ -1002,6 +1005,7 @@ impl Default for PathKnobs {
             found_emission_without_light: false,
             pdf_eps: 0.0,
             max_bounces: None,
+            roulette_on_bounce_u: false,
         }
     }
 }
@@ -1066,7 +1070,7 @@ pub fn path(
         }
         if !k.roulette_at_top && bounces > k.roulette_after {
             let q = q_of(beta, before);
-            let u = rng();
+            let u = if k.roulette_on_bounce_u { ux } else { rng() };
             if u >= q {
                 break;
             }

@@ -14,7 +14,9 @@
 //!    means nothing). Besides the mean, the scene's [`Tally`] checks that
 //!    every path ends (a path over [`BOUNCE_BUDGET`] bounces: no
 //!    roulette), that bounces leave on the lit side, that each surface
-//!    gets a light sample and each light sample its shadow ray; the
+//!    gets a light sample and each light sample its shadow ray, that
+//!    whether a path goes on does not depend on the numbers its
+//!    direction was drawn from (roulette needs a number of its own); the
 //!    furnace's variants ([`open`]) show what its mean cannot.
 //! 2. The Cornell box (`cornell-box.toml`, 32 × 32, 64 paths per pixel)
 //!    against the reference with other random numbers, 8 × 8-pixel blocks
@@ -169,7 +171,12 @@ impl FurnaceRun {
         a.below += b.below;
         a.over_budget |= b.over_budget;
         a.light_from_bounce_numbers += b.light_from_bounce_numbers;
-        for (x, y) in a.cosine_quarters.iter_mut().zip(b.cosine_quarters) {
+        for (x, y) in a
+            .cosine_quarters
+            .iter_mut()
+            .chain(&mut a.cosine_went_on)
+            .zip(b.cosine_quarters.into_iter().chain(b.cosine_went_on))
+        {
             for (x, y) in x.iter_mut().zip(y) {
                 *x += y;
             }
@@ -328,6 +335,43 @@ pub fn judge_furnace_of(
                  [0, 1): their {axis} fell {q:?} in the four quarters of [0, 1) (χ² = {chi2:.0}); \
                  each bounce needs fresh uniform numbers (a number already used for a decision, \
                  such as roulette's, is not uniform any more)"
+            );
+            return (bad, detail, None);
+        }
+    }
+    // Whether a path goes on after a bounce must not depend on the
+    // numbers its direction came from (roulette decided by one of them
+    // keeps only the directions near the normal, say): the share that
+    // went on is the same in each quarter of u.x's and of u.y's range
+    // (χ² of the 2 × 4 table, 3 degrees of freedom, under 30).
+    for (axis, (all, on)) in ["u.x", "u.y"]
+        .iter()
+        .zip(t.cosine_quarters.iter().zip(t.cosine_went_on))
+    {
+        let (n_all, n_on) = (all.iter().sum::<u32>(), on.iter().sum::<u32>());
+        let share = f64::from(n_on) / f64::from(n_all.max(1));
+        let chi2: f64 = all
+            .iter()
+            .zip(on)
+            .filter(|(a, _)| **a > 0)
+            .map(|(&a, o)| {
+                let (e_on, e_off) = (f64::from(a) * share, f64::from(a) * (1.0 - share));
+                let d = f64::from(o) - e_on;
+                d * d / e_on.max(1e-9) + d * d / e_off.max(1e-9)
+            })
+            .sum();
+        if n_all >= 1000 && n_on < n_all && chi2 > 30.0 {
+            let went: Vec<String> = all
+                .iter()
+                .zip(on)
+                .map(|(&a, o)| format!("{:.0}%", 100.0 * f64::from(o) / f64::from(a.max(1))))
+                .collect();
+            let detail = format!(
+                "closed furnace: whether a path went on after a bounce depends on the numbers \
+                 its direction was drawn from: with {axis} in each quarter of [0, 1), {} of the \
+                 paths went on (χ² = {chi2:.0}); roulette needs a number of its own (one that \
+                 also chose the direction keeps only some directions: biased)",
+                went.join(", ")
             );
             return (bad, detail, None);
         }

@@ -88,14 +88,21 @@ pub struct Tally {
     /// reached their surface (the light point then depends on where the
     /// surface is: biased).
     pub light_from_bounce_numbers: u32,
+    /// Of the numbers counted in `cosine_quarters`, those whose direction
+    /// the path went on along (`next_hit` followed): whether a path goes
+    /// on must not depend on the numbers its direction was drawn from.
+    pub cosine_went_on: [[u32; 4]; 2],
 }
 
 thread_local! {
     static TALLY: Cell<Tally> = const { Cell::new(Tally {
         bounces: 0, vertices: 0, light_samples: 0, lights_found: 0, lights_useful: 0,
         shadow_rays: 0, below: 0, over_budget: false, cosine_quarters: [[0; 4]; 2],
-        light_from_bounce_numbers: 0,
+        light_from_bounce_numbers: 0, cosine_went_on: [[0; 4]; 2],
     }) };
+    /// The quarters of [0, 1) of this thread's last `sample_cosine`'s
+    /// numbers, until a `next_hit` goes on from it.
+    static PENDING_BOUNCE: Cell<Option<[usize; 2]>> = const { Cell::new(None) };
     /// The numbers and the surface point of this thread's last
     /// `sample_cosine`, as bits.
     static LAST_BOUNCE: Cell<Option<([u32; 2], [u32; 3])>> = const { Cell::new(None) };
@@ -124,6 +131,7 @@ pub(super) const FURNACE_ORIGIN: Vec3 = Vec3::new(0.3, -0.2, 0.1);
 pub fn reset_tally() {
     TALLY.with(|t| t.set(Tally::default()));
     LAST_BOUNCE.with(|b| b.set(None));
+    PENDING_BOUNCE.with(|b| b.set(None));
 }
 
 /// This thread's [`Tally`] since the last [`reset_tally`].
@@ -281,7 +289,12 @@ impl PathScene {
     /// The next surface when the path leaves `at` along the unit `wi`.
     pub fn next_hit(&self, at: &Hit, wi: Vec3) -> Option<Hit> {
         let mut over = false;
+        let went_on = PENDING_BOUNCE.with(|b| b.take());
         count(|t| {
+            if let Some([x, y]) = went_on {
+                t.cosine_went_on[0][x] += 1;
+                t.cosine_went_on[1][y] += 1;
+            }
             t.bounces += 1;
             let c = wi.dot(at.n);
             t.below += u32::from(c.is_nan() || c <= 0.0);
@@ -353,6 +366,7 @@ impl PathScene {
             )))
         });
         let quarter = |v: f32| ((v * 4.0) as usize).min(3);
+        PENDING_BOUNCE.with(|b| b.set(Some([quarter(u.x), quarter(u.y)])));
         count(|t| {
             t.cosine_quarters[0][quarter(u.x)] += 1;
             t.cosine_quarters[1][quarter(u.y)] += 1;
