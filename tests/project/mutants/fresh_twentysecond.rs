@@ -8,7 +8,7 @@ use std::f32::consts::FRAC_1_PI;
 
 use glam::Vec3;
 use raystep::grading::exercise::Check;
-use raystep::grading::exercises::{ch1, ch3, ch5, paths};
+use raystep::grading::exercises::{ch1, ch3, ch5, ch6, paths};
 
 use super::fails_every;
 use super::knobs::{self, DirectKnobs, EdgeKnobs, Knobs, Measure, PathKnobs, SahKnobs};
@@ -54,6 +54,16 @@ fn contracts_read_otherwise_fail() {
 
 #[test]
 fn shortcuts_fail() {
+    fails("russian_roulette: 1 / q taken in f32", || {
+        ch6::check_russian_roulette(|value, q, u| {
+            let inv_q = 1.0f32 / q as f32;
+            if u < q {
+                value * inv_q as f64
+            } else {
+                0.0
+            }
+        })
+    });
     fails("area_pdf: d³ / |n · (x − y)| in f32", || {
         ch5::check_area_pdf(|pdf, x, y, n| {
             let to = x - y;

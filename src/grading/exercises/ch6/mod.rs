@@ -259,6 +259,26 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
             )
         })
     });
+    // A survivor carries value / q however small q is (10⁻⁸, 10⁻⁴⁰,
+    // 10⁻²⁰⁰): asked at u = 0, q / 2, 1 − q / 2 and the largest u below
+    // 1, whatever comes back that is not 0 must be value / q. (Which u
+    // survive is the solution's choice; no u in f64 lies in the top 10⁻⁴⁰.)
+    let tiny = [(3.0, 1e-8), (-0.5, 1e-40), (2.0, 1e-200)];
+    let carried = tiny.into_iter().find_map(|(v, q): (f64, f64)| {
+        let us = [0.0, q / 2.0, 1.0 - q / 2.0, 1.0f64.next_down()];
+        us.into_iter().find_map(|u| {
+            let got = f(v, q, u);
+            let right = got == 0.0 || ((got - v / q) / (v / q)).abs() <= 2e-3;
+            (!right).then(|| {
+                format!(
+                    "value {v}, q {q}, u {u}: returned {got}, expected {} if the path survives \
+                     (value / q), or 0",
+                    v / q
+                )
+            })
+        })
+    });
+    let always = always.or(carried);
     if let Some(detail) = always.filter(|_| error <= 2e-3) {
         return Check {
             error: 1.0,

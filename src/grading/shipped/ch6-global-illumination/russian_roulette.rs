@@ -8,7 +8,9 @@
 //! * the path survives with probability `q` (0 < q ≤ 1), decided by the
 //!   uniform number `u` in [0, 1); a path that dies returns exactly 0;
 //! * the fraction of paths that die is 1 − q (within 0.2%);
-//! * the mean of the results is `value` (within 0.2%).
+//! * the mean of the results is `value` (within 0.2%): a survivor
+//!   carries value / q, however small q is (the grader asks down to
+//!   q = 10⁻²⁰⁰).
 //!
 //! Hints: `cargo grade --hint ch6/russian_roulette`.
 //! Grade it with: `cargo grade ch6`
