@@ -36,7 +36,8 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
         dark.next_case();
         wide.next_case();
         let s = draws.decades(-2.0, 4.0);
-        let s = match (wide.unit() < 1.0 / 7.0, wide.sign() < 0.0) {
+        let is_wide = wide.unit() < 1.0 / 7.0;
+        let s = match (is_wide, wide.sign() < 0.0) {
             (true, true) => wide.decades(-15.0, -4.0),
             (true, false) => wide.decades(4.0, 15.0),
             (false, _) => s,
@@ -75,7 +76,9 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
         let mut blocked = draws.unit() < 0.2;
         // A quarter keep the last light point, seen from another p, and
         // blocked or not afresh: visibility is a question about p too.
-        if let Some((last_y, last_n, last_blocked)) = last.filter(|_| draws.unit() < 0.25) {
+        // (Not at a scale of their own: their light belongs to it.)
+        let again = last.is_some() && draws.unit() < 0.25 && !is_wide;
+        if let Some((last_y, last_n, last_blocked)) = last.filter(|_| again) {
             let moved = last_y + draws.direction() * s * draws.range(0.5, 5.0);
             // Not where rounding puts p on the light point.
             if (moved - last_y).length() > 0.25 * s {
@@ -98,7 +101,7 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
             p = y + off.normalize_or(n_light.any_orthonormal_vector()) * dist;
             p[axis] = n_light[axis] * dist * draws.decades(-5.0, -2.0);
         }
-        last = Some((y, n_light, blocked));
+        last = (!is_wide).then_some((y, n_light, blocked)).or(last);
         let to = (y - p).as_dvec3();
         let d2 = to.length_squared();
         let wi = to / d2.sqrt();
