@@ -6,7 +6,9 @@
 //! Contract (what the grader checks; it counts every call of `sdf`):
 //! * `Some(t)` for the first t the march reaches where
 //!   |sdf(o + t d)| < `epsilon` (hits to within ε of the true distance).
-//! * `None` when t is beyond `max_distance` before a hit.
+//! * `None` when t is beyond `max_distance` before a hit. The point a
+//!   step reaches is tested for a hit first: a step that lands on a
+//!   surface beyond `max_distance` has found it.
 //! * The step budget: at most `max_steps` evaluations of `sdf` (at least
 //!   one), the one at t = 0 included, every one of them tested for a hit;
 //!   `None` when they are used up.

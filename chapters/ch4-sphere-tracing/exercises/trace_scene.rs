@@ -16,7 +16,9 @@
 //! * A miss (`None`): t beyond `march.max_distance` before a hit, or the
 //!   step budget used up: at most `march.max_steps` evaluations of `sdf`
 //!   (at least one) while marching, the one at t = 0 included, every one
-//!   tested for a hit.
+//!   tested for a hit. The point a step reaches is tested for a hit
+//!   first: a step that lands on a surface beyond `max_distance` has
+//!   found it.
 //! * The normal at a hit: the gradient of f by central differences with
 //!   h = max(`march.epsilon_at(p)`, 1e-4), normalised; -dir where the
 //!   gradient is zero; turned round where it points along dir, so that it

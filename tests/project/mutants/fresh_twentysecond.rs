@@ -7,8 +7,9 @@
 use std::f32::consts::FRAC_1_PI;
 
 use glam::Vec3;
+use raystep::ch4_implicit_surfaces::march::March;
 use raystep::grading::exercise::Check;
-use raystep::grading::exercises::{ch1, ch3, ch5, ch6, paths};
+use raystep::grading::exercises::{ch1, ch3, ch4, ch5, ch6, paths};
 
 use super::fails_every;
 use super::knobs::{self, DirectKnobs, EdgeKnobs, Knobs, Measure, PathKnobs, SahKnobs};
@@ -97,4 +98,51 @@ fn monte_carlo_mistakes_fail() {
             })
         },
     );
+}
+
+/// trace_scene's march, with a hit where |f| <= ε (the contract: < ε)
+/// and the contract's normal.
+fn march_inclusive(sdf: &dyn Fn(Vec3) -> f32, o: Vec3, d: Vec3, m: &March) -> Option<(f32, Vec3)> {
+    let mut t = 0.0f32;
+    for _ in 0..m.max_steps.max(1) {
+        let p = o + t * d;
+        let (f, eps) = (sdf(p), m.epsilon_at(p));
+        if f.abs() <= eps {
+            let h = eps.max(1e-4);
+            let g = |a: Vec3| sdf(p + a * h) - sdf(p - a * h);
+            let n = Vec3::new(g(Vec3::X), g(Vec3::Y), g(Vec3::Z)).normalize_or(-d);
+            return Some((t, if n.dot(d) > 0.0 { -n } else { n }));
+        }
+        if t > m.max_distance {
+            return None;
+        }
+        t += f;
+    }
+    None
+}
+
+#[test]
+fn special_values_and_orders_fail() {
+    fails(
+        "sphere_trace: the distance tested before the point a step reached",
+        || {
+            ch4::check_sphere_trace(|sdf, o, d, eps, steps, far| {
+                let mut t = 0.0;
+                for _ in 0..steps {
+                    if t > far {
+                        return None;
+                    }
+                    let f = sdf(o + t * d);
+                    if f.abs() < eps {
+                        return Some(t);
+                    }
+                    t += f;
+                }
+                None
+            })
+        },
+    );
+    fails("trace_scene: a hit where |f| = ε exactly", || {
+        ch4::check_trace_scene(march_inclusive)
+    });
 }

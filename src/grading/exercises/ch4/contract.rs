@@ -155,6 +155,14 @@ pub fn cases() -> Vec<Case> {
             March { max_distance: 1.0, ..m },
         ),
         case(
+            "an exact wall 1 m below, max_distance = 0.5: the first step lands on it, beyond \
+             max_distance; the point a step reaches is tested for a hit before the distance: a hit at t = 1",
+            Clause::MaxDistance,
+            wall,
+            down(1.0),
+            March { max_distance: 0.5, ..m },
+        ),
+        case(
             "the same wall 1 m below, max_distance = 0.9995: the 13th step goes past it (t = 1 - 2^-12) \
              without a hit; the next would hit, beyond the limit",
             Clause::MaxDistance,
@@ -162,6 +170,17 @@ pub fn cases() -> Vec<Case> {
             down(1.0),
             March {
                 max_distance: 0.9995,
+                ..m
+            },
+        ),
+        case(
+            "an exact wall ε = 2^-10 below: |f| = ε at t = 0 is not below ε, so one step of ε, \
+             then the hit at t = 2^-10",
+            Clause::Skim,
+            wall,
+            down(2f32.powi(-10)),
+            March {
+                epsilon: 2f32.powi(-10),
                 ..m
             },
         ),
