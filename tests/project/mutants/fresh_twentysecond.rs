@@ -1,8 +1,17 @@
-//! The twenty-second fresh set (2026-11-30), with the two wrong ones the
-//! twenty-first left passing: a box's area taken as the square of its
-//! extents' sum less their squares (0 for a needle), and direct_light's
-//! geometry term from unnormalised vectors over d⁴ (which leaves f32's
-//! range at scales of 10¹⁰ and 10⁻¹⁰).
+//! The twenty-second fresh set (2026-11-30), six testers who read the
+//! stubs, the book and the course's solutions but not the grader, each
+//! from an angle: shortcuts for speed (C, 81 wrong), the contract read
+//! otherwise (D, 64), integers, indices and control flow (E, 54), Monte
+//! Carlo mistakes (F, 51), special values and degenerate inputs (G, 64),
+//! code adapted from the lesson or other renderers (H, 67); 146 right
+//! alternatives, all of which pass. With the grader as it stood before
+//! (6d4a738), 24 of the 381 wrong ones passed under seed 51 or 52; the
+//! sixteen that now fail under seeds 51 to 55 are here as the mistakes
+//! they share (a direction in the plane taken as the same side came
+//! seven times), with the two wrong ones the twenty-first set left passing: a
+//! box's area taken as the square of its extents' sum less their squares
+//! (0 for a needle), and direct_light's geometry term from unnormalised
+//! vectors over d⁴ (out of f32's range at scales of 10¹⁰ and 10⁻¹⁰).
 
 use std::f32::consts::FRAC_1_PI;
 
@@ -55,6 +64,14 @@ fn contracts_read_otherwise_fail() {
 
 #[test]
 fn shortcuts_fail() {
+    fails(
+        "russian_roulette: survivors divided by max(q, 10⁻¹²)",
+        || {
+            ch6::check_russian_roulette(
+                |value, q, u| if u < q { value / q.max(1e-12) } else { 0.0 },
+            )
+        },
+    );
     fails("russian_roulette: 1 / q taken in f32", || {
         ch6::check_russian_roulette(|value, q, u| {
             let inv_q = 1.0f32 / q as f32;
@@ -139,6 +156,15 @@ fn special_values_and_orders_fail() {
                     t += f;
                 }
                 None
+            })
+        },
+    );
+    fails(
+        "ray_plane: Nᵀd that is not a normal number taken as parallel",
+        || {
+            ch3::check_ray_plane(|o, d, n, c| {
+                let denom = n.dot(d);
+                denom.is_normal().then(|| (c - n.dot(o)) / denom)
             })
         },
     );

@@ -12,6 +12,7 @@ use crate::ch4_implicit_surfaces::primitives::{sd_box, sd_sphere, sd_torus};
 use crate::exercise::{Check, Exercise, Symptom};
 use crate::exercises::{stateless, worse};
 
+mod clauses;
 mod contract;
 mod contract_symptoms;
 mod gradient;

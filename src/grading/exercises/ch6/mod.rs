@@ -265,7 +265,8 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
     // survive is the solution's choice; no u in f64 lies in the top 10⁻⁴⁰.)
     let tiny = [(3.0, 1e-8), (-0.5, 1e-40), (2.0, 1e-200)];
     let carried = tiny.into_iter().find_map(|(v, q): (f64, f64)| {
-        let us = [0.0, q / 2.0, 1.0 - q / 2.0, 1.0f64.next_down()];
+        let top = 1.0f64.next_down();
+        let us = [0.0, q / 2.0, (1.0 - q / 2.0).min(top), top];
         us.into_iter().find_map(|u| {
             let got = f(v, q, u);
             let right = got == 0.0 || ((got - v / q) / (v / q)).abs() <= 2e-3;
