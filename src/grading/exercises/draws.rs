@@ -62,6 +62,16 @@ impl Draws {
         10f32.powf(self.range(lo, hi))
     }
 
+    /// With probability `share`, a scale far from 1: 10^u with u uniform
+    /// in `small` or in `large`, each half the time; `None` otherwise.
+    pub fn far_scale(&mut self, share: f32, small: (f32, f32), large: (f32, f32)) -> Option<f32> {
+        match (self.unit() < share, self.sign() < 0.0) {
+            (true, true) => Some(self.decades(small.0, small.1)),
+            (true, false) => Some(self.decades(large.0, large.1)),
+            (false, _) => None,
+        }
+    }
+
     /// ±1.
     pub fn sign(&mut self) -> f32 {
         if self.unit() < 0.5 {

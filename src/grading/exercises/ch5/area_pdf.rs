@@ -69,11 +69,7 @@ fn area_pdf_values(f: AreaPdfFn) -> Check {
             u if u < 0.2 => draws.decades(3.0, 11.0),
             _ => draws.decades(-5.0, 3.0),
         };
-        let stiff = match (scaled.unit() < 1.0 / 7.0, scaled.sign() < 0.0) {
-            (true, true) => Some(scaled.decades(-15.0, -11.0)),
-            (true, false) => Some(scaled.decades(11.0, 15.0)),
-            (false, _) => None,
-        };
+        let stiff = scaled.far_scale(1.0 / 7.0, (-15.0, -11.0), (11.0, 15.0));
         let scale = stiff.unwrap_or(scale);
         let mut x = draws.place_for(scale, 3.0);
         let axis = draws.count(0, 2);

@@ -36,12 +36,8 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
         dark.next_case();
         wide.next_case();
         let s = draws.decades(-2.0, 4.0);
-        let is_wide = wide.unit() < 1.0 / 7.0;
-        let s = match (is_wide, wide.sign() < 0.0) {
-            (true, true) => wide.decades(-15.0, -4.0),
-            (true, false) => wide.decades(4.0, 15.0),
-            (false, _) => s,
-        };
+        let wide_scale = wide.far_scale(1.0 / 7.0, (-15.0, -4.0), (4.0, 15.0));
+        let (is_wide, s) = (wide_scale.is_some(), wide_scale.unwrap_or(s));
         // A third up to 10⁵ times their size from the origin (where the
         // plane's equation in absolute coordinates rounds).
         let far = draws.unit() < 1.0 / 3.0;

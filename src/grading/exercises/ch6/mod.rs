@@ -279,8 +279,7 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
             })
         })
     });
-    let always = always.or(carried);
-    if let Some(detail) = always.filter(|_| error <= 2e-3) {
+    if let Some(detail) = always.or(carried).filter(|_| error <= 2e-3) {
         return Check {
             error: 1.0,
             tolerance: 2e-3,
