@@ -214,29 +214,17 @@ impl Wire for paths::Tally {
         (t.bounces, t.vertices, t.light_samples, t.lights_found).put(out);
         t.lights_useful.put(out);
         (t.shadow_rays, t.below, t.over_budget).put(out);
-        for [a, b, c, d] in t.cosine_quarters {
-            (a, b, c, d).put(out);
-        }
+        t.cosine_quarters.put(out);
         t.light_from_bounce_numbers.put(out);
-        for [a, b, c, d] in t.cosine_went_on {
-            (a, b, c, d).put(out);
-        }
+        t.cosine_went_on.put(out);
     }
     fn get(input: &mut &[u8]) -> Option<Self> {
         let (bounces, vertices, light_samples, lights_found) = Wire::get(input)?;
         let lights_useful = Wire::get(input)?;
         let (shadow_rays, below, over_budget) = Wire::get(input)?;
-        let mut cosine_quarters = [[0; 4]; 2];
-        for q in &mut cosine_quarters {
-            let (a, b, c, d) = Wire::get(input)?;
-            *q = [a, b, c, d];
-        }
+        let cosine_quarters = Wire::get(input)?;
         let light_from_bounce_numbers = Wire::get(input)?;
-        let mut cosine_went_on = [[0; 4]; 2];
-        for q in &mut cosine_went_on {
-            let (a, b, c, d) = Wire::get(input)?;
-            *q = [a, b, c, d];
-        }
+        let cosine_went_on = Wire::get(input)?;
         Some(paths::Tally {
             bounces,
             vertices,

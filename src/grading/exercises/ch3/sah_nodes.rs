@@ -103,16 +103,17 @@ pub(super) fn hand_nodes() -> Vec<HandNode> {
     // as a square of the sum of extents less the sum of their squares.
     let step = d.decades(-2.0, 3.0);
     let w = step * 1e-9;
-    let needle = |i: usize| {
-        let x = i as f32 * step;
-        [v(x, 0.0, 0.0), v(x + 0.5 * step, w, w)]
-    };
+    let needle: Vec<[Vec3; 2]> = (0..12)
+        .map(|i| {
+            let x = i as f32 * step;
+            [v(x, 0.0, 0.0), v(x + 0.5 * step, w, w)]
+        })
+        .collect();
+    let centres = needle.iter().map(|[lo, hi]| (*lo + *hi) * 0.5).collect();
     nodes.push((
         "a needle of twelve boxes along x, 10^-9 of a step thick",
-        (0..12).map(needle).collect(),
-        (0..12)
-            .map(|i| (needle(i)[0] + needle(i)[1]) * 0.5)
-            .collect(),
+        needle,
+        centres,
         Some(0),
     ));
     nodes
