@@ -36,6 +36,9 @@ struct Knobs {
     keep_degenerate: bool,
     /// Only a == b taken for a repeated index.
     first_pair_only: bool,
+    /// An edge keyed by one number, lower · 10⁶ + higher (the twenty-third
+    /// fresh set's): edges collide once an index reaches 10⁶.
+    decimal_key: bool,
 }
 
 fn counts(k: Knobs, triangles: &[[u32; 3]]) -> (usize, usize, usize, usize) {
@@ -52,6 +55,9 @@ fn counts(k: Knobs, triangles: &[[u32; 3]]) -> (usize, usize, usize, usize) {
         for (i, j) in [(a, b), (b, c), (c, a)] {
             let key = if k.directed {
                 (i, j)
+            } else if k.decimal_key {
+                let n = u64::from(i.min(j)) * 1_000_000 + u64::from(i.max(j));
+                ((n >> 32) as u32, n as u32)
             } else {
                 (i.min(j), i.max(j))
             };
@@ -245,6 +251,12 @@ fn wrong_counts_fail_under_every_seed() {
         "only a == b is degenerate",
         Some(manifold::REPEATED_INDEX),
         || ch2::check_manifold(knob!(first_pair_only)),
+    );
+    fails(
+        &mut wrong,
+        "an edge keyed lower · 10⁶ + higher",
+        None,
+        || ch2::check_manifold(knob!(decimal_key)),
     );
     // Indices taken for positions in a table sized by the triangles: it
     // panics (which fails a grading) or counts wrong.

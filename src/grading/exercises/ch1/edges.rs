@@ -142,14 +142,21 @@ fn clauses(f: EdgeFn) -> Check {
             symptom,
         };
     }
-    // Drawn edges: near planes from 10⁻⁶ to 3, ends from the pinhole to
-    // 100 times the near distance in front or behind, in every
-    // combination; left out are ends within 10⁻³ of the plane, where
-    // rounding decides the side, and edges almost parallel to it.
+    // Drawn edges: near planes from 10⁻⁶ to 3 (a fifth, from a stream of
+    // their own, 10⁻¹⁰ to 10⁻⁶: every length scales with near), ends from
+    // the pinhole to 100 times the near distance in front or behind, in
+    // every combination; left out are ends within 10⁻³ of the plane,
+    // where rounding decides the side, and edges almost parallel to it.
     let mut draws = Draws::new(13);
+    let mut tiny = Draws::new(113);
     let drawn = worst_drawn((0..draws.count(200, 800)).filter_map(|_| {
         draws.next_case();
+        tiny.next_case();
         let near = draws.decades(-6.0, 0.5);
+        let near = match tiny.unit() < 0.2 {
+            true => tiny.decades(-10.0, -6.0),
+            false => near,
+        };
         let end = |d: &mut Draws| {
             let z = -near * d.sign() * d.decades(-1.0, 2.0);
             let side = d.in_square() * z.abs() * d.range(0.0, 1.5);

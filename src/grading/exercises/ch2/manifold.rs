@@ -265,6 +265,28 @@ fn drawn_mesh(d: &mut Draws) -> Vec<[u32; 3]> {
     tris
 }
 
+/// Three triangles apart for each round base m (10² to 10⁹, 2⁸ to 2³⁰),
+/// with edges {a, b}, {a + 1, b - m} and {a + m, b - 1}: three edges,
+/// which one number x m + y made of each edge's two indices (x the
+/// smaller, y the larger, or the other way round) would make two. The
+/// contract allows any u32 index.
+fn packed_alike(d: &mut Draws) -> Vec<[u32; 3]> {
+    let bases = (2..=9)
+        .map(|k| 10u64.pow(k))
+        .chain((8..=30).map(|k| 1 << k));
+    let mut tris = Vec::new();
+    for m in bases {
+        // m + 2 <= b <= u32::MAX - 3 and a <= b - m - 2: every index in
+        // range, a + 1 < b - m and a + m < b - 1; b + 1 to b + 3 are the
+        // third corners.
+        let b = d.count(m as usize + 2, u32::MAX as usize - 3) as u64;
+        let a = d.count(0, (b - m - 2) as usize) as u64;
+        let t = |x: u64, y: u64, k: u64| [x as u32, y as u32, (b + k) as u32];
+        tris.extend([t(a, b, 1), t(a + 1, b - m, 2), t(a + m, b - 1, 3)]);
+    }
+    tris
+}
+
 /// The mesh for a message: its triangles when few, else its size.
 fn show(tris: &[[u32; 3]]) -> String {
     if tris.len() <= 12 {
@@ -337,6 +359,10 @@ pub fn check_manifold(f: ManifoldFn) -> Check {
                     .map(|t| [far(&t[0]), far(&t[1]), far(&t[2])])
                     .collect();
             }
+        }
+        // A quarter with edges whose indices pack alike for a round base.
+        if draws.unit() < 0.25 {
+            tris.extend(packed_alike(&mut draws));
         }
         let (got, want) = (f(&tris), reference_counts(&tris));
         if got != want {

@@ -14,6 +14,7 @@ use crate::exercises::stateless;
 mod barycentric;
 mod common;
 mod depth_test;
+mod drawn_cover;
 pub mod manifold;
 pub mod model;
 pub mod raster;

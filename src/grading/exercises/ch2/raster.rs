@@ -22,12 +22,13 @@ pub type RasterFn = fn([Vec3; 3], [Vec3; 3], u32, u32, &mut [f32], &mut [Vec3]);
 /// The capstone: every clause in turn; the first that fails is the result
 /// (with the scene drawn both ways as its images when the clause has none).
 pub fn check_rasterize_triangle(f: RasterFn) -> Check {
-    let parts: [fn(RasterFn) -> Check; 6] = [
+    let parts: [fn(RasterFn) -> Check; 7] = [
         coverage,
         off_image,
         degenerate,
         interpolation,
         depth_order,
+        |f| super::drawn_cover::drawn_coverage(&f),
         scene,
     ];
     let mut last = None;
@@ -45,7 +46,7 @@ pub fn check_rasterize_triangle(f: RasterFn) -> Check {
         }
         last = Some(check);
     }
-    last.expect("six parts")
+    last.expect("seven parts")
 }
 
 /// Each triangle drawn alone (fresh buffers): the samples it wrote.

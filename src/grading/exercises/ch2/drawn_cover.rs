@@ -1,0 +1,128 @@
+//! Coverage on drawn triangles: corners anywhere (ordinary floats, not on
+//! a grid), from a pixel to 10⁵ pixels across, in and around the image,
+//! either winding, half of them with an edge passing a sample at a drawn
+//! distance. Each sample's side of each edge is decided in f64;
+//! samples so near an edge that an f32 edge function's rounding could
+//! put them on either side are left out, and every other sample must be
+//! drawn exactly when it is inside.
+
+use glam::{DVec2, Vec2, Vec3};
+
+use super::common::{corners, failed, Draw, H, UNTOUCHED, W};
+use crate::exercise::Check;
+use crate::exercises::draws::Draws;
+
+/// The drawn triangles' coverage, sample by sample, against the f64
+/// answer away from rounding's reach.
+pub(super) fn drawn_coverage(f: Draw) -> Check {
+    let mut draws = Draws::new(27);
+    let count = draws.count(100, 200);
+    for k in 0..count {
+        draws.next_case();
+        // Most of them with edges across the image: 3 to 3,000 pixels
+        // across about a point in it; a quarter up to 10⁵ across.
+        let size = match draws.unit() < 0.25 {
+            true => draws.decades(0.0, 5.0),
+            false => draws.decades(0.5, 3.5),
+        };
+        let centre = Vec2::new(
+            draws.range(-0.25, 1.25) * W as f32,
+            draws.range(-0.25, 1.25) * H as f32,
+        );
+        let at = match draws.unit() < 0.5 {
+            // Half of them with an edge that passes a sample at a drawn
+            // distance, from 10⁻⁶ to 0.3 pixels, on either side.
+            true => {
+                let sample = Vec2::new(
+                    draws.count(0, W as usize - 1) as f32 + 0.5,
+                    draws.count(0, H as usize - 1) as f32 + 0.5,
+                );
+                let along = Vec2::from_angle(draws.range(0.0, std::f32::consts::TAU));
+                let across = along.perp() * draws.sign();
+                let on = sample + across * draws.sign() * draws.decades(-6.0, -0.5);
+                [
+                    on - along * size * draws.range(0.2, 1.0),
+                    on + along * size * draws.range(0.2, 1.0),
+                    on + along * size * draws.range(-1.0, 1.0)
+                        + across * size * draws.range(0.3, 1.0),
+                ]
+            }
+            false => [0; 3].map(|_| centre + draws.in_square() * size),
+        };
+        let tri = at.map(|c| Vec3::new(c.x, c.y, draws.range(1.0, 10.0)));
+        crate::progress(format_args!(
+            "rasterizing drawn triangle {k}: {}",
+            corners(&tri)
+        ));
+        let mut depth = vec![f32::INFINITY; (W * H) as usize];
+        let mut image = vec![UNTOUCHED; (W * H) as usize];
+        f(tri, [Vec3::ONE; 3], W, H, &mut depth, &mut image);
+        let c = tri.map(|v| v.truncate().as_dvec2());
+        let area = edge(c[0], c[1], c[2]);
+        if area == 0.0 {
+            continue;
+        }
+        for (i, px) in image.iter().enumerate() {
+            let (x, y) = (i as u32 % W, i as u32 / W);
+            let p = DVec2::new(x as f64 + 0.5, y as f64 + 0.5);
+            let sides = [0, 1, 2].map(|e| {
+                let (a, b) = (c[e], c[(e + 1) % 3]);
+                // What rounding in f32 may do to the edge function, from
+                // either end of the edge: a few units in the last place
+                // of its two products (an ulp is at most ε times the
+                // number).
+                let reach = 2.0
+                    * f32::EPSILON as f64
+                    * (b - a).length()
+                    * (p - a).length().max((p - b).length());
+                let e = edge(a, b, p) * area.signum();
+                (e.abs() > reach).then_some(e > 0.0)
+            });
+            let Some(inside) = sides.iter().try_fold(true, |all, s| s.map(|s| all && s)) else {
+                continue; // within rounding of an edge
+            };
+            let drawn = *px != UNTOUCHED;
+            if drawn != inside {
+                let d = sides_distance(c, p);
+                return failed(
+                    (f64::INFINITY, 0.0),
+                    format!(
+                        "drawn triangle {k}, corners ({}, {}, {}): yours {} the sample ({}, {}) of \
+                         pixel ({x}, {y}), which is {} it, {d:.3e} pixels from its nearest edge",
+                        c[0],
+                        c[1],
+                        c[2],
+                        if drawn { "covers" } else { "does not cover" },
+                        p.x,
+                        p.y,
+                        if inside { "inside" } else { "outside" },
+                    ),
+                    None,
+                    None,
+                );
+            }
+        }
+    }
+    Check {
+        error: 0.0,
+        tolerance: 0.0,
+        detail: format!("coverage matches on {count} drawn triangles"),
+        images: None,
+        symptom: None,
+    }
+}
+
+/// The 2D edge function in f64.
+fn edge(a: DVec2, b: DVec2, p: DVec2) -> f64 {
+    (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)
+}
+
+/// How far p is from the nearest of the triangle's edges (as lines).
+fn sides_distance(c: [DVec2; 3], p: DVec2) -> f64 {
+    (0..3)
+        .map(|e| {
+            let (a, b) = (c[e], c[(e + 1) % 3]);
+            edge(a, b, p).abs() / (b - a).length()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
