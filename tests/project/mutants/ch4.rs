@@ -269,7 +269,8 @@ fn walking_the_point_along_passes() {
 
 macro_rules! loop_variant {
     ($name:ident, $($field:ident),*) => {
-        /// The loop of exercise 4.2 with the mistakes named.
+        /// The loop of exercise 4.2 (ε as given, not scaled with the
+        /// distance from the origin) with the mistakes named.
         fn $name(
             sdf: &dyn Fn(Vec3) -> f32,
             o: Vec3,
@@ -279,7 +280,7 @@ macro_rules! loop_variant {
             max_distance: f32,
         ) -> Option<f32> {
             let m = March { epsilon, max_steps, max_distance, step_factor: 1.0 };
-            let v = Variant { $($field: true,)* ..Variant::default() };
+            let v = Variant { fixed_epsilon: true, $($field: true,)* ..Variant::default() };
             march(v, sdf, o, d, &m).map(|(t, _)| t)
         }
     };

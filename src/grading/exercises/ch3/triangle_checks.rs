@@ -22,10 +22,17 @@ pub(super) fn reference_moller_trumbore(
     d: Vec3,
     tri: [Vec3; 3],
 ) -> Option<(f32, f32, f32)> {
-    let ray = Ray::new(o, d).ok()?;
-    // Our Ray normalises d: scale t back to the caller's d.
+    // Our Ray normalises d: d brought first to about unit length by a
+    // power of two (exact), so that its length's square stays in f32's
+    // range however long d is, and t scaled back to the caller's d.
+    let m = d.abs().max_element();
+    let s = match m > 0.0 && m.is_finite() {
+        true => 2f32.powi((-m.log2().floor()).clamp(-126.0, 126.0) as i32),
+        false => 1.0,
+    };
+    let ray = Ray::new(o, d * s).ok()?;
     let h = triangle::intersect_moller_trumbore(&ray, tri, 0.0, f32::INFINITY)?;
-    Some((h.t / d.length(), h.u, h.v))
+    Some((h.t / (d * s).length() * s, h.u, h.v))
 }
 
 /// The barycentric (u, v) of `p` in `tri` by least squares in f64 (the
@@ -111,13 +118,15 @@ fn barycentric_inside_values(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Ch
         });
         let (mut u, mut v) = (draws.range(-0.5, 1.1), draws.range(-0.5, 1.1));
         // A third of them near the origin, where rounding is 10⁻⁶ of the
-        // size: points 10⁻⁴ to 10⁻³ of the way inside or outside an edge.
+        // size: points 2·10⁻⁵ to 10⁻³ of the way inside or outside an
+        // edge (a point outside by less than the contract's 10⁻⁴ is still
+        // outside).
         let near_edge = draws.unit() < 1.0 / 3.0;
         let t = if near_edge { t.map(|q| q - place) } else { t };
         if near_edge {
             let (s, m) = (
                 draws.range(0.1, 0.9),
-                draws.sign() * draws.decades(-4.0, -3.0),
+                draws.sign() * draws.decades(-4.7, -3.0),
             );
             (u, v) = match draws.count(0, 2) {
                 0 => (-m, s),
@@ -135,7 +144,7 @@ fn barycentric_inside_values(f: fn(Vec3, [Vec3; 3]) -> Option<(f32, f32)>) -> Ch
             continue;
         }
         // Skip points right on an edge, where rounding decides.
-        let margin = if near_edge { 5e-5 } else { 1e-3 };
+        let margin = if near_edge { 1.5e-5 } else { 1e-3 };
         if u.abs().min(v.abs()).min((1.0 - u - v).abs()) > margin {
             cases.push((p, t, uv_f64(p, t)));
         }
@@ -305,10 +314,16 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
     }
     // Drawn triangles and rays: from 10⁻³ (millimetre triangles) to 10³
     // across, up to 10⁴ times their size from the origin, d of any length
-    // (t up to 10⁵: t is in units of the d given, whatever its length).
+    // (t up to 10⁵: t is in units of the d given, whatever its length;
+    // from a stream of their own, every hit again with d 10⁻²² to 10⁻¹⁹
+    // or 10¹⁹ to 10²⁴ times as long, where |d|² leaves f32's range and t
+    // does not).
     let mut draws = Draws::new(33);
+    let mut long = Draws::new(333);
+    let mut afar = Vec::new();
     for _ in 0..draws.count(300, 900) {
         draws.next_case();
+        long.next_case();
         let scale = draws.triangle_scale();
         let place = draws.place_for(scale, 4.0);
         let at = |q: Vec3| place + q * scale;
@@ -338,14 +353,18 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
             // A hit again with d 10³ to 10⁵ times shorter: t that many
             // times larger, the same point.
             if want.is_some() {
-                let d = d * draws.decades(-5.0, -3.0);
-                let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
-                cases.push((
-                    o,
-                    d,
-                    t,
-                    want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
-                ));
+                let short = d * draws.decades(-5.0, -3.0);
+                let far = long.far_scale(1.0, (-22.0, -19.0), (19.0, 24.0));
+                for (d, to) in [(Some(short), &mut cases), (far.map(|k| d * k), &mut afar)] {
+                    let Some(d) = d else { continue };
+                    let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
+                    to.push((
+                        o,
+                        d,
+                        t,
+                        want.map(|(t, u, v)| (t as f32, u as f32, v as f32)),
+                    ));
+                }
             }
         }
     }
@@ -395,33 +414,35 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
         }
     }
     cases.extend(super::triangle_edges::near_edges(&mut draws));
-    check(
-        cases.into_iter().map(|(o, d, t, want)| {
-            let got = f(o, d, t);
-            let err = match (got, want) {
-                (Some(g), Some(w)) => worse(
-                    ((g.0 - w.0).abs() / w.0.abs()).into(),
-                    worse((g.1 - w.1).abs().into(), (g.2 - w.2).abs().into()),
-                ),
-                (None, None) => 0.0,
-                _ => f64::INFINITY,
-            };
-            let normal = (t[1] - t[0]).cross(t[2] - t[0]);
-            let symptom = match (got, want) {
-                (Some(g), Some(w)) if !near(g.0, w.0) && near(g.0, w.0 * d.length()) => {
-                    Some(UNIT_T)
-                }
-                (Some(_), None) if normal.length_squared() == 0.0 => Some(DEGENERATE),
-                (Some(_), None) if normal.dot(d) == 0.0 => Some(PARALLEL),
-                (Some(g), None) if g.0 <= 0.0 => Some(BEHIND),
-                _ => None,
-            };
-            (
-                err,
-                format!("o {o}, d {d}, {t:?}: got {got:?}, expected {want:?}"),
-                symptom,
-            )
-        }),
-        1e-4,
-    )
+    let judge = |(o, d, t, want): (Vec3, Vec3, [Vec3; 3], Option<Tuv>)| {
+        let got = f(o, d, t);
+        let err = match (got, want) {
+            (Some(g), Some(w)) => worse(
+                ((g.0 - w.0).abs() / w.0.abs()).into(),
+                worse((g.1 - w.1).abs().into(), (g.2 - w.2).abs().into()),
+            ),
+            (None, None) => 0.0,
+            _ => f64::INFINITY,
+        };
+        let normal = (t[1] - t[0]).cross(t[2] - t[0]);
+        let symptom = match (got, want) {
+            (Some(g), Some(w)) if !near(g.0, w.0) && near(g.0, w.0 * d.length()) => Some(UNIT_T),
+            (Some(_), None) if normal.length_squared() == 0.0 => Some(DEGENERATE),
+            (Some(_), None) if normal.dot(d) == 0.0 => Some(PARALLEL),
+            (Some(g), None) if g.0 <= 0.0 => Some(BEHIND),
+            _ => None,
+        };
+        (
+            err,
+            format!("o {o}, d {d}, {t:?}: got {got:?}, expected {want:?}"),
+            symptom,
+        )
+    };
+    // The far lengths of d last, once the rest passes (so that a mistake
+    // the rest shows keeps its name).
+    let main = check(cases.into_iter().map(judge), 1e-4);
+    match main.passed() {
+        true => check(afar.into_iter().map(judge), 1e-4),
+        false => main,
+    }
 }

@@ -248,6 +248,15 @@ pub fn cases() -> Vec<Case> {
             m,
         ),
         case(
+            "a floor that bends down at 45° from x = 5e-5 on, hit at the origin: the central \
+             differences of h = 1e-4 straddle the bend, so the x slope is -0.25, not -0.5 (forwards \
+             from p) or 0 (backwards)",
+            Clause::Normal,
+            bend_ahead,
+            down(1.0),
+            m,
+        ),
+        case(
             "a wall whose function is a quarter of the distance, seen obliquely: its gradient is \
              short, not zero, so the normal is the gradient's direction",
             Clause::Normal,
@@ -322,6 +331,18 @@ pub fn cases() -> Vec<Case> {
             low_ball,
             (Vec3::new(0.5, 0.3, 3.0), -Vec3::Z),
             March { epsilon: 1e-7, ..m },
+        ),
+        case(
+            "a floor 2^-6 below the ray from 2^20 m along x on: one step to t = 2^20, then f = 2^-6 \
+             while t + f rounds to t (f32's spacing there is 2^-3): with ε fixed at 1e-4 the march \
+             stands still until the steps run out, a miss (with ε at p, 1 there, a hit)",
+            Clause::Skim,
+            stalling_floor,
+            (Vec3::ZERO, Vec3::X),
+            March {
+                max_distance: 2_097_152.0,
+                ..m
+            },
         ),
     ]
 }

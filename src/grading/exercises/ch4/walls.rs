@@ -96,6 +96,14 @@ pub(super) fn flat_then_rising(p: Vec3) -> f32 {
     flat_floor(p) + (p.x - 1.5e-4).max(0.0)
 }
 
+/// A floor at z = 0 that bends down along x from x = 5·10⁻⁵ on, at 45°:
+/// a ray straight down hits it at the origin, within h = 10⁻⁴ of the bend
+/// on one side only, so the difference across p sees half the slope, and
+/// one taken from p forwards sees all of it (backwards, none).
+pub(super) fn bend_ahead(p: Vec3) -> f32 {
+    p.z - (p.x - 5e-5).max(0.0)
+}
+
 /// [`far_half_wall`] mirrored: the wall 6,000 m below the world's origin,
 /// where every coordinate of p is 0 or negative, and ε still 5.7e-3 (it
 /// scales with the largest |coordinate|).
@@ -115,6 +123,15 @@ pub(super) fn far_thin_slab(p: Vec3) -> f32 {
 /// 2ε, then lands on the wall. Exact in f32.
 pub(super) fn skimmed_floor(p: Vec3) -> f32 {
     p.z.min(2f32.powi(-9) - p.x)
+}
+
+/// A floor 2^-6 below the line y = z = 0 from x = 2^20 on, its distance
+/// bounded from below by the larger of the two gaps: a ray along x from
+/// the origin lands at t = 2^20 in one step, then f = 2^-6 for ever, above
+/// ε = 1e-4, while t + 2^-6 rounds to t (f32's spacing there is 2^-3):
+/// the march stands still, and only the budget ends it. Exact in f32.
+pub(super) fn stalling_floor(p: Vec3) -> f32 {
+    (1_048_576.0 - p.x).max(p.z + 0.015_625)
 }
 
 /// A slab between z = 4.5 and z = 5 (exact distance): from z = 10 the

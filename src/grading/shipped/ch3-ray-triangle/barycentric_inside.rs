@@ -3,9 +3,11 @@
 //! A point p in the plane of the triangle (p0, p1, p2) can be written as
 //! p = p0 + u (p1 - p0) + v (p2 - p0).
 //!
-//! Contract (what the grader checks, to 1e-4):
+//! Contract (what the grader checks: u and v to 1e-4; inside or outside
+//! exactly, but for points within rounding of an edge):
 //! * Return `Some((u, v))` when p is inside the triangle, its edges and
-//!   vertices included: u ≥ 0, v ≥ 0 and u + v ≤ 1.
+//!   vertices included: u ≥ 0, v ≥ 0 and u + v ≤ 1. A point outside by
+//!   less than 1e-4 is still outside.
 //! * Return `None` for a point outside, and for a triangle with no area
 //!   (its vertices on one line), which has no inside. A sliver has an
 //!   inside however thin it is (1 : 10⁴ included): a test that squares
