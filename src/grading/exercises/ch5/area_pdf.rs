@@ -58,19 +58,28 @@ fn area_pdf_values(f: AreaPdfFn) -> Check {
     // to 10⁻¹⁵ to 10⁻¹¹ or 10¹¹ to 10¹⁵ with the density scaled as a
     // light's area would (pdf · d² from 0.1 to 10): the answer does not
     // change with the scene's scale, but d³ leaves f32's range.
+    // And from a third stream, a seventh of the others 10^13.5 to 10¹⁵
+    // away or 10⁻¹⁵ to 10^-13.5, the density as drawn (10⁻² to 10²): a
+    // light small for its distance (or large), whose density per
+    // steradian f32 holds although d³ does not.
     let mut draws = Draws::new(53);
     let mut scaled = Draws::new(353);
+    let mut lone = Draws::new(453);
     let mut last: Option<(Vec3, Vec3, f32)> = None;
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
         scaled.next_case();
+        lone.next_case();
         let scale = match draws.unit() {
             u if u < 0.1 => draws.decades(-11.0, -5.0),
             u if u < 0.2 => draws.decades(3.0, 11.0),
             _ => draws.decades(-5.0, 3.0),
         };
         let stiff = scaled.far_scale(1.0 / 7.0, (-15.0, -11.0), (11.0, 15.0));
-        let scale = stiff.unwrap_or(scale);
+        let alone = lone
+            .far_scale(1.0 / 7.0, (-15.0, -13.5), (13.5, 15.0))
+            .filter(|_| stiff.is_none());
+        let scale = stiff.or(alone).unwrap_or(scale);
         let mut x = draws.place_for(scale, 3.0);
         let axis = draws.count(0, 2);
         let mut offset = draws.direction();
@@ -103,7 +112,8 @@ fn area_pdf_values(f: AreaPdfFn) -> Check {
         // A tenth keep the last light point and its normal, seen from
         // another x: the density depends on x too.
         // (Not a scaled scene's: its density belongs to its own scale.)
-        let again = draws.unit() < 0.1 && stiff.is_none();
+        let usual = stiff.is_none() && alone.is_none();
+        let again = draws.unit() < 0.1 && usual;
         if let Some((last_y, last_n, last_scale)) = last.filter(|_| again) {
             let moved = last_y + draws.direction() * last_scale * draws.range(0.5, 2.0);
             // Not where rounding puts x on the light point.
@@ -111,11 +121,12 @@ fn area_pdf_values(f: AreaPdfFn) -> Check {
                 (y, n, x) = (last_y, last_n, moved);
             }
         }
-        last = stiff.is_none().then_some((y, n, scale)).or(last);
+        last = usual.then_some((y, n, scale)).or(last);
         let pdf = draws.decades(-3.0, 3.0);
         let to = (y - x).as_dvec3();
         let pdf = match stiff {
             Some(_) => (scaled.decades(-1.0, 1.0) as f64 / to.length_squared()) as f32,
+            None if alone.is_some() => lone.decades(-2.0, 2.0),
             None => pdf,
         };
         let cos = (n.as_dvec3().dot(to) / to.length()).abs();

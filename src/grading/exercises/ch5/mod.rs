@@ -214,7 +214,8 @@ fn lambert_brdf_values(f: BrdfFn) -> Check {
 /// Statistical: every sample is a unit direction with z ≥ 0 whose pdf is
 /// z/π; over 40,000 samples, E(z) = 2/3, E(x) = E(y) = 0, P(z < 1/2)
 /// = 1/4 (for cos θ/π, P(cos θ < c) = c²), and the azimuth uniform (its
-/// first harmonics average to 0), and a grid of u spread evenly over
+/// first harmonics average to 0); over 160,000 more, P(z < 0.03) = 0.03²
+/// (the directions reach the rim); and a grid of u spread evenly over
 /// the hemisphere (`grid_spread`). The error is the worst
 /// deviation in standard errors (5 passes), or a large number when a
 /// sample is not even a direction on the hemisphere.
@@ -368,9 +369,25 @@ fn cosine_hemisphere_values(f: CosineFn) -> Check {
         }
     }
     let m = n as f64;
+    // And the grazing directions, from 160,000 numbers of their own: for
+    // cos θ/π, P(z < 0.03) = 0.03² (a map that stops short of the rim has
+    // none; 144 expected).
+    let grazing_n = 160_000u64;
+    let grazing = (0..grazing_n)
+        .filter(|&i| {
+            let u = Vec2::new(
+                random(seed ^ 0x9a2e, i, 0, 0),
+                random(seed ^ 0x9a2e, i, 0, 1),
+            );
+            f(u).0.z < 0.03
+        })
+        .count() as f64
+        / grazing_n as f64;
+    let grazing_sd = (0.0009f64 * 0.9991 / grazing_n as f64).sqrt();
     // Standard deviations under cos θ/π: x and y have variance 1/4, z has
     // 1/2 − 4/9, the indicator 1/4 · 3/4, each harmonic of a uniform
     // azimuth 1/2.
+    let grazing_z = (grazing - 0.0009).abs() / grazing_sd;
     let stats = [
         ("mean x", sx / m, 0.0, 0.25f64),
         ("mean y", sy / m, 0.0, 0.25),
@@ -381,13 +398,25 @@ fn cosine_hemisphere_values(f: CosineFn) -> Check {
         ("mean cos 4φ", ring[2] / m, 0.0, 0.5),
         ("mean sin 4φ", ring[3] / m, 0.0, 0.5),
     ];
-    let (error, detail) = worst_of(stats.into_iter().map(|(what, got, want, var)| {
-        let z = (got - want).abs() / (var / m).sqrt();
-        (
-            z,
-            format!("{what} = {got:.4}, expected {want:.4} ({z:.1} standard errors off)"),
-        )
-    }));
+    let grazing = (
+        grazing_z,
+        format!(
+            "P(z < 0.03) = {grazing:.6}, expected 0.000900 ({grazing_z:.1} standard errors off): \
+             the directions must reach the rim"
+        ),
+    );
+    let (error, detail) = worst_of(
+        stats
+            .into_iter()
+            .map(|(what, got, want, var)| {
+                let z = (got - want).abs() / (var / m).sqrt();
+                (
+                    z,
+                    format!("{what} = {got:.4}, expected {want:.4} ({z:.1} standard errors off)"),
+                )
+            })
+            .chain(std::iter::once(grazing)),
+    );
     Check {
         error,
         tolerance: 5.0,

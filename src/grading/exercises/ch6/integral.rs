@@ -152,13 +152,17 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         (error, detail)
     };
     // Drawn intervals (anywhere, any width from 10⁻³ to 10³, either
-    // order) and a drawn constant from 10⁻⁸ to 10⁸, from drawn numbers: exact up to
-    // rounding, with f evaluated once per number, inside the interval.
+    // order) and a drawn constant from 10⁻⁸ to 10⁸ (a fifth, from a
+    // stream of their own, 10³⁸ to 10³⁰⁰ or 10⁻²⁹⁰ to 10⁻³⁸: any f64, in
+    // f32's range or not), from drawn numbers: exact up to rounding, with
+    // f evaluated once per number, inside the interval.
     let mut draws = Draws::new(61);
     let mut narrow = Draws::new(261);
+    let mut vast = Draws::new(361);
     let drawn = worst_drawn((0..draws.count(20, 60)).map(|k| {
         draws.next_case();
         narrow.next_case();
+        vast.next_case();
         let a = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
         let width = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
         // The first and a tenth of the others from 10⁻¹² to 10⁻⁹ wide (a
@@ -168,6 +172,13 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
             false => width,
         };
         let c = (draws.sign() * draws.decades(-8.0, 8.0)) as f64;
+        let c = match (vast.unit() < 0.2, vast.sign() < 0.0) {
+            (true, big) => {
+                let (lo, hi) = if big { (38.0, 300.0) } else { (-290.0, -38.0) };
+                c.signum() * 10f64.powf(lo + (hi - lo) * vast.unit() as f64)
+            }
+            (false, _) => c,
+        };
         let mut u: Vec<f64> = (0..draws.count(1, 16))
             .map(|_| draws.unit() as f64)
             .collect();

@@ -2,7 +2,7 @@
 //! variants, the Cornell box, and last the brighter furnace (see
 //! [`check`](super::check) for each clause).
 
-use super::bright::bright_furnace;
+use super::bright::{bright_furnace, dim_furnace};
 use super::check::{
     furnace_of_run, judge_furnace_of, trace_furnace, CORNELL_DIFFERS, FURNACE_PATHS,
 };
@@ -31,9 +31,9 @@ pub fn check_path_radiance(f: PathFn) -> Check {
     }
     let box_check = cornell(f);
     // Only once the rest passes (so that a failure keeps the name it had):
-    // the brighter furnace.
+    // the brighter furnace, then a dim one.
     if fz <= 5.0 && box_check.passed() {
-        if let Some((error, detail, symptom)) = bright_furnace(f) {
+        if let Some((error, detail, symptom)) = bright_furnace(f).or_else(|| dim_furnace(f)) {
             return Check {
                 error,
                 tolerance: 5.0,
