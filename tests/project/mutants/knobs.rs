@@ -120,6 +120,9 @@ pub struct EdgeKnobs {
     pub cut_at_most: Option<f32>,
     /// The cut's z interpolated like x and y, not set to -near.
     pub unsnapped_z: bool,
+    /// The cut at the edge's middle where the ends' distances past the
+    /// plane differ by less than this (an edge "parallel" to it).
+    pub parallel_below: Option<f32>,
 }
 
 /// The solution of draw_edges, departing as `k` says.
@@ -137,6 +140,8 @@ pub fn draw_edges(
     let (da, db) = (a.z + near, b.z + near);
     let on_plane = |from: Vec3, to: Vec3, d_from: f32, d_to: f32| {
         let s = d_from / (d_from - d_to);
+        let parallel = k.parallel_below.is_some_and(|g| (d_from - d_to).abs() < g);
+        let s = if parallel { 0.5 } else { s };
         let s = k.cut_at_most.map_or(s, |most| s.min(most));
         let p = match k.cut {
             Cut::Linear => from + (to - from) * s,
@@ -210,6 +215,10 @@ pub struct RasterKnobs {
     /// The (doubled) area the weights are divided by raised to at least
     /// this (the solution: 0).
     pub area_floor: f32,
+    /// An edge function within this share of the (doubled) area taken as
+    /// exactly on the edge, where the top-left rule decides (the
+    /// solution: 0).
+    pub relative_slack: f32,
 }
 
 /// The solution of rasterize_triangle (corners not finite refused),
@@ -249,9 +258,12 @@ pub fn rasterize(
                 false => edge(s, t, p),
             };
             let w = [(b, c), (c, a), (a, b)].map(|(s, t)| (e(s, t), top_left(s, t)));
-            let inside = |&(e, tl): &(f32, bool)| match tl {
-                true => e >= 0.0,
-                false => e > k.edge_slack,
+            let inside = |&(e, tl): &(f32, bool)| {
+                let on = e.abs() <= k.relative_slack * area;
+                match tl {
+                    true => e >= 0.0 || on,
+                    false => e > k.edge_slack && !on,
+                }
             };
             if !w.iter().all(inside) {
                 if k.row_break && inside_run {
@@ -681,6 +693,8 @@ pub struct MarchKnobs {
     pub max_from_origin: bool,
     /// Unrolled by two: an odd budget loses its last evaluation.
     pub unrolled: bool,
+    /// The normal's differences taken forwards from the hit, f(p + h) - f(p).
+    pub forward: bool,
 }
 
 /// The solution of sphere_trace, departing as `k` says.
@@ -773,6 +787,8 @@ pub struct SceneKnobs {
     pub fallback_below: Option<f32>,
     /// Unrolled by two: an odd budget loses its last evaluation.
     pub unrolled: bool,
+    /// The normal's differences taken forwards from the hit, f(p + h) - f(p).
+    pub forward: bool,
 }
 
 impl Default for SceneKnobs {
@@ -786,6 +802,7 @@ impl Default for SceneKnobs {
             flip_above: 0.0,
             fallback_below: None,
             unrolled: false,
+            forward: false,
         }
     }
 }
@@ -830,7 +847,10 @@ pub fn trace_scene(
     };
     let h = k.h_floor.map_or(h, |floor| h.max(floor));
     let h = k.h_cap.map_or(h, |cap| h.min(cap));
-    let partial = |axis: Vec3| (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h);
+    let partial = |axis: Vec3| match k.forward {
+        true => (sdf(p + axis * h) - f) / h,
+        false => (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h),
+    };
     let gradient = Vec3::new(partial(Vec3::X), partial(Vec3::Y), partial(Vec3::Z));
     let short = k.fallback_below.is_some_and(|l| gradient.length() < l);
     let n = gradient
@@ -988,6 +1008,8 @@ pub struct PathKnobs {
     /// The roulette decided by the bounce's own u.x, not a number of its
     /// own.
     pub roulette_on_bounce_u: bool,
+    /// The path ended, uncompensated, where roulette's q falls below this.
+    pub dim_below: Option<f32>,
 }
 
 impl Default for PathKnobs {
@@ -1006,6 +1028,7 @@ impl Default for PathKnobs {
             pdf_eps: 0.0,
             max_bounces: None,
             roulette_on_bounce_u: false,
+            dim_below: None,
         }
     }
 }
@@ -1070,6 +1093,9 @@ pub fn path(
         }
         if !k.roulette_at_top && bounces > k.roulette_after {
             let q = q_of(beta, before);
+            if k.dim_below.is_some_and(|dim| q < dim) {
+                break;
+            }
             let u = if k.roulette_on_bounce_u { ux } else { rng() };
             if u >= q {
                 break;

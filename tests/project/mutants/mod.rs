@@ -35,6 +35,7 @@ pub mod fresh_twelfth;
 pub mod fresh_twentieth;
 pub mod fresh_twentyfirst;
 pub mod fresh_twentysecond;
+pub mod fresh_twentythird;
 pub mod knobs;
 pub mod refraction;
 
