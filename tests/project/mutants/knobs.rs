@@ -693,8 +693,6 @@ pub struct MarchKnobs {
     pub max_from_origin: bool,
     /// Unrolled by two: an odd budget loses its last evaluation.
     pub unrolled: bool,
-    /// The normal's differences taken forwards from the hit, f(p + h) - f(p).
-    pub forward: bool,
 }
 
 /// The solution of sphere_trace, departing as `k` says.
