@@ -354,9 +354,9 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
             // times larger, the same point.
             if want.is_some() {
                 let short = d * draws.decades(-5.0, -3.0);
+                // (A share of 1: always a far scale, tiny or huge.)
                 let far = long.far_scale(1.0, (-22.0, -19.0), (19.0, 24.0));
-                for (d, to) in [(Some(short), &mut cases), (far.map(|k| d * k), &mut afar)] {
-                    let Some(d) = d else { continue };
+                for (d, to) in [(short, &mut cases), (d * far.unwrap_or(1.0), &mut afar)] {
                     let want = intersect_f64(o.as_dvec3(), d.as_dvec3(), t.map(|p| p.as_dvec3()));
                     to.push((
                         o,

@@ -384,10 +384,10 @@ fn cosine_hemisphere_values(f: CosineFn) -> Check {
         .count() as f64
         / grazing_n as f64;
     let grazing_sd = (0.0009f64 * 0.9991 / grazing_n as f64).sqrt();
+    let grazing_z = (grazing - 0.0009).abs() / grazing_sd;
     // Standard deviations under cos θ/π: x and y have variance 1/4, z has
     // 1/2 − 4/9, the indicator 1/4 · 3/4, each harmonic of a uniform
     // azimuth 1/2.
-    let grazing_z = (grazing - 0.0009).abs() / grazing_sd;
     let stats = [
         ("mean x", sx / m, 0.0, 0.25f64),
         ("mean y", sy / m, 0.0, 0.25),

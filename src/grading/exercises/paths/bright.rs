@@ -6,6 +6,8 @@
 //! run's own furnace (albedo 0.8 to 0.9, about 7 bounces) it hides in
 //! the noise. Below 0.97, so that no right path runs past
 //! [`BOUNCE_BUDGET`](super::BOUNCE_BUDGET) (0.97¹⁰⁰⁰ is 6·10⁻¹⁴).
+//! Then a dim furnace ([`dim_furnace`]), where a path ended for being
+//! dim loses the light of its later bounces.
 
 use super::check::{cap_spike, furnace_of_run, judge_furnace_of, trace_furnace, DEPTH_CAP};
 use super::{PathFn, PathScene};
