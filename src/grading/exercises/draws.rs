@@ -65,9 +65,21 @@ impl Draws {
     /// With probability `share`, a scale far from 1: 10^u with u uniform
     /// in `small` or in `large`, each half the time; `None` otherwise.
     pub fn far_scale(&mut self, share: f32, small: (f32, f32), large: (f32, f32)) -> Option<f32> {
+        self.far_exponent(share, small, large)
+            .map(|u| 10f32.powf(u))
+    }
+
+    /// [`Draws::far_scale`]'s exponent u, for a scale past f32's range
+    /// (10^u taken in f64).
+    pub fn far_exponent(
+        &mut self,
+        share: f32,
+        small: (f32, f32),
+        large: (f32, f32),
+    ) -> Option<f32> {
         match (self.unit() < share, self.sign() < 0.0) {
-            (true, true) => Some(self.decades(small.0, small.1)),
-            (true, false) => Some(self.decades(large.0, large.1)),
+            (true, true) => Some(self.range(small.0, small.1)),
+            (true, false) => Some(self.range(large.0, large.1)),
             (false, _) => None,
         }
     }

@@ -15,7 +15,7 @@ use raystep::grading::exercise::Check;
 use raystep::grading::exercises::{ch1, ch2, ch3, ch4, ch5, ch6, paths};
 
 use super::fails_every;
-use super::knobs::{self, EdgeKnobs, Knobs, PathKnobs, RasterKnobs, SceneKnobs};
+use super::knobs::{self, EdgeKnobs, Knobs, MarchKnobs, PathKnobs, RasterKnobs, SceneKnobs};
 
 /// The seeds every mutant must fail under.
 const SEEDS: [u64; 4] = [231, 232, 237, 0x2026_1130];
@@ -24,37 +24,14 @@ fn fails(what: &str, check: impl Fn() -> Check) {
     fails_every(&SEEDS, what, None, check);
 }
 
-/// The course's sphere-tracing loop, with a stop of its own besides the
-/// contract's (`stop(t, f)`: a hit at t).
-fn trace_stopping(
-    sdf: &dyn Fn(Vec3) -> f32,
-    (o, d): (Vec3, Vec3),
-    (eps, steps, far): (f32, u32, f32),
-    stop: impl Fn(f32, f32) -> bool,
-) -> Option<f32> {
-    let mut t = 0.0f32;
-    for _ in 0..steps {
-        let f = sdf(o + t * d);
-        if f.abs() < eps || stop(t, f) {
-            return Some(t);
-        }
-        if t > far {
-            return None;
-        }
-        t += f;
-    }
-    None
-}
-
 #[test]
 fn precision_mistakes_fail() {
     fails(
         "sphere_trace: ε raised to 4 ulps of t far along the ray",
         || {
             ch4::check_sphere_trace(|sdf, o, d, eps, steps, far| {
-                trace_stopping(sdf, (o, d), (eps, steps, far), |t, f| {
-                    f.abs() < 4.0 * f32::EPSILON * t
-                })
+                let k = MarchKnobs::with(|k| k.eps_ulps_of_t = Some(4.0));
+                knobs::sphere_trace(k, sdf, (o, d), eps, steps, far)
             })
         },
     );
@@ -62,7 +39,8 @@ fn precision_mistakes_fail() {
         "sphere_trace: a march that stands still taken as a hit",
         || {
             ch4::check_sphere_trace(|sdf, o, d, eps, steps, far| {
-                trace_stopping(sdf, (o, d), (eps, steps, far), |t, f| t + f == t)
+                let k = MarchKnobs::with(|k| k.stall_hit = true);
+                knobs::sphere_trace(k, sdf, (o, d), eps, steps, far)
             })
         },
     );

@@ -693,6 +693,11 @@ pub struct MarchKnobs {
     pub max_from_origin: bool,
     /// Unrolled by two: an odd budget loses its last evaluation.
     pub unrolled: bool,
+    /// ε raised to at least this many f32 ε times t (the twenty-third set).
+    pub eps_ulps_of_t: Option<f32>,
+    /// A step that leaves t where it is taken as a hit (the twenty-third
+    /// set).
+    pub stall_hit: bool,
 }
 
 /// The solution of sphere_trace, departing as `k` says.
@@ -716,7 +721,10 @@ pub fn sphere_trace(
         let tf = t as f32;
         let d = sdf(origin + tf * dir);
         let tested = !(k.first_untested && step == 0);
-        if tested && (if k.signed_hit { d } else { d.abs() }) < epsilon {
+        let eps = k
+            .eps_ulps_of_t
+            .map_or(epsilon, |n| epsilon.max(n * f32::EPSILON * tf));
+        if tested && (if k.signed_hit { d } else { d.abs() }) < eps {
             return Some(tf);
         }
         let gone = match k.max_from_origin {
@@ -725,6 +733,9 @@ pub fn sphere_trace(
         };
         if gone > max_distance {
             return None;
+        }
+        if k.stall_hit && tf + d == tf {
+            return Some(tf);
         }
         t = if k.t_f64 {
             t + d as f64

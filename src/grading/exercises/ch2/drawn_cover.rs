@@ -8,7 +8,7 @@
 
 use glam::{DVec2, Vec2, Vec3};
 
-use super::common::{corners, failed, Draw, H, UNTOUCHED, W};
+use super::common::{corners, edge64, failed, Draw, H, UNTOUCHED, W};
 use crate::exercise::Check;
 use crate::exercises::draws::Draws;
 
@@ -58,7 +58,7 @@ pub(super) fn drawn_coverage(f: Draw) -> Check {
         let mut image = vec![UNTOUCHED; (W * H) as usize];
         f(tri, [Vec3::ONE; 3], W, H, &mut depth, &mut image);
         let c = tri.map(|v| v.truncate().as_dvec2());
-        let area = edge(c[0], c[1], c[2]);
+        let area = edge64(c[0], c[1], c[2]);
         if area == 0.0 {
             continue;
         }
@@ -75,7 +75,7 @@ pub(super) fn drawn_coverage(f: Draw) -> Check {
                     * f32::EPSILON as f64
                     * (b - a).length()
                     * (p - a).length().max((p - b).length());
-                let e = edge(a, b, p) * area.signum();
+                let e = edge64(a, b, p) * area.signum();
                 (e.abs() > reach).then_some(e > 0.0)
             });
             let Some(inside) = sides.iter().try_fold(true, |all, s| s.map(|s| all && s)) else {
@@ -112,17 +112,12 @@ pub(super) fn drawn_coverage(f: Draw) -> Check {
     }
 }
 
-/// The 2D edge function in f64.
-fn edge(a: DVec2, b: DVec2, p: DVec2) -> f64 {
-    (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)
-}
-
 /// How far p is from the nearest of the triangle's edges (as lines).
 fn sides_distance(c: [DVec2; 3], p: DVec2) -> f64 {
     (0..3)
         .map(|e| {
             let (a, b) = (c[e], c[(e + 1) % 3]);
-            edge(a, b, p).abs() / (b - a).length()
+            edge64(a, b, p).abs() / (b - a).length()
         })
         .fold(f64::INFINITY, f64::min)
 }

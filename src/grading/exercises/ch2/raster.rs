@@ -6,7 +6,7 @@
 
 use glam::{DVec2, Vec3};
 
-use super::common::{corners, failed, Draw, H, UNTOUCHED, W};
+use super::common::{corners, edge64, failed, Draw, H, UNTOUCHED, W};
 use super::model::Model;
 use super::shading::{depth_order, interpolation, scene};
 use super::{DEGENERATE, HALF_PIXEL, OFF_IMAGE, TOP_LEFT, WINDING};
@@ -85,11 +85,6 @@ fn count_film(masks: &[Vec<bool>]) -> Film {
         }
     }
     film
-}
-
-/// The 2D edge function in f64 (exact for the test triangles' corners).
-fn edge64(a: DVec2, b: DVec2, p: DVec2) -> f64 {
-    (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)
 }
 
 /// Triangles at general positions (no sample on an edge, both windings):

@@ -172,13 +172,9 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
             false => width,
         };
         let c = (draws.sign() * draws.decades(-8.0, 8.0)) as f64;
-        let c = match (vast.unit() < 0.2, vast.sign() < 0.0) {
-            (true, big) => {
-                let (lo, hi) = if big { (38.0, 300.0) } else { (-290.0, -38.0) };
-                c.signum() * 10f64.powf(lo + (hi - lo) * vast.unit() as f64)
-            }
-            (false, _) => c,
-        };
+        let c = vast
+            .far_exponent(0.2, (-290.0, -38.0), (38.0, 300.0))
+            .map_or(c, |u| c.signum() * 10f64.powf(u as f64));
         let mut u: Vec<f64> = (0..draws.count(1, 16))
             .map(|_| draws.unit() as f64)
             .collect();
