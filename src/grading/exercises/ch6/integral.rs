@@ -313,6 +313,8 @@ fn drawn_once(f: IntegralFn, a: f64, b: f64, c: f64, u: &[f64]) -> (f64, String)
     }
     (
         (got - want).abs() / want.abs() * 1e3,
-        format!("∫ from {a} to {b} of the constant {c} = {want}, got {got}"),
+        // In scientific notation: the constants go up to 10³⁰⁰ (every
+        // digit, still exact, and short).
+        format!("∫ from {a} to {b} of the constant {c:e} = {want:e}, got {got:e}"),
     )
 }
