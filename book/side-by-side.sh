@@ -40,12 +40,14 @@ run() {
 }
 
 # The Cornell box: the default roulette, Mitsuba's (from the fifth
-# scattering), and the portable lane loops (what an aarch64 laptop runs);
-# then the glass-ball box, where the glass ball's vertices run the
-# lesson's steps inside the wavefront.
+# scattering), the portable vectors (what an aarch64 laptop runs, here
+# with SSE2) and AVX2's, which the portable path is measured against; then
+# the glass-ball box, where the glass ball's vertices run the lesson's
+# steps inside the wavefront.
 run "$out/sbs-cornell.txt" PEER_SCENE=cornell --
 run "$out/sbs-cornell-rr5.txt" PEER_SCENE=cornell -- --rr-after 5
 run "$out/sbs-cornell-portable.txt" PEER_SCENE=cornell RAYSTEP_SIMD=portable --
+run "$out/sbs-cornell-avx2.txt" PEER_SCENE=cornell RAYSTEP_SIMD=avx2 --
 run "$out/sbs-glass.txt" PEER_SCENE=glass --
 
 # How many samples per pixel each of Mitsuba's samplers draws when the

@@ -1,8 +1,8 @@
 //! pbrt-v4's bound on the rounding error of the watertight test's t
 //! (`IntersectTriangle`, from the γ bounds of every operation that led to
 //! it), written once over a lane type: one f32 for the readable test and
-//! the fast engine's lane loops, four for the four-wide test, eight in
-//! the AVX kernels. A t at or below the bound cannot be told from 0.
+//! the fast engine's lane loops, four for the four-wide test, four or
+//! eight in the fast engine's kernels. A t at or below the bound cannot be told from 0.
 //!
 //! Every caller takes the largest magnitudes (of the sheared corners'
 //! x, y and z, and of the three edge functions) its own way, and this

@@ -18,7 +18,7 @@ pub const LEAF: u32 = 1 << 31;
 
 /// What both queries ask of a wide tree of `N` children per node and `N`
 /// triangles per leaf: the four-wide tree ([`super::wide_bvh`]), the fast
-/// engine's eight-wide one, that one with its AVX kernels, and that one
+/// engine's eight-wide one, that one with its vector kernels, and that one
 /// for eight camera rays at once, each with its own slab test.
 pub trait WideTree<const N: usize> {
     /// The ray, as this tree's tests take it (computed once per query).

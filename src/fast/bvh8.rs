@@ -1,10 +1,11 @@
 //! The fast engine's BVH: chapter 3's binary tree collapsed to *eight*
 //! children per node and up to eight triangles per leaf, stored by
 //! coordinate (`[f32; 8]` per axis) so that one pass over the lanes tests
-//! all eight boxes or triangles ([`super::lanes`]). The traversals here run
-//! the portable lane loops; [`super::simd`] has the same traversals with
-//! the tests in AVX2 instructions, visiting the same nodes in the same
-//! order.
+//! all eight boxes or triangles. The queries run the kernels of
+//! [`super::kernels`], compiled for the CPU's vectors ([`super::simd`]).
+//! This tree also answers them with the plain lane loops of
+//! [`super::lanes`], the form the book shows and tests compare the kernels
+//! with: the same nodes and leaves in the same order, the same bits.
 //!
 //! The rare lanes the triangle test hands back (an edge function exactly
 //! zero, a t too small to trust) go to the same one-triangle test as the
@@ -17,6 +18,7 @@ use obvhs::BvhBuildParams;
 
 use crate::ch3_ray_triangle::bvh_robust::build_tree;
 use crate::ch3_ray_triangle::obvhs_bvh::padded_boxes;
+use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Hit;
 use crate::ch3_ray_triangle::watertight_fast::SoaTriangle;
 use crate::ch3_ray_triangle::wide_build::{
@@ -301,7 +303,7 @@ impl Bvh8 {
     }
 
     /// The closest hit in (0, t_max), `stack` holding at least
-    /// [`Bvh8::stack_size`] entries ([`closest`], with the portable lane
+    /// [`Bvh8::stack_size`] entries ([`closest`], with the plain lane
     /// loops).
     #[inline(always)]
     pub(super) fn closest_with(
@@ -343,22 +345,48 @@ impl Bvh8 {
         }
     }
 
+    /// Whether inner node `node` uses only its first four lanes.
+    #[inline(always)]
+    pub(super) fn narrow_node(&self, node: usize) -> bool {
+        self.narrow_nodes[node]
+    }
+
+    /// Whether leaf `l` holds at most four triangles.
+    #[inline(always)]
+    pub(super) fn narrow_leaf(&self, l: usize) -> bool {
+        self.narrow_leaves[l]
+    }
+
     /// Leaf `l`'s triangles one by one, for the rare lanes.
     fn leaf_tris(&self, l: usize) -> &[SoaTriangle] {
         &self.tris[l * W..(l + 1) * W]
     }
 
     /// Whether anything is hit in (0, t_max) ([`occluded`], with the
-    /// portable lane loops).
+    /// plain lane loops).
     #[inline(always)]
     pub(super) fn occluded_with(&self, r: &RayData, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
         occluded(self, r, t_max, stack)
     }
+
+    /// The closest hit of `ray` in (0, t_max) by the plain lane loops of
+    /// [`super::lanes`], whatever the tree's level: what the kernels must
+    /// find, bit for bit (the tests' reference).
+    pub fn closest_by_lane_loops(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        let stack = &mut vec![(0, 0.0); self.stack_size()];
+        self.closest_with(&RayData::new(ray), t_max, stack)
+    }
+
+    /// Whether anything is hit in (0, t_max), by the plain lane loops.
+    pub fn occluded_by_lane_loops(&self, ray: &Ray, t_max: f32) -> bool {
+        let stack = &mut vec![(0, 0.0); self.stack_size()];
+        self.occluded_with(&RayData::new(ray), t_max, stack)
+    }
 }
 
-/// The eight-wide tree's portable lane loops for the queries written once
-/// ([`closest`], [`occluded`]); the AVX kernels have their own
-/// (`simd::avx`).
+/// The eight-wide tree's plain lane loops for the queries written once
+/// ([`closest`], [`occluded`]); the kernels ([`super::kernels`]) are the
+/// same tests over a vector type.
 impl WideTree<W> for Bvh8 {
     type Ray<'r> = RayData<'r>;
 

@@ -3,8 +3,8 @@
 //! boxes and the watertight test of a leaf's eight triangles. Each lane's
 //! arithmetic is chapter 3's in the order
 //! [`WatertightRay::intersect4`](crate::ch3_ray_triangle::watertight_fast::WatertightRay::intersect4) uses, so every hit (t, u, v) is bit for
-//! bit what the readable engine finds. [`super::simd`] holds the same two
-//! tests in AVX2 instructions. And the last steps
+//! bit what the readable engine finds. [`super::kernels`] holds the same
+//! two tests over a vector type, which the queries run. And the last steps
 //! of a Sobol point (the Owen scramble), in integer lanes.
 
 use crate::ch3_ray_triangle::ray::Ray;
@@ -90,7 +90,7 @@ pub fn mask(b: [bool; W]) -> u32 {
 }
 
 /// The larger of `x` and `y` as a select: `y` where it is larger, else
-/// `x`, the rule of the vector max instruction (which the AVX kernels
+/// `x`, the rule of the vector max instruction (which the kernels
 /// use). `f32::max` asks for more without AVX, to treat a NaN, which never
 /// comes where the lane loops call this.
 #[inline(always)]

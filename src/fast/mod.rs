@@ -40,11 +40,13 @@ pub mod chapters;
 pub mod bench;
 pub mod bvh8;
 pub mod gather8;
+pub mod kernels;
 pub mod lane_rays;
 pub mod lanes;
 pub mod level;
 pub mod packet;
 pub mod pick8;
+mod portable;
 pub mod shade8;
 #[allow(unsafe_code)]
 pub mod simd;

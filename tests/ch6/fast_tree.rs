@@ -1,7 +1,7 @@
 //! The fast engine's eight-wide tree on rays that pass exactly through
 //! shared edges and vertices: there the triangle test hands lanes to the
-//! one-triangle test, and every SIMD path must find the same hit, bit for
-//! bit, as the portable one.
+//! one-triangle test, and every SIMD path's kernels must find the same
+//! hit, bit for bit, as the plain lane loops the book shows.
 
 use glam::Vec3;
 
@@ -12,7 +12,7 @@ use raystep::fast::bvh8::Bvh8;
 use raystep::fast::level::Level;
 
 #[test]
-fn every_simd_path_finds_the_portable_hits_on_edges_and_vertices() {
+fn every_simd_path_finds_the_lane_loops_hits_on_edges_and_vertices() {
     // A 6x6 grid of squares in z = 0, two triangles each (72 triangles,
     // several leaves), and a tilted one above it.
     let mut tris = Vec::new();
@@ -50,7 +50,7 @@ fn every_simd_path_finds_the_portable_hits_on_edges_and_vertices() {
         assert_eq!(tree.level(), level);
         for ray in &rays {
             let (want, got) = (
-                portable.closest(ray, f32::INFINITY),
+                portable.closest_by_lane_loops(ray, f32::INFINITY),
                 tree.closest(ray, f32::INFINITY),
             );
             let bits = |h: Option<raystep::ch3_ray_triangle::triangle::Hit>| {
@@ -61,7 +61,7 @@ fn every_simd_path_finds_the_portable_hits_on_edges_and_vertices() {
             for t_max in [1.0, 3.9, 4.0, 4.1] {
                 assert_eq!(
                     tree.occluded(ray, t_max),
-                    portable.occluded(ray, t_max),
+                    portable.occluded_by_lane_loops(ray, t_max),
                     "{level:?} {ray:?} {t_max}"
                 );
             }
@@ -73,6 +73,67 @@ fn every_simd_path_finds_the_portable_hits_on_edges_and_vertices() {
     let straight = rays.iter().filter(|r| r.dir == Vec3::NEG_Z).count();
     let levels = Level::ALL.iter().filter(|l| l.available()).count();
     assert_eq!(hits, straight * levels);
+}
+
+/// The kernels against the plain lane loops on a soup of triangles of
+/// every size and place (leaves and nodes of four lanes or fewer among
+/// them, which the portable path tests four wide), from rays in every
+/// direction, with every level the CPU has.
+#[test]
+fn every_simd_path_finds_the_lane_loops_hits_in_a_soup() {
+    let mut h = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = || {
+        h ^= h << 13;
+        h ^= h >> 7;
+        h ^= h << 17;
+        (h >> 40) as f32 / (1u64 << 24) as f32
+    };
+    for (count, scale) in [(3, 1.0), (7, 1e-3), (150, 1.0), (600, 1e4)] {
+        let mut point =
+            |spread: f32| Vec3::new(next(), next(), next()) * 2.0 * spread - Vec3::splat(spread);
+        let tris: Vec<[Vec3; 3]> = (0..count)
+            .map(|i| {
+                let centre = point(scale);
+                let size = scale * [0.01, 0.2, 1.0][i % 3];
+                [
+                    centre + point(size),
+                    centre + point(size),
+                    centre + point(size),
+                ]
+            })
+            .collect();
+        let rays: Vec<(Ray, f32)> = (0..3000)
+            .filter_map(|i| {
+                let origin = point(1.5 * scale);
+                let to = point(scale) - origin;
+                let t_max = [f32::INFINITY, to.length(), 0.5 * to.length()][i % 3];
+                Some((Ray::new(origin, to.try_normalize()?).ok()?, t_max))
+            })
+            .collect();
+        let lanes = Bvh8::build(&tris, Level::Portable).unwrap();
+        let want: Vec<_> = rays
+            .iter()
+            .map(|(ray, t_max)| {
+                let hit = lanes.closest_by_lane_loops(ray, *t_max);
+                let hit = hit.map(|h| (h.t.to_bits(), h.u.to_bits(), h.v.to_bits(), h.triangle));
+                (hit, lanes.occluded_by_lane_loops(ray, *t_max))
+            })
+            .collect();
+        let found = want.iter().filter(|w| w.0.is_some()).count();
+        assert!(found > 25, "{count} triangles: {found} hits");
+        for level in Level::ALL.into_iter().filter(|l| l.available()) {
+            let tree = Bvh8::build(&tris, level).unwrap();
+            for ((ray, t_max), want) in rays.iter().zip(&want) {
+                let hit = tree.closest(ray, *t_max);
+                let hit = hit.map(|h| (h.t.to_bits(), h.u.to_bits(), h.v.to_bits(), h.triangle));
+                let got = (hit, tree.occluded(ray, *t_max));
+                assert_eq!(
+                    &got, want,
+                    "{level:?}, {count} triangles, {ray:?} to {t_max}"
+                );
+            }
+        }
+    }
 }
 
 #[test]

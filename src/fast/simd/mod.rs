@@ -1,13 +1,16 @@
 //! Which vector instructions the fast engine's ray queries use, chosen
 //! at run time: the one module with `unsafe` code (this file's dispatch
-//! and its AVX kernels in `avx.rs`).
+//! and the AVX vector type in `avx.rs`).
 //!
 //! The release build targets the x86-64 baseline (SSE2), so that the
-//! binary runs on any x86-64 CPU. Each query is compiled three times: with
-//! the portable lane loops of [`super::lanes`] for the baseline (the only
-//! path on other architectures), and with the AVX2 kernels of `avx.rs`
-//! for AVX2 and for AVX-512 CPUs (the same eight-lane code; with AVX-512
-//! enabled the compiler may use its mask registers). [`Level::detect`] picks the widest
+//! binary runs on any x86-64 CPU. Each query's kernels
+//! ([`super::kernels`], written once over a vector type) are compiled
+//! three times: with the `wide` crate's vectors for the baseline (SSE2 on
+//! x86-64, NEON on aarch64, the only path on other architectures), and
+//! with one AVX register of eight lanes (`avx.rs`) for AVX2 and for
+//! AVX-512 CPUs (with AVX-512 enabled the compiler may use its mask
+//! registers). The shading's and the random numbers' lane loops are
+//! compiled for each level too. [`Level::detect`] picks the widest
 //! the CPU has; `RAYSTEP_SIMD` (`portable`, `avx2`, `avx512`) asks for a
 //! narrower one.
 //!
@@ -80,8 +83,7 @@ pub fn closest_all(bvh: &Bvh8, rays: &[Ray], hits: &mut Vec<Option<Hit>>) {
         Level::Avx2 => unsafe { closest_all_avx2(bvh, rays, stack, hits) },
         _ => {
             for ray in rays {
-                let r = RayData::new(ray);
-                hits.push(bvh.closest_with(&r, f32::INFINITY, stack));
+                hits.push(super::portable::closest(bvh, ray, f32::INFINITY, stack));
             }
         }
     }
@@ -144,8 +146,7 @@ pub fn occluded_all(bvh: &Bvh8, rays: &[(Ray, f32)], blocked: &mut Vec<bool>) {
         Level::Avx2 => unsafe { occluded_all_avx2(bvh, rays, stack, blocked) },
         _ => {
             for (ray, t_max) in rays {
-                let r = RayData::new(ray);
-                blocked.push(bvh.occluded_with(&r, *t_max, stack));
+                blocked.push(super::portable::occluded(bvh, ray, *t_max, stack));
             }
         }
     }
@@ -277,14 +278,16 @@ macro_rules! with_stack {
 
 #[inline(always)]
 fn closest_lanes(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
-    let r = RayData::new(ray);
-    with_stack!(bvh, |stack| bvh.closest_with(&r, t_max, stack))
+    with_stack!(bvh, |stack| super::portable::closest(
+        bvh, ray, t_max, stack
+    ))
 }
 
 #[inline(always)]
 fn occluded_lanes(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
-    let r = RayData::new(ray);
-    with_stack!(bvh, |stack| bvh.occluded_with(&r, t_max, stack))
+    with_stack!(bvh, |stack| super::portable::occluded(
+        bvh, ray, t_max, stack
+    ))
 }
 
 #[cfg(target_arch = "x86_64")]
