@@ -305,6 +305,9 @@ pub struct InsideKnobs {
     pub absolute: bool,
     /// A corner's (u, v) returned before the test for no area.
     pub corners_first: bool,
+    /// u and v taken as inside down to −slack, u + v up to 1 + slack
+    /// (the twenty-fourth set).
+    pub slack: f32,
 }
 
 /// The solution of barycentric_inside, departing as `k` says.
@@ -330,9 +333,9 @@ pub fn inside(k: InsideKnobs, p: Vec3, tri: [Vec3; 3]) -> Option<(f32, f32)> {
     };
     let inside = match k.sign_bits {
         true => u.is_sign_positive() && v.is_sign_positive(),
-        false => u >= 0.0 && v >= 0.0,
+        false => u >= -k.slack && v >= -k.slack,
     };
-    (inside && u + v <= 1.0).then_some((u, v))
+    (inside && u + v <= 1.0 + k.slack).then_some((u, v))
 }
 
 // ---- 3.3 moller_trumbore --------------------------------------------------------
@@ -698,6 +701,9 @@ pub struct MarchKnobs {
     /// A step that leaves t where it is taken as a hit (the twenty-third
     /// set).
     pub stall_hit: bool,
+    /// Gives up at t = max_distance, not only beyond it (the
+    /// twenty-fourth set).
+    pub stop_at_max: bool,
 }
 
 /// The solution of sphere_trace, departing as `k` says.
@@ -731,7 +737,7 @@ pub fn sphere_trace(
             true => (origin + tf * dir).length(),
             false => tf,
         };
-        if gone > max_distance {
+        if gone > max_distance || (k.stop_at_max && gone == max_distance) {
             return None;
         }
         if k.stall_hit && tf + d == tf {

@@ -134,6 +134,15 @@ pub fn cases() -> Vec<Case> {
             },
         ),
         case(
+            "a wall 1.5 m below whose function is its distance capped at 1, max_distance = 1: the \
+             first step lands exactly at max_distance, short of the wall and not beyond the limit, \
+             so the march goes on: a hit at t = 1.5",
+            Clause::MaxDistance,
+            capped_wall,
+            down(1.5),
+            March { max_distance: 1.0, ..m },
+        ),
+        case(
             "an exact wall ε = 2^-10 below: |f| = ε at t = 0 is not below ε, so one step of ε, \
              then the hit at t = 2^-10",
             Clause::Skim,

@@ -5,6 +5,13 @@
 
 use glam::Vec3;
 
+/// A wall at z = 0 whose function is its distance capped at 1 (a bound
+/// like any other: it never overstates): from z = 1.5 the first step is 1,
+/// to t = 1, where f = 1/2; the second lands on the wall at t = 3/2.
+pub(super) fn capped_wall(p: Vec3) -> f32 {
+    p.z.min(1.0)
+}
+
 /// A wall at z = 0 whose function is half its distance: from z = 1 each
 /// step goes half the remaining way, f = 2^-(k+1) after k steps, exact in
 /// f32. Below ε = 1e-4 first at k = 13: the 14th evaluation hits.

@@ -215,7 +215,8 @@ fn lambert_brdf_values(f: BrdfFn) -> Check {
 /// z/π; over 40,000 samples, E(z) = 2/3, E(x) = E(y) = 0, P(z < 1/2)
 /// = 1/4 (for cos θ/π, P(cos θ < c) = c²), and the azimuth uniform (its
 /// first harmonics average to 0); over 160,000 more, P(z < 0.03) = 0.03²
-/// (the directions reach the rim); and a grid of u spread evenly over
+/// (the directions reach the rim) and P(x² + y² < s) = s for a small cap
+/// about the pole; and a grid of u spread evenly over
 /// the hemisphere (`grid_spread`). The error is the worst
 /// deviation in standard errors (5 passes), or a large number when a
 /// sample is not even a direction on the hemisphere.
@@ -369,22 +370,29 @@ fn cosine_hemisphere_values(f: CosineFn) -> Check {
         }
     }
     let m = n as f64;
-    // And the grazing directions, from 160,000 numbers of their own: for
-    // cos θ/π, P(z < 0.03) = 0.03² (a map that stops short of the rim has
-    // none; 144 expected).
-    let grazing_n = 160_000u64;
-    let grazing = (0..grazing_n)
-        .filter(|&i| {
-            let u = Vec2::new(
-                random(seed ^ 0x9a2e, i, 0, 0),
-                random(seed ^ 0x9a2e, i, 0, 1),
-            );
-            f(u).0.z < 0.03
-        })
-        .count() as f64
-        / grazing_n as f64;
-    let grazing_sd = (0.0009f64 * 0.9991 / grazing_n as f64).sqrt();
-    let grazing_z = (grazing - 0.0009).abs() / grazing_sd;
+    // And the two ends of the hemisphere, from 160,000 numbers of their
+    // own: for cos θ/π, P(z < 0.03) = 0.03² (a map that stops short of the
+    // rim has none; 144 expected), and P(x² + y² < s) = s for the cap
+    // about the pole of s = 2.5·10⁻⁴ (40 expected; a map that sends the
+    // first 10⁻³ of its numbers straight up puts 160 there).
+    let ends_n = 160_000u64;
+    let (mut rim, mut cap) = (0u64, 0u64);
+    for i in 0..ends_n {
+        let u = Vec2::new(
+            random(seed ^ 0x9a2e, i, 0, 0),
+            random(seed ^ 0x9a2e, i, 0, 1),
+        );
+        let w = f(u).0;
+        rim += u64::from(w.z < 0.03);
+        cap += u64::from(w.x * w.x + w.y * w.y < 2.5e-4);
+    }
+    let share = |count: u64, p: f64| {
+        let got = count as f64 / ends_n as f64;
+        let z = (got - p).abs() / (p * (1.0 - p) / ends_n as f64).sqrt();
+        (got, z)
+    };
+    let (grazing, grazing_z) = share(rim, 0.0009);
+    let (polar, polar_z) = share(cap, 2.5e-4);
     // Standard deviations under cos θ/π: x and y have variance 1/4, z has
     // 1/2 − 4/9, the indicator 1/4 · 3/4, each harmonic of a uniform
     // azimuth 1/2.
@@ -405,6 +413,13 @@ fn cosine_hemisphere_values(f: CosineFn) -> Check {
              the directions must reach the rim"
         ),
     );
+    let polar = (
+        polar_z,
+        format!(
+            "P(x² + y² < 0.00025) = {polar:.6}, expected 0.000250 ({polar_z:.1} standard errors \
+             off): the directions about the pole must spread as cos θ / π too"
+        ),
+    );
     let (error, detail) = worst_of(
         stats
             .into_iter()
@@ -415,7 +430,7 @@ fn cosine_hemisphere_values(f: CosineFn) -> Check {
                     format!("{what} = {got:.4}, expected {want:.4} ({z:.1} standard errors off)"),
                 )
             })
-            .chain(std::iter::once(grazing)),
+            .chain([grazing, polar]),
     );
     Check {
         error,
