@@ -534,13 +534,7 @@ fn the_sobol_lanes_are_the_same_bits_on_every_simd_path() {
     use raystep::fast::sobol8::sobol_groups8;
     // Sample indices across the tables' range (every bit of the shuffled
     // index in play), pixels and groups of all sizes.
-    let mut h = 0x2545_f491_4f6c_dd1du64;
-    let mut next = || {
-        h ^= h << 13;
-        h ^= h >> 7;
-        h ^= h << 17;
-        h
-    };
+    let mut next = crate::common::xorshift(0x2545_f491_4f6c_dd1d);
     let mut compared = 0;
     for round in 0..200u64 {
         let sample: [u32; 8] = std::array::from_fn(|_| (next() >> 48) as u32);
@@ -570,13 +564,7 @@ fn the_sobol_lanes_are_the_same_bits_on_every_simd_path() {
 fn numbers_made_only_where_wanted_are_the_same_bits_and_the_rest_zero() {
     use raystep::fast::simd::{independent8_wanted_at, sobol_groups8_wanted_at};
     use raystep::fast::sobol8::{independent8, sobol_groups8};
-    let mut h = 0x0123_4567_89ab_cdefu64;
-    let mut next = || {
-        h ^= h << 13;
-        h ^= h >> 7;
-        h ^= h << 17;
-        h
-    };
+    let mut next = crate::common::xorshift(0x0123_4567_89ab_cdef);
     let mut compared = 0;
     for round in 0..100u64 {
         let sample: [u32; 8] = std::array::from_fn(|_| (next() >> 48) as u32);

@@ -81,13 +81,7 @@ fn every_simd_path_finds_the_lane_loops_hits_on_edges_and_vertices() {
 /// direction, with every level the CPU has.
 #[test]
 fn every_simd_path_finds_the_lane_loops_hits_in_a_soup() {
-    let mut h = 0x9e37_79b9_7f4a_7c15u64;
-    let mut next = || {
-        h ^= h << 13;
-        h ^= h >> 7;
-        h ^= h << 17;
-        (h >> 40) as f32 / (1u64 << 24) as f32
-    };
+    let mut next = common::unit_stream(0x9e37_79b9_7f4a_7c15);
     for (count, scale) in [(3, 1.0), (7, 1e-3), (150, 1.0), (600, 1e4)] {
         let mut point =
             |spread: f32| Vec3::new(next(), next(), next()) * 2.0 * spread - Vec3::splat(spread);
@@ -171,13 +165,8 @@ fn no_leaf_of_the_fast_tree_holds_a_room() {
             .map(|h| h.t)
             .fold(f32::INFINITY, f32::min)
     };
-    let mut h = 0x2545_f491_4f6c_dd1du64;
-    let mut next = || {
-        h ^= h << 13;
-        h ^= h >> 7;
-        h ^= h << 17;
-        (h >> 40) as f32 / (1u64 << 24) as f32 * 2.0 - 1.0
-    };
+    let mut unit = common::unit_stream(0x2545_f491_4f6c_dd1d);
+    let mut next = || unit() * 2.0 - 1.0;
     for _ in 0..2000 {
         let o = Vec3::new(next(), next() * 0.999, next() * 0.999);
         let Some(ray) = Ray::new(o, Vec3::new(next(), next(), next())).ok() else {
@@ -259,13 +248,7 @@ fn camera_rays_eight_at_a_time_find_the_one_ray_hits() {
     // mostly differ in direction signs or permutation: one at a time).
     let scene = Scene::builtin().with_resolution(48, 48).unwrap();
     let camera = Camera::of(&scene);
-    let mut h = 0x9e37_79b9_7f4a_7c15u64;
-    let mut next = || {
-        h ^= h << 13;
-        h ^= h >> 7;
-        h ^= h << 17;
-        (h >> 40) as f32 / (1u64 << 24) as f32
-    };
+    let mut next = common::unit_stream(0x9e37_79b9_7f4a_7c15);
     let mut rays = Vec::new();
     for y in 0..camera.height {
         for x in 0..camera.width {

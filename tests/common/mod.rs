@@ -125,6 +125,24 @@ pub fn mean_and_variance(
     (mean, var)
 }
 
+/// A xorshift64 stream from `seed` (not 0): the tests' cheap, repeatable
+/// source of bits.
+pub fn xorshift(seed: u64) -> impl FnMut() -> u64 {
+    let mut h = seed;
+    move || {
+        h ^= h << 13;
+        h ^= h >> 7;
+        h ^= h << 17;
+        h
+    }
+}
+
+/// [`xorshift`]'s top 24 bits as numbers in [0, 1).
+pub fn unit_stream(seed: u64) -> impl FnMut() -> f32 {
+    let mut bits = xorshift(seed);
+    move || (bits() >> 40) as f32 / (1u64 << 24) as f32
+}
+
 /// The twelve triangles of the box `lo`..`hi`'s six faces (corner i has
 /// bit 0, 1, 2 of i choosing hi's x, y, z), two per face.
 pub fn box_faces(lo: Vec3, hi: Vec3) -> Vec<[Vec3; 3]> {
