@@ -362,13 +362,6 @@ impl Bvh8 {
         &self.tris[l * W..(l + 1) * W]
     }
 
-    /// Whether anything is hit in (0, t_max) ([`occluded`], with the
-    /// plain lane loops).
-    #[inline(always)]
-    pub(super) fn occluded_with(&self, r: &RayData, t_max: f32, stack: &mut [(u32, f32)]) -> bool {
-        occluded(self, r, t_max, stack)
-    }
-
     /// The closest hit of `ray` in (0, t_max) by the plain lane loops of
     /// [`super::lanes`], whatever the tree's level: what the kernels must
     /// find, bit for bit (the tests' reference).
@@ -377,10 +370,11 @@ impl Bvh8 {
         self.closest_with(&RayData::new(ray), t_max, stack)
     }
 
-    /// Whether anything is hit in (0, t_max), by the plain lane loops.
+    /// Whether anything is hit in (0, t_max), by the plain lane loops
+    /// ([`occluded`] over this tree).
     pub fn occluded_by_lane_loops(&self, ray: &Ray, t_max: f32) -> bool {
         let stack = &mut vec![(0, 0.0); self.stack_size()];
-        self.occluded_with(&RayData::new(ray), t_max, stack)
+        occluded(self, &RayData::new(ray), t_max, stack)
     }
 }
 

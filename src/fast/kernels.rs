@@ -59,8 +59,11 @@ pub trait Vector:
     fn le(self, o: Self) -> Self;
     /// `self` and not `m`, bit by bit.
     fn and_not(self, m: Self) -> Self;
-    /// |x| lane by lane.
-    fn abs(self) -> Self;
+    /// |x| lane by lane: the sign bit cleared.
+    #[inline(always)]
+    fn abs(self) -> Self {
+        self.and_not(Self::splat(-0.0))
+    }
     /// Bit i set where lane i's sign bit is (a mask's lane holds).
     fn mask(self) -> u32;
     /// The lanes, in the first `LANES` places of an eight.

@@ -11,7 +11,7 @@ use super::lanes::W;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch3_ray_triangle::triangle::Hit;
 
-/// [`Vector`] for one of `wide`'s types: `$lanes` lanes in `$array`.
+/// [`Vector`] for one of `wide`'s types, of `$lanes` lanes.
 macro_rules! wide_vector {
     ($t:ty, $lanes:literal) => {
         impl Vector for $t {
@@ -53,10 +53,6 @@ macro_rules! wide_vector {
             #[inline(always)]
             fn and_not(self, m: Self) -> Self {
                 self & !m
-            }
-            #[inline(always)]
-            fn abs(self) -> Self {
-                <$t>::abs(self)
             }
             #[inline(always)]
             fn mask(self) -> u32 {

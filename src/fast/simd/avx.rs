@@ -99,10 +99,6 @@ impl Vector for Eight {
         Eight(unsafe { _mm256_andnot_ps(m.0, self.0) })
     }
     #[inline(always)]
-    fn abs(self) -> Eight {
-        Eight::splat(-0.0).and_not_of(self)
-    }
-    #[inline(always)]
     fn mask(self) -> u32 {
         // SAFETY: see the module.
         unsafe { _mm256_movemask_ps(self.0) as u32 }
@@ -142,14 +138,6 @@ impl Vector for Eight {
             _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_EQ_OQ>(masked, m)) as u32 & hits
         };
         31 - equal.leading_zeros() as usize
-    }
-}
-
-impl Eight {
-    /// `o` and not `self`, bit by bit.
-    #[inline(always)]
-    fn and_not_of(self, o: Eight) -> Eight {
-        o.and_not(self)
     }
 }
 

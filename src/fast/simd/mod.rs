@@ -49,7 +49,7 @@ pub fn closest(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
         // SAFETY: as above, for AVX2 and `closest_avx2`'s features.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { closest_avx2(bvh, ray, t_max) },
-        _ => closest_lanes(bvh, ray, t_max),
+        _ => closest_portable(bvh, ray, t_max),
     }
 }
 
@@ -63,7 +63,7 @@ pub fn occluded(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
         // SAFETY: as in `closest`: the level is the tree's.
         #[cfg(target_arch = "x86_64")]
         Level::Avx2 => unsafe { occluded_avx2(bvh, ray, t_max) },
-        _ => occluded_lanes(bvh, ray, t_max),
+        _ => occluded_portable(bvh, ray, t_max),
     }
 }
 
@@ -277,14 +277,14 @@ macro_rules! with_stack {
 }
 
 #[inline(always)]
-fn closest_lanes(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
+fn closest_portable(bvh: &Bvh8, ray: &Ray, t_max: f32) -> Option<Hit> {
     with_stack!(bvh, |stack| super::portable::closest(
         bvh, ray, t_max, stack
     ))
 }
 
 #[inline(always)]
-fn occluded_lanes(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
+fn occluded_portable(bvh: &Bvh8, ray: &Ray, t_max: f32) -> bool {
     with_stack!(bvh, |stack| super::portable::occluded(
         bvh, ray, t_max, stack
     ))
@@ -300,10 +300,10 @@ pub use numbers::{
 
 /// Defines one level's AVX entry points: a query for one ray and the
 /// round loops of `closest_all` and `occluded_all`, all compiled with the
-/// level's target features. They run the traversals of `avx`, which keep
-/// the leaf test in registers and visit the same nodes and leaves in the
-/// same order as `Bvh8::closest_with` and `occluded_with`, so every path
-/// finds the same hit.
+/// level's target features. They run the kernels with AVX's vector type
+/// (`avx`), which keep the leaf test in registers and visit the same nodes
+/// and leaves in the same order as the lane loops of `Bvh8::closest_with`,
+/// so every path finds the same hit.
 macro_rules! level_entries {
     (
         $closest:ident, $occluded:ident, $closest_all:ident, $occluded_all:ident,
