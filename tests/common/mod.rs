@@ -5,12 +5,48 @@ use std::path::{Path, PathBuf};
 
 use glam::Vec3;
 
-/// A fresh empty folder under the system temp dir, unique to this test.
-pub fn temp_dir(name: &str) -> PathBuf {
+/// A fresh empty folder under the system temp dir, unique to this test,
+/// removed with everything in it when the value is dropped: when the test
+/// passes. A failing test leaves it for inspection (its path is in the
+/// panic's output).
+pub fn temp_dir(name: &str) -> TempDir {
     let dir = std::env::temp_dir().join(format!("raystep-test-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
-    dir
+    TempDir(dir)
+}
+
+/// A test's folder from [`temp_dir`]: a path, and its removal.
+#[derive(Debug)]
+pub struct TempDir(PathBuf);
+
+impl std::ops::Deref for TempDir {
+    type Target = PathBuf;
+    fn deref(&self) -> &PathBuf {
+        &self.0
+    }
+}
+
+impl AsRef<Path> for TempDir {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl AsRef<std::ffi::OsStr> for TempDir {
+    fn as_ref(&self) -> &std::ffi::OsStr {
+        self.0.as_os_str()
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        if std::thread::panicking() {
+            eprintln!("kept for inspection: {}", self.0.display());
+        } else {
+            let _ = std::fs::remove_dir_all(&self.0);
+        }
+    }
 }
 
 /// Writes `files` (relative path, contents) into `dir`.

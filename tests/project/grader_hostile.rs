@@ -223,7 +223,7 @@ fn processes_with_marker() -> Vec<String> {
 #[cfg(target_os = "linux")]
 #[test]
 fn hostile_exercises_fail_and_leave_nothing_behind() {
-    let exercises = copy_exercises(&common::temp_dir("hostile-src"));
+    let exercises = copy_exercises(common::temp_dir("hostile-src"));
     for (folder, name, text) in hostile_files() {
         let path = exercises
             .join(folder)
@@ -236,7 +236,8 @@ fn hostile_exercises_fail_and_leave_nothing_behind() {
     }
     let out = common::temp_dir("hostile-out");
     // 11. Links planted where the grader writes, pointing outside.
-    let outside = common::temp_dir("hostile-outside").join("target.txt");
+    let outside_dir = common::temp_dir("hostile-outside");
+    let outside = outside_dir.join("target.txt");
     std::fs::write(&outside, "untouched").unwrap();
     for name in [
         "ch2-rasterize_triangle-student.png",
@@ -358,7 +359,8 @@ fn hostile_exercises_fail_and_leave_nothing_behind() {
 #[test]
 fn the_grader_never_writes_through_a_link() {
     let out = common::temp_dir("hostile-links");
-    let outside = common::temp_dir("hostile-links-outside").join("target.txt");
+    let outside_dir = common::temp_dir("hostile-links-outside");
+    let outside = outside_dir.join("target.txt");
     std::fs::write(&outside, "untouched").unwrap();
     for name in ["results.json", "hints-seen.txt"] {
         std::os::unix::fs::symlink(&outside, out.join(name)).unwrap();

@@ -19,8 +19,8 @@ fn solutions() -> PathBuf {
 }
 
 /// A fresh copy of the stubs with every solution written over it.
-fn solved(name: &str) -> PathBuf {
-    let dir = copy_exercises(&common::temp_dir(name));
+fn solved(name: &str) -> common::TempDir {
+    let dir = copy_exercises(common::temp_dir(name));
     for stub in shipped::STUBS {
         let from = stub.path_in(&solutions());
         std::fs::copy(&from, stub.path_in(&dir))

@@ -5,7 +5,7 @@
 //! compile is reported and leaves the others graded, hints come in tiers,
 //! and `--json` writes Gradescope's results.json.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Output;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
@@ -38,8 +38,9 @@ pub(crate) fn grade(args: &[&str], out: &Path) -> (Output, String, Duration) {
 /// A fresh copy of every chapter's exercise folder under `dir`, as
 /// shipped (from the stubs embedded in the library, never from the files a
 /// student edits under `chapters/`).
-pub(crate) fn copy_exercises(dir: &Path) -> PathBuf {
-    raystep::grading::shipped::write_all(dir).unwrap()
+pub(crate) fn copy_exercises(dir: common::TempDir) -> common::TempDir {
+    raystep::grading::shipped::write_all(&dir).unwrap();
+    dir
 }
 
 /// The line `grade` printed for exercise `id` (`ch3/ray_plane`).
@@ -172,7 +173,7 @@ fn the_grade_command_grades_references_and_rejects_bad_arguments() {
 #[test]
 fn every_shipped_stub_is_not_started_and_gives_no_hint() {
     let dir = common::temp_dir("grade-stubs");
-    let exercises = copy_exercises(&common::temp_dir("grade-stubs-src"));
+    let exercises = copy_exercises(common::temp_dir("grade-stubs-src"));
     let (out, text, _) = grade(&["--exercises", exercises.to_str().unwrap()], &dir);
     assert_eq!(out.status.code(), Some(1), "{text}");
     for ex in grading::all() {
@@ -221,7 +222,7 @@ fn put(dir: &Path, chapter: &str, name: &str, text: &str) {
 #[test]
 fn a_broken_exercise_is_isolated_and_a_loop_that_never_ends_is_stopped() {
     let dir = common::temp_dir("grade-broken");
-    let ex = copy_exercises(&common::temp_dir("grade-broken-src"));
+    let ex = copy_exercises(common::temp_dir("grade-broken-src"));
     // A syntax error in one exercise, a changed signature in another.
     put(
         &ex,
@@ -362,7 +363,7 @@ fn hints_come_in_tiers_and_the_formula_last() {
 fn a_chapter_binary_renders_the_students_capstone() {
     let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
     let dir = common::temp_dir("student-render");
-    let exercises = copy_exercises(&common::temp_dir("student-render-src"));
+    let exercises = copy_exercises(common::temp_dir("student-render-src"));
     let run = || {
         std::process::Command::new(env!("CARGO_BIN_EXE_ch4"))
             .arg("--student")

@@ -621,7 +621,8 @@ fn temporaries_of_killed_runs_are_swept_by_the_next_run() {
 
 #[test]
 fn too_many_samples_are_refused_before_anything_renders() {
-    let dir = common::temp_dir("hostile-samples").join("out");
+    let parent = common::temp_dir("hostile-samples");
+    let dir = parent.join("out");
     let settings = raystep::core::stage::Settings {
         width: Some(16384),
         height: Some(16384),

@@ -22,11 +22,12 @@ use crate::common;
 #[test]
 fn live_student_is_not_started_for_the_stub_and_matches_with_the_reference() {
     let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
-    let exercises = copy_exercises(&common::temp_dir("live-src"));
+    let exercises = copy_exercises(common::temp_dir("live-src"));
+    let live_out = common::temp_dir("live-out");
     let opts = LiveOptions {
         exercises: exercises.clone(),
         place: Place::current().unwrap(),
-        out: common::temp_dir("live-out"),
+        out: live_out.to_path_buf(),
         timeout: Duration::from_secs(60),
     };
     let file = exercises.join("ch1-projection/exercises/draw_edges.rs");
@@ -91,11 +92,12 @@ fn live_warp_tests_the_students_cosine_hemisphere() {
     use raystep::ch5_reflection::warp_test::ROUTINES;
     use raystep::grading::live::live_warp;
     let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
-    let exercises = copy_exercises(&common::temp_dir("warp-src"));
+    let exercises = copy_exercises(common::temp_dir("warp-src"));
+    let warp_out = common::temp_dir("warp-out");
     let opts = LiveOptions {
         exercises: exercises.clone(),
         place: Place::current().unwrap(),
-        out: common::temp_dir("warp-out"),
+        out: warp_out.to_path_buf(),
         timeout: Duration::from_secs(60),
     };
     let id = "ch5/cosine_hemisphere";
@@ -145,8 +147,8 @@ fn live_warp_tests_the_students_cosine_hemisphere() {
 fn a_later_build_never_replaces_an_earlier_builds_binary() {
     let _guard = BUILD.lock().unwrap_or_else(|e| e.into_inner());
     let place = Place::current().unwrap();
-    let stubs = copy_exercises(&common::temp_dir("keep-stubs"));
-    let solved = copy_exercises(&common::temp_dir("keep-solved"));
+    let stubs = copy_exercises(common::temp_dir("keep-stubs"));
+    let solved = copy_exercises(common::temp_dir("keep-solved"));
     let file = "ch1-projection/exercises/draw_edges.rs";
     std::fs::copy(
         common::root().join("tests/project/solutions").join(file),
@@ -183,7 +185,7 @@ fn builds_unused_for_an_hour_are_removed() {
         let file = std::fs::File::options().write(true).open(&used).unwrap();
         file.set_modified(when).unwrap();
     }
-    let stubs = copy_exercises(&common::temp_dir("prune-stubs"));
+    let stubs = copy_exercises(common::temp_dir("prune-stubs"));
     let built = build_exercises_in(&stubs, &place, None).unwrap();
     assert!(built.runner.is_file());
     let kept = |dir: &std::path::Path| kept_runner(dir, place.profile());

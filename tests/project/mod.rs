@@ -30,4 +30,5 @@ mod reports;
 mod sample_limit;
 mod scene_docs;
 mod scene_errors;
+mod temp_dirs;
 mod unit;

@@ -219,7 +219,7 @@ fn a_bad_sheet_is_named_by_file_and_line() {
 
 #[test]
 fn grade_predict_explains_only_what_was_answered() {
-    let dir = copy_exercises(&common::temp_dir("predict-grade"));
+    let dir = copy_exercises(common::temp_dir("predict-grade"));
     let at = predict::SHIPPED.find("[ch6.halve-error]").unwrap();
     let (head, tail) = predict::SHIPPED.split_at(at);
     let sheet = head.to_string() + &tail.replacen("answer = \"\"", "answer = 128", 1);

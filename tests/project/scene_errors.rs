@@ -336,7 +336,8 @@ fn zero_samples_or_preview_width_is_a_usage_error_in_every_chapter() {
         ("ch5", env!("CARGO_BIN_EXE_ch5")),
         ("ch6", env!("CARGO_BIN_EXE_ch6")),
     ];
-    let out = common::temp_dir("zero-flags").join("out");
+    let parent = common::temp_dir("zero-flags");
+    let out = parent.join("out");
     for (name, exe) in chapters {
         for flag in ["--spp", "--preview-width"] {
             let result = std::process::Command::new(exe)

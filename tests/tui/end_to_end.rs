@@ -9,7 +9,7 @@
 //! is a failure (`.ci/run` installs it): one gate, [`shell`].
 
 use crate::common;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
 use std::time::{Duration, Instant};
 
@@ -126,7 +126,7 @@ fn say_skipped(reason: &str) {
 /// named after `name`, once its prompt is up. The one gate of every tmux
 /// test ([`tmux_plan`]): `None` without tmux (the test is skipped, and says
 /// so on the terminal), and a failure without tmux under `CI`.
-pub(super) fn shell(name: &str) -> Option<(Tmux, PathBuf)> {
+pub(super) fn shell(name: &str) -> Option<(Tmux, crate::common::TempDir)> {
     match tmux_plan(tmux_available(), std::env::var_os("CI").is_some()) {
         TmuxPlan::Run => {}
         TmuxPlan::Skip => {

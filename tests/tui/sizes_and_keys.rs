@@ -260,7 +260,7 @@ fn esc_closes_what_is_open_and_never_quits() {
         reference: raystep::core::film::Film::new(8, 4),
     };
     let mut app = update(app, Msg::GradeLoaded(Ok(Some(images))));
-    app.out_dir = dir;
+    app.out_dir = dir.to_path_buf();
     assert!(app.grading.is_some());
     let app = update(app, Msg::Close);
     assert!(app.grading.is_none() && !app.quit);
@@ -298,7 +298,7 @@ fn saves_never_overwrite_and_name_the_estimator_and_spp() {
     // A progressive render's samples are in the name.
     let mut ch6 = ch6_rendered();
     ch6.snapshot.as_mut().unwrap().samples = 2;
-    ch6.out_dir = dir;
+    ch6.out_dir = dir.to_path_buf();
     assert_eq!(ch6.save_stem(), "tui-ch6-cornell-box-image-mis-sobol-2spp");
 }
 
