@@ -59,6 +59,9 @@ pub struct LookKnobs {
     /// `up` itself (normalised) as y, and up × z as x, where |up · z| is
     /// under this.
     pub up_as_y_within: Option<f32>,
+    /// x = the world's X where |up × z| is under this (a guard against a
+    /// degenerate up that also takes a short one for it).
+    pub side_floor: Option<f32>,
 }
 
 /// The solution of look_at, departing as `k` says.
@@ -75,7 +78,11 @@ pub fn look_at(k: LookKnobs, eye: Vec3, target: Vec3, up: Vec3) -> Mat4 {
     let (x, y) = match k.up_as_y_within {
         Some(w) if u.dot(z).abs() < w => (u.cross(z), u),
         _ => {
-            let x = up.cross(z).normalize();
+            let side = up.cross(z);
+            let x = match k.side_floor {
+                Some(floor) if side.length() < floor => Vec3::X,
+                _ => side.normalize(),
+            };
             (x, z.cross(x))
         }
     };
@@ -219,6 +226,10 @@ pub struct RasterKnobs {
     /// exactly on the edge, where the top-left rule decides (the
     /// solution: 0).
     pub relative_slack: f32,
+    /// The edge functions computed at a row's first sample only, and
+    /// stepped from there to each next sample by adding their change per
+    /// pixel (the solution computes them at every sample).
+    pub stepped: bool,
 }
 
 /// The solution of rasterize_triangle (corners not finite refused),
@@ -249,15 +260,24 @@ pub fn rasterize(
     let (a, b, c) = (p0.truncate(), p1.truncate(), p2.truncate());
     let min = a.min(b).min(c).max(Vec2::ZERO);
     let max = a.max(b).max(c).min(Vec2::new(width as f32, height as f32));
+    let edges = [(b, c), (c, a), (a, b)];
     for y in min.y.floor() as u32..max.y.ceil() as u32 {
         let mut inside_run = false;
+        let first = Vec2::new(min.x.floor() + 0.5, y as f32 + 0.5);
+        let mut stepped = edges.map(|(s, t)| edge(s, t, first));
         for x in min.x.floor() as u32..max.x.ceil() as u32 {
             let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
             let e = |s: Vec2, t: Vec2| match k.shoelace {
                 true => s.perp_dot(t) + t.perp_dot(p) + p.perp_dot(s),
                 false => edge(s, t, p),
             };
-            let w = [(b, c), (c, a), (a, b)].map(|(s, t)| (e(s, t), top_left(s, t)));
+            let mut w = edges.map(|(s, t)| (e(s, t), top_left(s, t)));
+            if k.stepped {
+                for (j, (s, t)) in edges.into_iter().enumerate() {
+                    w[j].0 = stepped[j];
+                    stepped[j] += s.y - t.y;
+                }
+            }
             let inside = |&(e, tl): &(f32, bool)| {
                 let on = e.abs() <= k.relative_slack * area;
                 match tl {

@@ -274,7 +274,9 @@ fn look_at_values(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
         }
     }
     // Drawn cameras: scenes from 10⁻⁴ to 10² across, up to 100 times that
-    // from the origin, `up` of any length and at least 17° from the view
+    // from the origin, `up` of any length (10⁻⁶ to 10², so that a guard on
+    // the length of up × view is not taken for the degenerate case it is
+    // not: the contract's up has no length) and at least 17° from the view
     // (a fifth 1° to 8° from it; some 10⁻⁴ to 10^-2.5 rad short of
     // perpendicular to it, where up itself is nearly, not quite, the
     // picture's y).
@@ -289,7 +291,7 @@ fn look_at_values(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
         let mut size = draws.decades(-4.0, 2.0);
         let mut eye = draws.place_for(size, 2.0) + draws.in_cube() * size;
         let mut view = draws.direction();
-        let mut up = draws.direction() * draws.decades(-2.0, 2.0);
+        let mut up = draws.direction() * draws.decades(-6.0, 2.0);
         match (last, draws.count(0, 5)) {
             (Some((e, _, s)), 0 | 1) => (eye, size) = (e, s),
             (Some((_, u, _)), 2) => up = u,
@@ -305,7 +307,7 @@ fn look_at_values(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
             let (s, c) = draws.range(0.0, std::f32::consts::TAU).sin_cos();
             let side = a * c + b * s;
             let (sin, cos) = draws.range(0.02, 0.14).sin_cos();
-            up = (view * cos * draws.sign() + side * sin) * draws.decades(-2.0, 2.0);
+            up = (view * cos * draws.sign() + side * sin) * draws.decades(-6.0, 2.0);
         } else if draws.unit() < 0.3 {
             // Exactly along an axis, up along another (a view straight
             // down z is no special case).
@@ -313,12 +315,12 @@ fn look_at_values(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
             view = Vec3::AXES[axis] * draws.sign();
             up = Vec3::AXES[(axis + 1 + draws.count(0, 1)) % 3]
                 * draws.sign()
-                * draws.decades(-2.0, 2.0);
+                * draws.decades(-6.0, 2.0);
         } else if draws.unit() < 0.15 {
             let (a, b) = view.any_orthonormal_pair();
             let (s, c) = draws.range(0.0, std::f32::consts::TAU).sin_cos();
             let tilt = draws.sign() * draws.decades(-4.0, -2.5);
-            up = ((a * c + b * s) + view * tilt) * draws.decades(-2.0, 2.0);
+            up = ((a * c + b * s) + view * tilt) * draws.decades(-6.0, 2.0);
         }
         let target = eye + view * size * draws.range(0.5, 3.0);
         last = Some((eye, up, size));

@@ -57,59 +57,126 @@ pub(super) fn drawn_coverage(f: Draw) -> Check {
         let mut depth = vec![f32::INFINITY; (W * H) as usize];
         let mut image = vec![UNTOUCHED; (W * H) as usize];
         f(tri, [Vec3::ONE; 3], W, H, &mut depth, &mut image);
-        let c = tri.map(|v| v.truncate().as_dvec2());
-        let area = edge64(c[0], c[1], c[2]);
-        if area == 0.0 {
-            continue;
+        if let Some(wrong) = wrong_sample(&tri, &image, W) {
+            return wrong.failed(&format!("drawn triangle {k}"));
         }
-        for (i, px) in image.iter().enumerate() {
-            let (x, y) = (i as u32 % W, i as u32 / W);
-            let p = DVec2::new(x as f64 + 0.5, y as f64 + 0.5);
-            let sides = [0, 1, 2].map(|e| {
-                let (a, b) = (c[e], c[(e + 1) % 3]);
-                // What rounding in f32 may do to the edge function, from
-                // either end of the edge: a few units in the last place
-                // of its two products (an ulp is at most ε times the
-                // number).
-                let reach = 2.0
-                    * f32::EPSILON as f64
-                    * (b - a).length()
-                    * (p - a).length().max((p - b).length());
-                let e = edge64(a, b, p) * area.signum();
-                (e.abs() > reach).then_some(e > 0.0)
-            });
-            let Some(inside) = sides.iter().try_fold(true, |all, s| s.map(|s| all && s)) else {
-                continue; // within rounding of an edge
-            };
-            let drawn = *px != UNTOUCHED;
-            if drawn != inside {
-                let d = sides_distance(c, p);
-                return failed(
-                    (f64::INFINITY, 0.0),
-                    format!(
-                        "drawn triangle {k}, corners ({}, {}, {}): yours {} the sample ({}, {}) of \
-                         pixel ({x}, {y}), which is {} it, {d:.3e} pixels from its nearest edge",
-                        c[0],
-                        c[1],
-                        c[2],
-                        if drawn { "covers" } else { "does not cover" },
-                        p.x,
-                        p.y,
-                        if inside { "inside" } else { "outside" },
-                    ),
-                    None,
-                    None,
-                );
-            }
+    }
+    // Long rows: an image 4,096 samples wide and two high, and triangles
+    // thousands of pixels across that reach past its left border, with an
+    // edge that passes a sample near the right end at a few times
+    // rounding's reach. An edge function computed at each sample errs by
+    // no more than that reach; one stepped from sample to sample along the
+    // row gathers each step's rounding, thousands of them.
+    let long = draws.count(16, 32);
+    for k in 0..long {
+        draws.next_case();
+        let size = draws.decades(3.5, 4.0);
+        let sample = Vec2::new(
+            (LONG_W - 1 - draws.count(0, 255) as u32) as f32 + 0.5,
+            draws.count(0, 1) as f32 + 0.5,
+        );
+        let along = Vec2::from_angle(draws.range(0.2, std::f32::consts::PI - 0.2));
+        let across = along.perp() * draws.sign();
+        // Rounding's reach there, as a distance: 2 ε times the edge's
+        // length (about 2 size).
+        let reach = 4.0 * f32::EPSILON * size;
+        let on = sample + across * draws.sign() * reach * draws.decades(0.3, 2.5);
+        let at = [
+            on - along * size,
+            on + along * size,
+            on + across * size * draws.range(0.5, 1.0) - Vec2::X * size,
+        ];
+        let tri = at.map(|c| Vec3::new(c.x, c.y, draws.range(1.0, 10.0)));
+        crate::progress(format_args!(
+            "rasterizing a long row's triangle {k}: {}",
+            corners(&tri)
+        ));
+        let n = (LONG_W * LONG_H) as usize;
+        let (mut depth, mut image) = (vec![f32::INFINITY; n], vec![UNTOUCHED; n]);
+        f(tri, [Vec3::ONE; 3], LONG_W, LONG_H, &mut depth, &mut image);
+        if let Some(wrong) = wrong_sample(&tri, &image, LONG_W) {
+            return wrong.failed(&format!(
+                "long-row triangle {k} (an image {LONG_W} x {LONG_H})"
+            ));
         }
     }
     Check {
         error: 0.0,
         tolerance: 0.0,
-        detail: format!("coverage matches on {count} drawn triangles"),
+        detail: format!("coverage matches on {count} drawn triangles and {long} long rows"),
         images: None,
         symptom: None,
     }
+}
+
+/// The long rows' image: 4,096 samples wide, two high.
+const LONG_W: u32 = 4096;
+const LONG_H: u32 = 2;
+
+/// A sample drawn when it is outside, or not drawn when it is inside.
+struct Wrong {
+    c: [DVec2; 3],
+    x: u32,
+    y: u32,
+    p: DVec2,
+    inside: bool,
+}
+
+impl Wrong {
+    fn failed(&self, what: &str) -> Check {
+        let Wrong { c, x, y, p, inside } = self;
+        let d = sides_distance(*c, *p);
+        failed(
+            (f64::INFINITY, 0.0),
+            format!(
+                "{what}, corners ({}, {}, {}): yours {} the sample ({}, {}) of pixel ({x}, {y}), \
+                 which is {} it, {d:.3e} pixels from its nearest edge",
+                c[0],
+                c[1],
+                c[2],
+                if *inside { "does not cover" } else { "covers" },
+                p.x,
+                p.y,
+                if *inside { "inside" } else { "outside" },
+            ),
+            None,
+            None,
+        )
+    }
+}
+
+/// The first sample of `image` (`width` wide) that `tri` was drawn on
+/// though it is outside, or not drawn on though it is inside, each side
+/// decided in f64; samples within rounding's reach of an edge are left out.
+fn wrong_sample(tri: &[Vec3; 3], image: &[Vec3], width: u32) -> Option<Wrong> {
+    let c = tri.map(|v| v.truncate().as_dvec2());
+    let area = edge64(c[0], c[1], c[2]);
+    if area == 0.0 {
+        return None;
+    }
+    for (i, px) in image.iter().enumerate() {
+        let (x, y) = (i as u32 % width, i as u32 / width);
+        let p = DVec2::new(x as f64 + 0.5, y as f64 + 0.5);
+        let sides = [0, 1, 2].map(|e| {
+            let (a, b) = (c[e], c[(e + 1) % 3]);
+            // What rounding in f32 may do to the edge function, from
+            // either end of the edge: a few units in the last place of
+            // its two products (an ulp is at most ε times the number).
+            let reach = 2.0
+                * f32::EPSILON as f64
+                * (b - a).length()
+                * (p - a).length().max((p - b).length());
+            let e = edge64(a, b, p) * area.signum();
+            (e.abs() > reach).then_some(e > 0.0)
+        });
+        let Some(inside) = sides.iter().try_fold(true, |all, s| s.map(|s| all && s)) else {
+            continue; // within rounding of an edge
+        };
+        if (*px != UNTOUCHED) != inside {
+            return Some(Wrong { c, x, y, p, inside });
+        }
+    }
+    None
 }
 
 /// How far p is from the nearest of the triangle's edges (as lines).

@@ -11,8 +11,9 @@
 //! cameras, and by drawing the lecture's tetrahedron through it):
 //! * the eye maps to the origin and the target onto the -z axis;
 //! * the matrix is a rigid motion: unit, perpendicular, right-handed axes;
-//! * `up` (not parallel to the view direction here) points up on the
-//!   picture. The inputs always define a frame (eye != target).
+//! * `up` (of any length, not parallel to the view direction here)
+//!   points up on the picture. The inputs always define a frame
+//!   (eye != target).
 //!
 //! Grade it with: `cargo grade ch1`
 
