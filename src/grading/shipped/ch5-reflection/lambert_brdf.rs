@@ -12,6 +12,8 @@
 //!   integral ∫ f cos θ dω over the hemisphere is ρ, per channel;
 //! * on opposite sides, f = 0; and so when either direction lies in the
 //!   surface's plane (z = 0 or −0): it is on neither side.
+//! * one z may be as small as 10⁻³⁰, the other then no smaller than
+//!   10⁻⁶: the product of the two stays within f32's range.
 //!
 //! Hints: `cargo grade --hint ch5/lambert_brdf`.
 //! Grade it with: `cargo grade ch5`

@@ -6,7 +6,9 @@
 //!
 //! Contract (what the grader checks, on 10,000 evenly spaced u per case):
 //! * the path survives with probability `q` (0 < q ≤ 1), decided by the
-//!   uniform number `u` in [0, 1); a path that dies returns exactly 0;
+//!   uniform number `u` in [0, 1); a path that dies returns exactly 0.
+//!   Which values of u survive is yours to choose, as long as they make
+//!   up the share q of [0, 1) taken as real numbers;
 //! * the fraction of paths that die is 1 − q (within 0.2%);
 //! * the mean of the results is `value` (within 0.2%): a survivor
 //!   carries value / q, however small q is (the grader asks down to
