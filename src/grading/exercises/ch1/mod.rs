@@ -285,13 +285,14 @@ fn look_at_values(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
     // A third of them keep the last camera's eye, or its up: the matrix
     // depends on all three inputs, whichever stayed the same.
     let mut draws = Draws::new(12);
+    let up_length = |d: &mut Draws| d.decades(-6.0, 2.0);
     let mut last: Option<(Vec3, Vec3, f32)> = None;
     for _ in 0..draws.count(50, 200) {
         draws.next_case();
         let mut size = draws.decades(-4.0, 2.0);
         let mut eye = draws.place_for(size, 2.0) + draws.in_cube() * size;
         let mut view = draws.direction();
-        let mut up = draws.direction() * draws.decades(-6.0, 2.0);
+        let mut up = draws.direction() * up_length(&mut draws);
         match (last, draws.count(0, 5)) {
             (Some((e, _, s)), 0 | 1) => (eye, size) = (e, s),
             (Some((_, u, _)), 2) => up = u,
@@ -307,7 +308,7 @@ fn look_at_values(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
             let (s, c) = draws.range(0.0, std::f32::consts::TAU).sin_cos();
             let side = a * c + b * s;
             let (sin, cos) = draws.range(0.02, 0.14).sin_cos();
-            up = (view * cos * draws.sign() + side * sin) * draws.decades(-6.0, 2.0);
+            up = (view * cos * draws.sign() + side * sin) * up_length(&mut draws);
         } else if draws.unit() < 0.3 {
             // Exactly along an axis, up along another (a view straight
             // down z is no special case).
@@ -315,12 +316,12 @@ fn look_at_values(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
             view = Vec3::AXES[axis] * draws.sign();
             up = Vec3::AXES[(axis + 1 + draws.count(0, 1)) % 3]
                 * draws.sign()
-                * draws.decades(-6.0, 2.0);
+                * up_length(&mut draws);
         } else if draws.unit() < 0.15 {
             let (a, b) = view.any_orthonormal_pair();
             let (s, c) = draws.range(0.0, std::f32::consts::TAU).sin_cos();
             let tilt = draws.sign() * draws.decades(-4.0, -2.5);
-            up = ((a * c + b * s) + view * tilt) * draws.decades(-6.0, 2.0);
+            up = ((a * c + b * s) + view * tilt) * up_length(&mut draws);
         }
         let target = eye + view * size * draws.range(0.5, 3.0);
         last = Some((eye, up, size));

@@ -16,6 +16,21 @@ pub(super) const UNTOUCHED: Vec3 = Vec3::splat(-1.0);
 pub(super) const W: u32 = 64;
 pub(super) const H: u32 = 48;
 
+/// `tri` (corner colours `colors`) drawn by `f` alone into fresh buffers
+/// of `width` × `height` (depth ∞, every pixel [`UNTOUCHED`]): the depth
+/// and the image it left.
+pub(super) fn drawn_alone(
+    f: Draw,
+    tri: [Vec3; 3],
+    colors: [Vec3; 3],
+    (width, height): (u32, u32),
+) -> (Vec<f32>, Vec<Vec3>) {
+    let n = (width * height) as usize;
+    let (mut depth, mut image) = (vec![f32::INFINITY; n], vec![UNTOUCHED; n]);
+    f(tri, colors, width, height, &mut depth, &mut image);
+    (depth, image)
+}
+
 /// A clause's result: `error` against `tolerance` (a NaN fails).
 pub(super) fn failed(
     (error, tolerance): (f64, f64),

@@ -8,7 +8,7 @@
 
 use glam::{DVec2, Vec2, Vec3};
 
-use super::common::{corners, edge64, failed, Draw, H, UNTOUCHED, W};
+use super::common::{corners, drawn_alone, edge64, failed, Draw, H, UNTOUCHED, W};
 use crate::exercise::Check;
 use crate::exercises::draws::Draws;
 
@@ -54,9 +54,7 @@ pub(super) fn drawn_coverage(f: Draw) -> Check {
             "rasterizing drawn triangle {k}: {}",
             corners(&tri)
         ));
-        let mut depth = vec![f32::INFINITY; (W * H) as usize];
-        let mut image = vec![UNTOUCHED; (W * H) as usize];
-        f(tri, [Vec3::ONE; 3], W, H, &mut depth, &mut image);
+        let (_, image) = drawn_alone(f, tri, [Vec3::ONE; 3], (W, H));
         if let Some(wrong) = wrong_sample(&tri, &image, W) {
             return wrong.failed(&format!("drawn triangle {k}"));
         }
@@ -91,9 +89,7 @@ pub(super) fn drawn_coverage(f: Draw) -> Check {
             "rasterizing a long row's triangle {k}: {}",
             corners(&tri)
         ));
-        let n = (LONG_W * LONG_H) as usize;
-        let (mut depth, mut image) = (vec![f32::INFINITY; n], vec![UNTOUCHED; n]);
-        f(tri, [Vec3::ONE; 3], LONG_W, LONG_H, &mut depth, &mut image);
+        let (_, image) = drawn_alone(f, tri, [Vec3::ONE; 3], (LONG_W, LONG_H));
         if let Some(wrong) = wrong_sample(&tri, &image, LONG_W) {
             return wrong.failed(&format!(
                 "long-row triangle {k} (an image {LONG_W} x {LONG_H})"

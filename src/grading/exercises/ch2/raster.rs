@@ -6,7 +6,7 @@
 
 use glam::{DVec2, Vec3};
 
-use super::common::{corners, edge64, failed, Draw, H, UNTOUCHED, W};
+use super::common::{corners, drawn_alone, edge64, failed, Draw, H, UNTOUCHED, W};
 use super::model::Model;
 use super::shading::{depth_order, interpolation, scene};
 use super::{DEGENERATE, HALF_PIXEL, OFF_IMAGE, TOP_LEFT, WINDING};
@@ -58,9 +58,7 @@ fn masks(g: Draw, tris: &[[Vec3; 3]], what: &str) -> Vec<Vec<bool>> {
                 "rasterizing {what} triangle {k}: {}",
                 corners(t)
             ));
-            let mut depth = vec![f32::INFINITY; (W * H) as usize];
-            let mut image = vec![UNTOUCHED; (W * H) as usize];
-            g(*t, [Vec3::ONE; 3], W, H, &mut depth, &mut image);
+            let (_, image) = drawn_alone(g, *t, [Vec3::ONE; 3], (W, H));
             image.iter().map(|c| *c != UNTOUCHED).collect()
         })
         .collect()
@@ -351,9 +349,7 @@ fn degenerate(f: RasterFn) -> Check {
             "rasterizing triangle without area {k}: {}",
             corners(tri)
         ));
-        let mut depth = vec![f32::INFINITY; (W * H) as usize];
-        let mut image = vec![UNTOUCHED; (W * H) as usize];
-        f(*tri, [Vec3::ONE; 3], W, H, &mut depth, &mut image);
+        let (depth, image) = drawn_alone(&f, *tri, [Vec3::ONE; 3], (W, H));
         let written = (0..depth.len())
             .filter(|&i| image[i] != UNTOUCHED || depth[i] != f32::INFINITY)
             .count();
@@ -369,9 +365,7 @@ fn degenerate(f: RasterFn) -> Check {
     // A triangle 0.02 pixels across (twice its area 4·10⁻⁴) around the
     // centre of pixel (10, 10): small, but the sample is well inside.
     let tiny = [(10.49, 10.49), (10.51, 10.49), (10.5, 10.51)].map(|(x, y)| Vec3::new(x, y, 2.0));
-    let mut depth = vec![f32::INFINITY; (W * H) as usize];
-    let mut image = vec![UNTOUCHED; (W * H) as usize];
-    f(tiny, [Vec3::ONE; 3], W, H, &mut depth, &mut image);
+    let (depth, image) = drawn_alone(&f, tiny, [Vec3::ONE; 3], (W, H));
     let drawn: Vec<usize> = (0..depth.len())
         .filter(|&i| image[i] != UNTOUCHED || depth[i] != f32::INFINITY)
         .collect();

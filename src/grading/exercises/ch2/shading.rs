@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 
-use super::common::{corners, failed, Draw, H, UNTOUCHED, W};
+use super::common::{corners, drawn_alone, failed, Draw, H, UNTOUCHED, W};
 use super::model::Model;
 use super::RasterFn;
 use super::{AFFINE, COLOUR_ORDER, DEPTH_TEST, DEPTH_TIE, DEPTH_VALUE};
@@ -94,10 +94,7 @@ pub(super) fn interpolation(f: RasterFn) -> Check {
                     "rasterizing slanted triangle {k}: {}",
                     corners(t)
                 ));
-                let mut depth = vec![f32::INFINITY; (W * H) as usize];
-                let mut image = vec![UNTOUCHED; (W * H) as usize];
-                g(*t, *c, W, H, &mut depth, &mut image);
-                (depth, image)
+                drawn_alone(g, *t, *c, (W, H))
             })
             .collect::<Vec<_>>()
     };
