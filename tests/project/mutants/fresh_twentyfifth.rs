@@ -25,7 +25,7 @@ fn fails(what: &str, check: impl Fn() -> Check) {
 }
 
 #[test]
-fn a_short_up_and_a_long_row_fail() {
+fn a_short_up_a_long_row_and_a_long_column_fail() {
     fails(
         "look_at: x = X where |up × z| < 10⁻³, which a short up reaches at any angle",
         || {
@@ -48,6 +48,20 @@ fn a_short_up_and_a_long_row_fail() {
             ch2::check_rasterize_triangle(|v, c, w, h, depth, image| {
                 let k = RasterKnobs {
                     stepped: true,
+                    ..Default::default()
+                };
+                knobs::rasterize(k, v, c, (w, h), depth, image)
+            })
+        },
+    );
+    // Written for the review of this set, before the check had columns:
+    // it passed the long rows.
+    fails(
+        "rasterize_triangle: edge functions carried down from row to row",
+        || {
+            ch2::check_rasterize_triangle(|v, c, w, h, depth, image| {
+                let k = RasterKnobs {
+                    carried_down: true,
                     ..Default::default()
                 };
                 knobs::rasterize(k, v, c, (w, h), depth, image)

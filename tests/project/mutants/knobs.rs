@@ -230,6 +230,11 @@ pub struct RasterKnobs {
     /// stepped from there to each next sample by adding their change per
     /// pixel (the solution computes them at every sample).
     pub stepped: bool,
+    /// The edge functions at the first column carried down from row to
+    /// row by adding their change per row, and each sample's taken from
+    /// its row's start plus the change per pixel times the columns
+    /// between.
+    pub carried_down: bool,
 }
 
 /// The solution of rasterize_triangle (corners not finite refused),
@@ -261,10 +266,16 @@ pub fn rasterize(
     let min = a.min(b).min(c).max(Vec2::ZERO);
     let max = a.max(b).max(c).min(Vec2::new(width as f32, height as f32));
     let edges = [(b, c), (c, a), (a, b)];
+    let corner = Vec2::new(min.x.floor() + 0.5, min.y.floor() + 0.5);
+    let mut column = edges.map(|(s, t)| edge(s, t, corner));
     for y in min.y.floor() as u32..max.y.ceil() as u32 {
         let mut inside_run = false;
         let first = Vec2::new(min.x.floor() + 0.5, y as f32 + 0.5);
         let mut stepped = edges.map(|(s, t)| edge(s, t, first));
+        let row_start = column;
+        for (j, (s, t)) in edges.into_iter().enumerate() {
+            column[j] += t.x - s.x;
+        }
         for x in min.x.floor() as u32..max.x.ceil() as u32 {
             let p = Vec2::new(x as f32 + 0.5, y as f32 + 0.5);
             let e = |s: Vec2, t: Vec2| match k.shoelace {
@@ -276,6 +287,12 @@ pub fn rasterize(
                 for (j, (s, t)) in edges.into_iter().enumerate() {
                     w[j].0 = stepped[j];
                     stepped[j] += s.y - t.y;
+                }
+            }
+            if k.carried_down {
+                let dx = x as f32 - min.x.floor();
+                for (j, (s, t)) in edges.into_iter().enumerate() {
+                    w[j].0 = row_start[j] + (s.y - t.y) * dx;
                 }
             }
             let inside = |&(e, tl): &(f32, bool)| {

@@ -64,7 +64,10 @@ pub(super) fn drawn_coverage(f: Draw) -> Check {
     // edge that passes a sample near the right end at a few times
     // rounding's reach. An edge function computed at each sample errs by
     // no more than that reach; one stepped from sample to sample along the
-    // row gathers each step's rounding, thousands of them.
+    // row gathers each step's rounding, thousands of them. Every other one
+    // is the same kind of triangle with x and y swapped, in an image two
+    // samples wide and 4,096 high: edge functions carried down a column
+    // from row to row gather them the same way.
     let long = draws.count(16, 32);
     for k in 0..long {
         draws.next_case();
@@ -84,28 +87,39 @@ pub(super) fn drawn_coverage(f: Draw) -> Check {
             on + along * size,
             on + across * size * draws.range(0.5, 1.0) - Vec2::X * size,
         ];
-        let tri = at.map(|c| Vec3::new(c.x, c.y, draws.range(1.0, 10.0)));
+        let tall = k % 2 == 1;
+        let tri = at.map(|c| match tall {
+            true => Vec3::new(c.y, c.x, draws.range(1.0, 10.0)),
+            false => Vec3::new(c.x, c.y, draws.range(1.0, 10.0)),
+        });
+        let (width, height, what) = match tall {
+            true => (LONG_H, LONG_W, "column"),
+            false => (LONG_W, LONG_H, "row"),
+        };
         crate::progress(format_args!(
-            "rasterizing a long row's triangle {k}: {}",
+            "rasterizing a long {what}'s triangle {k}: {}",
             corners(&tri)
         ));
-        let (_, image) = drawn_alone(f, tri, [Vec3::ONE; 3], (LONG_W, LONG_H));
-        if let Some(wrong) = wrong_sample(&tri, &image, LONG_W) {
+        let (_, image) = drawn_alone(f, tri, [Vec3::ONE; 3], (width, height));
+        if let Some(wrong) = wrong_sample(&tri, &image, width) {
             return wrong.failed(&format!(
-                "long-row triangle {k} (an image {LONG_W} x {LONG_H})"
+                "long-{what} triangle {k} (an image {width} x {height})"
             ));
         }
     }
     Check {
         error: 0.0,
         tolerance: 0.0,
-        detail: format!("coverage matches on {count} drawn triangles and {long} long rows"),
+        detail: format!(
+            "coverage matches on {count} drawn triangles and {long} long rows and columns"
+        ),
         images: None,
         symptom: None,
     }
 }
 
-/// The long rows' image: 4,096 samples wide, two high.
+/// The long rows' image: 4,096 samples wide, two high (the columns'
+/// turned a quarter).
 const LONG_W: u32 = 4096;
 const LONG_H: u32 = 2;
 
