@@ -15,7 +15,8 @@
 //!   E[x] = E[y] = 0, E[z] = 2/3 and P(z < 1/2) = 1/4, each within 5
 //!   standard errors; over 160,000 more, P(z < 0.03) = 0.03² and, about
 //!   the pole, P(x² + y² < s) = s for s = 2.5·10⁻⁴, each within 5
-//!   standard errors; and from a 256 × 256 grid of u, z² and the azimuth
+//!   standard errors; and from a 256 × 256 grid of u (the cells'
+//!   centres, u = ((i + ½)/256, (j + ½)/256)), z² and the azimuth
 //!   over 2π spread evenly over [0, 1] (both are uniform under cos θ / π;
 //!   the share below any t within 0.02 of t, and the grid's averages of
 //!   cos kφ and sin kφ for k = 1 to 8, of z² and of z⁴ within 10⁻³ of

@@ -8,7 +8,10 @@
 //! normal there. The origin is outside every shape (f(origin) > 0).
 //!
 //! Contract (what the grader checks):
-//! * March from t = 0, stepping by the value of f itself.
+//! * March from t = 0, stepping by the value of f itself. (`March` also
+//!   has a `step_factor`, for the library's distance functions that
+//!   overestimate; it is 1 in every march the grader passes, and this
+//!   scene's functions do not overestimate.)
 //! * A hit is the first point p the march reaches with
 //!   |f(p)| < `march.epsilon_at(p)`: the ε scaled to p's distance from the
 //!   world's origin (far away, a point cannot come closer to a surface
