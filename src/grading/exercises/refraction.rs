@@ -9,6 +9,7 @@ use super::worst;
 use crate::ch5_reflection::material::dielectric::{fresnel_dielectric, refract_local};
 use crate::ch5_reflection::material::Frame;
 use crate::exercise::{Check, Symptom};
+use crate::exercises::stateless::{probes, vec3_at};
 use crate::exercises::{stateless, AbsMax};
 
 /// The candidate: (d, n, η outside, η inside) to (t, F), `None` under
@@ -164,7 +165,44 @@ fn at_cos(n: Vec3, c: f64, a: Vec3) -> Vec3 {
 /// indices from 1 to 2.5 (equal among them); see the stub's contract.
 /// Then, asked again after other questions, the same answers ([`stateless`]).
 pub fn check_refraction(f: RefractFn) -> Check {
-    stateless::unless_changed(refraction_values(f), || stateless::probes::refraction(f))
+    stateless::unless_changed(refraction_values(f), || probe(f))
+}
+
+/// refract(d, n, η outside, η inside), the directions taken whole; half
+/// the questions at grazing incidence (cos θ from 10⁻³ to 3·10⁻², where
+/// the reflectance changes fastest). A twin turns d or n a little (its
+/// numbers are moved, then it is made unit again); the indices stay (they
+/// cannot move towards zero: 1 is their least). Questions outside the
+/// contract's domain after a move (|d·n| below 10⁻⁵) and those where f32
+/// rounding may decide between refraction and total reflection (the
+/// exact sin²θ_t within 5·10⁻² of 1) are not asked.
+fn probe(f: RefractFn) -> Option<String> {
+    let mut k = 0;
+    let q = probes::draw(108, &[0..3, 3..6], |d| {
+        k += 1;
+        let n = d.direction();
+        let dir = match k % 2 {
+            0 => d.direction(),
+            _ => {
+                let cos = d.sign() * d.decades(-3.0, -1.5);
+                let side = (d.direction() - n * d.direction().dot(n))
+                    .normalize_or(n.any_orthonormal_vector());
+                (side * (1.0 - cos * cos).sqrt() + n * cos).normalize()
+            }
+        };
+        let mut v = probes::cat(&[dir, n]);
+        v.extend([d.range(1.0, 2.5) as f64, d.range(1.0, 2.5) as f64]);
+        v
+    });
+    let args = |n: &[f64]| {
+        let (d, normal) = (vec3_at(n, 0).normalize(), vec3_at(n, 3).normalize());
+        let (eo, ei) = (n[6] as f32, n[7] as f32);
+        let asked = d.dot(normal).abs() >= 1e-5 && (exact(d, normal, eo, ei).0 - 1.0).abs() > 5e-2;
+        asked.then_some((d, normal, eo, ei))
+    };
+    let ask = |n: &[f64]| args(n).map(|(d, normal, eo, ei)| f(d, normal, eo, ei));
+    let right = |n: &[f64]| args(n).map(|(d, normal, eo, ei)| reference_refract(d, normal, eo, ei));
+    probes::both(&q, (&[0..3, 3..6], &[]), 208, ask, right)
 }
 
 /// [`check_refraction`]'s checks of the values.
@@ -258,6 +296,33 @@ fn refraction_values(f: RefractFn) -> Check {
         symptom = drawn_symptom;
     }
     fold_drawn(&mut error, &mut detail, drawn);
+    // Sweeps at grazing incidence from outside, where F changes fastest
+    // (by about 10⁻³ when cos θ moves by 2.5·10⁻⁴): 48 directions one
+    // after another, cos θ from a drawn c₀ (10⁻³ to 0.05) up in steps of
+    // 0.2 % of it, the plane of incidence kept. Each answer is its own:
+    // one kept from a near question (a table keyed on a rounded cosine)
+    // is off by more than the tolerance.
+    let sweeps = worst_drawn((0..draws.count(3, 5)).flat_map(|_| {
+        draws.next_case();
+        let n = draws.direction();
+        let (eo, ei) = (draws.range(1.0, 1.6), draws.range(1.3, 2.5));
+        let (c0, a) = (draws.decades(-3.0, -1.3) as f64, draws.direction());
+        let sweep: Vec<(f64, String)> = (0..48)
+            .map(|k| {
+                let d = at_cos(n, -c0 * (1.0 + 2e-3 * k as f64), a);
+                let (e, what, s) = case(f, d, n, eo, ei);
+                if e > TOL {
+                    drawn_symptom = drawn_symptom.or(s);
+                }
+                (e, format!("{what} (a grazing sweep, direction {k} of 48)"))
+            })
+            .collect();
+        sweep
+    }));
+    if sweeps.0 > error {
+        symptom = drawn_symptom;
+    }
+    fold_drawn(&mut error, &mut detail, sweeps);
     Check {
         error,
         tolerance: TOL,

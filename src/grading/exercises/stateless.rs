@@ -88,27 +88,39 @@ pub fn changed_answer<R: Debug>(q: &Questions, ask: impl Fn(&[f64]) -> R) -> Opt
             show(after)
         )
     };
-    for (k, case) in q.cases.iter().enumerate() {
-        let (other, unrelated) = (&q.cases[(k + 1) % n], &q.cases[(k + 2) % n]);
-        for g in &q.groups {
-            let mut decoy = case.clone();
-            decoy[g.clone()].copy_from_slice(&other[g.clone()]);
-            if decoy == *case {
-                continue;
-            }
-            ask(unrelated);
-            let cold = format!("{:?}", ask(&decoy));
-            let again = format!("{:?}", ask(case));
-            if again != first[k] {
-                return Some(changed(case, &first[k], &again, &decoy));
-            }
-            let warm = format!("{:?}", ask(&decoy));
-            if warm != cold {
-                return Some(changed(&decoy, &cold, &warm, case));
-            }
+    for (k, decoy) in decoys(q) {
+        let (case, unrelated) = (&q.cases[k], &q.cases[(k + 2) % n]);
+        ask(unrelated);
+        let cold = format!("{:?}", ask(&decoy));
+        let again = format!("{:?}", ask(case));
+        if again != first[k] {
+            return Some(changed(case, &first[k], &again, &decoy));
+        }
+        let warm = format!("{:?}", ask(&decoy));
+        if warm != cold {
+            return Some(changed(&decoy, &cold, &warm, case));
         }
     }
     None
+}
+
+/// Each question's decoys, with the question's index: the question with
+/// one group of its numbers taken from the next question (each group in
+/// turn; none equal to its question).
+pub fn decoys(q: &Questions) -> Vec<(usize, Vec<f64>)> {
+    let n = q.cases.len();
+    let mut out = Vec::new();
+    for (k, case) in q.cases.iter().enumerate() {
+        let other = &q.cases[(k + 1) % n];
+        for g in &q.groups {
+            let mut decoy = case.clone();
+            decoy[g.clone()].copy_from_slice(&other[g.clone()]);
+            if decoy != *case {
+                out.push((k, decoy));
+            }
+        }
+    }
+    out
 }
 
 /// `check`, failed with the probe's finding if it passed and an answer

@@ -41,12 +41,8 @@ pub fn check_draw_edges(f: EdgeFn) -> Check {
             ..clauses
         };
     }
-    let camera = origin_camera();
     stateless::unless_changed(railroad(f), || {
-        stateless::probes::draw_edges(
-            |a, b, near| f(&camera, a, b, near),
-            |a, b, near| reference_edge(&camera, a, b, near),
-        )
+        stateless::probes::draw_edges(f, reference_edge)
     })
 }
 

@@ -13,6 +13,7 @@ use crate::exercises::{stateless, worse};
 mod clauses;
 mod contract;
 mod contract_symptoms;
+mod eyes;
 mod gradient;
 mod probe;
 mod scene;
@@ -21,6 +22,7 @@ pub use contract::{
     Case, Clause, Probe, BUDGET_OFF_BY_ONE, FIXED_EPSILON, IGNORES_MAX_DISTANCE, INSIDE_HIT,
     NOT_FACING, NOT_UNIT, NO_BUDGET, ZERO_GRADIENT,
 };
+use eyes::{eye_rays, sphere_hit};
 pub use gradient::check_gradient_normal;
 pub use scene::{check_trace_scene, contract_failure, reference_trace_ray, TraceRayFn};
 
@@ -304,16 +306,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         let dir = if draws.unit() < 0.2 { -towards } else { towards };
         let eps = r * 1e-4;
         let sdf = move |p: Vec3| (p - centre).length() - r;
-        // The true hit, in f64.
-        let (o, d, c) = (origin.as_dvec3(), dir.as_dvec3(), centre.as_dvec3());
-        let oc = o - c;
-        let b = oc.dot(d);
-        let disc = b * b - (oc.length_squared() - (r as f64).powi(2));
-        let want = (disc > 0.0 && -b - disc.sqrt() > 0.0).then(|| {
-            let t = -b - disc.sqrt();
-            let cos = ((o + d * t - c).normalize().dot(-d)).max(1e-3);
-            (t, 2.0 * eps as f64 / cos)
-        });
+        let want = sphere_hit(origin, dir, centre, r, eps);
         let max_distance = match short {
             false => 200.0 * r,
             true => 1.5 * ((origin - centre).length() + r),
@@ -333,6 +326,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
         )
     }));
     fold_drawn(&mut error, &mut detail, drawn);
+    fold_drawn(&mut error, &mut detail, eye_rays(f));
     // Any ε > 0 holds, however small: with ε = 10⁻³⁰ (whose square is 0
     // in f32) the first step from 5 away lands exactly on the unit sphere,
     // where f is 0.

@@ -260,10 +260,17 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
         })
     });
     // A survivor carries value / q however small q is (10⁻⁸, 10⁻⁴⁰,
-    // 10⁻²⁰⁰): asked at u = 0, q / 2, 1 − q / 2 and the largest u below
+    // 10⁻²⁰⁰, and eight drawn from 10⁻³⁰⁰ to 10⁻³⁰, most of them below
+    // what f32 holds, so that a q rounded to f32 shares its 1/q with
+    // others): asked at u = 0, q / 2, 1 − q / 2 and the largest u below
     // 1, whatever comes back that is not 0 must be value / q. (Which u
     // survive is the solution's choice; no u in f64 lies in the top 10⁻⁴⁰.)
-    let tiny = [(3.0, 1e-8), (-0.5, 1e-40), (2.0, 1e-200)];
+    let mut tiny = vec![(3.0, 1e-8), (-0.5, 1e-40), (2.0, 1e-200)];
+    tiny.extend((0..8).map(|_| {
+        draws.next_case();
+        let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
+        (value, 10f64.powf(-30.0 - 270.0 * draws.unit() as f64))
+    }));
     let carried = tiny.into_iter().find_map(|(v, q): (f64, f64)| {
         let top = 1.0f64.next_down();
         let us = [0.0, q / 2.0, (1.0 - q / 2.0).min(top), top];
@@ -272,8 +279,8 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
             let right = got == 0.0 || ((got - v / q) / (v / q)).abs() <= 2e-3;
             (!right).then(|| {
                 format!(
-                    "value {v}, q {q}, u {u}: returned {got}, expected {} if the path survives \
-                     (value / q), or 0",
+                    "value {v:e}, q {q:e}, u {u}: returned {got:e}, expected {:e} if the path \
+                     survives (value / q), or 0",
                     v / q
                 )
             })

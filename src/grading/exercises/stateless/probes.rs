@@ -1,14 +1,15 @@
 //! Each exercise's probe: its questions drawn in its domain (the numbers
 //! of its arguments in order), and how a question is asked, by the
 //! student's function and by the reference. Each asks its questions
-//! again after decoys ([`changed_answer`]), then beside their twins
+//! again after decoys ([`changed_answer`]), then each decoy right after
+//! its question ([`same_for_decoy`]), then beside their twins
 //! ([`same_for_near`]): which arguments a twin moves (one at a time) and
 //! which numbers are lengths.
-//! Four have no twins, so no reference either: the statistical exercises
+//! Three have no twins, so no reference either: the statistical exercises
 //! (the cosine map, roulette), whose right answers may differ from the
-//! reference's at every point, and barycentric_inside and refraction,
-//! whose points must stay in the triangle's plane and whose indices from
-//! 1 to 2.5 cannot be moved towards zero.
+//! reference's at every point, and barycentric_inside, whose points must
+//! stay in the triangle's plane. Refraction's probe is beside its check
+//! (`refraction.rs`), with the exact answer it needs.
 
 // (`&[3..6]` is a list of the ranges taken whole, with one in it.)
 #![allow(clippy::single_range_in_vec_init)]
@@ -16,10 +17,12 @@
 use std::fmt::Debug;
 use std::ops::Range;
 
-use glam::{Vec2, Vec3};
+use glam::{DVec3, Vec2, Vec3};
 
-use super::super::twins::{same_for_near, Twins};
-use super::{changed_answer, nums2, nums3, vec2_at, vec3_at, Questions};
+use crate::ch1_projection::camera::{Camera, CameraDesc};
+
+use super::super::twins::{same_for_decoy, same_for_near, Twins};
+use super::{changed_answer, decoys, nums2, nums3, vec2_at, vec3_at, Questions};
 use crate::exercises::draws::Draws;
 
 /// How many questions a probe draws.
@@ -27,7 +30,7 @@ const COUNT: usize = 24;
 
 /// [`changed_answer`], then [`same_for_near`] with the twins' numbers
 /// (nudged, lengths) and salt.
-fn both<R: Debug>(
+pub(crate) fn both<R: Debug>(
     q: &Questions,
     (nudged, lengths): (&[Range<usize>], &[Range<usize>]),
     salt: u64,
@@ -55,14 +58,16 @@ fn balanced<R: Debug>(
         balanced,
         lengths,
     };
-    changed_answer(q, &ask).or_else(|| same_for_near(&q.cases, &twins, salt, &ask, &right))
+    changed_answer(q, &ask)
+        .or_else(|| same_for_decoy(&q.cases, &decoys(q), &twins, salt + 500, &ask, &right))
+        .or_else(|| same_for_near(&q.cases, &twins, salt, &ask, &right))
 }
 
 /// Every pair of three arguments, and of four.
 const PAIRS_OF_3: [(usize, usize); 3] = [(0, 1), (0, 2), (1, 2)];
 const PAIRS_OF_4: [(usize, usize); 6] = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
 
-fn draw(
+pub(crate) fn draw(
     salt: u64,
     whole: &[std::ops::Range<usize>],
     mut one: impl FnMut(&mut Draws) -> Vec<f64>,
@@ -80,7 +85,7 @@ fn point(d: &mut Draws) -> Vec3 {
 }
 
 /// The numbers of several vectors, one after another.
-fn cat(vs: &[Vec3]) -> Vec<f64> {
+pub(crate) fn cat(vs: &[Vec3]) -> Vec<f64> {
     vs.iter().flat_map(|v| nums3(*v)).collect()
 }
 
@@ -106,21 +111,43 @@ pub fn look_at<R: Debug>(
     balanced(&q, (&[0..3, 3..6], &[(0, 1)], &[0..6]), 192, ask, right)
 }
 
-/// draw_edges(camera, a, b, near) with one camera.
+/// draw_edges(camera, a, b, near), the camera (its eye and target)
+/// taken whole: a memo keyed on the world points alone answers another
+/// camera's question with the first camera's raster points.
 pub fn draw_edges<R: Debug>(
-    f: impl Fn(Vec3, Vec3, f32) -> R,
-    reference: impl Fn(Vec3, Vec3, f32) -> R,
+    f: impl Fn(&Camera, Vec3, Vec3, f32) -> R,
+    reference: impl Fn(&Camera, Vec3, Vec3, f32) -> R,
 ) -> Option<String> {
-    let q = draw(109, &[], |d| {
-        let mut v = cat(&[point(d), point(d)]);
+    let q = draw(109, &[0..6], |d| {
+        let eye = point(d);
+        // Never straight up or down (up is +y).
+        let ahead = d.direction();
+        let ahead = match ahead.y.abs() > 0.9 {
+            true => Vec3::new(ahead.x + 0.5, 0.0, ahead.z).normalize(),
+            false => ahead,
+        };
+        let mut v = cat(&[eye, eye + ahead * d.range(1.0, 5.0), point(d), point(d)]);
         v.push(d.range(0.01, 2.0) as f64);
         v
     });
-    let ask = |n: &[f64]| f(vec3_at(n, 0), vec3_at(n, 3), n[6] as f32);
-    let right = |n: &[f64]| reference(vec3_at(n, 0), vec3_at(n, 3), n[6] as f32);
+    let camera = |n: &[f64]| {
+        Camera::new(CameraDesc {
+            eye: vec3_at(n, 0).as_dvec3(),
+            target: vec3_at(n, 3).as_dvec3(),
+            up: DVec3::Y,
+            fov_degrees: 70.0,
+            width: 320,
+            height: 200,
+        })
+        .ok()
+    };
+    // (A camera that cannot be made, which the draws avoid, asks nothing.)
+    let ask = |n: &[f64]| camera(n).map(|c| f(&c, vec3_at(n, 6), vec3_at(n, 9), n[12] as f32));
+    let right =
+        |n: &[f64]| camera(n).map(|c| reference(&c, vec3_at(n, 6), vec3_at(n, 9), n[12] as f32));
     balanced(
         &q,
-        (&[0..3, 3..6, 6..7], &[(0, 1)], &[0..7]),
+        (&[6..9, 9..12, 12..13], &[(0, 1)], &[0..13]),
         209,
         ask,
         right,
@@ -395,16 +422,5 @@ pub fn russian_roulette<R: Debug>(f: impl Fn(f64, f64, f64) -> R) -> Option<Stri
         ]
     });
     let ask = |n: &[f64]| f(n[0], n[1], n[2]);
-    changed_answer(&q, ask)
-}
-
-/// refract(d, n, η outside, η inside), the directions taken whole.
-pub fn refraction<R: Debug>(f: impl Fn(Vec3, Vec3, f32, f32) -> R) -> Option<String> {
-    let q = draw(108, &[0..3, 3..6], |d| {
-        let mut v = cat(&[d.direction(), d.direction()]);
-        v.extend([d.range(1.0, 2.5) as f64, d.range(1.0, 2.5) as f64]);
-        v
-    });
-    let ask = |n: &[f64]| f(vec3_at(n, 0), vec3_at(n, 3), n[6] as f32, n[7] as f32);
     changed_answer(&q, ask)
 }

@@ -1,0 +1,104 @@
+//! Sphere tracing's drawn rays: a sphere's exact first hit, and rays
+//! from one eye one after another, as a camera shoots them.
+
+use glam::Vec3;
+
+use super::TraceFn;
+use crate::exercises::draws::{worst_drawn, Draws};
+use crate::exercises::worse;
+
+/// The first hit of the ray from `o` along `d` on the sphere (`c`, `r`),
+/// worked out in f64, and how far a march with tolerance `eps` may stop
+/// from it (2ε / cos θ, θ the angle of incidence, cos θ taken no smaller
+/// than 10⁻³).
+pub(super) fn sphere_hit(o: Vec3, d: Vec3, c: Vec3, r: f32, eps: f32) -> Option<(f64, f64)> {
+    let (o, d, c) = (o.as_dvec3(), d.as_dvec3(), c.as_dvec3());
+    let oc = o - c;
+    let b = oc.dot(d);
+    let disc = b * b - (oc.length_squared() - (r as f64).powi(2));
+    (disc > 0.0 && -b - disc.sqrt() > 0.0).then(|| {
+        let t = -b - disc.sqrt();
+        let cos = ((o + d * t - c).normalize().dot(-d)).max(1e-3);
+        (t, 2.0 * eps as f64 / cos)
+    })
+}
+
+/// Rays from one eye, one after another, as a camera shoots them: a
+/// large sphere ahead and a small one much nearer, the rays going to
+/// either in turn (and some past both). Each march starts at t = 0,
+/// whatever the rays before it found: after a far hit, the near sphere
+/// lies well within half its distance. (ε is a ten-thousandth of the
+/// large one's radius, and the eye within ten radii of the origin, so
+/// that f32's rounding of the points stays far below ε.)
+pub(super) fn eye_rays(f: TraceFn) -> (f64, String) {
+    let mut draws = Draws::new(343);
+    let scenes = (0..draws.count(3, 6)).map(|_| {
+        draws.next_case();
+        let r_far = draws.decades(-2.0, 2.0);
+        let eye = draws.place_for(r_far, 1.0);
+        let ahead = draws.direction();
+        let far = eye + ahead * r_far * draws.range(3.0, 10.0);
+        let d_far = (far - eye).length();
+        let r_near = r_far * draws.range(0.05, 0.2);
+        // The near one beside the line to the far one, a tenth to a
+        // quarter of the way there.
+        let side = ahead.any_orthonormal_vector();
+        let towards_near = (ahead + side * draws.range(0.6, 1.2)).normalize();
+        let near = eye + towards_near * d_far * draws.range(0.1, 0.25);
+        let rays: Vec<(Vec3, f32)> = (0..12)
+            .map(|k| {
+                let (c, r) = match k % 2 {
+                    0 => (far, r_far),
+                    _ => (near, r_near),
+                };
+                // A point on the sphere's half facing the eye, or past it.
+                let aim = c + draws.in_cube() * r * 0.7 - eye;
+                let past = draws.unit() < 0.15;
+                let dir = match past {
+                    true => (aim + side * r * 4.0).normalize(),
+                    false => aim.normalize(),
+                };
+                (dir, r)
+            })
+            .collect();
+        (eye, (far, r_far), (near, r_near), rays)
+    });
+    let cases: Vec<_> = scenes.collect();
+    worst_drawn(
+        cases
+            .into_iter()
+            .flat_map(|(eye, (far, r_far), (near, r_near), rays)| {
+                let sdf =
+                    move |p: Vec3| ((p - far).length() - r_far).min((p - near).length() - r_near);
+                rays.into_iter().map(move |(dir, r)| {
+                    let eps = r_far * 1e-4;
+                    let hits = [
+                        sphere_hit(eye, dir, far, r_far, eps),
+                        sphere_hit(eye, dir, near, r_near, eps),
+                    ];
+                    let want = hits
+                        .into_iter()
+                        .flatten()
+                        .min_by(|a, b| a.0.total_cmp(&b.0));
+                    let max_distance = 30.0 * r_far.max((far - eye).length());
+                    let got = f(&sdf, eye, dir, eps, 1 << 14, max_distance);
+                    let err = match (got, want) {
+                        (Some(g), Some((w, slack))) => {
+                            worse((g as f64 - w).abs() - slack, 0.0) / r as f64
+                        }
+                        (None, None) => 0.0,
+                        _ => f64::INFINITY,
+                    };
+                    (
+                        err,
+                        format!(
+                    "one eye at {eye}, spheres of radius {r_far} at {far} and {r_near} at {near} \
+                     (one after another, each ray from t = 0), ray along {dir} (ε = {eps}, \
+                     max_distance = {max_distance}): got {got:?}, expected {:?}",
+                    want.map(|w| w.0)
+                ),
+                    )
+                })
+            }),
+    )
+}
