@@ -10,12 +10,13 @@
 //!
 //! Contract (what the grader checks):
 //! * `path` lists one path's contributions in the order it gathered them.
-//!   Each has a `vertex` (0: the first surface the camera ray reaches, 1:
-//!   the surface the next ray reaches, …), `how` it was gathered there
-//!   (`How::Found`: emission that the ray arriving at that vertex found,
-//!   the surface's own, or the sky's where the ray left the scene;
-//!   `How::LightSample`: next-event estimation at that vertex), its
-//!   `value` before MIS, and its MIS `weight`;
+//!   Each `Gathered` has four public fields: `vertex: u32` (0: the first
+//!   surface the camera ray reaches, 1: the surface the next ray
+//!   reaches, …), `how: How`, how it was gathered there (`How::Found`:
+//!   emission that the ray arriving at that vertex found, the surface's
+//!   own, or the sky's where the ray left the scene; `How::LightSample`:
+//!   next-event estimation at that vertex), `value: Vec3`, what it brings
+//!   before MIS, and `weight: f32`, its MIS weight;
 //! * return the layer slots: each contribution adds value · weight to the
 //!   slot of its bounce count: `SLOT_EMITTED` for emitters the camera
 //!   sees directly, slot k + 1 for bounce count k up to `LAYERS_SHOWN`,
