@@ -115,6 +115,15 @@ impl Draws {
         Vec3::new(r * phi.cos(), r * phi.sin(), z)
     }
 
+    /// A colour's channels kept (1) or turned off (0), each off with
+    /// probability `p`: a pure green light, a surface black in red. Drawn
+    /// from a stream of its own, the other draws of a case stay as they
+    /// were.
+    pub fn channels_off(&mut self, p: f32) -> Vec3 {
+        let on = Vec3::new(self.unit(), self.unit(), self.unit()).cmpge(Vec3::splat(p));
+        Vec3::select(on, Vec3::ONE, Vec3::ZERO)
+    }
+
     /// Where a drawn object of size `scale` sits: the origin in a quarter
     /// of the cases, else up to `10^decades · scale` away (far enough that
     /// a solution which loses precision there fails, near enough that the

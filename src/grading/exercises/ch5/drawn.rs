@@ -26,6 +26,9 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
     // A tenth of the albedos 10⁻⁶ to 10⁻³ times as bright (dark is not
     // black), from a stream of their own.
     let mut dark = Draws::new(254);
+    // A light or a surface with a channel off (a pure green light, a
+    // surface black in red): each channel of each off a fifth of the time.
+    let mut channels = Draws::new(454);
     // A seventh at scales from 10⁻¹⁵ to 10⁻⁴ or 10⁴ to 10¹⁵ (the answer
     // does not depend on the scene's scale; d⁴ or d³ leaves f32's range
     // there), from a stream of their own.
@@ -69,6 +72,8 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
         if dark.unit() < 0.1 {
             rho *= dark.decades(-6.0, -3.0);
         }
+        let le = le * channels.channels_off(0.2);
+        rho *= channels.channels_off(0.2);
         let mut blocked = draws.unit() < 0.2;
         // A quarter keep the last light point, seen from another p, and
         // blocked or not afresh: visibility is a question about p too.

@@ -58,6 +58,9 @@ fn point_light_values(f: PointFn) -> Check {
     // origin, where n · light and n · p round alike); E worked out in f64.
     let mut draws = Draws::new(52);
     let mut off = Draws::new(152);
+    // Lights with a channel off (pure green, no red), a fifth of the
+    // channels.
+    let mut channels = Draws::new(352);
     // From streams of their own: a tenth of the lights 10⁹ to 10¹⁵ away
     // (r³ past f32's range there, r² not) and a tenth 10⁻⁶ to 10⁻³ away,
     // and a tenth of the others faint, 10⁻¹² to 10⁻⁶ of the drawn
@@ -130,7 +133,7 @@ fn point_light_values(f: PointFn) -> Check {
         let intensity = if off.unit() < 0.05 {
             Vec3::ZERO
         } else {
-            intensity
+            intensity * channels.channels_off(0.2)
         };
         let intensity = match !far && faint.unit() < 0.1 {
             true => intensity * faint.decades(-12.0, -6.0),

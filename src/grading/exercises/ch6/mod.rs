@@ -286,7 +286,26 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
             })
         })
     });
-    if let Some(detail) = always.or(carried).filter(|_| error <= 2e-3) {
+    // And a small q is not zero: down to 10⁻¹⁵ some u survives, and the
+    // usual choices (u below q, or u at or above 1 − q) have a survivor at
+    // u = 0, q / 2 or 1 − q / 2 (the stub says the grader looks there).
+    // Below 10⁻¹⁵, where 1 − q rounds to 1, none need.
+    let mut small = vec![(1.5, 1e-5), (-2.0, 1e-9), (0.5, 1e-14)];
+    small.extend((0..6).map(|_| {
+        draws.next_case();
+        let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
+        (value, 10f64.powf(-15.0 + 11.0 * draws.unit() as f64))
+    }));
+    let dead = small.into_iter().find_map(|(v, q): (f64, f64)| {
+        let us = [0.0, q / 2.0, 1.0 - q / 2.0];
+        us.iter().all(|&u| f(v, q, u) == 0.0).then(|| {
+            format!(
+                "value {v}, q {q:e}: no path survived at u = 0, q / 2 or 1 − q / 2; a path \
+                 with q = {q:e} must survive with that probability (small is not zero)"
+            )
+        })
+    });
+    if let Some(detail) = always.or(carried).or(dead).filter(|_| error <= 2e-3) {
         return Check {
             error: 1.0,
             tolerance: 2e-3,

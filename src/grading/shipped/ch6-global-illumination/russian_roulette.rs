@@ -12,7 +12,11 @@
 //! * the fraction of paths that die is 1 − q (within 0.2%);
 //! * the mean of the results is `value` (within 0.2%): a survivor
 //!   carries value / q, however small q is (the grader asks down to
-//!   q = 10⁻²⁰⁰).
+//!   q = 10⁻²⁰⁰);
+//! * a small q is not zero: for every q down to 10⁻¹⁵ one of u = 0,
+//!   q/2 and 1 − q/2 survives (the usual choices, u below q or u at or
+//!   above 1 − q, do; the grader looks for survivors there). Below
+//!   10⁻¹⁵, where 1 − q rounds to 1 in f64, none need.
 //!
 //! Hints: `cargo grade --hint ch6/russian_roulette`.
 //! Grade it with: `cargo grade ch6`
