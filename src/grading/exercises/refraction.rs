@@ -185,8 +185,8 @@ fn probe(f: RefractFn) -> Option<String> {
             0 => d.direction(),
             _ => {
                 let cos = d.sign() * d.decades(-3.0, -1.5);
-                let side = (d.direction() - n * d.direction().dot(n))
-                    .normalize_or(n.any_orthonormal_vector());
+                let a = d.direction();
+                let side = (a - n * a.dot(n)).normalize_or(n.any_orthonormal_vector());
                 (side * (1.0 - cos * cos).sqrt() + n * cos).normalize()
             }
         };

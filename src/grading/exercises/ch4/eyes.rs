@@ -23,6 +23,15 @@ pub(super) fn sphere_hit(o: Vec3, d: Vec3, c: Vec3, r: f32, eps: f32) -> Option<
     })
 }
 
+/// One eye, a large sphere ahead and a small one much nearer (each a
+/// centre and a radius), and a ray from the eye.
+struct EyeRay {
+    eye: Vec3,
+    far: (Vec3, f32),
+    near: (Vec3, f32),
+    dir: Vec3,
+}
+
 /// Rays from one eye, one after another, as a camera shoots them: a
 /// large sphere ahead and a small one much nearer, the rays going to
 /// either in turn (and some past both). Each march starts at t = 0,
@@ -32,7 +41,8 @@ pub(super) fn sphere_hit(o: Vec3, d: Vec3, c: Vec3, r: f32, eps: f32) -> Option<
 /// that f32's rounding of the points stays far below ε.)
 pub(super) fn eye_rays(f: TraceFn) -> (f64, String) {
     let mut draws = Draws::new(343);
-    let scenes = (0..draws.count(3, 6)).map(|_| {
+    let mut rays = Vec::new();
+    for _ in 0..draws.count(3, 6) {
         draws.next_case();
         let r_far = draws.decades(-2.0, 2.0);
         let eye = draws.place_for(r_far, 1.0);
@@ -45,60 +55,54 @@ pub(super) fn eye_rays(f: TraceFn) -> (f64, String) {
         let side = ahead.any_orthonormal_vector();
         let towards_near = (ahead + side * draws.range(0.6, 1.2)).normalize();
         let near = eye + towards_near * d_far * draws.range(0.1, 0.25);
-        let rays: Vec<(Vec3, f32)> = (0..12)
-            .map(|k| {
-                let (c, r) = match k % 2 {
-                    0 => (far, r_far),
-                    _ => (near, r_near),
-                };
-                // A point on the sphere's half facing the eye, or past it.
-                let aim = c + draws.in_cube() * r * 0.7 - eye;
-                let past = draws.unit() < 0.15;
-                let dir = match past {
-                    true => (aim + side * r * 4.0).normalize(),
-                    false => aim.normalize(),
-                };
-                (dir, r)
-            })
-            .collect();
-        (eye, (far, r_far), (near, r_near), rays)
-    });
-    let cases: Vec<_> = scenes.collect();
-    worst_drawn(
-        cases
-            .into_iter()
-            .flat_map(|(eye, (far, r_far), (near, r_near), rays)| {
-                let sdf =
-                    move |p: Vec3| ((p - far).length() - r_far).min((p - near).length() - r_near);
-                rays.into_iter().map(move |(dir, r)| {
-                    let eps = r_far * 1e-4;
-                    let hits = [
-                        sphere_hit(eye, dir, far, r_far, eps),
-                        sphere_hit(eye, dir, near, r_near, eps),
-                    ];
-                    let want = hits
-                        .into_iter()
-                        .flatten()
-                        .min_by(|a, b| a.0.total_cmp(&b.0));
-                    let max_distance = 30.0 * r_far.max((far - eye).length());
-                    let got = f(&sdf, eye, dir, eps, 1 << 14, max_distance);
-                    let err = match (got, want) {
-                        (Some(g), Some((w, slack))) => {
-                            worse((g as f64 - w).abs() - slack, 0.0) / r as f64
-                        }
-                        (None, None) => 0.0,
-                        _ => f64::INFINITY,
-                    };
-                    (
-                        err,
-                        format!(
-                    "one eye at {eye}, spheres of radius {r_far} at {far} and {r_near} at {near} \
-                     (one after another, each ray from t = 0), ray along {dir} (ε = {eps}, \
-                     max_distance = {max_distance}): got {got:?}, expected {:?}",
-                    want.map(|w| w.0)
-                ),
-                    )
-                })
-            }),
-    )
+        for k in 0..12 {
+            let (c, r) = match k % 2 {
+                0 => (far, r_far),
+                _ => (near, r_near),
+            };
+            // A point on the sphere's half facing the eye, or past it.
+            let aim = c + draws.in_cube() * r * 0.7 - eye;
+            let dir = match draws.unit() < 0.15 {
+                true => (aim + side * r * 4.0).normalize(),
+                false => aim.normalize(),
+            };
+            rays.push(EyeRay {
+                eye,
+                far: (far, r_far),
+                near: (near, r_near),
+                dir,
+            });
+        }
+    }
+    worst_drawn(rays.iter().map(|ray| eye_ray(f, ray)))
+}
+
+/// One of [`eye_rays`]: its error (on the scale of the large sphere)
+/// and what it asked.
+fn eye_ray(f: TraceFn, ray: &EyeRay) -> (f64, String) {
+    let EyeRay { eye, dir, .. } = *ray;
+    let ((far, r_far), (near, r_near)) = (ray.far, ray.near);
+    let sdf = |p: Vec3| ((p - far).length() - r_far).min((p - near).length() - r_near);
+    let eps = r_far * 1e-4;
+    let want = [
+        sphere_hit(eye, dir, far, r_far, eps),
+        sphere_hit(eye, dir, near, r_near, eps),
+    ]
+    .into_iter()
+    .flatten()
+    .min_by(|a, b| a.0.total_cmp(&b.0));
+    let max_distance = 30.0 * r_far.max((far - eye).length());
+    let got = f(&sdf, eye, dir, eps, 1 << 14, max_distance);
+    let err = match (got, want) {
+        (Some(g), Some((w, slack))) => worse((g as f64 - w).abs() - slack, 0.0) / r_far as f64,
+        (None, None) => 0.0,
+        _ => f64::INFINITY,
+    };
+    let what = format!(
+        "one eye at {eye}, spheres of radius {r_far} at {far} and {r_near} at {near} (one \
+         after another, each ray from t = 0), ray along {dir} (ε = {eps}, max_distance = \
+         {max_distance}): got {got:?}, expected {:?}",
+        want.map(|w| w.0)
+    );
+    (err, what)
 }

@@ -19,17 +19,16 @@ use std::ops::Range;
 
 use glam::{DVec3, Vec2, Vec3};
 
-use crate::ch1_projection::camera::{Camera, CameraDesc};
-
 use super::super::twins::{same_for_decoy, same_for_near, Twins};
 use super::{changed_answer, decoys, nums2, nums3, vec2_at, vec3_at, Questions};
+use crate::ch1_projection::camera::{Camera, CameraDesc};
 use crate::exercises::draws::Draws;
 
 /// How many questions a probe draws.
 const COUNT: usize = 24;
 
-/// [`changed_answer`], then [`same_for_near`] with the twins' numbers
-/// (nudged, lengths) and salt.
+/// [`balanced`] with no pairs moved towards each other: the twins'
+/// numbers (nudged, lengths) and salt.
 pub(crate) fn both<R: Debug>(
     q: &Questions,
     (nudged, lengths): (&[Range<usize>], &[Range<usize>]),
@@ -44,8 +43,10 @@ pub(crate) fn both<R: Debug>(
 /// moved towards each other, and the lengths ([`Twins`]'s fields).
 type Moves<'a> = (&'a [Range<usize>], &'a [(usize, usize)], &'a [Range<usize>]);
 
-/// [`both`], whose twins also move the pairs of points `balanced`
-/// (indices into `nudged`) towards each other.
+/// [`changed_answer`], then [`same_for_decoy`] and [`same_for_near`],
+/// whose twins move the arguments `nudged`, the pairs of points
+/// `balanced` (indices into `nudged`) towards each other, and scale the
+/// `lengths`.
 fn balanced<R: Debug>(
     q: &Questions,
     (nudged, balanced, lengths): Moves,
