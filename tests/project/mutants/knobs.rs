@@ -235,6 +235,10 @@ pub struct RasterKnobs {
     /// its row's start plus the change per pixel times the columns
     /// between.
     pub carried_down: bool,
+    /// The top-left rule decided on the corners' whole pixels (their
+    /// coordinates truncated), where a nearly flat edge is flat (the
+    /// twenty-eighth set).
+    pub whole_pixel_rule: bool,
 }
 
 /// The solution of rasterize_triangle (corners not finite refused),
@@ -282,7 +286,12 @@ pub fn rasterize(
                 true => s.perp_dot(t) + t.perp_dot(p) + p.perp_dot(s),
                 false => edge(s, t, p),
             };
-            let mut w = edges.map(|(s, t)| (e(s, t), top_left(s, t)));
+            let whole = |q: Vec2| q.trunc();
+            let rule = |s: Vec2, t: Vec2| match k.whole_pixel_rule {
+                true => top_left(whole(s), whole(t)),
+                false => top_left(s, t),
+            };
+            let mut w = edges.map(|(s, t)| (e(s, t), rule(s, t)));
             if k.stepped {
                 for (j, (s, t)) in edges.into_iter().enumerate() {
                     w[j].0 = stepped[j];
@@ -804,6 +813,8 @@ pub enum MarchEps {
     /// ε with p's largest coordinate, not its largest |coordinate|
     /// (fourteenth set).
     SignedLargest,
+    /// ε at the point, but never below 10⁻⁵ (twenty-eighth set).
+    Floored,
 }
 
 /// Where the normal's difference step is taken.
@@ -876,6 +887,7 @@ pub fn trace_scene(
             MarchEps::AtPointBefore => march.epsilon_at(before),
             MarchEps::ByLength => march.epsilon.max(8.0 * f32::EPSILON * p.length()),
             MarchEps::SignedLargest => march.epsilon.max(8.0 * f32::EPSILON * p.max_element()),
+            MarchEps::Floored => march.epsilon_at(p).max(1e-5),
         };
         if f.abs() < eps {
             break p;

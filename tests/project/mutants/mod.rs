@@ -33,6 +33,7 @@ pub mod fresh_third;
 pub mod fresh_thirteenth;
 pub mod fresh_twelfth;
 pub mod fresh_twentieth;
+pub mod fresh_twentyeighth;
 pub mod fresh_twentyfifth;
 pub mod fresh_twentyfirst;
 pub mod fresh_twentyfourth;

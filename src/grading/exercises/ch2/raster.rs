@@ -234,8 +234,9 @@ fn coverage(f: RasterFn) -> Check {
 
 /// A fan around a sample point and a grid of triangles, every corner on a
 /// sample point, so that edges run through samples and the fill rule
-/// decides; both windings occur. And small triangles with a sample a hair
-/// inside one edge.
+/// decides; both windings occur. Small triangles with a sample a hair
+/// inside one edge. And edges through a sample whose ends are not on
+/// samples, most of them nearly flat.
 pub fn fill_rule_triangles() -> Vec<[Vec3; 3]> {
     let v = |x: f32, y: f32| Vec3::new(x + 0.5, y + 0.5, 1.0);
     let c = v(16.0, 16.0);
@@ -275,6 +276,26 @@ pub fn fill_rule_triangles() -> Vec<[Vec3; 3]> {
         let turn = |x: f32, y: f32| s + Vec3::new(x * cos - y * sin, x * sin + y * cos, 0.0);
         let t = [turn(-0.1, -1e-5), turn(0.1, -1e-5), turn(0.0, 0.1)];
         tris.push(if k < 8 { t } else { [t[0], t[2], t[1]] });
+    }
+    // Edges through the sample (16.5, 40.5) whose ends are off the grid
+    // of samples, all but two of them rising by less than a pixel: the
+    // rule is decided by the edge itself, not by the pixels its ends fall
+    // in (there it would be flat). Each edge with a third corner above
+    // and below it, both windings.
+    let s = Vec3::new(16.5, 40.5, 1.0);
+    for (dx, dy) in [
+        (8.0, 0.25),
+        (8.0, -0.25),
+        (16.0, 0.25),
+        (16.0, -0.25),
+        (12.0, 0.5),
+        (12.0, -0.75),
+    ] {
+        let (p, q) = (s + Vec3::new(dx, dy, 0.0), s - Vec3::new(dx, dy, 0.0));
+        for third in [s + Vec3::new(0.0, 5.0, 0.0), s - Vec3::new(0.0, 5.0, 0.0)] {
+            tris.push([p, q, third]);
+            tris.push([q, p, third]);
+        }
     }
     tris
 }
