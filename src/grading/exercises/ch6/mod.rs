@@ -266,11 +266,7 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
     // 1, whatever comes back that is not 0 must be value / q. (Which u
     // survive is the solution's choice; no u in f64 lies in the top 10⁻⁴⁰.)
     let mut tiny = vec![(3.0, 1e-8), (-0.5, 1e-40), (2.0, 1e-200)];
-    tiny.extend((0..8).map(|_| {
-        draws.next_case();
-        let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
-        (value, 10f64.powf(-30.0 - 270.0 * draws.unit() as f64))
-    }));
+    tiny.extend(values_and_small_q(&mut draws, 8, (-30.0, -300.0)));
     let carried = tiny.into_iter().find_map(|(v, q): (f64, f64)| {
         let top = 1.0f64.next_down();
         let us = [0.0, q / 2.0, (1.0 - q / 2.0).min(top), top];
@@ -291,11 +287,7 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
     // u = 0, q / 2 or 1 − q / 2 (the stub says the grader looks there).
     // Below 10⁻¹⁵, where 1 − q rounds to 1, none need.
     let mut small = vec![(1.5, 1e-5), (-2.0, 1e-9), (0.5, 1e-14)];
-    small.extend((0..6).map(|_| {
-        draws.next_case();
-        let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
-        (value, 10f64.powf(-15.0 + 11.0 * draws.unit() as f64))
-    }));
+    small.extend(values_and_small_q(&mut draws, 6, (-15.0, -4.0)));
     let dead = small.into_iter().find_map(|(v, q): (f64, f64)| {
         let us = [0.0, q / 2.0, 1.0 - q / 2.0];
         us.iter().all(|&u| f(v, q, u) == 0.0).then(|| {
@@ -321,6 +313,19 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
         images: None,
         symptom: if error > 2e-3 { symptom } else { None },
     }
+}
+
+/// `count` drawn (value, q): a value of either sign from 10⁻³ to 10³, and
+/// q between 10^from and 10^to, evenly in its exponent (in f64: the
+/// decades reach far below what f32 holds).
+fn values_and_small_q(draws: &mut Draws, count: usize, (from, to): (f64, f64)) -> Vec<(f64, f64)> {
+    (0..count)
+        .map(|_| {
+            draws.next_case();
+            let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
+            (value, 10f64.powf(from + (to - from) * draws.unit() as f64))
+        })
+        .collect()
 }
 
 /// A hand-worked weight (`src/grading/cases.toml`).
