@@ -249,9 +249,39 @@ fn refraction_values(f: RefractFn) -> Check {
     });
     let (mut error, (mut detail, mut symptom)) =
         worst(cases).unwrap_or_else(|| (0.0, ("all cases match".into(), None)));
-    let mut draws = Draws::new(65);
     let mut drawn_symptom = None;
-    let drawn = worst_drawn((0..draws.count(600, 1500)).map(|_| {
+    let drawn = worst_drawn(drawn_questions().into_iter().map(|(d, n, eo, ei, kind)| {
+        let (e, what, s) = case(f, d, n, eo, ei);
+        if e > TOL {
+            drawn_symptom = drawn_symptom.or(s);
+        }
+        (e, format!("{what}{kind}"))
+    }));
+    if drawn.0 > error {
+        symptom = drawn_symptom;
+    }
+    fold_drawn(&mut error, &mut detail, drawn);
+    Check {
+        error,
+        tolerance: TOL,
+        detail,
+        images: None,
+        symptom: (error > TOL)
+            .then(|| probe_symptom(f).or(symptom))
+            .flatten(),
+    }
+}
+
+/// A drawn question: d, n, η outside, η inside, and what kind of
+/// question it is (for the message).
+type Question = (Vec3, Vec3, f32, f32, String);
+
+/// The drawn questions, from a stream of their own: anywhere in the
+/// domain; then grazing sweeps; then near the normal.
+fn drawn_questions() -> Vec<Question> {
+    let mut draws = Draws::new(65);
+    let mut asked = Vec::new();
+    for _ in 0..draws.count(600, 1500) {
         draws.next_case();
         // A tenth along an axis, either way: a frame built by crossing n
         // with a fixed axis has none there.
@@ -286,48 +316,30 @@ fn refraction_values(f: RefractFn) -> Check {
             _ => draws.unit() as f64,
         };
         let d = at_cos(n, side * cos.max(1e-6), draws.direction());
-        let (e, what, s) = case(f, d, n, eo, ei);
-        if e > TOL {
-            drawn_symptom = drawn_symptom.or(s);
-        }
-        (e, what)
-    }));
-    if drawn.0 > error {
-        symptom = drawn_symptom;
+        asked.push((d, n, eo, ei, String::new()));
     }
-    fold_drawn(&mut error, &mut detail, drawn);
     // Sweeps at grazing incidence from outside, where F changes fastest
     // (by about 10⁻³ when cos θ moves by 2.5·10⁻⁴): 48 directions one
     // after another, cos θ from a drawn c₀ (10⁻³ to 0.05) up in steps of
     // 0.2 % of it, the plane of incidence kept. Each answer is its own:
     // one kept from a near question (a table keyed on a rounded cosine)
     // is off by more than the tolerance.
-    let sweeps = worst_drawn((0..draws.count(3, 5)).flat_map(|_| {
+    for _ in 0..draws.count(3, 5) {
         draws.next_case();
         let n = draws.direction();
         let (eo, ei) = (draws.range(1.0, 1.6), draws.range(1.3, 2.5));
         let (c0, a) = (draws.decades(-3.0, -1.3) as f64, draws.direction());
-        let sweep: Vec<(f64, String)> = (0..48)
-            .map(|k| {
-                let d = at_cos(n, -c0 * (1.0 + 2e-3 * k as f64), a);
-                let (e, what, s) = case(f, d, n, eo, ei);
-                if e > TOL {
-                    drawn_symptom = drawn_symptom.or(s);
-                }
-                (e, format!("{what} (a grazing sweep, direction {k} of 48)"))
-            })
-            .collect();
-        sweep
-    }));
-    if sweeps.0 > error {
-        symptom = drawn_symptom;
+        for k in 0..48 {
+            let d = at_cos(n, -c0 * (1.0 + 2e-3 * k as f64), a);
+            let kind = format!(" (a grazing sweep, direction {k} of 48)");
+            asked.push((d, n, eo, ei, kind));
+        }
     }
-    fold_drawn(&mut error, &mut detail, sweeps);
     // Near the normal, most from inside a dense medium: F is close to its
     // value at normal incidence there, but not equal (from inside glass of
     // 2.5 into air, off by 3·10⁻⁴ at 8°). cos θ from 0.97 to 1; half at
     // the domain's extreme indices, 1 outside and 2.5 inside.
-    let near_normal = worst_drawn((0..128).map(|k| {
+    for k in 0..128 {
         draws.next_case();
         let n = draws.direction();
         let (eo, ei) = match k % 2 {
@@ -336,26 +348,15 @@ fn refraction_values(f: RefractFn) -> Check {
         };
         let side = if draws.unit() < 0.75 { 1.0 } else { -1.0 };
         let cos = draws.range(0.97, 1.0) as f64;
-        let d = at_cos(n, side * cos, draws.direction());
-        let (e, what, s) = case(f, d, n, eo, ei);
-        if e > TOL {
-            drawn_symptom = drawn_symptom.or(s);
-        }
-        (e, format!("{what} (near the normal)"))
-    }));
-    if near_normal.0 > error {
-        symptom = drawn_symptom;
+        asked.push((
+            at_cos(n, side * cos, draws.direction()),
+            n,
+            eo,
+            ei,
+            " (near the normal)".into(),
+        ));
     }
-    fold_drawn(&mut error, &mut detail, near_normal);
-    Check {
-        error,
-        tolerance: TOL,
-        detail,
-        images: None,
-        symptom: (error > TOL)
-            .then(|| probe_symptom(f).or(symptom))
-            .flatten(),
-    }
+    asked
 }
 
 /// What a failing refraction got wrong, from probes about a tilted
