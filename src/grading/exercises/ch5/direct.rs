@@ -57,7 +57,10 @@ pub fn reference_direct(
     if !(cos > 0.0 && cos_l > 0.0 && d2 > 0.0 && visible(p, y)) {
         return Vec3::ZERO;
     }
-    rho * FRAC_1_PI * le * cos * cos_l / d2 * area
+    // A / d² first: each alone may leave f32's range at the drawn scales
+    // (10⁻¹⁵ to 10¹⁵), their ratio does not, and dividing a dim light's
+    // product by d² before multiplying by A underflows to 0.
+    rho * FRAC_1_PI * le * (cos * cos_l * (area / d2))
 }
 
 /// One hand-worked case.
