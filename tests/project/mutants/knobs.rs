@@ -585,6 +585,9 @@ pub enum Measure {
     /// The surface area as (dx + dy + dz)² − (dx² + dy² + dz²) in f32,
     /// which cancels for a needle.
     SquareIdentity,
+    /// 2 d · (dy, dx, dz): the right area, up to a factor, where dz = 0 or
+    /// the box is a cube (twenty-ninth set).
+    Swizzled,
 }
 
 /// The axes the sweep tries.
@@ -661,6 +664,10 @@ pub fn sah_sweep(k: SahKnobs, boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option
             let d = (hi - lo).max(Vec3::ZERO);
             let s = d.x + d.y + d.z;
             (s * s - d.length_squared()) as f64
+        }
+        Measure::Swizzled => {
+            let d = (hi - lo).max(Vec3::ZERO).as_dvec3();
+            2.0 * d.dot(glam::DVec3::new(d.y, d.x, d.z))
         }
     };
     let axes = match k.axes {
@@ -750,6 +757,9 @@ pub struct MarchKnobs {
     /// Gives up at t = max_distance, not only beyond it (the
     /// twenty-fourth set).
     pub stop_at_max: bool,
+    /// Gives up where p − o's largest |coordinate|, not t, is past
+    /// max_distance (twenty-ninth set).
+    pub travel_by_largest: bool,
 }
 
 /// The solution of sphere_trace, departing as `k` says.
@@ -779,9 +789,10 @@ pub fn sphere_trace(
         if tested && (if k.signed_hit { d } else { d.abs() }) < eps {
             return Some(tf);
         }
-        let gone = match k.max_from_origin {
-            true => (origin + tf * dir).length(),
-            false => tf,
+        let gone = match (k.max_from_origin, k.travel_by_largest) {
+            (true, _) => (origin + tf * dir).length(),
+            (_, true) => (tf * dir).abs().max_element(),
+            _ => tf,
         };
         if gone > max_distance || (k.stop_at_max && gone == max_distance) {
             return None;
@@ -852,6 +863,9 @@ pub struct SceneKnobs {
     pub unrolled: bool,
     /// The normal's differences taken forwards from the hit, f(p + h) - f(p).
     pub forward: bool,
+    /// -dir where the gradient's largest component is 0, not where the
+    /// gradient is zero (twenty-ninth set).
+    pub zero_by_max_element: bool,
 }
 
 impl Default for SceneKnobs {
@@ -866,6 +880,7 @@ impl Default for SceneKnobs {
             fallback_below: None,
             unrolled: false,
             forward: false,
+            zero_by_max_element: false,
         }
     }
 }
@@ -916,7 +931,8 @@ pub fn trace_scene(
         false => (sdf(p + axis * h) - sdf(p - axis * h)) / (2.0 * h),
     };
     let gradient = Vec3::new(partial(Vec3::X), partial(Vec3::Y), partial(Vec3::Z));
-    let short = k.fallback_below.is_some_and(|l| gradient.length() < l);
+    let short = k.fallback_below.is_some_and(|l| gradient.length() < l)
+        || (k.zero_by_max_element && gradient.max_element() == 0.0);
     let n = gradient
         .try_normalize()
         .filter(|_| !short)

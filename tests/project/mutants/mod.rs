@@ -37,6 +37,7 @@ pub mod fresh_twentyeighth;
 pub mod fresh_twentyfifth;
 pub mod fresh_twentyfirst;
 pub mod fresh_twentyfourth;
+pub mod fresh_twentyninth;
 pub mod fresh_twentysecond;
 pub mod fresh_twentyseventh;
 pub mod fresh_twentysixth;

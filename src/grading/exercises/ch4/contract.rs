@@ -284,6 +284,15 @@ pub fn cases() -> Vec<Case> {
             m,
         ),
         case(
+            "a wall at x = 1 facing -x whose function is half the distance, seen obliquely: its \
+             gradient (-1/2, 0, 0) has no component above 0 and is not zero, so the normal is \
+             (-1, 0, 0)",
+            Clause::Normal,
+            west_wall,
+            (Vec3::ZERO, Vec3::new(0.6, 0.0, 0.8)),
+            m,
+        ),
+        case(
             "a ray starting on a wall and leaving it 5e-4 rad above its plane: a hit at t = 0 whose \
              gradient points along the ray, by a hair, so the normal turns round",
             Clause::Normal,

@@ -1,5 +1,6 @@
-//! Sphere tracing's drawn rays: a sphere's exact first hit, and rays
-//! from one eye one after another, as a camera shoots them.
+//! Sphere tracing's drawn rays: a sphere's exact first hit, rays from one
+//! eye one after another, as a camera shoots them, and oblique rays at a
+//! sphere just beyond max_distance.
 
 use glam::Vec3;
 
@@ -105,4 +106,63 @@ fn eye_ray(f: TraceFn, ray: &EyeRay) -> (f64, String) {
         want.map(|w| w.0)
     );
     (err, what)
+}
+
+/// Oblique rays (every component of the direction 0.34 to 0.77 of its
+/// length) at a sphere 1.03 to 1.25 times max_distance away along the
+/// ray, met off its centre, so that the march takes several steps and
+/// passes max_distance before it comes within ε: a miss. (Only rays whose
+/// step past the limit lands well past it, far from the surface, so that
+/// every right tracer's rounding agrees.) t is what max_distance limits,
+/// not a measure of p − o that is shorter on an oblique ray, such as its
+/// largest coordinate, which reaches max_distance only past the sphere.
+pub(super) fn beyond_limit(f: TraceFn) -> (f64, String) {
+    let mut draws = Draws::new(443);
+    worst_drawn((0..draws.count(8, 16)).filter_map(|_| {
+        draws.next_case();
+        let r = draws.decades(-2.0, 2.0);
+        let centre = draws.place_for(r, 1.0);
+        let mut slant = || draws.sign() * draws.range(0.6, 1.0);
+        let dir = Vec3::new(slant(), slant(), slant()).normalize();
+        let side = dir
+            .cross(draws.direction())
+            .normalize_or(dir.any_orthonormal_vector());
+        let origin = centre - dir * r * draws.range(4.0, 10.0) + side * r * draws.range(0.4, 0.9);
+        let eps = r * 1e-4;
+        let (hit, _) = sphere_hit(origin, dir, centre, r, eps)?;
+        let max_distance = (hit * draws.range(0.8, 0.97) as f64) as f32;
+        let sdf = move |p: Vec3| (p - centre).length() - r;
+        // The reference's march: where it passes the limit.
+        let (mut t, mut steps) = (0.0f32, 0);
+        let robust = loop {
+            steps += 1;
+            let v = sdf(origin + t * dir);
+            if steps > 4096 {
+                break false;
+            }
+            if v.abs() < eps {
+                break false;
+            }
+            if t > max_distance {
+                break v > 100.0 * eps && t > max_distance * (1.0 + 1e-4);
+            }
+            if t + v > max_distance && t > max_distance * (1.0 - 1e-4) {
+                break false;
+            }
+            t += v;
+        };
+        if !robust {
+            return None;
+        }
+        let got = f(&sdf, origin, dir, eps, 4096, max_distance);
+        Some((
+            if got.is_some() { f64::INFINITY } else { 0.0 },
+            format!(
+                "a sphere of radius {r} at {centre}, ray from {origin} along {dir} (ε = {eps}, \
+                 max_distance = {max_distance}): the sphere is {hit:.4} away along the ray, and \
+                 the march passes max_distance at t = {t} before it comes within ε: got {got:?}, \
+                 expected None"
+            ),
+        ))
+    }))
 }

@@ -22,7 +22,7 @@ pub use contract::{
     Case, Clause, Probe, BUDGET_OFF_BY_ONE, FIXED_EPSILON, IGNORES_MAX_DISTANCE, INSIDE_HIT,
     NOT_FACING, NOT_UNIT, NO_BUDGET, ZERO_GRADIENT,
 };
-use eyes::{eye_rays, sphere_hit};
+use eyes::{beyond_limit, eye_rays, sphere_hit};
 pub use gradient::check_gradient_normal;
 pub use scene::{check_trace_scene, contract_failure, reference_trace_ray, TraceRayFn};
 
@@ -327,6 +327,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
     }));
     fold_drawn(&mut error, &mut detail, drawn);
     fold_drawn(&mut error, &mut detail, eye_rays(f));
+    fold_drawn(&mut error, &mut detail, beyond_limit(f));
     // Any ε > 0 holds, however small: with ε = 10⁻³⁰ (whose square is 0
     // in f32) the first step from 5 away lands exactly on the unit sphere,
     // where f is 0.

@@ -179,3 +179,9 @@ pub(super) fn wall(p: Vec3) -> f32 {
 pub(super) fn quarter_wall(p: Vec3) -> f32 {
     0.25 * p.z
 }
+
+/// A wall at x = 1 facing −x, whose function is half the distance: its
+/// gradient (−1/2, 0, 0) has no component above 0, and still is not zero.
+pub(super) fn west_wall(p: Vec3) -> f32 {
+    0.5 * (1.0 - p.x)
+}

@@ -389,6 +389,8 @@ pub fn check_direct_light(f: DirectFn) -> Check {
     if error <= 1e-4 {
         let drawn = super::drawn::drawn_cases(f);
         crate::exercises::draws::fold_drawn(&mut error, &mut detail, drawn);
+        let skimming = super::drawn::skimming_cases(f);
+        crate::exercises::draws::fold_drawn(&mut error, &mut detail, skimming);
     }
     let student = cornell(f, 32);
     let reference = cornell(reference_direct, 32);

@@ -5,7 +5,8 @@
 //! area, emission and the albedo drawn too (a tenth of the albedos dark,
 //! down to 10⁻⁶), and a fifth of them blocked. The answer is the
 //! estimator's closed form worked out in f64; cases where a cosine is so
-//! small that rounding decides its sign are left out.
+//! small that rounding decides its sign are left out. Then samples that
+//! skim a surface where the small cosine is exact ([`skimming_cases`]).
 
 use std::cell::Cell;
 use std::f64::consts::PI;
@@ -166,5 +167,86 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
                 }
             ),
         ))
+    }))
+}
+
+/// Samples that skim a surface, from a stream of their own: half with p's
+/// normal along an axis, p in the plane through the origin across it and
+/// y 10⁻¹² to 10⁻⁶ of their distance above that plane (cos θ that small),
+/// half the same at the light (cos θl that small). The small cosine is one
+/// exact coordinate over the distance, the other well above 0, so the
+/// answer is as exact as anywhere and judged relative to itself: a sample
+/// taken for "in the plane" below some small cosine (`f32::EPSILON`, say)
+/// brings nothing where it brings light.
+pub(super) fn skimming_cases(f: Direct) -> (f64, String) {
+    let mut draws = Draws::new(554);
+    worst_drawn((0..draws.count(24, 48)).map(|_| {
+        draws.next_case();
+        let dist = draws.decades(-2.0, 3.0);
+        let axis = draws.count(0, 2);
+        let flat = Vec3::AXES[axis] * draws.sign();
+        let mut way = draws.direction();
+        way[axis] = 0.0;
+        let way = way.normalize_or(flat.any_orthonormal_vector());
+        let height = flat * dist * draws.decades(-12.0, -6.0);
+        // The other normal: towards the other point, tilted by up to 0.3.
+        let tilt = draws.direction() * draws.range(0.0, 0.3);
+        let facing = |from: Vec3, to: Vec3| ((to - from).normalize() + tilt).normalize();
+        let at_light = draws.unit() < 0.5;
+        let (p, n, y, n_light) = match at_light {
+            false => {
+                let mut p = draws.place_for(dist, 1.0);
+                p[axis] = 0.0;
+                let mut y = p + way * dist;
+                y[axis] = height[axis];
+                (p, flat, y, facing(y, p))
+            }
+            true => {
+                let mut y = draws.place_for(dist, 1.0);
+                y[axis] = 0.0;
+                let mut p = y + way * dist;
+                p[axis] = height[axis];
+                (p, facing(p, y), y, flat)
+            }
+        };
+        let area = dist * dist * draws.decades(-2.0, 1.0);
+        let grey =
+            |d: &mut Draws| Vec3::new(d.range(0.1, 1.0), d.range(0.1, 1.0), d.range(0.1, 1.0));
+        let (rho, le) = (
+            grey(&mut draws),
+            grey(&mut draws) * draws.decades(-1.0, 2.0),
+        );
+        let to = (y - p).as_dvec3();
+        let d2 = to.length_squared();
+        let wi = to / d2.sqrt();
+        let (cos, cos_l) = (n.as_dvec3().dot(wi), -n_light.as_dvec3().dot(wi));
+        let want = (rho * le).as_dvec3() / PI * area as f64 / d2 * cos * cos_l;
+        let asked_other = Cell::new(false);
+        let visible = |a: Vec3, b: Vec3| {
+            asked_other.set(asked_other.get() || a != p || b != y);
+            true
+        };
+        let got = f(p, n, rho, y, n_light, area, le, &visible).as_dvec3();
+        let err = match asked_other.get() {
+            true => f64::INFINITY,
+            false => (got - want).abs_max() / want.max_element(),
+        };
+        (
+            err,
+            format!(
+                "p {p}, n {n}, ρ {rho}, y {y}, n_light {n_light}, A {area}, Le {le} (y skims {}: \
+                 cos θ = {cos:.2e}, cos θl = {cos_l:.2e}): got {got}, expected {want}{}",
+                if at_light {
+                    "the light's plane"
+                } else {
+                    "p's plane"
+                },
+                if asked_other.get() {
+                    " (visible was asked about another segment than p → y)"
+                } else {
+                    ""
+                }
+            ),
+        )
     }))
 }

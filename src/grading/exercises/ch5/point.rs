@@ -1,6 +1,6 @@
 //! Exercise 5.3, the point light: hand-worked cases from the case file,
 //! then drawn lights and surfaces (grazing ones among them, some with a
-//! normal along an axis, where the cosine is exact).
+//! normal along an axis, where the cosine is exact, down to 10⁻¹²).
 
 use glam::Vec3;
 
@@ -183,6 +183,7 @@ fn point_light_values(f: PointFn) -> Check {
         )
     }));
     fold_drawn(&mut error, &mut detail, drawn);
+    fold_drawn(&mut error, &mut detail, skimming(f));
     Check {
         error,
         tolerance: 1e-4,
@@ -190,6 +191,49 @@ fn point_light_values(f: PointFn) -> Check {
         images: None,
         symptom: (error > 1e-4).then(|| point_symptom(f)).flatten(),
     }
+}
+
+/// Lights that skim the surface, from a stream of their own: a normal
+/// along an axis, p in the plane through the origin across it, and the
+/// light 10⁻¹² to 10⁻⁶ of its distance above that plane. cos θ (10⁻¹² to
+/// 10⁻⁶) is then one exact coordinate over the distance, so E is as exact
+/// there as anywhere, and judged relative to itself: a light counted as
+/// behind below some small cosine (`f32::EPSILON`, say) delivers nothing
+/// where the law says E.
+fn skimming(f: PointFn) -> (f64, String) {
+    let mut draws = Draws::new(452);
+    worst_drawn((0..draws.count(24, 48)).map(|_| {
+        draws.next_case();
+        let scale = draws.decades(-2.0, 3.0);
+        let axis = draws.count(0, 2);
+        let n = Vec3::AXES[axis] * draws.sign();
+        let mut p = draws.place_for(scale, 1.0);
+        p[axis] = 0.0;
+        let mut way = draws.direction();
+        way[axis] = 0.0;
+        let way = way.normalize_or(n.any_orthonormal_vector());
+        let mut light = p + way * scale;
+        light[axis] = n[axis] * scale * draws.decades(-12.0, -6.0);
+        let grey = Vec3::new(
+            draws.range(0.1, 1.0),
+            draws.range(0.1, 1.0),
+            draws.range(0.1, 1.0),
+        );
+        let intensity = grey * draws.decades(-2.0, 2.0);
+        let to = (light - p).as_dvec3();
+        let cos = n.as_dvec3().dot(to) / to.length();
+        let want = intensity.as_dvec3() * cos / to.length_squared();
+        let got = f(intensity, light, p, n);
+        let err = (got.as_dvec3() - want).abs().max_element() / want.max_element();
+        (
+            if err.is_nan() { f64::INFINITY } else { err },
+            format!(
+                "I {intensity}, light at {light}, p {p}, n {n} (the light skims the surface: cos θ \
+                 = {cos:.2e}): got {got}, expected {}",
+                want.as_vec3()
+            ),
+        )
+    }))
 }
 
 /// What a failing point light got wrong: the light straight above at

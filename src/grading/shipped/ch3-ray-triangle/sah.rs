@@ -17,14 +17,14 @@
 //!   than the leaf, and when no plane separates the centroids at all.
 //!   Four triangles whose boxes are all the same cube must stay a leaf.
 //! * The grader builds whole trees with your split at every node, over
-//!   drawn scenes (clusters, skewed and flat scenes, big triangles among
-//!   small, coincident centroids, 10⁻³ to 10³ across, far from the
-//!   origin). Each tree's cost (the sum over its nodes of C_trav for an
-//!   inner node or N·C_tri for a leaf, times the node's area over the
-//!   root's) may exceed that of the best split at every node by 10 %, or
-//!   that of pbrt's binned choice (12 buckets per axis) by 2 % where that
-//!   costs more; the box and triangle tests of rays through all of them,
-//!   by 25 %. The trees' shapes need not match: binned choices pass.
+//!   drawn scenes (clusters, skewed and flat scenes lying along any
+//!   axis, big triangles among small, coincident centroids, 10⁻³ to 10³
+//!   across, far from the origin). Each tree's cost (the sum over its
+//!   nodes of C_trav for an inner node or N·C_tri for a leaf, times the
+//!   node's area over the root's) may exceed that of the best split at
+//!   every node by 10 %, or that of pbrt's binned choice (12 buckets per
+//!   axis) by 2 % where that costs more; the box and triangle tests of
+//!   rays through all of them, by 25 %. The trees' shapes need not match: binned choices pass.
 //!
 //! Hints: `cargo grade --hint ch3/sah`.
 //! Grade it with: `cargo grade ch3`
