@@ -137,6 +137,24 @@ impl Draws {
         d * scale * self.decades(0.0, decades)
     }
 
+    /// Two points `dist` apart, the second skimming a plane through the
+    /// origin across a drawn axis in which the first lies: (the plane's
+    /// unit normal, ± the axis; the first point, up to 10 `dist` from the
+    /// origin; the second, 10⁻¹² to 10⁻⁶ of `dist` above the plane). The
+    /// cosine between the normal and the way from one to the other is then
+    /// one exact coordinate over their distance, however small.
+    pub fn skimming(&mut self, dist: f32) -> (Vec3, Vec3, Vec3) {
+        let axis = self.count(0, 2);
+        let normal = Vec3::AXES[axis] * self.sign();
+        let mut from = self.place_for(dist, 1.0);
+        from[axis] = 0.0;
+        let mut way = self.direction();
+        way[axis] = 0.0;
+        let mut to = from + way.normalize_or(normal.any_orthonormal_vector()) * dist;
+        to[axis] = normal[axis] * dist * self.decades(-12.0, -6.0);
+        (normal, from, to)
+    }
+
     /// A triangle's size: from 10⁻³ to 10³, and in a sixth of the cases
     /// at a millimetre and below (where an absolute ε shows).
     pub fn triangle_scale(&mut self) -> f32 {

@@ -183,31 +183,15 @@ pub(super) fn skimming_cases(f: Direct) -> (f64, String) {
     worst_drawn((0..draws.count(24, 48)).map(|_| {
         draws.next_case();
         let dist = draws.decades(-2.0, 3.0);
-        let axis = draws.count(0, 2);
-        let flat = Vec3::AXES[axis] * draws.sign();
-        let mut way = draws.direction();
-        way[axis] = 0.0;
-        let way = way.normalize_or(flat.any_orthonormal_vector());
-        let height = flat * dist * draws.decades(-12.0, -6.0);
+        let (flat, on, over) = draws.skimming(dist);
         // The other normal: towards the other point, tilted by up to 0.3.
         let tilt = draws.direction() * draws.range(0.0, 0.3);
         let facing = |from: Vec3, to: Vec3| ((to - from).normalize() + tilt).normalize();
+        // Skimming p's plane (p on it, y over it), or the light's.
         let at_light = draws.unit() < 0.5;
         let (p, n, y, n_light) = match at_light {
-            false => {
-                let mut p = draws.place_for(dist, 1.0);
-                p[axis] = 0.0;
-                let mut y = p + way * dist;
-                y[axis] = height[axis];
-                (p, flat, y, facing(y, p))
-            }
-            true => {
-                let mut y = draws.place_for(dist, 1.0);
-                y[axis] = 0.0;
-                let mut p = y + way * dist;
-                p[axis] = height[axis];
-                (p, facing(p, y), y, flat)
-            }
+            false => (on, flat, over, facing(over, on)),
+            true => (over, facing(over, on), on, flat),
         };
         let area = dist * dist * draws.decades(-2.0, 1.0);
         let grey =

@@ -205,15 +205,7 @@ fn skimming(f: PointFn) -> (f64, String) {
     worst_drawn((0..draws.count(24, 48)).map(|_| {
         draws.next_case();
         let scale = draws.decades(-2.0, 3.0);
-        let axis = draws.count(0, 2);
-        let n = Vec3::AXES[axis] * draws.sign();
-        let mut p = draws.place_for(scale, 1.0);
-        p[axis] = 0.0;
-        let mut way = draws.direction();
-        way[axis] = 0.0;
-        let way = way.normalize_or(n.any_orthonormal_vector());
-        let mut light = p + way * scale;
-        light[axis] = n[axis] * scale * draws.decades(-12.0, -6.0);
+        let (n, p, light) = draws.skimming(scale);
         let grey = Vec3::new(
             draws.range(0.1, 1.0),
             draws.range(0.1, 1.0),
