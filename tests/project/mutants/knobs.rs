@@ -760,6 +760,9 @@ pub struct MarchKnobs {
     /// Gives up where p − o's largest |coordinate|, not t, is past
     /// max_distance (twenty-ninth set).
     pub travel_by_largest: bool,
+    /// At the budget's last evaluation, tests the distance before the hit
+    /// (thirtieth set: a loop whose last evaluation is tested after it).
+    pub last_distance_first: bool,
 }
 
 /// The solution of sphere_trace, departing as `k` says.
@@ -783,6 +786,9 @@ pub fn sphere_trace(
         let tf = t as f32;
         let d = sdf(origin + tf * dir);
         let tested = !(k.first_untested && step == 0);
+        if k.last_distance_first && step + 1 == steps && tf > max_distance {
+            return None;
+        }
         let eps = k
             .eps_ulps_of_t
             .map_or(epsilon, |n| epsilon.max(n * f32::EPSILON * tf));

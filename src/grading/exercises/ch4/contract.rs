@@ -133,6 +133,18 @@ pub fn cases() -> Vec<Case> {
             March { max_distance: 0.5, ..m },
         ),
         case(
+            "the same wall 1 m below, max_distance = 0.5, a budget of exactly the two evaluations \
+             it takes: the last one lands on it, beyond max_distance, and is tested for a hit \
+             first too: a hit at t = 1",
+            Clause::MaxDistance,
+            wall,
+            down(1.0),
+            March {
+                max_distance: 0.5,
+                ..budget(2)
+            },
+        ),
+        case(
             "the same wall 1 m below, max_distance = 0.9995: the 13th step goes past it (t = 1 - 2^-12) \
              without a hit; the next would hit, beyond the limit",
             Clause::MaxDistance,
