@@ -80,6 +80,9 @@ fn contract_path(
             }
         }
         let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(rng(), rng()));
+        if pdf <= 0.0 {
+            break; // a direction in the tangent plane (rng() may give 0)
+        }
         beta *= f * hit.n.dot(wi) / pdf;
         let q = if fixed {
             0.8

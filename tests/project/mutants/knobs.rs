@@ -1096,6 +1096,11 @@ pub struct PathKnobs {
     pub roulette_on_bounce_u: bool,
     /// The path ended, uncompensated, where roulette's q falls below this.
     pub dim_below: Option<f32>,
+    /// Ends only where u > q: survives at u = q, also at q = 0 (thirty-first
+    /// set).
+    pub survive_at_q: bool,
+    /// No end where the bounce's density is 0 (thirty-first set).
+    pub no_pdf_guard: bool,
 }
 
 impl Default for PathKnobs {
@@ -1115,6 +1120,8 @@ impl Default for PathKnobs {
             max_bounces: None,
             roulette_on_bounce_u: false,
             dim_below: None,
+            survive_at_q: false,
+            no_pdf_guard: false,
         }
     }
 }
@@ -1168,7 +1175,7 @@ pub fn path(
         }
         let ux = kept_u.take().unwrap_or_else(&mut *rng);
         let (wi, pdf) = scene.sample_cosine(&hit, Vec2::new(ux, rng()));
-        if pdf <= 0.0 {
+        if pdf <= 0.0 && !k.no_pdf_guard {
             break;
         }
         let before = beta;
@@ -1183,7 +1190,7 @@ pub fn path(
                 break;
             }
             let u = if k.roulette_on_bounce_u { ux } else { rng() };
-            if u >= q {
+            if u > q || (u == q && !k.survive_at_q) {
                 break;
             }
             beta /= q;

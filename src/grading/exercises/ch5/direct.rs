@@ -391,6 +391,8 @@ pub fn check_direct_light(f: DirectFn) -> Check {
         crate::exercises::draws::fold_drawn(&mut error, &mut detail, drawn);
         let skimming = super::drawn::skimming_cases(f);
         crate::exercises::draws::fold_drawn(&mut error, &mut detail, skimming);
+        let vast = super::drawn::vast_cases(f);
+        crate::exercises::draws::fold_drawn(&mut error, &mut detail, vast);
     }
     let student = cornell(f, 32);
     let reference = cornell(reference_direct, 32);

@@ -6,7 +6,8 @@
 //! down to 10⁻⁶), and a fifth of them blocked. The answer is the
 //! estimator's closed form worked out in f64; cases where a cosine is so
 //! small that rounding decides its sign are left out. Then samples that
-//! skim a surface where the small cosine is exact ([`skimming_cases`]).
+//! skim a surface where the small cosine is exact ([`skimming_cases`]),
+//! and bright lights in vast scenes ([`vast_cases`]).
 
 use std::cell::Cell;
 use std::f64::consts::PI;
@@ -177,13 +178,21 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
 /// exact coordinate over the distance, the other well above 0, so the
 /// answer is as exact as anywhere and judged relative to itself: a sample
 /// taken for "in the plane" below some small cosine (`f32::EPSILON`, say)
-/// brings nothing where it brings light.
+/// brings nothing where it brings light. A fifth lie exactly in the plane
+/// (the light seen edge-on, or y on p's horizon): exactly 0, where a
+/// density per steradian taken as 0 and divided by gives infinity.
 pub(super) fn skimming_cases(f: Direct) -> (f64, String) {
     let mut draws = Draws::new(554);
     worst_drawn((0..draws.count(24, 48)).map(|_| {
         draws.next_case();
         let dist = draws.decades(-2.0, 3.0);
-        let (flat, on, over) = draws.skimming(dist);
+        let (flat, on, mut over) = draws.skimming(dist);
+        // A fifth exactly in the plane (cos θ or cos θl exactly 0): no
+        // light, and exactly 0, not 0/0 or x/0.
+        let edge_on = draws.unit() < 0.2;
+        if edge_on {
+            over -= flat * flat.dot(over);
+        }
         // The other normal: towards the other point, tilted by up to 0.3.
         let tilt = draws.direction() * draws.range(0.0, 0.3);
         let facing = |from: Vec3, to: Vec3| ((to - from).normalize() + tilt).normalize();
@@ -211,9 +220,13 @@ pub(super) fn skimming_cases(f: Direct) -> (f64, String) {
             true
         };
         let got = f(p, n, rho, y, n_light, area, le, &visible).as_dvec3();
-        let err = match asked_other.get() {
-            true => f64::INFINITY,
-            false => (got - want).abs_max() / want.max_element(),
+        let err = match (asked_other.get(), want.max_element() > 0.0) {
+            (true, _) => f64::INFINITY,
+            (false, true) => (got - want).abs_max() / want.max_element(),
+            (false, false) => match got == glam::DVec3::ZERO {
+                true => 0.0,
+                false => f64::INFINITY,
+            },
         };
         (
             err,
@@ -230,6 +243,46 @@ pub(super) fn skimming_cases(f: Direct) -> (f64, String) {
                 } else {
                     ""
                 }
+            ),
+        )
+    }))
+}
+
+/// Bright lights in vast scenes, from a stream of their own: Le 10^8.5 to
+/// 10⁹ (the drawn cases' brightest is 10⁸, the sun's 2·10⁷), the scene
+/// 10^14.8 to 10¹⁵ across (the drawn cases' largest) and the light's area
+/// 5 to 10 times its square. The answer depends on the area only over the
+/// squared distance, and is 10⁸ to 10¹¹ here, while f · Le times the area
+/// is past f32's largest number: a product formed before its division
+/// overflows. Both points face each other (tilted by up to 0.3), and the
+/// answer is judged relative to itself.
+pub(super) fn vast_cases(f: Direct) -> (f64, String) {
+    let mut draws = Draws::new(654);
+    worst_drawn((0..draws.count(8, 16)).map(|_| {
+        draws.next_case();
+        let s = draws.decades(14.8, 15.0);
+        let p = draws.place_for(s, 1.0);
+        let y = p + draws.direction() * s * draws.range(0.5, 5.0);
+        let mut facing = |from: Vec3, to: Vec3| {
+            ((to - from).normalize() + draws.direction() * draws.range(0.0, 0.3)).normalize()
+        };
+        let (n, n_light) = (facing(p, y), facing(y, p));
+        let area = s * s * draws.range(5.0, 10.0);
+        let grey =
+            |d: &mut Draws| Vec3::new(d.range(0.1, 1.0), d.range(0.1, 1.0), d.range(0.1, 1.0));
+        let (rho, le) = (grey(&mut draws), grey(&mut draws) * draws.decades(8.5, 9.0));
+        let to = (y - p).as_dvec3();
+        let d2 = to.length_squared();
+        let wi = to / d2.sqrt();
+        let (cos, cos_l) = (n.as_dvec3().dot(wi), -n_light.as_dvec3().dot(wi));
+        let want = (rho * le).as_dvec3() / PI * (area as f64 / d2) * cos * cos_l;
+        let got = f(p, n, rho, y, n_light, area, le, &|_, _| true).as_dvec3();
+        (
+            (got - want).abs_max() / want.max_element(),
+            format!(
+                "p {p}, n {n}, ρ {rho}, y {y}, n_light {n_light}, A {area}, Le {le} (a bright \
+                 light in a vast scene: Le · A is past f32's largest number, the answer is \
+                 not): got {got}, expected {want}"
             ),
         )
     }))

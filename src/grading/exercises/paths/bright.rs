@@ -1,4 +1,5 @@
-//! The path capstone's brighter furnace (albedo 0.97): paths of 33
+//! The path capstone's brighter furnace (albedo 0.97, emission 10² to
+//! 10⁵ times the run's furnace's): paths of 33
 //! bounces on average and a few of several hundred, where what a path
 //! loses or gains at each bounce adds up. A denominator nudged "to be
 //! safe" (pdf + 10⁻⁴ loses 0.06 % a bounce, 2 % here) or a count that
@@ -22,7 +23,11 @@ const PATHS: u64 = 200_000;
 /// Le / (1 − ρ) and no depth ends many paths at once; else (error, what
 /// was seen, the symptom).
 pub fn bright_furnace(f: PathFn) -> Option<(f64, String, Option<Symptom>)> {
+    // Its emission the run's times 10² to 10⁵ (radiance has no scale):
+    // a light sample then brings hundreds to millions, and a clamp on what
+    // one brings, at whatever level a student thinks bright, is a bias.
     let (_, le) = furnace_of_run();
+    let le = le * crate::exercises::draws::Draws::new(616).decades(2.0, 5.0);
     let scene = PathScene::furnace(ALBEDO, le);
     let run = trace_furnace(f, &scene, PATHS, 613 ^ crate::run_seed());
     // A depth that ends paths piles them up at the longest length, here

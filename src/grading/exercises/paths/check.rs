@@ -26,7 +26,7 @@
 use glam::{DVec3, Vec3};
 
 use super::open::{
-    hidden_emission, BLACK_SURFACE, BOUNCE_EMISSION_ADDED, HIDDEN_EMISSION_PATHS,
+    hidden_emission, BLACK_SURFACE, BOUNCE_EMISSION_ADDED, ENDS_OF_RANGE, HIDDEN_EMISSION_PATHS,
     LIGHT_FROM_BEHIND, LIGHT_THROUGH_OCCLUDER, PATHS_BEFORE, UNBOUNDED_THROUGHPUT,
 };
 use super::{reset_tally, tally, PathFn, PathScene, Tally, BOUNCE_BUDGET};
@@ -96,13 +96,14 @@ pub const CORNELL_DIFFERS: Symptom = Symptom {
 };
 
 /// Every symptom [`check_path_radiance`](super::check_path_radiance) can name.
-pub const SYMPTOMS: [Symptom; 18] = [
+pub const SYMPTOMS: [Symptom; 19] = [
     NO_ROULETTE,
     UNBOUNDED_THROUGHPUT,
     LIGHT_FROM_BEHIND,
     LIGHT_THROUGH_OCCLUDER,
     BOUNCE_EMISSION_ADDED,
     BLACK_SURFACE,
+    ENDS_OF_RANGE,
     PATHS_BEFORE,
     DEPTH_CAP,
     NO_FIRST_EMISSION,

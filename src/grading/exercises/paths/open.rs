@@ -31,6 +31,7 @@ pub fn contract_failure(f: PathFn) -> Option<(String, Symptom)> {
         .or_else(|| bounce_emission_added(f).map(|d| (d, BOUNCE_EMISSION_ADDED)))
         .or_else(|| emission_without_light_sample(f).map(|d| (d, BOUNCE_EMISSION_ADDED)))
         .or_else(|| black_furnace(f).map(|d| (d, BLACK_SURFACE)))
+        .or_else(|| ends_of_range(f).map(|d| (d, ENDS_OF_RANGE)))
         .or_else(|| same_ray_other_scene(f).map(|d| (d, PATHS_BEFORE)))
 }
 
@@ -96,6 +97,87 @@ pub fn black_furnace(f: PathFn) -> Option<String> {
              more, yet {} of 2000 paths were not finite and their mean is {mean:.4}",
             run.non_finite
         )
+    })
+}
+
+/// A radiance that is not finite where `rng()` gives an end of [0, 1).
+pub const ENDS_OF_RANGE: Symptom = Symptom {
+    name: "a number at an end of [0, 1)",
+};
+
+/// Path i's camera ray (origin, direction), in [`ends_of_range`].
+type RayOf<'a> = dyn Fn(u64) -> (Vec3, Vec3) + 'a;
+
+/// `rng()` may give any number of [0, 1), its ends too. Here an eighth of
+/// the numbers are exactly 0 and an eighth the largest below 1
+/// (1 − 2⁻²⁴), the rest uniform, in the run's furnace, in a furnace of
+/// black walls (2,000 paths each) and in the Cornell box (2,048 camera
+/// rays): a cosine sample from a 0 can lie in the tangent plane, where its
+/// density is 0 (in the box such a bounce runs along a wall to the next),
+/// and roulette with q = 0 (a black wall's throughput) must end the path
+/// even when the number is 0. Every radiance finite, and the black
+/// furnace's Le.
+pub fn ends_of_range(f: PathFn) -> Option<String> {
+    use crate::core::sampling::random;
+    let (albedo, le) = super::furnace_of_run();
+    let seed = 617 ^ crate::run_seed();
+    let box_scene = crate::exercises::images::scene("cornell-box.toml");
+    let camera = crate::ch1_projection::camera::Camera::of(&box_scene)
+        .with_resolution(32, 32)
+        .expect("a valid camera");
+    let furnace_ray = |i: u64| (super::FURNACE_ORIGIN, super::furnace_path(seed, i).0);
+    let camera_ray = |i: u64| {
+        let (x, y) = ((i / 2 % 32) as f32, (i / 64) as f32);
+        let ray = camera.ray(glam::Vec2::new(x + 0.5, y + 0.5));
+        (ray.origin, ray.dir)
+    };
+    let runs: [(&str, PathScene, &RayOf, bool); 3] = [
+        (
+            "the run's closed furnace",
+            PathScene::furnace(albedo, le),
+            &furnace_ray,
+            false,
+        ),
+        (
+            "a furnace of black walls",
+            PathScene::furnace(0.0, le),
+            &furnace_ray,
+            true,
+        ),
+        (
+            "the Cornell box",
+            PathScene::new(&box_scene),
+            &camera_ray,
+            false,
+        ),
+    ];
+    runs.iter().find_map(|(what, scene, ray, black)| {
+        (0..2_048u64).find_map(|i| {
+            let (origin, dir) = ray(i);
+            let mut k = 0u64;
+            let mut rng = || {
+                k += 1;
+                match random(seed, i, 1, k) {
+                    c if c < 0.125 => 0.0,
+                    c if c < 0.25 => 1.0 - f32::EPSILON / 2.0,
+                    _ => random(seed, i, 2, k).min(1.0 - f32::EPSILON),
+                }
+            };
+            super::reset_tally();
+            let l = f(scene, origin, dir, &mut rng);
+            let off = (l - le).abs().max_element() > 1e-6 * le.max_element();
+            (!l.is_finite() || (*black && off)).then(|| {
+                format!(
+                    "{what} with rng() giving 0 or 1 - 2^-24 for a quarter of its numbers (both \
+                     are numbers of [0, 1)): a path's radiance was {l}{}",
+                    if *black {
+                        format!(" (albedo 0, Le {le:.2}: every path sees Le)")
+                    } else {
+                        String::new()
+                    }
+                )
+            })
+        })
     })
 }
 

@@ -42,7 +42,8 @@
 //!   throughput stays bounded) and survivors divided by it. No fixed
 //!   maximum depth that cuts off light (a path over 1,000 bounces fails:
 //!   the loop does not end);
-//! * finite radiance (no inf, no NaN).
+//! * finite radiance (no inf, no NaN), whatever numbers of [0, 1)
+//!   `rng()` gives, 0 included.
 //!
 //! Hints: `cargo grade --hint ch6/path_radiance`.
 //! Grade it with: `cargo grade ch6`, and see it
