@@ -110,9 +110,9 @@ type RayOf<'a> = dyn Fn(u64) -> (Vec3, Vec3) + 'a;
 
 /// `rng()` may give any number of [0, 1), its ends too. Here an eighth of
 /// the numbers are exactly 0 and an eighth the largest below 1
-/// (1 − 2⁻²⁴), the rest uniform, in the run's furnace, in a furnace of
-/// black walls (2,000 paths each) and in the Cornell box (2,048 camera
-/// rays): a cosine sample from a 0 can lie in the tangent plane, where its
+/// (1 − 2⁻²⁴), the rest uniform, 2,048 paths in each of the run's
+/// furnace, a furnace of black walls and the Cornell box (two through the
+/// centre of each of 32 × 32 pixels): a cosine sample from a 0 can lie in the tangent plane, where its
 /// density is 0 (in the box such a bounce runs along a wall to the next),
 /// and roulette with q = 0 (a black wall's throughput) must end the path
 /// even when the number is 0. Every radiance finite, and the black
