@@ -75,7 +75,24 @@ pub(super) fn eye_rays(f: TraceFn) -> (f64, String) {
             });
         }
     }
+    // Not a ray that passes a sphere within a few ε of its surface: a right
+    // march may stop there, within ε of it, where the ray itself misses.
+    rays.retain(|ray| {
+        let eps = ray.far.1 * 1e-4;
+        [ray.far, ray.near]
+            .into_iter()
+            .all(|(c, r)| !(0.0..8.0 * eps as f64).contains(&miss_by(ray.eye, ray.dir, c, r)))
+    });
     worst_drawn(rays.iter().map(|ray| eye_ray(f, ray)))
+}
+
+/// How far the ray from `o` along `d` passes outside the sphere (`c`,
+/// `r`), worked out in f64: its closest approach to the centre (ahead of
+/// `o`) less the radius; negative where it enters the sphere.
+fn miss_by(o: Vec3, d: Vec3, c: Vec3, r: f32) -> f64 {
+    let (oc, d) = ((c - o).as_dvec3(), d.as_dvec3());
+    let along = oc.dot(d).max(0.0);
+    (oc - d * along).length() - r as f64
 }
 
 /// One of [`eye_rays`]: its error (on the scale of the large sphere)
