@@ -137,6 +137,16 @@ impl Draws {
         d * scale * self.decades(0.0, decades)
     }
 
+    /// A colour whose channels are each in [0.1, 1): nowhere black, so an
+    /// answer is relative to a colour of its own size in every channel.
+    pub fn colour(&mut self) -> Vec3 {
+        Vec3::new(
+            self.range(0.1, 1.0),
+            self.range(0.1, 1.0),
+            self.range(0.1, 1.0),
+        )
+    }
+
     /// Two points `dist` apart, the second skimming a plane through the
     /// origin across a drawn axis in which the first lies: (the plane's
     /// unit normal, ± the axis; the first point, up to 10 `dist` from the

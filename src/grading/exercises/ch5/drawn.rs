@@ -12,13 +12,67 @@
 use std::cell::Cell;
 use std::f64::consts::PI;
 
-use glam::Vec3;
+use glam::{DVec3, Vec3};
 
 use crate::exercises::draws::{worst_drawn, Draws};
 use crate::exercises::AbsMax;
 
 /// Capstone 5's signature (the checks' `DirectFn`).
 type Direct = fn(Vec3, Vec3, Vec3, Vec3, Vec3, f32, Vec3, &dyn Fn(Vec3, Vec3) -> bool) -> Vec3;
+
+/// The estimator's closed form for the sample y (normal `n_light`, area
+/// `area`, emission `le`) seen from p (normal `n`, albedo `rho`), worked
+/// out in f64: cos θ at p, cos θl at the light, and what the light would
+/// bring with both cosines 1, ρ Le / π · A / d².
+fn closed_form(
+    (p, n, rho): (Vec3, Vec3, Vec3),
+    (y, n_light, area, le): (Vec3, Vec3, f32, Vec3),
+) -> (f64, f64, DVec3) {
+    let to = (y - p).as_dvec3();
+    let d2 = to.length_squared();
+    let wi = to / d2.sqrt();
+    let (cos, cos_l) = (n.as_dvec3().dot(wi), -n_light.as_dvec3().dot(wi));
+    (cos, cos_l, (rho * le).as_dvec3() / PI * area as f64 / d2)
+}
+
+/// `visible` for the segment from `p` to `y`: answers `!blocked`, and
+/// notes whether it was asked about any other segment.
+struct Visibility {
+    p: Vec3,
+    y: Vec3,
+    blocked: bool,
+    other: Cell<bool>,
+}
+
+impl Visibility {
+    fn new(p: Vec3, y: Vec3, blocked: bool) -> Visibility {
+        Visibility {
+            p,
+            y,
+            blocked,
+            other: Cell::new(false),
+        }
+    }
+
+    fn ask(&self, a: Vec3, b: Vec3) -> bool {
+        self.other
+            .set(self.other.get() || a != self.p || b != self.y);
+        !self.blocked
+    }
+
+    /// Whether it was asked about another segment.
+    fn asked_other(&self) -> bool {
+        self.other.get()
+    }
+
+    /// What a message says of that.
+    fn note(&self) -> &'static str {
+        match self.asked_other() {
+            true => " (visible was asked about another segment than p → y)",
+            false => "",
+        }
+    }
+}
 
 /// The worst drawn case of `f`: (error relative to what the light would
 /// bring facing p, what it was).
@@ -105,26 +159,17 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
             p[axis] = n_light[axis] * dist * draws.decades(-5.0, -2.0);
         }
         last = (!is_wide).then_some((y, n_light, blocked)).or(last);
-        let to = (y - p).as_dvec3();
-        let d2 = to.length_squared();
-        let wi = to / d2.sqrt();
-        let (cos, cos_l) = (n.as_dvec3().dot(wi), -n_light.as_dvec3().dot(wi));
+        let (cos, cos_l, facing) = closed_form((p, n, rho), (y, n_light, area, le));
         if cos.abs() < 1e-3 || (cos_l.abs() < 1e-3 && !exact_light) {
             return None;
         }
-        let facing = (rho * le).as_dvec3() / PI * area as f64 / d2;
         let want = if cos > 0.0 && cos_l > 0.0 && !blocked {
             facing * cos * cos_l
         } else {
-            glam::DVec3::ZERO
+            DVec3::ZERO
         };
-        let asked_other = Cell::new(false);
-        let visible = |a: Vec3, b: Vec3| {
-            if a != p || b != y {
-                asked_other.set(true);
-            }
-            !blocked
-        };
+        let seen = Visibility::new(p, y, blocked);
+        let visible = |a: Vec3, b: Vec3| seen.ask(a, b);
         let got = f(p, n, rho, y, n_light, area, le, &visible).as_dvec3();
         let scale = match exact_light && want.max_element() > 0.0 {
             true => want.max_element(),
@@ -133,7 +178,7 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
         .max(f64::MIN_POSITIVE);
         // Where the answer is 0 (a back face, below p's horizon, blocked:
         // each well decided here), exactly 0.
-        let err = if asked_other.get() || (want == glam::DVec3::ZERO && got != glam::DVec3::ZERO) {
+        let err = if seen.asked_other() || (want == DVec3::ZERO && got != DVec3::ZERO) {
             f64::INFINITY
         } else {
             (got - want).abs_max() / scale
@@ -161,11 +206,7 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
                 "p {p}, n {n}, ρ {rho}, y {y}, n_light {n_light}, A {area}, Le {le}{}: got {got}, \
                  expected {want}{}",
                 if blocked { ", blocked" } else { "" },
-                if asked_other.get() {
-                    " (visible was asked about another segment than p → y)"
-                } else {
-                    ""
-                }
+                seen.note()
             ),
         ))
     }))
@@ -203,30 +244,14 @@ pub(super) fn skimming_cases(f: Direct) -> (f64, String) {
             true => (over, facing(over, on), on, flat),
         };
         let area = dist * dist * draws.decades(-2.0, 1.0);
-        let grey =
-            |d: &mut Draws| Vec3::new(d.range(0.1, 1.0), d.range(0.1, 1.0), d.range(0.1, 1.0));
-        let (rho, le) = (
-            grey(&mut draws),
-            grey(&mut draws) * draws.decades(-1.0, 2.0),
-        );
-        let to = (y - p).as_dvec3();
-        let d2 = to.length_squared();
-        let wi = to / d2.sqrt();
-        let (cos, cos_l) = (n.as_dvec3().dot(wi), -n_light.as_dvec3().dot(wi));
-        let want = (rho * le).as_dvec3() / PI * area as f64 / d2 * cos * cos_l;
-        let asked_other = Cell::new(false);
-        let visible = |a: Vec3, b: Vec3| {
-            asked_other.set(asked_other.get() || a != p || b != y);
-            true
-        };
-        let got = f(p, n, rho, y, n_light, area, le, &visible).as_dvec3();
-        let err = match (asked_other.get(), want.max_element() > 0.0) {
-            (true, _) => f64::INFINITY,
-            (false, true) => (got - want).abs_max() / want.max_element(),
-            (false, false) => match got == glam::DVec3::ZERO {
-                true => 0.0,
-                false => f64::INFINITY,
-            },
+        let (rho, le) = (draws.colour(), draws.colour() * draws.decades(-1.0, 2.0));
+        let (cos, cos_l, full) = closed_form((p, n, rho), (y, n_light, area, le));
+        let want = full * cos * cos_l;
+        let seen = Visibility::new(p, y, false);
+        let got = f(p, n, rho, y, n_light, area, le, &|a, b| seen.ask(a, b)).as_dvec3();
+        let err = match seen.asked_other() {
+            true => f64::INFINITY,
+            false => super::relative_or_zero(got, want),
         };
         (
             err,
@@ -238,11 +263,7 @@ pub(super) fn skimming_cases(f: Direct) -> (f64, String) {
                 } else {
                     "p's plane"
                 },
-                if asked_other.get() {
-                    " (visible was asked about another segment than p → y)"
-                } else {
-                    ""
-                }
+                seen.note()
             ),
         )
     }))
@@ -268,17 +289,12 @@ pub(super) fn vast_cases(f: Direct) -> (f64, String) {
         };
         let (n, n_light) = (facing(p, y), facing(y, p));
         let area = s * s * draws.range(5.0, 10.0);
-        let grey =
-            |d: &mut Draws| Vec3::new(d.range(0.1, 1.0), d.range(0.1, 1.0), d.range(0.1, 1.0));
-        let (rho, le) = (grey(&mut draws), grey(&mut draws) * draws.decades(8.5, 9.0));
-        let to = (y - p).as_dvec3();
-        let d2 = to.length_squared();
-        let wi = to / d2.sqrt();
-        let (cos, cos_l) = (n.as_dvec3().dot(wi), -n_light.as_dvec3().dot(wi));
-        let want = (rho * le).as_dvec3() / PI * (area as f64 / d2) * cos * cos_l;
+        let (rho, le) = (draws.colour(), draws.colour() * draws.decades(8.5, 9.0));
+        let (cos, cos_l, full) = closed_form((p, n, rho), (y, n_light, area, le));
+        let want = full * cos * cos_l;
         let got = f(p, n, rho, y, n_light, area, le, &|_, _| true).as_dvec3();
         (
-            (got - want).abs_max() / want.max_element(),
+            super::relative_or_zero(got, want),
             format!(
                 "p {p}, n {n}, ρ {rho}, y {y}, n_light {n_light}, A {area}, Le {le} (a bright \
                  light in a vast scene: Le · A is past f32's largest number, the answer is \

@@ -5,7 +5,7 @@
 use glam::Vec3;
 
 use super::super::draws::{fold_drawn, worst_drawn, Draws};
-use super::{off, rel, INVERSE_SQUARE, POINT_BEHIND};
+use super::{off, rel, relative_or_zero, INVERSE_SQUARE, POINT_BEHIND};
 use crate::cases::{self, unit, v3, V3};
 use crate::exercise::{Check, Symptom};
 use crate::exercises::{stateless, AbsMax};
@@ -212,11 +212,7 @@ fn skimming(f: PointFn) -> (f64, String) {
         if draws.unit() < 0.2 {
             light -= n * n.dot(light);
         }
-        let grey = Vec3::new(
-            draws.range(0.1, 1.0),
-            draws.range(0.1, 1.0),
-            draws.range(0.1, 1.0),
-        );
+        let grey = draws.colour();
         // A fifth of the lights 10³⁷ to 10^38.5 (f32's largest is 3.4·10³⁸):
         // E stays far below it at these cosines, I / r² may not.
         let intensity = match draws.unit() < 0.2 {
@@ -227,13 +223,8 @@ fn skimming(f: PointFn) -> (f64, String) {
         let cos = n.as_dvec3().dot(to) / to.length();
         let want = intensity.as_dvec3() * cos / to.length_squared();
         let got = f(intensity, light, p, n);
-        let err = match want.max_element() > 0.0 {
-            true => (got.as_dvec3() - want).abs().max_element() / want.max_element(),
-            false if got == Vec3::ZERO => 0.0,
-            false => f64::INFINITY,
-        };
         (
-            if err.is_nan() { f64::INFINITY } else { err },
+            relative_or_zero(got.as_dvec3(), want),
             format!(
                 "I {intensity}, light at {light}, p {p}, n {n} (the light skims the surface: cos θ \
                  = {cos:.2e}): got {got}, expected {}",
