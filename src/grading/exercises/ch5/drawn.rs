@@ -35,6 +35,18 @@ fn closed_form(
     (cos, cos_l, (rho * le).as_dvec3() / PI * area as f64 / d2)
 }
 
+/// A drawn answer's error relative to the answer itself (worked out in
+/// f64): per channel over its largest, infinite where a channel is NaN;
+/// where the answer is 0, none if `got` is exactly 0 and infinite
+/// otherwise.
+pub(super) fn relative_or_zero(got: DVec3, want: DVec3) -> f64 {
+    match want.max_element() > 0.0 {
+        true => (got - want).abs_max() / want.max_element(),
+        false if got == DVec3::ZERO => 0.0,
+        false => f64::INFINITY,
+    }
+}
+
 /// `visible` for the segment from `p` to `y`: answers `!blocked`, and
 /// notes whether it was asked about any other segment.
 struct Visibility {
@@ -251,7 +263,7 @@ pub(super) fn skimming_cases(f: Direct) -> (f64, String) {
         let got = f(p, n, rho, y, n_light, area, le, &|a, b| seen.ask(a, b)).as_dvec3();
         let err = match seen.asked_other() {
             true => f64::INFINITY,
-            false => super::relative_or_zero(got, want),
+            false => relative_or_zero(got, want),
         };
         (
             err,
@@ -294,7 +306,7 @@ pub(super) fn vast_cases(f: Direct) -> (f64, String) {
         let want = full * cos * cos_l;
         let got = f(p, n, rho, y, n_light, area, le, &|_, _| true).as_dvec3();
         (
-            super::relative_or_zero(got, want),
+            relative_or_zero(got, want),
             format!(
                 "p {p}, n {n}, ρ {rho}, y {y}, n_light {n_light}, A {area}, Le {le} (a bright \
                  light in a vast scene: Le · A is past f32's largest number, the answer is \

@@ -97,18 +97,6 @@ fn rel(got: Vec3, want: Vec3) -> f64 {
     ((got - want).abs_max() / want.abs_max().max(1e-6)) as f64
 }
 
-/// A drawn answer's error relative to the answer itself (worked out in
-/// f64): per channel over its largest, infinite where a channel is NaN;
-/// where the answer is 0, none if `got` is exactly 0 and infinite
-/// otherwise.
-fn relative_or_zero(got: glam::DVec3, want: glam::DVec3) -> f64 {
-    match want.max_element() > 0.0 {
-        true => (got - want).abs_max() / want.max_element(),
-        false if got == glam::DVec3::ZERO => 0.0,
-        false => f64::INFINITY,
-    }
-}
-
 /// A hand case's error: relative to what was expected, or the size of
 /// what came back where nothing was.
 fn off(got: Vec3, want: Vec3) -> f64 {

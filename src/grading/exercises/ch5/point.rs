@@ -5,7 +5,8 @@
 use glam::Vec3;
 
 use super::super::draws::{fold_drawn, worst_drawn, Draws};
-use super::{off, rel, relative_or_zero, INVERSE_SQUARE, POINT_BEHIND};
+use super::drawn::relative_or_zero;
+use super::{off, rel, INVERSE_SQUARE, POINT_BEHIND};
 use crate::cases::{self, unit, v3, V3};
 use crate::exercise::{Check, Symptom};
 use crate::exercises::{stateless, AbsMax};
