@@ -4,6 +4,10 @@
 //! function `sdf`, starting at t = 0. The origin is outside (sdf(o) > 0).
 //!
 //! Contract (what the grader checks; it counts every call of `sdf`):
+//! * every call of `sdf` is at a point of the ray: o + t·d for the t the
+//!   march has reached, formed afresh (within 4 f32 ε · (|o| + t + |p|)
+//!   of the ray, however many steps the march takes and however far from
+//!   the world's origin it runs);
 //! * `Some(t)` for the first t the march reaches where
 //!   |sdf(o + t d)| < `epsilon` (hits to within ε of the true distance).
 //! * `None` when t is beyond `max_distance` before a hit. The point a

@@ -763,6 +763,9 @@ pub struct MarchKnobs {
     /// At the budget's last evaluation, tests the distance before the hit
     /// (thirtieth set: a loop whose last evaluation is tested after it).
     pub last_distance_first: bool,
+    /// The point advanced by p += d·dir, not formed as o + t·d (the
+    /// thirty-second set).
+    pub advanced_point: bool,
 }
 
 /// The solution of sphere_trace, departing as `k` says.
@@ -782,9 +785,15 @@ pub fn sphere_trace(
     } else {
         max_steps
     };
+    let mut p = origin;
     for step in 0..steps {
         let tf = t as f32;
-        let d = sdf(origin + tf * dir);
+        let d = sdf(if k.advanced_point {
+            p
+        } else {
+            origin + tf * dir
+        });
+        p += d * dir;
         let tested = !(k.first_untested && step == 0);
         if k.last_distance_first && step + 1 == steps && tf > max_distance {
             return None;

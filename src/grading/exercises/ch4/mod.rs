@@ -15,6 +15,7 @@ mod contract;
 mod contract_symptoms;
 mod eyes;
 mod gradient;
+mod on_ray;
 mod probe;
 mod scene;
 mod walls;
@@ -328,6 +329,7 @@ pub fn check_sphere_trace(f: TraceFn) -> Check {
     fold_drawn(&mut error, &mut detail, drawn);
     fold_drawn(&mut error, &mut detail, eye_rays(f));
     fold_drawn(&mut error, &mut detail, beyond_limit(f));
+    fold_drawn(&mut error, &mut detail, on_ray::long_marches(f));
     // Any ε > 0 holds, however small: with ε = 10⁻³⁰ (whose square is 0
     // in f32) the first step from 5 away lands exactly on the unit sphere,
     // where f is 0.

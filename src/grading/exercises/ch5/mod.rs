@@ -4,6 +4,7 @@
 mod area_pdf;
 mod direct;
 mod drawn;
+mod ends;
 mod grid;
 mod point;
 mod references;
@@ -47,7 +48,7 @@ pub fn exercises() -> Vec<Exercise> {
             chapter: 5,
             name: "cosine_hemisphere",
             file: "chapters/ch5-reflection/exercises/cosine_hemisphere.rs",
-            symptoms: &[NOT_ON_HEMISPHERE, COSINE_PDF, NOT_COSINE],
+            symptoms: &[NOT_ON_HEMISPHERE, COSINE_PDF, NOT_COSINE, COSINE_GAP],
             reference: || check_cosine_hemisphere(reference_cosine),
         },
         Exercise {
@@ -214,9 +215,10 @@ fn lambert_brdf_values(f: BrdfFn) -> Check {
 /// Statistical: every sample is a unit direction with z ≥ 0 whose pdf is
 /// z/π; over 40,000 samples, E(z) = 2/3, E(x) = E(y) = 0, P(z < 1/2)
 /// = 1/4 (for cos θ/π, P(cos θ < c) = c²), and the azimuth uniform (its
-/// first harmonics average to 0); over 160,000 more, P(z < 0.03) = 0.03²
-/// (the directions reach the rim) and P(x² + y² < s) = s for a small cap
-/// about the pole; and a grid of u spread evenly over
+/// first harmonics average to 0); over 640,000 more, P(z < 0.03) = 0.03²
+/// (the directions reach the rim), P(x² + y² < s) = s for a small cap
+/// about the pole, and no gap in z² or the azimuth wider than chance
+/// leaves ([`ends::ends`]); and a grid of u spread evenly over
 /// the hemisphere (`grid_spread`). The error is the worst
 /// deviation in standard errors (5 passes), or a large number when a
 /// sample is not even a direction on the hemisphere.
@@ -370,44 +372,8 @@ fn cosine_hemisphere_values(f: CosineFn) -> Check {
         }
     }
     let m = n as f64;
-    // And the two ends of the hemisphere, from 160,000 numbers of their
-    // own: for cos θ/π, P(z < 0.03) = 0.03² (a map that stops short of the
-    // rim has none; 144 expected), and P(x² + y² < s) = s for the cap
-    // about the pole of s = 2.5·10⁻⁴ (40 expected; a map that sends the
-    // first 10⁻³ of its numbers straight up puts 160 there).
-    let ends_n = 160_000u64;
-    let (mut rim, mut cap) = (0u64, 0u64);
-    for i in 0..ends_n {
-        let u = Vec2::new(
-            random(seed ^ 0x9a2e, i, 0, 0),
-            random(seed ^ 0x9a2e, i, 0, 1),
-        );
-        let w = f(u).0;
-        rim += u64::from(w.z < 0.03);
-        cap += u64::from(w.x * w.x + w.y * w.y < 2.5e-4);
-    }
-    // Each share's deviation in standard errors, and what it says.
-    let share = |count: u64, p: f64, what: &str, why: &str| {
-        let got = count as f64 / ends_n as f64;
-        let z = (got - p).abs() / (p * (1.0 - p) / ends_n as f64).sqrt();
-        let detail =
-            format!("{what} = {got:.6}, expected {p:.6} ({z:.1} standard errors off): {why}");
-        (z, detail)
-    };
-    let ends = [
-        share(
-            rim,
-            0.0009,
-            "P(z < 0.03)",
-            "the directions must reach the rim",
-        ),
-        share(
-            cap,
-            2.5e-4,
-            "P(x² + y² < 0.00025)",
-            "the directions about the pole must spread as cos θ / π too",
-        ),
-    ];
+    // The rim, the pole and the finest scale, from numbers of their own.
+    let ends = ends::ends(|u| f(u).0, seed);
     // Standard deviations under cos θ/π: x and y have variance 1/4, z has
     // 1/2 − 4/9, the indicator 1/4 · 3/4, each harmonic of a uniform
     // azimuth 1/2.
@@ -433,12 +399,13 @@ fn cosine_hemisphere_values(f: CosineFn) -> Check {
             })
             .chain(ends),
     );
+    let gap = detail.starts_with(ends::GAP);
     Check {
         error,
         tolerance: 5.0,
         detail,
         images: None,
-        symptom: (error > 5.0).then_some(NOT_COSINE),
+        symptom: (error > 5.0).then_some(if gap { COSINE_GAP } else { NOT_COSINE }),
     }
 }
 

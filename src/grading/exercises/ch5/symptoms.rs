@@ -21,6 +21,10 @@ pub const COSINE_PDF: Symptom = Symptom {
 pub const NOT_COSINE: Symptom = Symptom {
     name: "directions not distributed as cos θ",
 };
+/// A band of directions, however thin, never drawn.
+pub const COSINE_GAP: Symptom = Symptom {
+    name: "a band of directions never drawn",
+};
 /// The inverse-square law missed.
 pub const INVERSE_SQUARE: Symptom = Symptom {
     name: "the inverse-square law",
