@@ -131,9 +131,13 @@ part "$out/ch4-stiff.txt" "  - case: sphere 1e5" "" "$out/ch4-stiff-2.txt"
 section "$out/ch6-cornell-box-report.txt" "Strategies:" "$out/ch6-strategies.txt"
 section "$out/ch6-cornell-box-report.txt" "Stiff and extreme cases" "$out/ch6-stiff.txt"
 # The appendix's benchmark: the path tracer's speed and error at 256x256,
-# 64 spp (the default roulette, and roulette from the third scattering).
+# 64 spp (the default roulette, roulette from the third scattering, and
+# roulette's two scales).
 "$bin/ch6" --bench --threads 2 > "$out/ch6-bench.txt"
 "$bin/ch6" --bench --threads 2 --rr-after 3 > "$out/ch6-bench-rr-after-3.txt"
+# Roulette's scale, 1 and 2, for both samplers (each sampler's default is one of them).
+"$bin/ch6" --bench --threads 2 --rr-scale 1 > "$out/ch6-bench-rr-scale-1.txt"
+"$bin/ch6" --bench --threads 2 --rr-scale 2 > "$out/ch6-bench-rr-scale-2.txt"
 # Both engines on three scene sizes (the appendix's fast-engine section).
 "$bin/ch6" --bench-scenes --threads 2 > "$out/ch6-bench-scenes.txt"
 # The benchmark on the glass-ball box (its stored reference), where the

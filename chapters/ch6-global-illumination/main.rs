@@ -80,6 +80,12 @@ struct Cli {
     /// path before it gathers light of this bounce count k or more.
     #[arg(long, default_value_t = 1)]
     rr_after: u32,
+    /// Russian roulette's scale s: a path survives with probability
+    /// min(1, s · max β), so roulette plays once β falls below 1/s
+    /// (default: the sampler's own, 1 for independent numbers and 2 for
+    /// Sobol points).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    rr_scale: Option<u32>,
     /// Which engine traces the paths; both trace the same paths, to the
     /// last bits of a sine (see the book's appendix "Making it fast").
     #[arg(long, value_enum, default_value = "fast")]
@@ -134,6 +140,7 @@ fn main() -> ExitCode {
     };
     stage.path.max_bounces = (!cli.unlimited).then_some(cli.max_bounces);
     stage.path.rr_min_bounce = cli.rr_after;
+    stage.path.rr_scale = cli.rr_scale;
     stage.spp_per_pass = cli.spp_per_pass;
     stage.engine = match cli.engine {
         EngineArg::Fast => raystep::fast::FAST,

@@ -34,59 +34,8 @@ use crate::ch5_reflection::world::{Interaction, World};
 use super::layers::{slot_of, Contributions};
 use super::path_events::{DirectLight, Emission, PathEvent};
 use super::sampler::PathSampler;
+pub use super::settings::{roulette_cannot_end, PathSettings, SAFETY_BOUNCES};
 use super::vertex::{sample_direction, Step, Vertex};
-
-/// With "unlimited" bounces only Russian roulette ends a path; a path
-/// whose next bounce count would exceed this ends anyway (counted in
-/// [`PathStats::cut`]), so a scene of perfect mirrors cannot hang a render.
-/// With ρ = 0.999 the chance of reaching it is about e^-65.
-pub const SAFETY_BOUNCES: u32 = (1 << 16) - 1;
-
-/// Whether Russian roulette can never end a path in `scene`: every
-/// material keeps all the light it reflects in every channel (reflectance
-/// 1, or glass), so the survival probability, the throughput's largest
-/// channel, never drops below 1. Paths then end only by leaving the scene;
-/// in a closed one, each runs to [`SAFETY_BOUNCES`].
-pub fn roulette_cannot_end(scene: &crate::scene::Scene) -> bool {
-    use crate::scene::file::MaterialKind;
-    !scene.materials.is_empty()
-        && scene
-            .materials
-            .iter()
-            .all(|m| m.kind == MaterialKind::Glass || m.reflectance.min_element() >= 1.0)
-}
-
-/// How paths are traced.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct PathSettings {
-    /// Which rung of the ladder: how directions are drawn and light found.
-    pub strategy: Strategy,
-    /// The largest bounce count k a path may contribute to; `None`:
-    /// unlimited, Russian roulette alone ends paths.
-    pub max_bounces: Option<u32>,
-    /// Russian roulette may end a path before it gathers light of this
-    /// bounce count or more (1: direct light is never cut; `--rr-after`).
-    pub rr_min_bounce: u32,
-}
-
-impl PathSettings {
-    /// The largest bounce count a path gathers.
-    pub fn bounce_limit(&self) -> u32 {
-        self.max_bounces
-            .unwrap_or(SAFETY_BOUNCES)
-            .min(SAFETY_BOUNCES)
-    }
-}
-
-impl Default for PathSettings {
-    fn default() -> Self {
-        PathSettings {
-            strategy: Strategy::Mis,
-            max_bounces: Some(16),
-            rr_min_bounce: 1,
-        }
-    }
-}
 
 /// Counts from tracing.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -168,7 +117,8 @@ pub fn trace_path(
         // 4. Russian roulette: survive with probability q, then divide by q.
         // q reads β without glass's η² (see `Path::eta_scale`).
         if k + 1 >= settings.rr_min_bounce {
-            let q = (path.beta * path.eta_scale).max_element().min(1.0);
+            let s = settings.rr_scale_for(sampler.kind());
+            let q = survival_probability(path.beta * path.eta_scale, s);
             let dies = sampler.next() >= q;
             out.layers.note(PathEvent::Roulette { q, survived: !dies }); // tell a listener (the inspector)
             if dies {
@@ -185,6 +135,16 @@ pub fn trace_path(
 }
 // ANCHOR_END: trace_path_roulette
 // ANCHOR_END: trace_path
+
+/// Russian roulette's survival probability for the throughput `beta`
+/// (without refraction's η²) and the scale `s`: q = min(1, s · max β).
+/// The path then goes on with β / q, so on average it carries β: no bias
+/// whatever s is; s only trades noise for time.
+// ANCHOR: survival_probability
+pub fn survival_probability(beta: Vec3, s: u32) -> f32 {
+    (beta.max_element() * s as f32).min(1.0)
+}
+// ANCHOR_END: survival_probability
 
 /// A path under way: how it is traced, its throughput, and what the
 /// emission its current ray finds must know about the vertex it left.

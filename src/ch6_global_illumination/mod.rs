@@ -7,6 +7,7 @@
 //! |---|---|
 //! | the rendering equation, one light path per sample, bounce by bounce | [`integrator`] |
 //! | the simplest path tracer on its own: a uniform random walk | [`random_walk`](mod@random_walk) |
+//! | how paths are traced: bounce limit, Russian roulette's start and scale | [`settings`] |
 //! | where a path's light goes: one layer per bounce count | [`layers`] |
 //! | one vertex of a path and the direction it goes on in | [`vertex`] |
 //! | where a path's random numbers come from (independent, Sobol) | [`sampler`] |
@@ -37,6 +38,7 @@ pub mod reference;
 pub mod report;
 pub mod sampler;
 pub mod scenes;
+pub mod settings;
 pub mod stability;
 pub mod stage;
 pub mod studies;

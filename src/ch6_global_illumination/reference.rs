@@ -414,9 +414,9 @@ pub fn make_reference(
     let secs = t.elapsed().as_secs_f64();
     let meta = format!(
         "scene = {}\ncontent = {}\ntriangles = {}\nwidth = {}\nheight = {}\nspp = {spp}\nseed = {}\n\
-         estimator = {}\nsampler = {}\nmax_bounces = {}\nrr_after = {}\npaths = {}\nseconds = {secs:.1}\n\
+         estimator = {}\nsampler = {}\nmax_bounces = {}\nrr_after = {}\nrr_scale = {}\npaths = {}\nseconds = {secs:.1}\n\
          threads = {}\ncommand = cargo run --release --bin ch6 -- --make-reference{} --width {} --height {} --spp {spp} \
-         --seed {} --estimator {} --sampler {} {} --rr-after {}\n",
+         --seed {} --estimator {} --sampler {} {} --rr-after {} --rr-scale {}\n",
         scene.name,
         scene.content_hash(),
         scene.triangle_count(),
@@ -427,6 +427,7 @@ pub fn make_reference(
         sampler.name(),
         path.max_bounces.map_or("unlimited".into(), |k| k.to_string()),
         path.rr_min_bounce,
+        path.rr_scale_for(sampler),
         acc.stats.paths,
         rayon::current_num_threads(),
         scene_flag(scene),
@@ -438,6 +439,7 @@ pub fn make_reference(
         path.max_bounces
             .map_or("--unlimited".into(), |k| format!("--max-bounces {k}")),
         path.rr_min_bounce,
+        path.rr_scale_for(sampler),
     );
     let name = stem(&scene.name, acc.width, acc.height);
     let files = StoredReference::save(&acc, &reference_dir(), &name, &meta)?;

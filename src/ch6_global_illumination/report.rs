@@ -75,10 +75,7 @@ pub fn chapter_report(r: &ReportInputs) -> Report {
                     k.to_string()
                 }),
         ),
-        (
-            "Russian roulette",
-            format!("after {} scatterings", r.path.rr_min_bounce),
-        ),
+        ("Russian roulette", r.path.roulette_text(Some(r.sampler))),
         ("paths", st.paths.to_string()),
         ("rays (segments and shadow rays)", st.rays.to_string()),
         ("render time", format_seconds(r.seconds)),

@@ -28,6 +28,19 @@ impl SamplerKind {
             SamplerKind::Sobol => "sobol",
         }
     }
+
+    /// The Russian roulette scale s that suits these numbers (survive with
+    /// q = min(1, s · max β)), unless the settings say otherwise
+    /// ([`PathSettings::rr_scale`](super::integrator::PathSettings::rr_scale)):
+    /// 1 for independent numbers, 2 for Sobol points, whose other noise is
+    /// smaller, so the noise roulette adds costs them more (the book's
+    /// chapter 6 measures both, `ch6-roulette-scale.txt`).
+    pub fn roulette_scale(self) -> u32 {
+        match self {
+            SamplerKind::Independent => 1,
+            SamplerKind::Sobol => 2,
+        }
+    }
 }
 
 /// The numbers of one sample of one pixel, one dimension after another.
@@ -84,6 +97,11 @@ impl PathSampler {
             group: u64::MAX,
             group_values: [0.0; 4],
         }
+    }
+
+    /// Where its numbers come from.
+    pub fn kind(&self) -> SamplerKind {
+        self.kind
     }
 
     /// The sample index, when this sampler draws Sobol points from the

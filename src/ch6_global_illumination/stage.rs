@@ -115,6 +115,7 @@ pub const DEFAULT: GlobalIllumination = GlobalIllumination {
         strategy: Strategy::Mis,
         max_bounces: Some(16),
         rr_min_bounce: 1,
+        rr_scale: None,
     },
     sampler: SamplerKind::Sobol,
     spp_per_pass: 4,

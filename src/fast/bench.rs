@@ -54,13 +54,13 @@ pub fn bench(spp: u32, path: &PathSettings, scene: &Scene) -> crate::core::error
     let threads = rayon::current_num_threads();
     let mut t = Table::new(
         &format!(
-            "ch6 benchmark: {} {width}x{height}, {spp} spp, {}, {}, roulette after {} scatterings, \
+            "ch6 benchmark: {} {width}x{height}, {spp} spp, {}, {}, roulette {}, \
              {threads} threads (targets on the Cornell box: > 3.5M paths/s; RMSE²·s < 3e-4)",
             scene.name,
             path.max_bounces
                 .map_or("unlimited bounces".into(), |k| format!("up to {k} bounces")),
             path.strategy.name(),
-            path.rr_min_bounce,
+            path.roulette_text(None),
         ),
         &[
             "engine sampler",

@@ -75,10 +75,10 @@ pub(super) fn gather(
     lanes: &[Lane],
     ids: &[u32],
     hits: &[Interaction],
-    roulette: bool,
+    roulette: Option<u32>,
     x: &mut In8,
 ) -> [bool; W] {
-    x.roulette = roulette;
+    x.roulette = roulette.map(|s| s as f32);
     let mut lesson_light = [false; W];
     for j in 0..W {
         let jj = if j < ids.len() { j } else { 0 };

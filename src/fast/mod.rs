@@ -187,6 +187,7 @@ fn wave_row(world: &World, tree: &Bvh8, pass: &PassSpec, row: RowSums<'_>, stats
     } = row;
     let per_pixel = pass.count as usize;
     let chunk = (4096 / per_pixel).max(1);
+    let settings = (pass.settings, pass.settings.rr_scale_for(pass.sampler.0));
     let mut lanes = Vec::new();
     for x0 in (0..sum.len()).step_by(chunk) {
         let x1 = (x0 + chunk).min(sum.len());
@@ -207,7 +208,7 @@ fn wave_row(world: &World, tree: &Bvh8, pass: &PassSpec, row: RowSums<'_>, stats
                     caught: 0,
                 };
                 let mut outs = vec![empty; n];
-                wave::trace_paths(world, tree, &mut lanes, pass.settings, &mut outs, stats);
+                wave::trace_paths(world, tree, &mut lanes, settings, &mut outs, stats);
                 for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
                     for l in ls {
                         sum[x] += l.light;
@@ -222,7 +223,7 @@ fn wave_row(world: &World, tree: &Bvh8, pass: &PassSpec, row: RowSums<'_>, stats
                     caught: 0,
                 };
                 let mut outs = vec![empty; n];
-                wave::trace_paths(world, tree, &mut lanes, pass.settings, &mut outs, stats);
+                wave::trace_paths(world, tree, &mut lanes, settings, &mut outs, stats);
                 for (x, ls) in (x0..x1).zip(outs.chunks(per_pixel)) {
                     for path in ls {
                         for (acc, v) in layers[x].iter_mut().zip(path.light) {

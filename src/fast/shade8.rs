@@ -69,8 +69,8 @@ pub struct In8 {
     pub le: [[f32; W]; 3],
     /// Whether the light emits from both faces.
     pub two_sided: [bool; W],
-    /// Whether roulette is played at this vertex.
-    pub roulette: bool,
+    /// Roulette's scale s, where it is played at this vertex.
+    pub roulette: Option<f32>,
 }
 
 /// What the lanes give back.
@@ -325,7 +325,8 @@ fn next_direction(x: &In8, j: usize, v: &LaneVertex, o: &mut Out8) -> [f32; 3] {
 }
 
 /// Throughput and Russian roulette: β times f cos / pdf (ρ for a
-/// cosine-sampled Lambertian step), then survive with q = min(max β, 1).
+/// cosine-sampled Lambertian step), then survive with q = min(1, s · max β)
+/// (the lesson's `survival_probability`).
 #[inline(always)]
 fn roulette(x: &In8, j: usize, v: &LaneVertex, o: &mut Out8) {
     let beta = v.beta;
@@ -334,10 +335,14 @@ fn roulette(x: &In8, j: usize, v: &LaneVertex, o: &mut Out8) {
         beta[1] * x.rho[1][j],
         beta[2] * x.rho[2][j],
     ];
-    let q = max_element(nb).min(1.0);
-    let dies = x.roulette & (x.u[dim::ROULETTE][j] >= q);
-    o.survives[j] = !dies;
+    let Some(s) = x.roulette else {
+        o.survives[j] = true;
+        o.beta.iter_mut().zip(nb).for_each(|(b, v)| b[j] = v);
+        return;
+    };
+    let q = (max_element(nb) * s).min(1.0);
+    o.survives[j] = x.u[dim::ROULETTE][j] < q;
     for a in 0..3 {
-        o.beta[a][j] = if x.roulette { nb[a] / q } else { nb[a] };
+        o.beta[a][j] = nb[a] / q;
     }
 }

@@ -7,7 +7,7 @@ use glam::{Vec2, Vec3};
 
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch5_reflection::world::{Interaction, World};
-use crate::ch6_global_illumination::integrator::{direct_light, PathOut};
+use crate::ch6_global_illumination::integrator::{direct_light, survival_probability, PathOut};
 use crate::ch6_global_illumination::layers::Contributions;
 use crate::ch6_global_illumination::vertex::{sample_direction, Vertex};
 
@@ -17,7 +17,7 @@ use super::shade8::{dim, Out8};
 
 /// A vertex the lanes do not shade, where light of bounce count `k`
 /// scatters: steps 2 to 4 of the lesson's `trace_path` (direct light, the
-/// next direction, and roulette where `roulette` says it plays), with the
+/// next direction, and roulette with the scale `roulette` holds, where it plays), with the
 /// lesson's functions and this vertex's numbers, the ones `trace_path`
 /// draws there. Returns whether the path goes on (then `lane.ray` is its
 /// next ray).
@@ -26,7 +26,7 @@ pub(super) fn lesson_vertex<C: Contributions>(
     lane: &mut Lane,
     it: &Interaction,
     k: u32,
-    roulette: bool,
+    roulette: Option<u32>,
     out: &mut PathOut<'_, C>,
 ) -> bool {
     let Some(v) = Vertex::at(world, it, -lane.ray.dir) else {
@@ -43,8 +43,8 @@ pub(super) fn lesson_vertex<C: Contributions>(
         return false;
     };
     path.scatter(&v, k, &step);
-    if roulette {
-        let q = (path.beta * path.eta_scale()).max_element().min(1.0);
+    if let Some(s) = roulette {
+        let q = survival_probability(path.beta * path.eta_scale(), s);
         if u[dim::ROULETTE] >= q {
             return false;
         }

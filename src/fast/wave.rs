@@ -133,8 +133,8 @@ impl Queues {
 #[derive(Clone, Copy)]
 struct Round {
     k: u32,
-    /// Whether Russian roulette plays at its vertices.
-    roulette: bool,
+    /// Russian roulette's scale s, where roulette plays at its vertices.
+    roulette: Option<u32>,
     /// Whether its paths end at the bounce limit instead (and whether
     /// those count as cut, without `--max-bounces`).
     over_limit: bool,
@@ -145,12 +145,13 @@ struct Round {
 /// [`camera_lanes`](super::starts::camera_lanes)), adding path i's light
 /// to `outs[lanes[i].out]` (which must hold one entry per path): one sum,
 /// or one per bounce layer. Each round extends every live path by one
-/// bounce, in three phases: closest hits, shading, shadow rays.
+/// bounce, in three phases: closest hits, shading, shadow rays. Roulette
+/// plays with the scale `rr_scale` (the settings' for the lanes' numbers).
 pub(super) fn trace_paths<C: Contributions>(
     world: &World,
     tree: &Bvh8,
     lanes: &mut [Lane],
-    settings: &PathSettings,
+    (settings, rr_scale): (&PathSettings, u32),
     outs: &mut [C],
     stats: &mut PathStats,
 ) {
@@ -161,7 +162,7 @@ pub(super) fn trace_paths<C: Contributions>(
     while !q.live.is_empty() {
         let round = Round {
             k,
-            roulette: k + 1 >= settings.rr_min_bounce,
+            roulette: (k + 1 >= settings.rr_min_bounce).then_some(rr_scale),
             over_limit: k > settings.bounce_limit(),
             count_cut: settings.max_bounces.is_none(),
         };
@@ -338,7 +339,7 @@ impl<'a> Shade<'a> {
         // area light, roulette's before it plays): only those are made.
         let wanted = WANTED
             | u8::from(self.choose) << dim::CHOOSE
-            | u8::from(round.roulette) << dim::ROULETTE;
+            | u8::from(round.roulette.is_some()) << dim::ROULETTE;
         input.u = numbers(self.level, lanes, ids, k, wanted);
         let lesson_light = gather(world, self.level, lanes, ids, its, round.roulette, input);
         super::simd::shade8_at(self.level, input, o);

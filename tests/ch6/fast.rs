@@ -75,15 +75,20 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
     }
     let (mut compared, mut in_waves) = (0, 0);
     for scene in &scenes {
-        for (strategy, sampler) in [
-            (Strategy::Mis, SamplerKind::Sobol),
-            (Strategy::Mis, SamplerKind::Independent),
-            (Strategy::Bsdf, SamplerKind::Independent),
-            (Strategy::Light, SamplerKind::Sobol),
-            (Strategy::Uniform, SamplerKind::Independent),
+        // Each sampler's own roulette scale, and each with the other's
+        // (and a larger one).
+        for (strategy, sampler, rr_scale) in [
+            (Strategy::Mis, SamplerKind::Sobol, None),
+            (Strategy::Mis, SamplerKind::Independent, None),
+            (Strategy::Mis, SamplerKind::Sobol, Some(1)),
+            (Strategy::Mis, SamplerKind::Independent, Some(4)),
+            (Strategy::Bsdf, SamplerKind::Independent, None),
+            (Strategy::Light, SamplerKind::Sobol, None),
+            (Strategy::Uniform, SamplerKind::Independent, None),
         ] {
             let path = PathSettings {
                 strategy,
+                rr_scale,
                 ..PathSettings::default()
             };
             let readable = render(scene, None, &path, sampler);
@@ -97,7 +102,7 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
             for &level in &levels {
                 let fast = render(scene, Some(level), &path, sampler);
                 let what = format!(
-                    "{} {} {} on {}",
+                    "{} {} {} {rr_scale:?} on {}",
                     scene.name,
                     strategy.name(),
                     sampler.name(),
@@ -115,7 +120,12 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
                 // a sine (so the odd path turns differently).
                 in_waves += 1;
                 let (worst, far) = distance(&first, &readable);
-                let what = format!("{} {} {}", scene.name, strategy.name(), sampler.name());
+                let what = format!(
+                    "{} {} {} {rr_scale:?}",
+                    scene.name,
+                    strategy.name(),
+                    sampler.name()
+                );
                 assert!(
                     far < 0.01 && worst < 0.05,
                     "{what}: worst {worst}, {far} of pixels"
@@ -129,7 +139,12 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
                 assert_eq!(first.stats.nonfinite, 0, "{what}");
             } else {
                 // The lesson's loop over the eight-wide tree: the same bytes.
-                let what = format!("{} {} {}", scene.name, strategy.name(), sampler.name());
+                let what = format!(
+                    "{} {} {} {rr_scale:?}",
+                    scene.name,
+                    strategy.name(),
+                    sampler.name()
+                );
                 assert_eq!(first.sum, readable.sum, "{what}");
                 assert_eq!(first.sum_sq, readable.sum_sq, "{what}");
                 assert_eq!(first.layers, readable.layers, "{what}");
@@ -137,10 +152,10 @@ fn both_engines_agree_on_every_scene_and_the_fast_one_on_every_simd_path() {
             }
         }
     }
-    assert_eq!(compared, scenes.len() * 5 * levels.len());
+    assert_eq!(compared, scenes.len() * 7 * levels.len());
     // The built-in box and the bunny at least go through the waves, with
-    // both samplers.
-    assert!(in_waves >= 4, "{in_waves}");
+    // both samplers and both scales.
+    assert!(in_waves >= 8, "{in_waves}");
 }
 
 #[test]

@@ -142,6 +142,32 @@ fn every_estimator_and_sampler_converges_to_the_furnace_value() {
     }
 }
 
+#[test]
+fn roulette_at_any_scale_converges_to_the_furnace_value() {
+    // s only trades noise for time: with either sampler, at s = 1, 2 and
+    // 8, the closed furnace's mean stays Le / (1 - ρ).
+    let scene = scenes::closed_furnace(0.8, 0.5, 8);
+    for sampler in [SamplerKind::Independent, SamplerKind::Sobol] {
+        let mut rays = Vec::new();
+        for s in [1, 2, 8] {
+            let settings = PathSettings {
+                rr_scale: Some(s),
+                ..unlimited(Strategy::Mis)
+            };
+            let (acc, _) = render(&scene, &settings, sampler, 16, 3, false);
+            let (z, mean) = flat_z(&acc.mean(), 2, 2.5);
+            assert!(z.abs() < Z, "{sampler:?} s = {s}: {mean} (z = {z:.2})");
+            assert_eq!(acc.stats.nonfinite, 0);
+            rays.push(acc.stats.rays);
+        }
+        // A larger scale ends fewer paths early: more rays.
+        assert!(
+            rays[0] < rays[1] && rays[1] < rays[2],
+            "{sampler:?}: {rays:?}"
+        );
+    }
+}
+
 fn cornell_reference() -> StoredReference {
     StoredReference::for_scene(&Scene::builtin())
         .expect("scenes/references holds the Cornell-box reference (see its README)")

@@ -290,6 +290,7 @@ fn real_paths(f: LayersFn) -> (f64, String) {
         strategy: Strategy::Mis,
         max_bounces: Some(40),
         rr_min_bounce: 40,
+        rr_scale: None,
     };
     let seed = 66 ^ crate::run_seed();
     worst_of((0..camera.width * camera.height).map(|p| {
