@@ -78,7 +78,8 @@ pub(super) fn gather(
     roulette: Option<u32>,
     x: &mut In8,
 ) -> [bool; W] {
-    x.roulette = roulette.map(|s| s as f32);
+    x.roulette = roulette.is_some();
+    x.rr_scale = roulette.unwrap_or(1) as f32;
     let mut lesson_light = [false; W];
     for j in 0..W {
         let jj = if j < ids.len() { j } else { 0 };

@@ -69,8 +69,10 @@ pub struct In8 {
     pub le: [[f32; W]; 3],
     /// Whether the light emits from both faces.
     pub two_sided: [bool; W],
-    /// Roulette's scale s, where it is played at this vertex.
-    pub roulette: Option<f32>,
+    /// Whether roulette is played at this vertex...
+    pub roulette: bool,
+    /// ... and its scale s.
+    pub rr_scale: f32,
 }
 
 /// What the lanes give back.
@@ -335,14 +337,10 @@ fn roulette(x: &In8, j: usize, v: &LaneVertex, o: &mut Out8) {
         beta[1] * x.rho[1][j],
         beta[2] * x.rho[2][j],
     ];
-    let Some(s) = x.roulette else {
-        o.survives[j] = true;
-        o.beta.iter_mut().zip(nb).for_each(|(b, v)| b[j] = v);
-        return;
-    };
-    let q = (max_element(nb) * s).min(1.0);
-    o.survives[j] = x.u[dim::ROULETTE][j] < q;
+    let q = (max_element(nb) * x.rr_scale).min(1.0);
+    let dies = x.roulette & (x.u[dim::ROULETTE][j] >= q);
+    o.survives[j] = !dies;
     for a in 0..3 {
-        o.beta[a][j] = nb[a] / q;
+        o.beta[a][j] = if x.roulette { nb[a] / q } else { nb[a] };
     }
 }
