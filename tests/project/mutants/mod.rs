@@ -34,6 +34,7 @@ pub mod fresh_thirteenth;
 pub mod fresh_thirtieth;
 pub mod fresh_thirtyfirst;
 pub mod fresh_thirtysecond;
+pub mod fresh_thirtythird;
 pub mod fresh_twelfth;
 pub mod fresh_twentieth;
 pub mod fresh_twentyeighth;

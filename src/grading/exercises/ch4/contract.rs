@@ -296,6 +296,15 @@ pub fn cases() -> Vec<Case> {
             m,
         ),
         case(
+            "a wall whose function is 2^-50 of the distance, a ray from 1 m above it (within ε at \
+             once) going down obliquely: a hit at t = 0 whose gradient, 2^-50 long, is tiny but \
+             not zero, so the normal is its direction, +z (no threshold on its length)",
+            Clause::Normal,
+            faint_wall,
+            (Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.6, 0.0, -0.8)),
+            m,
+        ),
+        case(
             "a wall at x = 1 facing -x whose function is half the distance, seen obliquely: its \
              gradient (-1/2, 0, 0) has no component above 0 and is not zero, so the normal is \
              (-1, 0, 0)",

@@ -218,7 +218,7 @@ fn lambert_brdf_values(f: BrdfFn) -> Check {
 /// first harmonics average to 0); over 640,000 more, P(z < 0.03) = 0.03²
 /// (the directions reach the rim), P(x² + y² < s) = s for a small cap
 /// about the pole, and no gap in z² or the azimuth wider than chance
-/// leaves ([`ends::ends`]); and a grid of u spread evenly over
+/// leaves (`ends.rs`); and a grid of u spread evenly over
 /// the hemisphere (`grid_spread`). The error is the worst
 /// deviation in standard errors (5 passes), or a large number when a
 /// sample is not even a direction on the hemisphere.

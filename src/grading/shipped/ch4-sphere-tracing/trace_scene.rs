@@ -24,7 +24,8 @@
 //!   found it.
 //! * The normal at a hit: the gradient of f by central differences with
 //!   h = max(`march.epsilon_at(p)`, 1e-4), normalised; -dir where the
-//!   gradient is zero; turned round where it points along dir, so that it
+//!   gradient is zero (a gradient however short, 2^-50 say, still gives
+//!   its direction); turned round where it points along dir, so that it
 //!   faces the viewer (n · dir ≤ 0). Its six evaluations do not count
 //!   against the budget.
 //! * Depths to 1e-3 relative and normals to 0.02 in the scene; exactly the
