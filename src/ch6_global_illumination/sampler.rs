@@ -34,7 +34,8 @@ impl SamplerKind {
     /// ([`PathSettings::rr_scale`](super::integrator::PathSettings::rr_scale)):
     /// 1 for independent numbers, 2 for Sobol points, whose other noise is
     /// smaller, so the noise roulette adds costs them more (the book's
-    /// chapter 6 measures both, `ch6-roulette-scale.txt`).
+    /// appendix "Making it fast" measures both scales with both samplers,
+    /// `ch6-bench-rr-scale-1.txt` and `-2.txt`).
     pub fn roulette_scale(self) -> u32 {
         match self {
             SamplerKind::Independent => 1,
