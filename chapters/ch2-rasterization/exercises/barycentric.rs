@@ -4,7 +4,8 @@
 //! φi + φj + φk = 1. The idea: each φ is a ratio of (signed) areas, and an
 //! edge function is twice a signed area.
 //!
-//! The contract (checked within 1e-5):
+//! The contract (checked within 1e-5; for a point far outside, where some
+//! φ are large, within 1e-5 of the largest |φ|):
 //! * φi is 1 at pi and 0 on the edge opposite pi (the same for j and k);
 //! * they sum to 1 and rebuild p, also for points outside the triangle
 //!   (where some φ are negative);

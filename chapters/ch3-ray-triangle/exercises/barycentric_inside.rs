@@ -4,7 +4,8 @@
 //! p = p0 + u (p1 - p0) + v (p2 - p0).
 //!
 //! Contract (what the grader checks: u and v to 1e-4; inside or outside
-//! exactly, but for points within rounding of an edge):
+//! exactly, but for points within rounding of an edge; on triangles
+//! 10⁻³·⁵ to 10³ across, up to 10⁴ times their size from the origin):
 //! * Return `Some((u, v))` when p is inside the triangle, its edges and
 //!   vertices included: u ≥ 0, v ≥ 0 and u + v ≤ 1. A point outside by
 //!   less than 1e-4 is still outside.

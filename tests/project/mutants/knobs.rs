@@ -478,6 +478,9 @@ pub struct BvhKnobs {
     /// A subtree passed by where the ray enters it at the best t so far,
     /// not only beyond it.
     pub prune_at_equal: bool,
+    /// t_max asked of the root's box alone; below it, the search runs to
+    /// infinity.
+    pub t_max_at_root_only: bool,
 }
 
 impl Default for BvhKnobs {
@@ -490,6 +493,7 @@ impl Default for BvhKnobs {
             approx_recip: false,
             leaf_budget: None,
             prune_at_equal: false,
+            t_max_at_root_only: false,
         }
     }
 }
@@ -567,7 +571,11 @@ pub fn closest_hit(k: BvhKnobs, bvh: &ReadableBvh, ray: &Ray, t_max: f32) -> Opt
         false => dir.recip(),
     };
     let t_root = bvh.nodes.first()?.bounds.enter(ray, inv, t_max)?;
-    let mut best = (t_max, None, 0);
+    let limit = match k.t_max_at_root_only {
+        true => f32::INFINITY,
+        false => t_max,
+    };
+    let mut best = (limit, None, 0);
     visit(k, (bvh, ray, inv), 0, t_root, &mut best);
     best.1
 }
@@ -974,6 +982,9 @@ pub struct DirectKnobs {
     /// The estimate from unnormalised cosines over d⁴ in f32 (which
     /// leaves f32's range at scales of 10¹⁰ and 10⁻¹⁰).
     pub over_d4: bool,
+    /// The pdf per steradian raised to at least this "to keep the
+    /// estimate finite".
+    pub pdf_floor: Option<f32>,
 }
 
 /// The solution of direct_light, departing as `k` says (the surface
@@ -997,6 +1008,7 @@ pub fn direct(
     }
     let f = rho / PI;
     let pdf = d2 / ((cos_light + k.cos_light_plus) * area);
+    let pdf = k.pdf_floor.map_or(pdf, |floor| pdf.max(floor));
     let estimate = match k.over_d4 {
         true => f * le * n.dot(to) * -n_light.dot(to) / (d2 * d2) * area,
         false => f * le * cos / pdf,

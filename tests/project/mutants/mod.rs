@@ -33,6 +33,7 @@ pub mod fresh_third;
 pub mod fresh_thirteenth;
 pub mod fresh_thirtieth;
 pub mod fresh_thirtyfirst;
+pub mod fresh_thirtyfourth;
 pub mod fresh_thirtysecond;
 pub mod fresh_thirtythird;
 pub mod fresh_twelfth;

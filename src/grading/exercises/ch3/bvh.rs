@@ -250,16 +250,21 @@ pub fn check_bvh_traversal(f: TraversalFn) -> Check {
     let geometry = Geometry::new(&scene);
     let bvh = ReadableBvh::build(&geometry.triangles.tris);
     progress("the Cornell box's pixels and rays from inside it");
+    let mut rays = super::bvh_cases::cornell_inside_rays(&geometry.triangles.tris);
     for y in 0..camera.height {
         for x in 0..camera.width {
             let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
-            compare(&bvh, &ray, f32::INFINITY, &|| {
-                format!("the Cornell box, pixel ({x}, {y})")
-            });
+            rays.push((ray, format!("the Cornell box, pixel ({x}, {y})")));
         }
     }
-    for (ray, what) in super::bvh_cases::cornell_inside_rays(&geometry.triangles.tris) {
-        compare(&bvh, &ray, f32::INFINITY, &|| what.clone());
+    // Each of them whole, then cut short before or just past its hit.
+    let hit_t = |ray: &Ray| every_triangle(&bvh.tris, ray, f32::INFINITY).map(|h| h.t);
+    let cut = super::bvh_cases::cut_short(&rays, hit_t);
+    let whole = rays
+        .into_iter()
+        .map(|(ray, what)| (ray, f32::INFINITY, what));
+    for (ray, t_max, what) in whole.chain(cut) {
+        compare(&bvh, &ray, t_max, &|| what.clone());
     }
     // A ray along -z, 10⁻⁶ inside the side x = 10 of a flat triangle's box
     // (its direction's x exactly 0, where 1/d is infinite), from 1,000

@@ -101,11 +101,18 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
     // does not depend on the scene's scale; d⁴ or d³ leaves f32's range
     // there), from a stream of their own.
     let mut wide = Draws::new(354);
+    // A fifth with a light far larger than its distance from p (d from
+    // 10⁻⁴ to 10⁻¹·⁵ of the light's size, as for a wall beside a ceiling
+    // light), facing p from above its horizon: the density per steradian
+    // is then far below 1, and nothing floors it. From a stream of its
+    // own.
+    let mut near = Draws::new(754);
     let mut last: Option<(Vec3, Vec3, bool)> = None;
     worst_drawn((0..draws.count(100, 400)).filter_map(|_| {
         draws.next_case();
         dark.next_case();
         wide.next_case();
+        near.next_case();
         let s = draws.decades(-2.0, 4.0);
         let wide_scale = wide.far_scale(1.0 / 7.0, (-15.0, -4.0), (4.0, 15.0));
         let (is_wide, s) = (wide_scale.is_some(), wide_scale.unwrap_or(s));
@@ -127,7 +134,7 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
             n = (wi.any_orthonormal_vector() + wi * tilt).normalize();
         }
         let mut n_light = draws.direction();
-        let area = s * s * draws.decades(-2.0, 1.0);
+        let mut area = s * s * draws.decades(-2.0, 1.0);
         // Emission from 10⁻¹ to 10², a tenth from 10⁻¹² (dim is not dark),
         // a fifth from 10³ to 10⁸ (bright is not a firefly).
         let (dim, bright) = match draws.count(0, 9) {
@@ -169,6 +176,12 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
             let dist = s * draws.range(0.5, 5.0);
             p = y + off.normalize_or(n_light.any_orthonormal_vector()) * dist;
             p[axis] = n_light[axis] * dist * draws.decades(-5.0, -2.0);
+        }
+        if !is_wide && near.unit() < 0.2 {
+            area = (y - p).length_squared() * near.decades(3.0, 8.0);
+            let to = y - p;
+            n *= n.dot(to).signum();
+            n_light *= -n_light.dot(to).signum();
         }
         last = (!is_wide).then_some((y, n_light, blocked)).or(last);
         let (cos, cos_l, facing) = closed_form((p, n, rho), (y, n_light, area, le));

@@ -265,8 +265,15 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
     // others): asked at u = 0, q / 2, 1 − q / 2 and the largest u below
     // 1, whatever comes back that is not 0 must be value / q. (Which u
     // survive is the solution's choice; no u in f64 lies in the top 10⁻⁴⁰.)
+    // And q where 1 − q rounds in f64 (value / (1 − (1 − q)) is off by
+    // up to 10 % there): 1.5·10⁻¹⁵, 6·10⁻¹⁶, twelve drawn from 10⁻¹⁶ to
+    // 10⁻¹² (half of them off by more than 0.2 %) and four to 10⁻⁴.
     let mut tiny = vec![(3.0, 1e-8), (-0.5, 1e-40), (2.0, 1e-200)];
     tiny.extend(values_and_small_q(&mut draws, 8, (-30.0, -300.0)));
+    tiny.extend([(1.5, 1.5e-15), (-0.7, 6e-16)]);
+    let mut rounded = Draws::new(162);
+    tiny.extend(values_and_small_q(&mut rounded, 12, (-16.0, -12.0)));
+    tiny.extend(values_and_small_q(&mut rounded, 4, (-12.0, -4.0)));
     let carried = tiny.into_iter().find_map(|(v, q): (f64, f64)| {
         let top = 1.0f64.next_down();
         let us = [0.0, q / 2.0, (1.0 - q / 2.0).min(top), top];
