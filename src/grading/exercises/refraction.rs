@@ -356,6 +356,17 @@ fn drawn_questions() -> Vec<Question> {
             " (near the normal)".into(),
         ));
     }
+    // Indices 10⁻⁵ to 10^-3.5 apart, from either side at 60° to 80° from
+    // the normal: t bends by up to 10⁻³ there, so equal indices are no
+    // shortcut for nearly equal ones.
+    for _ in 0..32 {
+        draws.next_case();
+        let (n, eo) = (draws.direction(), draws.range(1.0, 2.4));
+        let ei = eo + draws.sign() * draws.decades(-5.0, -3.5);
+        let cos = draws.sign() as f64 * draws.range(0.17, 0.5) as f64;
+        let d = at_cos(n, cos, draws.direction());
+        asked.push((d, n, eo, ei, " (nearly equal indices)".into()));
+    }
     asked
 }
 

@@ -277,7 +277,7 @@ fn look_at_values(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
     // from the origin, `up` of any length (10⁻⁶ to 10², so that a guard on
     // the length of up × view is not taken for the degenerate case it is
     // not: the contract's up has no length) and at least 17° from the view
-    // (a fifth 1° to 8° from it; some 10⁻⁴ to 10^-2.5 rad short of
+    // (a fifth 0.3° to 8° from it; some 10⁻⁴ to 10^-2.5 rad short of
     // perpendicular to it, where up itself is nearly, not quite, the
     // picture's y).
     // The axes to 1e-4; the translation to 1e-4 of the eye's distance
@@ -298,16 +298,17 @@ fn look_at_values(f: fn(Vec3, Vec3, Vec3) -> Mat4) -> Check {
             (Some((_, u, _)), 2) => up = u,
             _ => {}
         }
-        // A fifth with `up` 1° to 8° from the view (either way along it),
-        // the eye near the origin so that no other rounding is magnified:
-        // up is still not parallel, and it still points up.
+        // A fifth with `up` 0.3° to 8° from the view (either way along
+        // it; evenly in the angle's decades), the eye near the origin so
+        // that no other rounding is magnified: up is still not parallel,
+        // and it still points up (a "nearly parallel" cut-off is wrong).
         let near_parallel = draws.unit() < 0.2;
         if near_parallel {
             eye = draws.in_cube() * size;
             let (a, b) = view.any_orthonormal_pair();
             let (s, c) = draws.range(0.0, std::f32::consts::TAU).sin_cos();
             let side = a * c + b * s;
-            let (sin, cos) = draws.range(0.02, 0.14).sin_cos();
+            let (sin, cos) = draws.decades(-2.3, -0.85).sin_cos();
             up = (view * cos * draws.sign() + side * sin) * up_length(&mut draws);
         } else if draws.unit() < 0.3 {
             // Exactly along an axis, up along another (a view straight

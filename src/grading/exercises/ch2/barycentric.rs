@@ -97,9 +97,11 @@ fn barycentric_values(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check {
     }
     let mut draws = Draws::new(22);
     let mut tiny = Draws::new(122);
+    let mut far = Draws::new(222);
     for _ in 0..draws.count(200, 800) {
         draws.next_case();
         tiny.next_case();
+        far.next_case();
         let scale = draws.decades(-3.0, 3.0);
         // A tenth from 10⁻¹² to 10⁻³ across (from a stream of their own).
         let scale = match tiny.unit() < 0.1 {
@@ -135,6 +137,12 @@ fn barycentric_values(f: fn(Vec2, Vec2, Vec2, Vec2) -> Option<Vec3>) -> Check {
         let p_across = place + draws.in_square() * scale * 1.5;
         let phi_across = exact_phi([pi, pj, across], p_across);
         cases.push((pi, pj, across, p_across, Some(phi_across)));
+        // And a point 10 to 10⁴ times the triangle's size away, where the
+        // φ are as large and the three sub-areas nearly cancel (from a
+        // stream of their own).
+        let (sin, cos) = far.range(0.0, std::f32::consts::TAU).sin_cos();
+        let p_far = place + Vec2::new(cos, sin) * scale * far.decades(1.0, 4.0);
+        cases.push((pi, pj, pk, p_far, Some(exact_phi([pi, pj, pk], p_far))));
     }
     // The mistakes it can name: φ that are right but belong to other
     // corners, or right up to a common factor (not divided by the area).

@@ -22,7 +22,7 @@ use crate::exercises::{images, AbsMax};
 /// edge up to 100 times farther, and colours of any brightness from 0 to
 /// 10 (radiance, not a display colour: nothing is clamped); the third is
 /// the second nearly facing the camera; the next two the first at depths
-/// 10¹³ times larger and smaller; the last a sliver across a row of
+/// 10¹³ times larger and smaller; the last two slivers across a row of
 /// samples.
 fn slanted() -> Vec<([Vec3; 3], [Vec3; 3])> {
     let (nl, nr) = (Vec3::new(2.3, 46.1, 1.0), Vec3::new(61.7, 45.4, 1.0));
@@ -61,18 +61,20 @@ fn slanted() -> Vec<([Vec3; 3], [Vec3; 3])> {
         quads.push((deeper(quads[0].0), quads[0].1));
         quads.push((deeper(quads[1].0), quads[1].1));
     }
-    // And a sliver 2^-16 pixels tall across the row of samples at y = 0.5
-    // (4.5·10⁻⁴ square pixels): a triangle however thin is one, and its
-    // samples get its depth and colours.
-    let h = 2f32.powi(-17);
-    quads.push((
-        [
-            Vec3::new(1.2, 0.5 - h, 2.0),
-            Vec3::new(60.8, 0.5 - h, 3.0),
-            Vec3::new(31.0, 0.5 + h, 5.0),
-        ],
-        [r, g, b],
-    ));
+    // And slivers 2^-16 and 2^-22 pixels tall across the row of samples
+    // at y = 0.5 (4.5·10⁻⁴ and 7·10⁻⁶ square pixels, every corner exact
+    // in f32, so that the samples' sides are decided): a triangle however
+    // thin is one, and its samples get its depth and colours.
+    for h in [2f32.powi(-17), 2f32.powi(-23)] {
+        quads.push((
+            [
+                Vec3::new(1.2, 0.5 - h, 2.0),
+                Vec3::new(60.8, 0.5 - h, 3.0),
+                Vec3::new(31.0, 0.5 + h, 5.0),
+            ],
+            [r, g, b],
+        ));
+    }
     quads
 }
 

@@ -13,7 +13,8 @@
 //!   half its interval, one a narrow spike);
 //! * with the spread of a plain uniform estimator (within a factor 2 of
 //!   σ/√N);
-//! * a constant integrates exactly (∫₋₁³ 2.5 dx = 10 from any numbers).
+//! * a constant integrates exactly, up to rounding (∫₋₁³ 2.5 dx = 10
+//!   from any numbers, within 10⁻⁹).
 //!
 //! Hints: `cargo grade --hint ch6/mc_integral`.
 //! Grade it with: `cargo grade ch6`
