@@ -192,7 +192,11 @@ fn barycentric_sum_whole(pi: Vec2, pj: Vec2, pk: Vec2, p: Vec2) -> Option<Vec3> 
     Some(s / whole)
 }
 
-/// Correct: the solution's, renormalised to sum to 1.
+/// The solution's, renormalised to sum to 1: near the triangle as right
+/// as the solution, but for a point far outside the sum of the φ cancels
+/// (off by about ε · max|φ|² there; taken for a right alternative until
+/// the thirty-fifth fresh set's points 10 to 10⁴ times the triangle's
+/// size away, where the contract asks 1e-5 of the largest |φ|).
 fn barycentric_renormalised(pi: Vec2, pj: Vec2, pk: Vec2, p: Vec2) -> Option<Vec3> {
     let whole = area2(pi, pj, pk);
     if whole == 0.0 {
@@ -209,7 +213,7 @@ fn barycentric_mistake_fails() {
         Some("coordinates belong to other corners"),
         || ch2::check_barycentric(barycentric_sum_whole),
     );
-    passes("renormalised", || {
+    fails("renormalised", None, || {
         ch2::check_barycentric(barycentric_renormalised)
     });
 }
