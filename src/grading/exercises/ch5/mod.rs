@@ -150,8 +150,10 @@ fn lambert_brdf_values(f: BrdfFn) -> Check {
     let mut draws = Draws::new(51);
     let mut black = Draws::new(151);
     let mut mirror = Draws::new(251);
+    let mut flat = Draws::new(351);
     let drawn = worst_drawn((0..draws.count(200, 1000)).map(|_| {
         draws.next_case();
+        flat.next_case();
         let channel = |d: &mut Draws| match d.count(0, 5) {
             0 => 0.0,
             1 => 1.0,
@@ -180,6 +182,18 @@ fn lambert_brdf_values(f: BrdfFn) -> Check {
             false => [-6.0, -30.0],
         };
         let (wo, wi) = (dir(&mut draws, lowest[0]), dir(&mut draws, lowest[1]));
+        // A tenth with one of the two exactly in the surface's plane (z =
+        // 0 or -0), the other on either side: nothing (from a stream of
+        // its own).
+        let onto_plane = |w: Vec3, d: &mut Draws| {
+            let along = Vec3::new(w.x, w.y, 0.0).normalize_or(Vec3::X);
+            Vec3::new(along.x, along.y, 0.0f32.copysign(d.sign()))
+        };
+        let (wo, wi) = match (flat.unit() < 0.1, flat.unit() < 0.5) {
+            (true, true) => (onto_plane(wo, &mut flat), wi),
+            (true, false) => (wo, onto_plane(wi, &mut flat)),
+            (false, _) => (wo, wi),
+        };
         let judge = |wi: Vec3| {
             let want = if (wo.z > 0.0) == (wi.z > 0.0) && wo.z != 0.0 && wi.z != 0.0 {
                 rho * FRAC_1_PI
