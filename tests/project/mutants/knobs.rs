@@ -596,6 +596,9 @@ pub enum Measure {
     /// 2 d · (dy, dx, dz): the right area, up to a factor, where dz = 0 or
     /// the box is a cube (twenty-ninth set).
     Swizzled,
+    /// The volume dx · dy · dz, which a box of no thickness has none of
+    /// (thirty-seventh set).
+    Volume,
 }
 
 /// The axes the sweep tries.
@@ -676,6 +679,10 @@ pub fn sah_sweep(k: SahKnobs, boxes: &[[Vec3; 2]], centroids: &[Vec3]) -> Option
         Measure::Swizzled => {
             let d = (hi - lo).max(Vec3::ZERO).as_dvec3();
             2.0 * d.dot(glam::DVec3::new(d.y, d.x, d.z))
+        }
+        Measure::Volume => {
+            let d = (hi - lo).max(Vec3::ZERO).as_dvec3();
+            d.x * d.y * d.z
         }
     };
     let axes = match k.axes {

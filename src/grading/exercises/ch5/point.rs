@@ -152,9 +152,11 @@ fn point_light_values(f: PointFn) -> Check {
         } else if cos <= 0.0 {
             // Behind, near the horizon: nothing, but for what the rounding
             // of an f32 cosine lets through (a few 10⁻⁸ of E at normal
-            // incidence).
-            got.abs_max() as f64 * to.length_squared()
-                / f64::from(intensity.max_element()).max(f64::MIN_POSITIVE)
+            // incidence; 10⁻⁶ of it allowed, as in front). A cut-off at
+            // cos θ = -10⁻⁴ lets up to 10⁻⁴ through, and fails.
+            let leak = got.abs_max() as f64 * to.length_squared()
+                / f64::from(intensity.max_element()).max(f64::MIN_POSITIVE);
+            leak * 1e-4 / 1e-6
         } else {
             // Relative to what rounding allows: 10⁻⁴, plus what an f32
             // cosine's own rounding (a few 10⁻⁸; 10⁻⁶ to be generous)
