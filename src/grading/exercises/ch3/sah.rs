@@ -115,6 +115,7 @@ fn drawn_scene(
             c + d.in_cube() * size,
         ]
     };
+    // Drawn either way, so that the scene's other draws stay as they were.
     let drawn_kind = d.count(0, 9);
     let kind = forced.unwrap_or(drawn_kind);
     let (what, mut tris): (&str, Vec<[Vec3; 3]>) = match kind {

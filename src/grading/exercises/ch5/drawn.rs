@@ -178,8 +178,8 @@ pub(super) fn drawn_cases(f: Direct) -> (f64, String) {
             p[axis] = n_light[axis] * dist * draws.decades(-5.0, -2.0);
         }
         if !is_wide && near.unit() < 0.2 {
-            area = (y - p).length_squared() * near.decades(3.0, 8.0);
             let to = y - p;
+            area = to.length_squared() * near.decades(3.0, 8.0);
             n *= n.dot(to).signum();
             n_light *= -n_light.dot(to).signum();
         }
