@@ -6,9 +6,11 @@
 //! `paths/`, refraction's and the bounce layers' in files of their own.
 
 mod integral;
+mod roulette_tails;
 
 pub use integral::check_mc_integral;
 use integral::reference_integral;
+use roulette_tails::values_and_small_q;
 
 use super::bounce_layers as layers;
 use super::draws::{fold_drawn, worst_drawn, Draws};
@@ -304,7 +306,9 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
             )
         })
     });
-    if let Some(detail) = always.or(carried).or(dead).filter(|_| error <= 2e-3) {
+    let share = roulette_tails::share_near_the_ends(f);
+    let first = always.or(carried).or(dead).or(share);
+    if let Some(detail) = first.filter(|_| error <= 2e-3) {
         return Check {
             error: 1.0,
             tolerance: 2e-3,
@@ -320,19 +324,6 @@ fn russian_roulette_values(f: RouletteFn) -> Check {
         images: None,
         symptom: if error > 2e-3 { symptom } else { None },
     }
-}
-
-/// `count` drawn (value, q): a value of either sign from 10⁻³ to 10³, and
-/// q between 10^from and 10^to, evenly in its exponent (in f64: the
-/// decades reach far below what f32 holds).
-fn values_and_small_q(draws: &mut Draws, count: usize, (from, to): (f64, f64)) -> Vec<(f64, f64)> {
-    (0..count)
-        .map(|_| {
-            draws.next_case();
-            let value = (draws.sign() * draws.decades(-3.0, 3.0)) as f64;
-            (value, 10f64.powf(from + (to - from) * draws.unit() as f64))
-        })
-        .collect()
 }
 
 /// A hand-worked weight (`src/grading/cases.toml`).
