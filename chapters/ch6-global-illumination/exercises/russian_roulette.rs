@@ -17,9 +17,9 @@
 //!   q/2 and 1 − q/2 survives (the usual choices, u below q or u at or
 //!   above 1 − q, do; the grader looks for survivors there). Below
 //!   10⁻¹⁵, where 1 − q rounds to 1 in f64, none need;
-//! * for q up to 10⁻⁴ the survivors lie within 2q of 0 or of 1, and
-//!   there they make up the share q (within 0.2 %): the grader measures
-//!   it, where 10,000 evenly spaced u see no survivor at all.
+//! * for q from 10⁻⁷ to 10⁻⁴ the survivors lie within 2q of 0 or of 1,
+//!   and there they make up the share q (within 0.2 %): the grader
+//!   measures it, where 10,000 evenly spaced u see no survivor at all.
 //!
 //! Hints: `cargo grade --hint ch6/russian_roulette`.
 //! Grade it with: `cargo grade ch6`
