@@ -29,7 +29,8 @@ pub(super) fn values_and_small_q(
 pub(super) fn share_near_the_ends(f: RouletteFn) -> Option<String> {
     let shares = values_and_small_q(&mut Draws::new(262), 6, (-7.0, -4.0));
     shares.into_iter().find_map(|(v, q): (f64, f64)| {
-        let (m, step) = (20_000, 2.0 * q / 20_000.0);
+        let m = 20_000;
+        let step = 2.0 * q / m as f64;
         let survivors = |from: f64| {
             (0..m)
                 .filter(|&i| f(v, q, from + (i as f64 + 0.5) * step) != 0.0)
