@@ -82,6 +82,7 @@ fn graded(
     cancel: Option<&AtomicBool>,
 ) -> Outcome {
     let request = Request::Check { id: ex.id(), seed };
+    let timeout = timeout * ex.time_factor();
     match in_student_process(runner, &request, timeout, cancel) {
         Ok(transcript) => replay_check(&ex.id(), transcript, seed),
         Err(outcome) => *outcome,

@@ -217,6 +217,7 @@ impl Wire for paths::Tally {
         t.cosine_quarters.put(out);
         t.light_from_bounce_numbers.put(out);
         t.cosine_went_on.put(out);
+        t.light_cells.put(out);
     }
     fn get(input: &mut &[u8]) -> Option<Self> {
         let (bounces, vertices, light_samples, lights_found) = Wire::get(input)?;
@@ -225,6 +226,7 @@ impl Wire for paths::Tally {
         let cosine_quarters = Wire::get(input)?;
         let light_from_bounce_numbers = Wire::get(input)?;
         let cosine_went_on = Wire::get(input)?;
+        let light_cells = Wire::get(input)?;
         Some(paths::Tally {
             bounces,
             vertices,
@@ -237,6 +239,7 @@ impl Wire for paths::Tally {
             cosine_quarters,
             light_from_bounce_numbers,
             cosine_went_on,
+            light_cells,
         })
     }
 }

@@ -8,7 +8,9 @@
 //! the noise. Below 0.97, so that no right path runs past
 //! [`BOUNCE_BUDGET`](super::BOUNCE_BUDGET) (0.97¹⁰⁰⁰ is 6·10⁻¹⁴).
 //! Then a dim furnace ([`dim_furnace`]), where a path ended for being
-//! dim loses the light of its later bounces.
+//! dim loses the light of its later bounces, and one whose light is
+//! faint and rarely sampled ([`faint_light_furnace`]), where a density
+//! floored "to be safe" cuts the light samples' light.
 
 use super::check::{cap_spike, furnace_of_run, judge_furnace_of, trace_furnace, DEPTH_CAP};
 use super::{PathFn, PathScene};
@@ -60,4 +62,31 @@ pub fn dim_furnace(f: PathFn) -> Option<(f64, String, Option<Symptom>)> {
     let run = trace_furnace(f, &scene, DIM_PATHS, 614 ^ crate::run_seed());
     let (error, detail, symptom) = judge_furnace_of(f, &run, DIM_PATHS, (albedo, le));
     (error > 5.0).then(|| (error, format!("in a dim {detail}"), symptom))
+}
+
+/// Paths traced in the faint light's furnace (a density floor cuts most
+/// of the light there, far more than 5 standard errors).
+const FAINT_PATHS: u64 = 20_000;
+
+/// `None` if a closed furnace whose light samples come with radiance and
+/// density both 10⁻¹⁰ to 10⁻⁶ times the run's furnace's (drawn for the
+/// run) has the mean Le / (1 − ρ) within 5 standard errors; else (error,
+/// what was seen, the symptom). Each light sample brings the same light
+/// as in the run's furnace, but its density per steradian is far below
+/// any an ordinary light gives nearby, as a large light's is close to it
+/// (d² / (A cos θl)): a loop that floors the density, or skips a sample
+/// whose density "looks wrong", loses that light.
+pub fn faint_light_furnace(f: PathFn) -> Option<(f64, String, Option<Symptom>)> {
+    let (albedo, le) = furnace_of_run();
+    let scale = crate::exercises::draws::Draws::new(667).decades(-10.0, -6.0);
+    let scene = PathScene::furnace_with_faint_light(albedo, le, scale);
+    let run = trace_furnace(f, &scene, FAINT_PATHS, 618 ^ crate::run_seed());
+    let (error, detail, symptom) = judge_furnace_of(f, &run, FAINT_PATHS, (albedo, le));
+    (error > 5.0).then(|| {
+        let detail = format!(
+            "in a {detail}, its light samples' radiance and density both {scale:.1e} times its \
+             own (the same light per sample)"
+        );
+        (error, detail, symptom)
+    })
 }

@@ -2,7 +2,7 @@
 //! variants, the Cornell box, and last the brighter furnace (see
 //! [`check`](super::check) for each clause).
 
-use super::bright::{bright_furnace, dim_furnace};
+use super::bright::{bright_furnace, dim_furnace, faint_light_furnace};
 use super::check::{
     furnace_of_run, judge_furnace_of, trace_furnace, CORNELL_DIFFERS, FURNACE_PATHS,
 };
@@ -31,9 +31,12 @@ pub fn check_path_radiance(f: PathFn) -> Check {
     }
     let box_check = cornell(f);
     // Only once the rest passes (so that a failure keeps the name it had):
-    // the brighter furnace, then a dim one.
+    // the brighter furnace, then a dim one, then one with a faint light.
     if fz <= 5.0 && box_check.passed() {
-        if let Some((error, detail, symptom)) = bright_furnace(f).or_else(|| dim_furnace(f)) {
+        let furnaces = bright_furnace(f)
+            .or_else(|| dim_furnace(f))
+            .or_else(|| faint_light_furnace(f));
+        if let Some((error, detail, symptom)) = furnaces {
             return Check {
                 error,
                 tolerance: 5.0,

@@ -25,6 +25,7 @@
 
 use glam::{DVec3, Vec3};
 
+use super::numbers::{light_numbers_not_uniform, went_on_by_numbers};
 use super::open::{
     hidden_emission, BLACK_SURFACE, BOUNCE_EMISSION_ADDED, ENDS_OF_RANGE, HIDDEN_EMISSION_PATHS,
     LIGHT_FROM_BEHIND, LIGHT_THROUGH_OCCLUDER, PATHS_BEFORE, UNBOUNDED_THROUGHPUT,
@@ -172,6 +173,9 @@ impl FurnaceRun {
         a.below += b.below;
         a.over_budget |= b.over_budget;
         a.light_from_bounce_numbers += b.light_from_bounce_numbers;
+        for (x, y) in a.light_cells.iter_mut().zip(b.light_cells) {
+            *x += y;
+        }
         for (x, y) in a
             .cosine_quarters
             .iter_mut()
@@ -340,6 +344,9 @@ pub fn judge_furnace_of(
             return (bad, detail, None);
         }
     }
+    if let Some(detail) = light_numbers_not_uniform(&t.light_cells) {
+        return (bad, detail, None);
+    }
     if r.non_finite > 0 {
         let detail = format!(
             "closed furnace: {} of {n} paths returned a radiance that is not finite (inf or NaN)",
@@ -399,47 +406,6 @@ pub fn judge_furnace_of(
         Some(TOO_BRIGHT)
     };
     (error, detail, symptom)
-}
-
-/// Whether a path goes on after a bounce must not depend on the numbers
-/// its direction came from (roulette decided by one of them keeps only
-/// the directions near the normal, say): the share that went on is the
-/// same in each quarter of u.x's and of u.y's range (χ² of the 2 × 4
-/// table, 3 degrees of freedom, under 30). What differs, if it does.
-fn went_on_by_numbers(t: &Tally) -> Option<String> {
-    for (axis, (all, on)) in ["u.x", "u.y"]
-        .iter()
-        .zip(t.cosine_quarters.iter().zip(t.cosine_went_on))
-    {
-        let (n_all, n_on) = (all.iter().sum::<u32>(), on.iter().sum::<u32>());
-        let share = f64::from(n_on) / f64::from(n_all.max(1));
-        let chi2: f64 = all
-            .iter()
-            .zip(on)
-            .filter(|(a, _)| **a > 0)
-            .map(|(&a, o)| {
-                let (e_on, e_off) = (f64::from(a) * share, f64::from(a) * (1.0 - share));
-                let d = f64::from(o) - e_on;
-                d * d / e_on.max(1e-9) + d * d / e_off.max(1e-9)
-            })
-            .sum();
-        if n_all >= 1000 && n_on < n_all && chi2 > 30.0 {
-            let went: Vec<String> = all
-                .iter()
-                .zip(on)
-                .map(|(&a, o)| format!("{:.0}%", 100.0 * f64::from(o) / f64::from(a.max(1))))
-                .collect();
-            let detail = format!(
-                "closed furnace: whether a path went on after a bounce depends on the numbers \
-                 its direction was drawn from: with {axis} in each quarter of [0, 1), {} of the \
-                 paths went on (χ² = {chi2:.0}); roulette needs a number of its own (one that \
-                 also chose the direction keeps only some directions: biased)",
-                went.join(", ")
-            );
-            return Some(detail);
-        }
-    }
-    None
 }
 
 /// A fixed maximum depth shows as a spike in the path lengths: many

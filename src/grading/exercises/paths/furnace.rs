@@ -30,9 +30,24 @@ pub(super) struct Furnace {
     /// so the light samples are still unbiased. A loop that adds nothing
     /// where there is no sample keeps its answer.
     pub no_sample: f32,
+    /// A diagnostic: the light samples' radiance and density both this
+    /// times the furnace's (1: as they are). Their ratio, and so the light
+    /// a sample brings, stays the same.
+    pub light_scale: f32,
 }
 
 impl Furnace {
+    /// The furnace of albedo `albedo` and emission `le`, no diagnostic on.
+    pub fn new(albedo: Vec3, le: Vec3) -> Furnace {
+        Furnace {
+            albedo,
+            le,
+            hide_bounce_emission: false,
+            no_sample: 0.0,
+            light_scale: 1.0,
+        }
+    }
+
     fn at(&self, p: Vec3) -> Hit {
         // Back onto the sphere (no drift over a thousand bounces).
         let p = p.normalize();
@@ -93,8 +108,8 @@ impl Furnace {
         let pdf = found * dist * dist / (cos_l * 4.0 * std::f32::consts::PI);
         Some(LightSample {
             wi,
-            li: self.le,
-            pdf,
+            li: self.le * self.light_scale,
+            pdf: pdf * self.light_scale,
             dist,
             delta: false,
         })

@@ -16,23 +16,24 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
 use glam::{Vec2, Vec3};
 
-use crate::ch1_projection::camera::Camera;
 use crate::ch3_ray_triangle::ray::Ray;
 use crate::ch5_reflection::material::Frame;
 use crate::ch5_reflection::warp::cosine_hemisphere;
 use crate::ch5_reflection::world::World;
-use crate::core::sampling::random;
 
 mod bright;
 mod capstone;
 mod check;
 mod cornell;
 mod furnace;
+mod numbers;
 mod open;
 
 pub use capstone::check_path_radiance;
 pub use check::*;
+pub(crate) use cornell::camera_sample;
 use furnace::Furnace;
+use numbers::quarter;
 pub use open::LIGHT_THROUGH_OCCLUDER;
 
 /// Where a path meets a surface (every surface of the capstone's scenes is
@@ -92,13 +93,18 @@ pub struct Tally {
     /// the path went on along (`next_hit` followed): whether a path goes
     /// on must not depend on the numbers its direction was drawn from.
     pub cosine_went_on: [[u32; 4]; 2],
+    /// The numbers handed to `sample_light`, by cell of a 4 × 4 grid over
+    /// [0, 1)² (4 · u.x's quarter + u.y's; a number outside [0, 1) in the
+    /// first or last quarter): a light point is where the light's own
+    /// density says only if both numbers are uniform and independent.
+    pub light_cells: [u32; 16],
 }
 
 thread_local! {
     static TALLY: Cell<Tally> = const { Cell::new(Tally {
         bounces: 0, vertices: 0, light_samples: 0, lights_found: 0, lights_useful: 0,
         shadow_rays: 0, below: 0, over_budget: false, cosine_quarters: [[0; 4]; 2],
-        light_from_bounce_numbers: 0, cosine_went_on: [[0; 4]; 2],
+        light_from_bounce_numbers: 0, cosine_went_on: [[0; 4]; 2], light_cells: [0; 16],
     }) };
     /// The quarters of [0, 1) of this thread's last `sample_cosine`'s
     /// numbers, until a `next_hit` goes on from it.
@@ -188,12 +194,7 @@ impl PathScene {
 
     /// [`PathScene::furnace`] with an albedo per channel.
     pub fn furnace_coloured(albedo: Vec3, le: Vec3) -> PathScene {
-        PathScene::of(Inner::Furnace(Furnace {
-            albedo,
-            le,
-            hide_bounce_emission: false,
-            no_sample: 0.0,
-        }))
+        PathScene::of(Inner::Furnace(Furnace::new(albedo, le)))
     }
 
     /// The furnace as a diagnostic: surfaces reached by a bounce report
@@ -201,10 +202,8 @@ impl PathScene {
     /// it gives the same answer as in [`PathScene::furnace`]).
     pub fn furnace_without_bounce_emission(albedo: f32, le: Vec3) -> PathScene {
         PathScene::of(Inner::Furnace(Furnace {
-            albedo: Vec3::splat(albedo),
-            le,
             hide_bounce_emission: true,
-            no_sample: 0.0,
+            ..Furnace::new(Vec3::splat(albedo), le)
         }))
     }
 
@@ -214,10 +213,20 @@ impl PathScene {
     /// sample gives the same answer as in [`PathScene::furnace`]).
     pub fn furnace_with_missing_light_samples(albedo: f32, le: Vec3) -> PathScene {
         PathScene::of(Inner::Furnace(Furnace {
-            albedo: Vec3::splat(albedo),
-            le,
-            hide_bounce_emission: false,
             no_sample: 0.125,
+            ..Furnace::new(Vec3::splat(albedo), le)
+        }))
+    }
+
+    /// The furnace as a diagnostic: its light samples come with their
+    /// radiance and their density both `scale` times the furnace's (a
+    /// light as faint as it is rarely sampled: the same light per sample,
+    /// and a loop that uses the density it is given gives the same answer
+    /// as in [`PathScene::furnace`]).
+    pub fn furnace_with_faint_light(albedo: f32, le: Vec3, scale: f32) -> PathScene {
+        PathScene::of(Inner::Furnace(Furnace {
+            light_scale: scale,
+            ..Furnace::new(Vec3::splat(albedo), le)
         }))
     }
 
@@ -317,7 +326,10 @@ impl PathScene {
     /// sample (the light cannot be seen from that side, or, in one of the
     /// check's furnaces, the sampler found none).
     pub fn sample_light(&self, at: &Hit, u: Vec2) -> Option<LightSample> {
-        count(|t| t.light_samples += 1);
+        count(|t| {
+            t.light_samples += 1;
+            t.light_cells[4 * quarter(u.x) + quarter(u.y)] += 1;
+        });
         let bits = (
             u.to_array().map(f32::to_bits),
             at.p.to_array().map(f32::to_bits),
@@ -365,7 +377,6 @@ impl PathScene {
                 at.p.to_array().map(f32::to_bits),
             )))
         });
-        let quarter = |v: f32| ((v * 4.0) as usize).min(3);
         PENDING_BOUNCE.with(|b| b.set(Some([quarter(u.x), quarter(u.y)])));
         count(|t| {
             t.cosine_quarters[0][quarter(u.x)] += 1;
@@ -427,34 +438,4 @@ pub fn reference_path(
         }
     }
     radiance
-}
-
-/// One sample of pixel (x, y) of the scene `paths` seen by `camera`
-/// (called `what` in the progress lines) with `g`.
-pub(crate) fn camera_sample<'a>(
-    g: PathFn,
-    paths: &'a PathScene,
-    camera: &'a Camera,
-    seed: u64,
-    what: &'a str,
-) -> impl Fn(u32, u32, u32) -> Vec3 + Sync + 'a {
-    move |x: u32, y: u32, s: u32| -> Vec3 {
-        let ray = camera.ray(Vec2::new(x as f32 + 0.5, y as f32 + 0.5));
-        let pixel = (y * camera.width + x) as u64;
-        let mut dim = 0u64;
-        let mut rng = || {
-            dim += 1;
-            random(seed, pixel, s as u64, dim).min(1.0 - f32::EPSILON)
-        };
-        if x == 0 && s == 0 {
-            crate::progress(format_args!(
-                "calling path_radiance for {what}'s camera rays, row {y} of {}",
-                camera.height
-            ));
-        }
-        reset_tally();
-        let radiance = g(paths, ray.origin, ray.dir, &mut rng);
-        paths.note_shadow_rays(&tally());
-        radiance
-    }
 }

@@ -30,12 +30,14 @@
 //!   emitting Le everywhere, both drawn anew for every grading run: every
 //!   ray sees Le / (1 − ρ)) the mean of
 //!   200,000 paths is within 5 standard errors (about 1%) of the answer,
-//!   and in the Cornell box each 8 × 8 block agrees with the reference
-//!   within 5 standard errors;
+//!   also where a light sample's density is far below 1 (10⁻¹² per
+//!   steradian, say: a large light close by), and in the Cornell box each
+//!   8 × 8 block agrees with the reference within 5 standard errors;
 //! * the emission of the surface the camera sees, counted once; emission
 //!   that a bounce finds is not added (the light sample counted it);
 //! * a light sample (`sample_light`) at every surface the path reaches,
-//!   each with its shadow ray (`unoccluded`) before it counts;
+//!   drawn from two uniform numbers independent of each other, each with
+//!   its shadow ray (`unoccluded`) before it counts;
 //! * every bounce leaves on the side of the surface the path came from;
 //! * nothing escapes a closed room: Russian roulette ends paths, with a
 //!   survival probability taken from the throughput (so a survivor's
