@@ -11,8 +11,9 @@
 //! * Return `Some((t, u, v))` when the ray hits the triangle: u ≥ 0,
 //!   v ≥ 0, u + v ≤ 1 and t > 0. t is in units of the `d` given (do not
 //!   normalise it: with d twice as long, t halves). d is 10⁻²⁶ to 10²⁶
-//!   long, the triangles 10⁻³·⁵ to 10³ across: the system's determinant
-//!   stays a normal f32.
+//!   long, the triangles 10⁻³·⁵ to 10³ across (the system's determinant
+//!   stays a normal f32) and up to 10⁵ times their size from the world's
+//!   origin, the ray starting near them.
 //! * Return `None` otherwise: outside the triangle, behind the origin,
 //!   and when the system's determinant is zero (the ray runs parallel to
 //!   the triangle, or the triangle has no area).

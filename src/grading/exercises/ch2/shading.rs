@@ -250,6 +250,15 @@ pub(super) fn depth_order(f: RasterFn) -> Check {
             "a red triangle at 2,000 m, then a nearer (1,500 m) blue one",
             [(t(2000.0, 0.0), red), (t(1500.0, 9.0), blue)],
         ),
+        // Strictly smaller, at any scale: no margin, absolute or relative.
+        (
+            "a red triangle at 10⁻⁶ m, then a nearer (5·10⁻⁷ m) blue one",
+            [(t(1e-6, 0.0), red), (t(5e-7, 9.0), blue)],
+        ),
+        (
+            "a red triangle at 1 m, then a blue one nearer by 2⁻¹⁸ m (64 ulps)",
+            [(t(1.0, 0.0), red), (t(1.0 - 2f32.powi(-18), 9.0), blue)],
+        ),
     ];
     for (n, (what, pair)) in cases.iter().enumerate() {
         let run = |g: Draw| {

@@ -322,7 +322,9 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
         }
     }
     // Drawn triangles and rays: from 10⁻³ (millimetre triangles) to 10³
-    // across, up to 10⁴ times their size from the origin, d of any length
+    // across, up to 10⁵ times their size from the origin (the ray's
+    // origin near them: a hit point rebuilt as o + t d carries the
+    // rounding of the coordinates, not of the triangle), d of any length
     // (t up to 10⁵: t is in units of the d given, whatever its length;
     // from a stream of their own, every hit again with d 10⁻²² to 10⁻¹⁹
     // or 10¹⁹ to 10²⁴ times as long, where |d|² leaves f32's range and t
@@ -334,7 +336,7 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
         draws.next_case();
         long.next_case();
         let scale = draws.triangle_scale();
-        let place = draws.place_for(scale, 4.0);
+        let place = draws.place_for(scale, 5.0);
         let at = |q: Vec3| place + q * scale;
         let t = [
             at(draws.in_cube() + Vec3::new(0.0, 0.0, -3.0)),

@@ -86,6 +86,14 @@ pub fn cases() -> Vec<Case> {
             budget(256),
         ),
         case(
+            "the same floor with the wall 8 m ahead, a budget of exactly the 2,049 evaluations \
+             needed: 2,048 steps of 2^-8 (no cap of its own on a large budget)",
+            Clause::Budget,
+            long_corridor,
+            (Vec3::ZERO, Vec3::X),
+            budget(2_049),
+        ),
+        case(
             "an exact wall 3,000,000 m below, max_distance = 10⁷: a hit at t = 3·10⁶ (no distance \
              too far below the limit given)",
             Clause::MaxDistance,

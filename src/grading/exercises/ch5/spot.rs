@@ -90,7 +90,7 @@ fn spot_values(f: SpotFn) -> Check {
         Ok(w) => w,
         Err(check) => return check,
     };
-    // Drawn cones from 10⁻³ rad to π, hard-edged, all soft or in between,
+    // Drawn cones from 10⁻⁵ rad to π, hard-edged, all soft or in between,
     // and intensities over six decades with a channel sometimes 0 (or
     // all three).
     let mut d = Draws::new(57);
@@ -99,7 +99,7 @@ fn spot_values(f: SpotFn) -> Check {
         let outer = if d.unit() < 0.1 {
             std::f32::consts::PI
         } else {
-            d.decades(-3.0, std::f32::consts::PI.log10())
+            d.decades(-5.0, std::f32::consts::PI.log10())
         };
         let inner = match d.count(0, 3) {
             0 => outer,

@@ -13,7 +13,7 @@
 //!   half-angle `inner` and outer half-angle `outer`, in radians,
 //!   0 ≤ inner ≤ outer ≤ π, with the book's falloff;
 //! * a hard edge (inner = outer), an edge soft all the way (inner = 0),
-//!   a cone of 180° (the whole sphere), and cones as narrow as 10⁻³ rad, to
+//!   a cone of 180° (the whole sphere), and cones as narrow as 10⁻⁵ rad, to
 //!   the same 10⁻⁵: f32 keeps about 7 digits; mind what is left of them.
 //!
 //! Hints: `cargo grade --hint ch5/spot`.
