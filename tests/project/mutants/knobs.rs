@@ -1129,6 +1129,10 @@ pub struct PathKnobs {
     pub survive_at_q: bool,
     /// No end where the bounce's density is 0 (thirty-first set).
     pub no_pdf_guard: bool,
+    /// The light sample's density floored at this (thirty-eighth set).
+    pub light_pdf_floor: Option<f32>,
+    /// The light sample's second number fixed at 1/2 (thirty-eighth set).
+    pub light_v_half: bool,
 }
 
 impl Default for PathKnobs {
@@ -1150,6 +1154,8 @@ impl Default for PathKnobs {
             dim_below: None,
             survive_at_q: false,
             no_pdf_guard: false,
+            light_pdf_floor: None,
+            light_v_half: false,
         }
     }
 }
@@ -1184,9 +1190,15 @@ pub fn path(
             beta /= q;
         }
         let f = hit.albedo / PI;
-        let light = scene.sample_light(&hit, Vec2::new(rng(), rng()));
+        let u_light = Vec2::new(rng(), rng());
+        let u_light = match k.light_v_half {
+            true => Vec2::new(u_light.x, 0.5),
+            false => u_light,
+        };
+        let light = scene.sample_light(&hit, u_light);
         let no_light = light.is_none();
-        if let Some(ls) = light {
+        if let Some(mut ls) = light {
+            ls.pdf = k.light_pdf_floor.map_or(ls.pdf, |floor| ls.pdf.max(floor));
             let cos = hit.n.dot(ls.wi);
             let (cos, counted) = match k.light_cos {
                 LightCos::Clamped => (cos, cos > 0.0),

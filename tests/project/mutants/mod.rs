@@ -32,6 +32,7 @@ pub mod fresh_tenth;
 pub mod fresh_third;
 pub mod fresh_thirteenth;
 pub mod fresh_thirtieth;
+pub mod fresh_thirtyeighth;
 pub mod fresh_thirtyfifth;
 pub mod fresh_thirtyfirst;
 pub mod fresh_thirtyfourth;
