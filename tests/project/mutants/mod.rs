@@ -36,6 +36,7 @@ pub mod fresh_thirtyeighth;
 pub mod fresh_thirtyfifth;
 pub mod fresh_thirtyfirst;
 pub mod fresh_thirtyfourth;
+pub mod fresh_thirtyninth;
 pub mod fresh_thirtysecond;
 pub mod fresh_thirtyseventh;
 pub mod fresh_thirtysixth;

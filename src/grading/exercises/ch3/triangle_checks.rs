@@ -336,7 +336,12 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
         draws.next_case();
         long.next_case();
         let scale = draws.triangle_scale();
-        let place = draws.place_for(scale, 5.0);
+        // A fifth of them 10^4.5 to 10^5 sizes away, so that every run has
+        // many where the world's coordinates dwarf the triangle.
+        let place = match draws.unit() < 0.2 {
+            true => draws.direction() * scale * draws.decades(4.5, 5.0),
+            false => draws.place_for(scale, 5.0),
+        };
         let at = |q: Vec3| place + q * scale;
         let t = [
             at(draws.in_cube() + Vec3::new(0.0, 0.0, -3.0)),
