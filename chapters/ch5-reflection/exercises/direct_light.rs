@@ -25,7 +25,10 @@
 //! * exactly 0 when y shows p its back face, when y is below or in the
 //!   plane of p's surface, and when `visible(p, y)` is false;
 //! * ask `visible` about exactly the segment (p, y), in that order;
-//! * finite for every sample (no inf, no NaN).
+//! * finite for every sample (no inf, no NaN), at every scale: scenes
+//!   10⁻¹⁵ to 10¹⁵ m across, up to 10⁶ times their size from the origin,
+//!   Le from 10⁻¹² to 10⁹ (Le times the area can then pass f32's largest
+//!   number where the answer does not), albedos down to 10⁻⁶.
 //!
 //! Hints: `cargo grade --hint ch5/direct_light`.
 //! Grade it with: `cargo grade ch5`, and see it

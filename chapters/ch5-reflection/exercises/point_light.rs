@@ -10,7 +10,10 @@
 //!   from a point light of intensity `intensity` at `light`: the
 //!   inverse-square law times Lambert's cosine law;
 //! * a light behind the surface (the angle between n and the direction to
-//!   the light above 90°) delivers exactly 0.
+//!   the light above 90°) delivers exactly 0;
+//! * at every scale: the light 10⁻⁶ to 10¹⁵ m from p, p up to 10⁴ times
+//!   that from the origin, intensities from 10⁻¹⁵ to 10^38.5 W/sr (near
+//!   f32's largest number, where E is still finite; I / r² need not be).
 //!
 //! Hints: `cargo grade --hint ch5/point_light`.
 //! Grade it with: `cargo grade ch5`
