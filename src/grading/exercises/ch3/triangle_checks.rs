@@ -321,14 +321,12 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
             ));
         }
     }
-    // Drawn triangles and rays: from 10⁻³ (millimetre triangles) to 10³
-    // across, up to 10⁵ times their size from the origin (the ray's
-    // origin near them: a hit point rebuilt as o + t d carries the
-    // rounding of the coordinates, not of the triangle), d of any length
-    // (t up to 10⁵: t is in units of the d given, whatever its length;
-    // from a stream of their own, every hit again with d 10⁻²² to 10⁻¹⁹
-    // or 10¹⁹ to 10²⁴ times as long, where |d|² leaves f32's range and t
-    // does not).
+    // Drawn triangles and rays: 10⁻³ to 10³ across, up to 10⁵ times their
+    // size from the origin (a fifth 10^4.5 to 10⁵, the ray's origin near
+    // them: the world's coordinates dwarf the triangle), d of any length
+    // (t up to 10⁵, in units of the d given; from a stream of their own,
+    // every hit again with d 10⁻²² to 10⁻¹⁹ or 10¹⁹ to 10²⁴ times as
+    // long, where |d|² leaves f32's range and t does not).
     let mut draws = Draws::new(33);
     let mut long = Draws::new(333);
     let mut afar = Vec::new();
@@ -336,8 +334,6 @@ fn moller_trumbore_values(f: fn(Vec3, Vec3, [Vec3; 3]) -> Option<Tuv>) -> Check 
         draws.next_case();
         long.next_case();
         let scale = draws.triangle_scale();
-        // A fifth of them 10^4.5 to 10^5 sizes away, so that every run has
-        // many where the world's coordinates dwarf the triangle.
         let place = match draws.unit() < 0.2 {
             true => draws.direction() * scale * draws.decades(4.5, 5.0),
             false => draws.place_for(scale, 5.0),
