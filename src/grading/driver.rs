@@ -54,7 +54,7 @@ struct GradeCli {
     restore: Option<String>,
     /// The time limit of one exercise: seconds of CPU time (a check that
     /// waits without computing is stopped after four times as many
-    /// seconds; ch6/path_radiance, whose check traces about two million
+    /// seconds; ch6/path_radiance, whose check traces over a million
     /// paths, gets three times as long).
     #[arg(long, value_name = "SECONDS", default_value_t = 5.0, value_parser = parse_timeout)]
     timeout: f64,

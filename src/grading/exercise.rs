@@ -99,10 +99,10 @@ impl Exercise {
     }
 
     /// How many times the time limit its check may take: 3 for the path
-    /// capstone, whose check traces about two million paths (the course's
-    /// solution takes about 3.5 s of the 5 s limit, and a right solution
-    /// that plays roulette only after 16 bounces about 5.5 s); 1 for the
-    /// others, which take a fraction of a second.
+    /// capstone, whose check traces over a million paths (the course's
+    /// solution takes about 3.5 s of the 5 s default, and a right solution
+    /// that plays roulette only after 16 bounces over 5 s); 1 for the
+    /// others.
     pub fn time_factor(&self) -> u32 {
         match (self.chapter, self.name) {
             (6, "path_radiance") => 3,
