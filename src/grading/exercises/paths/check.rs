@@ -25,7 +25,7 @@
 
 use glam::{DVec3, Vec3};
 
-use super::numbers::{light_numbers_not_uniform, went_on_by_numbers};
+use super::numbers::{bounce_numbers_not_uniform, light_numbers_not_uniform, went_on_by_numbers};
 use super::open::{
     hidden_emission, BLACK_SURFACE, BOUNCE_EMISSION_ADDED, ENDS_OF_RANGE, HIDDEN_EMISSION_PATHS,
     LIGHT_FROM_BEHIND, LIGHT_THROUGH_OCCLUDER, PATHS_BEFORE, UNBOUNDED_THROUGHPUT,
@@ -326,23 +326,8 @@ pub fn judge_furnace_of(
         );
         return (bad, detail, Some(NO_SHADOW_RAY));
     }
-    // The numbers a bounce is drawn from must be uniform on [0, 1)²
-    // (sample_cosine's density assumes it): each quarter of u.x's and of
-    // u.y's range gets a quarter of them (χ² with 3 degrees of freedom
-    // under 30: a false alarm about once in a million runs).
-    for (axis, q) in ["u.x", "u.y"].iter().zip(t.cosine_quarters) {
-        let all: u32 = q.iter().sum();
-        let e = f64::from(all) / 4.0;
-        let chi2: f64 = q.iter().map(|&o| (f64::from(o) - e).powi(2) / e).sum();
-        if all >= 1000 && chi2 > 30.0 {
-            let detail = format!(
-                "closed furnace: the numbers your bounces gave sample_cosine are not uniform on \
-                 [0, 1): their {axis} fell {q:?} in the four quarters of [0, 1) (χ² = {chi2:.0}); \
-                 each bounce needs fresh uniform numbers (a number already used for a decision, \
-                 such as roulette's, is not uniform any more)"
-            );
-            return (bad, detail, None);
-        }
+    if let Some(detail) = bounce_numbers_not_uniform(&t.cosine_quarters) {
+        return (bad, detail, None);
     }
     if let Some(detail) = light_numbers_not_uniform(&t.light_cells) {
         return (bad, detail, None);

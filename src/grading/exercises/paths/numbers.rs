@@ -11,6 +11,36 @@ pub(super) fn quarter(v: f32) -> usize {
     ((v * 4.0) as usize).min(3)
 }
 
+/// How many numbers `cells` counted, and their χ² against the same count
+/// in every cell.
+fn against_even(cells: &[u32]) -> (u32, f64) {
+    let all: u32 = cells.iter().sum();
+    let e = f64::from(all) / cells.len() as f64;
+    (
+        all,
+        cells.iter().map(|&o| (f64::from(o) - e).powi(2) / e).sum(),
+    )
+}
+
+/// The numbers a bounce is drawn from must be uniform on [0, 1)²
+/// (sample_cosine's density assumes it): each quarter of u.x's and of
+/// u.y's range (`quarters`) gets a quarter of them (χ² with 3 degrees of
+/// freedom under 30: a false alarm about once in a million runs). What
+/// differs, if it does.
+pub(super) fn bounce_numbers_not_uniform(quarters: &[[u32; 4]; 2]) -> Option<String> {
+    ["u.x", "u.y"].iter().zip(quarters).find_map(|(axis, q)| {
+        let (all, chi2) = against_even(q);
+        (all >= 1000 && chi2 > 30.0).then(|| {
+            format!(
+                "closed furnace: the numbers your bounces gave sample_cosine are not uniform on \
+                 [0, 1): their {axis} fell {q:?} in the four quarters of [0, 1) (χ² = {chi2:.0}); \
+                 each bounce needs fresh uniform numbers (a number already used for a decision, \
+                 such as roulette's, is not uniform any more)"
+            )
+        })
+    })
+}
+
 /// The numbers a light sample is drawn from must be uniform on [0, 1)²,
 /// each independent of the other (the light's density assumes it; in the
 /// furnace every light sample brings the same light wherever it lands, so
@@ -18,9 +48,7 @@ pub(super) fn quarter(v: f32) -> usize {
 /// them (χ² with 15 degrees of freedom under 70: a false alarm about once
 /// in two hundred million runs). What differs, if it does.
 pub(super) fn light_numbers_not_uniform(cells: &[u32; 16]) -> Option<String> {
-    let all: u32 = cells.iter().sum();
-    let e = f64::from(all) / 16.0;
-    let chi2: f64 = cells.iter().map(|&o| (f64::from(o) - e).powi(2) / e).sum();
+    let (all, chi2) = against_even(cells);
     (all >= 1000 && chi2 > 70.0).then(|| {
         let rows: Vec<[u32; 4]> = cells.chunks(4).map(|r| [r[0], r[1], r[2], r[3]]).collect();
         format!(
