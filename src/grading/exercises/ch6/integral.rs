@@ -1,7 +1,8 @@
 //! Exercise 6.1, a Monte Carlo integral: five integrals with known
 //! values (unbiased, with a plain estimator's spread), a constant that
-//! integrates exactly, drawn intervals where f is counted and located, and
-//! evenly spaced numbers whose points must spread evenly over [a, b].
+//! integrates exactly, drawn intervals where f is counted and located and
+//! every number's value weighs the same, and evenly spaced numbers whose
+//! points must spread evenly over [a, b].
 
 use std::cell::Cell;
 
@@ -159,6 +160,7 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     let mut draws = Draws::new(61);
     let mut narrow = Draws::new(261);
     let mut vast = Draws::new(361);
+    let mut values = Draws::new(461);
     let drawn = worst_drawn((0..draws.count(20, 60)).map(|k| {
         draws.next_case();
         narrow.next_case();
@@ -189,11 +191,13 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         let b = a + width;
         // Each asked twice in a row: the same interval and numbers, another
         // integrand (c, then -2c): each its own answer.
-        worst_drawn(
-            [c, -2.0 * c]
-                .into_iter()
-                .map(|c| drawn_once(f, a, b, c, &u)),
-        )
+        // Then an integrand whose values (1 to 2, drawn) f hands out in
+        // the order it is called: every number's value counts, each once
+        // and with the same weight.
+        values.next_case();
+        let v: Vec<f64> = u.iter().map(|_| values.range(1.0, 2.0) as f64).collect();
+        let constants = [c, -2.0 * c].map(|c| drawn_once(f, a, b, c, &u));
+        worst_drawn(constants.into_iter().chain([drawn_mean(f, a, b, &u, &v)]))
     }));
     fold_drawn(&mut error, &mut detail, drawn);
     // Uniform there when the number is: 4,096 evenly spaced numbers (at a
@@ -276,6 +280,31 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         images: None,
         symptom: (error > 1e-3 && (unit - 1.0).abs() < 1e-9).then_some(NO_INTERVAL),
     }
+}
+
+/// The estimate from the numbers `u` of an integrand that returns `v[k]`
+/// at its k-th call, whatever the point: with uniform points each value
+/// weighs (b − a) / N, so the answer is (b − a) times the values' mean.
+/// Its error (10³ times the relative error) and what was asked.
+fn drawn_mean(f: IntegralFn, a: f64, b: f64, u: &[f64], v: &[f64]) -> (f64, String) {
+    let calls = Cell::new(0usize);
+    let g = |_: f64| {
+        calls.set(calls.get() + 1);
+        v.get(calls.get() - 1).copied().unwrap_or(1.0)
+    };
+    let got = f(&g, a, b, u);
+    let want = (b - a) * v.iter().sum::<f64>() / v.len() as f64;
+    let error = match calls.get() == v.len() {
+        true => (got - want).abs() / want.abs() * 1e3,
+        false => f64::INFINITY,
+    };
+    (
+        error,
+        format!(
+            "∫ from {a} to {b} from the numbers {u:?}, f returning {v:?} in the order it is called: expected \
+             (b − a) times their mean, {want:e}, got {got:e} (each number's value counts once, with weight 1/N)"
+        ),
+    )
 }
 
 /// ∫ₐᵇ c dx from the numbers `u`: its error (10³ times the relative
