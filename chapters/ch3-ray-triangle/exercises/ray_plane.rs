@@ -4,10 +4,10 @@
 //!
 //! Contract (what the grader checks, to 1e-4 relative):
 //! * Return the t at which o + t d lies on the plane. Neither N nor d needs
-//!   to be unit length: N may be 10⁻²⁶ to 10²⁵ long and d 10⁻¹² to 10³
-//!   (Nᵀd is then a normal f32 number; |N|² need not be). t may be
-//!   negative (a plane behind the origin): its sign is the caller's
-//!   business.
+//!   to be unit length: N may be 10⁻²⁶ to 10²⁵ long and d 10⁻¹² to 10³,
+//!   and Nᵀd is 0 or a normal f32 number (2⁻¹²⁶ or more in size; |N|²
+//!   need not be). t may be negative (a plane behind the origin): its
+//!   sign is the caller's business.
 //! * Return `None` when the ray runs parallel to the plane (Nᵀd = 0).
 //!
 //! The idea: a point of the ray is on the plane when it satisfies the

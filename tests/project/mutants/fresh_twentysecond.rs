@@ -159,15 +159,9 @@ fn special_values_and_orders_fail() {
             })
         },
     );
-    fails(
-        "ray_plane: Nᵀd that is not a normal number taken as parallel",
-        || {
-            ch3::check_ray_plane(|o, d, n, c| {
-                let denom = n.dot(d);
-                denom.is_normal().then(|| (c - n.dot(o)) / denom)
-            })
-        },
-    );
+    // (Nᵀd that is not a normal number taken as parallel failed here
+    // until the contract said Nᵀd is 0 or normal: it is right now, and
+    // fresh_fortieth.rs holds it among the right files.)
     fails("trace_scene: a hit where |f| = ε exactly", || {
         ch4::check_trace_scene(march_inclusive)
     });

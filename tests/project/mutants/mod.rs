@@ -19,6 +19,7 @@ pub mod fresh_eighth;
 pub mod fresh_eleventh;
 pub mod fresh_fifteenth;
 pub mod fresh_fifth;
+pub mod fresh_fortieth;
 pub mod fresh_fourteenth;
 pub mod fresh_fourth;
 pub mod fresh_new;
