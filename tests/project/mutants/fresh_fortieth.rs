@@ -9,9 +9,10 @@
 //! case had d shorter than the contract allows (Nᵀd = 2^-140, whose
 //! reciprocal overflows). The contract now says in so many words that Nᵀd
 //! is 0 or a normal number, so a solution that takes a subnormal Nᵀd as
-//! parallel (a mutant of the twenty-second set) is right too. (Fresnel's s and p terms with cos θi and cos θt
-//! exchanged in both passes, and rightly: each becomes minus the other,
-//! and their squares' mean is the same.)
+//! parallel (a mutant of the twenty-second set) is right too. (Fresnel's
+//! s and p terms with cos θi and cos θt exchanged in both passes, and
+//! rightly: each becomes minus the other, and their squares' mean is the
+//! same.)
 
 use glam::Vec3;
 use raystep::grading::exercise::Check;

@@ -196,8 +196,28 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
         // and with the same weight.
         values.next_case();
         let v: Vec<f64> = u.iter().map(|_| values.range(1.0, 2.0) as f64).collect();
-        let constants = [c, -2.0 * c].map(|c| drawn_once(f, a, b, c, &u));
-        worst_drawn(constants.into_iter().chain([drawn_mean(f, a, b, &u, &v)]))
+        let constants = [c, -2.0 * c].map(|c| {
+            drawn_once(
+                f,
+                (a, b, &u),
+                |_| c,
+                c * (b - a),
+                &format!("the constant {c:e}"),
+            )
+        });
+        let mean = (b - a) * v.iter().sum::<f64>() / v.len() as f64;
+        let asked = format!(
+            "an f returning {v:?} in the order it is called, from the numbers {u:?} ((b − a) times \
+             their mean: each number's value counts once, with weight 1/N)"
+        );
+        let weighed = drawn_once(
+            f,
+            (a, b, &u),
+            |k| v.get(k).copied().unwrap_or(1.0),
+            mean,
+            &asked,
+        );
+        worst_drawn(constants.into_iter().chain([weighed]))
     }));
     fold_drawn(&mut error, &mut detail, drawn);
     // Uniform there when the number is: 4,096 evenly spaced numbers (at a
@@ -282,35 +302,18 @@ pub fn check_mc_integral(f: IntegralFn) -> Check {
     }
 }
 
-/// The estimate from the numbers `u` of an integrand that returns `v[k]`
-/// at its k-th call, whatever the point: with uniform points each value
-/// weighs (b − a) / N, so the answer is (b − a) times the values' mean.
-/// Its error (10³ times the relative error) and what was asked.
-fn drawn_mean(f: IntegralFn, a: f64, b: f64, u: &[f64], v: &[f64]) -> (f64, String) {
-    let calls = Cell::new(0usize);
-    let g = |_: f64| {
-        calls.set(calls.get() + 1);
-        v.get(calls.get() - 1).copied().unwrap_or(1.0)
-    };
-    let got = f(&g, a, b, u);
-    let want = (b - a) * v.iter().sum::<f64>() / v.len() as f64;
-    let error = match calls.get() == v.len() {
-        true => (got - want).abs() / want.abs() * 1e3,
-        false => f64::INFINITY,
-    };
-    (
-        error,
-        format!(
-            "∫ from {a} to {b} from the numbers {u:?}, f returning {v:?} in the order it is called: expected \
-             (b − a) times their mean, {want:e}, got {got:e} (each number's value counts once, with weight 1/N)"
-        ),
-    )
-}
-
-/// ∫ₐᵇ c dx from the numbers `u`: its error (10³ times the relative
-/// error; infinite where f is not evaluated once per number, inside
-/// [a, b]) and what was asked.
-fn drawn_once(f: IntegralFn, a: f64, b: f64, c: f64, u: &[f64]) -> (f64, String) {
+/// The integral from a to b, from the numbers `u`, of an integrand that
+/// returns `value(k)` at its k-th call, whatever the point (`of` says
+/// which, `want` is the answer): its error (10³ times the relative error;
+/// infinite where f is not evaluated once per number, inside [a, b]) and
+/// what was asked.
+fn drawn_once(
+    f: IntegralFn,
+    (a, b, u): (f64, f64, &[f64]),
+    value: impl Fn(usize) -> f64,
+    want: f64,
+    of: &str,
+) -> (f64, String) {
     // One evaluation per number, each in [a, b] (to rounding).
     let (calls, outside) = (Cell::new(0usize), Cell::new(None));
     let (lo, hi) = (a.min(b), a.max(b));
@@ -320,10 +323,9 @@ fn drawn_once(f: IntegralFn, a: f64, b: f64, c: f64, u: &[f64]) -> (f64, String)
         if !(lo - slack..=hi + slack).contains(&x) {
             outside.set(Some(x));
         }
-        c
+        value(calls.get() - 1)
     };
     let got = f(&g, a, b, u);
-    let want = c * (b - a);
     if calls.get() != u.len() {
         return (
             f64::INFINITY,
@@ -344,6 +346,6 @@ fn drawn_once(f: IntegralFn, a: f64, b: f64, c: f64, u: &[f64]) -> (f64, String)
         (got - want).abs() / want.abs() * 1e3,
         // In scientific notation: the constants go up to 10³⁰⁰ (every
         // digit, still exact, and short).
-        format!("∫ from {a} to {b} of the constant {c:e} = {want:e}, got {got:e}"),
+        format!("∫ from {a} to {b} of {of} = {want:e}, got {got:e}"),
     )
 }
